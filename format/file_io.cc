@@ -1,0 +1,137 @@
+#include "format/file_io.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string>
+
+namespace linemap {
+namespace {
+
+std::string Quoted(const std::string& path) { return "'" + path + "'"; }
+
+std::string ErrnoText(int err) { return std::strerror(err); }
+
+std::string DirectoryOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+Status WriteAll(int fd, std::string_view data, const std::string& path) {
+  const char* p = data.data();
+  std::size_t left = data.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return IoError("cannot write " + Quoted(path) + ": " + ErrnoText(errno));
+    }
+    p += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+bool IsDirectory(const std::string& path) {
+  struct stat st;
+  return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
+                                                  std::uint64_t max_bytes) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    const int err = errno;
+    if (err == ENOENT) return NotFoundError(Quoted(path) + ": no such file");
+    return IoError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
+  }
+  struct stat st;
+  if (::fstat(fd, &st) != 0) {
+    const int err = errno;
+    ::close(fd);
+    return IoError("cannot stat " + Quoted(path) + ": " + ErrnoText(err));
+  }
+  if (S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    return InvalidArgumentError(Quoted(path) + " is a directory, not a file");
+  }
+  if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
+    ::close(fd);
+    return ResourceExhaustedError(Quoted(path) + " is " + std::to_string(st.st_size) +
+                                  " bytes, more than the limit of " +
+                                  std::to_string(max_bytes));
+  }
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(static_cast<std::size_t>(st.st_size));
+  std::uint8_t buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof(buffer));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      // Reading a directory opened on some systems fails with EISDIR.
+      if (err == EISDIR) return InvalidArgumentError(Quoted(path) + " is a directory");
+      return IoError("cannot read " + Quoted(path) + ": " + ErrnoText(err));
+    }
+    if (n == 0) break;
+    if (bytes.size() + static_cast<std::size_t>(n) > max_bytes) {
+      ::close(fd);
+      return ResourceExhaustedError(Quoted(path) + " is larger than the limit of " +
+                                    std::to_string(max_bytes) + " bytes");
+    }
+    bytes.insert(bytes.end(), buffer, buffer + n);
+  }
+  ::close(fd);
+  return bytes;
+}
+
+Status WriteFileAtomic(const std::string& path, std::string_view data) {
+  if (path.empty()) return InvalidArgumentError("empty output file name");
+  if (IsDirectory(path)) {
+    return InvalidArgumentError(Quoted(path) + " is a directory; give a file name");
+  }
+  const std::string dir = DirectoryOf(path);
+  std::string tmp = path + ".tmp-XXXXXX";
+  const int fd = ::mkstemp(tmp.data());
+  if (fd < 0) {
+    return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
+                   ErrnoText(errno));
+  }
+  Status status = WriteAll(fd, data, path);
+  if (status.ok() && ::fsync(fd) != 0) {
+    status = IoError("cannot flush " + Quoted(path) + " to disk: " + ErrnoText(errno));
+  }
+  // Regular files are created 0600 by mkstemp; give them the usual mode.
+  if (status.ok()) {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+  }
+  if (::close(fd) != 0 && status.ok()) {
+    status = IoError("cannot close " + Quoted(path) + ": " + ErrnoText(errno));
+  }
+  if (status.ok() && ::rename(tmp.c_str(), path.c_str()) != 0) {
+    status = IoError("cannot rename the new file onto " + Quoted(path) + ": " + ErrnoText(errno));
+  }
+  if (!status.ok()) {
+    ::unlink(tmp.c_str());
+    return status;
+  }
+  // Make the rename itself durable.
+  const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd >= 0) {
+    ::fsync(dir_fd);
+    ::close(dir_fd);
+  }
+  return Status::Ok();
+}
+
+}  // namespace linemap

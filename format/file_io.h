@@ -1,0 +1,30 @@
+// Whole-file reads with a size limit, and atomic whole-file writes.
+#ifndef LINEMAP_FORMAT_FILE_IO_H_
+#define LINEMAP_FORMAT_FILE_IO_H_
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "linemap/status.h"
+
+namespace linemap {
+
+// Reads all of `path`. Fails with kNotFound for a missing file, kInvalidArgument
+// for a directory, kResourceExhausted when it is larger than `max_bytes`.
+// Messages name the file.
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
+                                                  std::uint64_t max_bytes);
+
+// Writes `data` to a temporary file in the same directory, flushes it to
+// disk (fsync), then renames it over `path` and syncs the directory. On any
+// failure the temporary file is removed and an existing `path` is untouched.
+Status WriteFileAtomic(const std::string& path, std::string_view data);
+
+// True when `path` names an existing directory.
+bool IsDirectory(const std::string& path);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_FORMAT_FILE_IO_H_

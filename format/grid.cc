@@ -1,0 +1,62 @@
+#include "linemap/grid.h"
+
+#include <cmath>
+
+namespace linemap {
+
+const char* MapModeName(MapMode mode) {
+  switch (mode) {
+    case MapMode::kTrinary:
+      return "trinary";
+    case MapMode::kScale:
+      return "scale";
+    case MapMode::kRaw:
+      return "raw";
+  }
+  return "trinary";
+}
+
+Grid::Grid(int width, int height, Cell fill)
+    : width_(width < 0 ? 0 : width),
+      height_(height < 0 ? 0 : height),
+      cells_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), fill) {}
+
+CellCounts Grid::Count() const {
+  CellCounts counts;
+  for (Cell c : cells_) {
+    switch (c) {
+      case Cell::kFree:
+        ++counts.free;
+        break;
+      case Cell::kOccupied:
+        ++counts.occupied;
+        break;
+      case Cell::kUnknown:
+        ++counts.unknown;
+        break;
+    }
+  }
+  return counts;
+}
+
+void Grid::CellToWorld(double col, double row, double* x, double* y) const {
+  // The origin is the pose of the lower-left corner of cell (0, 0); the centre
+  // of that cell lies half a cell inside it along both map axes.
+  const double u = (col + 0.5) * meta.resolution;
+  const double v = (row + 0.5) * meta.resolution;
+  const double c = std::cos(meta.origin.yaw);
+  const double s = std::sin(meta.origin.yaw);
+  *x = meta.origin.x + c * u - s * v;
+  *y = meta.origin.y + s * u + c * v;
+}
+
+void Grid::WorldToCell(double x, double y, double* col, double* row) const {
+  const double dx = x - meta.origin.x;
+  const double dy = y - meta.origin.y;
+  const double c = std::cos(meta.origin.yaw);
+  const double s = std::sin(meta.origin.yaw);
+  *col = (c * dx + s * dy) / meta.resolution - 0.5;
+  *row = (-s * dx + c * dy) / meta.resolution - 0.5;
+}
+
+}  // namespace linemap

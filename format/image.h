@@ -1,0 +1,45 @@
+// Decoding and encoding of the map images map_server reads: PGM (P2, P5; 8 or
+// 16 bit) and PNG (grey, grey+alpha, RGB, RGBA, palette, 1/2/4/8/16 bit).
+#ifndef LINEMAP_FORMAT_IMAGE_H_
+#define LINEMAP_FORMAT_IMAGE_H_
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "linemap/status.h"
+
+namespace linemap {
+
+// An image as GraphicsMagick's 16-bit build sees it: every sample is a
+// quantum in 0..65535 (an 8-bit sample v becomes v * 257), rows top first.
+struct RawImage {
+  int width = 0;
+  int height = 0;
+  int channels = 0;  // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+  std::vector<std::uint16_t> samples;  // width * height * channels
+
+  bool has_alpha() const { return channels == 2 || channels == 4; }
+  const std::uint16_t* pixel(int x, int y) const {
+    return samples.data() + (static_cast<std::size_t>(y) * width + x) * channels;
+  }
+};
+
+inline constexpr std::uint32_t kQuantumMax = 65535;
+
+// `name` is used in error messages only. Images with more than `max_cells`
+// pixels are refused before any pixel buffer is allocated.
+StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::string& name,
+                             std::uint64_t max_cells);
+StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::string& name,
+                             std::uint64_t max_cells);
+// Chooses the decoder by the file's magic bytes, not its name.
+StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cells);
+
+// A binary 8-bit PGM (P5) of `grey` (width * height bytes, rows top first).
+std::string EncodePgm(int width, int height, std::span<const std::uint8_t> grey);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_FORMAT_IMAGE_H_

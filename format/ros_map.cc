@@ -1,0 +1,265 @@
+// ROS map_server YAML + image reading and writing (include/linemap/map_io.h).
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "format/file_io.h"
+#include "format/image.h"
+#include "format/pixel_classifier.h"
+#include "linemap/map_io.h"
+
+namespace linemap {
+namespace {
+
+constexpr std::uint64_t kMaxYamlBytes = 1 << 20;
+
+std::string Quoted(const std::string& path) { return "'" + path + "'"; }
+
+bool EndsWith(const std::string& s, const std::string& suffix) {
+  if (s.size() < suffix.size()) return false;
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    const char a = s[s.size() - suffix.size() + i];
+    const char b = suffix[i];
+    if (std::tolower(static_cast<unsigned char>(a)) != b) return false;
+  }
+  return true;
+}
+
+bool IsYamlPath(const std::string& path) {
+  return EndsWith(path, ".yaml") || EndsWith(path, ".yml");
+}
+
+std::string DirectoryOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return "";
+  return path.substr(0, slash + 1);
+}
+
+std::string StemOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = base.find_last_of('.');
+  return dot == std::string::npos || dot == 0 ? base : base.substr(0, dot);
+}
+
+// The shortest decimal text that reads back as the same double.
+std::string FormatDouble(double v) {
+  std::array<char, 64> buf;
+  const auto result = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  std::string s(buf.data(), result.ptr);
+  // Keep it a YAML float rather than an int where it has no fraction.
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+Status CheckThresholds(const MapMetadata& meta, const std::string& where) {
+  auto in_unit = [](double v) { return std::isfinite(v) && v >= 0.0 && v <= 1.0; };
+  if (!in_unit(meta.occupied_thresh)) {
+    return InvalidArgumentError(where + ": occupied_thresh must be within 0..1");
+  }
+  if (!in_unit(meta.free_thresh)) {
+    return InvalidArgumentError(where + ": free_thresh must be within 0..1");
+  }
+  return Status::Ok();
+}
+
+Status CheckResolution(double resolution, const std::string& where) {
+  if (!std::isfinite(resolution) || resolution <= 0.0) {
+    return InvalidArgumentError(where + ": resolution must be a positive number of metres, not " +
+                                FormatDouble(resolution));
+  }
+  return Status::Ok();
+}
+
+StatusOr<MapMode> ParseMode(const std::string& text, const std::string& where) {
+  if (text == "trinary") return MapMode::kTrinary;
+  if (text == "scale") return MapMode::kScale;
+  if (text == "raw") return MapMode::kRaw;
+  return InvalidArgumentError(where + ": mode '" + text + "' is not trinary, scale or raw");
+}
+
+template <typename T>
+StatusOr<T> ReadScalar(const YAML::Node& doc, const char* key, const std::string& where) {
+  try {
+    return doc[key].as<T>();
+  } catch (const YAML::Exception&) {
+    return InvalidArgumentError(where + ": key '" + key + "' has the wrong type");
+  }
+}
+
+struct YamlMap {
+  std::string image_path;
+  MapMetadata meta;
+};
+
+StatusOr<YamlMap> ParseMapYaml(const std::string& yaml_path) {
+  const std::string where = Quoted(yaml_path);
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, ReadFileBytes(yaml_path, kMaxYamlBytes));
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(std::string(bytes.begin(), bytes.end()));
+  } catch (const YAML::Exception& e) {
+    return InvalidArgumentError(where + ": not valid YAML (line " + std::to_string(e.mark.line + 1) +
+                                ")");
+  }
+  if (!doc.IsMap()) return InvalidArgumentError(where + ": not a map YAML (expected key: value pairs)");
+
+  YamlMap out;
+  if (!doc["image"]) return InvalidArgumentError(where + ": has no 'image' key");
+  LINEMAP_ASSIGN_OR_RETURN(std::string image, ReadScalar<std::string>(doc, "image", where));
+  if (image.empty()) return InvalidArgumentError(where + ": 'image' is empty");
+  out.image_path = image[0] == '/' ? image : DirectoryOf(yaml_path) + image;
+
+  if (!doc["resolution"]) return InvalidArgumentError(where + ": has no 'resolution' key");
+  LINEMAP_ASSIGN_OR_RETURN(out.meta.resolution, ReadScalar<double>(doc, "resolution", where));
+  LINEMAP_RETURN_IF_ERROR(CheckResolution(out.meta.resolution, where));
+
+  if (doc["origin"]) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<double> origin,
+                             ReadScalar<std::vector<double>>(doc, "origin", where));
+    if (origin.size() != 3) {
+      return InvalidArgumentError(where + ": 'origin' must have 3 elements [x, y, yaw], not " +
+                                  std::to_string(origin.size()));
+    }
+    for (double v : origin) {
+      if (!std::isfinite(v)) return InvalidArgumentError(where + ": 'origin' is not finite");
+    }
+    out.meta.origin = {origin[0], origin[1], origin[2]};
+  }
+  if (doc["negate"]) {
+    // nav2 reads negate as an int and falls back to a bool.
+    StatusOr<int> as_int = ReadScalar<int>(doc, "negate", where);
+    if (as_int.ok()) {
+      out.meta.negate = *as_int != 0;
+    } else {
+      LINEMAP_ASSIGN_OR_RETURN(out.meta.negate, ReadScalar<bool>(doc, "negate", where));
+    }
+  }
+  if (doc["occupied_thresh"]) {
+    LINEMAP_ASSIGN_OR_RETURN(out.meta.occupied_thresh,
+                             ReadScalar<double>(doc, "occupied_thresh", where));
+  }
+  if (doc["free_thresh"]) {
+    LINEMAP_ASSIGN_OR_RETURN(out.meta.free_thresh, ReadScalar<double>(doc, "free_thresh", where));
+  }
+  if (doc["mode"]) {
+    LINEMAP_ASSIGN_OR_RETURN(std::string mode, ReadScalar<std::string>(doc, "mode", where));
+    LINEMAP_ASSIGN_OR_RETURN(out.meta.mode, ParseMode(mode, where));
+  }
+  LINEMAP_RETURN_IF_ERROR(CheckThresholds(out.meta, where));
+  return out;
+}
+
+void ApplyOverrides(const MapLoadOptions& options, MapMetadata* meta) {
+  if (options.resolution) meta->resolution = *options.resolution;
+  if (options.origin) meta->origin = *options.origin;
+  if (options.negate) meta->negate = *options.negate;
+  if (options.occupied_thresh) meta->occupied_thresh = *options.occupied_thresh;
+  if (options.free_thresh) meta->free_thresh = *options.free_thresh;
+  if (options.mode) meta->mode = *options.mode;
+}
+
+// The grey value in 0..255 that reads back as `target` under `meta`,
+// preferring map_saver's own value; -1 when there is none.
+int GreyFor(Cell target, const MapMetadata& meta) {
+  const int preferred = target == Cell::kFree       ? kPgmFree
+                        : target == Cell::kOccupied ? kPgmOccupied
+                                                    : kPgmUnknown;
+  if (ClassifyGrey8(static_cast<std::uint8_t>(preferred), meta) == target) return preferred;
+  for (int v = 0; v < 256; ++v) {
+    if (ClassifyGrey8(static_cast<std::uint8_t>(v), meta) == target) return v;
+  }
+  return -1;
+}
+
+std::string YamlText(const std::string& image_name, const MapMetadata& meta) {
+  std::string y;
+  y += "image: " + image_name + "\n";
+  y += std::string("mode: ") + MapModeName(meta.mode) + "\n";
+  y += "resolution: " + FormatDouble(meta.resolution) + "\n";
+  y += "origin: [" + FormatDouble(meta.origin.x) + ", " + FormatDouble(meta.origin.y) + ", " +
+       FormatDouble(meta.origin.yaw) + "]\n";
+  y += std::string("negate: ") + (meta.negate ? "1" : "0") + "\n";
+  y += "occupied_thresh: " + FormatDouble(meta.occupied_thresh) + "\n";
+  y += "free_thresh: " + FormatDouble(meta.free_thresh) + "\n";
+  return y;
+}
+
+}  // namespace
+
+StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
+                            std::uint64_t max_cells) {
+  LINEMAP_RETURN_IF_ERROR(CheckResolution(meta.resolution, Quoted(image_path)));
+  LINEMAP_RETURN_IF_ERROR(CheckThresholds(meta, Quoted(image_path)));
+  LINEMAP_ASSIGN_OR_RETURN(RawImage image, ReadImageFile(image_path, max_cells));
+  Grid grid(image.width, image.height);
+  grid.meta = meta;
+  for (int y = 0; y < image.height; ++y) {
+    const int row = image.height - 1 - y;  // image row 0 is the top of the map
+    for (int x = 0; x < image.width; ++x) {
+      grid.set(x, row, ClassifyPixel(image.pixel(x, y), image.channels, meta));
+    }
+  }
+  return grid;
+}
+
+StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options) {
+  if (path.empty()) return InvalidArgumentError("empty map file name");
+  if (IsDirectory(path)) return InvalidArgumentError(Quoted(path) + " is a directory, not a map");
+  if (!IsYamlPath(path)) {
+    MapMetadata meta;
+    ApplyOverrides(options, &meta);
+    return LoadMapImage(path, meta, options.max_cells);
+  }
+  LINEMAP_ASSIGN_OR_RETURN(YamlMap yaml, ParseMapYaml(path));
+  ApplyOverrides(options, &yaml.meta);
+  StatusOr<Grid> grid = LoadMapImage(yaml.image_path, yaml.meta, options.max_cells);
+  if (!grid.ok() && grid.status().code() == StatusCode::kNotFound) {
+    return NotFoundError(Quoted(path) + " names image " + Quoted(yaml.image_path) +
+                         ", which does not exist");
+  }
+  return grid;
+}
+
+Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
+  if (!IsYamlPath(yaml_path)) {
+    return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml");
+  }
+  if (grid.width() <= 0 || grid.height() <= 0) {
+    return InvalidArgumentError(Quoted(yaml_path) + ": cannot save an empty grid");
+  }
+  // Keep the grid's own metadata when three grey values exist that read back
+  // as free, occupied and unknown under it; otherwise fall back to map_saver's
+  // plain trinary metadata, which always has them.
+  MapMetadata meta = grid.meta;
+  int grey[3] = {GreyFor(Cell::kFree, meta), GreyFor(Cell::kOccupied, meta),
+                 GreyFor(Cell::kUnknown, meta)};
+  if (grey[0] < 0 || grey[1] < 0 || grey[2] < 0) {
+    const double resolution = meta.resolution;
+    const Pose2D origin = meta.origin;
+    meta = MapMetadata();
+    meta.resolution = resolution;
+    meta.origin = origin;
+    grey[0] = kPgmFree;
+    grey[1] = kPgmOccupied;
+    grey[2] = kPgmUnknown;
+  }
+  std::vector<std::uint8_t> pixels(grid.size());
+  for (int row = 0; row < grid.height(); ++row) {
+    const int y = grid.height() - 1 - row;
+    for (int col = 0; col < grid.width(); ++col) {
+      pixels[static_cast<std::size_t>(y) * grid.width() + col] =
+          static_cast<std::uint8_t>(grey[static_cast<int>(grid.at(col, row))]);
+    }
+  }
+  const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
+  const std::string image_name = StemOf(yaml_path) + ".pgm";
+  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(image_path, EncodePgm(grid.width(), grid.height(), pixels)));
+  return WriteFileAtomic(yaml_path, YamlText(image_name, meta));
+}
+
+}  // namespace linemap

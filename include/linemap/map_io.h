@@ -1,0 +1,67 @@
+// Reading and writing ROS map_server maps: a YAML file plus a PGM or PNG image.
+//
+// Pixel classification follows nav2_map_server's map_io.cpp (loadMapFromFile)
+// exactly, as GraphicsMagick (16-bit quanta) sees the image:
+//   shade = mean of the channels / 65535, with channels (R, G, B) and, in
+//           trinary mode when the image has alpha, also the alpha value
+//           (so a transparent pixel pulls the shade towards black);
+//           grey images have R = G = B; 8-bit samples v become v * 257.
+//   occ   = negate ? shade : 1 - shade
+//   trinary: occ > occupied_thresh -> occupied; else occ < free_thresh -> free;
+//            else unknown.
+//   scale:   alpha != opaque -> unknown; then as trinary, and the values in
+//            between keep the level rint((occ - free) / (occ_t - free) * 100),
+//            which a trinary grid stores as unknown.
+//   raw:     v = round(shade * 255); 0 -> free, 100 -> occupied, 1..99 -> unknown
+//            (a trinary grid cannot hold the levels), above 100 -> unknown.
+// Both comparisons are strict, as in nav2's code: a value equal to a
+// threshold is unknown.
+#ifndef LINEMAP_MAP_IO_H_
+#define LINEMAP_MAP_IO_H_
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "linemap/grid.h"
+#include "linemap/status.h"
+
+namespace linemap {
+
+struct MapLoadOptions {
+  // Refuse images with more cells than this before allocating them.
+  std::uint64_t max_cells = std::uint64_t{1} << 28;
+  // Used when the map is a bare image without YAML, and to override the
+  // YAML's values when set.
+  std::optional<double> resolution;
+  std::optional<Pose2D> origin;
+  std::optional<bool> negate;
+  std::optional<double> occupied_thresh;
+  std::optional<double> free_thresh;
+  std::optional<MapMode> mode;
+};
+
+// Loads `path`: a map YAML (.yaml / .yml) naming its image, or a bare PGM /
+// PNG image that gets the defaults (0.05 m, origin 0, thresholds 0.65 /
+// 0.196, trinary, no negate) unless overridden by `options`.
+StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options = {});
+
+// Classifies an image file with the given metadata (no YAML involved).
+StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
+                            std::uint64_t max_cells = std::uint64_t{1} << 28);
+
+// Writes `yaml_path` and an image next to it (same stem, .pgm), as nav2's
+// map_saver does in trinary mode: 0 occupied, 254 free, 205 unknown, and a
+// YAML with mode trinary, negate 0 and the grid's thresholds, which loads
+// back to the same grid. Both files are written to temporary names first and
+// renamed into place, so a failure leaves existing files untouched.
+Status SaveRosMap(const std::string& yaml_path, const Grid& grid);
+
+// The trinary PGM pixel values map_saver writes.
+inline constexpr std::uint8_t kPgmOccupied = 0;
+inline constexpr std::uint8_t kPgmFree = 254;
+inline constexpr std::uint8_t kPgmUnknown = 205;
+
+}  // namespace linemap
+
+#endif  // LINEMAP_MAP_IO_H_

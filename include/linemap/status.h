@@ -1,0 +1,110 @@
+// Errors as values, in the style of Draco's Status / StatusOr: no exception
+// crosses the public API and the library never calls exit().
+#ifndef LINEMAP_STATUS_H_
+#define LINEMAP_STATUS_H_
+
+#include <cassert>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace linemap {
+
+enum class StatusCode {
+  kOk = 0,
+  kInvalidArgument,    // A parameter or an option is out of its range.
+  kNotFound,           // A file does not exist.
+  kIoError,            // Reading or writing failed for a reason outside the data.
+  kCorrupt,            // The data is malformed (bad CRC, truncated, wrong magic).
+  kUnsupported,        // Well-formed, but uses a feature this version lacks.
+  kResourceExhausted,  // A caller-set limit (cells, bytes) would be exceeded.
+  kInternal,           // A bug in linemap.
+};
+
+const char* StatusCodeName(StatusCode code);
+
+class [[nodiscard]] Status {
+ public:
+  Status() = default;
+  Status(StatusCode code, std::string message) : code_(code), message_(std::move(message)) {}
+
+  static Status Ok() { return Status(); }
+
+  bool ok() const { return code_ == StatusCode::kOk; }
+  StatusCode code() const { return code_; }
+  const std::string& message() const { return message_; }
+
+  // "message" for errors, "OK" for success.
+  std::string ToString() const;
+
+  // Returns a copy whose message is "prefix: message"; used to add the file
+  // name or the chunk that failed as the error travels up.
+  Status WithContext(const std::string& prefix) const;
+
+ private:
+  StatusCode code_ = StatusCode::kOk;
+  std::string message_;
+};
+
+inline Status InvalidArgumentError(std::string m) {
+  return Status(StatusCode::kInvalidArgument, std::move(m));
+}
+inline Status NotFoundError(std::string m) { return Status(StatusCode::kNotFound, std::move(m)); }
+inline Status IoError(std::string m) { return Status(StatusCode::kIoError, std::move(m)); }
+inline Status CorruptError(std::string m) { return Status(StatusCode::kCorrupt, std::move(m)); }
+inline Status UnsupportedError(std::string m) {
+  return Status(StatusCode::kUnsupported, std::move(m));
+}
+inline Status ResourceExhaustedError(std::string m) {
+  return Status(StatusCode::kResourceExhausted, std::move(m));
+}
+inline Status InternalError(std::string m) { return Status(StatusCode::kInternal, std::move(m)); }
+
+// Either a value or a non-OK Status.
+template <typename T>
+class [[nodiscard]] StatusOr {
+ public:
+  StatusOr(const Status& status) : status_(status) {  // NOLINT(runtime/explicit)
+    assert(!status_.ok() && "StatusOr built from an OK status without a value");
+    if (status_.ok()) status_ = InternalError("StatusOr built from an OK status without a value");
+  }
+  StatusOr(T value) : value_(std::move(value)) {}  // NOLINT(runtime/explicit)
+
+  bool ok() const { return status_.ok(); }
+  const Status& status() const { return status_; }
+
+  const T& value() const& { return *value_; }
+  T& value() & { return *value_; }
+  T&& value() && { return std::move(*value_); }
+  const T& operator*() const& { return *value_; }
+  T& operator*() & { return *value_; }
+  T&& operator*() && { return std::move(*value_); }
+  const T* operator->() const { return &*value_; }
+  T* operator->() { return &*value_; }
+
+ private:
+  Status status_;
+  std::optional<T> value_;
+};
+
+}  // namespace linemap
+
+#define LINEMAP_STATUS_CONCAT_INNER_(a, b) a##b
+#define LINEMAP_STATUS_CONCAT_(a, b) LINEMAP_STATUS_CONCAT_INNER_(a, b)
+
+// Returns from the current function if `expr` (a Status) is not OK.
+#define LINEMAP_RETURN_IF_ERROR(expr)                  \
+  do {                                                 \
+    ::linemap::Status linemap_status_tmp_ = (expr);    \
+    if (!linemap_status_tmp_.ok()) return linemap_status_tmp_; \
+  } while (false)
+
+// `lhs = value of expr` (a StatusOr), or returns its error.
+#define LINEMAP_ASSIGN_OR_RETURN(lhs, expr) \
+  LINEMAP_ASSIGN_OR_RETURN_IMPL_(LINEMAP_STATUS_CONCAT_(linemap_statusor_, __LINE__), lhs, expr)
+#define LINEMAP_ASSIGN_OR_RETURN_IMPL_(tmp, lhs, expr) \
+  auto tmp = (expr);                                   \
+  if (!tmp.ok()) return tmp.status();                  \
+  lhs = std::move(tmp).value()
+
+#endif  // LINEMAP_STATUS_H_

@@ -1,0 +1,83 @@
+// The linemap command-line tool's shared pieces: option parsing, --help text,
+// error reporting and exit codes. Each command lives in its own cmd_*.cc.
+//
+// Exit codes: 0 success, 1 failure while working, 2 bad usage or bad input.
+#ifndef LINEMAP_TOOLS_LINEMAP_CLI_H_
+#define LINEMAP_TOOLS_LINEMAP_CLI_H_
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "linemap/status.h"
+
+namespace linemap::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+struct OptionSpec {
+  std::string name;        // "--json"
+  std::string value_name;  // "X,Y"; empty for a flag without a value
+  std::string help;        // one line, with the unit and the default
+};
+
+struct CommandSpec {
+  std::string name;      // "info"
+  std::string synopsis;  // "MAP [--json]"
+  std::string summary;   // one line for `linemap --help`
+  std::string details;   // paragraphs after the synopsis; may be empty
+  std::vector<OptionSpec> options;
+  int min_positional = 0;
+  int max_positional = 0;
+};
+
+class ParsedArgs {
+ public:
+  std::vector<std::string> positional;
+
+  bool Has(const std::string& name) const;
+  std::optional<std::string> Get(const std::string& name) const;
+  // Typed getters: a missing option gives the fallback; a malformed one an
+  // kInvalidArgument status naming the option.
+  StatusOr<double> GetDouble(const std::string& name, double fallback) const;
+  StatusOr<int> GetInt(const std::string& name, int fallback) const;
+  // "A,B[,C...]" with exactly `count` numbers (or count..max_count).
+  StatusOr<std::vector<double>> GetDoubleList(const std::string& name, int count,
+                                              int max_count = -1) const;
+
+  std::map<std::string, std::string> values;
+  std::set<std::string> flags;
+};
+
+// Prints the command's --help text to stdout.
+void PrintHelp(const CommandSpec& spec);
+
+// Parses argv after the command name. Returns nullopt and sets *exit_code
+// when the caller should return at once: --help (0) or bad usage (2, with a
+// message on stderr).
+std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<std::string>& args,
+                                    int* exit_code);
+
+// Prints "linemap <command>: <message>" on stderr and returns the exit code
+// for the status: 2 for bad input (invalid, missing, corrupt, unsupported,
+// over a limit), 1 otherwise.
+int ReportError(const std::string& command, const Status& status);
+
+// A command's entry point: argv after the command name.
+using CommandFn = int (*)(const std::vector<std::string>& args);
+
+struct CommandEntry {
+  const CommandSpec* spec;
+  CommandFn run;
+};
+
+// Every command, in the order `linemap --help` lists them.
+const std::vector<CommandEntry>& Commands();
+
+}  // namespace linemap::cli
+
+#endif  // LINEMAP_TOOLS_LINEMAP_CLI_H_

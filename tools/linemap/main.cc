@@ -1,0 +1,61 @@
+// linemap: compress occupancy-grid maps into line-segment files and back.
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "tools/linemap/cli.h"
+#include "tools/linemap/commands.h"
+
+namespace linemap::cli {
+
+const std::vector<CommandEntry>& Commands() {
+  static const std::vector<CommandEntry> kCommands = {
+      {&kInfoSpec, RunInfo},     {&kEncodeSpec, RunEncode}, {&kDecodeSpec, RunDecode},
+      {&kLinesSpec, RunLines},   {&kSegmentSpec, RunSegment}, {&kExportSpec, RunExport},
+      {&kEvalSpec, RunEval},     {&kPlanSpec, RunPlan},     {&kBenchSpec, RunBench},
+  };
+  return kCommands;
+}
+
+namespace {
+
+void PrintUsage(std::FILE* out) {
+  std::fprintf(out,
+               "Usage: linemap <command> [options]\n\n"
+               "Compresses ROS occupancy-grid maps into compact .lmap line-segment files and\n"
+               "reloads them as grids.\n\nCommands:\n");
+  for (const CommandEntry& entry : Commands()) {
+    std::fprintf(out, "  %-9s %s\n", entry.spec->name.c_str(), entry.spec->summary.c_str());
+  }
+  std::fprintf(out,
+               "\n'linemap <command> --help' describes a command. 'linemap --version' prints "
+               "the version.\nExit status: 0 success, 1 failure while working, 2 bad usage or "
+               "bad input.\n");
+}
+
+}  // namespace
+}  // namespace linemap::cli
+
+int main(int argc, char** argv) {
+  using namespace linemap::cli;
+  if (argc < 2) {
+    PrintUsage(stderr);
+    return kExitBadInput;
+  }
+  const std::string command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    PrintUsage(stdout);
+    return kExitOk;
+  }
+  if (command == "--version") {
+    std::printf("linemap %s\n", LINEMAP_VERSION_STRING);
+    return kExitOk;
+  }
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  for (const CommandEntry& entry : Commands()) {
+    if (entry.spec->name == command) return entry.run(args);
+  }
+  std::fprintf(stderr, "linemap: unknown command '%s' (see 'linemap --help')\n", command.c_str());
+  return kExitBadInput;
+}
