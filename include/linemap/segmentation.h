@@ -36,7 +36,7 @@ struct RoomBorder {
 struct FurnitureBlob {
   std::vector<CellIndex> cells;  // the blob's exact occupied cells, raster order
   std::size_t cell_count = 0;
-  CellIndex first_cell;          // first cell in raster order (row-major from row 0)
+  CellIndex first_cell;  // first cell in raster order (row-major from row 0)
   BoundingBox box;
   std::vector<CellIndex> outline;  // closed boundary chain of the blob
 };

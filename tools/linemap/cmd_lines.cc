@@ -6,7 +6,13 @@
 namespace linemap::cli {
 
 const CommandSpec kLinesSpec = {
-    "lines", "MAP -o LINES.csv", "extract wall line segments from a map (RM-Line or linemap's extractor)", "", {}, 0, 1000,
+    "lines",
+    "MAP -o LINES.csv",
+    "extract wall line segments from a map (RM-Line or linemap's extractor)",
+    "",
+    {},
+    0,
+    1000,
 };
 
 int RunLines(const std::vector<std::string>& args) {
