@@ -14,3 +14,8 @@ if [ "${CI:-}" = "true" ] || [ "${LINEMAP_SANITIZE_TESTS:-0}" = "1" ]; then
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$(nproc)" --timeout 900
 fi
+
+if [ "${CI:-}" = "true" ] || [ "${LINEMAP_FUZZ_SMOKE:-0}" = "1" ]; then
+  echo "== fuzz smoke (libFuzzer, ASan + UBSan)"
+  FUZZ_SECONDS=${FUZZ_SECONDS:-20} bash tools/fuzz_smoke.sh
+fi
