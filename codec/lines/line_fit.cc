@@ -73,11 +73,13 @@ Eigen::Matrix2d PointMoments::Covariance() const {
   return cov;
 }
 
-FittedLine PointMoments::Fit() const {
+FittedLine PointMoments::Fit() const { return FitFromCovariance(Mean(), Covariance()); }
+
+FittedLine FitFromCovariance(const Eigen::Vector2d& centroid, const Eigen::Matrix2d& covariance) {
   FittedLine line;
-  line.centroid = Mean();
+  line.centroid = centroid;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
-  solver.computeDirect(Covariance());
+  solver.computeDirect(covariance);
   // Eigenvalues come in increasing order: column 1 is the principal axis.
   line.direction = solver.eigenvectors().col(1).normalized();
   line.mean_squared_residual = std::max(0.0, solver.eigenvalues()(0));

@@ -1,0 +1,566 @@
+// linemap's wall-line extractor: fewer segments than RM-Line with a
+// guaranteed L-infinity bound.
+//
+// Pipeline (each step keeps the invariant "every chained edge cell is owned
+// by one segment and lies within epsilon of it"):
+//  1. Speckle: 8-connected edge components smaller than min_component_cells
+//     are set aside (they may still be covered by a wall's segment later;
+//     otherwise they are left to the furniture-blob layer and counted).
+//  2. Chains: the remaining edge cells are traced into ordered 8-connected
+//     chains, starting from contour ends (as in EDLines' edge chaining,
+//     Akinlar & Topal 2011), preferring the neighbour with the fewest
+//     untraced neighbours so that thick contours are swept without strays.
+//  3. Split: each chain is cut greedily into the longest pieces whose cells
+//     all lie within epsilon of the piece's total-least-squares line (the
+//     L-infinity polyline criterion of Imai & Iri 1986 with TLS lines in
+//     place of chords; greedy is optimal when validity is hereditary, which
+//     holds closely for TLS). Prefix moments give each trial fit in O(1).
+//  4. Merge: pieces whose ends are within merge_gap_cells of each other are
+//     refitted together (TLS over the union, Eigen) and merged when every
+//     cell of both stays within epsilon; repeated until nothing merges
+//     (split-and-merge, Pavlidis & Horowitz 1974). This joins a wall's
+//     pieces across junctions and short breaks, and the two sides of thin
+//     walls into one centre line.
+//  5. Prune: segments whose every cell lies within epsilon of another
+//     segment are dropped, smallest first, handing their cells over.
+// Parameters (LineExtractionOptions): epsilon_cells (cells, default 1: a
+// ragged 1-3-cell SLAM wall stays one segment, and no cell is farther than
+// one cell from its wall), merge_gap_cells (cells, default 3: closes breaks
+// from speckle and junction cells but not doorways), min_component_cells
+// (cells, default 3: isolated specks of 1-2 cells are not walls).
+#include "codec/lines/linemap_extractor.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "codec/lines/line_fit.h"
+#include "codec/lines/segment_index.h"
+
+namespace linemap::lines_internal {
+namespace {
+
+// 4-neighbours first, then diagonals.
+constexpr int kDcol[8] = {1, 0, -1, 0, 1, -1, -1, 1};
+constexpr int kDrow[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+
+// Fits computed from prefix sums and from PointMoments may differ by
+// rounding; the bound is guaranteed up to this many cells.
+constexpr double kRoundingSlack = 1e-9;
+
+// Angle between two of the 8 directions of kDcol/kDrow, in 45-degree steps (0..4).
+int TurnSteps(int a, int b) {
+  const double angle_a = std::atan2(kDrow[a], kDcol[a]);
+  const double angle_b = std::atan2(kDrow[b], kDcol[b]);
+  double diff = std::abs(angle_a - angle_b);
+  if (diff > std::numbers::pi) diff = 2 * std::numbers::pi - diff;
+  return static_cast<int>(std::lround(diff / (std::numbers::pi / 4)));
+}
+
+struct CellXY {
+  int col;
+  int row;
+};
+
+CellXY CellOfIndex(std::uint32_t index, int width) {
+  return {static_cast<int>(index % static_cast<std::uint32_t>(width)),
+          static_cast<int>(index / static_cast<std::uint32_t>(width))};
+}
+
+// Sizes of the 8-connected components of the edge map; flags the cells of
+// components with at least `min_cells` cells.
+std::vector<std::uint8_t> CellsOfLargeComponents(const EdgeMap& edges, int min_cells) {
+  std::vector<std::uint8_t> large(edges.is_edge.size(), 0);
+  std::vector<std::uint8_t> seen(edges.is_edge.size(), 0);
+  std::vector<std::uint32_t> component;
+  for (std::size_t seed = 0; seed < edges.is_edge.size(); ++seed) {
+    if (!edges.is_edge[seed] || seen[seed]) continue;
+    component.clear();
+    component.push_back(static_cast<std::uint32_t>(seed));
+    seen[seed] = 1;
+    for (std::size_t head = 0; head < component.size(); ++head) {
+      const CellXY c = CellOfIndex(component[head], edges.width);
+      for (int k = 0; k < 8; ++k) {
+        const int col = c.col + kDcol[k], row = c.row + kDrow[k];
+        if (col < 0 || row < 0 || col >= edges.width || row >= edges.height) continue;
+        const std::size_t n = static_cast<std::size_t>(row) * edges.width + col;
+        if (edges.is_edge[n] && !seen[n]) {
+          seen[n] = 1;
+          component.push_back(static_cast<std::uint32_t>(n));
+        }
+      }
+    }
+    if (static_cast<int>(component.size()) >= min_cells) {
+      for (std::uint32_t index : component) large[index] = 1;
+    }
+  }
+  return large;
+}
+
+// Moments of chain prefixes: the fit of any sub-range in O(1).
+class ChainMoments {
+ public:
+  ChainMoments(const std::vector<std::uint32_t>& chain, int width) {
+    const std::size_t n = chain.size();
+    x_.resize(n);
+    y_.resize(n);
+    s_.assign(n + 1, {0, 0, 0, 0, 0});
+    const CellXY origin = n > 0 ? CellOfIndex(chain[0], width) : CellXY{0, 0};
+    ox_ = origin.col;
+    oy_ = origin.row;
+    for (std::size_t i = 0; i < n; ++i) {
+      const CellXY c = CellOfIndex(chain[i], width);
+      x_[i] = c.col;
+      y_[i] = c.row;
+      const double dx = c.col - ox_, dy = c.row - oy_;
+      s_[i + 1] = {s_[i][0] + dx, s_[i][1] + dy, s_[i][2] + dx * dx, s_[i][3] + dx * dy,
+                   s_[i][4] + dy * dy};
+    }
+  }
+
+  // TLS line of cells [begin, end).
+  FittedLine Fit(int begin, int end) const {
+    const double n = end - begin;
+    const double sx = s_[end][0] - s_[begin][0], sy = s_[end][1] - s_[begin][1];
+    const double mx = sx / n, my = sy / n;
+    Eigen::Matrix2d cov;
+    cov(0, 0) = std::max(0.0, (s_[end][2] - s_[begin][2]) / n - mx * mx);
+    cov(1, 1) = std::max(0.0, (s_[end][4] - s_[begin][4]) / n - my * my);
+    cov(0, 1) = cov(1, 0) = (s_[end][3] - s_[begin][3]) / n - mx * my;
+    return FitFromCovariance({ox_ + mx, oy_ + my}, cov);
+  }
+
+  // True when every cell of [begin, end) is within epsilon of its TLS line.
+  bool Valid(int begin, int end, double epsilon) const {
+    if (end - begin <= 2) return true;
+    const FittedLine line = Fit(begin, end);
+    if (line.mean_squared_residual > epsilon * epsilon) return false;
+    const double nx = -line.direction.y(), ny = line.direction.x();
+    for (int i = begin; i < end; ++i) {
+      const double d = (x_[i] - line.centroid.x()) * nx + (y_[i] - line.centroid.y()) * ny;
+      if (std::abs(d) > epsilon) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<double> x_, y_;
+  std::vector<std::array<double, 5>> s_;
+  double ox_ = 0, oy_ = 0;
+};
+
+// A candidate wall: its cells, their moments and the fitted segment.
+struct Group {
+  std::vector<std::uint32_t> cells;
+  PointMoments moments;
+  FittedLine line;
+  LineSegment segment;
+  double max_residual = 0;  // largest distance of a cell to `line`
+  double cost = 0;          // sum of the cells' distances to `segment` (cells)
+  bool alive = true;
+};
+
+// Fits `line` and `segment` of a group from its cells; false when some cell
+// is farther than epsilon from the line.
+bool RefitGroup(Group* group, int width, double epsilon) {
+  group->line = group->moments.Fit();
+  if (group->line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
+  const Eigen::Vector2d& c = group->line.centroid;
+  const Eigen::Vector2d& u = group->line.direction;
+  double t_min = 0, t_max = 0, worst = 0, cost = 0;
+  bool first = true;
+  for (std::uint32_t index : group->cells) {
+    const CellXY cell = CellOfIndex(index, width);
+    const double dx = cell.col - c.x(), dy = cell.row - c.y();
+    const double d = std::abs(-u.y() * dx + u.x() * dy);
+    if (d > epsilon + kRoundingSlack) return false;
+    worst = std::max(worst, d);
+    cost += d;
+    const double t = u.x() * dx + u.y() * dy;
+    t_min = first ? t : std::min(t_min, t);
+    t_max = first ? t : std::max(t_max, t);
+    first = false;
+  }
+  group->max_residual = worst;
+  group->cost = cost;
+  group->segment = {c.x() + t_min * u.x(), c.y() + t_min * u.y(), c.x() + t_max * u.x(),
+                    c.y() + t_max * u.y()};
+  return true;
+}
+
+// Buckets of group ids by the tiles their segments pass through; entries go
+// stale when groups merge and are re-checked by the reader.
+class GroupTiles {
+ public:
+  GroupTiles(int width, int height, int tile) : tile_(tile) {
+    tiles_x_ = std::max(1, (width + tile - 1) / tile);
+    tiles_y_ = std::max(1, (height + tile - 1) / tile);
+    buckets_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+  }
+
+  void Add(std::uint32_t id, const LineSegment& s) {
+    const double length = std::hypot(s.x2 - s.x1, s.y2 - s.y1);
+    const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
+    int last = -1;
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      const int tile = TileIndex(s.x1 + t * (s.x2 - s.x1), s.y1 + t * (s.y2 - s.y1));
+      if (tile != last) buckets_[tile].push_back(id);
+      last = tile;
+    }
+  }
+
+  // Ids registered in the tiles within `radius` of (x, y) (with repeats).
+  void Near(double x, double y, double radius, std::vector<std::uint32_t>* out) const {
+    out->clear();
+    const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
+    const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
+    const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
+    const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
+    for (int ty = ty0; ty <= ty1; ++ty) {
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        out->insert(out->end(), bucket.begin(), bucket.end());
+      }
+    }
+  }
+
+ private:
+  static int Clamp(double t, int tiles) {
+    return static_cast<int>(std::clamp(std::floor(t), 0.0, static_cast<double>(tiles - 1)));
+  }
+  int TileIndex(double x, double y) const {
+    return Clamp((y + 0.5) / tile_, tiles_y_) * tiles_x_ + Clamp((x + 0.5) / tile_, tiles_x_);
+  }
+
+  int tile_;
+  int tiles_x_ = 1, tiles_y_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+};
+
+double EndGap(const Group& a, const Group& b) {
+  return std::min({PointSegmentDistance(a.segment.x1, a.segment.y1, b.segment),
+                   PointSegmentDistance(a.segment.x2, a.segment.y2, b.segment),
+                   PointSegmentDistance(b.segment.x1, b.segment.y1, a.segment),
+                   PointSegmentDistance(b.segment.x2, b.segment.y2, a.segment)});
+}
+
+// Step 4: merge groups while the bound allows.
+void MergeGroups(std::vector<Group>* groups, int width, int height, double epsilon, double gap,
+                 double max_added_cost) {
+  GroupTiles tiles(width, height, 8);
+  for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
+  std::vector<std::uint32_t> work(groups->size());
+  std::iota(work.begin(), work.end(), 0);
+  std::vector<std::uint32_t> near, candidates;
+  std::vector<std::uint32_t> tried_stamp(groups->size(), 0);
+  std::uint32_t stamp = 0;
+  Group merged;
+  while (!work.empty()) {
+    const std::uint32_t g = work.back();
+    work.pop_back();
+    if (!(*groups)[g].alive) continue;
+    ++stamp;
+    candidates.clear();
+    const LineSegment& s = (*groups)[g].segment;
+    for (int end = 0; end < 2; ++end) {
+      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, &near);
+      for (std::uint32_t h : near) {
+        if (h == g || tried_stamp[h] == stamp || !(*groups)[h].alive) continue;
+        tried_stamp[h] = stamp;
+        candidates.push_back(h);
+      }
+    }
+    for (std::uint32_t h : candidates) {
+      const Group& a = (*groups)[g];
+      const Group& b = (*groups)[h];
+      if (EndGap(a, b) > gap) continue;
+      merged.moments = a.moments;
+      merged.moments.Merge(b.moments);
+      if (merged.moments.Fit().mean_squared_residual > epsilon * epsilon) continue;
+      merged.cells = a.cells;
+      merged.cells.insert(merged.cells.end(), b.cells.begin(), b.cells.end());
+      if (!RefitGroup(&merged, width, epsilon)) continue;
+      if (merged.cost - a.cost - b.cost > max_added_cost) continue;
+      (*groups)[h].alive = false;
+      (*groups)[h].cells.clear();
+      std::swap((*groups)[g], merged);
+      (*groups)[g].alive = true;
+      tiles.Add(g, (*groups)[g].segment);
+      work.push_back(g);
+      break;
+    }
+  }
+}
+
+// Step 5: drop groups whose cells are all within epsilon of other segments.
+void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, double epsilon,
+                        double max_added_cost) {
+  std::vector<LineSegment> segments;
+  std::vector<std::uint32_t> group_of;
+  for (std::uint32_t id = 0; id < groups->size(); ++id) {
+    if (!(*groups)[id].alive) continue;
+    segments.push_back((*groups)[id].segment);
+    group_of.push_back(id);
+  }
+  SegmentIndex index(&segments, width, height);
+  std::vector<std::uint8_t> skip(segments.size(), 0);
+  std::vector<std::uint32_t> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return (*groups)[group_of[a]].cells.size() < (*groups)[group_of[b]].cells.size();
+  });
+  std::vector<std::uint32_t> targets;
+  std::vector<double> distances;
+  for (std::uint32_t s : order) {
+    Group& group = (*groups)[group_of[s]];
+    skip[s] = 1;
+    targets.clear();
+    distances.clear();
+    bool covered = true;
+    double added_cost = -group.cost;
+    for (std::uint32_t index_of_cell : group.cells) {
+      const CellXY c = CellOfIndex(index_of_cell, width);
+      std::uint32_t nearest = 0;
+      const double d = index.NearestDistance(c.col, c.row, &skip, &nearest);
+      added_cost += d;
+      if (d > epsilon || added_cost > max_added_cost) {
+        covered = false;
+        break;
+      }
+      targets.push_back(nearest);
+      distances.push_back(d);
+    }
+    if (!covered || added_cost > max_added_cost) {
+      skip[s] = 0;
+      continue;
+    }
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      Group& target = (*groups)[group_of[targets[i]]];
+      target.cells.push_back(group.cells[i]);
+      target.cost += distances[i];
+    }
+    group.alive = false;
+    group.cells.clear();
+  }
+}
+
+// Step 6: moves each group's line towards the least-absolute-distance line
+// of its cells (what DisPL_ave measures) by iteratively reweighted total
+// least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
+// covariance), keeping a new line only while it lowers the summed distance
+// and keeps every cell within epsilon. The segment spans all cells.
+void PolishGroupL1(Group* group, int width, double epsilon) {
+  const std::size_t n = group->cells.size();
+  if (n < 3) return;
+  std::vector<double> xs(n), ys(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const CellXY c = CellOfIndex(group->cells[i], width);
+    xs[i] = c.col;
+    ys[i] = c.row;
+  }
+  auto evaluate = [&](const FittedLine& line, double* sum, double* worst) {
+    *sum = 0;
+    *worst = 0;
+    const double nx = -line.direction.y(), ny = line.direction.x();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d =
+          std::abs((xs[i] - line.centroid.x()) * nx + (ys[i] - line.centroid.y()) * ny);
+      *sum += d;
+      *worst = std::max(*worst, d);
+    }
+  };
+  FittedLine best = group->line;
+  double best_sum = 0, worst = 0;
+  evaluate(best, &best_sum, &worst);
+  if (worst > epsilon + kRoundingSlack) return;  // cells handed over off the line's end
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double nx = -best.direction.y(), ny = best.direction.x();
+    double sw = 0, sx = 0, sy = 0;
+    std::vector<double> w(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d =
+          std::abs((xs[i] - best.centroid.x()) * nx + (ys[i] - best.centroid.y()) * ny);
+      w[i] = 1.0 / std::max(d, 0.1);
+      sw += w[i];
+      sx += w[i] * xs[i];
+      sy += w[i] * ys[i];
+    }
+    const Eigen::Vector2d mean(sx / sw, sy / sw);
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dx = xs[i] - mean.x(), dy = ys[i] - mean.y();
+      cov(0, 0) += w[i] * dx * dx;
+      cov(0, 1) += w[i] * dx * dy;
+      cov(1, 1) += w[i] * dy * dy;
+    }
+    cov(1, 0) = cov(0, 1);
+    const FittedLine candidate = FitFromCovariance(mean, cov / sw);
+    double sum = 0;
+    evaluate(candidate, &sum, &worst);
+    if (worst > epsilon + kRoundingSlack || sum >= best_sum - 1e-9) break;
+    best = candidate;
+    best_sum = sum;
+  }
+  group->line = best;
+  group->cost = best_sum;
+  group->segment = SegmentFromProjections(best, xs.data(), ys.data(), n);
+}
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
+                                                        const std::vector<std::uint8_t>& include) {
+  const int width = edges.width, height = edges.height;
+  std::vector<std::uint8_t> open = include;  // 1 = still to trace
+  auto untraced_neighbours = [&](int col, int row) {
+    int count = 0;
+    for (int k = 0; k < 8; ++k) {
+      const int c = col + kDcol[k], r = row + kDrow[k];
+      if (c >= 0 && r >= 0 && c < width && r < height &&
+          open[static_cast<std::size_t>(r) * width + c]) {
+        ++count;
+      }
+    }
+    return count;
+  };
+  // Extends `chain` from its last cell until no untraced neighbour is left,
+  // going straight on where possible (so that the two sides of a two-cell
+  // wall become two chains rather than one zig-zag), then turning as little
+  // as possible; ties go to the neighbour with fewer untraced neighbours.
+  auto walk = [&](std::vector<std::uint32_t>* chain) {
+    int heading = -1;  // direction of the last step, index into kDcol/kDrow
+    if (chain->size() >= 2) {
+      const CellXY a = CellOfIndex((*chain)[chain->size() - 2], width);
+      const CellXY b = CellOfIndex(chain->back(), width);
+      for (int k = 0; k < 8; ++k) {
+        if (a.col + kDcol[k] == b.col && a.row + kDrow[k] == b.row) heading = k;
+      }
+    }
+    for (;;) {
+      const CellXY c = CellOfIndex(chain->back(), width);
+      int best = -1, best_k = -1, best_score = 1 << 30;
+      for (int k = 0; k < 8; ++k) {
+        const int col = c.col + kDcol[k], row = c.row + kDrow[k];
+        if (col < 0 || row < 0 || col >= width || row >= height) continue;
+        if (!open[static_cast<std::size_t>(row) * width + col]) continue;
+        const int turn = heading < 0 ? 0 : TurnSteps(heading, k);
+        const int score = 32 * turn + 2 * untraced_neighbours(col, row) + (k >= 4 ? 1 : 0);
+        if (score < best_score) {
+          best_score = score;
+          best = row * width + col;
+          best_k = k;
+        }
+      }
+      if (best < 0) return;
+      open[best] = 0;
+      chain->push_back(static_cast<std::uint32_t>(best));
+      heading = best_k;
+    }
+  };
+  std::vector<std::vector<std::uint32_t>> chains;
+  auto trace_from = [&](std::size_t seed) {
+    std::vector<std::uint32_t> chain = {static_cast<std::uint32_t>(seed)};
+    open[seed] = 0;
+    walk(&chain);
+    std::reverse(chain.begin(), chain.end());
+    walk(&chain);  // the other way from the seed
+    chains.push_back(std::move(chain));
+  };
+  // Contour ends first, then whatever is left (closed contours).
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int row = 0; row < height; ++row) {
+      for (int col = 0; col < width; ++col) {
+        const std::size_t i = static_cast<std::size_t>(row) * width + col;
+        if (!open[i]) continue;
+        if (pass == 0 && untraced_neighbours(col, row) > 1) continue;
+        trace_from(i);
+      }
+    }
+  }
+  return chains;
+}
+
+std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
+                            double epsilon_cells) {
+  const ChainMoments moments(chain, width);
+  const int n = static_cast<int>(chain.size());
+  std::vector<int> pieces;
+  for (int begin = 0; begin < n;) {
+    int good = std::min(2, n - begin);
+    int bad = -1;
+    while (good < n - begin) {
+      const int trial = std::min(2 * good, n - begin);
+      if (moments.Valid(begin, begin + trial, epsilon_cells)) {
+        good = trial;
+      } else {
+        bad = trial;
+        break;
+      }
+    }
+    while (bad > 0 && bad - good > 1) {
+      const int mid = (good + bad) / 2;
+      (moments.Valid(begin, begin + mid, epsilon_cells) ? good : bad) = mid;
+    }
+    pieces.push_back(good);
+    begin += good;
+  }
+  return pieces;
+}
+
+StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
+                                           const LineExtractionOptions& options) {
+  const double epsilon = options.epsilon_cells;
+  if (!(epsilon > 0)) return InvalidArgumentError("epsilon must be positive");
+  if (!(options.merge_gap_cells >= 0)) return InvalidArgumentError("merge gap must be >= 0");
+  const int width = edges.width, height = edges.height;
+  const std::vector<std::uint8_t> chained =
+      CellsOfLargeComponents(edges, std::max(1, options.min_component_cells));
+
+  const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
+  std::vector<Group> groups;
+  for (const std::vector<std::uint32_t>& chain : TraceEdgeChains(edges, chained)) {
+    int begin = 0;
+    for (int length : SplitChain(chain, width, split_epsilon)) {
+      Group group;
+      group.cells.assign(chain.begin() + begin, chain.begin() + begin + length);
+      for (std::uint32_t index : group.cells) {
+        const CellXY c = CellOfIndex(index, width);
+        group.moments.Add(c.col, c.row);
+      }
+      // SplitChain checked the same line (up to rounding).
+      if (!RefitGroup(&group, width, epsilon)) {
+        return InternalError("a chain piece broke the epsilon bound");
+      }
+      groups.push_back(std::move(group));
+      begin += length;
+    }
+  }
+  MergeGroups(&groups, width, height, epsilon, options.merge_gap_cells,
+              options.max_added_cost_cells);
+  PruneCoveredGroups(&groups, width, height, epsilon, options.max_added_cost_cells);
+  for (Group& group : groups) {
+    if (group.alive) PolishGroupL1(&group, width, epsilon);
+  }
+
+  LinemapLines result;
+  for (const Group& group : groups) {
+    if (group.alive) result.segments.push_back(group.segment);
+  }
+  // Speckle not within epsilon of a wall is left to the furniture layer.
+  result.left_to_blobs.assign(edges.is_edge.size(), 0);
+  SegmentIndex index(&result.segments, width, height);
+  for (std::size_t i = 0; i < edges.is_edge.size(); ++i) {
+    if (!edges.is_edge[i] || chained[i]) continue;
+    const CellXY c = CellOfIndex(static_cast<std::uint32_t>(i), width);
+    if (index.NearestDistance(c.col, c.row) > epsilon) {
+      result.left_to_blobs[i] = 1;
+      ++result.cells_left_to_blobs;
+    }
+  }
+  return result;
+}
+
+}  // namespace linemap::lines_internal
