@@ -80,8 +80,15 @@ struct SegmentationOptions {
   // furniture into one blob (default: the 3x3 cross; nullopt = no joining).
   // Blob cells stay the exact occupied cells.
   std::optional<StructuringElement> furniture_closing = StructuringElement::Cross3();
-  // Cut rows tried around the mid-line before falling back (default 64).
-  int max_cut_rows = 64;
+  // linemap's addition to the paper: the room's own interior cells (M_H
+  // eroded by the 3x3 cross) are kept out of the heavy border, so the
+  // shortest path can cut surges and gaps of at most two cells but never
+  // across a narrow part of the room (a doorway, a corridor), which would
+  // leave whole rooms outside the chain (default true; false = the paper).
+  bool protect_room_interior = true;
+  // Cut rows tried on each side of the mid-line before falling back
+  // (default 16).
+  int max_cut_rows = 16;
 };
 
 // Wall-clock milliseconds of the stages, numbered as the paper's Table 1.
