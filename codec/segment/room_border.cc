@@ -253,15 +253,11 @@ HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
                                const std::vector<StructuringElement>& erode,
                                bool protect_room_interior) {
   HeavyBorder border;
-  border.dilated = layout.room;
-  for (const StructuringElement& element : dilate) {
-    border.dilated = Dilate(border.dilated, element);
-  }
+  border.dilated = DilateAll(layout.room, dilate);
   // D and E are computed on the whole crop, which reaches past the grid, so a
   // room that touches the map edge is not eaten into by the erosion; only
   // the band's cells inside the grid can carry the chain.
-  border.eroded = border.dilated;
-  for (const StructuringElement& element : erode) border.eroded = Erode(border.eroded, element);
+  border.eroded = ErodeAll(border.dilated, erode);
   if (protect_room_interior) {
     border.eroded = Union(border.eroded, Erode(layout.room, StructuringElement::Cross3()));
   }

@@ -113,6 +113,22 @@ TEST(MorphologyTest, MatchesDirectDefinitionOnRandomGrids) {
   }
 }
 
+TEST(MorphologyTest, FullRectanglesMatchDirectDefinition) {
+  // Full rectangles larger than 3x3 take the separable path.
+  std::mt19937 rng(4242);
+  const StructuringElement elements[] = {StructuringElement::Square(5),
+                                         StructuringElement::Square(7),
+                                         {7, 3, std::vector<std::uint8_t>(21, 1)},
+                                         {1, 9, std::vector<std::uint8_t>(9, 1)}};
+  for (const StructuringElement& element : elements) {
+    for (int trial = 0; trial < 6; ++trial) {
+      const BinaryMask mask = RandomMask(&rng, 20 + 23 * trial, 5 + 7 * trial, 0.15 + 0.15 * trial);
+      ASSERT_EQ(Dilate(mask, element), DirectDilate(mask, element));
+      ASSERT_EQ(Erode(mask, element), DirectErode(mask, element));
+    }
+  }
+}
+
 TEST(MorphologyTest, CellWiseOperations) {
   BinaryMask a(3, 1), b(3, 1);
   a.bits = {1, 1, 0};
