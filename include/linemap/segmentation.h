@@ -19,14 +19,19 @@
 //   virgin (0)      the rest.
 // The heavy border (section 3.2 C) is D \ E with D = M_H dilated by
 // border_dilate (in order) and E = D eroded by border_erode (in order),
-// M_H = cells marked 1..3. Its 8-connected components are classified by the
+// M_H = cells marked 1..3. Its 8-connected components are counted, and the
 // paper's mid-line rule (two or more entries along the horizontal mid-line
-// of the box = room border); the outer one is opened with the -2 / -3 lines
-// and closed by the Lee wave and a backward pass that prefers steps next to
-// room space, which cuts the surges. The chain is accepted when the polygon
-// through its cell centres contains a room cell (point in polygon);
-// otherwise other cut rows are tried, and as a last resort the outer contour
-// of D is used (RoomBorder::closed_by_lee = false).
+// of the box = room border) is applied to each (RoomBorder::ring_components).
+// The rule alone would call a hollow pillar a room border and a U-shaped room
+// furniture, so the room's border is decided topologically instead: it is
+// the component holding D's outer boundary (its first cell in raster order).
+// That component is opened with the -2 / -3 lines on a cut row and closed by
+// the Lee wave and a backward pass that prefers steps next to room space,
+// which cuts the surges. The chain is accepted when the polygon through its
+// cell centres holds the robot (point in polygon, as the paper proposes) or,
+// without a robot, at least half of the room's free cells; otherwise the
+// next cut row around the mid-line is tried, and as a last resort the outer
+// contour of D is used (RoomBorder::closed_by_lee = false).
 #ifndef LINEMAP_SEGMENTATION_H_
 #define LINEMAP_SEGMENTATION_H_
 

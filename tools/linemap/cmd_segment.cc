@@ -15,7 +15,7 @@ namespace linemap::cli {
 
 const CommandSpec kSegmentSpec = {
     "segment",
-    "MAP [--pose X,Y] -o OUT.json [--geojson]",
+    "MAP [--pose X,Y] -o OUT.json [--geojson] [--paper-border]",
     "find room-border chains and furniture blobs",
     "Each room is the free space around the robot (--pose) or, without it, every\n"
     "free component of at least 400 cells; its border is a closed chain of cells\n"
@@ -27,6 +27,9 @@ const CommandSpec kSegmentSpec = {
         {"--geojson", "",
          "write GeoJSON (Polygon per room chain and blob outline, "
          "property layer: room_border | furniture)"},
+        {"--paper-border", "",
+         "heavy border exactly as the paper: the shortest path may "
+         "also cut across narrow parts of the room (default: off)"},
     }),
     1,
     1,
@@ -135,6 +138,7 @@ int RunSegment(const std::vector<std::string>& args) {
     grid->WorldToCell((*pose)[0], (*pose)[1], &robot.col, &robot.row);
     options.robot = robot;
   }
+  options.protect_room_interior = !parsed->Has("--paper-border");
   const auto start = std::chrono::steady_clock::now();
   StatusOr<Segmentation> seg = SegmentMap(*grid, options);
   const double ms =

@@ -95,6 +95,10 @@ TEST(SegmentationTest, SyntheticRoomWithFurniturePillarAndSurge) {
   const RoomBorder& room = seg->rooms[0];
   ExpectClosedChain(room.chain, "room");
   EXPECT_TRUE(room.closed_by_lee);
+  // The pillar and the furniture are inside M_H, so the heavy border is one
+  // ring, and the paper's mid-line rule calls it a room border.
+  EXPECT_EQ(room.border_components, 1);
+  EXPECT_EQ(room.ring_components, 1);
   EXPECT_EQ(room.free_cells, 50u * 30u - 24u - 18u - 25u + 2u * 12u);
   // The surge is cut off: the chain stays near the top wall (row 35) and the
   // far part of the streak (rows 40..46) is outside the polygon.
@@ -129,6 +133,19 @@ TEST(SegmentationTest, SyntheticRoomWithFurniturePillarAndSurge) {
   EXPECT_EQ(seg->blobs[0].box, (BoundingBox{12, 10, 17, 13}));
   EXPECT_EQ(seg->blobs[1].first_cell, (CellIndex{25, 15}));
   EXPECT_EQ(seg->blobs[2].first_cell, (CellIndex{40, 18}));
+}
+
+TEST(SegmentationTest, PaperBorderAlsoCutsTheSurge) {
+  SegmentationOptions options;
+  options.protect_room_interior = false;
+  options.robot = CellPoint{30, 20};
+  StatusOr<Segmentation> seg = SegmentMap(SyntheticRoom(), options);
+  ASSERT_TRUE(seg.ok());
+  ASSERT_EQ(seg->rooms.size(), 1u);
+  ExpectClosedChain(seg->rooms[0].chain, "room");
+  EXPECT_TRUE(seg->rooms[0].closed_by_lee);
+  for (const CellIndex& cell : seg->rooms[0].chain) EXPECT_LE(cell.row, 38);
+  EXPECT_EQ(seg->blobs.size(), 3u);
 }
 
 TEST(SegmentationTest, RobotPicksItsRoom) {
