@@ -65,7 +65,10 @@ struct FurnitureBlob {
   std::size_t cell_count = 0;
   CellIndex first_cell;  // first cell in raster order (row-major from row 0)
   BoundingBox box;
-  std::vector<CellIndex> outline;  // closed boundary chain of the blob
+  // Closed outer boundary chain of the blob (Moore tracing, 8-adjacent
+  // steps). Where furniture_closing joined several pieces, it runs around
+  // the joined shape, so it may pass over the closing's bridge cells.
+  std::vector<CellIndex> outline;
 };
 
 struct SegmentationOptions {

@@ -171,6 +171,37 @@ TEST(SegmentationTest, RobotPicksItsRoom) {
   EXPECT_FALSE(SegmentMap(grid, options).ok());
 }
 
+TEST(SegmentationTest, EmptyAndUnknownGridsHaveNoRooms) {
+  for (const Grid& grid : {Grid(), Grid(20, 10, Cell::kUnknown), Grid(20, 10, Cell::kOccupied)}) {
+    StatusOr<Segmentation> seg = SegmentMap(grid);
+    ASSERT_TRUE(seg.ok());
+    EXPECT_TRUE(seg->rooms.empty());
+    EXPECT_TRUE(seg->blobs.empty());
+  }
+}
+
+TEST(SegmentationTest, RoomFillingTheWholeMapFollowsTheMapEdge) {
+  Grid grid(40, 30, Cell::kFree);
+  Fill(&grid, 10, 10, 12, 12, Cell::kOccupied);  // one 3 x 3 blob
+  StatusOr<Segmentation> seg = SegmentMap(grid);
+  ASSERT_TRUE(seg.ok());
+  ASSERT_EQ(seg->rooms.size(), 1u);
+  const RoomBorder& room = seg->rooms[0];
+  ExpectClosedChain(room.chain, "room");
+  // The 8-connected shortest path steps diagonally past the four corner
+  // cells; everything else is enclosed.
+  EXPECT_EQ(room.free_cells, 40u * 30u - 9u);
+  EXPECT_EQ(room.enclosed_free_cells, room.free_cells - 4u);
+  EXPECT_EQ(room.chain.size(), 2u * (40u + 30u) - 8u);
+  for (const CellIndex& cell : room.chain) {
+    EXPECT_TRUE(cell.col == 0 || cell.row == 0 || cell.col == 39 || cell.row == 29)
+        << cell.col << "," << cell.row;
+  }
+  ASSERT_EQ(seg->blobs.size(), 1u);
+  EXPECT_EQ(seg->blobs[0].cell_count, 9u);
+  EXPECT_EQ(seg->blobs[0].outline.size(), 8u);  // the ring around the centre cell
+}
+
 TEST(SegmentationTest, RejectsEvenStructuringElements) {
   SegmentationOptions options;
   StructuringElement even;
