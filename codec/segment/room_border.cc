@@ -12,8 +12,14 @@
 //           minimum-distance "end of path" cell). The backward pass walks
 //           down the distances, preferring a step next to room space ("-4"),
 //           and the chain is closed through the -3 and -2 lines.
-// Acceptance: the polygon through the chain contains a room cell (point in
-// polygon); otherwise the next cut row around the mid-line is tried.
+// The room's component is the one holding D's outer boundary; the mid-line
+// rule is only counted (see segmentation.h for why).
+// Acceptance: the polygon through the chain holds the robot (point in
+// polygon) or, without one, at least half of the room's free cells;
+// otherwise the next cut row around the mid-line is tried, and at last the
+// outer contour of D is used.
+// linemap's addition: with protect_room_interior, the room's own interior
+// (M_H eroded by the 3x3 cross) is kept out of the band.
 #include <algorithm>
 #include <chrono>
 #include <deque>
