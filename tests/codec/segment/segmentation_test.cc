@@ -258,11 +258,21 @@ TEST(SegmentationTest, EveryRoomChainClosedOnSharedMaps) {
     ASSERT_FALSE(seg->rooms.empty()) << path;
     for (const RoomBorder& room : seg->rooms) {
       ExpectClosedChain(room.chain, path);
+      EXPECT_TRUE(room.closed_by_lee) << path << ": fell back to the outer contour";
       for (const CellIndex& cell : room.chain) {
         ASSERT_TRUE(grid->Contains(cell.col, cell.row)) << path;
       }
     }
-    for (const FurnitureBlob& blob : seg->blobs) ExpectClosedChain(blob.outline, path);
+    std::vector<std::uint8_t> taken(grid->size(), 0);
+    for (const FurnitureBlob& blob : seg->blobs) {
+      ExpectClosedChain(blob.outline, path);
+      ASSERT_EQ(blob.cells.size(), blob.cell_count) << path;
+      for (const CellIndex& cell : blob.cells) {
+        ASSERT_EQ(grid->at(cell.col, cell.row), Cell::kOccupied) << path;
+        ASSERT_FALSE(taken[grid->Index(cell.col, cell.row)]) << path << ": blobs overlap";
+        taken[grid->Index(cell.col, cell.row)] = 1;
+      }
+    }
     const std::vector<std::uint8_t> largest = LargestFreeComponent(*grid);
     const BinaryMask fill = FillChainPolygon(seg->rooms[0].chain, grid->width(), grid->height());
     std::size_t total = 0, enclosed = 0;
