@@ -202,6 +202,28 @@ TEST(SegmentationTest, RoomFillingTheWholeMapFollowsTheMapEdge) {
   EXPECT_EQ(seg->blobs[0].outline.size(), 8u);  // the ring around the centre cell
 }
 
+TEST(SegmentationTest, BorderWithoutInsideFallsBackToTheOuterContour) {
+  // A lone streak of free cells in unknown space: the heavy border covers it
+  // completely, no cut row switches into room space, so the chain is the
+  // outer contour of D (here rows 7..13 around the streak on row 10).
+  Grid grid(40, 21, Cell::kUnknown);
+  Fill(&grid, 10, 10, 29, 10, Cell::kFree);
+  StatusOr<Segmentation> seg = SegmentMap(grid);
+  ASSERT_TRUE(seg.ok());
+  ASSERT_EQ(seg->rooms.size(), 1u);
+  const RoomBorder& room = seg->rooms[0];
+  EXPECT_FALSE(room.closed_by_lee);
+  ExpectClosedChain(room.chain, "fallback");
+  EXPECT_EQ(room.enclosed_free_cells, 20u);
+  int min_row = 99, max_row = -1;
+  for (const CellIndex& cell : room.chain) {
+    min_row = std::min(min_row, cell.row);
+    max_row = std::max(max_row, cell.row);
+  }
+  EXPECT_EQ(min_row, 7);
+  EXPECT_EQ(max_row, 13);
+}
+
 TEST(SegmentationTest, RejectsEvenStructuringElements) {
   SegmentationOptions options;
   StructuringElement even;
