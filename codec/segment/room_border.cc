@@ -12,8 +12,14 @@
 //           minimum-distance "end of path" cell). The backward pass walks
 //           down the distances, preferring a step next to room space ("-4"),
 //           and the chain is closed through the -3 and -2 lines.
-// Acceptance: the polygon through the chain contains a room cell (point in
-// polygon); otherwise the next cut row around the mid-line is tried.
+// The room's component is the one holding D's outer boundary; the mid-line
+// rule is only counted (see segmentation.h for why).
+// Acceptance: the polygon through the chain holds the robot (point in
+// polygon) or, without one, at least half of the room's free cells;
+// otherwise the next cut row around the mid-line is tried, and at last the
+// outer contour of D is used.
+// linemap's addition: with protect_room_interior, the room's own interior
+// (M_H eroded by the 3x3 cross) is kept out of the band.
 #include <algorithm>
 #include <chrono>
 #include <deque>
@@ -224,16 +230,20 @@ class LeeCloser {
   std::vector<CellIndex> starts_;
 };
 
-// A room cell off the heavy border: the robot when it is there, else the
-// first free cell of E in raster order.
-std::optional<CellIndex> InteriorSeed(const RoomLayout& layout, const BinaryMask& eroded) {
-  if (layout.robot && eroded.get(layout.robot->col, layout.robot->row)) return layout.robot;
-  for (int r = 0; r < eroded.height; ++r) {
-    for (int c = 0; c < eroded.width; ++c) {
-      if (eroded.at(c, r) && layout.free.at(c, r)) return CellIndex{c, r};
-    }
+// Point in polygon (the paper's proposal for telling the room border from
+// other border components): the chain must hold the robot when its cell is
+// off the heavy border, and otherwise at least half of the room's free cells.
+bool HoldsTheRoom(const std::vector<CellIndex>& chain, const RoomLayout& layout,
+                  const BinaryMask& interior) {
+  if (chain.size() < 4) return false;
+  if (layout.robot && interior.get(layout.robot->col, layout.robot->row)) {
+    return PolygonContains(chain, layout.robot->col, layout.robot->row);
   }
-  return std::nullopt;
+  const BinaryMask fill = FillChainPolygon(chain, layout.free.width, layout.free.height);
+  std::size_t enclosed = 0;
+  for (std::size_t i = 0; i < fill.bits.size(); ++i)
+    enclosed += fill.bits[i] && layout.free.bits[i];
+  return 2 * enclosed >= layout.free_cells;
 }
 
 std::vector<CellIndex> FallbackContour(const BinaryMask& dilated) {
@@ -246,16 +256,19 @@ std::vector<CellIndex> FallbackContour(const BinaryMask& dilated) {
 
 HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
                                const std::vector<StructuringElement>& dilate,
-                               const std::vector<StructuringElement>& erode) {
+                               const std::vector<StructuringElement>& erode,
+                               bool protect_room_interior) {
   HeavyBorder border;
-  border.dilated = layout.room;
-  for (const StructuringElement& element : dilate) {
-    border.dilated = Dilate(border.dilated, element);
+  border.dilated = DilateAll(layout.room, dilate);
+  // D and E are computed on the whole crop, which reaches past the grid, so a
+  // room that touches the map edge is not eaten into by the erosion; only
+  // the band's cells inside the grid can carry the chain.
+  border.eroded = ErodeAll(border.dilated, erode);
+  if (protect_room_interior) {
+    border.eroded = Union(border.eroded, Erode(layout.room, StructuringElement::Cross3()));
   }
+  border.band = Intersect(Subtract(border.dilated, border.eroded), layout.in_grid);
   border.dilated = Intersect(border.dilated, layout.in_grid);
-  border.eroded = border.dilated;
-  for (const StructuringElement& element : erode) border.eroded = Erode(border.eroded, element);
-  border.band = Subtract(border.dilated, border.eroded);
   return border;
 }
 
@@ -289,8 +302,7 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
   for (std::size_t i = 0; i < border.dilated.bits.size() && !outer; ++i) {
     if (border.dilated.bits[i]) outer = labels.labels[i];
   }
-  const std::optional<CellIndex> seed = InteriorSeed(layout, border.eroded);
-  if (outer > 0 && seed) {
+  if (outer > 0) {
     const BinaryMask room_space = Intersect(border.eroded, layout.room);
     LeeCloser closer(labels, outer, border.eroded, room_space);
     const BoundingBox& box = labels.components[outer - 1].box;
@@ -300,7 +312,7 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
       const int row = mid + offset;
       if (row <= box.min_row || row >= box.max_row) continue;
       std::vector<CellIndex> chain = closer.Close(row);
-      if (chain.size() >= 4 && PolygonContains(chain, seed->col, seed->row)) {
+      if (HoldsTheRoom(chain, layout, border.eroded)) {
         closure.chain = std::move(chain);
         closure.closed_by_lee = true;
         break;

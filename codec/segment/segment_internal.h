@@ -37,7 +37,9 @@ std::vector<FurnitureBlob> ExtractBlobs(const Grid& grid, const RoomLayout& layo
                                         std::vector<std::uint8_t>* claimed);
 
 // Stage 1: D = room dilated by each of `dilate`, E = D eroded by each of
-// `erode`, band = D \ E (the heavy border). D is kept inside the grid.
+// `erode`, band = D \ E (the heavy border). D and the band are clipped to
+// the grid after E is computed. With `protect_room_interior`, E also holds
+// the room's own interior cells (M_H eroded by the 3x3 cross).
 struct HeavyBorder {
   BinaryMask dilated;
   BinaryMask eroded;
@@ -45,7 +47,8 @@ struct HeavyBorder {
 };
 HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
                                const std::vector<StructuringElement>& dilate,
-                               const std::vector<StructuringElement>& erode);
+                               const std::vector<StructuringElement>& erode,
+                               bool protect_room_interior);
 
 // Stages 3 and 4: the room's closed chain (crop-local cells).
 struct BorderClosure {

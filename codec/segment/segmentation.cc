@@ -159,8 +159,8 @@ StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& o
     result.timings.room_layout_ms += MsSince(start);
 
     start = Clock::now();
-    const segment_internal::HeavyBorder border =
-        segment_internal::ComputeHeavyBorder(layout, options.border_dilate, options.border_erode);
+    const segment_internal::HeavyBorder border = segment_internal::ComputeHeavyBorder(
+        layout, options.border_dilate, options.border_erode, options.protect_room_interior);
     result.timings.morphology_ms += MsSince(start);
 
     start = Clock::now();
