@@ -1,0 +1,393 @@
+// Stage 4 of the trajectory planner: turn-and-move generation (Kosteley et
+// al., section 3.2 D, the node-queue algorithm after Figure 9; Table 1 stage
+// 9 "neighbourhood template" and stage 10 "trajectory scenario generation").
+//
+// From each node taken from the queue, straight moves are tried along every
+// ray of the neighbourhood template (external cycle: the turning angle;
+// internal cycle: the distance along the ray). A ray walks through the
+// trajectory region M_tb; where it leaves the region (a virgin cell), meets
+// a lower Lee index than the node's, or reaches D_max, the last cell is a
+// candidate end point. Candidates with exactly five virgin 8-neighbours
+// (the region's convex corners) go to Node_Opt; the one with the highest
+// Lee index (ties: the shorter move) is Node_Max. Cells that the straight
+// move of some ray passes over without ending there form the passability
+// matrix (marked along the exact segment, not the ray's rounded staircase,
+// which would hide corners): a candidate in it is not terminal and is not
+// queued. A ray that meets the goal ends the
+// node's expansion (the "end of path" flag).
+//
+// Additions to the paper, each documented where it is made: the exact
+// segment of every move is checked cell by cell against the safe zone (the
+// ray's rounded cells are not the segment's cells); the queue is cut by
+// max_extra_nodes, max_expansions and a per-cell visit limit so that wide
+// regions cannot explode; and when the queue finds nothing although the
+// goal is reachable (possible with a large D_min or a passability matrix
+// hiding every candidate), one shortest path of the region is straightened
+// greedily so that a reachable goal always yields a trajectory.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <set>
+#include <vector>
+
+#include "linemap/plan.h"
+
+namespace linemap {
+namespace {
+
+// How often one cell may start a node at its best depth: bounds the copies
+// of the same continuation that equal-length alternatives create.
+constexpr int kMaxVisitsPerCell = 4;
+// Largest D_max in cells the template accepts (memory ~ 2 pi D^2 offsets).
+constexpr double kMaxTemplateRadius = 500.0;
+
+double Length(int dx, int dy) { return std::sqrt(static_cast<double>(dx) * dx + dy * dy); }
+
+struct Node {
+  CellIndex cell;
+  int parent = -1;
+  int moves = 0;
+  double length = 0.0;
+};
+
+struct Candidate {
+  CellIndex cell;
+  std::int32_t wave = -1;
+  double length = 0.0;
+};
+
+// Per-call scratch arrays; "stamps" let one node's passability matrix and
+// unique-node map be cleared in O(1).
+struct Scratch {
+  std::vector<std::uint32_t> passed;
+  std::vector<std::uint32_t> unique;
+  std::vector<std::int32_t> best_moves;
+  std::vector<std::uint8_t> visits;
+  std::uint32_t stamp = 0;
+};
+
+class Generator {
+ public:
+  Generator(const SafeZone& zone, const LeeWave& wave, const TrajectoryRegion& region,
+            const MoveTemplate& moves, CellIndex start, CellIndex goal,
+            const GenerationOptions& options)
+      : zone_(zone),
+        wave_(wave),
+        region_(region),
+        moves_(moves),
+        start_(start),
+        goal_(goal),
+        options_(options) {
+    const std::size_t n = zone.safe.size();
+    scratch_.passed.assign(n, 0);
+    scratch_.unique.assign(n, 0);
+    scratch_.best_moves.assign(n, -1);
+    scratch_.visits.assign(n, 0);
+  }
+
+  std::vector<CellTrajectory> Run();
+
+ private:
+  std::size_t At(CellIndex c) const {
+    return static_cast<std::size_t>(c.row) * zone_.width + c.col;
+  }
+  void Expand(int node_index);
+  // Walks one ray; returns true when it reached the goal.
+  bool WalkRay(const Node& node, const TemplateRay& ray);
+  // Ends a ray: the move to its farthest safe cell up to index `last`
+  // marks the passability matrix and offers a Node_Opt / Node_Max candidate.
+  void Consider(const Node& node, const TemplateRay& ray, int last);
+  void MarkPassed(CellIndex from, CellIndex to);
+  void Enqueue(int parent, CellIndex cell);
+  bool BeyondCut(int moves) const {
+    return best_moves_ >= 0 && moves > best_moves_ + options_.max_extra_nodes;
+  }
+
+  const SafeZone& zone_;
+  const LeeWave& wave_;
+  const TrajectoryRegion& region_;
+  const MoveTemplate& moves_;
+  CellIndex start_, goal_;
+  GenerationOptions options_;
+  Scratch scratch_;
+  std::vector<Node> nodes_;  // the queue: nodes_[head_..] are waiting
+  std::vector<int> ends_;    // the "end of path" list
+  int best_moves_ = -1;
+  // Node_Max and Node_Opt of the node being expanded.
+  std::vector<Candidate> node_max_;
+  std::vector<Candidate> node_opt_;
+};
+
+void Generator::Enqueue(int parent, CellIndex cell) {
+  const Node& from = nodes_[parent];
+  Node child{cell, parent, from.moves + 1,
+             from.length + Length(cell.col - from.cell.col, cell.row - from.cell.row)};
+  if (BeyondCut(child.moves)) return;
+  if (cell == goal_) {
+    if (ends_.size() >= options_.max_trajectories) return;
+    if (best_moves_ < 0) best_moves_ = child.moves;
+    nodes_.push_back(child);
+    ends_.push_back(static_cast<int>(nodes_.size()) - 1);
+    return;
+  }
+  std::int32_t& best = scratch_.best_moves[At(cell)];
+  std::uint8_t& visits = scratch_.visits[At(cell)];
+  if (best >= 0 && child.moves > best) return;  // reached before with fewer moves
+  if (best == child.moves && visits >= kMaxVisitsPerCell) return;
+  if (best != child.moves) visits = 0;
+  best = child.moves;
+  ++visits;
+  nodes_.push_back(child);
+}
+
+void Generator::MarkPassed(CellIndex from, CellIndex to) {
+  const int dx = to.col - from.col, dy = to.row - from.row;
+  const int n = std::max(std::abs(dx), std::abs(dy));
+  for (int i = 1; i < n; ++i) {
+    const double x = static_cast<double>(dx) * i / n, y = static_cast<double>(dy) * i / n;
+    // A cell the line only grazes (a coordinate exactly half-way) is not
+    // passed through.
+    if (std::abs(x - std::floor(x) - 0.5) < 1e-9 || std::abs(y - std::floor(y) - 0.5) < 1e-9) {
+      continue;
+    }
+    const CellIndex cell{from.col + static_cast<int>(std::lround(x)),
+                         from.row + static_cast<int>(std::lround(y))};
+    scratch_.passed[At(cell)] = scratch_.stamp;
+  }
+}
+
+void Generator::Consider(const Node& node, const TemplateRay& ray, int last) {
+  // The farthest cell of the ray (up to `last`) whose exact segment is safe:
+  // the ray's rounded cells are in the region, but the segment to a cell
+  // may clip a corner outside the safe zone.
+  for (; last >= 0; --last) {
+    const CellIndex cell{node.cell.col + ray.cells[last].dx, node.cell.row + ray.cells[last].dy};
+    if (SegmentIsSafe(zone_, node.cell, cell)) break;
+  }
+  if (last < 0) return;
+  const CellIndex cell{node.cell.col + ray.cells[last].dx, node.cell.row + ray.cells[last].dy};
+  // The passability matrix: the cells this move passes over are not terminal.
+  MarkPassed(node.cell, cell);
+  if (ray.lengths[last] < options_.d_min_cells) return;
+  if (scratch_.unique[At(cell)] == scratch_.stamp) return;
+  const Candidate candidate{cell, wave_.At(cell.col, cell.row), ray.lengths[last]};
+  if (region_.virgin_neighbours[At(cell)] == 5) {
+    node_opt_.push_back(candidate);
+    scratch_.unique[At(cell)] = scratch_.stamp;
+  }
+  // Node_Max: the highest Lee index, then the shortest move. Exact ties
+  // (mirror-image moves) are all kept, so equal alternatives survive.
+  const Candidate& best = node_max_.empty() ? candidate : node_max_.front();
+  const bool higher = candidate.wave > best.wave ||
+                      (candidate.wave == best.wave && candidate.length < best.length - 1e-9);
+  const bool tie = candidate.wave == best.wave && std::abs(candidate.length - best.length) <= 1e-9;
+  if (higher) node_max_.clear();
+  if (higher || tie) {
+    node_max_.push_back(candidate);
+    scratch_.unique[At(cell)] = scratch_.stamp;
+  }
+}
+
+bool Generator::WalkRay(const Node& node, const TemplateRay& ray) {
+  const std::int32_t node_wave = wave_.At(node.cell.col, node.cell.row);
+  const int count = static_cast<int>(ray.cells.size());
+  for (int k = 0; k < count; ++k) {
+    const CellIndex cell{node.cell.col + ray.cells[k].dx, node.cell.row + ray.cells[k].dy};
+    if (!region_.In(cell.col, cell.row) || wave_.At(cell.col, cell.row) < node_wave) {
+      Consider(node, ray, k - 1);  // virgin area or going back: the previous cell ends the move
+      return false;
+    }
+    if (cell == goal_) {
+      if (SegmentIsSafe(zone_, node.cell, cell)) return true;
+      Consider(node, ray, k - 1);
+      return false;
+    }
+    if (k + 1 == count) {  // D_max reached
+      Consider(node, ray, k);
+      return false;
+    }
+  }
+  return false;
+}
+
+void Generator::Expand(int node_index) {
+  const Node node = nodes_[node_index];
+  ++scratch_.stamp;
+  node_max_.clear();
+  node_opt_.clear();
+  for (const TemplateRay& ray : moves_.rays) {
+    if (WalkRay(node, ray)) {  // end of path: only the goal is queued
+      Enqueue(node_index, goal_);
+      return;
+    }
+  }
+  std::vector<Candidate> children = node_opt_;
+  children.insert(children.end(), node_max_.begin(), node_max_.end());
+  std::set<std::size_t> queued;
+  for (const Candidate& c : children) {
+    if (scratch_.passed[At(c.cell)] == scratch_.stamp) continue;  // not terminal
+    if (!queued.insert(At(c.cell)).second) continue;
+    Enqueue(node_index, c.cell);
+  }
+}
+
+std::vector<CellIndex> Waypoints(const std::vector<Node>& nodes, int end) {
+  std::vector<CellIndex> cells;
+  for (int i = end; i >= 0; i = nodes[i].parent) cells.push_back(nodes[i].cell);
+  std::reverse(cells.begin(), cells.end());
+  return cells;
+}
+
+std::vector<CellTrajectory> Generator::Run() {
+  nodes_.push_back(Node{start_, -1, 0, 0.0});
+  scratch_.best_moves[At(start_)] = 0;
+  std::size_t expansions = 0;
+  for (std::size_t head = 0; head < nodes_.size(); ++head) {
+    const Node& node = nodes_[head];
+    if (node.cell == goal_ || BeyondCut(node.moves + 1)) continue;
+    if (++expansions > options_.max_expansions) break;
+    Expand(static_cast<int>(head));
+  }
+  std::vector<CellTrajectory> found;
+  std::set<std::vector<std::pair<int, int>>> seen;
+  for (int end : ends_) {
+    CellTrajectory t;
+    t.waypoints = Waypoints(nodes_, end);
+    t.length_cells = nodes_[end].length;
+    std::vector<std::pair<int, int>> key;
+    for (const CellIndex& c : t.waypoints) key.emplace_back(c.col, c.row);
+    if (seen.insert(key).second) found.push_back(std::move(t));
+  }
+  return found;
+}
+
+// One shortest path of the region (goal back to start by index steps),
+// then straightened: from each waypoint, the farthest path cell reachable by
+// a safe straight segment before the first unsafe one.
+CellTrajectory Fallback(const SafeZone& zone, const LeeWave& wave, const TrajectoryRegion& region,
+                        CellIndex goal) {
+  std::vector<CellIndex> path = {goal};
+  while (wave.At(path.back().col, path.back().row) > 0) {
+    const CellIndex cell = path.back();
+    const std::int32_t lower = wave.At(cell.col, cell.row) - 1;
+    CellIndex next = cell;
+    for (int dy = -1; dy <= 1 && next == cell; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (region.In(cell.col + dx, cell.row + dy) &&
+            wave.At(cell.col + dx, cell.row + dy) == lower &&
+            zone.CanStep(cell.col, cell.row, dx, dy)) {
+          next = {cell.col + dx, cell.row + dy};
+          break;
+        }
+      }
+    }
+    if (next == cell) return {};  // cannot happen for a region built from this wave
+    path.push_back(next);
+  }
+  std::reverse(path.begin(), path.end());
+  CellTrajectory t;
+  t.from_fallback = true;
+  t.waypoints.push_back(path.front());
+  std::size_t i = 0;
+  while (i + 1 < path.size()) {
+    std::size_t j = i + 1;
+    while (j + 1 < path.size() && SegmentIsSafe(zone, path[i], path[j + 1])) ++j;
+    t.length_cells += Length(path[j].col - path[i].col, path[j].row - path[i].row);
+    t.waypoints.push_back(path[j]);
+    i = j;
+  }
+  return t;
+}
+
+}  // namespace
+
+MoveTemplate MoveTemplate::Build(double d_max_cells) {
+  MoveTemplate moves;
+  moves.d_max_cells = std::clamp(d_max_cells, 1.0, kMaxTemplateRadius);
+  const double radius = moves.d_max_cells;
+  int ray_count = static_cast<int>(std::ceil(2.0 * std::numbers::pi * radius));
+  ray_count = std::max(8, (ray_count + 7) / 8 * 8);
+  const double limit = radius * radius + 1e-6;
+  moves.rays.reserve(ray_count);
+  for (int i = 0; i < ray_count; ++i) {
+    TemplateRay ray;
+    ray.angle_rad = 2.0 * std::numbers::pi * i / ray_count;
+    const double cx = std::cos(ray.angle_rad), cy = std::sin(ray.angle_rad);
+    // Steps of a quarter cell: consecutive rounded cells are 8-adjacent.
+    for (double t = 0.25; t <= radius + 0.5; t += 0.25) {
+      const int dx = static_cast<int>(std::lround(t * cx));
+      const int dy = static_cast<int>(std::lround(t * cy));
+      if ((dx == 0 && dy == 0) ||
+          static_cast<double>(dx) * dx + static_cast<double>(dy) * dy > limit) {
+        continue;
+      }
+      if (!ray.cells.empty() && ray.cells.back() == CellOffset{dx, dy}) continue;
+      ray.cells.push_back({dx, dy});
+      ray.lengths.push_back(static_cast<float>(Length(dx, dy)));
+    }
+    moves.cell_count += ray.cells.size();
+    moves.rays.push_back(std::move(ray));
+  }
+  return moves;
+}
+
+std::vector<CellIndex> SegmentCells(CellIndex from, CellIndex to) {
+  const int nx = std::abs(to.col - from.col), ny = std::abs(to.row - from.row);
+  const int sx = to.col > from.col ? 1 : -1, sy = to.row > from.row ? 1 : -1;
+  std::vector<CellIndex> cells = {from};
+  CellIndex at = from;
+  int ix = 0, iy = 0;
+  while (ix < nx || iy < ny) {
+    // Which cell border the segment crosses next: compare (ix + 0.5) / nx
+    // with (iy + 0.5) / ny without division.
+    const long long side =
+        static_cast<long long>(1 + 2 * ix) * ny - static_cast<long long>(1 + 2 * iy) * nx;
+    if (side == 0) {  // through a corner: both side cells are touched
+      cells.push_back({at.col + sx, at.row});
+      cells.push_back({at.col, at.row + sy});
+      at.col += sx;
+      at.row += sy;
+      ++ix;
+      ++iy;
+    } else if (side < 0) {
+      at.col += sx;
+      ++ix;
+    } else {
+      at.row += sy;
+      ++iy;
+    }
+    cells.push_back(at);
+  }
+  return cells;
+}
+
+bool SegmentIsSafe(const SafeZone& zone, CellIndex from, CellIndex to) {
+  for (const CellIndex& c : SegmentCells(from, to)) {
+    if (!zone.IsSafe(c.col, c.row)) return false;
+  }
+  return true;
+}
+
+std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const LeeWave& wave,
+                                                 const TrajectoryRegion& region,
+                                                 const MoveTemplate& moves, CellIndex start,
+                                                 CellIndex goal, const GenerationOptions& options) {
+  if (wave.goal_index < 0 || !region.In(goal.col, goal.row)) return {};
+  if (start == goal) return {CellTrajectory{{start}, 0.0, false}};
+  std::vector<CellTrajectory> found =
+      Generator(zone, wave, region, moves, start, goal, options).Run();
+  if (found.empty()) {
+    CellTrajectory fallback = Fallback(zone, wave, region, goal);
+    if (!fallback.waypoints.empty()) found.push_back(std::move(fallback));
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const CellTrajectory& a, const CellTrajectory& b) {
+                     if (a.waypoints.size() != b.waypoints.size())
+                       return a.waypoints.size() < b.waypoints.size();
+                     return a.length_cells < b.length_cells;
+                   });
+  return found;
+}
+
+}  // namespace linemap
