@@ -56,6 +56,9 @@ Status CheckOptions(const PlanOptions& o, double resolution_m) {
                                 std::to_string(500.0 * resolution_m) + " m at this resolution)");
   }
   if (o.max_extra_nodes < 0) return InvalidArgumentError("max_extra_nodes must be >= 0");
+  if (!Finite(o.max_length_excess) || o.max_length_excess < 0) {
+    return InvalidArgumentError("max_length_excess must be >= 0");
+  }
   return Status::Ok();
 }
 
@@ -157,6 +160,7 @@ StatusOr<PlanResult> Planner::Plan(const Grid& grid, const PlanRequest& request)
   GenerationOptions generation;
   generation.d_min_cells = options_.d_min_m / resolution_m_;
   generation.max_extra_nodes = options_.max_extra_nodes;
+  generation.max_length_excess = options_.max_length_excess;
   generation.max_expansions = options_.max_expansions;
   generation.max_trajectories = options_.max_trajectories;
   const std::vector<CellTrajectory> found = GenerateTrajectories(

@@ -37,10 +37,15 @@ bool TouchesNonObstacle(const Grid& grid, int col, int row) {
   return false;
 }
 
+// Clears the mask's disk around (col, row), one row span at a time.
 void Stamp(const ImpassableAreaMask& mask, int col, int row, SafeZone* zone) {
-  for (const CellOffset& o : mask.offsets) {
-    const int c = col + o.dx, r = row + o.dy;
-    if (zone->Contains(c, r)) zone->safe[static_cast<std::size_t>(r) * zone->width + c] = 0;
+  const int r0 = std::max(0, row - mask.reach), r1 = std::min(zone->height - 1, row + mask.reach);
+  for (int r = r0; r <= r1; ++r) {
+    const int half = mask.half_widths[r - row + mask.reach];
+    const int c0 = std::max(0, col - half), c1 = std::min(zone->width - 1, col + half);
+    if (c0 > c1) continue;
+    std::uint8_t* line = zone->safe.data() + static_cast<std::size_t>(r) * zone->width;
+    std::fill(line + c0, line + c1 + 1, std::uint8_t{0});
   }
 }
 
@@ -67,9 +72,14 @@ ImpassableAreaMask ImpassableAreaMask::Build(double radius_cells) {
   mask.radius_cells = std::max(0.0, radius_cells);
   const double limit = mask.radius_cells * mask.radius_cells + kRadiusSlack;
   const int reach = static_cast<int>(std::floor(mask.radius_cells + kRadiusSlack));
+  mask.reach = reach;
+  mask.half_widths.assign(2 * reach + 1, 0);
   for (int dy = -reach; dy <= reach; ++dy) {
     for (int dx = -reach; dx <= reach; ++dx) {
-      if (dx * dx + dy * dy <= limit) mask.offsets.push_back({dx, dy});
+      if (dx * dx + dy * dy <= limit) {
+        mask.offsets.push_back({dx, dy});
+        mask.half_widths[dy + reach] = std::max(mask.half_widths[dy + reach], dx);
+      }
     }
   }
   return mask;

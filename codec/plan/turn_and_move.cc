@@ -459,11 +459,16 @@ MoveTemplate MoveTemplate::Build(double d_max_cells) {
   return moves;
 }
 
-std::vector<CellIndex> SegmentCells(CellIndex from, CellIndex to) {
+namespace {
+
+// Visits the supercover cells of the segment in order; stops early when
+// `visit` returns false. Returns false iff it stopped early.
+template <typename Visit>
+bool WalkSegment(CellIndex from, CellIndex to, Visit visit) {
   const int nx = std::abs(to.col - from.col), ny = std::abs(to.row - from.row);
   const int sx = to.col > from.col ? 1 : -1, sy = to.row > from.row ? 1 : -1;
-  std::vector<CellIndex> cells = {from};
   CellIndex at = from;
+  if (!visit(at)) return false;
   int ix = 0, iy = 0;
   while (ix < nx || iy < ny) {
     // Which cell border the segment crosses next: compare (ix + 0.5) / nx
@@ -471,8 +476,9 @@ std::vector<CellIndex> SegmentCells(CellIndex from, CellIndex to) {
     const long long side =
         static_cast<long long>(1 + 2 * ix) * ny - static_cast<long long>(1 + 2 * iy) * nx;
     if (side == 0) {  // through a corner: both side cells are touched
-      cells.push_back({at.col + sx, at.row});
-      cells.push_back({at.col, at.row + sy});
+      if (!visit(CellIndex{at.col + sx, at.row}) || !visit(CellIndex{at.col, at.row + sy})) {
+        return false;
+      }
       at.col += sx;
       at.row += sy;
       ++ix;
@@ -484,16 +490,24 @@ std::vector<CellIndex> SegmentCells(CellIndex from, CellIndex to) {
       at.row += sy;
       ++iy;
     }
-    cells.push_back(at);
+    if (!visit(at)) return false;
   }
+  return true;
+}
+
+}  // namespace
+
+std::vector<CellIndex> SegmentCells(CellIndex from, CellIndex to) {
+  std::vector<CellIndex> cells;
+  WalkSegment(from, to, [&](CellIndex c) {
+    cells.push_back(c);
+    return true;
+  });
   return cells;
 }
 
 bool SegmentIsSafe(const SafeZone& zone, CellIndex from, CellIndex to) {
-  for (const CellIndex& c : SegmentCells(from, to)) {
-    if (!zone.IsSafe(c.col, c.row)) return false;
-  }
-  return true;
+  return WalkSegment(from, to, [&](CellIndex c) { return zone.IsSafe(c.col, c.row); });
 }
 
 std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const LeeWave& wave,
@@ -517,12 +531,19 @@ std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const Lee
     if (seen.insert(key).second) shortened.push_back(std::move(s));
   }
   found = std::move(shortened);
-  std::stable_sort(found.begin(), found.end(),
-                   [](const CellTrajectory& a, const CellTrajectory& b) {
-                     if (a.waypoints.size() != b.waypoints.size())
-                       return a.waypoints.size() < b.waypoints.size();
-                     return a.length_cells < b.length_cells;
-                   });
+  double shortest = 0.0;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (i == 0 || found[i].length_cells < shortest) shortest = found[i].length_cells;
+  }
+  const double too_long = shortest * (1.0 + options.max_length_excess) + 1e-9;
+  std::stable_sort(
+      found.begin(), found.end(), [&](const CellTrajectory& a, const CellTrajectory& b) {
+        const bool a_long = a.length_cells > too_long, b_long = b.length_cells > too_long;
+        if (a_long != b_long) return b_long;
+        if (a.waypoints.size() != b.waypoints.size())
+          return a.waypoints.size() < b.waypoints.size();
+        return a.length_cells < b.length_cells;
+      });
   return found;
 }
 

@@ -54,6 +54,10 @@ struct PlanOptions {
   // Nodes beyond (fewest nodes found so far + this) are not expanded: the
   // paper's "significantly higher number of nodes" cut. Default 2.
   int max_extra_nodes = 2;
+  // Ranking: fewest moves first (the paper's criterion), except that a
+  // trajectory longer than (1 + this) x the shortest one found ranks after
+  // every trajectory that is not. 0.05 = 5 %. Default 0.05.
+  double max_length_excess = 0.05;
   // Safety valves for pathological maps; generation stops at either.
   std::size_t max_expansions = 20000;  // nodes taken from the queue. Default 20000.
   std::size_t max_trajectories = 32;   // trajectories kept. Default 32.
@@ -75,6 +79,10 @@ struct CellOffset {
 struct ImpassableAreaMask {
   double radius_cells = 0.0;
   std::vector<CellOffset> offsets;
+  // The same disk as row spans: row dy (from -reach to reach) covers
+  // dx in [-half_widths[dy + reach], half_widths[dy + reach]].
+  int reach = 0;
+  std::vector<int> half_widths;
 
   static ImpassableAreaMask Build(double radius_cells);
 };
@@ -182,6 +190,7 @@ struct MoveTemplate {
 struct GenerationOptions {
   double d_min_cells = 0.0;  // see PlanOptions::d_min_m, in cells
   int max_extra_nodes = 2;
+  double max_length_excess = 0.05;
   std::size_t max_expansions = 20000;
   std::size_t max_trajectories = 32;
 };
@@ -196,7 +205,9 @@ struct CellTrajectory {
   bool from_fallback = false;
 };
 
-// Every trajectory found, best first: fewest moves, then shortest. Each
+// Every trajectory found, best first: fewest moves, then shortest, except
+// that trajectories more than max_length_excess longer than the shortest
+// found come after all the others. Each
 // straight move's segment (centre to centre) only crosses safe cells.
 std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const LeeWave& wave,
                                                  const TrajectoryRegion& region,

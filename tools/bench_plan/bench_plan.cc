@@ -207,7 +207,13 @@ int BenchMap(const std::string& path, const Args& args) {
     const double r =
         reference.length > 0 ? best.length_m / grid.meta.resolution / reference.length : 1.0;
     ratio.Add(r);
-    if (r <= 1.10 + 1e-9) ++within;
+    if (r <= 1.10 + 1e-9) {
+      ++within;
+    } else {
+      std::fprintf(stderr, "over 10%%: %s %d,%d -> %d,%d: %.3f (%zu moves, A* %.1f cells)\n",
+                   path.c_str(), s.col, s.row, g.col, g.row, r, best.cells.size() - 1,
+                   reference.length);
+    }
     moves.Add(static_cast<double>(best.cells.size() - 1));
     astar_cells.Add(static_cast<double>(reference.cells));
     alternatives.Add(static_cast<double>(result->trajectories.size()));

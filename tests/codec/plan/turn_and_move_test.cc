@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "linemap/plan.h"
@@ -111,11 +112,16 @@ void ExpectAllSafe(const Planned& p, CellIndex start, CellIndex goal) {
     }
     EXPECT_NEAR(t.length_cells, length, 1e-9);
   }
-  for (std::size_t i = 1; i < p.trajectories.size(); ++i) {  // best first
-    const CellTrajectory& a = p.trajectories[i - 1];
-    const CellTrajectory& b = p.trajectories[i];
-    EXPECT_TRUE(a.waypoints.size() < b.waypoints.size() ||
-                (a.waypoints.size() == b.waypoints.size() && a.length_cells <= b.length_cells));
+  // Best first: fewest moves, then shortest, among those within 5 % of the
+  // shortest; the longer ones after them, in the same order.
+  double shortest = 1e300;
+  for (const CellTrajectory& t : p.trajectories) shortest = std::min(shortest, t.length_cells);
+  const auto rank = [&](const CellTrajectory& t) {
+    return std::make_tuple(t.length_cells > 1.05 * shortest + 1e-9, t.waypoints.size(),
+                           t.length_cells);
+  };
+  for (std::size_t i = 1; i < p.trajectories.size(); ++i) {
+    EXPECT_LE(rank(p.trajectories[i - 1]), rank(p.trajectories[i]));
   }
 }
 
