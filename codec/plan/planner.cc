@@ -183,7 +183,7 @@ PlannedTrajectory ToPlannedTrajectory(const Grid& grid, const CellTrajectory& tr
                                       double start_heading_rad) {
   PlannedTrajectory out;
   out.cells = trajectory.waypoints;
-  out.from_fallback = trajectory.from_fallback;
+  out.straightened = trajectory.straightened;
   double heading = WrapAngle(start_heading_rad);
   for (std::size_t i = 0; i < trajectory.waypoints.size(); ++i) {
     Pose2D pose;

@@ -22,8 +22,10 @@
 // max_extra_nodes, max_expansions and a per-cell visit limit so that wide
 // regions cannot explode; and when the queue finds nothing although the
 // goal is reachable (possible with a large D_min or a passability matrix
-// hiding every candidate), one shortest path of the region is straightened
-// greedily so that a reachable goal always yields a trajectory. Finally each
+// hiding every candidate); besides, one shortest path of the region is straightened
+// greedily: it is always added as one more alternative (often the shortest;
+// the only one when the queue found nothing), so a reachable goal always
+// yields a trajectory. Finally each
 // trajectory is tightened: waypoints that a direct safe move (<= D_max) can
 // skip are dropped, and inner waypoints slide to shorten their two moves.
 #include <algorithm>
@@ -264,24 +266,26 @@ std::vector<CellTrajectory> Generator::Run() {
   return found;
 }
 
-// One shortest path of the region (goal back to start by index steps),
-// then straightened: from each waypoint, the farthest path cell reachable by
-// a safe straight segment before the first unsafe one.
-CellTrajectory Fallback(const SafeZone& zone, const LeeWave& wave, const TrajectoryRegion& region,
-                        CellIndex goal) {
+// One shortest path of the region (goal back to start by index steps; at a
+// choice, the first neighbour in row order, bottom-up or top-down as asked,
+// so the two calls give mirror-image paths in symmetric rooms), then
+// straightened: from each waypoint, the farthest path cell reachable by a
+// safe straight move no longer than D_max, before the first one that is not.
+CellTrajectory Straightened(const SafeZone& zone, const LeeWave& wave,
+                            const TrajectoryRegion& region, CellIndex goal, bool top_down,
+                            double d_max_cells) {
   std::vector<CellIndex> path = {goal};
+  const int first_dy = top_down ? 1 : -1;
   while (wave.At(path.back().col, path.back().row) > 0) {
     const CellIndex cell = path.back();
     const std::int32_t lower = wave.At(cell.col, cell.row) - 1;
     CellIndex next = cell;
-    for (int dy = -1; dy <= 1 && next == cell; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (region.In(cell.col + dx, cell.row + dy) &&
-            wave.At(cell.col + dx, cell.row + dy) == lower &&
-            zone.CanStep(cell.col, cell.row, dx, dy)) {
-          next = {cell.col + dx, cell.row + dy};
-          break;
-        }
+    for (int k = 0; k < 9 && next == cell; ++k) {
+      const int dy = first_dy * (k / 3 - 1), dx = k % 3 - 1;
+      if (region.In(cell.col + dx, cell.row + dy) &&
+          wave.At(cell.col + dx, cell.row + dy) == lower &&
+          zone.CanStep(cell.col, cell.row, dx, dy)) {
+        next = {cell.col + dx, cell.row + dy};
       }
     }
     if (next == cell) return {};  // cannot happen for a region built from this wave
@@ -289,12 +293,16 @@ CellTrajectory Fallback(const SafeZone& zone, const LeeWave& wave, const Traject
   }
   std::reverse(path.begin(), path.end());
   CellTrajectory t;
-  t.from_fallback = true;
+  t.straightened = true;
   t.waypoints.push_back(path.front());
+  const auto fits = [&](std::size_t i, std::size_t j) {
+    return Length(path[j].col - path[i].col, path[j].row - path[i].row) <= d_max_cells + 1e-9 &&
+           SegmentIsSafe(zone, path[i], path[j]);
+  };
   std::size_t i = 0;
   while (i + 1 < path.size()) {
     std::size_t j = i + 1;
-    while (j + 1 < path.size() && SegmentIsSafe(zone, path[i], path[j + 1])) ++j;
+    while (j + 1 < path.size() && fits(i, j + 1)) ++j;
     t.length_cells += Length(path[j].col - path[i].col, path[j].row - path[i].row);
     t.waypoints.push_back(path[j]);
     i = j;
@@ -308,7 +316,7 @@ CellTrajectory Fallback(const SafeZone& zone, const LeeWave& wave, const Traject
 CellTrajectory Shortcut(const SafeZone& zone, const CellTrajectory& in, double d_max_cells) {
   const std::vector<CellIndex>& w = in.waypoints;
   CellTrajectory out;
-  out.from_fallback = in.from_fallback;
+  out.straightened = in.straightened;
   out.waypoints.push_back(w.front());
   std::size_t i = 0;
   while (i + 1 < w.size()) {
@@ -518,9 +526,12 @@ std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const Lee
   if (start == goal) return {CellTrajectory{{start}, 0.0, false}};
   std::vector<CellTrajectory> found =
       Generator(zone, wave, region, moves, start, goal, options).Run();
-  if (found.empty()) {
-    CellTrajectory fallback = Fallback(zone, wave, region, goal);
-    if (!fallback.waypoints.empty()) found.push_back(std::move(fallback));
+  // Two more alternatives, always: shortest paths of the region, straightened.
+  // It is the only one when the queue found nothing, and often the shortest.
+  for (bool top_down : {false, true}) {
+    CellTrajectory straightened =
+        Straightened(zone, wave, region, goal, top_down, moves.d_max_cells);
+    if (!straightened.waypoints.empty()) found.push_back(std::move(straightened));
   }
   std::set<std::vector<std::pair<int, int>>> seen;
   std::vector<CellTrajectory> shortened;

@@ -200,9 +200,10 @@ struct GenerationOptions {
 struct CellTrajectory {
   std::vector<CellIndex> waypoints;
   double length_cells = 0.0;
-  // True when it came from the fallback (one shortest path of the region,
-  // straightened greedily), used only if the generation found nothing.
-  bool from_fallback = false;
+  // True when it is the region's shortest path straightened greedily (added
+  // to the node queue's results as one more alternative) rather than a
+  // result of the node queue.
+  bool straightened = false;
 };
 
 // Every trajectory found, best first: fewest moves, then shortest, except
@@ -234,7 +235,7 @@ struct PlannedTrajectory {
   std::vector<Pose2D> waypoints;      // map-frame metres; yaw = heading on arrival
   std::vector<CellIndex> cells;       // the same waypoints in cells
   double length_m = 0.0;
-  bool from_fallback = false;
+  bool straightened = false;
 };
 
 struct PlanRequest {

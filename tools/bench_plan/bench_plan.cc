@@ -181,7 +181,7 @@ int BenchMap(const std::string& path, const Args& args) {
   std::mt19937 rng(args.seed);
   std::uniform_int_distribution<std::size_t> pick(0, safe.size() - 1);
   Stat zone_ms, wave_ms, region_ms, gen_ms, total_ms, ratio, moves, astar_cells, alternatives;
-  int reachable = 0, unreachable = 0, mismatched = 0, within = 0, fallbacks = 0;
+  int reachable = 0, unreachable = 0, mismatched = 0, within = 0, straightened = 0;
   for (int k = 0; k < args.pairs; ++k) {
     const CellIndex s = safe[pick(rng)], g = safe[pick(rng)];
     PlanRequest q;
@@ -217,7 +217,7 @@ int BenchMap(const std::string& path, const Args& args) {
     moves.Add(static_cast<double>(best.cells.size() - 1));
     astar_cells.Add(static_cast<double>(reference.cells));
     alternatives.Add(static_cast<double>(result->trajectories.size()));
-    if (best.from_fallback) ++fallbacks;
+    if (best.straightened) ++straightened;
   }
   std::printf(
       "| %s | %dx%d | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.2f / "
@@ -227,7 +227,7 @@ int BenchMap(const std::string& path, const Args& args) {
       template_ms.worst, zone_ms.Mean(), zone_ms.worst, wave_ms.Mean(), wave_ms.worst,
       region_ms.Mean(), region_ms.worst, gen_ms.Mean(), gen_ms.worst, total_ms.Mean(),
       total_ms.worst, reachable, unreachable, mismatched, ratio.Mean(), ratio.worst, within,
-      moves.Mean(), astar_cells.Mean(), alternatives.Mean(), fallbacks);
+      moves.Mean(), astar_cells.Mean(), alternatives.Mean(), straightened);
   std::fflush(stdout);
   return 0;
 }
@@ -248,7 +248,7 @@ int main(int argc, char** argv) {
       "| "
       "regions ms | generation ms | whole call ms | pairs reachable+not | found != A* | length / "
       "A* (mean / worst) | within 10%% | moves (mean) | A* cells (mean) | trajectories (mean) | "
-      "fallbacks |\n");
+      "best is straightened |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int rc = 0;
   for (const std::string& map : args.maps) rc |= linemap::BenchMap(map, args);

@@ -110,7 +110,7 @@ std::string ResultJson(const PlanResult& r, double ms) {
     one.Add("length_m", t.length_m)
         .AddRaw("commands", CommandsJson(t))
         .AddRaw("waypoints", WaypointsJson(t))
-        .Add("fallback", t.from_fallback);
+        .Add("straightened", t.straightened);
     all += one.str();
   }
   all += "]";
@@ -134,7 +134,7 @@ void PrintText(const PlanResult& r, double ms) {
   for (std::size_t i = 0; i < r.trajectories.size(); ++i) {
     const PlannedTrajectory& t = r.trajectories[i];
     std::printf("trajectory %zu: %zu moves, %.3f m%s\n", i + 1, t.waypoints.size() - 1, t.length_m,
-                t.from_fallback ? " (fallback: straightened shortest path)" : "");
+                t.straightened ? " (straightened shortest path of the region)" : "");
     for (const PlanCommand& c : t.commands) {
       if (c.kind == PlanCommand::Kind::kTurn) {
         std::printf("  turn %.2f\n", c.value);

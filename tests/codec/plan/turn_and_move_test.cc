@@ -156,7 +156,7 @@ TEST(GenerateTrajectoriesTest, LShapedCorridorTurnsOnceAtTheCorner) {
   EXPECT_EQ(Pairs(p.trajectories[0].waypoints),
             (std::vector<std::pair<int, int>>{{1, 1}, {8, 1}, {8, 8}}));
   EXPECT_DOUBLE_EQ(p.trajectories[0].length_cells, 14.0);
-  EXPECT_FALSE(p.trajectories[0].from_fallback);
+  EXPECT_FALSE(p.trajectories[0].straightened);
   ExpectAllSafe(p, {1, 1}, {8, 8});
 }
 
@@ -190,6 +190,18 @@ TEST(GenerateTrajectoriesTest, ReturnsEquallyShortAlternatives) {
   }
   EXPECT_TRUE(above);
   EXPECT_TRUE(below);
+  // The node queue itself (not only the straightened shortest paths) goes
+  // both ways: Node_Max keeps mirror-image ties.
+  bool queue_above = false, queue_below = false;
+  for (const CellTrajectory& t : p.trajectories) {
+    if (t.straightened) continue;
+    for (const CellIndex& c : t.waypoints) {
+      queue_above = queue_above || c.row > 6;
+      queue_below = queue_below || c.row < 2;
+    }
+  }
+  EXPECT_TRUE(queue_above);
+  EXPECT_TRUE(queue_below);
 }
 
 TEST(GenerateTrajectoriesTest, NoTrajectoryWhenNoneExists) {
@@ -229,7 +241,7 @@ TEST(GenerateTrajectoriesTest, FallbackWhenDMinForbidsEveryMove) {
   });
   const Planned p = Generate(grid, {1, 1}, {4, 3}, 0.0, /*d_min=*/6.0);
   ASSERT_EQ(p.trajectories.size(), 1u);
-  EXPECT_TRUE(p.trajectories[0].from_fallback);
+  EXPECT_TRUE(p.trajectories[0].straightened);
   EXPECT_EQ(Pairs(p.trajectories[0].waypoints),
             (std::vector<std::pair<int, int>>{{1, 1}, {4, 1}, {4, 3}}));
   ExpectAllSafe(p, {1, 1}, {4, 3});
