@@ -256,5 +256,16 @@ TEST(PlannerAgainstAStarTest, BundledMaps) {
   CompareWithAStar(dir + "/strands/kth/map.yaml", 10, 4);
 }
 
+// Every map of ../shared/maps (skipped when absent): a few random pairs each.
+TEST(PlannerAgainstAStarTest, SharedMaps) {
+  const std::string dir = testing::SharedMapsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  unsigned seed = 100;
+  for (const std::string& yaml : testing::FindYamlFiles(dir)) {
+    if (!LoadRosMap(yaml).ok()) continue;  // a YAML naming a missing image
+    CompareWithAStar(yaml, 3, seed++);
+  }
+}
+
 }  // namespace
 }  // namespace linemap
