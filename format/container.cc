@@ -22,13 +22,11 @@ Status CheckHeader(ByteCursor* cursor, ContainerView* view) {
   }
   LINEMAP_ASSIGN_OR_RETURN(view->major, cursor->ReadU8("version"));
   LINEMAP_ASSIGN_OR_RETURN(view->minor, cursor->ReadU8("version"));
-  LINEMAP_ASSIGN_OR_RETURN(std::uint16_t reserved, cursor->ReadU16("file header"));
   if (view->major != kFormatMajor) {
     return UnsupportedError("format version " + std::to_string(view->major) + "." +
                             std::to_string(view->minor) + " is not supported (this decoder reads " +
                             std::to_string(kFormatMajor) + ".x)");
   }
-  if (reserved != 0) return CorruptError("reserved bits in the file header are set");
   return Status::Ok();
 }
 
@@ -47,12 +45,15 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
       return CorruptError("bad chunk type at byte " + std::to_string(offset));
     }
     const std::string name(reinterpret_cast<const char*>(type), 4);
-    LINEMAP_ASSIGN_OR_RETURN(std::uint32_t length, cursor.ReadU32("chunk length"));
+    auto length_or = cursor.ReadVarint("chunk length");
+    if (!length_or.ok()) return CorruptError("chunk " + name + " has a malformed length");
+    const std::uint64_t length = *length_or;
     if (length > max_chunk_bytes) {
       return ResourceExhaustedError("chunk " + name + " has " + std::to_string(length) +
                                     " bytes, over the limit of " + std::to_string(max_chunk_bytes));
     }
-    auto payload = cursor.ReadBytes(length, "chunk payload");
+    if (length > cursor.remaining()) return CorruptError("chunk " + name + " is truncated");
+    auto payload = cursor.ReadBytes(static_cast<std::size_t>(length), "chunk payload");
     if (!payload.ok()) return CorruptError("chunk " + name + " is truncated");
     auto crc = cursor.ReadU32("chunk CRC");
     if (!crc.ok()) return CorruptError("chunk " + name + " is truncated");
@@ -73,14 +74,12 @@ ContainerWriter::ContainerWriter() {
   out_.assign(kLmapSignature.begin(), kLmapSignature.end());
   out_.push_back(kFormatMajor);
   out_.push_back(kFormatMinor);
-  out_.push_back(0);
-  out_.push_back(0);
 }
 
 void ContainerWriter::AddChunk(const std::string& type, const std::vector<std::uint8_t>& payload) {
   ByteWriter w;
   w.PutBytes(std::string_view(type.data(), 4));
-  w.PutU32(static_cast<std::uint32_t>(payload.size()));
+  w.PutVarint(payload.size());
   w.PutBytes(payload);
   const std::uint8_t* t = reinterpret_cast<const std::uint8_t*>(type.data());
   w.PutU32(ChunkCrc(t, payload.data(), payload.size()));

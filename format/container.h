@@ -1,6 +1,6 @@
 // The .lmap container (spec/format.md sections "File structure" and
-// "Chunks"): an 8-byte signature, a version, then chunks of
-//   type (4 ASCII letters) | length (u32 LE) | payload | CRC-32 of type+payload
+// "Chunks"): an 8-byte signature, a version (2 bytes), then chunks of
+//   type (4 ASCII letters) | length (varint) | payload | CRC-32 of type+payload
 // ending with the empty chunk "LEND". A chunk whose type starts with an
 // upper-case letter is critical (a decoder that does not know it must
 // refuse the file); a lower-case first letter marks an ancillary chunk that
@@ -21,7 +21,7 @@ inline constexpr std::array<std::uint8_t, 8> kLmapSignature = {0x8A, 'L',  'M', 
                                                                'P',  0x0D, 0x0A, 0x1A};
 inline constexpr std::uint8_t kFormatMajor = 1;
 inline constexpr std::uint8_t kFormatMinor = 0;
-inline constexpr std::size_t kFileHeaderSize = 12;  // signature + major + minor + 2 reserved
+inline constexpr std::size_t kFileHeaderSize = 10;  // signature + major + minor
 
 struct Chunk {
   std::string type;                       // exactly 4 ASCII letters

@@ -65,8 +65,7 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
   if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
     ::close(fd);
     return ResourceExhaustedError(Quoted(path) + " is " + std::to_string(st.st_size) +
-                                  " bytes, more than the limit of " +
-                                  std::to_string(max_bytes));
+                                  " bytes, more than the limit of " + std::to_string(max_bytes));
   }
   std::vector<std::uint8_t> bytes;
   bytes.reserve(static_cast<std::size_t>(st.st_size));

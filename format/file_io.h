@@ -14,8 +14,7 @@ namespace linemap {
 // Reads all of `path`. Fails with kNotFound for a missing file, kInvalidArgument
 // for a directory, kResourceExhausted when it is larger than `max_bytes`.
 // Messages name the file.
-StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
-                                                  std::uint64_t max_bytes);
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes);
 
 // Writes `data` to a temporary file in the same directory, flushes it to
 // disk (fsync), then renames it over `path` and syncs the directory. On any

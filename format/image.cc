@@ -109,13 +109,11 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   const bool ascii = bytes[1] == '2';
   PnmHeaderReader header(bytes);
   std::uint64_t width = 0, height = 0, maxval = 0;
-  if (!header.ReadNumber(&width) || !header.ReadNumber(&height) ||
-      !header.ReadNumber(&maxval)) {
+  if (!header.ReadNumber(&width) || !header.ReadNumber(&height) || !header.ReadNumber(&maxval)) {
     return CorruptError(name + ": malformed PGM header");
   }
   if (maxval == 0 || maxval > 65535) {
-    return CorruptError(name + ": PGM maxval " + std::to_string(maxval) +
-                        " is outside 1..65535");
+    return CorruptError(name + ": PGM maxval " + std::to_string(maxval) + " is outside 1..65535");
   }
   LINEMAP_RETURN_IF_ERROR(CheckDimensions(width, height, name, max_cells));
   if (!header.SkipSingleWhitespace()) return CorruptError(name + ": malformed PGM header");
@@ -123,9 +121,8 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   const std::size_t bytes_per_sample = maxval > 255 ? 2 : 1;
   std::size_t pos = header.position();
   if (!ascii && bytes.size() - pos < cells * bytes_per_sample) {
-    return CorruptError(name + ": PGM raster is truncated (" +
-                        std::to_string(bytes.size() - pos) + " bytes for " +
-                        std::to_string(cells) + " pixels)");
+    return CorruptError(name + ": PGM raster is truncated (" + std::to_string(bytes.size() - pos) +
+                        " bytes for " + std::to_string(cells) + " pixels)");
   }
   RawImage image;
   image.width = static_cast<int>(width);
@@ -157,8 +154,7 @@ StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::str
     return CorruptError(name + ": not a PNG image");
   }
   PngReadState state{bytes, 0, {}};
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, PngError, PngWarning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, PngError, PngWarning);
   if (png == nullptr) return InternalError("libpng could not start");
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
@@ -234,8 +230,8 @@ StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cell
 }
 
 std::string EncodePgm(int width, int height, std::span<const std::uint8_t> grey) {
-  std::string out = "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " +
-                    std::to_string(height) + "\n255\n";
+  std::string out =
+      "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
   out.append(reinterpret_cast<const char*>(grey.data()), grey.size());
   return out;
 }

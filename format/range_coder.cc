@@ -19,16 +19,15 @@ void RangeEncoder::ShiftLow() {
   low_ = (low_ & 0x00FFFFFFu) << 8;
 }
 
-void RangeEncoder::Encode(std::uint16_t* prob, int bit) {
-  const std::uint32_t bound = (range_ >> kProbBits) * *prob;
+void RangeEncoder::Encode(BitModel* model, int bit) {
+  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
   if (bit == 0) {
     range_ = bound;
-    *prob = static_cast<std::uint16_t>(*prob + (((1u << kProbBits) - *prob) >> kProbShift));
   } else {
     low_ += bound;
     range_ -= bound;
-    *prob = static_cast<std::uint16_t>(*prob - (*prob >> kProbShift));
   }
+  model->Update(bit);
   while (range_ < kTopValue) {
     range_ <<= 8;
     ShiftLow();
@@ -36,13 +35,26 @@ void RangeEncoder::Encode(std::uint16_t* prob, int bit) {
 }
 
 void RangeEncoder::Finish() {
+  // Any value in [low, low + range) identifies the stream; take the one
+  // with the most trailing zero bits, so the flushed tail is zero bytes,
+  // which are dropped (the decoder reads missing bytes as zero).
+  const std::uint64_t hi = low_ + range_ - 1;
+  for (int bits = 32; bits >= 0; --bits) {
+    const std::uint64_t v = hi & ~((std::uint64_t{1} << bits) - 1);
+    if (v >= low_) {
+      low_ = v;
+      break;
+    }
+  }
   for (int i = 0; i < 5; ++i) ShiftLow();
+  // The first byte is always 0 (the code value is below 1): not stored.
+  out_.erase(out_.begin());
+  while (!out_.empty() && out_.back() == 0) out_.pop_back();
 }
 
 RangeDecoder::RangeDecoder(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {
-  valid_start_ = NextByte() == 0;
+  valid_start_ = size == 0 || data[size - 1] != 0;  // canonical: no trailing zero byte
   for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
-  if (code_ == range_) valid_start_ = false;
 }
 
 std::uint8_t RangeDecoder::NextByte() {
@@ -51,19 +63,18 @@ std::uint8_t RangeDecoder::NextByte() {
   return 0;
 }
 
-int RangeDecoder::Decode(std::uint16_t* prob) {
-  const std::uint32_t bound = (range_ >> kProbBits) * *prob;
+int RangeDecoder::Decode(BitModel* model) {
+  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
   int bit;
   if (code_ < bound) {
     range_ = bound;
-    *prob = static_cast<std::uint16_t>(*prob + (((1u << kProbBits) - *prob) >> kProbShift));
     bit = 0;
   } else {
     range_ -= bound;
     code_ -= bound;
-    *prob = static_cast<std::uint16_t>(*prob - (*prob >> kProbShift));
     bit = 1;
   }
+  model->Update(bit);
   while (range_ < kTopValue) {
     range_ <<= 8;
     code_ = (code_ << 8) | NextByte();

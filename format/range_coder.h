@@ -1,4 +1,4 @@
-// Adaptive binary range coder (the LZMA "rc" coder, Igor Pavlov, public
+// Adaptive binary range coder (after the LZMA "rc" coder, Igor Pavlov, public
 // domain; specified bit for bit in spec/format.md section "Binary range
 // coder"). All arithmetic is on unsigned integers, so every platform produces
 // and reads the same bytes.
@@ -11,15 +11,32 @@
 
 namespace linemap {
 
-// Probability that the next bit is 0, in units of 1/4096; starts at one half.
-inline constexpr int kProbBits = 12;
-inline constexpr std::uint16_t kProbInit = 1 << (kProbBits - 1);
-// Adaptation speed: each coded bit moves the probability by 1/2^5 of the gap.
-inline constexpr int kProbShift = 5;
+// An adaptive bit model: `p` is the probability that the next bit is 0, in
+// units of 2^-16, starting at one half. Each coded bit moves p towards the
+// bit by 1/2^shift of the gap, with shift = kAdaptShift[n] for the model's
+// n-th update (fast at first, then steady at 1/32), so contexts learn quickly
+// and a certain bit costs only ~0.0007 bits.
+inline constexpr int kProbBits = 16;
+inline constexpr int kAdaptSteps = 5;
+inline constexpr std::uint8_t kAdaptShift[kAdaptSteps + 1] = {1, 2, 3, 4, 4, 5};
+
+struct BitModel {
+  std::uint16_t p = 1u << (kProbBits - 1);
+  std::uint8_t n = 0;  // updates so far, saturating at kAdaptSteps
+  void Update(int bit) {
+    const int shift = kAdaptShift[n];
+    if (bit == 0) {
+      p = static_cast<std::uint16_t>(p + (((1u << kProbBits) - p) >> shift));
+    } else {
+      p = static_cast<std::uint16_t>(p - (p >> shift));
+    }
+    if (n < kAdaptSteps) ++n;
+  }
+};
 
 class RangeEncoder {
  public:
-  void Encode(std::uint16_t* prob, int bit);
+  void Encode(BitModel* model, int bit);
   // Writes the final bytes; call once, then take bytes().
   void Finish();
   const std::vector<std::uint8_t>& bytes() const { return out_; }
@@ -34,12 +51,13 @@ class RangeEncoder {
 };
 
 // Never reads outside [data, data + size): past the end it reads zero bytes
-// and counts them; overrun() > 0 after decoding means the input was short.
+// (the encoder drops the zero tail). A valid stream does not end in a zero
+// byte and has every byte read by the end of decoding.
 class RangeDecoder {
  public:
   RangeDecoder(const std::uint8_t* data, std::size_t size);
-  int Decode(std::uint16_t* prob);
-  // False when the first byte is not 0 (a corrupt stream).
+  int Decode(BitModel* model);
+  // False when the stream ends in a zero byte (not canonical: corrupt).
   bool valid_start() const { return valid_start_; }
   std::size_t overrun() const { return overrun_; }
   std::size_t consumed() const { return pos_; }

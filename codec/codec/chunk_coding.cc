@@ -78,18 +78,41 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
   }
 }
 
+// The default thresholds are not stored (header flag bit 2 clear).
+constexpr std::uint64_t kDefaultOccupiedBits = 0x3FE4CCCCCCCCCCCDull;  // 0.65
+constexpr std::uint64_t kDefaultFreeBits = 0x3FC916872B020C4Aull;      // 0.196
+
+enum HeaderFlag : std::uint8_t {
+  kFlagNegate = 1,
+  kFlagLossless = 2,
+  kFlagThresholds = 4,  // occupied and free thresholds follow
+  kFlagYaw = 8,         // origin yaw follows (else 0)
+  kFlagsKnown = 15,
+};
+
 std::vector<std::uint8_t> WriteHeader(const HeaderFields& h) {
+  const std::uint64_t occ = std::bit_cast<std::uint64_t>(h.meta.occupied_thresh);
+  const std::uint64_t fre = std::bit_cast<std::uint64_t>(h.meta.free_thresh);
+  const std::uint64_t yaw = std::bit_cast<std::uint64_t>(h.meta.origin.yaw);
+  const bool thresholds = occ != kDefaultOccupiedBits || fre != kDefaultFreeBits;
+  std::uint8_t flags = 0;
+  if (h.meta.negate) flags |= kFlagNegate;
+  if (h.lossless) flags |= kFlagLossless;
+  if (thresholds) flags |= kFlagThresholds;
+  if (yaw != 0) flags |= kFlagYaw;
   ByteWriter w;
-  w.PutU32(static_cast<std::uint32_t>(h.width));
-  w.PutU32(static_cast<std::uint32_t>(h.height));
+  w.PutVarint(static_cast<std::uint64_t>(h.width));
+  w.PutVarint(static_cast<std::uint64_t>(h.height));
+  w.PutU8(flags);
+  w.PutU8(static_cast<std::uint8_t>(h.meta.mode));
   w.PutU64(std::bit_cast<std::uint64_t>(h.meta.resolution));
   w.PutU64(std::bit_cast<std::uint64_t>(h.meta.origin.x));
   w.PutU64(std::bit_cast<std::uint64_t>(h.meta.origin.y));
-  w.PutU64(std::bit_cast<std::uint64_t>(h.meta.origin.yaw));
-  w.PutU64(std::bit_cast<std::uint64_t>(h.meta.occupied_thresh));
-  w.PutU64(std::bit_cast<std::uint64_t>(h.meta.free_thresh));
-  w.PutU8(static_cast<std::uint8_t>(h.meta.mode));
-  w.PutU8(static_cast<std::uint8_t>((h.meta.negate ? 1 : 0) | (h.lossless ? 2 : 0)));
+  if (flags & kFlagYaw) w.PutU64(yaw);
+  if (flags & kFlagThresholds) {
+    w.PutU64(occ);
+    w.PutU64(fre);
+  }
   return w.bytes();
 }
 
@@ -97,27 +120,34 @@ StatusOr<HeaderFields> ReadHeader(const std::uint8_t* data, std::size_t size,
                                   const DecodeLimits& limits) {
   ByteCursor c(data, size);
   HeaderFields h;
-  LINEMAP_ASSIGN_OR_RETURN(std::uint32_t width, c.ReadU32("width"));
-  LINEMAP_ASSIGN_OR_RETURN(std::uint32_t height, c.ReadU32("height"));
-  if (width > 0x7FFFFFFFu || height > 0x7FFFFFFFu) return CorruptError("dimensions out of range");
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t width, c.ReadVarintAtMost(0x7FFFFFFF, "width"));
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t height, c.ReadVarintAtMost(0x7FFFFFFF, "height"));
   std::uint64_t cells = 0;
   if (!CheckedMul(width, height, &cells) || cells > limits.max_cells) {
     return ResourceExhaustedError("map of " + std::to_string(width) + " x " +
                                   std::to_string(height) + " cells is over the limit of " +
                                   std::to_string(limits.max_cells) + " cells");
   }
-  std::uint64_t bits[6];
-  for (std::uint64_t& b : bits) {
-    LINEMAP_ASSIGN_OR_RETURN(b, c.ReadU64("header number"));
+  LINEMAP_ASSIGN_OR_RETURN(std::uint8_t flags, c.ReadU8("flags"));
+  LINEMAP_ASSIGN_OR_RETURN(std::uint8_t mode, c.ReadU8("mode"));
+  if ((flags & ~kFlagsKnown) != 0) return CorruptError("reserved header flags are set");
+  if (mode > 2) return CorruptError("unknown pixel mode " + std::to_string(mode));
+  std::uint64_t bits[6] = {0, 0, 0, 0, kDefaultOccupiedBits, kDefaultFreeBits};
+  const int count = 3;
+  for (int i = 0; i < count; ++i) {
+    LINEMAP_ASSIGN_OR_RETURN(bits[i], c.ReadU64("header number"));
+  }
+  if (flags & kFlagYaw) {
+    LINEMAP_ASSIGN_OR_RETURN(bits[3], c.ReadU64("origin yaw"));
+  }
+  if (flags & kFlagThresholds) {
+    LINEMAP_ASSIGN_OR_RETURN(bits[4], c.ReadU64("occupied threshold"));
+    LINEMAP_ASSIGN_OR_RETURN(bits[5], c.ReadU64("free threshold"));
   }
   if (!IsPositiveFinite(bits[0])) return CorruptError("resolution is not a positive number");
   for (int i = 1; i < 6; ++i) {
     if (!IsFinite(bits[i])) return CorruptError("header number is not finite");
   }
-  LINEMAP_ASSIGN_OR_RETURN(std::uint8_t mode, c.ReadU8("mode"));
-  LINEMAP_ASSIGN_OR_RETURN(std::uint8_t flags, c.ReadU8("flags"));
-  if (mode > 2) return CorruptError("unknown pixel mode " + std::to_string(mode));
-  if ((flags & ~3u) != 0) return CorruptError("reserved header flags are set");
   if (!c.empty()) return CorruptError("header has trailing bytes");
   h.width = static_cast<int>(width);
   h.height = static_cast<int>(height);
@@ -127,8 +157,8 @@ StatusOr<HeaderFields> ReadHeader(const std::uint8_t* data, std::size_t size,
   h.meta.occupied_thresh = std::bit_cast<double>(bits[4]);
   h.meta.free_thresh = std::bit_cast<double>(bits[5]);
   h.meta.mode = static_cast<MapMode>(mode);
-  h.meta.negate = (flags & 1) != 0;
-  h.lossless = (flags & 2) != 0;
+  h.meta.negate = (flags & kFlagNegate) != 0;
+  h.lossless = (flags & kFlagLossless) != 0;
   return h;
 }
 

@@ -14,8 +14,8 @@ namespace linemap {
 namespace {
 
 // The critical chunks in their required order; each at most once.
-constexpr const char* kCriticalOrder[] = {kRoomChunk, kFreeChunk,     kSegmentChunk,
-                                          kBlobChunk, kOccupiedChunk, kResidualChunk};
+constexpr const char* kCriticalOrder[] = {kRoomChunk,     kSegmentChunk, kBlobChunk,
+                                          kOccupiedChunk, kFreeChunk,    kResidualChunk};
 constexpr int kCriticalCount = 6;
 
 int CriticalRank(const std::string& type) {

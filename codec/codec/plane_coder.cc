@@ -5,13 +5,13 @@
 namespace linemap {
 namespace {
 
-// A width x height bit plane with 2 cells of zero padding on the left, right
-// and below row 0, so the templates never test bounds.
+// A width x height bit plane with padding (2 cells left and right, 2 rows
+// below row 0, 1 row above the last), so the templates never test bounds.
 class PaddedPlane {
  public:
   PaddedPlane(int width, int height, std::uint8_t pad)
       : stride_(static_cast<std::size_t>(width) + 4),
-        bits_(stride_ * (static_cast<std::size_t>(height) + 2), pad) {}
+        bits_(stride_ * (static_cast<std::size_t>(height) + 3), pad) {}
   std::size_t At(int col, int row) const {
     return (static_cast<std::size_t>(row) + 2) * stride_ + static_cast<std::size_t>(col) + 2;
   }
@@ -34,102 +34,64 @@ inline unsigned Template10(const PaddedPlane& g, std::size_t i) {
          g[n + 2] << 6 | g[nn] << 7 | g[nn - 1] << 8 | g[nn + 1] << 9;
 }
 
-constexpr unsigned kTemplateContexts = 1u << 10;
-
 inline bool IsFree(Cell c) { return c == Cell::kFree; }
 inline bool IsOccupied(Cell c) { return c == Cell::kOccupied; }
 
-// Extra context of the OCCP plane from the canvas around cell (col, row):
-// bit 0 canvas cell free, bit 1 east or next-row neighbour occupied, bit 2
-// any 4-neighbour free.
-unsigned OccupiedCanvasContext(const std::vector<Cell>& canvas, int width, int height, int col,
-                               int row) {
-  const std::size_t i = static_cast<std::size_t>(row) * width + col;
-  const bool e_occ = col + 1 < width && IsOccupied(canvas[i + 1]);
-  const bool s_occ = row + 1 < height && IsOccupied(canvas[i + width]);
-  const bool any_free =
-      (col > 0 && IsFree(canvas[i - 1])) || (col + 1 < width && IsFree(canvas[i + 1])) ||
-      (row > 0 && IsFree(canvas[i - width])) || (row + 1 < height && IsFree(canvas[i + width]));
-  return (IsFree(canvas[i]) ? 1u : 0u) | (e_occ || s_occ ? 2u : 0u) | (any_free ? 4u : 0u);
-}
-
 Status CheckEnd(const RangeDecoder& dec, std::size_t size, const char* plane) {
-  // A stream holds exactly the bytes its decoding reads (5 to start, one per
-  // renormalisation), so a shorter or longer one is corrupt.
-  if (!dec.valid_start() || dec.overrun() > 0 || dec.consumed() != size) {
+  // Decoding must read every stored byte (the zero tail it reads beyond is
+  // implied), so a stream with extra bytes is corrupt.
+  if (!dec.valid_start() || dec.consumed() != size) {
     return CorruptError(std::string(plane) + " range-coded data is malformed or truncated");
   }
   return Status::Ok();
 }
 
+// The canvas's occupied cells as a padded plane.
+PaddedPlane OccupiedPlane(const std::vector<Cell>& canvas, int width, int height) {
+  PaddedPlane occ(width, height, 0);
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      occ[occ.At(col, row)] = IsOccupied(canvas[cell]) ? 1 : 0;
+    }
+  }
+  return occ;
+}
+
+// OCCP context: the template over the occupancy so far (cells the canvas
+// already holds as occupied count, also ahead of the scan), the canvas
+// occupancy east and on the next row, and whether the canvas cell is free.
+inline unsigned OccupiedContext(const PaddedPlane& g, std::size_t i, bool canvas_free) {
+  return Template10(g, i) | g[i + 1] << 10 | g[i + g.stride()] << 11 |
+         (canvas_free ? 1u : 0u) << 12;
+}
+constexpr unsigned kOccupiedContexts = 1u << 13;
+
+// FREE context: the template over the free bits, the canvas occupancy at the
+// four neighbours, and whether the canvas cell is free.
+inline unsigned FreeContext(const PaddedPlane& f, const PaddedPlane& occ, std::size_t i,
+                            bool canvas_free) {
+  const std::size_t s = occ.stride();
+  return Template10(f, i) | occ[i - 1] << 10 | occ[i + 1] << 11 | occ[i - s] << 12 |
+         occ[i + s] << 13 | (canvas_free ? 1u : 0u) << 14;
+}
+constexpr unsigned kFreeContexts = 1u << 15;
+
 }  // namespace
-
-std::vector<std::uint8_t> EncodeFreePlane(const std::vector<FreeTarget>& target,
-                                          const std::vector<Cell>& canvas, int width, int height,
-                                          std::vector<std::uint8_t>* decided) {
-  PaddedPlane g(width, height, 0);
-  std::vector<std::uint16_t> probs(2 * kTemplateContexts, kProbInit);
-  RangeEncoder enc;
-  decided->assign(canvas.size(), 0);
-  std::size_t cell = 0;
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col, ++cell) {
-      const std::size_t i = g.At(col, row);
-      const unsigned ctx = Template10(g, i) | (IsFree(canvas[cell]) ? kTemplateContexts : 0u);
-      std::uint16_t* p = &probs[ctx];
-      int bit = static_cast<int>(target[cell]);
-      if (target[cell] == FreeTarget::kDontCare) bit = *p >= kProbInit ? 0 : 1;
-      enc.Encode(p, bit);
-      g[i] = static_cast<std::uint8_t>(bit);
-      (*decided)[cell] = static_cast<std::uint8_t>(bit);
-    }
-  }
-  enc.Finish();
-  return enc.bytes();
-}
-
-Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
-                       std::vector<Cell>* canvas) {
-  PaddedPlane g(width, height, 0);
-  std::vector<std::uint16_t> probs(2 * kTemplateContexts, kProbInit);
-  RangeDecoder dec(data, size);
-  std::size_t cell = 0;
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col, ++cell) {
-      const std::size_t i = g.At(col, row);
-      Cell& c = (*canvas)[cell];
-      const unsigned ctx = Template10(g, i) | (IsFree(c) ? kTemplateContexts : 0u);
-      const int bit = dec.Decode(&probs[ctx]);
-      g[i] = static_cast<std::uint8_t>(bit);
-      if (bit) {
-        c = Cell::kFree;
-      } else if (IsFree(c)) {
-        c = Cell::kUnknown;
-      }
-    }
-    if (dec.overrun() > 0) break;
-  }
-  return CheckEnd(dec, size, "FREE");
-}
 
 std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& target,
                                               const std::vector<Cell>& canvas, int width,
                                               int height) {
-  PaddedPlane g(width, height, 0);
-  std::vector<std::uint16_t> probs(8 * kTemplateContexts, kProbInit);
+  PaddedPlane g = OccupiedPlane(canvas, width, height);
+  std::vector<BitModel> models(kOccupiedContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col, ++cell) {
+      if (IsOccupied(canvas[cell])) continue;
       const std::size_t i = g.At(col, row);
-      if (IsOccupied(canvas[cell])) {
-        g[i] = 1;
-        continue;
-      }
-      const unsigned ctx = Template10(g, i) | OccupiedCanvasContext(canvas, width, height, col, row)
-                                                  << 10;
       const int bit = target[cell] ? 1 : 0;
-      enc.Encode(&probs[ctx], bit);
+      enc.Encode(&models[OccupiedContext(g, i, IsFree(canvas[cell]))], bit);
       g[i] = static_cast<std::uint8_t>(bit);
     }
   }
@@ -139,34 +101,62 @@ std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& t
 
 Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
-  PaddedPlane g(width, height, 0);
-  std::vector<std::uint16_t> probs(8 * kTemplateContexts, kProbInit);
+  PaddedPlane g = OccupiedPlane(*canvas, width, height);
+  std::vector<BitModel> models(kOccupiedContexts);
   RangeDecoder dec(data, size);
   std::vector<Cell>& cv = *canvas;
-  // Cells turned occupied are recorded in g and applied after the row, so the
-  // canvas context of later cells sees the canvas as it was before OCCP.
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col, ++cell) {
+      if (IsOccupied(cv[cell])) continue;
       const std::size_t i = g.At(col, row);
-      if (IsOccupied(cv[cell])) {
+      if (dec.Decode(&models[OccupiedContext(g, i, IsFree(cv[cell]))])) {
         g[i] = 1;
-        continue;
+        cv[cell] = Cell::kOccupied;
       }
-      const unsigned ctx = Template10(g, i) | OccupiedCanvasContext(cv, width, height, col, row)
-                                                  << 10;
-      g[i] = static_cast<std::uint8_t>(dec.Decode(&probs[ctx]));
     }
-    if (dec.overrun() > 0) break;
   }
-  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "OCCP"));
-  cell = 0;
+  return CheckEnd(dec, size, "OCCP");
+}
+
+std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& target,
+                                          const std::vector<Cell>& canvas, int width, int height) {
+  const PaddedPlane occ = OccupiedPlane(canvas, width, height);
+  PaddedPlane f(width, height, 0);
+  std::vector<BitModel> models(kFreeContexts);
+  RangeEncoder enc;
+  std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col, ++cell) {
-      if (g[g.At(col, row)]) cv[cell] = Cell::kOccupied;
+      if (IsOccupied(canvas[cell])) continue;
+      const std::size_t i = f.At(col, row);
+      const int bit = target[cell] ? 1 : 0;
+      enc.Encode(&models[FreeContext(f, occ, i, IsFree(canvas[cell]))], bit);
+      f[i] = static_cast<std::uint8_t>(bit);
     }
   }
-  return Status::Ok();
+  enc.Finish();
+  return enc.bytes();
+}
+
+Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
+                       std::vector<Cell>* canvas) {
+  const PaddedPlane occ = OccupiedPlane(*canvas, width, height);
+  PaddedPlane f(width, height, 0);
+  std::vector<BitModel> models(kFreeContexts);
+  RangeDecoder dec(data, size);
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      Cell& c = (*canvas)[cell];
+      if (IsOccupied(c)) continue;
+      const std::size_t i = f.At(col, row);
+      const int bit = dec.Decode(&models[FreeContext(f, occ, i, IsFree(c))]);
+      f[i] = static_cast<std::uint8_t>(bit);
+      c = bit ? Cell::kFree : Cell::kUnknown;
+    }
+  }
+  return CheckEnd(dec, size, "FREE");
 }
 
 namespace {
@@ -204,7 +194,7 @@ inline Cell Alternative(Cell predicted, int which) {
 std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
                                               const std::vector<Cell>& canvas, int width,
                                               int height) {
-  std::vector<std::uint16_t> probs(2 * kResidualContexts, kProbInit);
+  std::vector<BitModel> probs(2 * kResidualContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
@@ -223,7 +213,7 @@ std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
 
 Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
-  std::vector<std::uint16_t> probs(2 * kResidualContexts, kProbInit);
+  std::vector<BitModel> probs(2 * kResidualContexts);
   RangeDecoder dec(data, size);
   const std::vector<Cell> lossy = *canvas;
   std::vector<Cell>& truth = *canvas;
@@ -235,7 +225,6 @@ Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width
         truth[cell] = Alternative(lossy[cell], dec.Decode(&probs[ctx + 1]));
       }
     }
-    if (dec.overrun() > 0) break;
   }
   return CheckEnd(dec, size, "RESD");
 }

@@ -15,26 +15,20 @@
 
 namespace linemap {
 
-// Target of the FREE plane, per cell.
-enum class FreeTarget : std::uint8_t { kNotFree = 0, kFree = 1, kDontCare = 2 };
-
-// Codes which cells are free. `canvas` is the grid decoded before this chunk
-// (width*height, grid-row order); don't-care cells take the more probable
-// value under the model. Returns the range-coder bytes and, in *decided, the
-// bits actually coded (1 = free).
-std::vector<std::uint8_t> EncodeFreePlane(const std::vector<FreeTarget>& target,
-                                          const std::vector<Cell>& canvas, int width, int height,
-                                          std::vector<std::uint8_t>* decided);
-// Sets each canvas cell free (bit 1) or, when it was free, unknown (bit 0).
-Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
-                       std::vector<Cell>* canvas);
-
-// Codes which not-yet-occupied canvas cells become occupied (`target` 1).
+// OCCP: codes which cells that the canvas (width*height, grid-row order)
+// does not already hold as occupied become occupied (`target` 1).
 std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& target,
                                               const std::vector<Cell>& canvas, int width,
                                               int height);
 Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas);
+
+// FREE: codes, for every cell the canvas does not hold as occupied, whether
+// it is free (`target` 1); the decoder makes it free or unknown.
+std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& target,
+                                          const std::vector<Cell>& canvas, int width, int height);
+Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
+                       std::vector<Cell>* canvas);
 
 // Codes `truth` exactly, given the lossy canvas as prediction.
 std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,

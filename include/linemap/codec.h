@@ -21,8 +21,22 @@
 
 namespace linemap {
 
+enum class LosslessMethod {
+  // The occupied and free layers are coded exactly (segments only on
+  // occupied cells); no residual is needed. The default: the smallest.
+  kExactLayers,
+  // The lossy layers plus a RESD residual plane (the difference).
+  kResidual,
+};
+
 struct EncodeOptions {
   bool lossless = false;
+  LosslessMethod lossless_method = LosslessMethod::kExactLayers;
+  // Store the extractor's wall segments (SEGS). Segments shorter than
+  // min_segment_cells (cells along the longer axis; default 16) are left to
+  // the OCCP plane, which codes short pieces more cheaply.
+  bool store_segments = true;
+  int min_segment_cells = 16;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
   // linemap extractor tolerance in cells (default 1.0); see lines.h.
@@ -30,11 +44,12 @@ struct EncodeOptions {
   // Robot position in map-frame metres, stored in the metadata and used to
   // seed the edge map when given.
   std::optional<Pose2D> robot_pose;
-  // Metadata text. `time` is stored only when non-empty, so that encoding the
-  // same map twice gives the same bytes.
-  std::string creator = "linemap";
+  // Metadata text, each entry stored only when non-empty (the "meta" chunk
+  // is left out when all are): a tiny map's file stays smaller than its PNG,
+  // and without `time` encoding the same map twice gives the same bytes.
+  std::string creator;
   std::string time;
-  std::string frame_id = "map";
+  std::string frame_id;
 };
 
 // Caller-set bounds on what a file may make the decoder allocate or do.

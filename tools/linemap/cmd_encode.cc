@@ -54,7 +54,10 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     options.robot_pose = Pose2D{pose[0], pose[1], pose.size() > 2 ? pose[2] : 0.0};
   }
   if (std::optional<std::string> time = args.Get("--time")) options.time = *time;
-  options.creator = std::string("linemap ") + LINEMAP_VERSION_STRING;
+  if (args.Has("--metadata")) {
+    options.creator = std::string("linemap ") + LINEMAP_VERSION_STRING;
+    options.frame_id = "map";
+  }
   return options;
 }
 

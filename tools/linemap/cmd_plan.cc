@@ -6,7 +6,13 @@
 namespace linemap::cli {
 
 const CommandSpec kPlanSpec = {
-    "plan", "MAP_OR_LMAP --from X,Y[,HEADING] --to X,Y", "plan a turn-and-move trajectory on a map", "", {}, 0, 1000,
+    "plan",
+    "MAP_OR_LMAP --from X,Y[,HEADING] --to X,Y",
+    "plan a turn-and-move trajectory on a map",
+    "",
+    {},
+    0,
+    1000,
 };
 
 int RunPlan(const std::vector<std::string>& args) {
