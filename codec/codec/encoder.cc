@@ -161,6 +161,41 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::
   return target;
 }
 
+// True when consecutive cells (and the last and first) are 8-neighbours and
+// all lie in the grid: what the ROOM chunk can store.
+bool IsStorableChain(const Grid& grid, const std::vector<CellIndex>& chain) {
+  if (chain.size() < 2) return false;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const CellIndex p = chain[i];
+    const CellIndex q = chain[(i + 1) % chain.size()];
+    if (!grid.Contains(p.col, p.row)) return false;
+    const int dc = std::abs(p.col - q.col);
+    const int dr = std::abs(p.row - q.row);
+    if (dc > 1 || dr > 1 || (dc == 0 && dr == 0)) return false;
+  }
+  return true;
+}
+
+// Room-border chains from the segmentation (segmentation.h).
+StatusOr<std::vector<std::vector<CellIndex>>> RoomChains(const Grid& grid,
+                                                         const EncodeOptions& options) {
+  SegmentationOptions seg_options;
+  if (options.robot_pose) {
+    CellPoint robot;
+    grid.WorldToCell(options.robot_pose->x, options.robot_pose->y, &robot.col, &robot.row);
+    if (grid.Contains(static_cast<int>(std::nearbyint(robot.col)),
+                      static_cast<int>(std::nearbyint(robot.row)))) {
+      seg_options.robot = robot;
+    }
+  }
+  LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
+  std::vector<std::vector<CellIndex>> chains;
+  for (RoomBorder& room : seg.rooms) {
+    if (IsStorableChain(grid, room.chain)) chains.push_back(std::move(room.chain));
+  }
+  return chains;
+}
+
 // Quantises an extracted line to the lattice: endpoints rounded to the
 // nearest cell centre and clamped into the map.
 LatticeSegment ToLattice(const LineSegment& line, int width, int height) {
@@ -287,6 +322,16 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
 
   std::vector<Cell> canvas(grid.size(), Cell::kUnknown);
   std::vector<std::uint8_t> occupied = OccupiedTarget(grid, exact ? 0.0 : kSpeckBudget);
+
+  if (options.store_room_chains) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::vector<CellIndex>> chains, RoomChains(grid, options));
+    if (!chains.empty()) {
+      writer.AddChunk(kRoomChunk, WrapPayload(WriteChains(chains), true));
+      for (const auto& chain : chains) {
+        FillChain(chain, [&](int c, int r) { canvas[grid.Index(c, r)] = Cell::kFree; });
+      }
+    }
+  }
 
   std::vector<LatticeSegment> segments;
   if (with_segments) {

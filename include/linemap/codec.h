@@ -37,6 +37,9 @@ struct EncodeOptions {
   // the OCCP plane, which codes short pieces more cheaply.
   bool store_segments = true;
   int min_segment_cells = 16;
+  // Store the room-border chains of SegmentMap() (ROOM), filled as free
+  // space before the FREE plane, which is then coded against them.
+  bool store_room_chains = false;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
   // linemap extractor tolerance in cells (default 1.0); see lines.h.

@@ -27,6 +27,9 @@ const CommandSpec kEncodeSpec = {
         {"--pose", "X,Y[,YAW]", "robot pose in map-frame metres, stored as metadata"},
         {"--time", "TEXT",
          "creation time stored as metadata (default: none, for reproducible output)"},
+        {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
+        {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
+        {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
         {"--json", "", "print one JSON object instead of text"},
     }),
     1,
@@ -38,6 +41,8 @@ namespace {
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   EncodeOptions options;
   options.lossless = args.Has("--lossless");
+  options.store_room_chains = args.Has("--rooms");
+  if (args.Has("--no-segments")) options.store_segments = false;
   if (std::optional<std::string> method = args.Get("--method")) {
     if (*method == "linemap") {
       options.method = LineMethod::kLinemap;
