@@ -8,13 +8,16 @@
 
 namespace linemap::bench {
 
-// Wall-clock milliseconds of each of `repeats` runs of `op` (steady clock).
+// CPU milliseconds (the process's CPU clock, all threads) of each of
+// `repeats` runs of `op`. CPU time rather than wall time: the benchmark
+// machines are shared, and another process's load must not show up here.
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 
 double Median(std::vector<double> values);  // NaN for an empty list
 
 // The peak resident memory `op` adds, in bytes: `op` runs once in a forked
-// child whose peak-RSS mark is reset first (/proc/self/clear_refs), and the
+// child that first returns its free heap to the system (malloc_trim) and
+// resets its peak-RSS mark (/proc/self/clear_refs), and the
 // result is VmHWM after minus VmRSS before. nullopt when the kernel does not
 // allow this (no /proc, no clear_refs) or the child fails.
 std::optional<double> PeakExtraMemoryBytes(const std::function<void()>& op);

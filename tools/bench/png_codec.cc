@@ -93,8 +93,8 @@ bool ReadPng(png_structp png, png_infop info, Grid* grid, std::vector<png_byte>*
   const png_uint_32 height = png_get_image_height(png, info);
   const int colour = png_get_color_type(png, info);
   if (png_get_bit_depth(png, info) > 8 ||
-      (colour != PNG_COLOR_TYPE_GRAY && colour != PNG_COLOR_TYPE_PALETTE) ||
-      width > (1u << 20) || height > (1u << 20)) {
+      (colour != PNG_COLOR_TYPE_GRAY && colour != PNG_COLOR_TYPE_PALETTE) || width > (1u << 20) ||
+      height > (1u << 20)) {
     png_error(png, "not an 8-bit-or-less grey or palette PNG");
   }
   // Expand palette indices to grey values and small depths to 8 bits.
@@ -107,8 +107,7 @@ bool ReadPng(png_structp png, png_infop info, Grid* grid, std::vector<png_byte>*
   const int channels = png_get_channels(png, info);
   for (png_uint_32 r = 0; r < height; ++r) {
     png_read_row(png, row->data(), nullptr);
-    Cell* cells = grid->mutable_cells().data() +
-                  grid->Index(0, static_cast<int>(height - 1 - r));
+    Cell* cells = grid->mutable_cells().data() + grid->Index(0, static_cast<int>(height - 1 - r));
     for (png_uint_32 c = 0; c < width; ++c) {
       const png_byte v = (*row)[c * channels];
       cells[c] = v == 254 ? Cell::kFree : v == 0 ? Cell::kOccupied : Cell::kUnknown;

@@ -36,8 +36,8 @@ struct SizeMethod {
 std::vector<SizeMethod> SizeMethods() {
   return {
       {"source image (as stored)", key::kSourceBytes, "", "", ""},
-      {"PNG-9, smallest of the four below", key::kPng9Bytes, key::kPngEncodeMs,
-       key::kPngDecodeMs, ""},
+      {"PNG-9, smallest of the four below", key::kPng9Bytes, key::kPngEncodeMs, key::kPngDecodeMs,
+       ""},
       {"PNG 8-bit (grey or palette, libpng z9)", key::kPng8Bytes, "", "", ""},
       {"PNG 2-bit palette (libpng z9)", key::kPng2Bytes, "", "", ""},
       {"pnmtopng -compression 9", key::kPnmtopngBytes, "", "", ""},
@@ -64,7 +64,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
       {"Sizes (bytes)",
        "PNG-9 = the smallest of libpng's 8-bit grey, 8-bit palette and 2-bit palette at zlib "
        "level 9 and netpbm's pnmtopng -compression 9 (the ratio base; encode / decode times "
-       "are libpng's on its smallest layout); zstd and xz compress the raw cells (1 byte per cell); JBIG1 "
+       "are libpng's on its smallest layout); zstd and xz compress the raw cells (1 byte per "
+       "cell); JBIG1 "
        "is the sum of the free and occupied bit-planes.",
        ColumnsTable(results, {{key::kCells, "cells"},
                               {key::kSourceBytes, "source"},
@@ -90,7 +91,7 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
   tables.push_back(
       {"Line extraction",
        "Lines and DisPL_ave (RM-Line Eq. 5: mean distance from an edge cell to the nearest "
-       "segment) in cm, extraction time in ms (one run).",
+       "segment) in cm, extraction CPU time in ms (one run).",
        ColumnsTable(results, {{key::kRmLineLines, "RM-Line lines"},
                               {key::kRmLineDisplCm, "DisPL cm", 2},
                               {key::kRmLineMs, "ms", 1},
@@ -99,7 +100,7 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kLinemapMs, "ms", 1}})});
   tables.push_back(
       {"Speed and memory",
-       "Median of `runs` timed runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
+       "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
        "resident memory the operation adds, in MB, measured once in a forked child.",
        ColumnsTable(results, {{key::kRepeats, "runs"},
                               {key::kPngEncodeMs, "PNG enc ms", 1},
@@ -126,8 +127,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
 }
 
 NamedTable MediansTable(const std::vector<MapResult>& results) {
-  Table table({"method", "maps", "median bytes", "median ratio", "worst ratio",
-               "maps < PNG-9", "DisPL cm", "enc ms", "dec ms"});
+  Table table({"method", "maps", "median bytes", "median ratio", "worst ratio", "maps < PNG-9",
+               "DisPL cm", "enc ms", "dec ms"});
   for (const SizeMethod& method : SizeMethods()) {
     std::size_t maps = 0, smaller = 0;
     double worst = 0;
@@ -140,8 +141,7 @@ NamedTable MediansTable(const std::vector<MapResult>& results) {
     }
     const bool any = maps > 0;
     table.AddRow({method.name, std::to_string(maps), MedianText(results, method.figure, 0),
-                  MedianText(results, method.figure, 3, true),
-                  any ? FormatFixed(worst, 3) : "n/a",
+                  MedianText(results, method.figure, 3, true), any ? FormatFixed(worst, 3) : "n/a",
                   any ? std::to_string(smaller) + "/" + std::to_string(maps) : "n/a",
                   method.displ_cm.empty() ? "0 (exact)" : MedianText(results, method.displ_cm, 2),
                   MedianText(results, method.encode_ms, 1),
@@ -172,12 +172,11 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
                "lmap enc ms/Mcell", "lmap dec ms/Mcell"});
   for (const ScalingRow& row : rows) {
-    table.AddRow({FormatFixed(row.mcells, 0), std::to_string(row.repeats),
-                  FormatFixed(row.png_encode_ms_per_mcell, 1),
-                  FormatFixed(row.png_decode_ms_per_mcell, 1),
-                  FormatFixed(row.rmline_ms_per_mcell, 1),
-                  FormatFixed(row.lmap_encode_ms_per_mcell, 1),
-                  FormatFixed(row.lmap_decode_ms_per_mcell, 1)});
+    table.AddRow(
+        {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
+         FormatFixed(row.png_encode_ms_per_mcell, 1), FormatFixed(row.png_decode_ms_per_mcell, 1),
+         FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.lmap_encode_ms_per_mcell, 1),
+         FormatFixed(row.lmap_decode_ms_per_mcell, 1)});
   }
   auto spread = [&](auto get) -> std::optional<double> {
     double lo = 0, hi = 0;
@@ -202,14 +201,15 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
                      return std::optional<double>(r.png_decode_ms_per_mcell);
                    }),
                    0),
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.rmline_ms_per_mcell);
-                   }),
-                   0),
+       FormatFixed(
+           spread([](const ScalingRow& r) { return std::optional<double>(r.rmline_ms_per_mcell); }),
+           0),
        FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; }), 0),
        FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0)});
   return {"Scaling",
-          "The generated 1024 x 1024 office map tiled 1x1, 2x2, 4x4 and 8x8; time per Mcell "
+          "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
+          "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
+          "repeated tiles and speed up); CPU time per Mcell "
           "(median of `runs`; RM-Line one run). spread = largest / smallest - 1 (goal: "
           "within 25%).",
           table};

@@ -4,6 +4,9 @@
 #include <functional>
 #include <span>
 
+#include "format/file_io.h"
+#include "format/image.h"
+#include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
 #include "tools/bench/jbig.h"
@@ -12,9 +15,6 @@
 #include "tools/bench/png_codec.h"
 #include "tools/bench/subprocess.h"
 #include "tools/bench/synthetic.h"
-#include "format/file_io.h"
-#include "format/image.h"
-#include "linemap/map_io.h"
 
 namespace linemap::bench {
 namespace {
@@ -60,8 +60,9 @@ void AddPnmtopngSize(const Grid& grid, MapResult* result) {
   for (int r = 0; r < grid.height(); ++r) {
     for (int c = 0; c < grid.width(); ++c) {
       const Cell cell = grid.at(c, r);
-      grey[grid.Index(c, grid.height() - 1 - r)] =
-          cell == Cell::kFree ? kPgmFree : cell == Cell::kOccupied ? kPgmOccupied : kPgmUnknown;
+      grey[grid.Index(c, grid.height() - 1 - r)] = cell == Cell::kFree       ? kPgmFree
+                                                   : cell == Cell::kOccupied ? kPgmOccupied
+                                                                             : kPgmUnknown;
     }
   }
   const std::string pgm = dir->path() + "/map.pgm";
@@ -116,8 +117,10 @@ void AddPngSpeed(const Grid& grid, const std::string& png, int repeats, bool mem
   result->figures[key::kPngEncodeMs] = Median(TimeRuns(encode, repeats));
   result->figures[key::kPngDecodeMs] = Median(TimeRuns(decode, repeats));
   if (!memory) return;
-  if (auto peak = PeakExtraMemoryBytes(encode)) result->figures[key::kPngEncodePeakMb] = *peak / kMb;
-  if (auto peak = PeakExtraMemoryBytes(decode)) result->figures[key::kPngDecodePeakMb] = *peak / kMb;
+  if (auto peak = PeakExtraMemoryBytes(encode))
+    result->figures[key::kPngEncodePeakMb] = *peak / kMb;
+  if (auto peak = PeakExtraMemoryBytes(decode))
+    result->figures[key::kPngDecodePeakMb] = *peak / kMb;
 }
 
 void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
@@ -167,8 +170,8 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   AddGeneralCodecSizes(grid, &result);
   if (options.jbig) AddJbigSize(grid, &result);
   if (!png.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
-  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm,
-                 key::kRmLineMs, &result);
+  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
+                 &result);
   AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
                  key::kLinemapMs, &result);
   Status lmap = AddLmapFigures(grid, repeats, &result);
@@ -179,12 +182,11 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
                                    const std::function<void(const std::string&)>& progress) {
   std::vector<ScalingRow> rows;
-  const Grid tile = GenerateOfficeMap(1024);
   for (int side : {1, 2, 4, 8}) {
     if (side * side > max_mcells) break;
     const double mcells = side * side;
     progress(std::to_string(side * side) + " Mcells");
-    const Grid grid = TileMap(tile, side, side);
+    const Grid grid = GenerateOfficeMap(1024 * side);
     const int runs = RepeatsFor(grid.size(), repeats);
     ScalingRow row;
     row.mcells = mcells;

@@ -13,10 +13,10 @@
 namespace linemap::bench {
 
 struct BenchOptions {
-  int repeats = 5;          // timed runs per map up to 1 Mcell (fewer above; see RepeatsFor)
+  int repeats = 5;  // timed runs per map up to 1 Mcell (fewer above; see RepeatsFor)
   bool measure_memory = true;
-  bool jbig = true;         // needs pbmtojbg in PATH
-  bool pnmtopng = true;     // cross-check size with netpbm's pnmtopng -compression 9
+  bool jbig = true;      // needs pbmtojbg in PATH
+  bool pnmtopng = true;  // cross-check size with netpbm's pnmtopng -compression 9
 };
 
 // Every figure of `grid` (loaded from `source_path`). Never fails as a
@@ -35,7 +35,8 @@ struct ScalingRow {
   std::optional<double> lmap_decode_ms_per_mcell;
 };
 
-// The generated office map (1024 x 1024) tiled to 1, 4, 16 and 64 Mcells
+// Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16
+// and 64 Mcells)
 // (up to `max_mcells`); `progress` is called before each size.
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
                                    const std::function<void(const std::string&)>& progress);

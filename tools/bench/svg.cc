@@ -74,8 +74,7 @@ const std::vector<PlotMethod>& PlotMethods() {
 }  // namespace
 
 std::string Base64(const std::string& bytes) {
-  static const char* kAlphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
   out.reserve((bytes.size() + 2) / 3 * 4);
   std::size_t i = 0;
@@ -102,7 +101,8 @@ std::string Base64(const std::string& bytes) {
 std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segments,
                           const Segmentation* segmentation, const std::string& title) {
   const double w = grid.width(), h = grid.height();
-  const double scale = std::min(1.0, 1200.0 / std::max(w, h)) * std::max(1.0, 600.0 / std::max(w, h));
+  const double scale =
+      std::min(1.0, 1200.0 / std::max(w, h)) * std::max(1.0, 600.0 / std::max(w, h));
   const double stroke = std::max(0.6, std::max(w, h) / 900.0);
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + Num(w) + " " +
                     Num(h) + "\" width=\"" + Num(w * scale) + "\" height=\"" + Num(h * scale) +
@@ -142,12 +142,12 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
   for (std::size_t at = file.find('/'); at != std::string::npos; at = file.find('/', at + 2)) {
     file.replace(at, 1, "__");
   }
-  const std::string title = result.name + ": RM-Line segments (red), room borders (blue), " +
-                            "furniture (green)";
-  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(
-      dir + "/" + file + ".svg",
-      MapOverlaySvg(grid, result.rmline_segments, segmentation.ok() ? &*segmentation : nullptr,
-                    title)));
+  const std::string title =
+      result.name + ": RM-Line segments (red), room borders (blue), " + "furniture (green)";
+  LINEMAP_RETURN_IF_ERROR(
+      WriteFileAtomic(dir + "/" + file + ".svg",
+                      MapOverlaySvg(grid, result.rmline_segments,
+                                    segmentation.ok() ? &*segmentation : nullptr, title)));
   if (!segmentation.ok()) return segmentation.status();
   return Status::Ok();
 }
@@ -172,7 +172,8 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
     }
   }
   const double left = 70, right = 640, top = 30, bottom = 390;
-  const double log_lo = std::floor(std::log10(lo) * 2) / 2, log_hi = std::ceil(std::log10(hi) * 2) / 2;
+  const double log_lo = std::floor(std::log10(lo) * 2) / 2,
+               log_hi = std::ceil(std::log10(hi) * 2) / 2;
   const double x_max = std::ceil(max_displ);
   auto px = [&](double d) { return left + (right - left) * d / x_max; };
   auto py = [&](double r) {
@@ -222,15 +223,14 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
     } else {
       const double r = Median(ratios), d = Median(displs);
       svg += "<rect x=\"" + Num(px(d) - 6) + "\" y=\"" + Num(py(r) - 6) +
-             "\" width=\"12\" height=\"12\" fill=\"" + method.colour +
-             "\" stroke=\"black\"/>\n";
+             "\" width=\"12\" height=\"12\" fill=\"" + method.colour + "\" stroke=\"black\"/>\n";
       char median[64];
       std::snprintf(median, sizeof median, " (median %.3f)", r);
       label += median;
     }
     svg += "<rect x=\"655\" y=\"" + Num(legend_y - 9) + "\" width=\"10\" height=\"10\" fill=\"" +
-           method.colour + "\"/>\n<text x=\"670\" y=\"" + Num(legend_y) + "\">" +
-           Escape(label) + "</text>\n";
+           method.colour + "\"/>\n<text x=\"670\" y=\"" + Num(legend_y) + "\">" + Escape(label) +
+           "</text>\n";
     legend_y += 18;
   }
   svg += "<text x=\"655\" y=\"" + Num(legend_y + 8) +

@@ -5,6 +5,8 @@
 namespace linemap::bench {
 namespace {
 
+constexpr int kRoomCells = 96;  // 4.8 m at 0.05 m/cell
+
 // xorshift32: fully specified, so the map is identical everywhere (the
 // standard distributions are not).
 class Rng {
@@ -45,7 +47,8 @@ Grid GenerateOfficeMap(int size, std::uint32_t seed) {
   FillRect(&grid, lo, lo, hi, hi, Cell::kOccupied);
   FillRect(&grid, lo + 2, lo + 2, hi - 2, hi - 2, Cell::kFree);
   // Interior walls on a jittered grid of rooms, each wall with a door.
-  const int room = std::max(24, size / 8);
+  // Rooms of a fixed size, so that bigger maps have more rooms, not bigger ones.
+  const int room = std::min(kRoomCells, size / 2);
   for (int x = lo + room; x < hi - room / 2; x += room) {
     const int wx = x + rng.Uniform(-room / 6, room / 6);
     FillRect(&grid, wx, lo, wx + 1, hi, Cell::kOccupied);
@@ -63,31 +66,20 @@ Grid GenerateOfficeMap(int size, std::uint32_t seed) {
     }
   }
   // Furniture: small solid blocks inside rooms.
-  const int blocks = (size / room) * (size / room) * 2;
+  const int blocks = static_cast<int>(static_cast<long long>(size / room) * (size / room) * 2);
   for (int i = 0; i < blocks; ++i) {
     const int c = rng.Uniform(lo + 4, hi - 12);
     const int r = rng.Uniform(lo + 4, hi - 12);
     FillRect(&grid, c, r, c + rng.Uniform(2, 8), r + rng.Uniform(2, 8), Cell::kOccupied);
   }
   // Speckle: isolated occupied and unknown cells in free space.
-  const int speckle = size * size / 2000;
+  const int speckle = static_cast<int>(static_cast<long long>(size) * size / 2000);
   for (int i = 0; i < speckle; ++i) {
     const int c = rng.Uniform(lo + 3, hi - 3);
     const int r = rng.Uniform(lo + 3, hi - 3);
     if (grid.at(c, r) == Cell::kFree) grid.set(c, r, i % 2 ? Cell::kOccupied : Cell::kUnknown);
   }
   return grid;
-}
-
-Grid TileMap(const Grid& tile, int nx, int ny) {
-  Grid out(tile.width() * nx, tile.height() * ny);
-  out.meta = tile.meta;
-  for (int r = 0; r < out.height(); ++r) {
-    const Cell* src = tile.cells().data() + tile.Index(0, r % tile.height());
-    Cell* dst = out.mutable_cells().data() + out.Index(0, r);
-    for (int i = 0; i < nx; ++i) std::copy(src, src + tile.width(), dst + i * tile.width());
-  }
-  return out;
 }
 
 }  // namespace linemap::bench

@@ -10,11 +10,10 @@
 
 namespace linemap::bench {
 
-// A `size` x `size` map (size >= 64), 0.05 m/cell.
+// A `size` x `size` map (size >= 64), 0.05 m/cell, rooms of 96 cells: a
+// bigger map has more rooms, each drawn anew (not a repeated tile, whose
+// repeats a compressor would find).
 Grid GenerateOfficeMap(int size, std::uint32_t seed = 1);
-
-// `tile` repeated `nx` times across and `ny` times up.
-Grid TileMap(const Grid& tile, int nx, int ny);
 
 }  // namespace linemap::bench
 

@@ -115,15 +115,14 @@ Status WriteOutputs(const BenchArgs& args, const std::string& header,
                     const std::vector<bench::NamedTable>& tables, const std::string& notes,
                     const std::vector<bench::MapResult>& results) {
   if (args.md) {
-    std::string md = "## linemap bench results\n\n" + header + "\n" +
-                     bench::TablesMarkdown(tables);
+    std::string md = "## linemap bench results\n\n" + header + "\n" + bench::TablesMarkdown(tables);
     if (!notes.empty()) md += "\n```\n" + notes.substr(1) + "```\n";
     LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(*args.md, md));
   }
   if (args.csv) LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(*args.csv, bench::ResultsCsv(results)));
   if (args.svg_dir) {
-    LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(*args.svg_dir + "/summary.svg",
-                                            bench::SummaryPlotSvg(results)));
+    LINEMAP_RETURN_IF_ERROR(
+        WriteFileAtomic(*args.svg_dir + "/summary.svg", bench::SummaryPlotSvg(results)));
   }
   return Status::Ok();
 }
@@ -180,10 +179,9 @@ int RunBench(const std::vector<std::string>& argv) {
   }
   std::vector<bench::ScalingRow> scaling;
   if (scaling_steps > 0) {
-    scaling = bench::RunScaling(args->scaling_max, args->options.repeats,
-                                [&](const std::string& label) {
-                                  progress.Update(step++, "scaling " + label);
-                                });
+    scaling = bench::RunScaling(
+        args->scaling_max, args->options.repeats,
+        [&](const std::string& label) { progress.Update(step++, "scaling " + label); });
   }
   progress.Finish();
 
