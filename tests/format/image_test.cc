@@ -193,3 +193,24 @@ TEST(ImageTest, RejectsMalformedImages) {
 
 }  // namespace
 }  // namespace linemap
+
+namespace linemap {
+namespace {
+
+// Files that must fail, named after their defect (tests/data/bad/map_image).
+TEST(ImageTest, MustFailFilesFail) {
+  const std::string dir = testing::SourceDir() + "/tests/data/bad/map_image";
+  int checked = 0;
+  for (const std::string& name : testing::ListDir(dir)) {
+    StatusOr<RawImage> image = ReadImageFile(dir + "/" + name, std::uint64_t{1} << 28);
+    EXPECT_FALSE(image.ok()) << name << " decoded";
+    if (!image.ok()) {
+      EXPECT_NE(image.status().message().find(name), std::string::npos);
+    }
+    ++checked;
+  }
+  EXPECT_GE(checked, 4);
+}
+
+}  // namespace
+}  // namespace linemap
