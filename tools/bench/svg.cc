@@ -153,87 +153,119 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
 }
 
 std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
+  // Left panel: lossless methods (DisPL 0), one column each. Right panel:
+  // lossy methods against DisPL_ave. Shared log-scale y axis: size / PNG-9.
   struct Point {
     double displ, ratio;
-    const PlotMethod* method;
+    std::size_t method;
   };
+  const std::vector<PlotMethod>& methods = PlotMethods();
   std::vector<Point> points;
   double max_displ = 1.0, lo = 1.0, hi = 1.0;
-  for (const PlotMethod& method : PlotMethods()) {
+  for (std::size_t m = 0; m < methods.size(); ++m) {
     for (const MapResult& result : results) {
-      const std::optional<double> ratio = result.RatioToPng9(method.size_figure);
+      const std::optional<double> ratio = result.RatioToPng9(methods[m].size_figure);
       std::optional<double> displ = 0.0;
-      if (method.displ_figure) displ = result.Get(method.displ_figure);
+      if (methods[m].displ_figure) displ = result.Get(methods[m].displ_figure);
       if (!ratio || !displ || *ratio <= 0) continue;
-      points.push_back({*displ, *ratio, &method});
+      points.push_back({*displ, *ratio, m});
       max_displ = std::max(max_displ, *displ);
       lo = std::min(lo, *ratio);
       hi = std::max(hi, *ratio);
     }
   }
-  const double left = 70, right = 640, top = 30, bottom = 390;
-  const double log_lo = std::floor(std::log10(lo) * 2) / 2,
-               log_hi = std::ceil(std::log10(hi) * 2) / 2;
+  std::size_t lossless = 0;
+  for (const PlotMethod& method : methods) lossless += method.displ_figure ? 0 : 1;
+  const double top = 30, bottom = 380, left = 70, column = 60;
+  const double lossless_right = left + column * static_cast<double>(lossless);
+  const double lossy_left = lossless_right + 40, lossy_right = lossy_left + 330;
+  const double log_lo = std::floor(std::log10(lo) * 4) / 4;
+  const double log_hi = std::max(log_lo + 0.5, std::ceil(std::log10(hi) * 4) / 4);
   const double x_max = std::ceil(max_displ);
-  auto px = [&](double d) { return left + (right - left) * d / x_max; };
   auto py = [&](double r) {
-    return bottom - (bottom - top) * (std::log10(r) - log_lo) / std::max(0.5, log_hi - log_lo);
+    return bottom - (bottom - top) * (std::log10(r) - log_lo) / (log_hi - log_lo);
+  };
+  auto px = [&](const Point& p) {
+    if (!methods[p.method].displ_figure) {
+      // Spread the maps of a column a little so the dots stay visible.
+      const double jitter = std::fmod(p.ratio * 7919.0, 1.0) - 0.5;
+      return left + column * (static_cast<double>(p.method) + 0.5) + jitter * column * 0.5;
+    }
+    return lossy_left + (lossy_right - lossy_left) * p.displ / x_max;
   };
   std::string svg =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 820 440\" width=\"820\" "
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 980 440\" width=\"980\" "
       "height=\"440\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      "<title>Size ratio to PNG-9 vs DisPL_ave</title>\n"
-      "<rect x=\"0\" y=\"0\" width=\"820\" height=\"440\" fill=\"white\"/>\n";
-  svg += "<g stroke=\"#ccc\">\n";
-  for (double e = log_lo; e <= log_hi + 1e-9; e += 0.5) {
+      "<title>Size ratio to PNG-9 vs DisPL_ave, per map and method</title>\n"
+      "<rect x=\"0\" y=\"0\" width=\"980\" height=\"440\" fill=\"white\"/>\n<g stroke=\"#ddd\">\n";
+  for (double e = log_lo; e <= log_hi + 1e-9; e += 0.25) {
     const double r = std::pow(10.0, e);
-    svg += "<line x1=\"" + Num(left) + "\" x2=\"" + Num(right) + "\" y1=\"" + Num(py(r)) +
-           "\" y2=\"" + Num(py(r)) + "\"/>\n";
+    const std::string y = Num(py(r));
+    const bool one = std::fabs(e) < 1e-9;
+    svg += "<line x1=\"" + Num(left) + "\" x2=\"" + Num(lossy_right) + "\" y1=\"" + y + "\" y2=\"" +
+           y + "\"" + (one ? " stroke=\"#888\"" : "") + "/>\n";
     char label[32];
-    std::snprintf(label, sizeof label, "%g", std::round(r * 1000) / 1000);
+    std::snprintf(label, sizeof label, "%.2g", r);
     svg += "<text x=\"" + Num(left - 6) + "\" y=\"" + Num(py(r) + 4) +
            "\" text-anchor=\"end\" stroke=\"none\" fill=\"#333\">" + label + "</text>\n";
   }
   for (int d = 0; d <= static_cast<int>(x_max); ++d) {
-    svg += "<line y1=\"" + Num(top) + "\" y2=\"" + Num(bottom) + "\" x1=\"" + Num(px(d)) +
-           "\" x2=\"" + Num(px(d)) + "\"/>\n<text x=\"" + Num(px(d)) + "\" y=\"" +
-           Num(bottom + 16) + "\" text-anchor=\"middle\" stroke=\"none\" fill=\"#333\">" +
-           std::to_string(d) + "</text>\n";
+    const double x = lossy_left + (lossy_right - lossy_left) * d / x_max;
+    svg += "<line y1=\"" + Num(top) + "\" y2=\"" + Num(bottom) + "\" x1=\"" + Num(x) + "\" x2=\"" +
+           Num(x) + "\"/>\n<text x=\"" + Num(x) + "\" y=\"" + Num(bottom + 16) +
+           "\" text-anchor=\"middle\" stroke=\"none\" fill=\"#333\">" + std::to_string(d) +
+           "</text>\n";
   }
-  svg += "</g>\n<text x=\"" + Num((left + right) / 2) + "\" y=\"" + Num(bottom + 34) +
-         "\" text-anchor=\"middle\">DisPL_ave (cm); lossless methods at 0</text>\n"
-         "<text transform=\"translate(18," +
+  svg += "</g>\n";
+  std::size_t column_index = 0;
+  for (const PlotMethod& method : methods) {
+    if (method.displ_figure) continue;
+    const double x = left + column * (static_cast<double>(column_index++) + 0.5);
+    svg += "<text transform=\"translate(" + Num(x + 4) + "," + Num(bottom + 8) +
+           ") rotate(-35)\" text-anchor=\"end\" font-size=\"11\">" + Escape(method.label) +
+           "</text>\n";
+  }
+  svg += "<text x=\"" + Num((left + lossless_right) / 2) + "\" y=\"" + Num(top - 10) +
+         "\" text-anchor=\"middle\">lossless (DisPL 0)</text>\n<text x=\"" +
+         Num((lossy_left + lossy_right) / 2) + "\" y=\"" + Num(top - 10) +
+         "\" text-anchor=\"middle\">lossy</text>\n<text x=\"" +
+         Num((lossy_left + lossy_right) / 2) + "\" y=\"" + Num(bottom + 34) +
+         "\" text-anchor=\"middle\">DisPL_ave (cm)</text>\n<text transform=\"translate(18," +
          Num((top + bottom) / 2) +
-         ") rotate(-90)\" text-anchor=\"middle\">size / PNG-9 (log scale)</text>\n";
+         ") rotate(-90)\" text-anchor=\"middle\">size / PNG-9 (log scale; below 1 = smaller)"
+         "</text>\n";
   for (const Point& p : points) {
-    svg += "<circle cx=\"" + Num(px(p.displ)) + "\" cy=\"" + Num(py(p.ratio)) +
-           "\" r=\"3\" fill=\"" + p.method->colour + "\" fill-opacity=\"0.45\"/>\n";
+    svg += "<circle cx=\"" + Num(px(p)) + "\" cy=\"" + Num(py(p.ratio)) + "\" r=\"3\" fill=\"" +
+           methods[p.method].colour + "\" fill-opacity=\"0.55\"/>\n";
   }
   double legend_y = top + 10;
-  for (const PlotMethod& method : PlotMethods()) {
+  for (std::size_t m = 0; m < methods.size(); ++m) {
     std::vector<double> ratios, displs;
     for (const Point& p : points) {
-      if (p.method != &method) continue;
+      if (p.method != m) continue;
       ratios.push_back(p.ratio);
       displs.push_back(p.displ);
     }
-    std::string label = method.label;
+    std::string label = methods[m].label;
     if (ratios.empty()) {
-      label += " (not measured)";
+      label += ": not measured";
     } else {
-      const double r = Median(ratios), d = Median(displs);
-      svg += "<rect x=\"" + Num(px(d) - 6) + "\" y=\"" + Num(py(r) - 6) +
-             "\" width=\"12\" height=\"12\" fill=\"" + method.colour + "\" stroke=\"black\"/>\n";
-      char median[64];
-      std::snprintf(median, sizeof median, " (median %.3f)", r);
-      label += median;
+      const Point median{Median(displs), Median(ratios), m};
+      const double x =
+          methods[m].displ_figure ? px(median) : left + column * (static_cast<double>(m) + 0.5);
+      svg += "<rect x=\"" + Num(x - 6) + "\" y=\"" + Num(py(median.ratio) - 6) +
+             "\" width=\"12\" height=\"12\" fill=\"" + methods[m].colour +
+             "\" stroke=\"black\"/>\n";
+      char text[64];
+      std::snprintf(text, sizeof text, ": median %.3f", median.ratio);
+      label += text;
     }
-    svg += "<rect x=\"655\" y=\"" + Num(legend_y - 9) + "\" width=\"10\" height=\"10\" fill=\"" +
-           method.colour + "\"/>\n<text x=\"670\" y=\"" + Num(legend_y) + "\">" + Escape(label) +
-           "</text>\n";
+    svg += "<rect x=\"" + Num(lossy_right + 30) + "\" y=\"" + Num(legend_y - 9) +
+           "\" width=\"10\" height=\"10\" fill=\"" + methods[m].colour + "\"/>\n<text x=\"" +
+           Num(lossy_right + 45) + "\" y=\"" + Num(legend_y) + "\">" + Escape(label) + "</text>\n";
     legend_y += 18;
   }
-  svg += "<text x=\"655\" y=\"" + Num(legend_y + 8) +
+  svg += "<text x=\"" + Num(lossy_right + 30) + "\" y=\"" + Num(legend_y + 8) +
          "\" fill=\"#555\">dots: maps; squares: medians</text>\n</svg>\n";
   return svg;
 }
