@@ -11,10 +11,16 @@
 
 namespace linemap::bench {
 
-// Adds the kLmap* and kEval* figures of `grid` to `result`, timing encode
-// and decode `repeats` times. Fails with kUnsupported (and adds nothing)
-// while the codec is not in this tree.
-Status AddLmapFigures(const Grid& grid, int repeats, MapResult* result);
+struct LmapMeasure {
+  int repeats = 5;           // timed encode and decode runs
+  bool memory = true;        // peak memory of encode and decode (forks)
+  bool everything = true;    // also lossless size, eval figures and geometry
+};
+
+// Adds the kLmap* and kEval* figures of `grid` to `result` (lossy = the
+// codec's default options, as `linemap encode` writes). Fails with
+// kUnsupported (and adds nothing) while the codec is not in this tree.
+Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* result);
 
 }  // namespace linemap::bench
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "linemap/cells.h"
 #include "linemap/lines.h"
 
 namespace linemap::bench {
@@ -58,6 +59,13 @@ struct MapResult {
   std::vector<std::string> notes;  // comparators that failed on this map, and why
   // Kept for the SVG overlay (cell units).
   std::vector<LineSegment> rmline_segments;
+  // The geometry stored in the lossy .lmap, when the codec is in the tree.
+  struct LmapGeometry {
+    std::vector<LineSegment> segments;
+    std::vector<std::vector<CellIndex>> room_chains;
+    std::vector<std::vector<CellIndex>> blob_outlines;
+  };
+  std::optional<LmapGeometry> lmap_geometry;
 
   std::optional<double> Get(const std::string& figure) const;
   // figure / png9_bytes, when both are there.

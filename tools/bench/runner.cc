@@ -174,7 +174,7 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
                  &result);
   AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
                  key::kLinemapMs, &result);
-  Status lmap = AddLmapFigures(grid, repeats, &result);
+  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
   if (!lmap.ok()) Note(&result, ".lmap", lmap);
   return result;
 }
@@ -203,7 +203,7 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     row.rmline_ms_per_mcell =
         Median(TimeRuns([&] { (void)ExtractLines(grid, options); }, 1)) / mcells;
     MapResult lmap;
-    if (AddLmapFigures(grid, runs, &lmap).ok()) {
+    if (AddLmapFigures(grid, {runs, false, false}, &lmap).ok()) {
       if (auto ms = lmap.Get(key::kLmapEncodeMs)) row.lmap_encode_ms_per_mcell = *ms / mcells;
       if (auto ms = lmap.Get(key::kLmapDecodeMs)) row.lmap_decode_ms_per_mcell = *ms / mcells;
     }

@@ -137,19 +137,42 @@ std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segm
 }
 
 Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapResult& result) {
-  StatusOr<Segmentation> segmentation = SegmentMap(grid);
   std::string file = result.name;
   for (std::size_t at = file.find('/'); at != std::string::npos; at = file.find('/', at + 2)) {
     file.replace(at, 1, "__");
   }
-  const std::string title =
-      result.name + ": RM-Line segments (red), room borders (blue), " + "furniture (green)";
-  LINEMAP_RETURN_IF_ERROR(
-      WriteFileAtomic(dir + "/" + file + ".svg",
-                      MapOverlaySvg(grid, result.rmline_segments,
-                                    segmentation.ok() ? &*segmentation : nullptr, title)));
-  if (!segmentation.ok()) return segmentation.status();
-  return Status::Ok();
+  // The .lmap's own geometry when the codec is in; else RM-Line's segments
+  // and the segmentation's room borders and furniture.
+  Segmentation segmentation;
+  std::vector<LineSegment> segments;
+  std::string source;
+  Status status = Status::Ok();
+  if (result.lmap_geometry) {
+    segments = result.lmap_geometry->segments;
+    for (const auto& chain : result.lmap_geometry->room_chains) {
+      segmentation.rooms.push_back({chain});
+    }
+    for (const auto& outline : result.lmap_geometry->blob_outlines) {
+      FurnitureBlob blob;
+      blob.outline = outline;
+      segmentation.blobs.push_back(std::move(blob));
+    }
+    source = "lossy .lmap";
+  } else {
+    segments = result.rmline_segments;
+    StatusOr<Segmentation> segmented = SegmentMap(grid);
+    if (segmented.ok()) {
+      segmentation = std::move(*segmented);
+    } else {
+      status = segmented.status();
+    }
+    source = "RM-Line + SegmentMap";
+  }
+  const std::string title = result.name + " (" + source +
+                            "): segments red, room borders blue, furniture green";
+  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(dir + "/" + file + ".svg",
+                                          MapOverlaySvg(grid, segments, &segmentation, title)));
+  return status;
 }
 
 std::string SummaryPlotSvg(const std::vector<MapResult>& results) {

@@ -18,8 +18,9 @@ namespace linemap::bench {
 std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segments,
                           const Segmentation* segmentation, const std::string& title);
 
-// Runs the segmentation and writes DIR/<map name with '/' -> '__'>.svg with
-// the map's RM-Line segments (and .lmap geometry once the codec is in).
+// Writes DIR/<map name with '/' -> '__'>.svg: the geometry stored in the
+// lossy .lmap when the codec is in the tree, else RM-Line's segments with
+// the segmentation's room borders and furniture outlines.
 Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapResult& result);
 
 // Size ratio to PNG-9 (log scale) against DisPL_ave (cm), one point per map
