@@ -1,0 +1,48 @@
+#include "tools/bench/progress.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+
+namespace linemap::bench {
+
+ProgressBar::ProgressBar(std::size_t total, std::FILE* stream)
+    : ProgressBar(total, stream, ::isatty(::fileno(stream)) == 1) {}
+
+ProgressBar::ProgressBar(std::size_t total, std::FILE* stream, bool enabled)
+    : total_(total), stream_(stream), enabled_(enabled) {}
+
+ProgressBar::~ProgressBar() { Finish(); }
+
+std::string ProgressBar::Render(std::size_t done, std::size_t total, const std::string& label,
+                                int bar_width) {
+  const std::size_t width = static_cast<std::size_t>(std::max(1, bar_width));
+  const std::size_t filled = total == 0 ? width : std::min(width, done * width / total);
+  std::string text = "[" + std::string(filled, '#') + std::string(width - filled, ' ') + "] ";
+  const std::string count = std::to_string(done) + "/" + std::to_string(total);
+  const std::string total_text = std::to_string(total);
+  text += std::string(2 * total_text.size() + 1 - std::min(count.size(), 2 * total_text.size() + 1),
+                      ' ') +
+          count;
+  if (!label.empty()) text += " " + label;
+  return text;
+}
+
+void ProgressBar::Update(std::size_t done, const std::string& label) {
+  if (!enabled_) return;
+  std::string text = Render(done, total_, label.substr(0, 48), 30);
+  const std::size_t width = text.size();
+  if (width < last_width_) text += std::string(last_width_ - width, ' ');
+  last_width_ = width;
+  std::fprintf(stream_, "\r%s", text.c_str());
+  std::fflush(stream_);
+}
+
+void ProgressBar::Finish() {
+  if (!enabled_ || last_width_ == 0) return;
+  std::fprintf(stream_, "\r%s\r", std::string(last_width_, ' ').c_str());
+  std::fflush(stream_);
+  last_width_ = 0;
+}
+
+}  // namespace linemap::bench

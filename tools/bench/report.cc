@@ -1,0 +1,261 @@
+#include "tools/bench/report.h"
+
+#include <algorithm>
+#include <set>
+
+namespace linemap::bench {
+namespace {
+
+Table ColumnsTable(const std::vector<MapResult>& results, const std::vector<Column>& columns) {
+  std::vector<std::string> headers = {"map"};
+  for (const Column& column : columns) headers.push_back(column.header);
+  Table table(headers);
+  for (const MapResult& result : results) {
+    std::vector<std::string> row = {result.name};
+    for (const Column& column : columns) {
+      row.push_back(FormatFixed(ColumnValue(result, column), column.decimals));
+    }
+    table.AddRow(row);
+  }
+  std::vector<std::string> medians = {"median"};
+  for (const Column& column : columns) {
+    medians.push_back(FormatFixed(ColumnMedian(results, column), column.decimals));
+  }
+  table.AddRow(medians);
+  return table;
+}
+
+struct SizeMethod {
+  std::string name;
+  std::string figure;  // size in bytes
+  std::string encode_ms;
+  std::string decode_ms;
+  std::string displ_cm;  // empty: lossless (DisPL 0 by construction)
+};
+
+std::vector<SizeMethod> SizeMethods() {
+  return {
+      {"source image (as stored)", key::kSourceBytes, "", "", ""},
+      {"PNG-9, smallest of the four below", key::kPng9Bytes, key::kPngEncodeMs, key::kPngDecodeMs,
+       ""},
+      {"PNG 8-bit (grey or palette, libpng z9)", key::kPng8Bytes, "", "", ""},
+      {"PNG 2-bit palette (libpng z9)", key::kPng2Bytes, "", "", ""},
+      {"pnmtopng -compression 9", key::kPnmtopngBytes, "", "", ""},
+      {"zstd -19 (raw cells)", key::kZstdBytes, "", "", ""},
+      {"xz -9 (raw cells)", key::kXzBytes, "", "", ""},
+      {"JBIG1 two planes (pbmtojbg -q)", key::kJbigBytes, "", "", ""},
+      {".lmap lossless", key::kLmapLosslessBytes, "", "", ""},
+      {".lmap lossy", key::kLmapLossyBytes, key::kLmapEncodeMs, key::kLmapDecodeMs,
+       key::kEvalDisplCm},
+  };
+}
+
+std::string MedianText(const std::vector<MapResult>& results, const std::string& figure,
+                       int decimals, bool ratio = false) {
+  if (figure.empty()) return "";
+  return FormatFixed(ColumnMedian(results, {figure, "", decimals, ratio}), decimals);
+}
+
+}  // namespace
+
+std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
+  std::vector<NamedTable> tables;
+  tables.push_back(
+      {"Sizes (bytes)",
+       "PNG-9 = the smallest of libpng's 8-bit grey, 8-bit palette and 2-bit palette at zlib "
+       "level 9 and netpbm's pnmtopng -compression 9 (the ratio base; encode / decode times "
+       "are libpng's on its smallest layout); zstd and xz compress the raw cells (1 byte per "
+       "cell); JBIG1 "
+       "is the sum of the free and occupied bit-planes.",
+       ColumnsTable(results, {{key::kCells, "cells"},
+                              {key::kSourceBytes, "source"},
+                              {key::kPng9Bytes, "PNG-9"},
+                              {key::kPng8Bytes, "PNG 8b"},
+                              {key::kPng2Bytes, "PNG 2b"},
+                              {key::kPnmtopngBytes, "pnmtopng"},
+                              {key::kZstdBytes, "zstd-19"},
+                              {key::kXzBytes, "xz-9"},
+                              {key::kJbigBytes, "JBIG1"},
+                              {key::kLmapLosslessBytes, "lmap LL"},
+                              {key::kLmapLossyBytes, "lmap"}})});
+  tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
+                    ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
+                                           {key::kPng8Bytes, "PNG 8b", 3, true},
+                                           {key::kPnmtopngBytes, "pnmtopng", 3, true},
+                                           {key::kPng2Bytes, "PNG 2b", 3, true},
+                                           {key::kZstdBytes, "zstd-19", 3, true},
+                                           {key::kXzBytes, "xz-9", 3, true},
+                                           {key::kJbigBytes, "JBIG1", 3, true},
+                                           {key::kLmapLosslessBytes, "lmap LL", 3, true},
+                                           {key::kLmapLossyBytes, "lmap", 3, true}})});
+  tables.push_back(
+      {"Line extraction",
+       "Lines and DisPL_ave (RM-Line Eq. 5: mean distance from an edge cell to the nearest "
+       "segment) in cm, extraction CPU time in ms (one run).",
+       ColumnsTable(results, {{key::kRmLineLines, "RM-Line lines"},
+                              {key::kRmLineDisplCm, "DisPL cm", 2},
+                              {key::kRmLineMs, "ms", 1},
+                              {key::kLinemapLines, "linemap lines"},
+                              {key::kLinemapDisplCm, "DisPL cm", 2},
+                              {key::kLinemapMs, "ms", 1}})});
+  tables.push_back(
+      {"Speed and memory",
+       "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
+       "resident memory the operation adds, in MB, measured once in a forked child.",
+       ColumnsTable(results, {{key::kRepeats, "runs"},
+                              {key::kPngEncodeMs, "PNG enc ms", 1},
+                              {key::kPngDecodeMs, "PNG dec ms", 1},
+                              {key::kPngEncodePeakMb, "PNG enc MB", 1},
+                              {key::kPngDecodePeakMb, "PNG dec MB", 1},
+                              {key::kLmapEncodeMs, "lmap enc ms", 1},
+                              {key::kLmapDecodeMs, "lmap dec ms", 1},
+                              {key::kLmapEncodePeakMb, "lmap enc MB", 1},
+                              {key::kLmapDecodePeakMb, "lmap dec MB", 1}})});
+  tables.push_back(
+      {"Fidelity of lossy .lmap",
+       "linemap eval of the lossy decode against the map: obstacle recall and precision "
+       "within 1 cell, free-space IoU, leaks, unknown cells turned free (share of free), "
+       "DisPL_ave of the stored segments.",
+       ColumnsTable(results, {{key::kEvalRecall, "recall", 4},
+                              {key::kEvalPrecision, "precision", 4},
+                              {key::kEvalFreeIou, "free IoU", 4},
+                              {key::kEvalLeaks, "leaks"},
+                              {key::kEvalUnknownFreed, "unk->free", 4},
+                              {key::kEvalDisplCm, "DisPL cm", 2},
+                              {key::kEvalLines, "lines"}})});
+  return tables;
+}
+
+NamedTable MediansTable(const std::vector<MapResult>& results) {
+  Table table({"method", "maps", "median bytes", "median ratio", "worst ratio", "maps < PNG-9",
+               "DisPL cm", "enc ms", "dec ms"});
+  for (const SizeMethod& method : SizeMethods()) {
+    std::size_t maps = 0, smaller = 0;
+    double worst = 0;
+    for (const MapResult& result : results) {
+      const std::optional<double> ratio = result.RatioToPng9(method.figure);
+      if (!ratio) continue;
+      ++maps;
+      worst = std::max(worst, *ratio);
+      if (*ratio < 1.0) ++smaller;
+    }
+    const bool any = maps > 0;
+    table.AddRow({method.name, std::to_string(maps), MedianText(results, method.figure, 0),
+                  MedianText(results, method.figure, 3, true), any ? FormatFixed(worst, 3) : "n/a",
+                  any ? std::to_string(smaller) + "/" + std::to_string(maps) : "n/a",
+                  method.displ_cm.empty() ? "0 (exact)" : MedianText(results, method.displ_cm, 2),
+                  MedianText(results, method.encode_ms, 1),
+                  MedianText(results, method.decode_ms, 1)});
+  }
+  return {"Medians over the corpus",
+          "Ratio = size / PNG-9 per map, then the median (not the ratio of the medians). "
+          "Lossless methods reproduce every cell, so their DisPL is 0. n/a = not measured in "
+          "this build (see the notes).",
+          table};
+}
+
+NamedTable LineMediansTable(const std::vector<MapResult>& results) {
+  Table table({"extractor", "maps", "median lines", "median DisPL cm", "median ms"});
+  auto row = [&](const std::string& name, const char* lines, const char* displ, const char* ms) {
+    std::size_t maps = 0;
+    for (const MapResult& result : results) maps += result.Get(lines).has_value() ? 1 : 0;
+    table.AddRow({name, std::to_string(maps), MedianText(results, lines, 0),
+                  MedianText(results, displ, 2), MedianText(results, ms, 1)});
+  };
+  row("RM-Line (dtheta 1 deg, ds 0.5 cell)", key::kRmLineLines, key::kRmLineDisplCm,
+      key::kRmLineMs);
+  row("linemap extractor", key::kLinemapLines, key::kLinemapDisplCm, key::kLinemapMs);
+  return {"Line extraction medians", "", table};
+}
+
+NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
+  Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
+               "lmap enc ms/Mcell", "lmap dec ms/Mcell"});
+  for (const ScalingRow& row : rows) {
+    table.AddRow(
+        {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
+         FormatFixed(row.png_encode_ms_per_mcell, 1), FormatFixed(row.png_decode_ms_per_mcell, 1),
+         FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.lmap_encode_ms_per_mcell, 1),
+         FormatFixed(row.lmap_decode_ms_per_mcell, 1)});
+  }
+  auto spread = [&](auto get) -> std::optional<double> {
+    double lo = 0, hi = 0;
+    bool any = false;
+    for (const ScalingRow& row : rows) {
+      const std::optional<double> v = get(row);
+      if (!v) return std::nullopt;
+      lo = any ? std::min(lo, *v) : *v;
+      hi = any ? std::max(hi, *v) : *v;
+      any = true;
+    }
+    if (!any || lo <= 0) return std::nullopt;
+    return 100.0 * (hi / lo - 1.0);
+  };
+  table.AddRow(
+      {"spread %", "",
+       FormatFixed(spread([](const ScalingRow& r) {
+                     return std::optional<double>(r.png_encode_ms_per_mcell);
+                   }),
+                   0),
+       FormatFixed(spread([](const ScalingRow& r) {
+                     return std::optional<double>(r.png_decode_ms_per_mcell);
+                   }),
+                   0),
+       FormatFixed(
+           spread([](const ScalingRow& r) { return std::optional<double>(r.rmline_ms_per_mcell); }),
+           0),
+       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; }), 0),
+       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0)});
+  return {"Scaling",
+          "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
+          "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
+          "repeated tiles and speed up); CPU time per Mcell "
+          "(median of `runs`; RM-Line one run). spread = largest / smallest - 1 (goal: "
+          "within 25%).",
+          table};
+}
+
+std::string ResultsCsv(const std::vector<MapResult>& results) {
+  std::set<std::string> keys;
+  for (const MapResult& result : results) {
+    for (const auto& [figure, value] : result.figures) keys.insert(figure);
+  }
+  std::vector<std::string> headers = {"map", "path"};
+  headers.insert(headers.end(), keys.begin(), keys.end());
+  headers.push_back("notes");
+  Table table(headers);
+  for (const MapResult& result : results) {
+    std::vector<std::string> row = {result.name, result.path};
+    for (const std::string& figure : keys) {
+      const std::optional<double> v = result.Get(figure);
+      row.push_back(v ? FormatFixed(v, 6) : "");
+    }
+    std::string notes;
+    for (const std::string& note : result.notes) notes += (notes.empty() ? "" : "; ") + note;
+    row.push_back(notes);
+    table.AddRow(row);
+  }
+  return table.Csv();
+}
+
+std::string TablesText(const std::vector<NamedTable>& tables) {
+  std::string out;
+  for (const NamedTable& t : tables) {
+    out += "\n== " + t.title + " ==\n";
+    if (!t.caption.empty()) out += t.caption + "\n";
+    out += t.table.Text();
+  }
+  return out;
+}
+
+std::string TablesMarkdown(const std::vector<NamedTable>& tables) {
+  std::string out;
+  for (const NamedTable& t : tables) {
+    out += "\n### " + t.title + "\n\n";
+    if (!t.caption.empty()) out += t.caption + "\n\n";
+    out += t.table.Markdown();
+  }
+  return out;
+}
+
+}  // namespace linemap::bench

@@ -1,0 +1,91 @@
+// What `linemap bench` measures on one map, as named figures, and the
+// columns and summaries built from them.
+#ifndef LINEMAP_TOOLS_BENCH_RESULTS_H_
+#define LINEMAP_TOOLS_BENCH_RESULTS_H_
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linemap/cells.h"
+#include "linemap/lines.h"
+
+namespace linemap::bench {
+
+// Figure keys (also the CSV column names).
+namespace key {
+inline constexpr const char* kWidth = "width";
+inline constexpr const char* kHeight = "height";
+inline constexpr const char* kCells = "cells";
+inline constexpr const char* kSourceBytes = "source_bytes";
+inline constexpr const char* kPng8Bytes = "png8_bytes";          // smaller of 8-bit grey / palette
+inline constexpr const char* kPng2Bytes = "png2_bytes";          // 2-bit packed palette
+inline constexpr const char* kPng9Bytes = "png9_bytes";          // smallest PNG: the ratio base
+inline constexpr const char* kPnmtopngBytes = "pnmtopng_bytes";  // netpbm, as a cross-check
+inline constexpr const char* kZstdBytes = "zstd19_bytes";
+inline constexpr const char* kXzBytes = "xz9_bytes";
+inline constexpr const char* kJbigBytes = "jbig_bytes";
+inline constexpr const char* kLmapLossyBytes = "lmap_lossy_bytes";
+inline constexpr const char* kLmapLosslessBytes = "lmap_lossless_bytes";
+inline constexpr const char* kPngEncodeMs = "png_encode_ms";
+inline constexpr const char* kPngDecodeMs = "png_decode_ms";
+inline constexpr const char* kPngEncodePeakMb = "png_encode_peak_mb";
+inline constexpr const char* kPngDecodePeakMb = "png_decode_peak_mb";
+inline constexpr const char* kLmapEncodeMs = "lmap_encode_ms";
+inline constexpr const char* kLmapDecodeMs = "lmap_decode_ms";
+inline constexpr const char* kLmapEncodePeakMb = "lmap_encode_peak_mb";
+inline constexpr const char* kLmapDecodePeakMb = "lmap_decode_peak_mb";
+inline constexpr const char* kRepeats = "timing_repeats";
+inline constexpr const char* kRmLineLines = "rmline_lines";
+inline constexpr const char* kRmLineDisplCm = "rmline_displ_cm";
+inline constexpr const char* kRmLineMs = "rmline_ms";
+inline constexpr const char* kLinemapLines = "linemap_lines";
+inline constexpr const char* kLinemapDisplCm = "linemap_displ_cm";
+inline constexpr const char* kLinemapMs = "linemap_ms";
+inline constexpr const char* kEvalRecall = "eval_recall_1";
+inline constexpr const char* kEvalPrecision = "eval_precision_1";
+inline constexpr const char* kEvalFreeIou = "eval_free_iou";
+inline constexpr const char* kEvalLeaks = "eval_leaks";
+inline constexpr const char* kEvalUnknownFreed = "eval_unknown_to_free_share";
+inline constexpr const char* kEvalDisplCm = "eval_displ_cm";
+inline constexpr const char* kEvalLines = "eval_lines";
+}  // namespace key
+
+struct MapResult {
+  std::string name;
+  std::string path;
+  std::map<std::string, double> figures;
+  std::vector<std::string> notes;  // comparators that failed on this map, and why
+  // Kept for the SVG overlay (cell units).
+  std::vector<LineSegment> rmline_segments;
+  // The geometry stored in the lossy .lmap, when the codec is in the tree.
+  struct LmapGeometry {
+    std::vector<LineSegment> segments;
+    std::vector<std::vector<CellIndex>> room_chains;
+    std::vector<std::vector<CellIndex>> blob_outlines;
+  };
+  std::optional<LmapGeometry> lmap_geometry;
+
+  std::optional<double> Get(const std::string& figure) const;
+  // figure / png9_bytes, when both are there.
+  std::optional<double> RatioToPng9(const std::string& figure) const;
+};
+
+// A column of a per-map table: a figure with its header and decimals, or a
+// ratio of a size to PNG-9 when `ratio` is set.
+struct Column {
+  std::string figure;
+  std::string header;
+  int decimals = 0;
+  bool ratio = false;
+};
+
+std::optional<double> ColumnValue(const MapResult& result, const Column& column);
+
+// The median of a column over the maps that have it; nullopt when none has.
+std::optional<double> ColumnMedian(const std::vector<MapResult>& results, const Column& column);
+
+}  // namespace linemap::bench
+
+#endif  // LINEMAP_TOOLS_BENCH_RESULTS_H_

@@ -1,0 +1,215 @@
+#include "tools/bench/runner.h"
+
+#include <filesystem>
+#include <functional>
+#include <span>
+
+#include "format/file_io.h"
+#include "format/image.h"
+#include "linemap/map_io.h"
+#include "tools/bench/corpus.h"
+#include "tools/bench/general_codecs.h"
+#include "tools/bench/jbig.h"
+#include "tools/bench/lmap_figures.h"
+#include "tools/bench/measure.h"
+#include "tools/bench/png_codec.h"
+#include "tools/bench/subprocess.h"
+#include "tools/bench/synthetic.h"
+
+namespace linemap::bench {
+namespace {
+
+constexpr double kMb = 1024.0 * 1024.0;
+
+void Note(MapResult* result, const std::string& what, const Status& status) {
+  result->notes.push_back(what + ": " + status.message());
+}
+
+std::span<const std::uint8_t> Bytes(const std::string& s) {
+  return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
+}
+
+// The smallest of the libpng layouts; sets the PNG size figures.
+std::string AddPngSizes(const Grid& grid, MapResult* result) {
+  std::string best;
+  std::optional<double> png8;
+  for (PngLayout layout : {PngLayout::kGrey8, PngLayout::kPalette8, PngLayout::kPalette2}) {
+    StatusOr<std::string> png = EncodeTrinaryPng(grid, layout, 9);
+    if (!png.ok()) {
+      Note(result, std::string("PNG ") + PngLayoutName(layout), png.status());
+      continue;
+    }
+    const double size = static_cast<double>(png->size());
+    if (layout == PngLayout::kPalette2) {
+      result->figures[key::kPng2Bytes] = size;
+    } else {
+      png8 = png8 ? std::min(*png8, size) : size;
+    }
+    if (best.empty() || png->size() < best.size()) best = std::move(*png);
+  }
+  if (png8) result->figures[key::kPng8Bytes] = *png8;
+  if (!best.empty()) result->figures[key::kPng9Bytes] = static_cast<double>(best.size());
+  return best;
+}
+
+// netpbm's own `pnmtopng -compression 9` on map_saver's PGM of the grid.
+void AddPnmtopngSize(const Grid& grid, MapResult* result) {
+  StatusOr<ScratchDir> dir = ScratchDir::Create("pnmtopng");
+  if (!dir.ok()) return Note(result, "pnmtopng", dir.status());
+  std::vector<std::uint8_t> grey(grid.size());
+  for (int r = 0; r < grid.height(); ++r) {
+    for (int c = 0; c < grid.width(); ++c) {
+      const Cell cell = grid.at(c, r);
+      grey[grid.Index(c, grid.height() - 1 - r)] = cell == Cell::kFree       ? kPgmFree
+                                                   : cell == Cell::kOccupied ? kPgmOccupied
+                                                                             : kPgmUnknown;
+    }
+  }
+  const std::string pgm = dir->path() + "/map.pgm";
+  const std::string png = dir->path() + "/map.png";
+  Status written = WriteFileAtomic(pgm, EncodePgm(grid.width(), grid.height(), grey));
+  if (!written.ok()) return Note(result, "pnmtopng", written);
+  // pnmtopng writes to stdout: run it through sh only for the redirection,
+  // with both paths from mkdtemp (no user text in the command).
+  StatusOr<int> code =
+      RunSubprocess({"sh", "-c", "pnmtopng -compression 9 '" + pgm + "' > '" + png + "'"});
+  if (!code.ok()) return Note(result, "pnmtopng", code.status());
+  if (*code != 0) return Note(result, "pnmtopng", IoError("exit code " + std::to_string(*code)));
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(png, ec);
+  if (!ec) result->figures[key::kPnmtopngBytes] = static_cast<double>(size);
+}
+
+void AddGeneralCodecSizes(const Grid& grid, MapResult* result) {
+  StatusOr<std::string> zstd = ZstdCompress(RawCells(grid), 19);
+  if (zstd.ok()) {
+    result->figures[key::kZstdBytes] = static_cast<double>(zstd->size());
+  } else {
+    Note(result, "zstd", zstd.status());
+  }
+  StatusOr<std::string> xz = XzCompress(RawCells(grid), 9);
+  if (xz.ok()) {
+    result->figures[key::kXzBytes] = static_cast<double>(xz->size());
+  } else {
+    Note(result, "xz", xz.status());
+  }
+}
+
+void AddJbigSize(const Grid& grid, MapResult* result) {
+  StatusOr<JbigSizes> jbig = JbigTwoPlaneSizes(grid);
+  if (jbig.ok()) {
+    result->figures[key::kJbigBytes] = static_cast<double>(jbig->total());
+  } else {
+    Note(result, "JBIG1", jbig.status());
+  }
+}
+
+void AddPngSpeed(const Grid& grid, const std::string& png, int repeats, bool memory,
+                 MapResult* result) {
+  // Encode the layout that gave the smallest file, as a user would keep it.
+  PngLayout layout = PngLayout::kGrey8;
+  for (PngLayout candidate : {PngLayout::kGrey8, PngLayout::kPalette8, PngLayout::kPalette2}) {
+    StatusOr<std::string> trial = EncodeTrinaryPng(grid, candidate, 9);
+    if (trial.ok() && trial->size() == png.size()) layout = candidate;
+  }
+  auto encode = [&] { (void)EncodeTrinaryPng(grid, layout, 9); };
+  auto decode = [&] { (void)DecodeTrinaryPng(Bytes(png)); };
+  result->figures[key::kPngEncodeMs] = Median(TimeRuns(encode, repeats));
+  result->figures[key::kPngDecodeMs] = Median(TimeRuns(decode, repeats));
+  if (!memory) return;
+  if (auto peak = PeakExtraMemoryBytes(encode))
+    result->figures[key::kPngEncodePeakMb] = *peak / kMb;
+  if (auto peak = PeakExtraMemoryBytes(decode))
+    result->figures[key::kPngDecodePeakMb] = *peak / kMb;
+}
+
+void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
+                    const char* displ_key, const char* ms_key, MapResult* result) {
+  LineExtractionOptions options;
+  options.method = method;
+  StatusOr<LineExtraction> lines = InternalError("not run");
+  const double ms = Median(TimeRuns([&] { lines = ExtractLines(grid, options); }, 1));
+  if (!lines.ok()) {
+    return Note(result, method == LineMethod::kRmLine ? "RM-Line" : "linemap lines",
+                lines.status());
+  }
+  const LineFidelity fidelity = MeasureLineFidelity(lines->edges, lines->segments);
+  result->figures[lines_key] = static_cast<double>(lines->segments.size());
+  result->figures[displ_key] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  result->figures[ms_key] = ms;
+  if (method == LineMethod::kRmLine) result->rmline_segments = std::move(lines->segments);
+}
+
+}  // namespace
+
+MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
+                     const BenchOptions& options) {
+  MapResult result;
+  result.name = name;
+  result.path = source_path;
+  result.figures[key::kWidth] = grid.width();
+  result.figures[key::kHeight] = grid.height();
+  result.figures[key::kCells] = static_cast<double>(grid.size());
+  // The source file is the image (a YAML's `image:`), as stored on disk.
+  const bool yaml = source_path.ends_with(".yaml") || source_path.ends_with(".yml");
+  const std::string image = yaml ? YamlImagePath(source_path) : source_path;
+  std::error_code ec;
+  const auto source_size = std::filesystem::file_size(image, ec);
+  if (!image.empty() && !ec) result.figures[key::kSourceBytes] = static_cast<double>(source_size);
+  const int repeats = RepeatsFor(grid.size(), options.repeats);
+  result.figures[key::kRepeats] = repeats;
+  const std::string png = AddPngSizes(grid, &result);
+  if (options.pnmtopng && ToolAvailable("pnmtopng")) AddPnmtopngSize(grid, &result);
+  // PNG-9, the ratio base, is the smallest PNG anyone would get: netpbm's
+  // palette order sometimes compresses better than libpng's layouts here.
+  if (auto netpbm = result.Get(key::kPnmtopngBytes)) {
+    if (auto libpng = result.Get(key::kPng9Bytes); !libpng || *netpbm < *libpng) {
+      result.figures[key::kPng9Bytes] = *netpbm;
+    }
+  }
+  AddGeneralCodecSizes(grid, &result);
+  if (options.jbig) AddJbigSize(grid, &result);
+  if (!png.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
+  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
+                 &result);
+  AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
+                 key::kLinemapMs, &result);
+  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
+  if (!lmap.ok()) Note(&result, ".lmap", lmap);
+  return result;
+}
+
+std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
+                                   const std::function<void(const std::string&)>& progress) {
+  std::vector<ScalingRow> rows;
+  for (int side : {1, 2, 4, 8}) {
+    if (side * side > max_mcells) break;
+    const double mcells = side * side;
+    progress(std::to_string(side * side) + " Mcells");
+    const Grid grid = GenerateOfficeMap(1024 * side);
+    const int runs = RepeatsFor(grid.size(), repeats);
+    ScalingRow row;
+    row.mcells = mcells;
+    row.repeats = runs;
+    StatusOr<std::string> png = EncodeTrinaryPng(grid, PngLayout::kGrey8, 9);
+    row.png_encode_ms_per_mcell =
+        Median(TimeRuns([&] { (void)EncodeTrinaryPng(grid, PngLayout::kGrey8, 9); }, runs)) /
+        mcells;
+    if (png.ok()) {
+      row.png_decode_ms_per_mcell =
+          Median(TimeRuns([&] { (void)DecodeTrinaryPng(Bytes(*png)); }, runs)) / mcells;
+    }
+    LineExtractionOptions options;
+    row.rmline_ms_per_mcell =
+        Median(TimeRuns([&] { (void)ExtractLines(grid, options); }, 1)) / mcells;
+    MapResult lmap;
+    if (AddLmapFigures(grid, {runs, false, false}, &lmap).ok()) {
+      if (auto ms = lmap.Get(key::kLmapEncodeMs)) row.lmap_encode_ms_per_mcell = *ms / mcells;
+      if (auto ms = lmap.Get(key::kLmapDecodeMs)) row.lmap_decode_ms_per_mcell = *ms / mcells;
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace linemap::bench

@@ -1,0 +1,46 @@
+// Measuring one map with every comparator, and the scaling table.
+#ifndef LINEMAP_TOOLS_BENCH_RUNNER_H_
+#define LINEMAP_TOOLS_BENCH_RUNNER_H_
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linemap/grid.h"
+#include "tools/bench/results.h"
+
+namespace linemap::bench {
+
+struct BenchOptions {
+  int repeats = 5;  // timed runs per map up to 1 Mcell (fewer above; see RepeatsFor)
+  bool measure_memory = true;
+  bool jbig = true;      // needs pbmtojbg in PATH
+  bool pnmtopng = true;  // cross-check size with netpbm's pnmtopng -compression 9
+};
+
+// Every figure of `grid` (loaded from `source_path`). Never fails as a
+// whole: a comparator that fails leaves its figures out and adds a note.
+MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
+                     const BenchOptions& options);
+
+// One row of the scaling table.
+struct ScalingRow {
+  double mcells = 0;
+  int repeats = 0;
+  double png_encode_ms_per_mcell = 0;
+  double png_decode_ms_per_mcell = 0;
+  double rmline_ms_per_mcell = 0;
+  std::optional<double> lmap_encode_ms_per_mcell;
+  std::optional<double> lmap_decode_ms_per_mcell;
+};
+
+// Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16
+// and 64 Mcells)
+// (up to `max_mcells`); `progress` is called before each size.
+std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
+                                   const std::function<void(const std::string&)>& progress);
+
+}  // namespace linemap::bench
+
+#endif  // LINEMAP_TOOLS_BENCH_RUNNER_H_

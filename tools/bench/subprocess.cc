@@ -1,0 +1,77 @@
+#include "tools/bench/subprocess.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+
+extern char** environ;
+
+namespace linemap::bench {
+namespace fs = std::filesystem;
+
+StatusOr<int> RunSubprocess(const std::vector<std::string>& argv) {
+  if (argv.empty()) return InvalidArgumentError("no command to run");
+  std::vector<std::string> copy = argv;
+  std::vector<char*> args;
+  for (std::string& a : copy) args.push_back(a.data());
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int err = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) return NotFoundError(argv[0] + ": cannot run: " + std::strerror(err));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return IoError(argv[0] + ": waitpid failed");
+  }
+  if (WIFEXITED(status)) {
+    // posix_spawnp reports a missing program as exit code 127 from the child.
+    if (WEXITSTATUS(status) == 127) return NotFoundError(argv[0] + ": not found");
+    return WEXITSTATUS(status);
+  }
+  return IoError(argv[0] + ": killed by signal " + std::to_string(WTERMSIG(status)));
+}
+
+bool ToolAvailable(const std::string& tool) {
+  if (tool.find('/') != std::string::npos) return ::access(tool.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    if (!dir.empty() && ::access((dir + "/" + tool).c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+StatusOr<ScratchDir> ScratchDir::Create(const std::string& tag) {
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/linemap-" + tag + "-XXXXXX";
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    return IoError("cannot create a scratch folder " + pattern + ": " + std::strerror(errno));
+  }
+  return ScratchDir(pattern);
+}
+
+ScratchDir::ScratchDir(ScratchDir&& other) noexcept : path_(std::move(other.path_)) {
+  other.path_.clear();
+}
+
+ScratchDir::~ScratchDir() {
+  if (path_.empty()) return;
+  std::error_code ec;
+  fs::remove_all(path_, ec);
+}
+
+}  // namespace linemap::bench

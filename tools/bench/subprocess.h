@@ -1,0 +1,39 @@
+// Running a command-line tool (no shell) and scratch folders for its files.
+// Used for comparators that must not be linked (JBIG-KIT is GPL).
+#ifndef LINEMAP_TOOLS_BENCH_SUBPROCESS_H_
+#define LINEMAP_TOOLS_BENCH_SUBPROCESS_H_
+
+#include <string>
+#include <vector>
+
+#include "linemap/status.h"
+
+namespace linemap::bench {
+
+// Runs argv[0] (looked up in PATH) with stdin, stdout and stderr on
+// /dev/null and returns its exit code. kNotFound when it cannot be started;
+// kIoError when it dies from a signal.
+StatusOr<int> RunSubprocess(const std::vector<std::string>& argv);
+
+// True when `tool` can be found in PATH (or is an executable path).
+bool ToolAvailable(const std::string& tool);
+
+// A fresh folder under $TMPDIR (or /tmp), removed with its contents on
+// destruction.
+class ScratchDir {
+ public:
+  static StatusOr<ScratchDir> Create(const std::string& tag);
+  ScratchDir(ScratchDir&& other) noexcept;
+  ScratchDir& operator=(ScratchDir&&) = delete;
+  ScratchDir(const ScratchDir&) = delete;
+  ~ScratchDir();
+  const std::string& path() const { return path_; }
+
+ private:
+  explicit ScratchDir(std::string path) : path_(std::move(path)) {}
+  std::string path_;
+};
+
+}  // namespace linemap::bench
+
+#endif  // LINEMAP_TOOLS_BENCH_SUBPROCESS_H_

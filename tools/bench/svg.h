@@ -1,0 +1,34 @@
+// Pictures for people: per-map overlays of the extracted geometry on the map
+// (as the papers' figures), and a summary plot of size ratio vs DisPL.
+#ifndef LINEMAP_TOOLS_BENCH_SVG_H_
+#define LINEMAP_TOOLS_BENCH_SVG_H_
+
+#include <string>
+#include <vector>
+
+#include "linemap/grid.h"
+#include "linemap/segmentation.h"
+#include "linemap/status.h"
+#include "tools/bench/results.h"
+
+namespace linemap::bench {
+
+// The SVG text: the map as an embedded PNG (faded), `segments` in red, room
+// chains in blue, furniture outlines in green. Cell units, row 0 at the bottom.
+std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segments,
+                          const Segmentation* segmentation, const std::string& title);
+
+// Writes DIR/<map name with '/' -> '__'>.svg: the geometry stored in the
+// lossy .lmap when the codec is in the tree, else RM-Line's segments with
+// the segmentation's room borders and furniture outlines.
+Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapResult& result);
+
+// Size ratio to PNG-9 (log scale) against DisPL_ave (cm), one point per map
+// and method, the medians as large markers. Lossless methods sit at DisPL 0.
+std::string SummaryPlotSvg(const std::vector<MapResult>& results);
+
+std::string Base64(const std::string& bytes);
+
+}  // namespace linemap::bench
+
+#endif  // LINEMAP_TOOLS_BENCH_SVG_H_
