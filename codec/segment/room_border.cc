@@ -37,17 +37,6 @@ double MsSince(Clock::time_point start) {
 constexpr int kDc[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kDr[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
 
-// Entries into component `label` along its box's mid-line (left to right).
-int MidLineEntries(const Labeling& labels, std::int32_t label) {
-  const BoundingBox& box = labels.components[label - 1].box;
-  const int row = (box.min_row + box.max_row) / 2;
-  int entries = 0;
-  for (int col = box.min_col; col <= box.max_col; ++col) {
-    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
-  }
-  return entries;
-}
-
 // The Lee closure of one component, reusing its scratch arrays between cut
 // rows (only touched cells are reset).
 class LeeCloser {
@@ -270,6 +259,16 @@ HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
   border.band = Intersect(Subtract(border.dilated, border.eroded), layout.in_grid);
   border.dilated = Intersect(border.dilated, layout.in_grid);
   return border;
+}
+
+int MidLineEntries(const Labeling& labels, std::int32_t label) {
+  const BoundingBox& box = labels.components[label - 1].box;
+  const int row = (box.min_row + box.max_row) / 2;
+  int entries = 0;
+  for (int col = box.min_col; col <= box.max_col; ++col) {
+    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
+  }
+  return entries;
 }
 
 bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row) {
