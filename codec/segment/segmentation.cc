@@ -45,6 +45,10 @@ int HalfExtent(const std::vector<StructuringElement>& elements) {
 // cells when its own cell is not free).
 StatusOr<std::int32_t> RobotRoom(const Grid& grid, const Labeling& free_labels, CellPoint robot,
                                  CellIndex* cell) {
+  constexpr double kFar = 1e9;  // keeps the rounding below in int range
+  if (!(std::abs(robot.col) < kFar && std::abs(robot.row) < kFar)) {
+    return InvalidArgumentError("robot position is outside the map");
+  }
   const int col = static_cast<int>(std::lround(robot.col));
   const int row = static_cast<int>(std::lround(robot.row));
   if (!grid.Contains(col, row)) {
