@@ -67,6 +67,11 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
 // component, left to right. Two or more = a room border for the paper.
 int MidLineEntries(const Labeling& labels, std::int32_t label);
 
+// CPU time of the calling thread in milliseconds, for the stage timers: on
+// an idle machine it equals wall time, on a shared one it is not inflated by
+// waiting for a core.
+double ThreadCpuMs();
+
 // Even-odd test of the point (col, row) against the polygon through the
 // chain's cell centres (half-open rule on rows, so vertices on the scan row
 // are counted once).

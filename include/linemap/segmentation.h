@@ -101,7 +101,9 @@ struct SegmentationOptions {
   int max_cut_rows = 16;
 };
 
-// Wall-clock milliseconds of the stages, numbered as the paper's Table 1.
+// Milliseconds of CPU time of the calling thread spent in each stage
+// (numbered as the paper's Table 1); on an idle machine this is the wall
+// time, on a busy one it leaves out the waiting for a core.
 struct SegmentationTimings {
   double room_layout_ms = 0;  // free components, enclosure (our pre-processing)
   double morphology_ms = 0;   // stage 1: dilations, erosions, subtraction
