@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 namespace linemap {
 namespace {
@@ -43,6 +44,19 @@ class UnionFind {
   std::vector<std::int32_t> parent_;
 };
 
+// The first column >= col whose byte is non-zero (or w), eight at a time:
+// maps are mostly empty space.
+inline int SkipZeros(const std::uint8_t* bits, int col, int w) {
+  while (col + 8 <= w) {
+    std::uint64_t chunk;
+    std::memcpy(&chunk, bits + col, 8);
+    if (chunk) break;
+    col += 8;
+  }
+  while (col < w && !bits[col]) ++col;
+  return col;
+}
+
 }  // namespace
 
 Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
@@ -64,7 +78,10 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
     std::int32_t* cur = &provisional[base];
     const std::uint8_t* bits = &mask.bits[base];
     for (int col = 0; col < w; ++col) {
-      if (!bits[col]) continue;
+      if (!bits[col]) {
+        col = SkipZeros(bits, col, w) - 1;
+        continue;
+      }
       const std::int32_t west = col > 0 ? cur[col - 1] : 0;
       const std::int32_t north = up ? up[col] : 0;
       std::int32_t label = 0;
@@ -101,9 +118,13 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
   result.labels = std::move(provisional);  // relabelled in place
   for (int row = 0; row < h; ++row) {
     std::int32_t* labels = result.labels.data() + static_cast<std::size_t>(row) * w;
+    const std::uint8_t* bits = &mask.bits[static_cast<std::size_t>(row) * w];
     for (int col = 0; col < w; ++col) {
       const std::int32_t p = labels[col];
-      if (!p) continue;
+      if (!p) {
+        col = SkipZeros(bits, col, w) - 1;
+        continue;
+      }
       const std::int32_t label = final_label[p - 1];
       labels[col] = label;
       ComponentStats& stats = result.components[label - 1];

@@ -6,7 +6,10 @@
 #include "linemap/morphology.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cassert>
+#include <cstring>
 
 namespace linemap {
 namespace {
@@ -26,6 +29,30 @@ std::vector<Offset> OnOffsets(const StructuringElement& element) {
   return offsets;
 }
 
+static_assert(std::endian::native == std::endian::little, "byte packing assumes little-endian");
+
+// Bit i of the result = (byte i of the 8 bytes at `p` != 0).
+inline std::uint64_t PackEightBytes(const std::uint8_t* p) {
+  std::uint64_t x;
+  std::memcpy(&x, p, 8);
+  constexpr std::uint64_t kLow7 = 0x7f7f7f7f7f7f7f7fULL;
+  // Top bit of each byte set iff the byte is non-zero, then moved to bit 0.
+  x = (((x & kLow7) + kLow7) | x) >> 7 & 0x0101010101010101ULL;
+  return (x * 0x0102040810204080ULL) >> 56;  // gathers byte i's bit 0 into bit i
+}
+
+// kSpreadByte[b] has byte i = bit i of b (little-endian), for unpacking.
+constexpr std::array<std::uint64_t, 256> MakeSpreadTable() {
+  std::array<std::uint64_t, 256> table{};
+  for (int b = 0; b < 256; ++b) {
+    for (int i = 0; i < 8; ++i) {
+      if (b >> i & 1) table[b] |= std::uint64_t{1} << (8 * i);
+    }
+  }
+  return table;
+}
+constexpr std::array<std::uint64_t, 256> kSpreadByte = MakeSpreadTable();
+
 // Rows packed 64 cells to a word; bits past the width are always 0.
 class PackedMask {
  public:
@@ -44,7 +71,11 @@ class PackedMask {
         const int begin = 64 * j;
         const int count = std::min(64, mask.width - begin);
         std::uint64_t word = 0;
-        for (int i = 0; i < count; ++i) word |= std::uint64_t{src[begin + i] != 0} << i;
+        if (count == 64) {
+          for (int g = 0; g < 8; ++g) word |= PackEightBytes(src + begin + 8 * g) << (8 * g);
+        } else {
+          for (int i = 0; i < count; ++i) word |= std::uint64_t{src[begin + i] != 0} << i;
+        }
         dst[j] = word;
       }
     }
@@ -60,7 +91,14 @@ class PackedMask {
         const int begin = 64 * j;
         const int count = std::min(64, width_ - begin);
         const std::uint64_t word = src[j];
-        for (int i = 0; i < count; ++i) dst[begin + i] = (word >> i) & 1;
+        if (count == 64) {
+          for (int g = 0; g < 8; ++g) {
+            const std::uint64_t bytes = kSpreadByte[(word >> (8 * g)) & 0xff];
+            std::memcpy(dst + begin + 8 * g, &bytes, 8);
+          }
+        } else {
+          for (int i = 0; i < count; ++i) dst[begin + i] = (word >> i) & 1;
+        }
       }
     }
     return mask;

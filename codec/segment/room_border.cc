@@ -21,7 +21,6 @@
 // linemap's addition: with protect_room_interior, the room's own interior
 // (M_H eroded by the 3x3 cross) is kept out of the band.
 #include <algorithm>
-#include <chrono>
 #include <deque>
 
 #include "codec/segment/segment_internal.h"
@@ -29,24 +28,10 @@
 namespace linemap::segment_internal {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double MsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+double MsSince(double start) { return ThreadCpuMs() - start; }
 
 constexpr int kDc[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kDr[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
-
-// Entries into component `label` along its box's mid-line (left to right).
-int MidLineEntries(const Labeling& labels, std::int32_t label) {
-  const BoundingBox& box = labels.components[label - 1].box;
-  const int row = (box.min_row + box.max_row) / 2;
-  int entries = 0;
-  for (int col = box.min_col; col <= box.max_col; ++col) {
-    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
-  }
-  return entries;
-}
 
 // The Lee closure of one component, reusing its scratch arrays between cut
 // rows (only touched cells are reset).
@@ -272,6 +257,16 @@ HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
   return border;
 }
 
+int MidLineEntries(const Labeling& labels, std::int32_t label) {
+  const BoundingBox& box = labels.components[label - 1].box;
+  const int row = (box.min_row + box.max_row) / 2;
+  int entries = 0;
+  for (int col = box.min_col; col <= box.max_col; ++col) {
+    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
+  }
+  return entries;
+}
+
 bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row) {
   bool inside = false;
   const std::size_t n = chain.size();
@@ -288,14 +283,14 @@ bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row
 BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& border,
                               int max_cut_rows) {
   BorderClosure closure;
-  auto start = Clock::now();
+  auto start = ThreadCpuMs();
   const Labeling labels = LabelComponents(border.band, Connectivity::kEight);
   closure.border_components = static_cast<int>(labels.components.size());
   for (std::size_t k = 0; k < labels.components.size(); ++k) {
     if (MidLineEntries(labels, static_cast<std::int32_t>(k + 1)) >= 2) ++closure.ring_components;
   }
   closure.border_ms = MsSince(start);
-  start = Clock::now();
+  start = ThreadCpuMs();
   // The outer border is the component of D's first cell (D's outer boundary
   // is in the band and 8-connected).
   std::int32_t outer = 0;

@@ -62,6 +62,16 @@ struct BorderClosure {
 BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& border,
                               int max_cut_rows);
 
+// The paper's mid-line rule (section 3.2 C): how many times the row through
+// the middle of the component's box switches from other cells into the
+// component, left to right. Two or more = a room border for the paper.
+int MidLineEntries(const Labeling& labels, std::int32_t label);
+
+// CPU time of the calling thread in milliseconds, for the stage timers: on
+// an idle machine it equals wall time, on a shared one it is not inflated by
+// waiting for a core.
+double ThreadCpuMs();
+
 // Even-odd test of the point (col, row) against the polygon through the
 // chain's cell centres (half-open rule on rows, so vertices on the scan row
 // are counted once).

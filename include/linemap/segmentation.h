@@ -10,10 +10,12 @@
 //                   the robot; without a robot every free component of at
 //                   least min_room_cells cells is a room);
 //   furniture (2)   everything enclosed by that free space: the components of
-//                   its complement (8-connected) that do not reach the map
-//                   edge, i.e. the point-in-polygon test the paper proposes,
-//                   done on cells. Pillars and columns inside a room land
-//                   here whatever their shape;
+//                   its complement (8-connected) that do not reach beyond the
+//                   map edge, i.e. the point-in-polygon test the paper
+//                   proposes, done on cells. Pillars and columns inside a
+//                   room land here whatever their shape. The blobs are the
+//                   occupied cells of these parts, grouped by an optional
+//                   closing (furniture_closing) and 8-connectivity;
 //   walls (1)       occupied cells 8-adjacent to the free space that are not
 //                   furniture;
 //   virgin (0)      the rest.
@@ -99,7 +101,9 @@ struct SegmentationOptions {
   int max_cut_rows = 16;
 };
 
-// Wall-clock milliseconds of the stages, numbered as the paper's Table 1.
+// Milliseconds of CPU time of the calling thread spent in each stage
+// (numbered as the paper's Table 1); on an idle machine this is the wall
+// time, on a busy one it leaves out the waiting for a core.
 struct SegmentationTimings {
   double room_layout_ms = 0;  // free components, enclosure (our pre-processing)
   double morphology_ms = 0;   // stage 1: dilations, erosions, subtraction

@@ -175,7 +175,8 @@ int RunSegment(const std::vector<std::string>& args) {
   const Status written = WriteFileAtomic(*out_path, text);
   if (!written.ok()) return ReportError("segment", written.WithContext(*out_path));
   const SegmentationTimings& t = seg->timings;
-  std::printf("rooms: %zu  blobs: %zu  time: %.2f ms\n", seg->rooms.size(), seg->blobs.size(), ms);
+  std::printf("rooms: %zu  blobs: %zu  time: %.2f ms (wall)\n", seg->rooms.size(),
+              seg->blobs.size(), ms);
   for (std::size_t i = 0; i < seg->rooms.size(); ++i) {
     const RoomBorder& room = seg->rooms[i];
     std::printf("room %zu: chain %zu cells, encloses %zu of %zu free cells (%.1f%%)%s\n", i,
@@ -184,7 +185,8 @@ int RunSegment(const std::vector<std::string>& args) {
                 room.closed_by_lee ? "" : " [fallback contour]");
   }
   std::printf(
-      "stages (ms): layout %.2f  1 morphology %.2f  2 furniture %.2f  3 border components %.2f  "
+      "stages (CPU ms): layout %.2f  1 morphology %.2f  2 furniture %.2f  3 border components %.2f "
+      " "
       "4 Lee %.2f\n",
       t.room_layout_ms, t.morphology_ms, t.furniture_ms, t.border_ms, t.lee_ms);
   return kExitOk;

@@ -7,10 +7,12 @@
 namespace linemap {
 namespace {
 
+// "Set" cells get any non-zero byte, as the mask type allows.
 BinaryMask RandomMask(std::mt19937* rng, int w, int h, double density) {
   BinaryMask mask(w, h);
   std::bernoulli_distribution on(density);
-  for (auto& b : mask.bits) b = on(*rng);
+  std::uniform_int_distribution<int> value(1, 255);
+  for (auto& b : mask.bits) b = on(*rng) ? static_cast<std::uint8_t>(value(*rng)) : 0;
   return mask;
 }
 

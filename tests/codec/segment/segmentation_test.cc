@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -168,6 +169,10 @@ TEST(SegmentationTest, RobotPicksItsRoom) {
   options.robot = CellPoint{34, 15};  // in the unknown gap, > 3 cells from free
   EXPECT_FALSE(SegmentMap(grid, options).ok());
   options.robot = CellPoint{-5, 15};
+  EXPECT_FALSE(SegmentMap(grid, options).ok());
+  options.robot = CellPoint{std::nan(""), 15};
+  EXPECT_FALSE(SegmentMap(grid, options).ok());
+  options.robot = CellPoint{1e300, 15};
   EXPECT_FALSE(SegmentMap(grid, options).ok());
 }
 
