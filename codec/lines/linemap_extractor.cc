@@ -239,7 +239,7 @@ class GroupTiles {
   }
 
   void Add(std::uint32_t id, const LineSegment& s) {
-    const double length = std::hypot(s.x2 - s.x1, s.y2 - s.y1);
+    const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
     const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
     int last = -1;
     for (int k = 0; k <= steps; ++k) {
@@ -250,16 +250,28 @@ class GroupTiles {
     }
   }
 
-  // Ids registered in the tiles within `radius` of (x, y) (with repeats).
-  void Near(double x, double y, double radius, std::vector<std::uint32_t>* out) const {
+  // Ids of live groups registered in the tiles within `radius` of (x, y)
+  // (an id may repeat across tiles). Dead and repeated entries are dropped
+  // from the buckets on the way, so merged groups do not pile up.
+  void Near(double x, double y, double radius, const std::vector<Group>& groups,
+            std::vector<std::uint32_t>* out) {
     out->clear();
+    if (mark_.size() < groups.size()) mark_.resize(groups.size(), 0);
     const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
     const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
     const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
     const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
     for (int ty = ty0; ty <= ty1; ++ty) {
       for (int tx = tx0; tx <= tx1; ++tx) {
-        const auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        ++stamp_;
+        std::size_t kept = 0;
+        for (std::uint32_t id : bucket) {
+          if (!groups[id].alive || mark_[id] == stamp_) continue;
+          mark_[id] = stamp_;
+          bucket[kept++] = id;
+        }
+        bucket.resize(kept);
         out->insert(out->end(), bucket.begin(), bucket.end());
       }
     }
@@ -276,13 +288,43 @@ class GroupTiles {
   int tile_;
   int tiles_x_ = 1, tiles_y_ = 1;
   std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<std::uint32_t> mark_;  // per group: the last bucket scan that kept it
+  std::uint32_t stamp_ = 0;
 };
 
-double EndGap(const Group& a, const Group& b) {
-  return std::min({PointSegmentDistance(a.segment.x1, a.segment.y1, b.segment),
-                   PointSegmentDistance(a.segment.x2, a.segment.y2, b.segment),
-                   PointSegmentDistance(b.segment.x1, b.segment.y1, a.segment),
-                   PointSegmentDistance(b.segment.x2, b.segment.y2, a.segment)});
+double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
+  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
+  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+  return ex * ex + ey * ey;
+}
+
+// A necessary condition for a merge, in O(1): a line within epsilon of both
+// extreme cells of a group (length l along its line, residual r) makes an
+// angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
+// so the two groups' directions may differ by at most the sum of the two
+// such angles.
+bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
+  auto max_angle = [epsilon](const Group& g) {
+    const double length = std::sqrt((g.segment.x2 - g.segment.x1) * (g.segment.x2 - g.segment.x1) +
+                                    (g.segment.y2 - g.segment.y1) * (g.segment.y2 - g.segment.y1));
+    if (length <= 0) return std::numbers::pi / 2;
+    return std::asin(std::min(1.0, 2 * (epsilon + g.max_residual) / length));
+  };
+  const double cosine = std::abs(a.line.direction.dot(b.line.direction));
+  const double angle = std::acos(std::min(1.0, cosine));
+  return angle <= max_angle(a) + max_angle(b) + 1e-9;
+}
+
+// True when an end of one segment is within `gap` of the other segment.
+bool EndsWithinGap(const Group& a, const Group& b, double gap) {
+  const double gap_sq = gap * gap;
+  return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x1, b.segment.y1, a.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
 }
 
 // Evaluates merging groups a and b: false when the union breaks the bound
@@ -292,8 +334,8 @@ bool TryMerge(const Group& a, const Group& b, int width, double epsilon, double 
               FittedLine* line, LineSweep* sweep) {
   PointMoments moments = a.moments;
   moments.Merge(b.moments);
+  if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
-  if (line->mean_squared_residual > epsilon * epsilon) return false;
   *sweep = LineSweep();
   const double max_cost = a.cost + b.cost + max_added;
   return SweepCells(*line, a.cells, width, epsilon, max_cost, sweep) &&
@@ -326,14 +368,14 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
     for (int end = 0; end < 2; ++end) {
-      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, &near);
+      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, *groups, &near);
       for (std::uint32_t h : near) {
         if (h == g || seen_stamp[h] == stamp || !(*groups)[h].alive) continue;
         if (only_higher_ids && h < g) continue;
         seen_stamp[h] = stamp;
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
-        if (EndGap(a, b) > gap) continue;
+        if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
         if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
         queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
       }
