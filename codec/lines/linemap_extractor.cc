@@ -37,6 +37,7 @@
 #include <numbers>
 #include <numeric>
 #include <queue>
+#include <utility>
 
 #include "codec/lines/line_fit.h"
 #include "codec/lines/segment_index.h"
@@ -517,6 +518,70 @@ void PolishGroupL1(Group* group, int width, double epsilon) {
   group->segment = SegmentFromProjections(best, xs.data(), ys.data(), n);
 }
 
+// Step 7: corners. Two segments whose ends are within `reach` cells of each
+// other and which meet at more than 20 degrees are both extended to the
+// intersection of their lines when that point lies beyond both ends and
+// within `reach` of each, so that decoded walls close at corners. Segments
+// only grow, so no cell gets farther from its segment.
+void JoinCorners(std::vector<LineSegment>* segments, int width, int height, double reach) {
+  constexpr int kTile = 8;
+  const int tiles_x = std::max(1, (width + kTile - 1) / kTile);
+  const int tiles_y = std::max(1, (height + kTile - 1) / kTile);
+  auto tile_of = [&](double x, double y) {
+    const int tx = std::clamp(static_cast<int>(std::floor((x + 0.5) / kTile)), 0, tiles_x - 1);
+    const int ty = std::clamp(static_cast<int>(std::floor((y + 0.5) / kTile)), 0, tiles_y - 1);
+    return std::pair<int, int>(tx, ty);
+  };
+  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)).
+  std::vector<std::vector<std::uint32_t>> ends(static_cast<std::size_t>(tiles_x) * tiles_y);
+  auto end_point = [&](std::uint32_t end) {
+    const LineSegment& s = (*segments)[end / 2];
+    return (end % 2 == 0) ? Eigen::Vector2d(s.x1, s.y1) : Eigen::Vector2d(s.x2, s.y2);
+  };
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx, ty] = tile_of(p.x(), p.y());
+    ends[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(end);
+  }
+  std::vector<std::uint8_t> joined(2 * segments->size(), 0);
+  const double min_sine = std::sin(20.0 * std::numbers::pi / 180.0);
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    if (joined[end]) continue;
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx0, ty0] = tile_of(p.x() - reach, p.y() - reach);
+    const auto [tx1, ty1] = tile_of(p.x() + reach, p.y() + reach);
+    for (int ty = ty0; ty <= ty1 && !joined[end]; ++ty) {
+      for (int tx = tx0; tx <= tx1 && !joined[end]; ++tx) {
+        for (std::uint32_t other : ends[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+          if (other / 2 == end / 2 || joined[other]) continue;
+          const Eigen::Vector2d q = end_point(other);
+          if ((p - q).norm() > reach) continue;
+          // Directions pointing outwards from each end.
+          const Eigen::Vector2d u = p - end_point(end ^ 1u);
+          const Eigen::Vector2d v = q - end_point(other ^ 1u);
+          if (u.norm() <= 0 || v.norm() <= 0) continue;
+          const Eigen::Vector2d du = u.normalized(), dv = v.normalized();
+          const double cross = du.x() * dv.y() - du.y() * dv.x();
+          if (std::abs(cross) < min_sine) continue;
+          // p + a * du = q + b * dv.
+          const Eigen::Vector2d w = q - p;
+          const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
+          const double b = (w.x() * du.y() - w.y() * du.x()) / cross;
+          if (a < 0 || b < 0 || a > reach || b > reach) continue;
+          const Eigen::Vector2d corner = p + a * du;
+          for (std::uint32_t e : {end, other}) {
+            LineSegment& s = (*segments)[e / 2];
+            (e % 2 == 0 ? s.x1 : s.x2) = corner.x();
+            (e % 2 == 0 ? s.y1 : s.y2) = corner.y();
+            joined[e] = 1;
+          }
+          break;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -677,6 +742,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   for (const Group& group : groups) {
     if (group.alive) result.segments.push_back(group.segment);
   }
+  JoinCorners(&result.segments, width, height, options.corner_join_cells);
   // Speckle not within epsilon of a wall is left to the furniture layer.
   result.left_to_blobs.assign(edges.is_edge.size(), 0);
   SegmentIndex index(&result.segments, width, height);

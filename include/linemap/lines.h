@@ -76,6 +76,9 @@ struct LineExtractionOptions {
   // epsilon_cells and max_added_cost_cells. Below 0.5 the pieces are digital
   // straight segments, so the two sides of a wall never start merged.
   double split_epsilon_cells = 0.3;
+  // linemap extractor: segment ends at most this far apart (cells) that meet
+  // at more than 20 degrees are extended to their common corner (0 = off).
+  double corner_join_cells = 3.0;
 };
 
 struct LineExtraction {

@@ -166,6 +166,37 @@ TEST(LinemapExtractorTest, RoomWithADoorGivesFourWalls) {
   EXPECT_EQ(top + left + right + bottom, static_cast<int>(segments.size()));
 }
 
+TEST(LinemapExtractorTest, RoomWallsAreJoinedAtTheCorners) {
+  // Walls on the border of [1,20] x [1,14], unknown outside: the corner cells
+  // are not edge points, so the four wall segments end one cell short of
+  // each corner; corner joining extends them to the corner cell centres.
+  Grid grid(22, 16, Cell::kUnknown);
+  DrawRoom(&grid, 1, 1, 20, 14);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.0));
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->segments.size(), 4u);
+  auto has_end_at = [&](double x, double y) {
+    int count = 0;
+    for (const LineSegment& s : result->segments) {
+      count += std::hypot(s.x1 - x, s.y1 - y) < 1e-6;
+      count += std::hypot(s.x2 - x, s.y2 - y) < 1e-6;
+    }
+    return count;
+  };
+  EXPECT_EQ(has_end_at(1, 1), 2);
+  EXPECT_EQ(has_end_at(20, 1), 2);
+  EXPECT_EQ(has_end_at(1, 14), 2);
+  EXPECT_EQ(has_end_at(20, 14), 2);
+  LineExtractionOptions no_join = LinemapOptions(1.0);
+  no_join.corner_join_cells = 0;
+  StatusOr<LineExtraction> unjoined = ExtractLines(grid, no_join);
+  ASSERT_TRUE(unjoined.ok());
+  for (const LineSegment& s : unjoined->segments) {
+    EXPECT_GT(std::hypot(s.x1 - 1, s.y1 - 1), 0.5);
+    EXPECT_GT(std::hypot(s.x2 - 1, s.y2 - 1), 0.5);
+  }
+}
+
 TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   // The obstacle fills rows 0..20 + j(col), j random in {-1, 0, 1}, across
   // the whole width; free above. Its edge map is the ragged top boundary,
