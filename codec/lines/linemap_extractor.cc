@@ -33,8 +33,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
+#include <queue>
+#include <utility>
 
 #include "codec/lines/line_fit.h"
 #include "codec/lines/segment_index.h"
@@ -69,34 +72,45 @@ CellXY CellOfIndex(std::uint32_t index, int width) {
           static_cast<int>(index / static_cast<std::uint32_t>(width))};
 }
 
-// Sizes of the 8-connected components of the edge map; flags the cells of
-// components with at least `min_cells` cells.
-std::vector<std::uint8_t> CellsOfLargeComponents(const EdgeMap& edges, int min_cells) {
-  std::vector<std::uint8_t> large(edges.is_edge.size(), 0);
-  std::vector<std::uint8_t> seen(edges.is_edge.size(), 0);
+// The edge cells' indices in raster order: later passes visit only these.
+std::vector<std::uint32_t> EdgeCellList(const EdgeMap& edges) {
+  std::vector<std::uint32_t> list;
+  list.reserve(edges.edge_count);
+  for (std::size_t i = 0; i < edges.is_edge.size(); ++i) {
+    if (edges.is_edge[i]) list.push_back(static_cast<std::uint32_t>(i));
+  }
+  return list;
+}
+
+// Flags (1) in `large` the cells of the 8-connected edge components with at
+// least `min_cells` cells; `large` is width*height and all zero on entry.
+void FlagLargeComponents(const EdgeMap& edges, const std::vector<std::uint32_t>& edge_cells,
+                         int min_cells, std::vector<std::uint8_t>* large) {
+  constexpr std::uint8_t kSeen = 2;
   std::vector<std::uint32_t> component;
-  for (std::size_t seed = 0; seed < edges.is_edge.size(); ++seed) {
-    if (!edges.is_edge[seed] || seen[seed]) continue;
+  for (std::uint32_t seed : edge_cells) {
+    if ((*large)[seed]) continue;
     component.clear();
-    component.push_back(static_cast<std::uint32_t>(seed));
-    seen[seed] = 1;
+    component.push_back(seed);
+    (*large)[seed] = kSeen;
     for (std::size_t head = 0; head < component.size(); ++head) {
       const CellXY c = CellOfIndex(component[head], edges.width);
       for (int k = 0; k < 8; ++k) {
         const int col = c.col + kDcol[k], row = c.row + kDrow[k];
         if (col < 0 || row < 0 || col >= edges.width || row >= edges.height) continue;
         const std::size_t n = static_cast<std::size_t>(row) * edges.width + col;
-        if (edges.is_edge[n] && !seen[n]) {
-          seen[n] = 1;
+        if (edges.is_edge[n] && !(*large)[n]) {
+          (*large)[n] = kSeen;
           component.push_back(static_cast<std::uint32_t>(n));
         }
       }
     }
-    if (static_cast<int>(component.size()) >= min_cells) {
-      for (std::uint32_t index : component) large[index] = 1;
-    }
+    const bool keep = static_cast<int>(component.size()) >= min_cells;
+    for (std::uint32_t index : component) (*large)[index] = keep ? 1 : kSeen;
   }
-  return large;
+  for (std::uint32_t index : edge_cells) {
+    if ((*large)[index] == kSeen) (*large)[index] = 0;
+  }
 }
 
 // Moments of chain prefixes: the fit of any sub-range in O(1).
@@ -162,31 +176,56 @@ struct Group {
   bool alive = true;
 };
 
-// Fits `line` and `segment` of a group from its cells; false when some cell
-// is farther than epsilon from the line.
-bool RefitGroup(Group* group, int width, double epsilon) {
-  group->line = group->moments.Fit();
-  if (group->line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
-  const Eigen::Vector2d& c = group->line.centroid;
-  const Eigen::Vector2d& u = group->line.direction;
-  double t_min = 0, t_max = 0, worst = 0, cost = 0;
-  bool first = true;
-  for (std::uint32_t index : group->cells) {
+// Distances of cells to a line, and the extent of their projections.
+struct LineSweep {
+  double cost = 0;   // summed distance
+  double worst = 0;  // largest distance
+  double t_min = 0, t_max = 0;
+  bool any = false;
+};
+
+// Adds `cells` to `sweep`; false as soon as a cell is farther than epsilon
+// or the summed distance passes max_cost.
+bool SweepCells(const FittedLine& line, const std::vector<std::uint32_t>& cells, int width,
+                double epsilon, double max_cost, LineSweep* sweep) {
+  const Eigen::Vector2d& c = line.centroid;
+  const Eigen::Vector2d& u = line.direction;
+  for (std::uint32_t index : cells) {
     const CellXY cell = CellOfIndex(index, width);
     const double dx = cell.col - c.x(), dy = cell.row - c.y();
     const double d = std::abs(-u.y() * dx + u.x() * dy);
-    if (d > epsilon + kRoundingSlack) return false;
-    worst = std::max(worst, d);
-    cost += d;
+    sweep->cost += d;
+    if (d > epsilon + kRoundingSlack || sweep->cost > max_cost) return false;
+    sweep->worst = std::max(sweep->worst, d);
     const double t = u.x() * dx + u.y() * dy;
-    t_min = first ? t : std::min(t_min, t);
-    t_max = first ? t : std::max(t_max, t);
-    first = false;
+    sweep->t_min = sweep->any ? std::min(sweep->t_min, t) : t;
+    sweep->t_max = sweep->any ? std::max(sweep->t_max, t) : t;
+    sweep->any = true;
   }
-  group->max_residual = worst;
-  group->cost = cost;
-  group->segment = {c.x() + t_min * u.x(), c.y() + t_min * u.y(), c.x() + t_max * u.x(),
-                    c.y() + t_max * u.y()};
+  return true;
+}
+
+void SetLine(Group* group, const FittedLine& line, const LineSweep& sweep) {
+  const Eigen::Vector2d& c = line.centroid;
+  const Eigen::Vector2d& u = line.direction;
+  group->line = line;
+  group->max_residual = sweep.worst;
+  group->cost = sweep.cost;
+  group->segment = {c.x() + sweep.t_min * u.x(), c.y() + sweep.t_min * u.y(),
+                    c.x() + sweep.t_max * u.x(), c.y() + sweep.t_max * u.y()};
+}
+
+// Fits `line` and `segment` of a group from its cells; false when some cell
+// is farther than epsilon from the line.
+bool RefitGroup(Group* group, int width, double epsilon) {
+  const FittedLine line = group->moments.Fit();
+  if (line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
+  LineSweep sweep;
+  if (!SweepCells(line, group->cells, width, epsilon, std::numeric_limits<double>::infinity(),
+                  &sweep)) {
+    return false;
+  }
+  SetLine(group, line, sweep);
   return true;
 }
 
@@ -201,7 +240,7 @@ class GroupTiles {
   }
 
   void Add(std::uint32_t id, const LineSegment& s) {
-    const double length = std::hypot(s.x2 - s.x1, s.y2 - s.y1);
+    const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
     const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
     int last = -1;
     for (int k = 0; k <= steps; ++k) {
@@ -212,16 +251,28 @@ class GroupTiles {
     }
   }
 
-  // Ids registered in the tiles within `radius` of (x, y) (with repeats).
-  void Near(double x, double y, double radius, std::vector<std::uint32_t>* out) const {
+  // Ids of live groups registered in the tiles within `radius` of (x, y)
+  // (an id may repeat across tiles). Dead and repeated entries are dropped
+  // from the buckets on the way, so merged groups do not pile up.
+  void Near(double x, double y, double radius, const std::vector<Group>& groups,
+            std::vector<std::uint32_t>* out) {
     out->clear();
+    if (mark_.size() < groups.size()) mark_.resize(groups.size(), 0);
     const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
     const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
     const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
     const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
     for (int ty = ty0; ty <= ty1; ++ty) {
       for (int tx = tx0; tx <= tx1; ++tx) {
-        const auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        ++stamp_;
+        std::size_t kept = 0;
+        for (std::uint32_t id : bucket) {
+          if (!groups[id].alive || mark_[id] == stamp_) continue;
+          mark_[id] = stamp_;
+          bucket[kept++] = id;
+        }
+        bucket.resize(kept);
         out->insert(out->end(), bucket.begin(), bucket.end());
       }
     }
@@ -238,60 +289,118 @@ class GroupTiles {
   int tile_;
   int tiles_x_ = 1, tiles_y_ = 1;
   std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<std::uint32_t> mark_;  // per group: the last bucket scan that kept it
+  std::uint32_t stamp_ = 0;
 };
 
-double EndGap(const Group& a, const Group& b) {
-  return std::min({PointSegmentDistance(a.segment.x1, a.segment.y1, b.segment),
-                   PointSegmentDistance(a.segment.x2, a.segment.y2, b.segment),
-                   PointSegmentDistance(b.segment.x1, b.segment.y1, a.segment),
-                   PointSegmentDistance(b.segment.x2, b.segment.y2, a.segment)});
+double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
+  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
+  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+  return ex * ex + ey * ey;
 }
 
-// Step 4: merge groups while the bound allows.
+// A necessary condition for a merge, in O(1): a line within epsilon of both
+// extreme cells of a group (length l along its line, residual r) makes an
+// angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
+// so the two groups' directions may differ by at most the sum of the two
+// such angles.
+bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
+  auto max_angle = [epsilon](const Group& g) {
+    const double length = std::sqrt((g.segment.x2 - g.segment.x1) * (g.segment.x2 - g.segment.x1) +
+                                    (g.segment.y2 - g.segment.y1) * (g.segment.y2 - g.segment.y1));
+    if (length <= 0) return std::numbers::pi / 2;
+    return std::asin(std::min(1.0, 2 * (epsilon + g.max_residual) / length));
+  };
+  const double cosine = std::abs(a.line.direction.dot(b.line.direction));
+  const double angle = std::acos(std::min(1.0, cosine));
+  return angle <= max_angle(a) + max_angle(b) + 1e-9;
+}
+
+// True when an end of one segment is within `gap` of the other segment.
+bool EndsWithinGap(const Group& a, const Group& b, double gap) {
+  const double gap_sq = gap * gap;
+  return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x1, b.segment.y1, a.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
+}
+
+// Evaluates merging groups a and b: false when the union breaks the bound
+// or adds more than max_added to the summed distance; otherwise *line and
+// *sweep describe the union's segment.
+bool TryMerge(const Group& a, const Group& b, int width, double epsilon, double max_added,
+              FittedLine* line, LineSweep* sweep) {
+  PointMoments moments = a.moments;
+  moments.Merge(b.moments);
+  if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
+  *line = moments.Fit();
+  *sweep = LineSweep();
+  const double max_cost = a.cost + b.cost + max_added;
+  return SweepCells(*line, a.cells, width, epsilon, max_cost, sweep) &&
+         SweepCells(*line, b.cells, width, epsilon, max_cost, sweep);
+}
+
+// Step 4: merge groups, cheapest merge first (agglomerative), while the
+// bound holds and each merge adds at most max_added_cost to the summed
+// distance. Pairs are candidates when an end of one is within `gap` of the
+// other segment.
 void MergeGroups(std::vector<Group>* groups, int width, int height, double epsilon, double gap,
                  double max_added_cost) {
+  struct Candidate {
+    double added;
+    std::uint32_t a, b;
+    std::uint32_t version_a, version_b;
+    bool operator>(const Candidate& other) const { return added > other.added; }
+  };
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  std::vector<std::uint32_t> version(groups->size(), 0);
   GroupTiles tiles(width, height, 8);
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
-  std::vector<std::uint32_t> work(groups->size());
-  std::iota(work.begin(), work.end(), 0);
-  std::vector<std::uint32_t> near, candidates;
-  std::vector<std::uint32_t> tried_stamp(groups->size(), 0);
+  std::vector<std::uint32_t> near;
+  std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::uint32_t stamp = 0;
-  Group merged;
-  while (!work.empty()) {
-    const std::uint32_t g = work.back();
-    work.pop_back();
-    if (!(*groups)[g].alive) continue;
+  FittedLine line;
+  LineSweep sweep;
+  // Queues every valid merge of g with a group near one of its ends.
+  auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
-    candidates.clear();
-    const LineSegment& s = (*groups)[g].segment;
+    const LineSegment s = (*groups)[g].segment;
     for (int end = 0; end < 2; ++end) {
-      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, &near);
+      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, *groups, &near);
       for (std::uint32_t h : near) {
-        if (h == g || tried_stamp[h] == stamp || !(*groups)[h].alive) continue;
-        tried_stamp[h] = stamp;
-        candidates.push_back(h);
+        if (h == g || seen_stamp[h] == stamp || !(*groups)[h].alive) continue;
+        if (only_higher_ids && h < g) continue;
+        seen_stamp[h] = stamp;
+        const Group& a = (*groups)[g];
+        const Group& b = (*groups)[h];
+        if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
+        if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+        queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
       }
     }
-    for (std::uint32_t h : candidates) {
-      const Group& a = (*groups)[g];
-      const Group& b = (*groups)[h];
-      if (EndGap(a, b) > gap) continue;
-      merged.moments = a.moments;
-      merged.moments.Merge(b.moments);
-      if (merged.moments.Fit().mean_squared_residual > epsilon * epsilon) continue;
-      merged.cells = a.cells;
-      merged.cells.insert(merged.cells.end(), b.cells.begin(), b.cells.end());
-      if (!RefitGroup(&merged, width, epsilon)) continue;
-      if (merged.cost - a.cost - b.cost > max_added_cost) continue;
-      (*groups)[h].alive = false;
-      (*groups)[h].cells.clear();
-      std::swap((*groups)[g], merged);
-      (*groups)[g].alive = true;
-      tiles.Add(g, (*groups)[g].segment);
-      work.push_back(g);
-      break;
+  };
+  for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
+  while (!queue.empty()) {
+    const Candidate c = queue.top();
+    queue.pop();
+    Group& a = (*groups)[c.a];
+    Group& b = (*groups)[c.b];
+    if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
+      continue;
     }
+    if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+    a.moments.Merge(b.moments);
+    a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
+    SetLine(&a, line, sweep);
+    b.alive = false;
+    b.cells = {};
+    ++version[c.b];
+    ++version[c.a];
+    tiles.Add(c.a, a.segment);
+    push_candidates(c.a, false);
   }
 }
 
@@ -409,12 +518,80 @@ void PolishGroupL1(Group* group, int width, double epsilon) {
   group->segment = SegmentFromProjections(best, xs.data(), ys.data(), n);
 }
 
+// Step 7: corners. Two segments whose ends are within `reach` cells of each
+// other and which meet at more than 20 degrees are both extended to the
+// intersection of their lines when that point lies beyond both ends and
+// within `reach` of each, so that decoded walls close at corners. Segments
+// only grow, so no cell gets farther from its segment.
+void JoinCorners(std::vector<LineSegment>* segments, int width, int height, double reach) {
+  constexpr int kTile = 8;
+  const int tiles_x = std::max(1, (width + kTile - 1) / kTile);
+  const int tiles_y = std::max(1, (height + kTile - 1) / kTile);
+  auto tile_of = [&](double x, double y) {
+    const int tx = std::clamp(static_cast<int>(std::floor((x + 0.5) / kTile)), 0, tiles_x - 1);
+    const int ty = std::clamp(static_cast<int>(std::floor((y + 0.5) / kTile)), 0, tiles_y - 1);
+    return std::pair<int, int>(tx, ty);
+  };
+  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)).
+  std::vector<std::vector<std::uint32_t>> ends(static_cast<std::size_t>(tiles_x) * tiles_y);
+  auto end_point = [&](std::uint32_t end) {
+    const LineSegment& s = (*segments)[end / 2];
+    return (end % 2 == 0) ? Eigen::Vector2d(s.x1, s.y1) : Eigen::Vector2d(s.x2, s.y2);
+  };
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx, ty] = tile_of(p.x(), p.y());
+    ends[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(end);
+  }
+  std::vector<std::uint8_t> joined(2 * segments->size(), 0);
+  const double min_sine = std::sin(20.0 * std::numbers::pi / 180.0);
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    if (joined[end]) continue;
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx0, ty0] = tile_of(p.x() - reach, p.y() - reach);
+    const auto [tx1, ty1] = tile_of(p.x() + reach, p.y() + reach);
+    for (int ty = ty0; ty <= ty1 && !joined[end]; ++ty) {
+      for (int tx = tx0; tx <= tx1 && !joined[end]; ++tx) {
+        for (std::uint32_t other : ends[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+          if (other / 2 == end / 2 || joined[other]) continue;
+          const Eigen::Vector2d q = end_point(other);
+          if ((p - q).norm() > reach) continue;
+          // Directions pointing outwards from each end.
+          const Eigen::Vector2d u = p - end_point(end ^ 1u);
+          const Eigen::Vector2d v = q - end_point(other ^ 1u);
+          if (u.norm() <= 0 || v.norm() <= 0) continue;
+          const Eigen::Vector2d du = u.normalized(), dv = v.normalized();
+          const double cross = du.x() * dv.y() - du.y() * dv.x();
+          if (std::abs(cross) < min_sine) continue;
+          // p + a * du = q + b * dv.
+          const Eigen::Vector2d w = q - p;
+          const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
+          const double b = (w.x() * du.y() - w.y() * du.x()) / cross;
+          if (a < 0 || b < 0 || a > reach || b > reach) continue;
+          const Eigen::Vector2d corner = p + a * du;
+          for (std::uint32_t e : {end, other}) {
+            LineSegment& s = (*segments)[e / 2];
+            (e % 2 == 0 ? s.x1 : s.x2) = corner.x();
+            (e % 2 == 0 ? s.y1 : s.y2) = corner.y();
+            joined[e] = 1;
+          }
+          break;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
-std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
-                                                        const std::vector<std::uint8_t>& include) {
+namespace {
+
+// TraceEdgeChains over the cells of `cells` (raster order) whose `open` flag
+// is set; clears the flags as it goes.
+std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
+                                                    const std::vector<std::uint32_t>& cells,
+                                                    std::vector<std::uint8_t>& open) {
   const int width = edges.width, height = edges.height;
-  std::vector<std::uint8_t> open = include;  // 1 = still to trace
   auto untraced_neighbours = [&](int col, int row) {
     int count = 0;
     for (int k = 0; k < 8; ++k) {
@@ -471,16 +648,26 @@ std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
   };
   // Contour ends first, then whatever is left (closed contours).
   for (int pass = 0; pass < 2; ++pass) {
-    for (int row = 0; row < height; ++row) {
-      for (int col = 0; col < width; ++col) {
-        const std::size_t i = static_cast<std::size_t>(row) * width + col;
-        if (!open[i]) continue;
-        if (pass == 0 && untraced_neighbours(col, row) > 1) continue;
-        trace_from(i);
-      }
+    for (std::uint32_t i : cells) {
+      if (!open[i]) continue;
+      const CellXY c = CellOfIndex(i, width);
+      if (pass == 0 && untraced_neighbours(c.col, c.row) > 1) continue;
+      trace_from(i);
     }
   }
   return chains;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
+                                                        const std::vector<std::uint8_t>& include) {
+  std::vector<std::uint8_t> open = include;
+  std::vector<std::uint32_t> cells;
+  for (std::size_t i = 0; i < include.size(); ++i) {
+    if (include[i]) cells.push_back(static_cast<std::uint32_t>(i));
+  }
+  return TraceChains(edges, cells, open);
 }
 
 std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
@@ -516,12 +703,18 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   if (!(epsilon > 0)) return InvalidArgumentError("epsilon must be positive");
   if (!(options.merge_gap_cells >= 0)) return InvalidArgumentError("merge gap must be >= 0");
   const int width = edges.width, height = edges.height;
-  const std::vector<std::uint8_t> chained =
-      CellsOfLargeComponents(edges, std::max(1, options.min_component_cells));
+  const std::vector<std::uint32_t> edge_cells = EdgeCellList(edges);
+  // First the cells to chain (1), then, cleared by the tracing, scratch.
+  std::vector<std::uint8_t> open(edges.is_edge.size(), 0);
+  FlagLargeComponents(edges, edge_cells, std::max(1, options.min_component_cells), &open);
+  std::vector<std::uint32_t> speckle;
+  for (std::uint32_t i : edge_cells) {
+    if (!open[i]) speckle.push_back(i);
+  }
 
   const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
   std::vector<Group> groups;
-  for (const std::vector<std::uint32_t>& chain : TraceEdgeChains(edges, chained)) {
+  for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
     int begin = 0;
     for (int length : SplitChain(chain, width, split_epsilon)) {
       Group group;
@@ -549,12 +742,12 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   for (const Group& group : groups) {
     if (group.alive) result.segments.push_back(group.segment);
   }
+  JoinCorners(&result.segments, width, height, options.corner_join_cells);
   // Speckle not within epsilon of a wall is left to the furniture layer.
   result.left_to_blobs.assign(edges.is_edge.size(), 0);
   SegmentIndex index(&result.segments, width, height);
-  for (std::size_t i = 0; i < edges.is_edge.size(); ++i) {
-    if (!edges.is_edge[i] || chained[i]) continue;
-    const CellXY c = CellOfIndex(static_cast<std::uint32_t>(i), width);
+  for (std::uint32_t i : speckle) {
+    const CellXY c = CellOfIndex(i, width);
     if (index.NearestDistance(c.col, c.row) > epsilon) {
       result.left_to_blobs[i] = 1;
       ++result.cells_left_to_blobs;
