@@ -11,6 +11,12 @@
 // 8-connected A* (octile costs, no corner cutting) on the same safe zone.
 // --crop cuts a W x H window around the centre of the map's free cells.
 // Prints one Markdown table row per map.
+//
+// Round trip (the fidelity goal): an argument ORIGINAL.yaml::DECODED.yaml
+// plans the same N random pairs (map-frame points of safe cells of the
+// original) on both maps and reports how often the two agree on whether a
+// path exists, and how often the decoded map's best length is within 3 % of
+// the original's.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -232,6 +238,55 @@ int BenchMap(const std::string& path, const Args& args) {
   return 0;
 }
 
+int BenchRoundTrip(const std::string& original_path, const std::string& decoded_path,
+                   const Args& args) {
+  StatusOr<Grid> original = LoadRosMap(original_path);
+  StatusOr<Grid> decoded = LoadRosMap(decoded_path);
+  if (!original.ok() || !decoded.ok()) {
+    std::fprintf(stderr, "bench_plan: %s\n",
+                 (!original.ok() ? original.status() : decoded.status()).ToString().c_str());
+    return 1;
+  }
+  StatusOr<Planner> on_original = Planner::Create(args.options, original->meta.resolution);
+  StatusOr<Planner> on_decoded = Planner::Create(args.options, decoded->meta.resolution);
+  if (!on_original.ok() || !on_decoded.ok()) return 1;
+  const SafeZone zone = ComputeSafeZone(*original, on_original->mask());
+  std::vector<CellIndex> safe;
+  for (int r = 0; r < zone.height; ++r) {
+    for (int c = 0; c < zone.width; ++c) {
+      if (zone.IsSafe(c, r)) safe.push_back({c, r});
+    }
+  }
+  if (safe.empty()) return 0;
+  std::mt19937 rng(args.seed);
+  std::uniform_int_distribution<std::size_t> pick(0, safe.size() - 1);
+  int found_original = 0, found_decoded = 0, agree = 0, both = 0, within = 0;
+  double worst = 0.0;
+  for (int k = 0; k < args.pairs; ++k) {
+    const CellIndex s = safe[pick(rng)], g = safe[pick(rng)];
+    PlanRequest q;
+    original->CellToWorld(s.col, s.row, &q.start_x, &q.start_y);
+    original->CellToWorld(g.col, g.row, &q.goal_x, &q.goal_y);
+    StatusOr<PlanResult> a = on_original->Plan(*original, q);
+    StatusOr<PlanResult> b = on_decoded->Plan(*decoded, q);
+    if (!a.ok() || !b.ok()) return 1;
+    found_original += a->found();
+    found_decoded += b->found();
+    agree += a->found() == b->found();
+    if (!a->found() || !b->found()) continue;
+    ++both;
+    const double la = a->trajectories.front().length_m, lb = b->trajectories.front().length_m;
+    const double excess = la > 0 ? std::abs(lb / la - 1.0) : (lb > 0 ? 1.0 : 0.0);
+    worst = std::max(worst, excess);
+    within += excess <= 0.03 + 1e-12;
+  }
+  std::printf("| %s | %d | %d | %d | %d / %d | %d / %d | %.1f %% |\n", original_path.c_str(),
+              args.pairs, found_original, found_decoded, agree, args.pairs, within, both,
+              100.0 * worst);
+  std::fflush(stdout);
+  return 0;
+}
+
 }  // namespace
 }  // namespace linemap
 
@@ -240,8 +295,20 @@ int main(int argc, char** argv) {
   if (!linemap::ParseArgs(argc, argv, &args)) {
     std::fprintf(stderr,
                  "usage: bench_plan [--pairs N] [--seed S] [--crop W,H] [--robot W,L,M] "
-                 "[--dmin A] [--dmax B] MAP.yaml...\n");
+                 "[--dmin A] [--dmax B] MAP.yaml... | ORIGINAL.yaml::DECODED.yaml...\n");
     return 2;
+  }
+  if (args.maps.front().find("::") != std::string::npos) {
+    std::printf(
+        "| original map | pairs | found on original | found on decoded | agree | best length "
+        "within 3 %% | worst length difference |\n|---|---|---|---|---|---|---|\n");
+    int rc = 0;
+    for (const std::string& arg : args.maps) {
+      const std::size_t cut = arg.find("::");
+      if (cut == std::string::npos) return 2;
+      rc |= linemap::BenchRoundTrip(arg.substr(0, cut), arg.substr(cut + 2), args);
+    }
+    return rc;
   }
   std::printf(
       "| map | cells | mask template ms (mean / worst) | move template ms | safe zone ms | wave ms "
