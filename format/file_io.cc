@@ -65,8 +65,7 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
   if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
     ::close(fd);
     return ResourceExhaustedError(Quoted(path) + " is " + std::to_string(st.st_size) +
-                                  " bytes, more than the limit of " +
-                                  std::to_string(max_bytes));
+                                  " bytes, more than the limit of " + std::to_string(max_bytes));
   }
   std::vector<std::uint8_t> bytes;
   bytes.reserve(static_cast<std::size_t>(st.st_size));
@@ -93,24 +92,26 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
   return bytes;
 }
 
-Status WriteFileAtomic(const std::string& path, std::string_view data) {
+namespace {
+
+// Writes `data` to a new temporary file beside `path` and flushes it.
+StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view data) {
   if (path.empty()) return InvalidArgumentError("empty output file name");
   if (IsDirectory(path)) {
     return InvalidArgumentError(Quoted(path) + " is a directory; give a file name");
   }
-  const std::string dir = DirectoryOf(path);
   std::string tmp = path + ".tmp-XXXXXX";
   const int fd = ::mkstemp(tmp.data());
   if (fd < 0) {
-    return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
-                   ErrnoText(errno));
+    return IoError("cannot create a file in " + Quoted(DirectoryOf(path)) + " for " + Quoted(path) +
+                   ": " + ErrnoText(errno));
   }
   Status status = WriteAll(fd, data, path);
   if (status.ok() && ::fsync(fd) != 0) {
     status = IoError("cannot flush " + Quoted(path) + " to disk: " + ErrnoText(errno));
   }
-  // Regular files are created 0600 by mkstemp; give them the usual mode.
   if (status.ok()) {
+    // mkstemp creates files 0600; give the file the mode a plain create would.
     const mode_t mask = ::umask(0);
     ::umask(mask);
     ::fchmod(fd, 0666 & ~mask);
@@ -118,20 +119,50 @@ Status WriteFileAtomic(const std::string& path, std::string_view data) {
   if (::close(fd) != 0 && status.ok()) {
     status = IoError("cannot close " + Quoted(path) + ": " + ErrnoText(errno));
   }
-  if (status.ok() && ::rename(tmp.c_str(), path.c_str()) != 0) {
-    status = IoError("cannot rename the new file onto " + Quoted(path) + ": " + ErrnoText(errno));
-  }
   if (!status.ok()) {
     ::unlink(tmp.c_str());
     return status;
   }
-  // Make the rename itself durable.
+  return tmp;
+}
+
+void SyncDirectory(const std::string& dir) {
   const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
     ::fsync(dir_fd);
     ::close(dir_fd);
   }
+}
+
+}  // namespace
+
+Status WriteFilesAtomic(const std::vector<FileToWrite>& files) {
+  std::vector<std::string> temporaries;
+  auto remove_temporaries = [&temporaries](std::size_t from) {
+    for (std::size_t i = from; i < temporaries.size(); ++i) ::unlink(temporaries[i].c_str());
+  };
+  for (const FileToWrite& file : files) {
+    StatusOr<std::string> tmp = WriteTemporary(file.path, file.data);
+    if (!tmp.ok()) {
+      remove_temporaries(0);
+      return tmp.status();
+    }
+    temporaries.push_back(*tmp);
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (::rename(temporaries[i].c_str(), files[i].path.c_str()) != 0) {
+      const int err = errno;
+      remove_temporaries(i);
+      return IoError("cannot rename the new file onto " + Quoted(files[i].path) + ": " +
+                     ErrnoText(err));
+    }
+  }
+  for (const FileToWrite& file : files) SyncDirectory(DirectoryOf(file.path));
   return Status::Ok();
+}
+
+Status WriteFileAtomic(const std::string& path, std::string_view data) {
+  return WriteFilesAtomic({{path, data}});
 }
 
 }  // namespace linemap

@@ -14,13 +14,22 @@ namespace linemap {
 // Reads all of `path`. Fails with kNotFound for a missing file, kInvalidArgument
 // for a directory, kResourceExhausted when it is larger than `max_bytes`.
 // Messages name the file.
-StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
-                                                  std::uint64_t max_bytes);
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes);
 
 // Writes `data` to a temporary file in the same directory, flushes it to
 // disk (fsync), then renames it over `path` and syncs the directory. On any
 // failure the temporary file is removed and an existing `path` is untouched.
 Status WriteFileAtomic(const std::string& path, std::string_view data);
+
+struct FileToWrite {
+  std::string path;
+  std::string_view data;
+};
+
+// As WriteFileAtomic for several files that belong together (a map YAML and
+// its image): every file is written and flushed under a temporary name before
+// the first rename, so a failure while writing leaves all old files intact.
+Status WriteFilesAtomic(const std::vector<FileToWrite>& files);
 
 // True when `path` names an existing directory.
 bool IsDirectory(const std::string& path);

@@ -109,13 +109,11 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   const bool ascii = bytes[1] == '2';
   PnmHeaderReader header(bytes);
   std::uint64_t width = 0, height = 0, maxval = 0;
-  if (!header.ReadNumber(&width) || !header.ReadNumber(&height) ||
-      !header.ReadNumber(&maxval)) {
+  if (!header.ReadNumber(&width) || !header.ReadNumber(&height) || !header.ReadNumber(&maxval)) {
     return CorruptError(name + ": malformed PGM header");
   }
   if (maxval == 0 || maxval > 65535) {
-    return CorruptError(name + ": PGM maxval " + std::to_string(maxval) +
-                        " is outside 1..65535");
+    return CorruptError(name + ": PGM maxval " + std::to_string(maxval) + " is outside 1..65535");
   }
   LINEMAP_RETURN_IF_ERROR(CheckDimensions(width, height, name, max_cells));
   if (!header.SkipSingleWhitespace()) return CorruptError(name + ": malformed PGM header");
@@ -123,9 +121,8 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   const std::size_t bytes_per_sample = maxval > 255 ? 2 : 1;
   std::size_t pos = header.position();
   if (!ascii && bytes.size() - pos < cells * bytes_per_sample) {
-    return CorruptError(name + ": PGM raster is truncated (" +
-                        std::to_string(bytes.size() - pos) + " bytes for " +
-                        std::to_string(cells) + " pixels)");
+    return CorruptError(name + ": PGM raster is truncated (" + std::to_string(bytes.size() - pos) +
+                        " bytes for " + std::to_string(cells) + " pixels)");
   }
   RawImage image;
   image.width = static_cast<int>(width);
@@ -151,37 +148,31 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   return image;
 }
 
-StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::string& name,
-                             std::uint64_t max_cells) {
-  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) {
-    return CorruptError(name + ": not a PNG image");
-  }
-  PngReadState state{bytes, 0, {}};
-  png_structp png =
-      png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, PngError, PngWarning);
-  if (png == nullptr) return InternalError("libpng could not start");
-  png_infop info = png_create_info_struct(png);
-  if (info == nullptr) {
-    png_destroy_read_struct(&png, nullptr, nullptr);
-    return InternalError("libpng could not start");
-  }
-  RawImage image;
-  // Everything libpng touches below is a POD or already sized, so longjmp
-  // back here is safe; `image` is only resized before the row reads.
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return CorruptError(name + ": bad PNG: " + state.error);
-  }
-  png_set_read_fn(png, &state, PngRead);
+namespace {
+
+// What the libpng pass produces; lives in the caller's frame so that a
+// png_longjmp out of libpng skips no destructor.
+struct PngRaster {
+  png_uint_32 width = 0;
+  png_uint_32 height = 0;
+  int channels = 0;
+  int bit_depth = 0;
+  std::vector<std::uint8_t> bytes;
+  std::vector<png_bytep> rows;
+  Status status;
+};
+
+// All libpng calls. This frame holds no object with a destructor across a
+// libpng call: errors longjmp back to the setjmp below.
+bool ReadPngRaster(png_structp png, png_infop info, const std::string& name,
+                   std::uint64_t max_cells, PngRaster* out) {
+  if (setjmp(png_jmpbuf(png))) return false;
   png_set_user_limits(png, 0x7fffffff, 0x7fffffff);
   png_read_info(png, info);
-  const png_uint_32 width = png_get_image_width(png, info);
-  const png_uint_32 height = png_get_image_height(png, info);
-  Status dims = CheckDimensions(width, height, name, max_cells);
-  if (!dims.ok()) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return dims;
-  }
+  out->width = png_get_image_width(png, info);
+  out->height = png_get_image_height(png, info);
+  out->status = CheckDimensions(out->width, out->height, name, max_cells);
+  if (!out->status.ok()) return true;
   const int color_type = png_get_color_type(png, info);
   const int bit_depth = png_get_bit_depth(png, info);
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
@@ -190,24 +181,49 @@ StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::str
   if (bit_depth == 16) png_set_swap(png);  // native little-endian 16-bit samples
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  const int channels = png_get_channels(png, info);
-  const int out_depth = png_get_bit_depth(png, info);
+  out->channels = png_get_channels(png, info);
+  out->bit_depth = png_get_bit_depth(png, info);
   const std::size_t rowbytes = png_get_rowbytes(png, info);
-  image.width = static_cast<int>(width);
-  image.height = static_cast<int>(height);
-  image.channels = channels;
-  std::vector<std::uint8_t> raster(rowbytes * height);
-  std::vector<png_bytep> rows(height);
-  for (png_uint_32 y = 0; y < height; ++y) rows[y] = raster.data() + y * rowbytes;
-  png_read_image(png, rows.data());
-  png_destroy_read_struct(&png, &info, nullptr);
+  out->bytes.resize(rowbytes * out->height);
+  out->rows.resize(out->height);
+  for (png_uint_32 y = 0; y < out->height; ++y) out->rows[y] = out->bytes.data() + y * rowbytes;
+  png_read_image(png, out->rows.data());
+  return true;
+}
 
-  image.samples.resize(static_cast<std::size_t>(width) * height * channels);
+}  // namespace
+
+StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::string& name,
+                             std::uint64_t max_cells) {
+  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) {
+    return CorruptError(name + ": not a PNG image");
+  }
+  PngReadState state{bytes, 0, {}};
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state, PngError, PngWarning);
+  if (png == nullptr) return InternalError("libpng could not start");
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr) {
+    png_destroy_read_struct(&png, nullptr, nullptr);
+    return InternalError("libpng could not start");
+  }
+  png_set_read_fn(png, &state, PngRead);
+  PngRaster raster;
+  const bool read = ReadPngRaster(png, info, name, max_cells, &raster);
+  png_destroy_read_struct(&png, &info, nullptr);
+  if (!read) return CorruptError(name + ": bad PNG: " + state.error);
+  if (!raster.status.ok()) return raster.status;
+
+  RawImage image;
+  image.width = static_cast<int>(raster.width);
+  image.height = static_cast<int>(raster.height);
+  image.channels = raster.channels;
+  const std::size_t samples_per_row = static_cast<std::size_t>(raster.width) * raster.channels;
+  image.samples.resize(samples_per_row * raster.height);
   std::size_t k = 0;
-  for (png_uint_32 y = 0; y < height; ++y) {
-    const std::uint8_t* row = rows[y];
-    for (std::size_t i = 0; i < static_cast<std::size_t>(width) * channels; ++i) {
-      if (out_depth == 16) {
+  for (png_uint_32 y = 0; y < raster.height; ++y) {
+    const std::uint8_t* row = raster.rows[y];
+    for (std::size_t i = 0; i < samples_per_row; ++i) {
+      if (raster.bit_depth == 16) {
         std::uint16_t v;
         std::memcpy(&v, row + 2 * i, 2);
         image.samples[k++] = v;
@@ -234,8 +250,8 @@ StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cell
 }
 
 std::string EncodePgm(int width, int height, std::span<const std::uint8_t> grey) {
-  std::string out = "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " +
-                    std::to_string(height) + "\n255\n";
+  std::string out =
+      "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
   out.append(reinterpret_cast<const char*>(grey.data()), grey.size());
   return out;
 }

@@ -17,7 +17,7 @@ namespace linemap {
 struct RawImage {
   int width = 0;
   int height = 0;
-  int channels = 0;  // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+  int channels = 0;                    // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
   std::vector<std::uint16_t> samples;  // width * height * channels
 
   bool has_alpha() const { return channels == 2 || channels == 4; }

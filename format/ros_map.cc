@@ -98,15 +98,17 @@ struct YamlMap {
 
 StatusOr<YamlMap> ParseMapYaml(const std::string& yaml_path) {
   const std::string where = Quoted(yaml_path);
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, ReadFileBytes(yaml_path, kMaxYamlBytes));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(yaml_path, kMaxYamlBytes));
   YAML::Node doc;
   try {
     doc = YAML::Load(std::string(bytes.begin(), bytes.end()));
   } catch (const YAML::Exception& e) {
-    return InvalidArgumentError(where + ": not valid YAML (line " + std::to_string(e.mark.line + 1) +
-                                ")");
+    return InvalidArgumentError(where + ": not valid YAML (line " +
+                                std::to_string(e.mark.line + 1) + ")");
   }
-  if (!doc.IsMap()) return InvalidArgumentError(where + ": not a map YAML (expected key: value pairs)");
+  if (!doc.IsMap())
+    return InvalidArgumentError(where + ": not a map YAML (expected key: value pairs)");
 
   YamlMap out;
   if (!doc["image"]) return InvalidArgumentError(where + ": has no 'image' key");
@@ -222,6 +224,7 @@ StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options
     return NotFoundError(Quoted(path) + " names image " + Quoted(yaml.image_path) +
                          ", which does not exist");
   }
+  if (!grid.ok()) return grid.status().WithContext(Quoted(path));
   return grid;
 }
 
@@ -258,8 +261,9 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
   }
   const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
   const std::string image_name = StemOf(yaml_path) + ".pgm";
-  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(image_path, EncodePgm(grid.width(), grid.height(), pixels)));
-  return WriteFileAtomic(yaml_path, YamlText(image_name, meta));
+  const std::string pgm = EncodePgm(grid.width(), grid.height(), pixels);
+  const std::string yaml = YamlText(image_name, meta);
+  return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}});
 }
 
 }  // namespace linemap

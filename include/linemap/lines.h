@@ -67,9 +67,9 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
 // The paper's measures (section 3.1, Eq. 5) over the edge cells.
 struct LineFidelity {
   std::size_t edge_cells = 0;
-  double displ_ave_cells = 0;   // DisPL_ave: mean distance from edge cell centre to nearest segment
-  double displ_max_cells = 0;   // the largest such distance
-  double share_within_1 = 0;    // share of edge cells within 1 cell of a segment
+  double displ_ave_cells = 0;  // DisPL_ave: mean distance from edge cell centre to nearest segment
+  double displ_max_cells = 0;  // the largest such distance
+  double share_within_1 = 0;   // share of edge cells within 1 cell of a segment
 };
 
 LineFidelity MeasureLineFidelity(const EdgeMap& edges, const std::vector<LineSegment>& segments);

@@ -93,9 +93,9 @@ class [[nodiscard]] StatusOr {
 #define LINEMAP_STATUS_CONCAT_(a, b) LINEMAP_STATUS_CONCAT_INNER_(a, b)
 
 // Returns from the current function if `expr` (a Status) is not OK.
-#define LINEMAP_RETURN_IF_ERROR(expr)                  \
-  do {                                                 \
-    ::linemap::Status linemap_status_tmp_ = (expr);    \
+#define LINEMAP_RETURN_IF_ERROR(expr)                          \
+  do {                                                         \
+    ::linemap::Status linemap_status_tmp_ = (expr);            \
     if (!linemap_status_tmp_.ok()) return linemap_status_tmp_; \
   } while (false)
 

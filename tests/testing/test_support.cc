@@ -69,8 +69,8 @@ std::string MakeTempDir(const std::string& tag) {
   static std::atomic<int> counter{0};
   const char* env = std::getenv("LINEMAP_TEST_TMP");
   const fs::path base = env ? fs::path(env) : fs::temp_directory_path() / "linemap-tests";
-  const fs::path dir = base / (tag + "-" + std::to_string(::getpid()) + "-" +
-                               std::to_string(counter++));
+  const fs::path dir =
+      base / (tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();

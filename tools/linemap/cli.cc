@@ -82,9 +82,9 @@ StatusOr<std::vector<double>> ParsedArgs::GetDoubleList(const std::string& name,
     numbers.push_back(v);
   }
   if (static_cast<int>(numbers.size()) < count || static_cast<int>(numbers.size()) > max_count) {
-    const std::string want = count == max_count ? std::to_string(count)
-                                                : std::to_string(count) + " to " +
-                                                      std::to_string(max_count);
+    const std::string want = count == max_count
+                                 ? std::to_string(count)
+                                 : std::to_string(count) + " to " + std::to_string(max_count);
     return InvalidArgumentError(name + " expects " + want + " comma-separated numbers, not '" +
                                 *text + "'");
   }
@@ -121,7 +121,8 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
       *exit_code = kExitOk;
       return std::nullopt;
     }
-    if (arg.size() > 1 && arg[0] == '-' && !(arg.size() > 1 && (std::isdigit(arg[1]) || arg[1] == '.'))) {
+    if (arg.size() > 1 && arg[0] == '-' &&
+        !(arg.size() > 1 && (std::isdigit(arg[1]) || arg[1] == '.'))) {
       std::string name = arg;
       std::optional<std::string> inline_value;
       const std::size_t eq = arg.find('=');
@@ -148,8 +149,10 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
     parsed.positional.push_back(arg);
   }
   const int n = static_cast<int>(parsed.positional.size());
-  if (n < spec.min_positional) return usage_error("missing argument; usage: linemap " + spec.name + " " + spec.synopsis);
-  if (n > spec.max_positional) return usage_error("unexpected argument '" + parsed.positional.back() + "'");
+  if (n < spec.min_positional)
+    return usage_error("missing argument; usage: linemap " + spec.name + " " + spec.synopsis);
+  if (n > spec.max_positional)
+    return usage_error("unexpected argument '" + parsed.positional.back() + "'");
   return parsed;
 }
 

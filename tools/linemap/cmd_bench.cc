@@ -6,7 +6,13 @@
 namespace linemap::cli {
 
 const CommandSpec kBenchSpec = {
-    "bench", "[CORPUS_DIR ...]", "benchmark size, fidelity and speed against PNG and other codecs", "", {}, 0, 1000,
+    "bench",
+    "[CORPUS_DIR ...]",
+    "benchmark size, fidelity and speed against PNG and other codecs",
+    "",
+    {},
+    0,
+    1000,
 };
 
 int RunBench(const std::vector<std::string>& args) {

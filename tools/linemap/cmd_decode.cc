@@ -6,7 +6,8 @@
 namespace linemap::cli {
 
 const CommandSpec kDecodeSpec = {
-    "decode", "IN.lmap -o OUT.yaml", "decode an .lmap file into a ROS map (YAML + PGM)", "", {}, 0, 1000,
+    "decode", "IN.lmap -o OUT.yaml", "decode an .lmap file into a ROS map (YAML + PGM)", "", {}, 0,
+    1000,
 };
 
 int RunDecode(const std::vector<std::string>& args) {

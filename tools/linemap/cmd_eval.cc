@@ -6,7 +6,13 @@
 namespace linemap::cli {
 
 const CommandSpec kEvalSpec = {
-    "eval", "ORIGINAL DECODED_OR_LMAP [--json]", "compare a decoded map with the original, cell by cell", "", {}, 0, 1000,
+    "eval",
+    "ORIGINAL DECODED_OR_LMAP [--json]",
+    "compare a decoded map with the original, cell by cell",
+    "",
+    {},
+    0,
+    1000,
 };
 
 int RunEval(const std::vector<std::string>& args) {

@@ -6,7 +6,13 @@
 namespace linemap::cli {
 
 const CommandSpec kExportSpec = {
-    "export", "IN.lmap -o OUT.csv|OUT.geojson|OUT.svg", "export the layers of an .lmap file as CSV, GeoJSON or SVG", "", {}, 0, 1000,
+    "export",
+    "IN.lmap -o OUT.csv|OUT.geojson|OUT.svg",
+    "export the layers of an .lmap file as CSV, GeoJSON or SVG",
+    "",
+    {},
+    0,
+    1000,
 };
 
 int RunExport(const std::vector<std::string>& args) {

@@ -13,8 +13,9 @@ const CommandSpec kInfoSpec = {
     "print a map's size, resolution, origin and free / occupied / unknown cell counts",
     "MAP is a ROS map YAML (its image: PGM or PNG) or a bare PGM/PNG image, which\n"
     "gets the defaults 0.05 m/cell, origin 0,0,0 and thresholds 0.65 / 0.196.",
-    WithMapLoadOptions({{"--json", "", "print one JSON object with keys width, height, "
-                                       "resolution, origin, free, occupied, unknown"}}),
+    WithMapLoadOptions({{"--json", "",
+                         "print one JSON object with keys width, height, "
+                         "resolution, origin, free, occupied, unknown"}}),
     1,
     1,
 };
@@ -52,8 +53,7 @@ int RunInfo(const std::vector<std::string>& args) {
   std::printf("origin:     x %g m, y %g m, yaw %g rad\n", meta.origin.x, meta.origin.y,
               meta.origin.yaw);
   std::printf("pixels:     mode %s, negate %d, occupied_thresh %g, free_thresh %g\n",
-              MapModeName(meta.mode), meta.negate ? 1 : 0, meta.occupied_thresh,
-              meta.free_thresh);
+              MapModeName(meta.mode), meta.negate ? 1 : 0, meta.occupied_thresh, meta.free_thresh);
   std::printf("free:       %zu (%.1f%%)\n", counts.free, share(counts.free));
   std::printf("occupied:   %zu (%.1f%%)\n", counts.occupied, share(counts.occupied));
   std::printf("unknown:    %zu (%.1f%%)\n", counts.unknown, share(counts.unknown));

@@ -9,7 +9,7 @@
 
 namespace linemap::cli {
 
-#define LINEMAP_DECLARE_COMMAND(Name) \
+#define LINEMAP_DECLARE_COMMAND(Name)     \
   extern const CommandSpec k##Name##Spec; \
   int Run##Name(const std::vector<std::string>& args)
 

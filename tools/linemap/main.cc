@@ -11,9 +11,9 @@ namespace linemap::cli {
 
 const std::vector<CommandEntry>& Commands() {
   static const std::vector<CommandEntry> kCommands = {
-      {&kInfoSpec, RunInfo},     {&kEncodeSpec, RunEncode}, {&kDecodeSpec, RunDecode},
-      {&kLinesSpec, RunLines},   {&kSegmentSpec, RunSegment}, {&kExportSpec, RunExport},
-      {&kEvalSpec, RunEval},     {&kPlanSpec, RunPlan},     {&kBenchSpec, RunBench},
+      {&kInfoSpec, RunInfo},   {&kEncodeSpec, RunEncode},   {&kDecodeSpec, RunDecode},
+      {&kLinesSpec, RunLines}, {&kSegmentSpec, RunSegment}, {&kExportSpec, RunExport},
+      {&kEvalSpec, RunEval},   {&kPlanSpec, RunPlan},       {&kBenchSpec, RunBench},
   };
   return kCommands;
 }

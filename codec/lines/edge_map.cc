@@ -1,0 +1,87 @@
+// Edge map by connected domain: Liu & Zhang, "RM-Line", Appl. Sci. 2022, 12,
+// 9754, section 2.1 (Figure 1).
+//
+// The paper's AuxMap holds 0 (not reached), 1 (free cell of the connected
+// domain) and 2 (edge point: an obstacle cell 4-adjacent to the domain). Its
+// OpenArray is the explicit queue below, so the flood is linear in the number
+// of cells and needs no recursion (a 4000 x 4000 map cannot overflow a stack).
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "linemap/grid.h"
+#include "linemap/lines.h"
+
+namespace linemap {
+namespace {
+
+enum AuxValue : std::uint8_t { kNotReached = 0, kDomain = 1, kEdgePoint = 2 };
+
+// Floods the free cells 4-connected to `seed` (a free cell), marking the
+// domain and its obstacle neighbours in `aux`. `open` is reused scratch space.
+void FloodConnectedDomain(const Grid& grid, std::size_t seed, std::vector<std::uint8_t>* aux,
+                          std::vector<std::uint32_t>* open) {
+  const int width = grid.width();
+  const int height = grid.height();
+  const std::vector<Cell>& cells = grid.cells();
+  open->clear();
+  open->push_back(static_cast<std::uint32_t>(seed));
+  (*aux)[seed] = kDomain;
+  for (std::size_t head = 0; head < open->size(); ++head) {
+    const std::uint32_t index = (*open)[head];
+    const int col = static_cast<int>(index % static_cast<std::uint32_t>(width));
+    const int row = static_cast<int>(index / static_cast<std::uint32_t>(width));
+    // The paper's p_i0..p_i3: (x+1,y), (x-1,y), (x,y+1), (x,y-1).
+    const int neighbour_cols[4] = {col + 1, col - 1, col, col};
+    const int neighbour_rows[4] = {row, row, row + 1, row - 1};
+    for (int k = 0; k < 4; ++k) {
+      const int ncol = neighbour_cols[k];
+      const int nrow = neighbour_rows[k];
+      if (ncol < 0 || nrow < 0 || ncol >= width || nrow >= height) continue;
+      const std::size_t neighbour = grid.Index(ncol, nrow);
+      if (cells[neighbour] == Cell::kFree && (*aux)[neighbour] == kNotReached) {
+        (*aux)[neighbour] = kDomain;
+        open->push_back(static_cast<std::uint32_t>(neighbour));
+      } else if (cells[neighbour] == Cell::kOccupied) {
+        (*aux)[neighbour] = kEdgePoint;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
+  EdgeMap edges;
+  edges.width = grid.width();
+  edges.height = grid.height();
+  std::vector<std::uint8_t> aux(grid.size(), kNotReached);
+  std::vector<std::uint32_t> open;
+  if (robot) {
+    // The robot's cell; a position off the map or not on a free cell floods
+    // nothing (ExtractLines reports that case as an error).
+    const double col = std::floor(robot->col + 0.5);
+    const double row = std::floor(robot->row + 0.5);
+    if (col >= 0 && row >= 0 && col < grid.width() && row < grid.height()) {
+      const std::size_t seed = grid.Index(static_cast<int>(col), static_cast<int>(row));
+      if (grid.cells()[seed] == Cell::kFree) FloodConnectedDomain(grid, seed, &aux, &open);
+    }
+  } else {
+    for (std::size_t seed = 0; seed < grid.size(); ++seed) {
+      if (grid.cells()[seed] == Cell::kFree && aux[seed] == kNotReached) {
+        FloodConnectedDomain(grid, seed, &aux, &open);
+      }
+    }
+  }
+  edges.is_edge.assign(grid.size(), 0);
+  for (std::size_t i = 0; i < aux.size(); ++i) {
+    if (aux[i] == kEdgePoint) {
+      edges.is_edge[i] = 1;
+      ++edges.edge_count;
+    }
+  }
+  return edges;
+}
+
+}  // namespace linemap

@@ -1,0 +1,118 @@
+// Total-least-squares fit for RM-Line (Liu & Zhang 2022, section 2.3,
+// Eq. 3-4) and linemap's extractor.
+//
+// Eq. (3) gives the centroid (mu_x, mu_y) and the second moments mu_xx, mu_yy,
+// mu_xy. Eq. (4) as printed is inconsistent: a = mu_xy / sqrt(mu_xx^2 +
+// mu_yy^2) and b = -mu_xx / sqrt(mu_xx^2 + mu_xy^2) divide by two different
+// norms, so (a, b) is not a unit normal, and the direction it implies,
+// (mu_xx, mu_xy), is one power-iteration step from the x axis rather than the
+// principal axis (for a vertical wall mu_xx = mu_xy = 0 and the line is
+// undefined). We use what the equations evidently intend: the total-least-
+// squares line through the centroid along the eigenvector of the largest
+// eigenvalue of the 2x2 covariance [[mu_xx, mu_xy], [mu_xy, mu_yy]] (Eigen's
+// closed-form self-adjoint solver), which minimises the sum of squared
+// perpendicular distances.
+#include "codec/lines/line_fit.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace linemap::lines_internal {
+
+void PointMoments::Add(double x, double y) {
+  if (!has_reference_) {
+    has_reference_ = true;
+    ref_x_ = x;
+    ref_y_ = y;
+  }
+  const double dx = x - ref_x_;
+  const double dy = y - ref_y_;
+  ++count_;
+  sx_ += dx;
+  sy_ += dy;
+  sxx_ += dx * dx;
+  sxy_ += dx * dy;
+  syy_ += dy * dy;
+}
+
+void PointMoments::Merge(const PointMoments& other) {
+  if (other.count_ == 0) return;
+  if (!has_reference_) {
+    *this = other;
+    return;
+  }
+  // Shift other's sums from its reference point to ours.
+  const double ox = other.ref_x_ - ref_x_;
+  const double oy = other.ref_y_ - ref_y_;
+  const double n = static_cast<double>(other.count_);
+  sxx_ += other.sxx_ + 2 * ox * other.sx_ + n * ox * ox;
+  syy_ += other.syy_ + 2 * oy * other.sy_ + n * oy * oy;
+  sxy_ += other.sxy_ + ox * other.sy_ + oy * other.sx_ + n * ox * oy;
+  sx_ += other.sx_ + n * ox;
+  sy_ += other.sy_ + n * oy;
+  count_ += other.count_;
+}
+
+Eigen::Vector2d PointMoments::Mean() const {
+  if (count_ == 0) return Eigen::Vector2d::Zero();
+  const double n = static_cast<double>(count_);
+  return {ref_x_ + sx_ / n, ref_y_ + sy_ / n};
+}
+
+Eigen::Matrix2d PointMoments::Covariance() const {
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  if (count_ == 0) return cov;
+  const double n = static_cast<double>(count_);
+  const double mx = sx_ / n;
+  const double my = sy_ / n;
+  cov(0, 0) = std::max(0.0, sxx_ / n - mx * mx);  // mu_xx
+  cov(1, 1) = std::max(0.0, syy_ / n - my * my);  // mu_yy
+  cov(0, 1) = cov(1, 0) = sxy_ / n - mx * my;     // mu_xy
+  return cov;
+}
+
+FittedLine PointMoments::Fit() const {
+  FittedLine line;
+  line.centroid = Mean();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
+  solver.computeDirect(Covariance());
+  // Eigenvalues come in increasing order: column 1 is the principal axis.
+  line.direction = solver.eigenvectors().col(1).normalized();
+  line.mean_squared_residual = std::max(0.0, solver.eigenvalues()(0));
+  // A canonical orientation (towards +x, or +y when vertical) makes results
+  // independent of the eigen solver's sign choice.
+  if (line.direction.x() < -1e-12 ||
+      (std::abs(line.direction.x()) <= 1e-12 && line.direction.y() < 0)) {
+    line.direction = -line.direction;
+  }
+  return line;
+}
+
+LineSegment SegmentFromProjections(const FittedLine& line, const double* xs, const double* ys,
+                                   std::size_t n) {
+  double t_min = std::numeric_limits<double>::infinity();
+  double t_max = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = (xs[i] - line.centroid.x()) * line.direction.x() +
+                     (ys[i] - line.centroid.y()) * line.direction.y();
+    t_min = std::min(t_min, t);
+    t_max = std::max(t_max, t);
+  }
+  if (n == 0) t_min = t_max = 0;
+  const Eigen::Vector2d a = line.centroid + t_min * line.direction;
+  const Eigen::Vector2d b = line.centroid + t_max * line.direction;
+  return {a.x(), a.y(), b.x(), b.y()};
+}
+
+double PointSegmentDistance(double x, double y, const LineSegment& s) {
+  const double dx = s.x2 - s.x1;
+  const double dy = s.y2 - s.y1;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
+  return std::hypot(x - (s.x1 + t * dx), y - (s.y1 + t * dy));
+}
+
+}  // namespace linemap::lines_internal

@@ -1,0 +1,84 @@
+#include "codec/lines/segment_index.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "codec/lines/line_fit.h"
+
+namespace linemap::lines_internal {
+
+SegmentIndex::SegmentIndex(const std::vector<LineSegment>* segments, int width, int height,
+                           int tile_cells)
+    : segments_(segments), tile_(std::max(1, tile_cells)) {
+  tiles_x_ = std::max(1, (width + tile_ - 1) / tile_);
+  tiles_y_ = std::max(1, (height + tile_ - 1) / tile_);
+  buckets_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+  seen_stamp_.assign(segments->size(), 0);
+  for (std::size_t id = 0; id < segments->size(); ++id) {
+    AddToTiles(static_cast<std::uint32_t>(id), (*segments)[id]);
+  }
+}
+
+// Tile of a coordinate in cell units; cell c covers [c-0.5, c+0.5), so tile
+// t covers cells [t*tile, (t+1)*tile). Coordinates off the area are clamped
+// to the border tiles, which keeps the ring bound valid (see NearestDistance).
+int SegmentIndex::TileOf(double coordinate, int tiles) const {
+  const double t = std::floor((coordinate + 0.5) / tile_);
+  return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(tiles - 1)));
+}
+
+// A segment goes into every tile whose square it may touch: the tiles of its
+// bounding box whose centre lies within half a tile diagonal of it.
+void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s) {
+  const int tx0 = TileOf(std::min(s.x1, s.x2), tiles_x_);
+  const int tx1 = TileOf(std::max(s.x1, s.x2), tiles_x_);
+  const int ty0 = TileOf(std::min(s.y1, s.y2), tiles_y_);
+  const int ty1 = TileOf(std::max(s.y1, s.y2), tiles_y_);
+  const double half_diagonal = tile_ * std::numbers::sqrt2 / 2;
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const double cx = (tx + 0.5) * tile_ - 0.5;
+      const double cy = (ty + 0.5) * tile_ - 0.5;
+      // Border tiles also own everything clamped into them.
+      const bool border = tx == 0 || ty == 0 || tx == tiles_x_ - 1 || ty == tiles_y_ - 1;
+      if (border || PointSegmentDistance(cx, cy, s) <= half_diagonal + 1e-9) {
+        buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx].push_back(id);
+      }
+    }
+  }
+}
+
+double SegmentIndex::NearestDistance(double x, double y) {
+  double best = std::numeric_limits<double>::infinity();
+  if (segments_->empty()) return best;
+  if (++stamp_ == 0) {  // wrapped: reset the stamps
+    std::fill(seen_stamp_.begin(), seen_stamp_.end(), 0);
+    stamp_ = 1;
+  }
+  const int qx = TileOf(x, tiles_x_);
+  const int qy = TileOf(y, tiles_y_);
+  const int max_ring = std::max(tiles_x_, tiles_y_);
+  for (int ring = 0; ring <= max_ring; ++ring) {
+    for (int ty = qy - ring; ty <= qy + ring; ++ty) {
+      if (ty < 0 || ty >= tiles_y_) continue;
+      const bool full_row = ty == qy - ring || ty == qy + ring;
+      for (int tx = qx - ring; tx <= qx + ring; tx += full_row ? 1 : 2 * std::max(ring, 1)) {
+        if (tx < 0 || tx >= tiles_x_) continue;
+        for (std::uint32_t id : buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx]) {
+          if (seen_stamp_[id] == stamp_) continue;
+          seen_stamp_[id] = stamp_;
+          best = std::min(best, PointSegmentDistance(x, y, (*segments_)[id]));
+        }
+        if (ring == 0) break;
+      }
+    }
+    // Any segment not yet seen touches only tiles outside this ring, which
+    // are at least ring * tile away from a query point inside tile (qx, qy).
+    if (best <= static_cast<double>(ring) * tile_) break;
+  }
+  return best;
+}
+
+}  // namespace linemap::lines_internal

@@ -1,0 +1,42 @@
+// Exact nearest-segment distance queries over many segments: segments are
+// bucketed into square tiles, and a query scans rings of tiles outwards until
+// no unscanned tile can hold a closer segment. Used by MeasureLineFidelity
+// (Eq. 5 over every edge cell) and by linemap's bound check, where a brute
+// force over all pairs would be quadratic.
+#ifndef LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_
+#define LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "linemap/lines.h"
+
+namespace linemap::lines_internal {
+
+class SegmentIndex {
+ public:
+  // `width` x `height` is the area the queries come from (cell units);
+  // segments may extend beyond it. tile_cells: tile side in cells (16 is a
+  // good default for maps of 5 cm cells).
+  SegmentIndex(const std::vector<LineSegment>* segments, int width, int height,
+               int tile_cells = 16);
+
+  // Distance from (x, y) to the nearest segment; +infinity without segments.
+  double NearestDistance(double x, double y);
+
+ private:
+  void AddToTiles(std::uint32_t id, const LineSegment& s);
+  int TileOf(double coordinate, int tiles) const;
+
+  const std::vector<LineSegment>* segments_;
+  int tile_ = 16;
+  int tiles_x_ = 1;
+  int tiles_y_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;  // tiles_x_ * tiles_y_
+  std::vector<std::uint32_t> seen_stamp_;            // per segment: last query that saw it
+  std::uint32_t stamp_ = 0;
+};
+
+}  // namespace linemap::lines_internal
+
+#endif  // LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_

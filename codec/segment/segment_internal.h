@@ -1,0 +1,69 @@
+// Internal pieces of SegmentMap() (codec/segment/*.cc), one room at a time,
+// in a crop of the grid around the room's free component.
+#ifndef LINEMAP_CODEC_SEGMENT_SEGMENT_INTERNAL_H_
+#define LINEMAP_CODEC_SEGMENT_SEGMENT_INTERNAL_H_
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "linemap/segmentation.h"
+
+namespace linemap::segment_internal {
+
+// The paper's M_r for one room, in crop-local cells (local (0,0) is grid
+// cell (col0, row0); the crop may reach past the grid, such cells are
+// virgin).
+struct RoomLayout {
+  int col0 = 0;
+  int row0 = 0;
+  BinaryMask in_grid;              // 1 where the crop cell is a grid cell
+  BinaryMask free;                 // mark 3: the room's free component
+  BinaryMask holes;                // mark 2: enclosed by the free space (furniture, pillars)
+  BinaryMask walls;                // mark 1: occupied cells next to the free space
+  BinaryMask room;                 // M_H: free | holes | walls
+  std::optional<CellIndex> robot;  // local cell, when given
+  std::size_t free_cells = 0;
+};
+
+// `margin` cells are added around the component's box on every side.
+RoomLayout BuildRoomLayout(const Grid& grid, const Labeling& free_labels, std::int32_t label,
+                           int margin, std::optional<CellIndex> robot);
+
+// Stage 2: blobs from the occupied cells of layout.holes, in grid cells.
+// Cells already in `claimed` (grid-sized) are skipped; new ones are added.
+std::vector<FurnitureBlob> ExtractBlobs(const Grid& grid, const RoomLayout& layout,
+                                        const std::optional<StructuringElement>& closing,
+                                        std::vector<std::uint8_t>* claimed);
+
+// Stage 1: D = room dilated by each of `dilate`, E = D eroded by each of
+// `erode`, band = D \ E (the heavy border). D is kept inside the grid.
+struct HeavyBorder {
+  BinaryMask dilated;
+  BinaryMask eroded;
+  BinaryMask band;
+};
+HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
+                               const std::vector<StructuringElement>& dilate,
+                               const std::vector<StructuringElement>& erode);
+
+// Stages 3 and 4: the room's closed chain (crop-local cells).
+struct BorderClosure {
+  std::vector<CellIndex> chain;
+  bool closed_by_lee = false;
+  int border_components = 0;
+  int ring_components = 0;
+  double border_ms = 0;
+  double lee_ms = 0;
+};
+BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& border,
+                              int max_cut_rows);
+
+// Even-odd test of the point (col, row) against the polygon through the
+// chain's cell centres (half-open rule on rows, so vertices on the scan row
+// are counted once).
+bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row);
+
+}  // namespace linemap::segment_internal
+
+#endif  // LINEMAP_CODEC_SEGMENT_SEGMENT_INTERNAL_H_

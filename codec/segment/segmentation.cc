@@ -1,0 +1,193 @@
+// SegmentMap(): the rooms of a grid, each run through the paper's stages
+// (Kosteley et al., section 3.2 A-C; stage numbers as in its Table 1), and
+// the polygon fill used to measure what a room chain encloses.
+#include "linemap/segmentation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "codec/segment/segment_internal.h"
+
+namespace linemap {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double MsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+Status ValidateOptions(const SegmentationOptions& options) {
+  for (const auto* list : {&options.border_dilate, &options.border_erode}) {
+    for (const StructuringElement& element : *list) {
+      if (!element.Valid()) {
+        return InvalidArgumentError("structuring elements need odd width and height");
+      }
+    }
+  }
+  if (options.furniture_closing && !options.furniture_closing->Valid()) {
+    return InvalidArgumentError("furniture_closing needs odd width and height");
+  }
+  if (options.max_cut_rows < 0) return InvalidArgumentError("max_cut_rows must be >= 0");
+  return Status::Ok();
+}
+
+int HalfExtent(const std::vector<StructuringElement>& elements) {
+  int sum = 0;
+  for (const StructuringElement& element : elements) {
+    sum += std::max(element.width, element.height) / 2;
+  }
+  return sum;
+}
+
+// The free component holding the robot (the nearest free cell within 3
+// cells when its own cell is not free).
+StatusOr<std::int32_t> RobotRoom(const Grid& grid, const Labeling& free_labels, CellPoint robot,
+                                 CellIndex* cell) {
+  const int col = static_cast<int>(std::lround(robot.col));
+  const int row = static_cast<int>(std::lround(robot.row));
+  if (!grid.Contains(col, row)) {
+    return InvalidArgumentError("robot position (" + std::to_string(col) + ", " +
+                                std::to_string(row) + ") is outside the map");
+  }
+  for (int radius = 0; radius <= 3; ++radius) {
+    for (int dr = -radius; dr <= radius; ++dr) {
+      for (int dc = -radius; dc <= radius; ++dc) {
+        if (std::max(std::abs(dr), std::abs(dc)) != radius) continue;
+        const std::int32_t label = free_labels.get(col + dc, row + dr);
+        if (label > 0) {
+          *cell = {col + dc, row + dr};
+          return label;
+        }
+      }
+    }
+  }
+  return InvalidArgumentError("robot position (" + std::to_string(col) + ", " +
+                              std::to_string(row) + ") is not in free space");
+}
+
+std::vector<std::int32_t> RoomLabels(const Labeling& free_labels, std::size_t min_cells) {
+  std::vector<std::int32_t> labels;
+  for (std::size_t k = 0; k < free_labels.components.size(); ++k) {
+    if (free_labels.components[k].cell_count >= min_cells) {
+      labels.push_back(static_cast<std::int32_t>(k + 1));
+    }
+  }
+  if (labels.empty() && !free_labels.components.empty()) {
+    labels.push_back(1);
+    for (std::size_t k = 1; k < free_labels.components.size(); ++k) {
+      if (free_labels.components[k].cell_count > free_labels.components[labels[0] - 1].cell_count) {
+        labels[0] = static_cast<std::int32_t>(k + 1);
+      }
+    }
+  }
+  std::stable_sort(labels.begin(), labels.end(), [&](std::int32_t a, std::int32_t b) {
+    return free_labels.components[a - 1].cell_count > free_labels.components[b - 1].cell_count;
+  });
+  return labels;
+}
+
+std::size_t CountEnclosedFree(const segment_internal::RoomLayout& layout,
+                              const std::vector<CellIndex>& local_chain) {
+  const BinaryMask fill = FillChainPolygon(local_chain, layout.free.width, layout.free.height);
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < fill.bits.size(); ++i) count += fill.bits[i] && layout.free.bits[i];
+  return count;
+}
+
+}  // namespace
+
+BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int height) {
+  BinaryMask fill(width, height);
+  const std::size_t n = chain.size();
+  std::vector<std::vector<double>> crossings(static_cast<std::size_t>(std::max(height, 0)));
+  for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+    const CellIndex& a = chain[i];
+    const CellIndex& b = chain[j];
+    if (a.row == b.row) continue;
+    // Rows y with (a.row > y) != (b.row > y): y in [min, max).
+    const int lo = std::max(std::min(a.row, b.row), 0);
+    const int hi = std::min(std::max(a.row, b.row), height);
+    for (int y = lo; y < hi; ++y) {
+      crossings[y].push_back(a.col +
+                             (y - a.row) * (b.col - a.col) / static_cast<double>(b.row - a.row));
+    }
+  }
+  for (int y = 0; y < height; ++y) {
+    std::vector<double>& xs = crossings[y];
+    std::sort(xs.begin(), xs.end());
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const int c0 = std::max(static_cast<int>(std::ceil(xs[k])), 0);
+      const int c1 = std::min(static_cast<int>(std::floor(xs[k + 1])), width - 1);
+      for (int c = c0; c <= c1; ++c) fill.set(c, y, true);
+    }
+  }
+  for (const CellIndex& cell : chain) {
+    if (fill.Contains(cell.col, cell.row)) fill.set(cell.col, cell.row, true);
+  }
+  return fill;
+}
+
+StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& options) {
+  LINEMAP_RETURN_IF_ERROR(ValidateOptions(options));
+  Segmentation result;
+  const auto total_start = Clock::now();
+  auto start = Clock::now();
+  BinaryMask free(grid.width(), grid.height());
+  for (std::size_t i = 0; i < grid.size(); ++i) free.bits[i] = grid.cells()[i] == Cell::kFree;
+  const Labeling free_labels = LabelComponents(free, Connectivity::kFour);
+  std::vector<std::int32_t> room_labels;
+  std::optional<CellIndex> robot_cell;
+  if (options.robot && !grid.empty()) {
+    CellIndex cell;
+    LINEMAP_ASSIGN_OR_RETURN(const std::int32_t label,
+                             RobotRoom(grid, free_labels, *options.robot, &cell));
+    room_labels.push_back(label);
+    robot_cell = cell;
+  } else {
+    room_labels = RoomLabels(free_labels, options.min_room_cells);
+  }
+  result.timings.room_layout_ms += MsSince(start);
+
+  const int margin = HalfExtent(options.border_dilate) + 2;
+  std::vector<std::uint8_t> claimed(grid.size(), 0);
+  for (const std::int32_t label : room_labels) {
+    start = Clock::now();
+    const segment_internal::RoomLayout layout =
+        segment_internal::BuildRoomLayout(grid, free_labels, label, margin, robot_cell);
+    result.timings.room_layout_ms += MsSince(start);
+
+    start = Clock::now();
+    const segment_internal::HeavyBorder border =
+        segment_internal::ComputeHeavyBorder(layout, options.border_dilate, options.border_erode);
+    result.timings.morphology_ms += MsSince(start);
+
+    start = Clock::now();
+    std::vector<FurnitureBlob> blobs =
+        segment_internal::ExtractBlobs(grid, layout, options.furniture_closing, &claimed);
+    result.timings.furniture_ms += MsSince(start);
+    for (FurnitureBlob& blob : blobs) result.blobs.push_back(std::move(blob));
+
+    segment_internal::BorderClosure closure =
+        segment_internal::CloseRoomBorder(layout, border, options.max_cut_rows);
+    result.timings.border_ms += closure.border_ms;
+    result.timings.lee_ms += closure.lee_ms;
+
+    RoomBorder room;
+    room.free_cells = layout.free_cells;
+    room.enclosed_free_cells = CountEnclosedFree(layout, closure.chain);
+    room.closed_by_lee = closure.closed_by_lee;
+    room.border_components = closure.border_components;
+    room.ring_components = closure.ring_components;
+    room.chain.reserve(closure.chain.size());
+    for (const CellIndex& cell : closure.chain) {
+      room.chain.push_back({cell.col + layout.col0, cell.row + layout.row0});
+    }
+    result.rooms.push_back(std::move(room));
+  }
+  result.timings.total_ms = MsSince(total_start);
+  return result;
+}
+
+}  // namespace linemap

@@ -1,0 +1,165 @@
+// Map YAML parsing, writing maps as map_saver does, and the round trip over
+// the bundled maps and every map in ../shared/maps.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+
+#include "format/pixel_classifier.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::FileExists;
+using testing::ListDir;
+using testing::MakeTempDir;
+using testing::ReadFile;
+using testing::WriteFile;
+
+Grid RandomGrid(int width, int height, unsigned seed) {
+  Grid grid(width, height);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> state(0, 2);
+  for (Cell& c : grid.mutable_cells()) c = static_cast<Cell>(state(rng));
+  return grid;
+}
+
+TEST(RosMapTest, SaveWritesMapSaverTrinaryPgm) {
+  const std::string dir = MakeTempDir("ros");
+  Grid grid(3, 1, Cell::kUnknown);
+  grid.set(0, 0, Cell::kOccupied);
+  grid.set(1, 0, Cell::kFree);
+  ASSERT_TRUE(SaveRosMap(dir + "/out.yaml", grid).ok());
+  const std::string pgm = ReadFile(dir + "/out.pgm");
+  ASSERT_GE(pgm.size(), 3u);
+  EXPECT_EQ(pgm.substr(0, 2), "P5");
+  EXPECT_EQ(pgm.substr(pgm.size() - 3), std::string("\x00\xfe\xcd", 3));
+  const std::string yaml = ReadFile(dir + "/out.yaml");
+  EXPECT_NE(yaml.find("image: out.pgm"), std::string::npos);
+  EXPECT_NE(yaml.find("mode: trinary"), std::string::npos);
+  EXPECT_NE(yaml.find("negate: 0"), std::string::npos);
+  // Only the two files: no temporary left behind.
+  EXPECT_EQ(ListDir(dir), (std::vector<std::string>{"out.pgm", "out.yaml"}));
+}
+
+TEST(RosMapTest, RandomGridsRoundTripWithMetadata) {
+  const std::string dir = MakeTempDir("ros");
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    Grid grid = RandomGrid(17 + seed, 9 + 2 * seed, seed);
+    grid.meta.resolution = 0.037 * seed;
+    grid.meta.origin = {-54.949999999999996, 1.0 / 3.0, 0.1 * seed};
+    grid.meta.free_thresh = 0.1 + 0.02 * seed;
+    grid.meta.occupied_thresh = 0.7;
+    grid.meta.negate = seed % 2 == 0;
+    const std::string path = dir + "/m" + std::to_string(seed) + ".yaml";
+    ASSERT_TRUE(SaveRosMap(path, grid).ok());
+    StatusOr<Grid> back = LoadRosMap(path);
+    ASSERT_TRUE(back.ok()) << back.status().message();
+    EXPECT_EQ(back->cells(), grid.cells()) << "seed " << seed;
+    EXPECT_EQ(back->meta, grid.meta) << "seed " << seed;
+  }
+}
+
+TEST(RosMapTest, ThresholdsThatCannotHoldUnknownFallBackToMapSaverDefaults) {
+  // free_thresh above occupied_thresh leaves no grey value that reads unknown.
+  const std::string dir = MakeTempDir("ros");
+  Grid grid = RandomGrid(8, 8, 42);
+  grid.meta.free_thresh = 0.9;
+  grid.meta.occupied_thresh = 0.1;
+  ASSERT_TRUE(SaveRosMap(dir + "/m.yaml", grid).ok());
+  StatusOr<Grid> back = LoadRosMap(dir + "/m.yaml");
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back->cells(), grid.cells());
+  EXPECT_DOUBLE_EQ(back->meta.free_thresh, kDefaultFreeThresh);
+}
+
+TEST(RosMapTest, YamlErrorsNameTheFile) {
+  const std::string dir = MakeTempDir("ros");
+  WriteFile(dir + "/img.pgm", std::string("P5 1 1 255\n") + std::string("\x00", 1));
+  struct Case {
+    const char* name;
+    const char* text;
+    StatusCode code;
+  };
+  const Case cases[] = {
+      {"no_image.yaml", "resolution: 0.05\n", StatusCode::kInvalidArgument},
+      {"negative_resolution.yaml", "image: img.pgm\nresolution: -0.05\n",
+       StatusCode::kInvalidArgument},
+      {"zero_resolution.yaml", "image: img.pgm\nresolution: 0\n", StatusCode::kInvalidArgument},
+      {"text_resolution.yaml", "image: img.pgm\nresolution: fine\n", StatusCode::kInvalidArgument},
+      {"short_origin.yaml", "image: img.pgm\nresolution: 0.05\norigin: [1, 2]\n",
+       StatusCode::kInvalidArgument},
+      {"bad_mode.yaml", "image: img.pgm\nresolution: 0.05\nmode: fancy\n",
+       StatusCode::kInvalidArgument},
+      {"bad_thresh.yaml", "image: img.pgm\nresolution: 0.05\nfree_thresh: 1.5\n",
+       StatusCode::kInvalidArgument},
+      {"not_a_map.yaml", "- just\n- a list\n", StatusCode::kInvalidArgument},
+      {"broken.yaml", "image: [unclosed\n", StatusCode::kInvalidArgument},
+      {"missing_image.yaml", "image: nothere.pgm\nresolution: 0.05\n", StatusCode::kNotFound},
+  };
+  for (const Case& c : cases) {
+    WriteFile(dir + "/" + c.name, c.text);
+    StatusOr<Grid> grid = LoadRosMap(dir + "/" + c.name);
+    ASSERT_FALSE(grid.ok()) << c.name;
+    EXPECT_EQ(grid.status().code(), c.code) << c.name << ": " << grid.status().message();
+    EXPECT_NE(grid.status().message().find(c.name), std::string::npos) << grid.status().message();
+  }
+  EXPECT_EQ(LoadRosMap(dir + "/absent.yaml").status().code(), StatusCode::kNotFound);
+  EXPECT_EQ(LoadRosMap(dir).status().code(), StatusCode::kInvalidArgument);
+}
+
+TEST(RosMapTest, FailedSaveLeavesExistingFilesIntact) {
+  const std::string dir = MakeTempDir("ros");
+  WriteFile(dir + "/keep.yaml", "old yaml");
+  EXPECT_FALSE(SaveRosMap(dir + "/keep.yaml", Grid()).ok());  // empty grid
+  EXPECT_EQ(ReadFile(dir + "/keep.yaml"), "old yaml");
+  EXPECT_FALSE(SaveRosMap(dir + "/missing_dir/x.yaml", RandomGrid(2, 2, 1)).ok());
+  EXPECT_FALSE(FileExists(dir + "/missing_dir"));
+}
+
+void ExpectRoundTrip(const std::string& yaml) {
+  SCOPED_TRACE(yaml);
+  StatusOr<Grid> grid = LoadRosMap(yaml);
+  ASSERT_TRUE(grid.ok()) << grid.status().message();
+  const std::string dir = MakeTempDir("rt");
+  ASSERT_TRUE(SaveRosMap(dir + "/copy.yaml", *grid).ok());
+  StatusOr<Grid> back = LoadRosMap(dir + "/copy.yaml");
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back->width(), grid->width());
+  EXPECT_EQ(back->height(), grid->height());
+  EXPECT_TRUE(back->cells() == grid->cells());
+  EXPECT_EQ(back->meta, grid->meta);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RosMapTest, BundledMapsRoundTrip) {
+  const auto yamls = testing::FindYamlFiles(testing::BundledMapsDir());
+  ASSERT_GE(yamls.size(), 3u);
+  for (const std::string& yaml : yamls) ExpectRoundTrip(yaml);
+}
+
+TEST(RosMapTest, SharedMapsLoadAndRoundTrip) {
+  const std::string shared = testing::SharedMapsDir();
+  if (shared.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  int loaded = 0;
+  for (const std::string& yaml : testing::FindYamlFiles(shared)) {
+    if (yaml.find("empty_room.yaml") != std::string::npos) {
+      // Names empty.pgm, which is not there (as in its source repository).
+      EXPECT_EQ(LoadRosMap(yaml).status().code(), StatusCode::kNotFound);
+      continue;
+    }
+    ExpectRoundTrip(yaml);
+    ++loaded;
+  }
+  for (const std::string& image : testing::FindBareImages(shared)) {
+    StatusOr<Grid> grid = LoadRosMap(image);
+    ASSERT_TRUE(grid.ok()) << grid.status().message();
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 24);
+}
+
+}  // namespace
+}  // namespace linemap

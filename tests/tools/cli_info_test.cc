@@ -1,0 +1,103 @@
+// The built `linemap` binary: info, --help, --version, and bad input.
+#include <gtest/gtest.h>
+
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::CliResult;
+using testing::ListDir;
+using testing::MakeTempDir;
+using testing::RunCli;
+using testing::WriteFile;
+
+TEST(CliInfoTest, JsonHasTheDocumentedKeys) {
+  const std::string dir = MakeTempDir("cli");
+  // 3 x 2 map: top row O F U, bottom row F F O.
+  WriteFile(dir + "/m.pgm",
+            std::string("P5 3 2 255\n") + std::string("\x00\xfe\xcd\xfe\xfe\x00", 6));
+  WriteFile(dir + "/m.yaml",
+            "image: m.pgm\nresolution: 0.1\norigin: [1.5, -2.0, 0.0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const CliResult r = RunCli({"info", dir + "/m.yaml", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"width\":3,\"height\":2,\"resolution\":0.1,\"origin\":[1.5,-2,0],"
+                       "\"free\":3,\"occupied\":2,\"unknown\":1"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(CliInfoTest, TextOutputOnABundledMap) {
+  const CliResult r = RunCli({"info", testing::BundledMapsDir() + "/navtut/lse_arena.yaml"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("80 x 60 cells"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("resolution: 0.05 m/cell"), std::string::npos) << r.out;
+}
+
+TEST(CliInfoTest, BareImageTakesCommandLineOverrides) {
+  const std::string dir = MakeTempDir("cli");
+  WriteFile(dir + "/m.pgm", std::string("P5 2 1 255\n") + std::string("\x00\xcd", 2));
+  const CliResult r = RunCli({"info", dir + "/m.pgm", "--json", "--resolution", "0.2", "--origin",
+                              "1,2,0.5", "--free-thresh", "0.25"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"resolution\":0.2,\"origin\":[1,2,0.5],\"free\":1,\"occupied\":1,"
+                       "\"unknown\":0"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(CliInfoTest, HelpAndVersion) {
+  CliResult r = RunCli({"--version"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind("linemap ", 0), 0u);
+  r = RunCli({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* command :
+       {"info", "encode", "decode", "lines", "segment", "export", "eval", "plan", "bench"}) {
+    EXPECT_NE(r.out.find(std::string("  ") + command), std::string::npos) << command;
+    const CliResult help = RunCli({command, "--help"});
+    EXPECT_EQ(help.exit_code, 0) << command;
+    EXPECT_NE(help.out.find(std::string("Usage: linemap ") + command), std::string::npos);
+  }
+  EXPECT_EQ(RunCli({}).exit_code, 2);
+  EXPECT_EQ(RunCli({"frobnicate"}).exit_code, 2);
+  EXPECT_EQ(RunCli({"info"}).exit_code, 2);
+  EXPECT_EQ(RunCli({"info", "a.yaml", "--no-such-option"}).exit_code, 2);
+  EXPECT_EQ(RunCli({"info", "a.yaml", "--resolution"}).exit_code, 2);
+}
+
+TEST(CliInfoTest, BadInputGivesOneLineNamingTheFileAndExitTwo) {
+  const std::string dir = MakeTempDir("cli");
+  WriteFile(dir + "/img.pgm", std::string("P5 1 1 255\n") + std::string("\x00", 1));
+  WriteFile(dir + "/no_image.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n");
+  WriteFile(dir + "/negative.yaml", "image: img.pgm\nresolution: -0.05\n");
+  WriteFile(dir + "/empty_room.yaml", "image: empty.pgm\nresolution: 0.1\n");
+  WriteFile(dir + "/notamap.png", "this is text, not an image");
+  WriteFile(dir + "/empty.pgm", "");
+  const std::vector<std::string> before = ListDir(dir);
+  const std::vector<std::string> bad = {"missing.yaml",    "no_image.yaml", "negative.yaml",
+                                        "empty_room.yaml", "notamap.png",   "empty.pgm"};
+  for (const std::string& name : bad) {
+    const CliResult r = RunCli({"info", dir + "/" + name});
+    EXPECT_EQ(r.exit_code, 2) << name;
+    EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+  const CliResult r = RunCli({"info", dir});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("directory"), std::string::npos) << r.err;
+  EXPECT_EQ(ListDir(dir), before);
+}
+
+TEST(CliInfoTest, SharedEmptyRoomYamlNamesAMissingImage) {
+  const std::string shared = testing::SharedMapsDir();
+  if (shared.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  const CliResult r = RunCli({"info", shared + "/nav2/empty_room.yaml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("empty.pgm"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace linemap
