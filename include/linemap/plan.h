@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "linemap/cells.h"
 #include "linemap/grid.h"
-#include "linemap/segmentation.h"  // CellIndex
 #include "linemap/status.h"
 
 namespace linemap {
