@@ -72,7 +72,9 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
       return InflateBytes(payload + at, size - at, static_cast<std::size_t>(*inflated));
     }
     case static_cast<std::uint8_t>(PayloadCoder::kDraco):
-      return UnsupportedError("payload coder 2 (Draco) is not supported by this decoder");
+      // Only SEGS bodies may be Draco-coded; the caller checks.
+      *coder = PayloadCoder::kDraco;
+      return std::vector<std::uint8_t>(payload + 1, payload + size);
     default:
       return CorruptError("unknown payload coder " + std::to_string(kind));
   }

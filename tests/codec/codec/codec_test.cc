@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/draco_segments.h"
 #include "format/container.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
@@ -279,6 +280,46 @@ TEST(CompareGridsTest, RecallPrecisionAndUnknownTurnedFree) {
   EXPECT_EQ(m.unknown_turned_free, 1u);
   EXPECT_DOUBLE_EQ(m.unknown_turned_free_share, 1.0);
   EXPECT_DOUBLE_EQ(m.free_iou, 0.5);
+}
+
+}  // namespace
+}  // namespace linemap
+
+namespace linemap {
+namespace {
+
+// A SEGS chunk may be Draco-coded (payload coder 2); it must decode to the
+// same grid as the varint form.
+TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
+  const std::vector<LatticeSegment> segments = {
+      {{0, 0}, {9, 0}}, {{2, 1}, {2, 7}}, {{8, 3}, {1, 6}}, {{5, 5}, {9, 9}}};
+  HeaderFields header;
+  header.width = 10;
+  header.height = 10;
+  auto file = [&](const std::vector<std::uint8_t>& segs_payload) {
+    ContainerWriter writer;
+    writer.AddChunk("LMHD", WriteHeader(header));
+    writer.AddChunk("SEGS", segs_payload);
+    return writer.Finish();
+  };
+  std::vector<LatticeSegment> canonical = segments;
+  CanonicalizeSegments(&canonical);
+  std::vector<std::uint8_t> draco = {static_cast<std::uint8_t>(PayloadCoder::kDraco)};
+  const std::vector<std::uint8_t> body = EncodeSegmentsDraco(canonical);
+  ASSERT_FALSE(body.empty());
+  draco.insert(draco.end(), body.begin(), body.end());
+  auto from_draco = DecodeLmapContents(file(draco));
+  ASSERT_TRUE(from_draco.ok()) << from_draco.status().ToString();
+  auto from_varint = DecodeLmapContents(file(WrapPayload(WriteSegments(canonical), false)));
+  ASSERT_TRUE(from_varint.ok());
+  EXPECT_EQ(from_draco->segments, canonical);
+  EXPECT_EQ(from_draco->grid, from_varint->grid);
+  EXPECT_EQ(from_draco->chunks[1].coder, "draco");
+  // Draco is accepted for SEGS only.
+  ContainerWriter writer;
+  writer.AddChunk("LMHD", WriteHeader(header));
+  writer.AddChunk("OCCP", draco);
+  EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
 }
 
 }  // namespace
