@@ -72,7 +72,9 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
       return InflateBytes(payload + at, size - at, static_cast<std::size_t>(*inflated));
     }
     case static_cast<std::uint8_t>(PayloadCoder::kDraco):
-      return UnsupportedError("payload coder 2 (Draco) is not supported by this decoder");
+      // Only SEGS bodies may be Draco-coded; the caller checks.
+      *coder = PayloadCoder::kDraco;
+      return std::vector<std::uint8_t>(payload + 1, payload + size);
     default:
       return CorruptError("unknown payload coder " + std::to_string(kind));
   }
@@ -87,7 +89,8 @@ enum HeaderFlag : std::uint8_t {
   kFlagLossless = 2,
   kFlagThresholds = 4,  // occupied and free thresholds follow
   kFlagYaw = 8,         // origin yaw follows (else 0)
-  kFlagsKnown = 15,
+  kFlagOrigin = 16,     // origin x and y follow (else both +0.0)
+  kFlagsKnown = 31,
 };
 
 std::vector<std::uint8_t> WriteHeader(const HeaderFields& h) {
@@ -100,14 +103,19 @@ std::vector<std::uint8_t> WriteHeader(const HeaderFields& h) {
   if (h.lossless) flags |= kFlagLossless;
   if (thresholds) flags |= kFlagThresholds;
   if (yaw != 0) flags |= kFlagYaw;
+  const std::uint64_t ox = std::bit_cast<std::uint64_t>(h.meta.origin.x);
+  const std::uint64_t oy = std::bit_cast<std::uint64_t>(h.meta.origin.y);
+  if (ox != 0 || oy != 0) flags |= kFlagOrigin;
   ByteWriter w;
   w.PutVarint(static_cast<std::uint64_t>(h.width));
   w.PutVarint(static_cast<std::uint64_t>(h.height));
   w.PutU8(flags);
   w.PutU8(static_cast<std::uint8_t>(h.meta.mode));
   w.PutU64(std::bit_cast<std::uint64_t>(h.meta.resolution));
-  w.PutU64(std::bit_cast<std::uint64_t>(h.meta.origin.x));
-  w.PutU64(std::bit_cast<std::uint64_t>(h.meta.origin.y));
+  if (flags & kFlagOrigin) {
+    w.PutU64(ox);
+    w.PutU64(oy);
+  }
   if (flags & kFlagYaw) w.PutU64(yaw);
   if (flags & kFlagThresholds) {
     w.PutU64(occ);
@@ -133,9 +141,10 @@ StatusOr<HeaderFields> ReadHeader(const std::uint8_t* data, std::size_t size,
   if ((flags & ~kFlagsKnown) != 0) return CorruptError("reserved header flags are set");
   if (mode > 2) return CorruptError("unknown pixel mode " + std::to_string(mode));
   std::uint64_t bits[6] = {0, 0, 0, 0, kDefaultOccupiedBits, kDefaultFreeBits};
-  const int count = 3;
-  for (int i = 0; i < count; ++i) {
-    LINEMAP_ASSIGN_OR_RETURN(bits[i], c.ReadU64("header number"));
+  LINEMAP_ASSIGN_OR_RETURN(bits[0], c.ReadU64("resolution"));
+  if (flags & kFlagOrigin) {
+    LINEMAP_ASSIGN_OR_RETURN(bits[1], c.ReadU64("origin x"));
+    LINEMAP_ASSIGN_OR_RETURN(bits[2], c.ReadU64("origin y"));
   }
   if (flags & kFlagYaw) {
     LINEMAP_ASSIGN_OR_RETURN(bits[3], c.ReadU64("origin yaw"));

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/draco_segments.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/raster.h"
 #include "format/container.h"
@@ -91,6 +92,9 @@ class Decoder {
         chunk.type == kFreeChunk || chunk.type == kOccupiedChunk || chunk.type == kResidualChunk;
     out_->chunks.push_back({chunk.type, chunk.size,
                             planar ? std::string("range+") + CoderName(coder) : CoderName(coder)});
+    if (coder == PayloadCoder::kDraco && chunk.type != kSegmentChunk) {
+      return CorruptError("only SEGS may use the Draco payload coder");
+    }
     const int w = header_.width;
     const int h = header_.height;
     if (chunk.type == kMetadataChunk) {
@@ -106,7 +110,11 @@ class Decoder {
       }
       (room ? out_->room_chains : out_->blob_outlines) = std::move(chains);
     } else if (chunk.type == kSegmentChunk) {
-      LINEMAP_ASSIGN_OR_RETURN(out_->segments, ReadSegments(body, w, h, limits_));
+      if (coder == PayloadCoder::kDraco) {
+        LINEMAP_ASSIGN_OR_RETURN(out_->segments, DecodeSegmentsDraco(body, w, h, limits_));
+      } else {
+        LINEMAP_ASSIGN_OR_RETURN(out_->segments, ReadSegments(body, w, h, limits_));
+      }
       for (const LatticeSegment& s : out_->segments) {
         RasterizeSegment(s.a, s.b, [&](int c, int r) {
           canvas_[static_cast<std::size_t>(r) * w + c] = Cell::kOccupied;

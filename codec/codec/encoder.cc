@@ -22,6 +22,7 @@
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/draco_segments.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/raster.h"
 #include "format/container.h"
@@ -265,6 +266,18 @@ StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid,
   return segments;
 }
 
+// The SEGS payload: varints raw or deflated, or Draco, whichever is
+// smallest (ties keep the earlier).
+std::vector<std::uint8_t> SegmentPayload(const std::vector<LatticeSegment>& segments) {
+  std::vector<std::uint8_t> best = WrapPayload(WriteSegments(segments), true);
+  const std::vector<std::uint8_t> draco = EncodeSegmentsDraco(segments);
+  if (!draco.empty() && draco.size() + 1 < best.size()) {
+    best.assign(1, static_cast<std::uint8_t>(PayloadCoder::kDraco));
+    best.insert(best.end(), draco.begin(), draco.end());
+  }
+  return best;
+}
+
 // After the segments are drawn (canvas occupied), the occupied cells within
 // one cell of them are already recalled: dropping them saves coding a second
 // wall layer. The segments' own cells become part of the target.
@@ -338,7 +351,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
     LINEMAP_ASSIGN_OR_RETURN(segments, WallSegments(grid, occupied, options, exact));
   }
   if (!segments.empty()) {
-    writer.AddChunk(kSegmentChunk, WrapPayload(WriteSegments(segments), true));
+    writer.AddChunk(kSegmentChunk, SegmentPayload(segments));
     for (const LatticeSegment& s : segments) {
       RasterizeSegment(s.a, s.b, [&](int c, int r) { canvas[grid.Index(c, r)] = Cell::kOccupied; });
     }

@@ -3,8 +3,10 @@
 #include <cstdio>
 
 #include "linemap/codec.h"
+#include "linemap/lines.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
+#include "tools/linemap/lmap_cli_util.h"
 #include "tools/linemap/map_input.h"
 
 namespace linemap::cli {
@@ -16,7 +18,9 @@ const CommandSpec kEvalSpec = {
     "DECODED_OR_LMAP is a map (YAML or image) or an .lmap file, which is decoded.\n"
     "Prints: cells equal, obstacle recall and precision within 1 cell, free-space\n"
     "IoU, free regions (50+ cells) merged by the decode (leaks), and unknown cells\n"
-    "turned free.",
+    "turned free; for an .lmap file with wall segments also DisPL_ave (mean\n"
+    "distance from the original's edge cells to the nearest segment, RM-Line's\n"
+    "measure) and the share of edge cells within one cell of a segment.",
     WithMapLoadOptions({{"--json", "", "print one JSON object"}}),
     2,
     2,
@@ -31,6 +35,20 @@ int RunEval(const std::vector<std::string>& args) {
   StatusOr<Grid> decoded = LoadMapArgument(parsed->positional[1], *parsed);
   if (!decoded.ok()) return ReportError("eval", decoded.status());
   const GridComparison m = CompareGrids(*original, *decoded);
+  // Line fidelity when the second file is an .lmap with segments.
+  std::optional<LineFidelity> fidelity;
+  if (IsLmapFile(parsed->positional[1])) {
+    StatusOr<LmapContents> contents = LoadLmapContents(parsed->positional[1]);
+    if (!contents.ok()) return ReportError("eval", contents.status());
+    if (!contents->segments.empty() && m.same_geometry) {
+      std::vector<LineSegment> lines;
+      for (const LatticeSegment& s : contents->segments) {
+        lines.push_back(LineSegment{static_cast<double>(s.a.col), static_cast<double>(s.a.row),
+                                    static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
+      }
+      fidelity = MeasureLineFidelity(ComputeEdgeMap(*original), lines);
+    }
+  }
   if (parsed->Has("--json")) {
     JsonObject json;
     json.Add("same_geometry", m.same_geometry)
@@ -42,6 +60,11 @@ int RunEval(const std::vector<std::string>& args) {
         .Add("leaks", std::uint64_t{m.leaks})
         .Add("unknown_turned_free", std::uint64_t{m.unknown_turned_free})
         .Add("unknown_turned_free_share", m.unknown_turned_free_share);
+    if (fidelity) {
+      json.Add("displ_ave_cells", fidelity->displ_ave_cells)
+          .Add("displ_ave_m", fidelity->displ_ave_cells * original->meta.resolution)
+          .Add("edge_share_within_1", fidelity->share_within_1);
+    }
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -54,6 +77,11 @@ int RunEval(const std::vector<std::string>& args) {
   std::printf("leaks:                %zu\n", m.leaks);
   std::printf("unknown turned free:  %zu (%.4f of free)\n", m.unknown_turned_free,
               m.unknown_turned_free_share);
+  if (fidelity) {
+    std::printf("DisPL_ave:            %.4f cells (%.4f m)\n", fidelity->displ_ave_cells,
+                fidelity->displ_ave_cells * original->meta.resolution);
+    std::printf("edge cells within 1:  %.4f\n", fidelity->share_within_1);
+  }
   return kExitOk;
 }
 

