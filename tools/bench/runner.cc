@@ -12,6 +12,7 @@
 #include "tools/bench/jbig.h"
 #include "tools/bench/lmap_figures.h"
 #include "tools/bench/measure.h"
+#include "tools/bench/opencv_lines.h"
 #include "tools/bench/png_codec.h"
 #include "tools/bench/subprocess.h"
 #include "tools/bench/synthetic.h"
@@ -140,6 +141,21 @@ void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
   if (method == LineMethod::kRmLine) result->rmline_segments = std::move(lines->segments);
 }
 
+// OpenCV's detectors (when built in), scored against the same edge map.
+void AddOpenCvFigures(const Grid& grid, MapResult* result) {
+  if (!OpenCvLineDetectorsBuilt()) return;
+  StatusOr<std::vector<DetectorRun>> runs = OpenCvLineDetectors(grid);
+  if (!runs.ok()) return Note(result, "OpenCV", runs.status());
+  const EdgeMap edges = ComputeEdgeMap(grid);
+  for (const DetectorRun& run : *runs) {
+    const LineFidelity fidelity = MeasureLineFidelity(edges, run.segments);
+    result->figures[run.key + "_lines"] = static_cast<double>(run.segments.size());
+    result->figures[run.key + "_displ_cm"] =
+        fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+    result->figures[run.key + "_ms"] = run.ms;
+  }
+}
+
 }  // namespace
 
 MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
@@ -174,6 +190,7 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
                  &result);
   AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
                  key::kLinemapMs, &result);
+  AddOpenCvFigures(grid, &result);
   Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
   if (!lmap.ok()) Note(&result, ".lmap", lmap);
   return result;
