@@ -80,8 +80,7 @@ Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* resu
 
 #else
 
-Status AddLmapFigures(const Grid& /*grid*/, const LmapMeasure& /*what*/,
-                      MapResult* /*result*/) {
+Status AddLmapFigures(const Grid& /*grid*/, const LmapMeasure& /*what*/, MapResult* /*result*/) {
   return UnsupportedError(
       "the .lmap codec (issue 6) is not merged into this tree yet: no .lmap columns");
 }

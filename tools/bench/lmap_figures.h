@@ -12,9 +12,9 @@
 namespace linemap::bench {
 
 struct LmapMeasure {
-  int repeats = 5;           // timed encode and decode runs
-  bool memory = true;        // peak memory of encode and decode (forks)
-  bool everything = true;    // also lossless size, eval figures and geometry
+  int repeats = 5;         // timed encode and decode runs
+  bool memory = true;      // peak memory of encode and decode (forks)
+  bool everything = true;  // also lossless size, eval figures and geometry
 };
 
 // Adds the kLmap* and kEval* figures of `grid` to `result` (lossy = the

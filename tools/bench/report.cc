@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "tools/bench/opencv_lines.h"
+
 namespace linemap::bench {
 namespace {
 
@@ -98,6 +100,20 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kLinemapLines, "linemap lines"},
                               {key::kLinemapDisplCm, "DisPL cm", 2},
                               {key::kLinemapMs, "ms", 1}})});
+  if (OpenCvLineDetectorsBuilt()) {
+    std::vector<Column> columns;
+    for (const DetectorName& name : OpenCvDetectorNames()) {
+      const std::string k = name.key;
+      columns.push_back({k + "_lines", std::string(name.label) + " lines"});
+      columns.push_back({k + "_displ_cm", "DisPL cm", 2});
+      columns.push_back({k + "_ms", "ms", 1});
+    }
+    tables.push_back(
+        {"OpenCV 4.6 line detectors",
+         "On the map drawn as RM-Line's paper did (obstacles grey 100, else 0) and as black / "
+         "white; DisPL_ave over the same edge cells as RM-Line; CPU ms of the detector.",
+         ColumnsTable(results, columns)});
+  }
   tables.push_back(
       {"Speed and memory",
        "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
@@ -165,7 +181,18 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results) {
   row("RM-Line (dtheta 1 deg, ds 0.5 cell)", key::kRmLineLines, key::kRmLineDisplCm,
       key::kRmLineMs);
   row("linemap extractor", key::kLinemapLines, key::kLinemapDisplCm, key::kLinemapMs);
-  return {"Line extraction medians", "", table};
+  for (const DetectorName& name : OpenCvDetectorNames()) {
+    const std::string k = name.key;
+    const std::string lines = k + "_lines", displ = k + "_displ_cm", ms = k + "_ms";
+    if (OpenCvLineDetectorsBuilt()) {
+      row(std::string("OpenCV ") + name.label, lines.c_str(), displ.c_str(), ms.c_str());
+    }
+  }
+  return {"Line extraction medians",
+          OpenCvLineDetectorsBuilt()
+              ? ""
+              : "OpenCV detectors: not built (configure with -DLINEMAP_BENCH_OPENCV=ON).",
+          table};
 }
 
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {

@@ -12,6 +12,7 @@
 #include "tools/bench/jbig.h"
 #include "tools/bench/lmap_figures.h"
 #include "tools/bench/measure.h"
+#include "tools/bench/opencv_lines.h"
 #include "tools/bench/png_codec.h"
 #include "tools/bench/subprocess.h"
 #include "tools/bench/synthetic.h"
@@ -29,9 +30,14 @@ std::span<const std::uint8_t> Bytes(const std::string& s) {
   return {reinterpret_cast<const std::uint8_t*>(s.data()), s.size()};
 }
 
+struct SmallestPng {
+  std::string bytes;  // empty when libpng failed on every layout
+  PngLayout layout = PngLayout::kGrey8;
+};
+
 // The smallest of the libpng layouts; sets the PNG size figures.
-std::string AddPngSizes(const Grid& grid, MapResult* result) {
-  std::string best;
+SmallestPng AddPngSizes(const Grid& grid, MapResult* result) {
+  SmallestPng best;
   std::optional<double> png8;
   for (PngLayout layout : {PngLayout::kGrey8, PngLayout::kPalette8, PngLayout::kPalette2}) {
     StatusOr<std::string> png = EncodeTrinaryPng(grid, layout, 9);
@@ -45,10 +51,12 @@ std::string AddPngSizes(const Grid& grid, MapResult* result) {
     } else {
       png8 = png8 ? std::min(*png8, size) : size;
     }
-    if (best.empty() || png->size() < best.size()) best = std::move(*png);
+    if (best.bytes.empty() || png->size() < best.bytes.size()) best = {std::move(*png), layout};
   }
   if (png8) result->figures[key::kPng8Bytes] = *png8;
-  if (!best.empty()) result->figures[key::kPng9Bytes] = static_cast<double>(best.size());
+  if (!best.bytes.empty()) {
+    result->figures[key::kPng9Bytes] = static_cast<double>(best.bytes.size());
+  }
   return best;
 }
 
@@ -104,16 +112,13 @@ void AddJbigSize(const Grid& grid, MapResult* result) {
   }
 }
 
-void AddPngSpeed(const Grid& grid, const std::string& png, int repeats, bool memory,
+// libpng encode and decode of the layout that gave the smallest file, as a
+// user would keep it.
+void AddPngSpeed(const Grid& grid, const SmallestPng& png, int repeats, bool memory,
                  MapResult* result) {
-  // Encode the layout that gave the smallest file, as a user would keep it.
-  PngLayout layout = PngLayout::kGrey8;
-  for (PngLayout candidate : {PngLayout::kGrey8, PngLayout::kPalette8, PngLayout::kPalette2}) {
-    StatusOr<std::string> trial = EncodeTrinaryPng(grid, candidate, 9);
-    if (trial.ok() && trial->size() == png.size()) layout = candidate;
-  }
+  const PngLayout layout = png.layout;
   auto encode = [&] { (void)EncodeTrinaryPng(grid, layout, 9); };
-  auto decode = [&] { (void)DecodeTrinaryPng(Bytes(png)); };
+  auto decode = [&] { (void)DecodeTrinaryPng(Bytes(png.bytes)); };
   result->figures[key::kPngEncodeMs] = Median(TimeRuns(encode, repeats));
   result->figures[key::kPngDecodeMs] = Median(TimeRuns(decode, repeats));
   if (!memory) return;
@@ -140,6 +145,21 @@ void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
   if (method == LineMethod::kRmLine) result->rmline_segments = std::move(lines->segments);
 }
 
+// OpenCV's detectors (when built in), scored against the same edge map.
+void AddOpenCvFigures(const Grid& grid, MapResult* result) {
+  if (!OpenCvLineDetectorsBuilt()) return;
+  StatusOr<std::vector<DetectorRun>> runs = OpenCvLineDetectors(grid);
+  if (!runs.ok()) return Note(result, "OpenCV", runs.status());
+  const EdgeMap edges = ComputeEdgeMap(grid);
+  for (const DetectorRun& run : *runs) {
+    const LineFidelity fidelity = MeasureLineFidelity(edges, run.segments);
+    result->figures[run.key + "_lines"] = static_cast<double>(run.segments.size());
+    result->figures[run.key + "_displ_cm"] =
+        fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+    result->figures[run.key + "_ms"] = run.ms;
+  }
+}
+
 }  // namespace
 
 MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
@@ -158,7 +178,7 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   if (!image.empty() && !ec) result.figures[key::kSourceBytes] = static_cast<double>(source_size);
   const int repeats = RepeatsFor(grid.size(), options.repeats);
   result.figures[key::kRepeats] = repeats;
-  const std::string png = AddPngSizes(grid, &result);
+  const SmallestPng png = AddPngSizes(grid, &result);
   if (options.pnmtopng && ToolAvailable("pnmtopng")) AddPnmtopngSize(grid, &result);
   // PNG-9, the ratio base, is the smallest PNG anyone would get: netpbm's
   // palette order sometimes compresses better than libpng's layouts here.
@@ -169,11 +189,12 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   }
   AddGeneralCodecSizes(grid, &result);
   if (options.jbig) AddJbigSize(grid, &result);
-  if (!png.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
+  if (!png.bytes.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
   AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
                  &result);
   AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
                  key::kLinemapMs, &result);
+  AddOpenCvFigures(grid, &result);
   Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
   if (!lmap.ok()) Note(&result, ".lmap", lmap);
   return result;

@@ -168,8 +168,8 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
     }
     source = "RM-Line + SegmentMap";
   }
-  const std::string title = result.name + " (" + source +
-                            "): segments red, room borders blue, furniture green";
+  const std::string title =
+      result.name + " (" + source + "): segments red, room borders blue, furniture green";
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(dir + "/" + file + ".svg",
                                           MapOverlaySvg(grid, segments, &segmentation, title)));
   return status;
