@@ -1,33 +1,42 @@
 // linemap's wall-line extractor: fewer segments than RM-Line with a
-// guaranteed L-infinity bound.
+// guaranteed L-infinity bound (issue 5).
 //
-// Pipeline (each step keeps the invariant "every chained edge cell is owned
-// by one segment and lies within epsilon of it"):
-//  1. Speckle: 8-connected edge components smaller than min_component_cells
-//     are set aside (they may still be covered by a wall's segment later;
-//     otherwise they are left to the furniture-blob layer and counted).
-//  2. Chains: the remaining edge cells are traced into ordered 8-connected
-//     chains, starting from contour ends (as in EDLines' edge chaining,
-//     Akinlar & Topal 2011), preferring the neighbour with the fewest
-//     untraced neighbours so that thick contours are swept without strays.
+// Pipeline. Invariant from step 3 on: every chained edge cell is owned by one
+// group and lies within epsilon of the group's segment.
+//  1. Speckle: 8-connected edge components with fewer than
+//     min_component_cells cells are not chained; at the end those within
+//     epsilon of a segment count as covered, the rest are left to the
+//     furniture-blob layer and counted (LineExtraction::cells_left_to_blobs).
+//  2. Chains: the other edge cells are traced into ordered 8-connected
+//     chains, starting from contour ends (edge linking as in EDLines, Akinlar
+//     & Topal 2011), going straight on where possible so that the two sides
+//     of a two-cell wall become two chains, not one zig-zag.
 //  3. Split: each chain is cut greedily into the longest pieces whose cells
-//     all lie within epsilon of the piece's total-least-squares line (the
-//     L-infinity polyline criterion of Imai & Iri 1986 with TLS lines in
-//     place of chords; greedy is optimal when validity is hereditary, which
-//     holds closely for TLS). Prefix moments give each trial fit in O(1).
-//  4. Merge: pieces whose ends are within merge_gap_cells of each other are
-//     refitted together (TLS over the union, Eigen) and merged when every
-//     cell of both stays within epsilon; repeated until nothing merges
-//     (split-and-merge, Pavlidis & Horowitz 1974). This joins a wall's
-//     pieces across junctions and short breaks, and the two sides of thin
-//     walls into one centre line.
-//  5. Prune: segments whose every cell lies within epsilon of another
-//     segment are dropped, smallest first, handing their cells over.
-// Parameters (LineExtractionOptions): epsilon_cells (cells, default 1: a
-// ragged 1-3-cell SLAM wall stays one segment, and no cell is farther than
-// one cell from its wall), merge_gap_cells (cells, default 3: closes breaks
-// from speckle and junction cells but not doorways), min_component_cells
-// (cells, default 3: isolated specks of 1-2 cells are not walls).
+//     lie within split_epsilon_cells of the piece's total-least-squares line
+//     (the L-infinity polyline criterion of Imai & Iri 1986, with TLS lines
+//     in place of chords; greedy is optimal when validity is hereditary,
+//     which holds closely for TLS). Prefix moments make each trial fit O(1);
+//     doubling then bisection finds each piece in O(n log n).
+//  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
+//     are within merge_gap_cells of the other segment are refitted together
+//     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
+//     first, when every cell stays within epsilon_cells AND the summed
+//     cell-to-segment distance grows by at most max_added_cost_cells. The
+//     cost cap is what keeps DisPL_ave low: without it the L-infinity bound
+//     alone would happily merge the two sides of a wall into a centre line.
+//  5. Prune: a segment whose cells all lie within epsilon of other segments
+//     (and cost at most max_added_cost_cells more there) is dropped, smallest
+//     first, handing its cells over.
+//  6. Polish: each line moves towards the least-absolute-distance line of its
+//     cells (iteratively reweighted TLS), only while the bound holds.
+//  7. Corners: wall ends that meet at a corner are extended to it.
+// Parameters (LineExtractionOptions, all in cells; defaults chosen on
+// ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
+// bound), split_epsilon_cells 0.3 (pieces are digital straight segments),
+// merge_gap_cells 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3,
+// min_component_cells 2 (lone cells are speckle), corner_join_cells 3.
+// Time: linear in the edge cells apart from the merge queue (log factor) and
+// the re-evaluation of a group against its neighbours after each merge.
 #include "codec/lines/linemap_extractor.h"
 
 #include <algorithm>
