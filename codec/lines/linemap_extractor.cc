@@ -176,7 +176,7 @@ class ChainMoments {
 
 // A candidate wall: its cells, their moments and the fitted segment.
 struct Group {
-  std::vector<std::uint32_t> cells;
+  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   PointMoments moments;
   FittedLine line;
   LineSegment segment;
@@ -195,12 +195,11 @@ struct LineSweep {
 
 // Adds `cells` to `sweep`; false as soon as a cell is farther than epsilon
 // or the summed distance passes max_cost.
-bool SweepCells(const FittedLine& line, const std::vector<std::uint32_t>& cells, int width,
-                double epsilon, double max_cost, LineSweep* sweep) {
+bool SweepCells(const FittedLine& line, const std::vector<CellXY>& cells, double epsilon,
+                double max_cost, LineSweep* sweep) {
   const Eigen::Vector2d& c = line.centroid;
   const Eigen::Vector2d& u = line.direction;
-  for (std::uint32_t index : cells) {
-    const CellXY cell = CellOfIndex(index, width);
+  for (const CellXY& cell : cells) {
     const double dx = cell.col - c.x(), dy = cell.row - c.y();
     const double d = std::abs(-u.y() * dx + u.x() * dy);
     sweep->cost += d;
@@ -226,12 +225,11 @@ void SetLine(Group* group, const FittedLine& line, const LineSweep& sweep) {
 
 // Fits `line` and `segment` of a group from its cells; false when some cell
 // is farther than epsilon from the line.
-bool RefitGroup(Group* group, int width, double epsilon) {
+bool RefitGroup(Group* group, double epsilon) {
   const FittedLine line = group->moments.Fit();
   if (line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
   LineSweep sweep;
-  if (!SweepCells(line, group->cells, width, epsilon, std::numeric_limits<double>::infinity(),
-                  &sweep)) {
+  if (!SweepCells(line, group->cells, epsilon, std::numeric_limits<double>::infinity(), &sweep)) {
     return false;
   }
   SetLine(group, line, sweep);
@@ -340,16 +338,16 @@ bool EndsWithinGap(const Group& a, const Group& b, double gap) {
 // Evaluates merging groups a and b: false when the union breaks the bound
 // or adds more than max_added to the summed distance; otherwise *line and
 // *sweep describe the union's segment.
-bool TryMerge(const Group& a, const Group& b, int width, double epsilon, double max_added,
-              FittedLine* line, LineSweep* sweep) {
+bool TryMerge(const Group& a, const Group& b, double epsilon, double max_added, FittedLine* line,
+              LineSweep* sweep) {
   PointMoments moments = a.moments;
   moments.Merge(b.moments);
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
   const double max_cost = a.cost + b.cost + max_added;
-  return SweepCells(*line, a.cells, width, epsilon, max_cost, sweep) &&
-         SweepCells(*line, b.cells, width, epsilon, max_cost, sweep);
+  return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
+         SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
 
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
@@ -386,7 +384,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+        if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
         queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
       }
     }
@@ -400,7 +398,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
     if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
       continue;
     }
-    if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+    if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
     a.moments.Merge(b.moments);
     a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
     SetLine(&a, line, sweep);
@@ -439,8 +437,7 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
     distances.clear();
     bool covered = true;
     double added_cost = -group.cost;
-    for (std::uint32_t index_of_cell : group.cells) {
-      const CellXY c = CellOfIndex(index_of_cell, width);
+    for (const CellXY& c : group.cells) {
       std::uint32_t nearest = 0;
       const double d = index.NearestDistance(c.col, c.row, &skip, &nearest);
       added_cost += d;
@@ -470,12 +467,12 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
 // and keeps every cell within epsilon. The segment spans all cells.
-void PolishGroupL1(Group* group, int width, double epsilon) {
+void PolishGroupL1(Group* group, double epsilon) {
   const std::size_t n = group->cells.size();
   if (n < 3) return;
   std::vector<double> xs(n), ys(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const CellXY c = CellOfIndex(group->cells[i], width);
+    const CellXY& c = group->cells[i];
     xs[i] = c.col;
     ys[i] = c.row;
   }
@@ -727,13 +724,13 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
     int begin = 0;
     for (int length : SplitChain(chain, width, split_epsilon)) {
       Group group;
-      group.cells.assign(chain.begin() + begin, chain.begin() + begin + length);
-      for (std::uint32_t index : group.cells) {
-        const CellXY c = CellOfIndex(index, width);
+      for (int i = begin; i < begin + length; ++i) {
+        const CellXY c = CellOfIndex(chain[i], width);
+        group.cells.push_back(c);
         group.moments.Add(c.col, c.row);
       }
       // SplitChain checked the same line (up to rounding).
-      if (!RefitGroup(&group, width, epsilon)) {
+      if (!RefitGroup(&group, epsilon)) {
         return InternalError("a chain piece broke the epsilon bound");
       }
       groups.push_back(std::move(group));
@@ -744,7 +741,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
               options.max_added_cost_cells);
   PruneCoveredGroups(&groups, width, height, epsilon, options.max_added_cost_cells);
   for (Group& group : groups) {
-    if (group.alive) PolishGroupL1(&group, width, epsilon);
+    if (group.alive) PolishGroupL1(&group, epsilon);
   }
 
   LinemapLines result;
