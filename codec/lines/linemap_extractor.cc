@@ -315,15 +315,18 @@ double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
 // so the two groups' directions may differ by at most the sum of the two
 // such angles.
 bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
-  auto max_angle = [epsilon](const Group& g) {
-    const double length = std::sqrt((g.segment.x2 - g.segment.x1) * (g.segment.x2 - g.segment.x1) +
-                                    (g.segment.y2 - g.segment.y1) * (g.segment.y2 - g.segment.y1));
-    if (length <= 0) return std::numbers::pi / 2;
-    return std::asin(std::min(1.0, 2 * (epsilon + g.max_residual) / length));
+  // sin of each group's largest allowed angle; >= 1 means any angle.
+  auto max_sine = [epsilon](const Group& g) {
+    const double dx = g.segment.x2 - g.segment.x1, dy = g.segment.y2 - g.segment.y1;
+    const double length_sq = dx * dx + dy * dy;
+    const double reach = 2 * (epsilon + g.max_residual);
+    return length_sq <= reach * reach ? 1.0 : reach / std::sqrt(length_sq);
   };
+  const double sa = max_sine(a), sb = max_sine(b);
+  if (sa >= 1 || sb >= 1) return true;
+  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B.
   const double cosine = std::abs(a.line.direction.dot(b.line.direction));
-  const double angle = std::acos(std::min(1.0, cosine));
-  return angle <= max_angle(a) + max_angle(b) + 1e-9;
+  return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
 }
 
 // True when an end of one segment is within `gap` of the other segment.
