@@ -1,33 +1,42 @@
 // linemap's wall-line extractor: fewer segments than RM-Line with a
-// guaranteed L-infinity bound.
+// guaranteed L-infinity bound (issue 5).
 //
-// Pipeline (each step keeps the invariant "every chained edge cell is owned
-// by one segment and lies within epsilon of it"):
-//  1. Speckle: 8-connected edge components smaller than min_component_cells
-//     are set aside (they may still be covered by a wall's segment later;
-//     otherwise they are left to the furniture-blob layer and counted).
-//  2. Chains: the remaining edge cells are traced into ordered 8-connected
-//     chains, starting from contour ends (as in EDLines' edge chaining,
-//     Akinlar & Topal 2011), preferring the neighbour with the fewest
-//     untraced neighbours so that thick contours are swept without strays.
+// Pipeline. Invariant from step 3 on: every chained edge cell is owned by one
+// group and lies within epsilon of the group's segment.
+//  1. Speckle: 8-connected edge components with fewer than
+//     min_component_cells cells are not chained; at the end those within
+//     epsilon of a segment count as covered, the rest are left to the
+//     furniture-blob layer and counted (LineExtraction::cells_left_to_blobs).
+//  2. Chains: the other edge cells are traced into ordered 8-connected
+//     chains, starting from contour ends (edge linking as in EDLines, Akinlar
+//     & Topal 2011), going straight on where possible so that the two sides
+//     of a two-cell wall become two chains, not one zig-zag.
 //  3. Split: each chain is cut greedily into the longest pieces whose cells
-//     all lie within epsilon of the piece's total-least-squares line (the
-//     L-infinity polyline criterion of Imai & Iri 1986 with TLS lines in
-//     place of chords; greedy is optimal when validity is hereditary, which
-//     holds closely for TLS). Prefix moments give each trial fit in O(1).
-//  4. Merge: pieces whose ends are within merge_gap_cells of each other are
-//     refitted together (TLS over the union, Eigen) and merged when every
-//     cell of both stays within epsilon; repeated until nothing merges
-//     (split-and-merge, Pavlidis & Horowitz 1974). This joins a wall's
-//     pieces across junctions and short breaks, and the two sides of thin
-//     walls into one centre line.
-//  5. Prune: segments whose every cell lies within epsilon of another
-//     segment are dropped, smallest first, handing their cells over.
-// Parameters (LineExtractionOptions): epsilon_cells (cells, default 1: a
-// ragged 1-3-cell SLAM wall stays one segment, and no cell is farther than
-// one cell from its wall), merge_gap_cells (cells, default 3: closes breaks
-// from speckle and junction cells but not doorways), min_component_cells
-// (cells, default 3: isolated specks of 1-2 cells are not walls).
+//     lie within split_epsilon_cells of the piece's total-least-squares line
+//     (the L-infinity polyline criterion of Imai & Iri 1986, with TLS lines
+//     in place of chords; greedy is optimal when validity is hereditary,
+//     which holds closely for TLS). Prefix moments make each trial fit O(1);
+//     doubling then bisection finds each piece in O(n log n).
+//  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
+//     are within merge_gap_cells of the other segment are refitted together
+//     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
+//     first, when every cell stays within epsilon_cells AND the summed
+//     cell-to-segment distance grows by at most max_added_cost_cells. The
+//     cost cap is what keeps DisPL_ave low: without it the L-infinity bound
+//     alone would happily merge the two sides of a wall into a centre line.
+//  5. Prune: a segment whose cells all lie within epsilon of other segments
+//     (and cost at most max_added_cost_cells more there) is dropped, smallest
+//     first, handing its cells over.
+//  6. Polish: each line moves towards the least-absolute-distance line of its
+//     cells (iteratively reweighted TLS), only while the bound holds.
+//  7. Corners: wall ends that meet at a corner are extended to it.
+// Parameters (LineExtractionOptions, all in cells; defaults chosen on
+// ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
+// bound), split_epsilon_cells 0.3 (pieces are digital straight segments),
+// merge_gap_cells 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3,
+// min_component_cells 2 (lone cells are speckle), corner_join_cells 3.
+// Time: linear in the edge cells apart from the merge queue (log factor) and
+// the re-evaluation of a group against its neighbours after each merge.
 #include "codec/lines/linemap_extractor.h"
 
 #include <algorithm>
@@ -167,7 +176,7 @@ class ChainMoments {
 
 // A candidate wall: its cells, their moments and the fitted segment.
 struct Group {
-  std::vector<std::uint32_t> cells;
+  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   PointMoments moments;
   FittedLine line;
   LineSegment segment;
@@ -186,12 +195,11 @@ struct LineSweep {
 
 // Adds `cells` to `sweep`; false as soon as a cell is farther than epsilon
 // or the summed distance passes max_cost.
-bool SweepCells(const FittedLine& line, const std::vector<std::uint32_t>& cells, int width,
-                double epsilon, double max_cost, LineSweep* sweep) {
+bool SweepCells(const FittedLine& line, const std::vector<CellXY>& cells, double epsilon,
+                double max_cost, LineSweep* sweep) {
   const Eigen::Vector2d& c = line.centroid;
   const Eigen::Vector2d& u = line.direction;
-  for (std::uint32_t index : cells) {
-    const CellXY cell = CellOfIndex(index, width);
+  for (const CellXY& cell : cells) {
     const double dx = cell.col - c.x(), dy = cell.row - c.y();
     const double d = std::abs(-u.y() * dx + u.x() * dy);
     sweep->cost += d;
@@ -217,12 +225,11 @@ void SetLine(Group* group, const FittedLine& line, const LineSweep& sweep) {
 
 // Fits `line` and `segment` of a group from its cells; false when some cell
 // is farther than epsilon from the line.
-bool RefitGroup(Group* group, int width, double epsilon) {
+bool RefitGroup(Group* group, double epsilon) {
   const FittedLine line = group->moments.Fit();
   if (line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
   LineSweep sweep;
-  if (!SweepCells(line, group->cells, width, epsilon, std::numeric_limits<double>::infinity(),
-                  &sweep)) {
+  if (!SweepCells(line, group->cells, epsilon, std::numeric_limits<double>::infinity(), &sweep)) {
     return false;
   }
   SetLine(group, line, sweep);
@@ -308,15 +315,18 @@ double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
 // so the two groups' directions may differ by at most the sum of the two
 // such angles.
 bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
-  auto max_angle = [epsilon](const Group& g) {
-    const double length = std::sqrt((g.segment.x2 - g.segment.x1) * (g.segment.x2 - g.segment.x1) +
-                                    (g.segment.y2 - g.segment.y1) * (g.segment.y2 - g.segment.y1));
-    if (length <= 0) return std::numbers::pi / 2;
-    return std::asin(std::min(1.0, 2 * (epsilon + g.max_residual) / length));
+  // sin of each group's largest allowed angle; >= 1 means any angle.
+  auto max_sine = [epsilon](const Group& g) {
+    const double dx = g.segment.x2 - g.segment.x1, dy = g.segment.y2 - g.segment.y1;
+    const double length_sq = dx * dx + dy * dy;
+    const double reach = 2 * (epsilon + g.max_residual);
+    return length_sq <= reach * reach ? 1.0 : reach / std::sqrt(length_sq);
   };
+  const double sa = max_sine(a), sb = max_sine(b);
+  if (sa >= 1 || sb >= 1) return true;
+  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B.
   const double cosine = std::abs(a.line.direction.dot(b.line.direction));
-  const double angle = std::acos(std::min(1.0, cosine));
-  return angle <= max_angle(a) + max_angle(b) + 1e-9;
+  return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
 }
 
 // True when an end of one segment is within `gap` of the other segment.
@@ -331,16 +341,16 @@ bool EndsWithinGap(const Group& a, const Group& b, double gap) {
 // Evaluates merging groups a and b: false when the union breaks the bound
 // or adds more than max_added to the summed distance; otherwise *line and
 // *sweep describe the union's segment.
-bool TryMerge(const Group& a, const Group& b, int width, double epsilon, double max_added,
-              FittedLine* line, LineSweep* sweep) {
+bool TryMerge(const Group& a, const Group& b, double epsilon, double max_added, FittedLine* line,
+              LineSweep* sweep) {
   PointMoments moments = a.moments;
   moments.Merge(b.moments);
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
   const double max_cost = a.cost + b.cost + max_added;
-  return SweepCells(*line, a.cells, width, epsilon, max_cost, sweep) &&
-         SweepCells(*line, b.cells, width, epsilon, max_cost, sweep);
+  return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
+         SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
 
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
@@ -377,7 +387,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+        if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
         queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
       }
     }
@@ -391,7 +401,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
     if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
       continue;
     }
-    if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+    if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
     a.moments.Merge(b.moments);
     a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
     SetLine(&a, line, sweep);
@@ -430,8 +440,7 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
     distances.clear();
     bool covered = true;
     double added_cost = -group.cost;
-    for (std::uint32_t index_of_cell : group.cells) {
-      const CellXY c = CellOfIndex(index_of_cell, width);
+    for (const CellXY& c : group.cells) {
       std::uint32_t nearest = 0;
       const double d = index.NearestDistance(c.col, c.row, &skip, &nearest);
       added_cost += d;
@@ -461,12 +470,12 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
 // and keeps every cell within epsilon. The segment spans all cells.
-void PolishGroupL1(Group* group, int width, double epsilon) {
+void PolishGroupL1(Group* group, double epsilon) {
   const std::size_t n = group->cells.size();
   if (n < 3) return;
   std::vector<double> xs(n), ys(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const CellXY c = CellOfIndex(group->cells[i], width);
+    const CellXY& c = group->cells[i];
     xs[i] = c.col;
     ys[i] = c.row;
   }
@@ -718,13 +727,13 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
     int begin = 0;
     for (int length : SplitChain(chain, width, split_epsilon)) {
       Group group;
-      group.cells.assign(chain.begin() + begin, chain.begin() + begin + length);
-      for (std::uint32_t index : group.cells) {
-        const CellXY c = CellOfIndex(index, width);
+      for (int i = begin; i < begin + length; ++i) {
+        const CellXY c = CellOfIndex(chain[i], width);
+        group.cells.push_back(c);
         group.moments.Add(c.col, c.row);
       }
       // SplitChain checked the same line (up to rounding).
-      if (!RefitGroup(&group, width, epsilon)) {
+      if (!RefitGroup(&group, epsilon)) {
         return InternalError("a chain piece broke the epsilon bound");
       }
       groups.push_back(std::move(group));
@@ -735,7 +744,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
               options.max_added_cost_cells);
   PruneCoveredGroups(&groups, width, height, epsilon, options.max_added_cost_cells);
   for (Group& group : groups) {
-    if (group.alive) PolishGroupL1(&group, width, epsilon);
+    if (group.alive) PolishGroupL1(&group, epsilon);
   }
 
   LinemapLines result;

@@ -15,8 +15,8 @@ namespace linemap::cli {
 
 const CommandSpec kLinesSpec = {
     "lines",
-    "MAP [-o LINES.csv] [--method rmline|linemap] [--dtheta D] [--ds S] [--epsilon E] "
-    "[--pose X,Y] [--json]",
+    "MAP [-o LINES.csv] [--method linemap|rmline] [--dtheta D] [--ds S] [--epsilon E] "
+    "[--max-added-cost C] [--pose X,Y] [--json]",
     "extract wall line segments from a map (RM-Line or linemap's extractor)",
     "Segments are fitted to the edge map: obstacle cells 4-adjacent to the free cells\n"
     "flooded from --pose (or from every free cell without it). LINES.csv has the header\n"
@@ -31,6 +31,9 @@ const CommandSpec kLinesSpec = {
         {"--ds", "S", "RM-Line scoring point spacing in cells, (0, 1] (default 0.5)"},
         {"--epsilon", "E",
          "linemap: max distance of an edge cell to its segment, cells (default 1)"},
+        {"--max-added-cost", "C",
+         "linemap: a merge may add at most C cells to the summed cell-to-segment distance "
+         "(default 3; lower = closer fit, more lines)"},
         {"--pose", "X,Y", "robot position in map metres; flood only its free component"},
         {"--json", "",
          "print one JSON object with keys lines, displ_cm, displ_cells, "
@@ -63,6 +66,11 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
   }
   if (!(options.rmline_ds_cells > 0 && options.rmline_ds_cells <= 1)) {
     return InvalidArgumentError("--ds must be in (0, 1] cells");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(options.max_added_cost_cells,
+                           args.GetDouble("--max-added-cost", options.max_added_cost_cells));
+  if (!(options.max_added_cost_cells >= 0)) {
+    return InvalidArgumentError("--max-added-cost must be at least 0 cells");
   }
   if (!(options.epsilon_cells >= 0.5)) {
     return InvalidArgumentError("--epsilon must be at least 0.5 cells");
