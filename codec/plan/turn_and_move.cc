@@ -9,25 +9,27 @@
 // a lower Lee index than the node's, or reaches D_max, the last cell is a
 // candidate end point. Candidates with exactly five virgin 8-neighbours
 // (the region's convex corners) go to Node_Opt; the one with the highest
-// Lee index (ties: the shorter move) is Node_Max. Cells that the straight
-// move of some ray passes over without ending there form the passability
-// matrix (marked along the exact segment, not the ray's rounded staircase,
-// which would hide corners): a candidate in it is not terminal and is not
-// queued. A ray that meets the goal ends the
-// node's expansion (the "end of path" flag).
+// Lee index (then the shorter move; exact mirror-image ties are all kept) is
+// Node_Max. Cells that the straight move of some ray passes over without
+// ending there form the passability matrix: a candidate in it is not
+// terminal and is not queued. A ray that meets the goal ends the node's
+// expansion (the "end of path" flag).
 //
-// Additions to the paper, each documented where it is made: the exact
-// segment of every move is checked cell by cell against the safe zone (the
-// ray's rounded cells are not the segment's cells); the queue is cut by
-// max_extra_nodes, max_expansions and a per-cell visit limit so that wide
-// regions cannot explode; and when the queue finds nothing although the
-// goal is reachable (possible with a large D_min or a passability matrix
-// hiding every candidate); besides, one shortest path of the region is straightened
-// greedily: it is always added as one more alternative (often the shortest;
-// the only one when the queue found nothing), so a reachable goal always
-// yields a trajectory. Finally each
-// trajectory is tightened: waypoints that a direct safe move (<= D_max) can
-// skip are dropped, and inner waypoints slide to shorten their two moves.
+// Additions to the paper:
+//  - the exact segment of every move is checked cell by cell against the
+//    safe zone, and the passability matrix is marked along that segment
+//    (the ray's rounded staircase is not the segment and would hide corners);
+//  - the queue is cut by max_extra_nodes, max_expansions, max_trajectories
+//    and a per-cell visit limit, so that wide regions cannot explode;
+//  - two shortest paths of the region (backtracked bottom-up and top-down)
+//    are straightened greedily and always added as alternatives: they are
+//    the only trajectories when the queue finds nothing (possible with a
+//    large D_min), so a reachable goal always yields a trajectory;
+//  - every trajectory is tightened: waypoints that a direct safe move
+//    (<= D_max) can skip are dropped, and inner waypoints slide to shorten
+//    their two moves;
+//  - ranking: fewest moves, then shortest, with trajectories more than
+//    max_length_excess longer than the shortest found ranked last.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -146,17 +148,29 @@ void Generator::Enqueue(int parent, CellIndex cell) {
 }
 
 void Generator::MarkPassed(CellIndex from, CellIndex to) {
+  // Walks the major axis one cell at a time; the minor coordinate is
+  // minor_delta * i / n, kept as twice its value split into quotient and
+  // remainder (2 * |minor| * i = q * n + r) so no division is needed.
   const int dx = to.col - from.col, dy = to.row - from.row;
-  const int n = std::max(std::abs(dx), std::abs(dy));
+  const bool x_major = std::abs(dx) >= std::abs(dy);
+  const int n = x_major ? std::abs(dx) : std::abs(dy);
+  const int minor = x_major ? std::abs(dy) : std::abs(dx);
+  const int major_step = (x_major ? dx : dy) < 0 ? -1 : 1;
+  const int minor_step = (x_major ? dy : dx) < 0 ? -1 : 1;
+  long long q = 0, r = 0;
   for (int i = 1; i < n; ++i) {
-    const double x = static_cast<double>(dx) * i / n, y = static_cast<double>(dy) * i / n;
-    // A cell the line only grazes (a coordinate exactly half-way) is not
-    // passed through.
-    if (std::abs(x - std::floor(x) - 0.5) < 1e-9 || std::abs(y - std::floor(y) - 0.5) < 1e-9) {
-      continue;
+    r += 2LL * minor;
+    while (r >= n) {
+      r -= n;
+      ++q;
     }
-    const CellIndex cell{from.col + static_cast<int>(std::lround(x)),
-                         from.row + static_cast<int>(std::lround(y))};
+    // Exactly half-way between two cells (2x odd): the line only grazes
+    // them, neither is passed through.
+    if (r == 0 && q % 2 == 1) continue;
+    const int m = static_cast<int>((q + 1) / 2);  // round(q / 2 + r / 2n)
+    const int major_offset = major_step * i, minor_offset = minor_step * m;
+    const CellIndex cell = x_major ? CellIndex{from.col + major_offset, from.row + minor_offset}
+                                   : CellIndex{from.col + minor_offset, from.row + major_offset};
     scratch_.passed[At(cell)] = scratch_.stamp;
   }
 }

@@ -9,7 +9,8 @@
 //      the backward depth-first pass with a stack;
 //   4. turn-and-move generation: straight moves taken from a neighbourhood
 //      template up to D_max, ending at terminal points (Node_Max / Node_Opt),
-//      expanded breadth-first from a queue of nodes.
+//      expanded breadth-first from a queue of nodes (what linemap adds to
+//      the paper is listed at the top of codec/plan/turn_and_move.cc).
 //
 // Stages 1-4 are free functions so that tests and benchmarks can run and
 // time them one by one; Planner ties them together and keeps the two
@@ -46,8 +47,9 @@ double SafeDistanceMetres(const RobotFootprint& robot);
 
 struct PlanOptions {
   RobotFootprint robot;
-  // D_min: straight moves shorter than this are not generated (except the
-  // final move onto the goal), metres (>= 0). Default 0.1.
+  // D_min: the node queue generates no straight move shorter than this
+  // (except the final move onto the goal), metres (>= 0). The straightened
+  // shortest-path alternatives do not obey it. Default 0.1.
   double d_min_m = 0.1;
   // D_max: the longest single straight move, metres (> 0). Default 5.0.
   double d_max_m = 5.0;

@@ -343,10 +343,10 @@ int main(int argc, char** argv) {
     return rc;
   }
   std::printf(
-      "| map | cells | mask template CPU ms (mean / worst) | move template CPU ms | safe zone CPU ms "
-      "| wave CPU ms | regions CPU ms | generation CPU ms | whole call wall ms | pairs "
-      "reachable+not | found != A* | length / A* (mean / worst) | within 10%% | moves (mean) | "
-      "A* cells (mean) | trajectories (mean) | best is straightened |\n");
+      "| map | cells | mask template CPU ms (mean / worst) | move template CPU ms | "
+      "safe zone CPU ms | wave CPU ms | regions CPU ms | generation CPU ms | whole call wall ms | "
+      "pairs reachable+not | found != A* | length / A* (mean / worst) | within 10%% | "
+      "moves (mean) | A* cells (mean) | trajectories (mean) | best is straightened |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int rc = 0;
   for (const std::string& map : args.maps) rc |= linemap::BenchMap(map, args);
