@@ -15,8 +15,8 @@ namespace linemap::cli {
 
 const CommandSpec kLinesSpec = {
     "lines",
-    "MAP [-o LINES.csv] [--method rmline|linemap] [--dtheta D] [--ds S] [--epsilon E] "
-    "[--pose X,Y] [--json]",
+    "MAP [-o LINES.csv] [--method linemap|rmline] [--dtheta D] [--ds S] [--epsilon E] "
+    "[--max-added-cost C] [--pose X,Y] [--json]",
     "extract wall line segments from a map (RM-Line or linemap's extractor)",
     "Segments are fitted to the edge map: obstacle cells 4-adjacent to the free cells\n"
     "flooded from --pose (or from every free cell without it). LINES.csv has the header\n"
@@ -26,11 +26,14 @@ const CommandSpec kLinesSpec = {
     "largest such distance in cells, and the extraction time in ms.",
     WithMapLoadOptions({
         {"-o", "LINES.csv", "write the segments as CSV (layer,x1,y1,x2,y2; metres)"},
-        {"--method", "NAME", "rmline (the paper's method) or linemap (default rmline)"},
+        {"--method", "NAME", "linemap (default) or rmline (the paper's method)"},
         {"--dtheta", "D", "RM-Line ray angle step in degrees (default 1)"},
         {"--ds", "S", "RM-Line scoring point spacing in cells, (0, 1] (default 0.5)"},
         {"--epsilon", "E",
          "linemap: max distance of an edge cell to its segment, cells (default 1)"},
+        {"--max-added-cost", "C",
+         "linemap: a merge may add at most C cells to the summed cell-to-segment distance "
+         "(default 3; lower = closer fit, more lines)"},
         {"--pose", "X,Y", "robot position in map metres; flood only its free component"},
         {"--json", "",
          "print one JSON object with keys lines, displ_cm, displ_cells, "
@@ -44,7 +47,7 @@ namespace {
 
 StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Grid& grid) {
   LineExtractionOptions options;
-  const std::string method = args.Get("--method").value_or("rmline");
+  const std::string method = args.Get("--method").value_or("linemap");
   if (method == "rmline") {
     options.method = LineMethod::kRmLine;
   } else if (method == "linemap") {
@@ -63,6 +66,11 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
   }
   if (!(options.rmline_ds_cells > 0 && options.rmline_ds_cells <= 1)) {
     return InvalidArgumentError("--ds must be in (0, 1] cells");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(options.max_added_cost_cells,
+                           args.GetDouble("--max-added-cost", options.max_added_cost_cells));
+  if (!(options.max_added_cost_cells >= 0)) {
+    return InvalidArgumentError("--max-added-cost must be at least 0 cells");
   }
   if (!(options.epsilon_cells >= 0.5)) {
     return InvalidArgumentError("--epsilon must be at least 0.5 cells");
@@ -125,7 +133,8 @@ int RunLines(const std::vector<std::string>& args) {
         .Add("displ_max_cells", fidelity.displ_max_cells)
         .Add("ms", ms)
         .Add("edge_cells", std::uint64_t{fidelity.edge_cells})
-        .Add("share_within_1", fidelity.share_within_1);
+        .Add("share_within_1", fidelity.share_within_1)
+        .Add("cells_left_to_blobs", std::uint64_t{extraction->cells_left_to_blobs});
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -135,6 +144,10 @@ int RunLines(const std::vector<std::string>& args) {
   std::printf("max:        %.4f cells\n", fidelity.displ_max_cells);
   std::printf("within 1:   %.2f%% of %zu edge cells\n", 100.0 * fidelity.share_within_1,
               fidelity.edge_cells);
+  if (options->method == LineMethod::kLinemap) {
+    std::printf("furniture:  %zu edge cells left to the furniture layer\n",
+                extraction->cells_left_to_blobs);
+  }
   std::printf("time:       %.1f ms\n", ms);
   return kExitOk;
 }

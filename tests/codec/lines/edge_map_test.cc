@@ -68,5 +68,26 @@ TEST(EdgeMapTest, HugeSingleDomainNeedsNoRecursion) {
   EXPECT_EQ(edges.edge_count, static_cast<std::size_t>(4 * (n - 2)));
 }
 
+TEST(EdgeMapTest, FloodingEveryComponentEqualsFloodingFromEachRobotCell) {
+  // Without a robot position every free component is flooded; the union of
+  // the floods from one free cell of each component must be the same map.
+  Grid grid(12, 9, Cell::kUnknown);
+  FillBox(&grid, 0, 0, 5, 8, Cell::kOccupied);
+  FillBox(&grid, 1, 1, 4, 4, Cell::kFree);   // component A
+  FillBox(&grid, 2, 6, 3, 7, Cell::kFree);   // component B
+  FillBox(&grid, 7, 2, 10, 6, Cell::kFree);  // component C, unknown around
+  grid.set(9, 4, Cell::kOccupied);
+  const EdgeMap all = ComputeEdgeMap(grid);
+  std::vector<std::uint8_t> united(grid.size(), 0);
+  for (const CellPoint robot : {CellPoint{1, 1}, CellPoint{2, 6}, CellPoint{7, 2}}) {
+    const EdgeMap one = ComputeEdgeMap(grid, robot);
+    for (std::size_t i = 0; i < united.size(); ++i) united[i] |= one.is_edge[i];
+  }
+  EXPECT_EQ(all.is_edge, united);
+  // By hand: A's ring 4 * 4 = 16; B adds cols 1 and 4 of rows 6-7 and row 8
+  // cols 2-3 (its row 5 is A's top): 6; C's inner obstacle (9,4): 1.
+  EXPECT_EQ(all.edge_count, 23u);
+}
+
 }  // namespace
 }  // namespace linemap

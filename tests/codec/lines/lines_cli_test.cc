@@ -46,6 +46,16 @@ TEST(LinesCliTest, JsonHasTheFiveFigures) {
   }
 }
 
+TEST(LinesCliTest, DefaultMethodIsLinemapAndReportsFurnitureCells) {
+  const std::string dir = testing::MakeTempDir("lines_cli_default");
+  const testing::CliResult r = RunCli({"lines", WriteWallMap(dir), "--epsilon", "1.5"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("furniture:  0 edge cells"), std::string::npos) << r.out;
+  const testing::CliResult rm = RunCli({"lines", WriteWallMap(dir), "--method", "rmline"});
+  ASSERT_EQ(rm.exit_code, 0) << rm.err;
+  EXPECT_EQ(rm.out.find("furniture:"), std::string::npos) << rm.out;
+}
+
 TEST(LinesCliTest, PoseSelectsTheComponent) {
   const std::string dir = testing::MakeTempDir("lines_cli_pose");
   const std::string yaml = WriteWallMap(dir);
@@ -61,6 +71,8 @@ TEST(LinesCliTest, BadInputExitsWithTwoAndWritesNothing) {
   const std::string out = dir + "/never.csv";
   EXPECT_EQ(RunCli({"lines", yaml, "--method", "hough", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", yaml, "--dtheta", "0", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", yaml, "--epsilon", "0.2", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", yaml, "--max-added-cost", "-1", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "100,100", "-o", out}).exit_code, 2);
   // (2.25, 2.35) m is cell (12, 3), on the wall.
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "2.25,2.35", "-o", out}).exit_code, 2);
