@@ -50,6 +50,23 @@ void FloodConnectedDomain(const Grid& grid, std::size_t seed, std::vector<std::u
   }
 }
 
+void MarkObstaclesNextToFree(const Grid& grid, std::vector<std::uint8_t>* aux) {
+  const int width = grid.width();
+  const int height = grid.height();
+  const std::vector<Cell>& cells = grid.cells();
+  for (int row = 0; row < height; ++row) {
+    const std::size_t base = static_cast<std::size_t>(row) * width;
+    for (int col = 0; col < width; ++col) {
+      if (cells[base + col] != Cell::kOccupied) continue;
+      const bool next_to_free = (col + 1 < width && cells[base + col + 1] == Cell::kFree) ||
+                                (col > 0 && cells[base + col - 1] == Cell::kFree) ||
+                                (row + 1 < height && cells[base + width + col] == Cell::kFree) ||
+                                (row > 0 && cells[base - width + col] == Cell::kFree);
+      if (next_to_free) (*aux)[base + col] = kEdgePoint;
+    }
+  }
+}
+
 }  // namespace
 
 EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
@@ -68,11 +85,9 @@ EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
       if (grid.cells()[seed] == Cell::kFree) FloodConnectedDomain(grid, seed, &aux, &open);
     }
   } else {
-    for (std::size_t seed = 0; seed < grid.size(); ++seed) {
-      if (grid.cells()[seed] == Cell::kFree && aux[seed] == kNotReached) {
-        FloodConnectedDomain(grid, seed, &aux, &open);
-      }
-    }
+    // Flooding every free component marks exactly the obstacle cells with a
+    // free 4-neighbour, so one direct pass gives the same AuxMap edge points.
+    MarkObstaclesNextToFree(grid, &aux);
   }
   edges.is_edge.assign(grid.size(), 0);
   for (std::size_t i = 0; i < aux.size(); ++i) {

@@ -1,7 +1,9 @@
 // ExtractLines(): the edge map, then the chosen method (RM-Line or linemap's
 // extractor) on it.
 #include <cmath>
+#include <utility>
 
+#include "codec/lines/linemap_extractor.h"
 #include "codec/lines/rmline.h"
 #include "linemap/lines.h"
 
@@ -33,8 +35,14 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
                                                          options.rmline_ds_cells));
       return result;
     }
-    case LineMethod::kLinemap:
-      return UnsupportedError("the linemap line extractor is not implemented yet");
+    case LineMethod::kLinemap: {
+      LINEMAP_ASSIGN_OR_RETURN(lines_internal::LinemapLines lines,
+                               lines_internal::ExtractLinemapLines(result.edges, options));
+      result.segments = std::move(lines.segments);
+      result.left_to_blobs = std::move(lines.left_to_blobs);
+      result.cells_left_to_blobs = lines.cells_left_to_blobs;
+      return result;
+    }
   }
   return InternalError("unknown line extraction method");
 }

@@ -73,11 +73,19 @@ Eigen::Matrix2d PointMoments::Covariance() const {
   return cov;
 }
 
-FittedLine PointMoments::Fit() const {
+double SmallestEigenvalue(const Eigen::Matrix2d& cov) {
+  const double half_trace = 0.5 * (cov(0, 0) + cov(1, 1));
+  const double half_diff = 0.5 * (cov(0, 0) - cov(1, 1));
+  return std::max(0.0, half_trace - std::sqrt(half_diff * half_diff + cov(0, 1) * cov(0, 1)));
+}
+
+FittedLine PointMoments::Fit() const { return FitFromCovariance(Mean(), Covariance()); }
+
+FittedLine FitFromCovariance(const Eigen::Vector2d& centroid, const Eigen::Matrix2d& covariance) {
   FittedLine line;
-  line.centroid = Mean();
+  line.centroid = centroid;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver;
-  solver.computeDirect(Covariance());
+  solver.computeDirect(covariance);
   // Eigenvalues come in increasing order: column 1 is the principal axis.
   line.direction = solver.eigenvectors().col(1).normalized();
   line.mean_squared_residual = std::max(0.0, solver.eigenvalues()(0));
@@ -112,7 +120,8 @@ double PointSegmentDistance(double x, double y, const LineSegment& s) {
   const double length_sq = dx * dx + dy * dy;
   double t = 0;
   if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
-  return std::hypot(x - (s.x1 + t * dx), y - (s.y1 + t * dy));
+  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+  return std::sqrt(ex * ex + ey * ey);
 }
 
 }  // namespace linemap::lines_internal

@@ -21,6 +21,13 @@ struct FittedLine {
   double mean_squared_residual = 0;
 };
 
+// The TLS line through `centroid` given the 2x2 covariance of the points.
+FittedLine FitFromCovariance(const Eigen::Vector2d& centroid, const Eigen::Matrix2d& covariance);
+
+// The smallest eigenvalue of a 2x2 covariance in closed form: the mean
+// squared distance of the points to their TLS line, for quick rejections.
+double SmallestEigenvalue(const Eigen::Matrix2d& covariance);
+
 // The first and second moments of a point set, Eq. (3): mu_x, mu_y, mu_xx,
 // mu_yy, mu_xy. Sums are taken relative to the first point added so that
 // large coordinates do not cancel.

@@ -49,7 +49,8 @@ bool IsEdge(const EdgeMap& edges, int col, int row) {
          edges.is_edge[static_cast<std::size_t>(row) * edges.width + col] != 0;
 }
 
-// The cell holding a scoring point: the nearest cell centre.
+// The cell holding a scoring point: the nearest cell centre (a point exactly
+// on a cell border, e.g. x = 2.5 with ds = 0.5, goes to the higher cell).
 int CellOf(double coordinate) { return static_cast<int>(std::floor(coordinate + 0.5)); }
 
 // Number of scoring points k = 0, 1, ... on edge points before the

@@ -50,7 +50,8 @@ void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s) {
   }
 }
 
-double SegmentIndex::NearestDistance(double x, double y) {
+double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::uint8_t>* skip,
+                                     std::uint32_t* nearest_id) {
   double best = std::numeric_limits<double>::infinity();
   if (segments_->empty()) return best;
   if (++stamp_ == 0) {  // wrapped: reset the stamps
@@ -69,7 +70,12 @@ double SegmentIndex::NearestDistance(double x, double y) {
         for (std::uint32_t id : buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx]) {
           if (seen_stamp_[id] == stamp_) continue;
           seen_stamp_[id] = stamp_;
-          best = std::min(best, PointSegmentDistance(x, y, (*segments_)[id]));
+          if (skip != nullptr && (*skip)[id]) continue;
+          const double d = PointSegmentDistance(x, y, (*segments_)[id]);
+          if (d < best) {
+            best = d;
+            if (nearest_id != nullptr) *nearest_id = id;
+          }
         }
         if (ring == 0) break;
       }

@@ -22,7 +22,10 @@ class SegmentIndex {
                int tile_cells = 16);
 
   // Distance from (x, y) to the nearest segment; +infinity without segments.
-  double NearestDistance(double x, double y);
+  // Segments with skip[id] != 0 are ignored when `skip` is given; the id of
+  // the nearest one goes to *nearest_id when given (unchanged if none).
+  double NearestDistance(double x, double y, const std::vector<std::uint8_t>* skip = nullptr,
+                         std::uint32_t* nearest_id = nullptr);
 
  private:
   void AddToTiles(std::uint32_t id, const LineSegment& s);

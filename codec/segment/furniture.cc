@@ -41,14 +41,18 @@ RoomLayout BuildRoomLayout(const Grid& grid, const Labeling& free_labels, std::i
   layout.in_grid = BinaryMask(w, h);
   layout.free = BinaryMask(w, h);
   BinaryMask occupied(w, h);
+  // The crop's columns that are grid columns.
+  const int c_begin = std::max(0, -layout.col0);
+  const int c_end = std::min(w, grid.width() - layout.col0);
   for (int r = 0; r < h; ++r) {
     const int gr = r + layout.row0;
-    for (int c = 0; c < w; ++c) {
-      const int gc = c + layout.col0;
-      if (!grid.Contains(gc, gr)) continue;
-      layout.in_grid.set(c, r, true);
-      layout.free.set(c, r, free_labels.at(gc, gr) == label);
-      occupied.set(c, r, grid.at(gc, gr) == Cell::kOccupied);
+    if (gr < 0 || gr >= grid.height() || c_begin >= c_end) continue;
+    const std::size_t g = grid.Index(c_begin + layout.col0, gr);
+    const std::size_t m = layout.free.Index(c_begin, r);
+    for (int k = 0; k < c_end - c_begin; ++k) {
+      layout.in_grid.bits[m + k] = 1;
+      layout.free.bits[m + k] = free_labels.labels[g + k] == label;
+      occupied.bits[m + k] = grid.cells()[g + k] == Cell::kOccupied;
     }
   }
   layout.free_cells = stats.cell_count;
@@ -69,10 +73,13 @@ RoomLayout BuildRoomLayout(const Grid& grid, const Labeling& free_labels, std::i
     for (int c = 0; c < w; ++c) {
       const std::size_t i = layout.room.Index(c, r);
       const bool hole = enclosed[outside.labels[i]] != 0;
-      const bool wall = !hole && occupied.bits[i] && HasFreeNeighbour(layout.free, c, r);
       layout.holes.bits[i] = hole;
-      layout.walls.bits[i] = wall;
-      layout.room.bits[i] = hole || wall || layout.free.bits[i];
+      if (hole || layout.free.bits[i]) {
+        layout.room.bits[i] = 1;
+      } else if (occupied.bits[i] && HasFreeNeighbour(layout.free, c, r)) {
+        layout.walls.bits[i] = 1;
+        layout.room.bits[i] = 1;
+      }
     }
   }
   if (robot) layout.robot = CellIndex{robot->col - layout.col0, robot->row - layout.row0};

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 namespace linemap {
 namespace {
@@ -43,6 +44,19 @@ class UnionFind {
   std::vector<std::int32_t> parent_;
 };
 
+// The first column >= col whose byte is non-zero (or w), eight at a time:
+// maps are mostly empty space.
+inline int SkipZeros(const std::uint8_t* bits, int col, int w) {
+  while (col + 8 <= w) {
+    std::uint64_t chunk;
+    std::memcpy(&chunk, bits + col, 8);
+    if (chunk) break;
+    col += 8;
+  }
+  while (col < w && !bits[col]) ++col;
+  return col;
+}
+
 }  // namespace
 
 Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
@@ -51,55 +65,76 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
   result.height = mask.height;
   const int w = mask.width;
   const int h = mask.height;
-  // Provisional labels are 1-based union-find ids + 1; 0 = background.
+  // First pass: provisional labels (union-find ids + 1; 0 = background).
+  // Neighbours already labelled are copied without a find where the
+  // neighbourhood guarantees they are joined already (in 8-connectivity N
+  // touches NW, NE and W; NW touches W).
   std::vector<std::int32_t> provisional(mask.bits.size(), 0);
   UnionFind table;
   const bool eight = connectivity == Connectivity::kEight;
   for (int row = 0; row < h; ++row) {
     const std::size_t base = static_cast<std::size_t>(row) * w;
+    const std::int32_t* up = row > 0 ? &provisional[base - w] : nullptr;
+    std::int32_t* cur = &provisional[base];
+    const std::uint8_t* bits = &mask.bits[base];
     for (int col = 0; col < w; ++col) {
-      if (!mask.bits[base + col]) continue;
-      std::array<std::int32_t, 4> neighbours{};
-      int n = 0;
-      if (col > 0 && provisional[base + col - 1]) neighbours[n++] = provisional[base + col - 1];
-      if (row > 0) {
-        const std::size_t up = base - w;
-        if (provisional[up + col]) neighbours[n++] = provisional[up + col];
-        if (eight && col > 0 && provisional[up + col - 1]) {
-          neighbours[n++] = provisional[up + col - 1];
-        }
-        if (eight && col + 1 < w && provisional[up + col + 1]) {
-          neighbours[n++] = provisional[up + col + 1];
-        }
-      }
-      if (n == 0) {
-        provisional[base + col] = table.Add() + 1;
+      if (!bits[col]) {
+        col = SkipZeros(bits, col, w) - 1;
         continue;
       }
-      std::int32_t root = table.Find(neighbours[0] - 1);
-      for (int i = 1; i < n; ++i) root = table.Union(root, neighbours[i] - 1);
-      provisional[base + col] = root + 1;
+      const std::int32_t west = col > 0 ? cur[col - 1] : 0;
+      const std::int32_t north = up ? up[col] : 0;
+      std::int32_t label = 0;
+      if (eight) {
+        const std::int32_t north_west = (up && col > 0) ? up[col - 1] : 0;
+        const std::int32_t north_east = (up && col + 1 < w) ? up[col + 1] : 0;
+        if (north) {
+          label = north;
+        } else if (north_east) {
+          const std::int32_t other = west ? west : north_west;
+          label = other ? table.Union(north_east - 1, other - 1) + 1 : north_east;
+        } else {
+          label = west ? west : north_west;
+        }
+      } else if (north && west && north != west) {
+        label = table.Union(north - 1, west - 1) + 1;
+      } else {
+        label = north ? north : west;
+      }
+      cur[col] = label ? label : table.Add() + 1;
     }
   }
-  // Second pass: final labels in raster order of first cells, and statistics.
+  // Roots are the labels of first cells (unions keep the smaller id and ids
+  // grow in raster order), so numbering roots by id numbers components in
+  // the raster order of their first cells.
   std::vector<std::int32_t> final_label(table.size(), 0);
-  result.labels.assign(mask.bits.size(), 0);
+  std::int32_t count = 0;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::int32_t id = static_cast<std::int32_t>(i);
+    const std::int32_t root = table.Find(id);
+    final_label[i] = root == id ? ++count : final_label[root];
+  }
+  result.components.resize(static_cast<std::size_t>(count));
+  result.labels = std::move(provisional);  // relabelled in place
   for (int row = 0; row < h; ++row) {
-    const std::size_t base = static_cast<std::size_t>(row) * w;
+    std::int32_t* labels = result.labels.data() + static_cast<std::size_t>(row) * w;
+    const std::uint8_t* bits = &mask.bits[static_cast<std::size_t>(row) * w];
     for (int col = 0; col < w; ++col) {
-      const std::int32_t p = provisional[base + col];
-      if (!p) continue;
-      const std::int32_t root = table.Find(p - 1);
-      if (!final_label[root]) {
-        result.components.push_back({0, {col, row}, {col, row, col, row}});
-        final_label[root] = static_cast<std::int32_t>(result.components.size());
+      const std::int32_t p = labels[col];
+      if (!p) {
+        col = SkipZeros(bits, col, w) - 1;
+        continue;
       }
-      const std::int32_t label = final_label[root];
-      result.labels[base + col] = label;
+      const std::int32_t label = final_label[p - 1];
+      labels[col] = label;
       ComponentStats& stats = result.components[label - 1];
-      ++stats.cell_count;
-      stats.box.min_col = std::min(stats.box.min_col, col);
-      stats.box.max_col = std::max(stats.box.max_col, col);
+      if (stats.cell_count++ == 0) {
+        stats.first_cell = {col, row};
+        stats.box = {col, row, col, row};
+        continue;
+      }
+      if (col < stats.box.min_col) stats.box.min_col = col;
+      if (col > stats.box.max_col) stats.box.max_col = col;
       stats.box.max_row = row;  // rows are visited in increasing order
     }
   }

@@ -6,7 +6,10 @@
 #include "linemap/morphology.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cassert>
+#include <cstring>
 
 namespace linemap {
 namespace {
@@ -26,6 +29,30 @@ std::vector<Offset> OnOffsets(const StructuringElement& element) {
   return offsets;
 }
 
+static_assert(std::endian::native == std::endian::little, "byte packing assumes little-endian");
+
+// Bit i of the result = (byte i of the 8 bytes at `p` != 0).
+inline std::uint64_t PackEightBytes(const std::uint8_t* p) {
+  std::uint64_t x;
+  std::memcpy(&x, p, 8);
+  constexpr std::uint64_t kLow7 = 0x7f7f7f7f7f7f7f7fULL;
+  // Top bit of each byte set iff the byte is non-zero, then moved to bit 0.
+  x = (((x & kLow7) + kLow7) | x) >> 7 & 0x0101010101010101ULL;
+  return (x * 0x0102040810204080ULL) >> 56;  // gathers byte i's bit 0 into bit i
+}
+
+// kSpreadByte[b] has byte i = bit i of b (little-endian), for unpacking.
+constexpr std::array<std::uint64_t, 256> MakeSpreadTable() {
+  std::array<std::uint64_t, 256> table{};
+  for (int b = 0; b < 256; ++b) {
+    for (int i = 0; i < 8; ++i) {
+      if (b >> i & 1) table[b] |= std::uint64_t{1} << (8 * i);
+    }
+  }
+  return table;
+}
+constexpr std::array<std::uint64_t, 256> kSpreadByte = MakeSpreadTable();
+
 // Rows packed 64 cells to a word; bits past the width are always 0.
 class PackedMask {
  public:
@@ -40,8 +67,16 @@ class PackedMask {
     for (int row = 0; row < mask.height; ++row) {
       const std::uint8_t* src = &mask.bits[mask.Index(0, row)];
       std::uint64_t* dst = packed.Row(row);
-      for (int col = 0; col < mask.width; ++col) {
-        if (src[col]) dst[col >> 6] |= std::uint64_t{1} << (col & 63);
+      for (int j = 0; j < packed.words_; ++j) {
+        const int begin = 64 * j;
+        const int count = std::min(64, mask.width - begin);
+        std::uint64_t word = 0;
+        if (count == 64) {
+          for (int g = 0; g < 8; ++g) word |= PackEightBytes(src + begin + 8 * g) << (8 * g);
+        } else {
+          for (int i = 0; i < count; ++i) word |= std::uint64_t{src[begin + i] != 0} << i;
+        }
+        dst[j] = word;
       }
     }
     return packed;
@@ -52,7 +87,19 @@ class PackedMask {
     for (int row = 0; row < height_; ++row) {
       const std::uint64_t* src = Row(row);
       std::uint8_t* dst = mask.bits.data() + mask.Index(0, row);
-      for (int col = 0; col < width_; ++col) dst[col] = (src[col >> 6] >> (col & 63)) & 1;
+      for (int j = 0; j < words_; ++j) {
+        const int begin = 64 * j;
+        const int count = std::min(64, width_ - begin);
+        const std::uint64_t word = src[j];
+        if (count == 64) {
+          for (int g = 0; g < 8; ++g) {
+            const std::uint64_t bytes = kSpreadByte[(word >> (8 * g)) & 0xff];
+            std::memcpy(dst + begin + 8 * g, &bytes, 8);
+          }
+        } else {
+          for (int i = 0; i < count; ++i) dst[begin + i] = (word >> i) & 1;
+        }
+      }
     }
     return mask;
   }
@@ -117,37 +164,35 @@ bool StructuringElement::Valid() const {
          on.size() == static_cast<std::size_t>(width) * height;
 }
 
-BinaryMask Dilate(const BinaryMask& mask, const StructuringElement& element) {
-  assert(element.Valid());
-  const PackedMask in = PackedMask::Pack(mask);
-  PackedMask out(mask.width, mask.height);
-  const std::vector<Offset> offsets = OnOffsets(element);
+namespace {
+
+// out(p) = OR over b of in(p - b).
+PackedMask DilatePacked(const PackedMask& in, int width, const std::vector<Offset>& offsets) {
+  PackedMask out(width, in.height());
   const int words = in.words();
-  for (int row = 0; row < mask.height; ++row) {
+  for (int row = 0; row < in.height(); ++row) {
     std::uint64_t* dst = out.Row(row);
-    for (const Offset& b : offsets) {  // out(p) |= in(p - b)
+    for (const Offset& b : offsets) {
       const int src_row = row - b.dy;
-      if (src_row < 0 || src_row >= mask.height) continue;
+      if (src_row < 0 || src_row >= in.height()) continue;
       const std::uint64_t* src = in.Row(src_row);
       for (int j = 0; j < words; ++j) dst[j] |= ShiftedWord(src, words, j, -b.dx);
     }
     out.ClearTail(row);
   }
-  return out.Unpack();
+  return out;
 }
 
-BinaryMask Erode(const BinaryMask& mask, const StructuringElement& element) {
-  assert(element.Valid());
-  const PackedMask in = PackedMask::Pack(mask);
-  PackedMask out(mask.width, mask.height);
+// out(p) = AND over b of in(p + b); outside the mask counts as 0.
+PackedMask ErodePacked(const PackedMask& in, int width, const std::vector<Offset>& offsets) {
+  PackedMask out(width, in.height());
   out.Fill(~std::uint64_t{0});
-  const std::vector<Offset> offsets = OnOffsets(element);
   const int words = in.words();
-  for (int row = 0; row < mask.height; ++row) {
+  for (int row = 0; row < in.height(); ++row) {
     std::uint64_t* dst = out.Row(row);
-    for (const Offset& b : offsets) {  // out(p) &= in(p + b)
+    for (const Offset& b : offsets) {
       const int src_row = row + b.dy;
-      if (src_row < 0 || src_row >= mask.height) {
+      if (src_row < 0 || src_row >= in.height()) {
         std::fill(dst, dst + words, 0);
         break;
       }
@@ -156,15 +201,71 @@ BinaryMask Erode(const BinaryMask& mask, const StructuringElement& element) {
     }
     out.ClearTail(row);
   }
-  return out.Unpack();
+  return out;
+}
+
+bool IsFullRectangle(const StructuringElement& element) {
+  return std::all_of(element.on.begin(), element.on.end(), [](std::uint8_t b) { return b != 0; });
+}
+
+// A full w x h rectangle is the Minkowski sum of a 1-row and a 1-column
+// element, so it runs as two passes of w and h shifts instead of w * h.
+std::vector<std::vector<Offset>> Passes(const StructuringElement& element) {
+  if (!IsFullRectangle(element) || element.width * element.height <= 9) {
+    return {OnOffsets(element)};
+  }
+  std::vector<Offset> row_pass, col_pass;
+  for (int dx = -element.width / 2; dx <= element.width / 2; ++dx) row_pass.push_back({dx, 0});
+  for (int dy = -element.height / 2; dy <= element.height / 2; ++dy) col_pass.push_back({0, dy});
+  return {row_pass, col_pass};
+}
+
+}  // namespace
+
+BinaryMask DilateAll(const BinaryMask& mask, const std::vector<StructuringElement>& elements) {
+  PackedMask packed = PackedMask::Pack(mask);
+  for (const StructuringElement& element : elements) {
+    assert(element.Valid());
+    for (const std::vector<Offset>& pass : Passes(element)) {
+      packed = DilatePacked(packed, mask.width, pass);
+    }
+  }
+  return packed.Unpack();
+}
+
+BinaryMask ErodeAll(const BinaryMask& mask, const std::vector<StructuringElement>& elements) {
+  PackedMask packed = PackedMask::Pack(mask);
+  for (const StructuringElement& element : elements) {
+    assert(element.Valid());
+    for (const std::vector<Offset>& pass : Passes(element)) {
+      packed = ErodePacked(packed, mask.width, pass);
+    }
+  }
+  return packed.Unpack();
+}
+
+BinaryMask Dilate(const BinaryMask& mask, const StructuringElement& element) {
+  return DilateAll(mask, {element});
+}
+
+BinaryMask Erode(const BinaryMask& mask, const StructuringElement& element) {
+  return ErodeAll(mask, {element});
 }
 
 BinaryMask Open(const BinaryMask& mask, const StructuringElement& element) {
-  return Dilate(Erode(mask, element), element);
+  assert(element.Valid());
+  PackedMask packed = PackedMask::Pack(mask);
+  for (const auto& pass : Passes(element)) packed = ErodePacked(packed, mask.width, pass);
+  for (const auto& pass : Passes(element)) packed = DilatePacked(packed, mask.width, pass);
+  return packed.Unpack();
 }
 
 BinaryMask Close(const BinaryMask& mask, const StructuringElement& element) {
-  return Erode(Dilate(mask, element), element);
+  assert(element.Valid());
+  PackedMask packed = PackedMask::Pack(mask);
+  for (const auto& pass : Passes(element)) packed = DilatePacked(packed, mask.width, pass);
+  for (const auto& pass : Passes(element)) packed = ErodePacked(packed, mask.width, pass);
+  return packed.Unpack();
 }
 
 namespace {

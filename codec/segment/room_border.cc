@@ -12,10 +12,15 @@
 //           minimum-distance "end of path" cell). The backward pass walks
 //           down the distances, preferring a step next to room space ("-4"),
 //           and the chain is closed through the -3 and -2 lines.
-// Acceptance: the polygon through the chain contains a room cell (point in
-// polygon); otherwise the next cut row around the mid-line is tried.
+// The room's component is the one holding D's outer boundary; the mid-line
+// rule is only counted (see segmentation.h for why).
+// Acceptance: the polygon through the chain holds the robot (point in
+// polygon) or, without one, at least half of the room's free cells;
+// otherwise the next cut row around the mid-line is tried, and at last the
+// outer contour of D is used.
+// linemap's addition: with protect_room_interior, the room's own interior
+// (M_H eroded by the 3x3 cross) is kept out of the band.
 #include <algorithm>
-#include <chrono>
 #include <deque>
 
 #include "codec/segment/segment_internal.h"
@@ -23,24 +28,10 @@
 namespace linemap::segment_internal {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double MsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+double MsSince(double start) { return ThreadCpuMs() - start; }
 
 constexpr int kDc[8] = {-1, 0, 1, -1, 1, -1, 0, 1};
 constexpr int kDr[8] = {-1, -1, -1, 0, 0, 1, 1, 1};
-
-// Entries into component `label` along its box's mid-line (left to right).
-int MidLineEntries(const Labeling& labels, std::int32_t label) {
-  const BoundingBox& box = labels.components[label - 1].box;
-  const int row = (box.min_row + box.max_row) / 2;
-  int entries = 0;
-  for (int col = box.min_col; col <= box.max_col; ++col) {
-    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
-  }
-  return entries;
-}
 
 // The Lee closure of one component, reusing its scratch arrays between cut
 // rows (only touched cells are reset).
@@ -224,16 +215,20 @@ class LeeCloser {
   std::vector<CellIndex> starts_;
 };
 
-// A room cell off the heavy border: the robot when it is there, else the
-// first free cell of E in raster order.
-std::optional<CellIndex> InteriorSeed(const RoomLayout& layout, const BinaryMask& eroded) {
-  if (layout.robot && eroded.get(layout.robot->col, layout.robot->row)) return layout.robot;
-  for (int r = 0; r < eroded.height; ++r) {
-    for (int c = 0; c < eroded.width; ++c) {
-      if (eroded.at(c, r) && layout.free.at(c, r)) return CellIndex{c, r};
-    }
+// Point in polygon (the paper's proposal for telling the room border from
+// other border components): the chain must hold the robot when its cell is
+// off the heavy border, and otherwise at least half of the room's free cells.
+bool HoldsTheRoom(const std::vector<CellIndex>& chain, const RoomLayout& layout,
+                  const BinaryMask& interior) {
+  if (chain.size() < 4) return false;
+  if (layout.robot && interior.get(layout.robot->col, layout.robot->row)) {
+    return PolygonContains(chain, layout.robot->col, layout.robot->row);
   }
-  return std::nullopt;
+  const BinaryMask fill = FillChainPolygon(chain, layout.free.width, layout.free.height);
+  std::size_t enclosed = 0;
+  for (std::size_t i = 0; i < fill.bits.size(); ++i)
+    enclosed += fill.bits[i] && layout.free.bits[i];
+  return 2 * enclosed >= layout.free_cells;
 }
 
 std::vector<CellIndex> FallbackContour(const BinaryMask& dilated) {
@@ -246,17 +241,30 @@ std::vector<CellIndex> FallbackContour(const BinaryMask& dilated) {
 
 HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
                                const std::vector<StructuringElement>& dilate,
-                               const std::vector<StructuringElement>& erode) {
+                               const std::vector<StructuringElement>& erode,
+                               bool protect_room_interior) {
   HeavyBorder border;
-  border.dilated = layout.room;
-  for (const StructuringElement& element : dilate) {
-    border.dilated = Dilate(border.dilated, element);
+  border.dilated = DilateAll(layout.room, dilate);
+  // D and E are computed on the whole crop, which reaches past the grid, so a
+  // room that touches the map edge is not eaten into by the erosion; only
+  // the band's cells inside the grid can carry the chain.
+  border.eroded = ErodeAll(border.dilated, erode);
+  if (protect_room_interior) {
+    border.eroded = Union(border.eroded, Erode(layout.room, StructuringElement::Cross3()));
   }
+  border.band = Intersect(Subtract(border.dilated, border.eroded), layout.in_grid);
   border.dilated = Intersect(border.dilated, layout.in_grid);
-  border.eroded = border.dilated;
-  for (const StructuringElement& element : erode) border.eroded = Erode(border.eroded, element);
-  border.band = Subtract(border.dilated, border.eroded);
   return border;
+}
+
+int MidLineEntries(const Labeling& labels, std::int32_t label) {
+  const BoundingBox& box = labels.components[label - 1].box;
+  const int row = (box.min_row + box.max_row) / 2;
+  int entries = 0;
+  for (int col = box.min_col; col <= box.max_col; ++col) {
+    if (labels.at(col, row) == label && labels.get(col - 1, row) != label) ++entries;
+  }
+  return entries;
 }
 
 bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row) {
@@ -275,22 +283,21 @@ bool PolygonContains(const std::vector<CellIndex>& chain, double col, double row
 BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& border,
                               int max_cut_rows) {
   BorderClosure closure;
-  auto start = Clock::now();
+  auto start = ThreadCpuMs();
   const Labeling labels = LabelComponents(border.band, Connectivity::kEight);
   closure.border_components = static_cast<int>(labels.components.size());
   for (std::size_t k = 0; k < labels.components.size(); ++k) {
     if (MidLineEntries(labels, static_cast<std::int32_t>(k + 1)) >= 2) ++closure.ring_components;
   }
   closure.border_ms = MsSince(start);
-  start = Clock::now();
+  start = ThreadCpuMs();
   // The outer border is the component of D's first cell (D's outer boundary
   // is in the band and 8-connected).
   std::int32_t outer = 0;
   for (std::size_t i = 0; i < border.dilated.bits.size() && !outer; ++i) {
     if (border.dilated.bits[i]) outer = labels.labels[i];
   }
-  const std::optional<CellIndex> seed = InteriorSeed(layout, border.eroded);
-  if (outer > 0 && seed) {
+  if (outer > 0) {
     const BinaryMask room_space = Intersect(border.eroded, layout.room);
     LeeCloser closer(labels, outer, border.eroded, room_space);
     const BoundingBox& box = labels.components[outer - 1].box;
@@ -300,7 +307,7 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
       const int row = mid + offset;
       if (row <= box.min_row || row >= box.max_row) continue;
       std::vector<CellIndex> chain = closer.Close(row);
-      if (chain.size() >= 4 && PolygonContains(chain, seed->col, seed->row)) {
+      if (HoldsTheRoom(chain, layout, border.eroded)) {
         closure.chain = std::move(chain);
         closure.closed_by_lee = true;
         break;

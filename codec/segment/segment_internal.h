@@ -37,7 +37,9 @@ std::vector<FurnitureBlob> ExtractBlobs(const Grid& grid, const RoomLayout& layo
                                         std::vector<std::uint8_t>* claimed);
 
 // Stage 1: D = room dilated by each of `dilate`, E = D eroded by each of
-// `erode`, band = D \ E (the heavy border). D is kept inside the grid.
+// `erode`, band = D \ E (the heavy border). D and the band are clipped to
+// the grid after E is computed. With `protect_room_interior`, E also holds
+// the room's own interior cells (M_H eroded by the 3x3 cross).
 struct HeavyBorder {
   BinaryMask dilated;
   BinaryMask eroded;
@@ -45,7 +47,8 @@ struct HeavyBorder {
 };
 HeavyBorder ComputeHeavyBorder(const RoomLayout& layout,
                                const std::vector<StructuringElement>& dilate,
-                               const std::vector<StructuringElement>& erode);
+                               const std::vector<StructuringElement>& erode,
+                               bool protect_room_interior);
 
 // Stages 3 and 4: the room's closed chain (crop-local cells).
 struct BorderClosure {
@@ -58,6 +61,16 @@ struct BorderClosure {
 };
 BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& border,
                               int max_cut_rows);
+
+// The paper's mid-line rule (section 3.2 C): how many times the row through
+// the middle of the component's box switches from other cells into the
+// component, left to right. Two or more = a room border for the paper.
+int MidLineEntries(const Labeling& labels, std::int32_t label);
+
+// CPU time of the calling thread in milliseconds, for the stage timers: on
+// an idle machine it equals wall time, on a shared one it is not inflated by
+// waiting for a core.
+double ThreadCpuMs();
 
 // Even-odd test of the point (col, row) against the polygon through the
 // chain's cell centres (half-open rule on rows, so vertices on the scan row

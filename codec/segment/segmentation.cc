@@ -4,8 +4,8 @@
 #include "linemap/segmentation.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <string>
 
 #include "codec/segment/segment_internal.h"
@@ -13,10 +13,7 @@
 namespace linemap {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double MsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+double MsSince(double start) { return segment_internal::ThreadCpuMs() - start; }
 
 Status ValidateOptions(const SegmentationOptions& options) {
   for (const auto* list : {&options.border_dilate, &options.border_erode}) {
@@ -45,6 +42,10 @@ int HalfExtent(const std::vector<StructuringElement>& elements) {
 // cells when its own cell is not free).
 StatusOr<std::int32_t> RobotRoom(const Grid& grid, const Labeling& free_labels, CellPoint robot,
                                  CellIndex* cell) {
+  constexpr double kFar = 1e9;  // keeps the rounding below in int range
+  if (!(std::abs(robot.col) < kFar && std::abs(robot.row) < kFar)) {
+    return InvalidArgumentError("robot position is outside the map");
+  }
   const int col = static_cast<int>(std::lround(robot.col));
   const int row = static_cast<int>(std::lround(robot.row));
   if (!grid.Contains(col, row)) {
@@ -98,6 +99,14 @@ std::size_t CountEnclosedFree(const segment_internal::RoomLayout& layout,
 
 }  // namespace
 
+namespace segment_internal {
+double ThreadCpuMs() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return now.tv_sec * 1e3 + now.tv_nsec * 1e-6;
+}
+}  // namespace segment_internal
+
 BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int height) {
   BinaryMask fill(width, height);
   const std::size_t n = chain.size();
@@ -132,8 +141,8 @@ BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int 
 StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& options) {
   LINEMAP_RETURN_IF_ERROR(ValidateOptions(options));
   Segmentation result;
-  const auto total_start = Clock::now();
-  auto start = Clock::now();
+  const auto total_start = segment_internal::ThreadCpuMs();
+  auto start = segment_internal::ThreadCpuMs();
   BinaryMask free(grid.width(), grid.height());
   for (std::size_t i = 0; i < grid.size(); ++i) free.bits[i] = grid.cells()[i] == Cell::kFree;
   const Labeling free_labels = LabelComponents(free, Connectivity::kFour);
@@ -153,17 +162,17 @@ StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& o
   const int margin = HalfExtent(options.border_dilate) + 2;
   std::vector<std::uint8_t> claimed(grid.size(), 0);
   for (const std::int32_t label : room_labels) {
-    start = Clock::now();
+    start = segment_internal::ThreadCpuMs();
     const segment_internal::RoomLayout layout =
         segment_internal::BuildRoomLayout(grid, free_labels, label, margin, robot_cell);
     result.timings.room_layout_ms += MsSince(start);
 
-    start = Clock::now();
-    const segment_internal::HeavyBorder border =
-        segment_internal::ComputeHeavyBorder(layout, options.border_dilate, options.border_erode);
+    start = segment_internal::ThreadCpuMs();
+    const segment_internal::HeavyBorder border = segment_internal::ComputeHeavyBorder(
+        layout, options.border_dilate, options.border_erode, options.protect_room_interior);
     result.timings.morphology_ms += MsSince(start);
 
-    start = Clock::now();
+    start = segment_internal::ThreadCpuMs();
     std::vector<FurnitureBlob> blobs =
         segment_internal::ExtractBlobs(grid, layout, options.furniture_closing, &claimed);
     result.timings.furniture_ms += MsSince(start);

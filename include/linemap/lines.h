@@ -10,6 +10,7 @@
 #define LINEMAP_LINES_H_
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -31,7 +32,7 @@ struct CellPoint {
 
 enum class LineMethod {
   kRmLine,   // the paper's method, as written
-  kLinemap,  // linemap's own extractor (the default once it lands)
+  kLinemap,  // linemap's own extractor (the default)
 };
 
 // The paper's edge map (section 2.1): obstacle cells 4-adjacent to the free
@@ -48,18 +49,46 @@ struct EdgeMap {
 EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot = std::nullopt);
 
 struct LineExtractionOptions {
-  LineMethod method = LineMethod::kRmLine;
+  LineMethod method = LineMethod::kLinemap;
   std::optional<CellPoint> robot;  // cell units; see ComputeEdgeMap
-  // RM-Line parameters (documented with units and defaults where defined).
-  double rmline_dtheta_deg = 1.0;
-  double rmline_ds_cells = 0.5;
-  // linemap extractor: every edge cell lies within epsilon of a segment (cells).
+  // RM-Line parameters (the paper gives no values; see codec/lines/rmline.cc).
+  double rmline_dtheta_deg = 1.0;  // ray angle step, degrees, (0, 180]
+  double rmline_ds_cells = 0.5;    // scoring point spacing, cells, (0, 1]
+  // linemap extractor: every edge cell lies within epsilon of a segment
+  // (cells, >= 0.5), except the cells left to the furniture layer.
   double epsilon_cells = 1.0;
+  // linemap extractor: pieces whose facing ends are at most this far apart
+  // (cells) may merge into one segment when the bound still holds. Below a
+  // doorway's width (16-18 cells at 5 cm) so that doors stay open.
+  double merge_gap_cells = 8.0;
+  // linemap extractor: edge components (8-connected) with fewer cells than
+  // this, and not within epsilon of a segment, are left to the furniture
+  // layer instead of getting their own segment (speckle; 2 = lone cells).
+  int min_component_cells = 2;
+  // linemap extractor: a merge (or the removal of a covered segment) is made
+  // only if it adds at most this much to the summed distance of the cells to
+  // their segment (cells). It trades one segment against DisPL_ave: merging
+  // the two sides of a two-cell wall adds half a cell per cell and is refused
+  // for walls longer than this.
+  double max_added_cost_cells = 3.0;
+  // linemap extractor: chains are first cut into pieces within this distance
+  // of their line (cells; capped at epsilon_cells), then merged under
+  // epsilon_cells and max_added_cost_cells. Below 0.5 the pieces are digital
+  // straight segments, so the two sides of a wall never start merged.
+  double split_epsilon_cells = 0.3;
+  // linemap extractor: segment ends at most this far apart (cells) that meet
+  // at more than 20 degrees are extended to their common corner (0 = off).
+  double corner_join_cells = 3.0;
 };
 
 struct LineExtraction {
   std::vector<LineSegment> segments;
   EdgeMap edges;  // the edge map the lines were extracted from
+  // linemap extractor only: edge cells deliberately left to the furniture
+  // layer (not within epsilon of any segment), as width*height flags
+  // (empty for RM-Line), and their number.
+  std::vector<std::uint8_t> left_to_blobs;
+  std::size_t cells_left_to_blobs = 0;
 };
 
 StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOptions& options);

@@ -64,6 +64,9 @@ struct StructuringElement {
 
 BinaryMask Dilate(const BinaryMask& mask, const StructuringElement& element);
 BinaryMask Erode(const BinaryMask& mask, const StructuringElement& element);
+// The elements applied in order, without unpacking in between.
+BinaryMask DilateAll(const BinaryMask& mask, const std::vector<StructuringElement>& elements);
+BinaryMask ErodeAll(const BinaryMask& mask, const std::vector<StructuringElement>& elements);
 BinaryMask Open(const BinaryMask& mask, const StructuringElement& element);   // erode, dilate
 BinaryMask Close(const BinaryMask& mask, const StructuringElement& element);  // dilate, erode
 

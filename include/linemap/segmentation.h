@@ -10,23 +10,30 @@
 //                   the robot; without a robot every free component of at
 //                   least min_room_cells cells is a room);
 //   furniture (2)   everything enclosed by that free space: the components of
-//                   its complement (8-connected) that do not reach the map
-//                   edge, i.e. the point-in-polygon test the paper proposes,
-//                   done on cells. Pillars and columns inside a room land
-//                   here whatever their shape;
+//                   its complement (8-connected) that do not reach beyond the
+//                   map edge, i.e. the point-in-polygon test the paper
+//                   proposes, done on cells. Pillars and columns inside a
+//                   room land here whatever their shape. The blobs are the
+//                   occupied cells of these parts, grouped by an optional
+//                   closing (furniture_closing) and 8-connectivity;
 //   walls (1)       occupied cells 8-adjacent to the free space that are not
 //                   furniture;
 //   virgin (0)      the rest.
 // The heavy border (section 3.2 C) is D \ E with D = M_H dilated by
 // border_dilate (in order) and E = D eroded by border_erode (in order),
-// M_H = cells marked 1..3. Its 8-connected components are classified by the
+// M_H = cells marked 1..3. Its 8-connected components are counted, and the
 // paper's mid-line rule (two or more entries along the horizontal mid-line
-// of the box = room border); the outer one is opened with the -2 / -3 lines
-// and closed by the Lee wave and a backward pass that prefers steps next to
-// room space, which cuts the surges. The chain is accepted when the polygon
-// through its cell centres contains a room cell (point in polygon);
-// otherwise other cut rows are tried, and as a last resort the outer contour
-// of D is used (RoomBorder::closed_by_lee = false).
+// of the box = room border) is applied to each (RoomBorder::ring_components).
+// The rule alone would call a hollow pillar a room border and a U-shaped room
+// furniture, so the room's border is decided topologically instead: it is
+// the component holding D's outer boundary (its first cell in raster order).
+// That component is opened with the -2 / -3 lines on a cut row and closed by
+// the Lee wave and a backward pass that prefers steps next to room space,
+// which cuts the surges. The chain is accepted when the polygon through its
+// cell centres holds the robot (point in polygon, as the paper proposes) or,
+// without a robot, at least half of the room's free cells; otherwise the
+// next cut row around the mid-line is tried, and as a last resort the outer
+// contour of D is used (RoomBorder::closed_by_lee = false).
 #ifndef LINEMAP_SEGMENTATION_H_
 #define LINEMAP_SEGMENTATION_H_
 
@@ -60,7 +67,10 @@ struct FurnitureBlob {
   std::size_t cell_count = 0;
   CellIndex first_cell;  // first cell in raster order (row-major from row 0)
   BoundingBox box;
-  std::vector<CellIndex> outline;  // closed boundary chain of the blob
+  // Closed outer boundary chain of the blob (Moore tracing, 8-adjacent
+  // steps). Where furniture_closing joined several pieces, it runs around
+  // the joined shape, so it may pass over the closing's bridge cells.
+  std::vector<CellIndex> outline;
 };
 
 struct SegmentationOptions {
@@ -80,11 +90,20 @@ struct SegmentationOptions {
   // furniture into one blob (default: the 3x3 cross; nullopt = no joining).
   // Blob cells stay the exact occupied cells.
   std::optional<StructuringElement> furniture_closing = StructuringElement::Cross3();
-  // Cut rows tried around the mid-line before falling back (default 64).
-  int max_cut_rows = 64;
+  // linemap's addition to the paper: the room's own interior cells (M_H
+  // eroded by the 3x3 cross) are kept out of the heavy border, so the
+  // shortest path can cut surges and gaps of at most two cells but never
+  // across a narrow part of the room (a doorway, a corridor), which would
+  // leave whole rooms outside the chain (default true; false = the paper).
+  bool protect_room_interior = true;
+  // Cut rows tried on each side of the mid-line before falling back
+  // (default 16).
+  int max_cut_rows = 16;
 };
 
-// Wall-clock milliseconds of the stages, numbered as the paper's Table 1.
+// Milliseconds of CPU time of the calling thread spent in each stage
+// (numbered as the paper's Table 1); on an idle machine this is the wall
+// time, on a busy one it leaves out the waiting for a core.
 struct SegmentationTimings {
   double room_layout_ms = 0;  // free components, enclosure (our pre-processing)
   double morphology_ms = 0;   // stage 1: dilations, erosions, subtraction

@@ -1,20 +1,50 @@
-// linemap decode: not implemented yet (see the open issues).
+// linemap decode IN.lmap -o OUT.yaml: writes OUT.yaml and OUT.pgm as nav2's
+// map_saver does (trinary).
 #include <cstdio>
 
+#include "format/file_io.h"
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
 #include "tools/linemap/commands.h"
+#include "tools/linemap/lmap_cli_util.h"
 
 namespace linemap::cli {
 
+namespace {
+std::vector<OptionSpec> DecodeOptions() {
+  std::vector<OptionSpec> options = {{"-o", "OUT.yaml", "output YAML; the PGM goes beside it"}};
+  for (OptionSpec& o : DecodeLimitOptionSpecs()) options.push_back(std::move(o));
+  return options;
+}
+}  // namespace
+
 const CommandSpec kDecodeSpec = {
-    "decode", "IN.lmap -o OUT.yaml", "decode an .lmap file into a ROS map (YAML + PGM)", "", {}, 0,
-    1000,
+    "decode",
+    "IN.lmap -o OUT.yaml",
+    "decode an .lmap file into a ROS map (YAML + PGM)",
+    "Writes OUT.yaml and OUT.pgm (0 occupied, 254 free, 205 unknown) as nav2's\n"
+    "map_saver does, so nav2's map_server loads the result.",
+    DecodeOptions(),
+    1,
+    1,
 };
 
 int RunDecode(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
-  if (!ParseArgs(kDecodeSpec, args, &exit_code)) return exit_code;
-  std::fprintf(stderr, "linemap decode: not implemented yet in this version\n");
-  return kExitFailure;
+  std::optional<ParsedArgs> parsed = ParseArgs(kDecodeSpec, args, &exit_code);
+  if (!parsed) return exit_code;
+  const std::optional<std::string> out = parsed->Get("-o");
+  if (!out) return ReportError("decode", InvalidArgumentError("missing -o OUT.yaml"));
+  if (IsDirectory(*out)) {
+    return ReportError("decode", InvalidArgumentError("'" + *out + "' is a directory"));
+  }
+  StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
+  if (!limits.ok()) return ReportError("decode", limits.status());
+  StatusOr<Grid> grid = LoadLmap(parsed->positional[0], *limits);
+  if (!grid.ok()) return ReportError("decode", grid.status());
+  Status saved = SaveRosMap(*out, *grid);
+  if (!saved.ok()) return ReportError("decode", saved);
+  return kExitOk;
 }
 
 }  // namespace linemap::cli

@@ -1,19 +1,114 @@
-// linemap encode: not implemented yet (see the open issues).
+// linemap encode MAP -o OUT.lmap [--lossless] [--method linemap|rmline]
+//                 [--epsilon E] [--pose X,Y[,YAW]] [--json]
 #include <cstdio>
 
+#include "format/file_io.h"
+#include "linemap/codec.h"
 #include "tools/linemap/commands.h"
+#include "tools/linemap/json.h"
+#include "tools/linemap/lmap_cli_util.h"
+#include "tools/linemap/map_input.h"
 
 namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
-    "encode", "MAP -o OUT.lmap", "compress a map into an .lmap file", "", {}, 0, 1000,
+    "encode",
+    "MAP -o OUT.lmap [--lossless] [--method linemap|rmline] [--epsilon E] [--pose X,Y]",
+    "compress a map into an .lmap file",
+    "Prints the input cells, the output bytes, the ratio to the smallest PNG\n"
+    "(zlib level 9, grey or palette) of the same trinary map, and the time.\n"
+    "The output is written atomically: an existing OUT.lmap is replaced only\n"
+    "by a complete new file.",
+    WithMapLoadOptions({
+        {"-o", "OUT.lmap", "output file (required)"},
+        {"--lossless", "", "store a residual so the decoded grid equals the input exactly"},
+        {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
+        {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
+        {"--pose", "X,Y[,YAW]", "robot pose in map-frame metres, stored as metadata"},
+        {"--time", "TEXT",
+         "creation time stored as metadata (default: none, for reproducible output)"},
+        {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
+        {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
+        {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
+        {"--json", "", "print one JSON object instead of text"},
+    }),
+    1,
+    1,
 };
+
+namespace {
+
+StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
+  EncodeOptions options;
+  options.lossless = args.Has("--lossless");
+  options.store_room_chains = args.Has("--rooms");
+  if (args.Has("--no-segments")) options.store_segments = false;
+  if (std::optional<std::string> method = args.Get("--method")) {
+    if (*method == "linemap") {
+      options.method = LineMethod::kLinemap;
+    } else if (*method == "rmline") {
+      options.method = LineMethod::kRmLine;
+    } else {
+      return InvalidArgumentError("--method must be linemap or rmline, not '" + *method + "'");
+    }
+  }
+  LINEMAP_ASSIGN_OR_RETURN(options.epsilon_cells, args.GetDouble("--epsilon", 1.0));
+  if (!(options.epsilon_cells > 0)) return InvalidArgumentError("--epsilon must be positive");
+  if (args.Get("--pose")) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<double> pose, args.GetDoubleList("--pose", 2, 3));
+    options.robot_pose = Pose2D{pose[0], pose[1], pose.size() > 2 ? pose[2] : 0.0};
+  }
+  if (std::optional<std::string> time = args.Get("--time")) options.time = *time;
+  if (args.Has("--metadata")) {
+    options.creator = std::string("linemap ") + LINEMAP_VERSION_STRING;
+    options.frame_id = "map";
+  }
+  return options;
+}
+
+}  // namespace
 
 int RunEncode(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
-  if (!ParseArgs(kEncodeSpec, args, &exit_code)) return exit_code;
-  std::fprintf(stderr, "linemap encode: not implemented yet in this version\n");
-  return kExitFailure;
+  std::optional<ParsedArgs> parsed = ParseArgs(kEncodeSpec, args, &exit_code);
+  if (!parsed) return exit_code;
+  const std::optional<std::string> out = parsed->Get("-o");
+  if (!out) return ReportError("encode", InvalidArgumentError("missing -o OUT.lmap"));
+  if (IsDirectory(*out)) {
+    return ReportError("encode", InvalidArgumentError("'" + *out + "' is a directory"));
+  }
+  StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);
+  if (!options.ok()) return ReportError("encode", options.status());
+  const double start = NowSeconds();
+  StatusOr<Grid> grid = LoadMapArgument(parsed->positional[0], *parsed);
+  if (!grid.ok()) return ReportError("encode", grid.status());
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *options);
+  if (!bytes.ok()) return ReportError("encode", bytes.status());
+  Status written = WriteFileAtomic(
+      *out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
+  if (!written.ok()) return ReportError("encode", written);
+  const double seconds = NowSeconds() - start;
+  StatusOr<std::size_t> png = SmallestTrinaryPngBytes(*grid);
+  if (!png.ok()) return ReportError("encode", png.status());
+  const double ratio = *png > 0 ? static_cast<double>(bytes->size()) / *png : 0.0;
+  if (parsed->Has("--json")) {
+    JsonObject json;
+    json.Add("cells", std::uint64_t{grid->size()})
+        .Add("bytes", std::uint64_t{bytes->size()})
+        .Add("png_bytes", std::uint64_t{*png})
+        .Add("ratio_to_png", ratio)
+        .Add("lossless", options->lossless)
+        .Add("seconds", seconds);
+    std::printf("%s\n", json.str().c_str());
+    return kExitOk;
+  }
+  std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
+  std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
+              options->lossless ? "lossless" : "lossy");
+  std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
+              ratio > 0 ? 1.0 / ratio : 0.0);
+  std::printf("time:    %.3f s\n", seconds);
+  return kExitOk;
 }
 
 }  // namespace linemap::cli

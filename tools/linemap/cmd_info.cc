@@ -1,8 +1,10 @@
 // linemap info MAP [--json]: size, resolution, origin and cell counts.
 #include <cstdio>
 
+#include "linemap/codec.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
+#include "tools/linemap/lmap_cli_util.h"
 #include "tools/linemap/map_input.h"
 
 namespace linemap::cli {
@@ -11,8 +13,10 @@ const CommandSpec kInfoSpec = {
     "info",
     "MAP [--json]",
     "print a map's size, resolution, origin and free / occupied / unknown cell counts",
-    "MAP is a ROS map YAML (its image: PGM or PNG) or a bare PGM/PNG image, which\n"
-    "gets the defaults 0.05 m/cell, origin 0,0,0 and thresholds 0.65 / 0.196.",
+    "MAP is a ROS map YAML (its image: PGM or PNG), a bare PGM/PNG image, which\n"
+    "gets the defaults 0.05 m/cell, origin 0,0,0 and thresholds 0.65 / 0.196,\n"
+    "or an .lmap file: then its header, chunks (size, coder) and the counts of\n"
+    "segments, room chains and blobs are printed.",
     WithMapLoadOptions({{"--json", "",
                          "print one JSON object with keys width, height, "
                          "resolution, origin, free, occupied, unknown"}}),
@@ -20,10 +24,72 @@ const CommandSpec kInfoSpec = {
     1,
 };
 
+namespace {
+
+// `linemap info X.lmap`: the header fields, each chunk with its size and
+// coder, and the counts of segments, chains and blobs.
+int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
+  DecodeLimits limits;
+  StatusOr<LmapContents> contents = LoadLmapContents(path, limits);
+  if (!contents.ok()) return ReportError("info", contents.status());
+  const Grid& grid = contents->grid;
+  const CellCounts counts = grid.Count();
+  if (args.Has("--json")) {
+    std::string chunks = "[";
+    for (const LmapChunkInfo& c : contents->chunks) {
+      JsonObject o;
+      o.Add("type", c.type).Add("bytes", std::uint64_t{c.payload_bytes}).Add("coder", c.coder);
+      chunks += (chunks.size() > 1 ? "," : "") + o.str();
+    }
+    chunks += "]";
+    JsonObject json;
+    json.Add("version", std::to_string(contents->major) + "." + std::to_string(contents->minor))
+        .Add("width", grid.width())
+        .Add("height", grid.height())
+        .Add("resolution", grid.meta.resolution)
+        .Add("origin",
+             std::vector<double>{grid.meta.origin.x, grid.meta.origin.y, grid.meta.origin.yaw})
+        .Add("lossless", contents->lossless)
+        .Add("segments", std::uint64_t{contents->segments.size()})
+        .Add("room_chains", std::uint64_t{contents->room_chains.size()})
+        .Add("blobs", std::uint64_t{contents->blob_outlines.size()})
+        .Add("free", std::uint64_t{counts.free})
+        .Add("occupied", std::uint64_t{counts.occupied})
+        .Add("unknown", std::uint64_t{counts.unknown})
+        .AddRaw("chunks", chunks);
+    std::printf("%s\n", json.str().c_str());
+    return kExitOk;
+  }
+  std::printf("file:       %s (.lmap version %d.%d, %s)\n", path.c_str(), contents->major,
+              contents->minor, contents->lossless ? "lossless" : "lossy");
+  std::printf("size:       %d x %d cells\n", grid.width(), grid.height());
+  std::printf("resolution: %g m/cell\n", grid.meta.resolution);
+  std::printf("origin:     x %g m, y %g m, yaw %g rad\n", grid.meta.origin.x, grid.meta.origin.y,
+              grid.meta.origin.yaw);
+  std::printf("pixels:     mode %s, negate %d, occupied_thresh %g, free_thresh %g\n",
+              MapModeName(grid.meta.mode), grid.meta.negate ? 1 : 0, grid.meta.occupied_thresh,
+              grid.meta.free_thresh);
+  std::printf("geometry:   %zu segments, %zu room chains, %zu blobs\n", contents->segments.size(),
+              contents->room_chains.size(), contents->blob_outlines.size());
+  std::printf("decoded:    %zu free, %zu occupied, %zu unknown\n", counts.free, counts.occupied,
+              counts.unknown);
+  for (const auto& [key, value] : contents->metadata) {
+    std::printf("meta:       %s = %s\n", key.c_str(), value.c_str());
+  }
+  for (const LmapChunkInfo& c : contents->chunks) {
+    std::printf("chunk:      %s %8zu bytes  %s\n", c.type.c_str(), c.payload_bytes,
+                c.coder.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
 int RunInfo(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kInfoSpec, args, &exit_code);
   if (!parsed) return exit_code;
+  if (IsLmapFile(parsed->positional[0])) return RunLmapInfo(parsed->positional[0], *parsed);
   StatusOr<Grid> grid = LoadMapArgument(parsed->positional[0], *parsed);
   if (!grid.ok()) return ReportError("info", grid.status());
   const CellCounts counts = grid->Count();

@@ -26,7 +26,7 @@ const CommandSpec kLinesSpec = {
     "largest such distance in cells, and the extraction time in ms.",
     WithMapLoadOptions({
         {"-o", "LINES.csv", "write the segments as CSV (layer,x1,y1,x2,y2; metres)"},
-        {"--method", "NAME", "rmline (the paper's method) or linemap (default rmline)"},
+        {"--method", "NAME", "linemap (default) or rmline (the paper's method)"},
         {"--dtheta", "D", "RM-Line ray angle step in degrees (default 1)"},
         {"--ds", "S", "RM-Line scoring point spacing in cells, (0, 1] (default 0.5)"},
         {"--epsilon", "E",
@@ -44,7 +44,7 @@ namespace {
 
 StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Grid& grid) {
   LineExtractionOptions options;
-  const std::string method = args.Get("--method").value_or("rmline");
+  const std::string method = args.Get("--method").value_or("linemap");
   if (method == "rmline") {
     options.method = LineMethod::kRmLine;
   } else if (method == "linemap") {
@@ -125,7 +125,8 @@ int RunLines(const std::vector<std::string>& args) {
         .Add("displ_max_cells", fidelity.displ_max_cells)
         .Add("ms", ms)
         .Add("edge_cells", std::uint64_t{fidelity.edge_cells})
-        .Add("share_within_1", fidelity.share_within_1);
+        .Add("share_within_1", fidelity.share_within_1)
+        .Add("cells_left_to_blobs", std::uint64_t{extraction->cells_left_to_blobs});
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -135,6 +136,10 @@ int RunLines(const std::vector<std::string>& args) {
   std::printf("max:        %.4f cells\n", fidelity.displ_max_cells);
   std::printf("within 1:   %.2f%% of %zu edge cells\n", 100.0 * fidelity.share_within_1,
               fidelity.edge_cells);
+  if (options->method == LineMethod::kLinemap) {
+    std::printf("furniture:  %zu edge cells left to the furniture layer\n",
+                extraction->cells_left_to_blobs);
+  }
   std::printf("time:       %.1f ms\n", ms);
   return kExitOk;
 }

@@ -1,5 +1,8 @@
 #include "tools/linemap/map_input.h"
 
+#include "linemap/codec.h"
+#include "tools/linemap/lmap_cli_util.h"
+
 namespace linemap::cli {
 
 std::vector<OptionSpec> MapLoadOptionSpecs() {
@@ -60,6 +63,11 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
 
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
   LINEMAP_ASSIGN_OR_RETURN(MapLoadOptions options, MapLoadOptionsFrom(args));
+  if (IsLmapFile(path)) {  // an .lmap file is decoded
+    DecodeLimits limits;
+    limits.max_cells = options.max_cells;
+    return LoadLmap(path, limits);
+  }
   return LoadRosMap(path, options);
 }
 

@@ -1,0 +1,408 @@
+// The .lmap encoder (spec/format.md section "Encoding (informative)").
+//
+// Lossy layers, in decoding order:
+//   SEGS  wall segments on the integer lattice: the extractor's lines
+//         (ExtractLines, lines.h) rounded to cell centres, kept when at least
+//         min_segment_cells long and on the walls (FollowsWalls). Occupied
+//         cells within one cell of a segment are then dropped: the segment
+//         recalls them within one cell.
+//   OCCP  the remaining occupied cells, minus isolated occupied specks (at
+//         most kSpeckBudget of the occupied cells).
+//   FREE  the free cells, with free specks under kMinFreeRegionCells cells
+//         dropped and small enclosed holes filled (only when all their free
+//         neighbours are one region, so no two regions are ever joined).
+// Lossless mode codes the layers exactly (kExactLayers), or the lossy
+// layers plus RESD, the exact grid coded against the lossy one (kResidual).
+// ROOM and BLOB chunks are defined by the format; this encoder does not
+// write them yet (the planes proved cheaper, see spec/format.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+
+#include "codec/codec/chunk_coding.h"
+#include "codec/codec/draco_segments.h"
+#include "codec/codec/plane_coder.h"
+#include "codec/codec/raster.h"
+#include "format/container.h"
+#include "format/file_io.h"
+#include "linemap/codec.h"
+
+namespace linemap {
+namespace {
+
+// Free 4-connected regions smaller than this are dropped (cells).
+constexpr std::size_t kMinFreeRegionCells = 3;
+// Enclosed holes in the free space up to this size are filled (cells), at
+// most kHoleBudget of the free cells in all (unknown turned free <= 2%).
+constexpr std::size_t kMaxHoleCells = 8;
+constexpr double kHoleBudget = 0.01;
+// Largest share of occupied cells that may be dropped as isolated specks.
+constexpr double kSpeckBudget = 0.01;
+// Share of a stored segment's cells that must be occupied cells.
+constexpr double kMinOnWallShare = 0.75;
+
+// 4-connected components of the cells where `member` is 1; calls
+// visit(cells, touches_border) for each.
+void ForEachComponent(int width, int height, const std::vector<std::uint8_t>& member,
+                      const std::function<void(const std::vector<std::size_t>&, bool)>& visit) {
+  std::vector<std::uint8_t> seen = member;  // 1 = still to visit
+  std::vector<std::size_t> stack;
+  std::vector<std::size_t> cells;
+  for (std::size_t start = 0; start < seen.size(); ++start) {
+    if (!seen[start]) continue;
+    cells.clear();
+    bool border = false;
+    seen[start] = 0;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      cells.push_back(i);
+      const int c = static_cast<int>(i % width);
+      const int r = static_cast<int>(i / width);
+      if (c == 0 || r == 0 || c == width - 1 || r == height - 1) border = true;
+      auto push = [&](std::size_t j) {
+        if (seen[j]) {
+          seen[j] = 0;
+          stack.push_back(j);
+        }
+      };
+      if (c > 0) push(i - 1);
+      if (c + 1 < width) push(i + 1);
+      if (r > 0) push(i - width);
+      if (r + 1 < height) push(i + width);
+    }
+    visit(cells, border);
+  }
+}
+
+// Occupied cells to reproduce: all but isolated specks, within the budget.
+std::vector<std::uint8_t> OccupiedTarget(const Grid& grid, double speck_budget) {
+  const int w = grid.width();
+  const int h = grid.height();
+  const std::vector<Cell>& cells = grid.cells();
+  std::vector<std::uint8_t> target(cells.size(), 0);
+  std::size_t occupied = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    target[i] = cells[i] == Cell::kOccupied;
+    occupied += target[i];
+  }
+  std::size_t budget = static_cast<std::size_t>(speck_budget * static_cast<double>(occupied));
+  for (int r = 0; r < h && budget > 0; ++r) {
+    for (int c = 0; c < w && budget > 0; ++c) {
+      if (!target[grid.Index(c, r)]) continue;
+      bool alone = true;
+      for (int dr = -1; dr <= 1 && alone; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          if ((dr || dc) && grid.Contains(c + dc, r + dr) &&
+              cells[grid.Index(c + dc, r + dr)] == Cell::kOccupied) {
+            alone = false;
+            break;
+          }
+        }
+      }
+      if (alone) {
+        target[grid.Index(c, r)] = 0;
+        --budget;
+      }
+    }
+  }
+  return target;
+}
+
+// Free cells to reproduce: the free cells minus free specks, plus small
+// enclosed holes whose free neighbours all belong to one free region (so a
+// filled hole never joins two regions) and which hold no occupied cell that
+// will be drawn.
+std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::uint8_t>& occupied,
+                                       bool exact) {
+  const int w = grid.width();
+  const int h = grid.height();
+  const std::vector<Cell>& cells = grid.cells();
+  std::vector<std::uint8_t> target(cells.size(), 0);
+  std::vector<std::uint32_t> region(cells.size(), 0);
+  std::uint32_t regions = 0;
+  std::vector<std::uint8_t> member(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) member[i] = cells[i] == Cell::kFree;
+  ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool) {
+    ++regions;
+    if (!exact && comp.size() < kMinFreeRegionCells) return;
+    for (std::size_t i : comp) {
+      target[i] = 1;
+      region[i] = regions;
+    }
+  });
+  if (exact) return target;
+  std::size_t free_cells = 0;
+  for (std::uint8_t t : target) free_cells += t;
+  std::size_t budget = static_cast<std::size_t>(kHoleBudget * static_cast<double>(free_cells));
+  for (std::size_t i = 0; i < cells.size(); ++i) member[i] = target[i] == 0 && !occupied[i];
+  ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool border) {
+    if (border || comp.size() > kMaxHoleCells || comp.size() > budget) return;
+    std::uint32_t seen = 0;
+    for (std::size_t i : comp) {
+      const int c = static_cast<int>(i % w);
+      const int r = static_cast<int>(i / w);
+      const std::size_t around[4] = {i - 1, i + 1, i - w, i + w};
+      const bool inside[4] = {c > 0, c + 1 < w, r > 0, r + 1 < h};
+      for (int k = 0; k < 4; ++k) {
+        if (!inside[k]) continue;
+        const std::uint32_t id = region[around[k]];
+        if (id == 0) continue;
+        if (seen != 0 && seen != id) return;
+        seen = id;
+      }
+    }
+    if (seen == 0) return;
+    for (std::size_t i : comp) target[i] = 1;
+    budget -= comp.size();
+  });
+  return target;
+}
+
+// True when consecutive cells (and the last and first) are 8-neighbours and
+// all lie in the grid: what the ROOM chunk can store.
+bool IsStorableChain(const Grid& grid, const std::vector<CellIndex>& chain) {
+  if (chain.size() < 2) return false;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const CellIndex p = chain[i];
+    const CellIndex q = chain[(i + 1) % chain.size()];
+    if (!grid.Contains(p.col, p.row)) return false;
+    const int dc = std::abs(p.col - q.col);
+    const int dr = std::abs(p.row - q.row);
+    if (dc > 1 || dr > 1 || (dc == 0 && dr == 0)) return false;
+  }
+  return true;
+}
+
+// Room-border chains from the segmentation (segmentation.h).
+StatusOr<std::vector<std::vector<CellIndex>>> RoomChains(const Grid& grid,
+                                                         const EncodeOptions& options) {
+  SegmentationOptions seg_options;
+  if (options.robot_pose) {
+    CellPoint robot;
+    grid.WorldToCell(options.robot_pose->x, options.robot_pose->y, &robot.col, &robot.row);
+    if (grid.Contains(static_cast<int>(std::nearbyint(robot.col)),
+                      static_cast<int>(std::nearbyint(robot.row)))) {
+      seg_options.robot = robot;
+    }
+  }
+  LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
+  std::vector<std::vector<CellIndex>> chains;
+  for (RoomBorder& room : seg.rooms) {
+    if (IsStorableChain(grid, room.chain)) chains.push_back(std::move(room.chain));
+  }
+  return chains;
+}
+
+// Quantises an extracted line to the lattice: endpoints rounded to the
+// nearest cell centre and clamped into the map.
+LatticeSegment ToLattice(const LineSegment& line, int width, int height) {
+  auto clamp = [](double v, int hi) {
+    const double r = std::nearbyint(v);
+    return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(hi)));
+  };
+  return LatticeSegment{{clamp(line.x1, width - 1), clamp(line.y1, height - 1)},
+                        {clamp(line.x2, width - 1), clamp(line.y2, height - 1)}};
+}
+
+// True when the segment's cells stay on the walls: each within one cell of
+// an occupied cell of the map, and at least `min_on_wall_share` of them on
+// an occupied cell the decoder will draw anyway.
+bool FollowsWalls(const Grid& grid, const std::vector<std::uint8_t>& occupied,
+                  const LatticeSegment& s, double min_on_wall_share) {
+  std::size_t cells = 0, on_wall = 0;
+  bool near = true;
+  RasterizeSegment(s.a, s.b, [&](int c, int r) {
+    ++cells;
+    on_wall += occupied[grid.Index(c, r)];
+    bool any = false;
+    for (int dr = -1; dr <= 1 && !any; ++dr) {
+      for (int dc = -1; dc <= 1 && !any; ++dc) {
+        any = grid.Contains(c + dc, r + dr) && grid.at(c + dc, r + dr) == Cell::kOccupied;
+      }
+    }
+    near = near && any;
+  });
+  return near && static_cast<double>(on_wall) >= min_on_wall_share * static_cast<double>(cells);
+}
+
+// The wall segments to store: the extractor's lines on the lattice, kept
+// when they follow the walls.
+StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid,
+                                                   const std::vector<std::uint8_t>& occupied,
+                                                   const EncodeOptions& options, bool exact) {
+  std::vector<LatticeSegment> segments;
+  if (grid.empty()) return segments;
+  LineExtractionOptions line_options;
+  line_options.method = options.method;
+  line_options.epsilon_cells = options.epsilon_cells;
+  if (options.robot_pose) {
+    CellPoint robot;
+    grid.WorldToCell(options.robot_pose->x, options.robot_pose->y, &robot.col, &robot.row);
+    if (grid.Contains(static_cast<int>(std::nearbyint(robot.col)),
+                      static_cast<int>(std::nearbyint(robot.row)))) {
+      line_options.robot = robot;
+    }
+  }
+  StatusOr<LineExtraction> lines = ExtractLines(grid, line_options);
+  if (!lines.ok() && lines.status().code() == StatusCode::kUnsupported &&
+      options.method == LineMethod::kLinemap) {
+    // linemap's own extractor has not landed yet: RM-Line stands in.
+    line_options.method = LineMethod::kRmLine;
+    lines = ExtractLines(grid, line_options);
+  }
+  if (!lines.ok()) return lines.status();
+  for (const LineSegment& line : lines->segments) {
+    const LatticeSegment s = ToLattice(line, grid.width(), grid.height());
+    const int cells = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row)) + 1;
+    if (cells < options.min_segment_cells) continue;
+    if (FollowsWalls(grid, occupied, s, exact ? 1.0 : kMinOnWallShare)) segments.push_back(s);
+  }
+  CanonicalizeSegments(&segments);
+  segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+  return segments;
+}
+
+// The SEGS payload: varints raw or deflated, or Draco, whichever is
+// smallest (ties keep the earlier).
+std::vector<std::uint8_t> SegmentPayload(const std::vector<LatticeSegment>& segments) {
+  std::vector<std::uint8_t> best = WrapPayload(WriteSegments(segments), true);
+  const std::vector<std::uint8_t> draco = EncodeSegmentsDraco(segments);
+  if (!draco.empty() && draco.size() + 1 < best.size()) {
+    best.assign(1, static_cast<std::uint8_t>(PayloadCoder::kDraco));
+    best.insert(best.end(), draco.begin(), draco.end());
+  }
+  return best;
+}
+
+// After the segments are drawn (canvas occupied), the occupied cells within
+// one cell of them are already recalled: dropping them saves coding a second
+// wall layer. The segments' own cells become part of the target.
+void DropCellsNearSegments(const Grid& grid, const std::vector<Cell>& canvas,
+                           std::vector<std::uint8_t>* occupied) {
+  const int w = grid.width();
+  const int h = grid.height();
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = grid.Index(c, r);
+      if (canvas[i] == Cell::kOccupied) {
+        (*occupied)[i] = 1;
+        continue;
+      }
+      if (!(*occupied)[i]) continue;
+      bool near = false;
+      for (int dr = -1; dr <= 1 && !near; ++dr) {
+        for (int dc = -1; dc <= 1 && !near; ++dc) {
+          near = grid.Contains(c + dc, r + dr) &&
+                 canvas[grid.Index(c + dc, r + dr)] == Cell::kOccupied;
+        }
+      }
+      if (near) (*occupied)[i] = 0;
+    }
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions& options) {
+  std::vector<std::pair<std::string, std::string>> entries;
+  if (!options.creator.empty()) entries.emplace_back("creator", options.creator);
+  if (!options.time.empty()) entries.emplace_back("time", options.time);
+  if (!options.frame_id.empty()) entries.emplace_back("frame_id", options.frame_id);
+  if (options.robot_pose) {
+    char text[96];
+    std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", options.robot_pose->x,
+                  options.robot_pose->y, options.robot_pose->yaw);
+    entries.emplace_back("robot_pose", text);
+  }
+  return entries;
+}
+
+// One complete file. With `exact`, every occupied and free cell is
+// reproduced as it is and segments may only cover occupied cells, so no
+// residual is needed.
+StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options,
+                                               bool exact, bool with_segments) {
+  const int w = grid.width();
+  const int h = grid.height();
+  ContainerWriter writer;
+  writer.AddChunk(kHeaderChunk, WriteHeader(HeaderFields{w, h, grid.meta, options.lossless}));
+  const auto metadata = MetadataOf(options);
+  if (!metadata.empty()) {
+    writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
+  }
+
+  std::vector<Cell> canvas(grid.size(), Cell::kUnknown);
+  std::vector<std::uint8_t> occupied = OccupiedTarget(grid, exact ? 0.0 : kSpeckBudget);
+
+  if (options.store_room_chains) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::vector<CellIndex>> chains, RoomChains(grid, options));
+    if (!chains.empty()) {
+      writer.AddChunk(kRoomChunk, WrapPayload(WriteChains(chains), true));
+      for (const auto& chain : chains) {
+        FillChain(chain, [&](int c, int r) { canvas[grid.Index(c, r)] = Cell::kFree; });
+      }
+    }
+  }
+
+  std::vector<LatticeSegment> segments;
+  if (with_segments) {
+    LINEMAP_ASSIGN_OR_RETURN(segments, WallSegments(grid, occupied, options, exact));
+  }
+  if (!segments.empty()) {
+    writer.AddChunk(kSegmentChunk, SegmentPayload(segments));
+    for (const LatticeSegment& s : segments) {
+      RasterizeSegment(s.a, s.b, [&](int c, int r) { canvas[grid.Index(c, r)] = Cell::kOccupied; });
+    }
+    if (!exact) DropCellsNearSegments(grid, canvas, &occupied);
+  }
+  writer.AddChunk(kOccupiedChunk, WrapPayload(EncodeOccupiedPlane(occupied, canvas, w, h), false));
+  for (std::size_t i = 0; i < canvas.size(); ++i) {
+    if (occupied[i]) canvas[i] = Cell::kOccupied;
+  }
+  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, occupied, exact);
+  writer.AddChunk(kFreeChunk, WrapPayload(EncodeFreePlane(free_target, canvas, w, h), false));
+  for (std::size_t i = 0; i < canvas.size(); ++i) {
+    if (canvas[i] != Cell::kOccupied) canvas[i] = free_target[i] ? Cell::kFree : Cell::kUnknown;
+  }
+  if (options.lossless && canvas != grid.cells()) {
+    writer.AddChunk(kResidualChunk,
+                    WrapPayload(EncodeResidualPlane(grid.cells(), canvas, w, h), false));
+  }
+  return writer.Finish();
+}
+
+}  // namespace
+
+StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
+  const int w = grid.width();
+  const int h = grid.height();
+  if (w < 0 || h < 0 || grid.size() != static_cast<std::size_t>(w) * static_cast<std::size_t>(h)) {
+    return InvalidArgumentError("grid dimensions do not match its cells");
+  }
+  if (!(grid.meta.resolution > 0) || !std::isfinite(grid.meta.resolution)) {
+    return InvalidArgumentError("grid resolution must be a positive number");
+  }
+  if (options.min_segment_cells < 1) {
+    return InvalidArgumentError("min_segment_cells must be at least 1");
+  }
+  const bool exact = options.lossless && options.lossless_method == LosslessMethod::kExactLayers;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           EncodeFile(grid, options, exact, options.store_segments));
+  if (options.lossless && options.store_segments) {
+    // Lossless files need no geometry: keep segments only when they pay.
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> plain,
+                             EncodeFile(grid, options, exact, false));
+    if (plain.size() < bytes.size()) bytes = std::move(plain);
+  }
+  return bytes;
+}
+
+Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, EncodeLmap(grid, options));
+  return WriteFileAtomic(
+      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+}  // namespace linemap

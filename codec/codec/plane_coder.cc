@@ -1,0 +1,232 @@
+#include "codec/codec/plane_coder.h"
+
+#include "format/range_coder.h"
+
+namespace linemap {
+namespace {
+
+// A width x height bit plane with padding (2 cells left and right, 2 rows
+// below row 0, 1 row above the last), so the templates never test bounds.
+class PaddedPlane {
+ public:
+  PaddedPlane(int width, int height, std::uint8_t pad)
+      : stride_(static_cast<std::size_t>(width) + 4),
+        bits_(stride_ * (static_cast<std::size_t>(height) + 3), pad) {}
+  std::size_t At(int col, int row) const {
+    return (static_cast<std::size_t>(row) + 2) * stride_ + static_cast<std::size_t>(col) + 2;
+  }
+  std::uint8_t& operator[](std::size_t i) { return bits_[i]; }
+  std::uint8_t operator[](std::size_t i) const { return bits_[i]; }
+  std::size_t stride() const { return stride_; }
+
+ private:
+  std::size_t stride_;
+  std::vector<std::uint8_t> bits_;
+};
+
+// The 10-cell causal template (spec "Plane template"): W, WW, and the cells
+// at columns -1..+1, -2, +2 of the previous row and -1..+1 two rows back.
+inline unsigned Template10(const PaddedPlane& g, std::size_t i) {
+  const std::size_t s = g.stride();
+  const std::size_t n = i - s;
+  const std::size_t nn = n - s;
+  return g[i - 1] | g[i - 2] << 1 | g[n - 1] << 2 | g[n] << 3 | g[n + 1] << 4 | g[n - 2] << 5 |
+         g[n + 2] << 6 | g[nn] << 7 | g[nn - 1] << 8 | g[nn + 1] << 9;
+}
+
+inline bool IsFree(Cell c) { return c == Cell::kFree; }
+inline bool IsOccupied(Cell c) { return c == Cell::kOccupied; }
+
+Status CheckEnd(const RangeDecoder& dec, std::size_t size, const char* plane) {
+  // Decoding must read every stored byte (the zero tail it reads beyond is
+  // implied), so a stream with extra bytes is corrupt.
+  if (!dec.valid_start() || dec.consumed() != size) {
+    return CorruptError(std::string(plane) + " range-coded data is malformed or truncated");
+  }
+  return Status::Ok();
+}
+
+// The canvas's occupied cells as a padded plane.
+PaddedPlane OccupiedPlane(const std::vector<Cell>& canvas, int width, int height) {
+  PaddedPlane occ(width, height, 0);
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      occ[occ.At(col, row)] = IsOccupied(canvas[cell]) ? 1 : 0;
+    }
+  }
+  return occ;
+}
+
+// OCCP context: the template over the occupancy so far (cells the canvas
+// already holds as occupied count, also ahead of the scan), the canvas
+// occupancy east and on the next row, and whether the canvas cell is free.
+inline unsigned OccupiedContext(const PaddedPlane& g, std::size_t i, bool canvas_free) {
+  return Template10(g, i) | g[i + 1] << 10 | g[i + g.stride()] << 11 |
+         (canvas_free ? 1u : 0u) << 12;
+}
+constexpr unsigned kOccupiedContexts = 1u << 13;
+
+// FREE context: the template over the free bits, the canvas occupancy at the
+// four neighbours, and whether the canvas cell is free.
+inline unsigned FreeContext(const PaddedPlane& f, const PaddedPlane& occ, std::size_t i,
+                            bool canvas_free) {
+  const std::size_t s = occ.stride();
+  return Template10(f, i) | occ[i - 1] << 10 | occ[i + 1] << 11 | occ[i - s] << 12 |
+         occ[i + s] << 13 | (canvas_free ? 1u : 0u) << 14;
+}
+constexpr unsigned kFreeContexts = 1u << 15;
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& target,
+                                              const std::vector<Cell>& canvas, int width,
+                                              int height) {
+  PaddedPlane g = OccupiedPlane(canvas, width, height);
+  std::vector<BitModel> models(kOccupiedContexts);
+  RangeEncoder enc;
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      if (IsOccupied(canvas[cell])) continue;
+      const std::size_t i = g.At(col, row);
+      const int bit = target[cell] ? 1 : 0;
+      enc.Encode(&models[OccupiedContext(g, i, IsFree(canvas[cell]))], bit);
+      g[i] = static_cast<std::uint8_t>(bit);
+    }
+  }
+  enc.Finish();
+  return enc.bytes();
+}
+
+Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width, int height,
+                           std::vector<Cell>* canvas) {
+  PaddedPlane g = OccupiedPlane(*canvas, width, height);
+  std::vector<BitModel> models(kOccupiedContexts);
+  RangeDecoder dec(data, size);
+  std::vector<Cell>& cv = *canvas;
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      if (IsOccupied(cv[cell])) continue;
+      const std::size_t i = g.At(col, row);
+      if (dec.Decode(&models[OccupiedContext(g, i, IsFree(cv[cell]))])) {
+        g[i] = 1;
+        cv[cell] = Cell::kOccupied;
+      }
+    }
+  }
+  return CheckEnd(dec, size, "OCCP");
+}
+
+std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& target,
+                                          const std::vector<Cell>& canvas, int width, int height) {
+  const PaddedPlane occ = OccupiedPlane(canvas, width, height);
+  PaddedPlane f(width, height, 0);
+  std::vector<BitModel> models(kFreeContexts);
+  RangeEncoder enc;
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      if (IsOccupied(canvas[cell])) continue;
+      const std::size_t i = f.At(col, row);
+      const int bit = target[cell] ? 1 : 0;
+      enc.Encode(&models[FreeContext(f, occ, i, IsFree(canvas[cell]))], bit);
+      f[i] = static_cast<std::uint8_t>(bit);
+    }
+  }
+  enc.Finish();
+  return enc.bytes();
+}
+
+Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
+                       std::vector<Cell>* canvas) {
+  const PaddedPlane occ = OccupiedPlane(*canvas, width, height);
+  PaddedPlane f(width, height, 0);
+  std::vector<BitModel> models(kFreeContexts);
+  RangeDecoder dec(data, size);
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      Cell& c = (*canvas)[cell];
+      if (IsOccupied(c)) continue;
+      const std::size_t i = f.At(col, row);
+      const int bit = dec.Decode(&models[FreeContext(f, occ, i, IsFree(c))]);
+      f[i] = static_cast<std::uint8_t>(bit);
+      c = bit ? Cell::kFree : Cell::kUnknown;
+    }
+  }
+  return CheckEnd(dec, size, "FREE");
+}
+
+namespace {
+
+constexpr unsigned kResidualContexts = 81 * 27;
+
+// RESD context: the true values already decoded at W, N, NW, NE (unknown
+// outside the grid) and the lossy canvas at the cell, east and next row.
+inline unsigned ResidualContext(const std::vector<Cell>& truth, const std::vector<Cell>& canvas,
+                                int width, int height, int col, int row) {
+  const std::size_t i = static_cast<std::size_t>(row) * width + col;
+  auto t = [&](int dc, int dr) -> unsigned {
+    const int c = col + dc;
+    const int r = row + dr;
+    if (c < 0 || c >= width || r < 0) return 2;
+    return static_cast<unsigned>(truth[static_cast<std::size_t>(r) * width + c]);
+  };
+  const unsigned lc = static_cast<unsigned>(canvas[i]);
+  const unsigned le = col + 1 < width ? static_cast<unsigned>(canvas[i + 1]) : 2u;
+  const unsigned ls = row + 1 < height ? static_cast<unsigned>(canvas[i + width]) : 2u;
+  const unsigned causal = t(-1, 0) + 3 * t(0, -1) + 9 * t(-1, -1) + 27 * t(1, -1);
+  return (causal * 27 + lc + 3 * le + 9 * ls) * 2;
+}
+
+// The two values other than `predicted`, in increasing order.
+inline Cell Alternative(Cell predicted, int which) {
+  const int p = static_cast<int>(predicted);
+  const int lo = p == 0 ? 1 : 0;
+  const int hi = p == 2 ? 1 : 2;
+  return static_cast<Cell>(which ? hi : lo);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
+                                              const std::vector<Cell>& canvas, int width,
+                                              int height) {
+  std::vector<BitModel> probs(2 * kResidualContexts);
+  RangeEncoder enc;
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      const unsigned ctx = ResidualContext(truth, canvas, width, height, col, row);
+      const bool differs = truth[cell] != canvas[cell];
+      enc.Encode(&probs[ctx], differs ? 1 : 0);
+      if (differs) {
+        enc.Encode(&probs[ctx + 1], truth[cell] == Alternative(canvas[cell], 1) ? 1 : 0);
+      }
+    }
+  }
+  enc.Finish();
+  return enc.bytes();
+}
+
+Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width, int height,
+                           std::vector<Cell>* canvas) {
+  std::vector<BitModel> probs(2 * kResidualContexts);
+  RangeDecoder dec(data, size);
+  const std::vector<Cell> lossy = *canvas;
+  std::vector<Cell>& truth = *canvas;
+  std::size_t cell = 0;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col, ++cell) {
+      const unsigned ctx = ResidualContext(truth, lossy, width, height, col, row);
+      if (dec.Decode(&probs[ctx])) {
+        truth[cell] = Alternative(lossy[cell], dec.Decode(&probs[ctx + 1]));
+      }
+    }
+  }
+  return CheckEnd(dec, size, "RESD");
+}
+
+}  // namespace linemap

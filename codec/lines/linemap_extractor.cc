@@ -1,0 +1,759 @@
+// linemap's wall-line extractor: fewer segments than RM-Line with a
+// guaranteed L-infinity bound.
+//
+// Pipeline (each step keeps the invariant "every chained edge cell is owned
+// by one segment and lies within epsilon of it"):
+//  1. Speckle: 8-connected edge components smaller than min_component_cells
+//     are set aside (they may still be covered by a wall's segment later;
+//     otherwise they are left to the furniture-blob layer and counted).
+//  2. Chains: the remaining edge cells are traced into ordered 8-connected
+//     chains, starting from contour ends (as in EDLines' edge chaining,
+//     Akinlar & Topal 2011), preferring the neighbour with the fewest
+//     untraced neighbours so that thick contours are swept without strays.
+//  3. Split: each chain is cut greedily into the longest pieces whose cells
+//     all lie within epsilon of the piece's total-least-squares line (the
+//     L-infinity polyline criterion of Imai & Iri 1986 with TLS lines in
+//     place of chords; greedy is optimal when validity is hereditary, which
+//     holds closely for TLS). Prefix moments give each trial fit in O(1).
+//  4. Merge: pieces whose ends are within merge_gap_cells of each other are
+//     refitted together (TLS over the union, Eigen) and merged when every
+//     cell of both stays within epsilon; repeated until nothing merges
+//     (split-and-merge, Pavlidis & Horowitz 1974). This joins a wall's
+//     pieces across junctions and short breaks, and the two sides of thin
+//     walls into one centre line.
+//  5. Prune: segments whose every cell lies within epsilon of another
+//     segment are dropped, smallest first, handing their cells over.
+// Parameters (LineExtractionOptions): epsilon_cells (cells, default 1: a
+// ragged 1-3-cell SLAM wall stays one segment, and no cell is farther than
+// one cell from its wall), merge_gap_cells (cells, default 3: closes breaks
+// from speckle and junction cells but not doorways), min_component_cells
+// (cells, default 3: isolated specks of 1-2 cells are not walls).
+#include "codec/lines/linemap_extractor.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <queue>
+#include <utility>
+
+#include "codec/lines/line_fit.h"
+#include "codec/lines/segment_index.h"
+
+namespace linemap::lines_internal {
+namespace {
+
+// 4-neighbours first, then diagonals.
+constexpr int kDcol[8] = {1, 0, -1, 0, 1, -1, -1, 1};
+constexpr int kDrow[8] = {0, 1, 0, -1, 1, 1, -1, -1};
+
+// Fits computed from prefix sums and from PointMoments may differ by
+// rounding; the bound is guaranteed up to this many cells.
+constexpr double kRoundingSlack = 1e-9;
+
+// Angle between two of the 8 directions of kDcol/kDrow, in 45-degree steps (0..4).
+int TurnSteps(int a, int b) {
+  const double angle_a = std::atan2(kDrow[a], kDcol[a]);
+  const double angle_b = std::atan2(kDrow[b], kDcol[b]);
+  double diff = std::abs(angle_a - angle_b);
+  if (diff > std::numbers::pi) diff = 2 * std::numbers::pi - diff;
+  return static_cast<int>(std::lround(diff / (std::numbers::pi / 4)));
+}
+
+struct CellXY {
+  int col;
+  int row;
+};
+
+CellXY CellOfIndex(std::uint32_t index, int width) {
+  return {static_cast<int>(index % static_cast<std::uint32_t>(width)),
+          static_cast<int>(index / static_cast<std::uint32_t>(width))};
+}
+
+// The edge cells' indices in raster order: later passes visit only these.
+std::vector<std::uint32_t> EdgeCellList(const EdgeMap& edges) {
+  std::vector<std::uint32_t> list;
+  list.reserve(edges.edge_count);
+  for (std::size_t i = 0; i < edges.is_edge.size(); ++i) {
+    if (edges.is_edge[i]) list.push_back(static_cast<std::uint32_t>(i));
+  }
+  return list;
+}
+
+// Flags (1) in `large` the cells of the 8-connected edge components with at
+// least `min_cells` cells; `large` is width*height and all zero on entry.
+void FlagLargeComponents(const EdgeMap& edges, const std::vector<std::uint32_t>& edge_cells,
+                         int min_cells, std::vector<std::uint8_t>* large) {
+  constexpr std::uint8_t kSeen = 2;
+  std::vector<std::uint32_t> component;
+  for (std::uint32_t seed : edge_cells) {
+    if ((*large)[seed]) continue;
+    component.clear();
+    component.push_back(seed);
+    (*large)[seed] = kSeen;
+    for (std::size_t head = 0; head < component.size(); ++head) {
+      const CellXY c = CellOfIndex(component[head], edges.width);
+      for (int k = 0; k < 8; ++k) {
+        const int col = c.col + kDcol[k], row = c.row + kDrow[k];
+        if (col < 0 || row < 0 || col >= edges.width || row >= edges.height) continue;
+        const std::size_t n = static_cast<std::size_t>(row) * edges.width + col;
+        if (edges.is_edge[n] && !(*large)[n]) {
+          (*large)[n] = kSeen;
+          component.push_back(static_cast<std::uint32_t>(n));
+        }
+      }
+    }
+    const bool keep = static_cast<int>(component.size()) >= min_cells;
+    for (std::uint32_t index : component) (*large)[index] = keep ? 1 : kSeen;
+  }
+  for (std::uint32_t index : edge_cells) {
+    if ((*large)[index] == kSeen) (*large)[index] = 0;
+  }
+}
+
+// Moments of chain prefixes: the fit of any sub-range in O(1).
+class ChainMoments {
+ public:
+  ChainMoments(const std::vector<std::uint32_t>& chain, int width) {
+    const std::size_t n = chain.size();
+    x_.resize(n);
+    y_.resize(n);
+    s_.assign(n + 1, {0, 0, 0, 0, 0});
+    const CellXY origin = n > 0 ? CellOfIndex(chain[0], width) : CellXY{0, 0};
+    ox_ = origin.col;
+    oy_ = origin.row;
+    for (std::size_t i = 0; i < n; ++i) {
+      const CellXY c = CellOfIndex(chain[i], width);
+      x_[i] = c.col;
+      y_[i] = c.row;
+      const double dx = c.col - ox_, dy = c.row - oy_;
+      s_[i + 1] = {s_[i][0] + dx, s_[i][1] + dy, s_[i][2] + dx * dx, s_[i][3] + dx * dy,
+                   s_[i][4] + dy * dy};
+    }
+  }
+
+  // TLS line of cells [begin, end).
+  FittedLine Fit(int begin, int end) const {
+    const double n = end - begin;
+    const double sx = s_[end][0] - s_[begin][0], sy = s_[end][1] - s_[begin][1];
+    const double mx = sx / n, my = sy / n;
+    Eigen::Matrix2d cov;
+    cov(0, 0) = std::max(0.0, (s_[end][2] - s_[begin][2]) / n - mx * mx);
+    cov(1, 1) = std::max(0.0, (s_[end][4] - s_[begin][4]) / n - my * my);
+    cov(0, 1) = cov(1, 0) = (s_[end][3] - s_[begin][3]) / n - mx * my;
+    return FitFromCovariance({ox_ + mx, oy_ + my}, cov);
+  }
+
+  // True when every cell of [begin, end) is within epsilon of its TLS line.
+  bool Valid(int begin, int end, double epsilon) const {
+    if (end - begin <= 2) return true;
+    const FittedLine line = Fit(begin, end);
+    if (line.mean_squared_residual > epsilon * epsilon) return false;
+    const double nx = -line.direction.y(), ny = line.direction.x();
+    for (int i = begin; i < end; ++i) {
+      const double d = (x_[i] - line.centroid.x()) * nx + (y_[i] - line.centroid.y()) * ny;
+      if (std::abs(d) > epsilon) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<double> x_, y_;
+  std::vector<std::array<double, 5>> s_;
+  double ox_ = 0, oy_ = 0;
+};
+
+// A candidate wall: its cells, their moments and the fitted segment.
+struct Group {
+  std::vector<std::uint32_t> cells;
+  PointMoments moments;
+  FittedLine line;
+  LineSegment segment;
+  double max_residual = 0;  // largest distance of a cell to `line`
+  double cost = 0;          // sum of the cells' distances to `segment` (cells)
+  bool alive = true;
+};
+
+// Distances of cells to a line, and the extent of their projections.
+struct LineSweep {
+  double cost = 0;   // summed distance
+  double worst = 0;  // largest distance
+  double t_min = 0, t_max = 0;
+  bool any = false;
+};
+
+// Adds `cells` to `sweep`; false as soon as a cell is farther than epsilon
+// or the summed distance passes max_cost.
+bool SweepCells(const FittedLine& line, const std::vector<std::uint32_t>& cells, int width,
+                double epsilon, double max_cost, LineSweep* sweep) {
+  const Eigen::Vector2d& c = line.centroid;
+  const Eigen::Vector2d& u = line.direction;
+  for (std::uint32_t index : cells) {
+    const CellXY cell = CellOfIndex(index, width);
+    const double dx = cell.col - c.x(), dy = cell.row - c.y();
+    const double d = std::abs(-u.y() * dx + u.x() * dy);
+    sweep->cost += d;
+    if (d > epsilon + kRoundingSlack || sweep->cost > max_cost) return false;
+    sweep->worst = std::max(sweep->worst, d);
+    const double t = u.x() * dx + u.y() * dy;
+    sweep->t_min = sweep->any ? std::min(sweep->t_min, t) : t;
+    sweep->t_max = sweep->any ? std::max(sweep->t_max, t) : t;
+    sweep->any = true;
+  }
+  return true;
+}
+
+void SetLine(Group* group, const FittedLine& line, const LineSweep& sweep) {
+  const Eigen::Vector2d& c = line.centroid;
+  const Eigen::Vector2d& u = line.direction;
+  group->line = line;
+  group->max_residual = sweep.worst;
+  group->cost = sweep.cost;
+  group->segment = {c.x() + sweep.t_min * u.x(), c.y() + sweep.t_min * u.y(),
+                    c.x() + sweep.t_max * u.x(), c.y() + sweep.t_max * u.y()};
+}
+
+// Fits `line` and `segment` of a group from its cells; false when some cell
+// is farther than epsilon from the line.
+bool RefitGroup(Group* group, int width, double epsilon) {
+  const FittedLine line = group->moments.Fit();
+  if (line.mean_squared_residual > epsilon * epsilon + kRoundingSlack) return false;
+  LineSweep sweep;
+  if (!SweepCells(line, group->cells, width, epsilon, std::numeric_limits<double>::infinity(),
+                  &sweep)) {
+    return false;
+  }
+  SetLine(group, line, sweep);
+  return true;
+}
+
+// Buckets of group ids by the tiles their segments pass through; entries go
+// stale when groups merge and are re-checked by the reader.
+class GroupTiles {
+ public:
+  GroupTiles(int width, int height, int tile) : tile_(tile) {
+    tiles_x_ = std::max(1, (width + tile - 1) / tile);
+    tiles_y_ = std::max(1, (height + tile - 1) / tile);
+    buckets_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
+  }
+
+  void Add(std::uint32_t id, const LineSegment& s) {
+    const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
+    const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
+    int last = -1;
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      const int tile = TileIndex(s.x1 + t * (s.x2 - s.x1), s.y1 + t * (s.y2 - s.y1));
+      if (tile != last) buckets_[tile].push_back(id);
+      last = tile;
+    }
+  }
+
+  // Ids of live groups registered in the tiles within `radius` of (x, y)
+  // (an id may repeat across tiles). Dead and repeated entries are dropped
+  // from the buckets on the way, so merged groups do not pile up.
+  void Near(double x, double y, double radius, const std::vector<Group>& groups,
+            std::vector<std::uint32_t>* out) {
+    out->clear();
+    if (mark_.size() < groups.size()) mark_.resize(groups.size(), 0);
+    const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
+    const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
+    const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
+    const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
+    for (int ty = ty0; ty <= ty1; ++ty) {
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+        ++stamp_;
+        std::size_t kept = 0;
+        for (std::uint32_t id : bucket) {
+          if (!groups[id].alive || mark_[id] == stamp_) continue;
+          mark_[id] = stamp_;
+          bucket[kept++] = id;
+        }
+        bucket.resize(kept);
+        out->insert(out->end(), bucket.begin(), bucket.end());
+      }
+    }
+  }
+
+ private:
+  static int Clamp(double t, int tiles) {
+    return static_cast<int>(std::clamp(std::floor(t), 0.0, static_cast<double>(tiles - 1)));
+  }
+  int TileIndex(double x, double y) const {
+    return Clamp((y + 0.5) / tile_, tiles_y_) * tiles_x_ + Clamp((x + 0.5) / tile_, tiles_x_);
+  }
+
+  int tile_;
+  int tiles_x_ = 1, tiles_y_ = 1;
+  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<std::uint32_t> mark_;  // per group: the last bucket scan that kept it
+  std::uint32_t stamp_ = 0;
+};
+
+double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
+  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
+  const double length_sq = dx * dx + dy * dy;
+  double t = 0;
+  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
+  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+  return ex * ex + ey * ey;
+}
+
+// A necessary condition for a merge, in O(1): a line within epsilon of both
+// extreme cells of a group (length l along its line, residual r) makes an
+// angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
+// so the two groups' directions may differ by at most the sum of the two
+// such angles.
+bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
+  auto max_angle = [epsilon](const Group& g) {
+    const double length = std::sqrt((g.segment.x2 - g.segment.x1) * (g.segment.x2 - g.segment.x1) +
+                                    (g.segment.y2 - g.segment.y1) * (g.segment.y2 - g.segment.y1));
+    if (length <= 0) return std::numbers::pi / 2;
+    return std::asin(std::min(1.0, 2 * (epsilon + g.max_residual) / length));
+  };
+  const double cosine = std::abs(a.line.direction.dot(b.line.direction));
+  const double angle = std::acos(std::min(1.0, cosine));
+  return angle <= max_angle(a) + max_angle(b) + 1e-9;
+}
+
+// True when an end of one segment is within `gap` of the other segment.
+bool EndsWithinGap(const Group& a, const Group& b, double gap) {
+  const double gap_sq = gap * gap;
+  return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x1, b.segment.y1, a.segment) <= gap_sq ||
+         SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
+}
+
+// Evaluates merging groups a and b: false when the union breaks the bound
+// or adds more than max_added to the summed distance; otherwise *line and
+// *sweep describe the union's segment.
+bool TryMerge(const Group& a, const Group& b, int width, double epsilon, double max_added,
+              FittedLine* line, LineSweep* sweep) {
+  PointMoments moments = a.moments;
+  moments.Merge(b.moments);
+  if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
+  *line = moments.Fit();
+  *sweep = LineSweep();
+  const double max_cost = a.cost + b.cost + max_added;
+  return SweepCells(*line, a.cells, width, epsilon, max_cost, sweep) &&
+         SweepCells(*line, b.cells, width, epsilon, max_cost, sweep);
+}
+
+// Step 4: merge groups, cheapest merge first (agglomerative), while the
+// bound holds and each merge adds at most max_added_cost to the summed
+// distance. Pairs are candidates when an end of one is within `gap` of the
+// other segment.
+void MergeGroups(std::vector<Group>* groups, int width, int height, double epsilon, double gap,
+                 double max_added_cost) {
+  struct Candidate {
+    double added;
+    std::uint32_t a, b;
+    std::uint32_t version_a, version_b;
+    bool operator>(const Candidate& other) const { return added > other.added; }
+  };
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  std::vector<std::uint32_t> version(groups->size(), 0);
+  GroupTiles tiles(width, height, 8);
+  for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
+  std::vector<std::uint32_t> near;
+  std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
+  std::uint32_t stamp = 0;
+  FittedLine line;
+  LineSweep sweep;
+  // Queues every valid merge of g with a group near one of its ends.
+  auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
+    ++stamp;
+    const LineSegment s = (*groups)[g].segment;
+    for (int end = 0; end < 2; ++end) {
+      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, *groups, &near);
+      for (std::uint32_t h : near) {
+        if (h == g || seen_stamp[h] == stamp || !(*groups)[h].alive) continue;
+        if (only_higher_ids && h < g) continue;
+        seen_stamp[h] = stamp;
+        const Group& a = (*groups)[g];
+        const Group& b = (*groups)[h];
+        if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
+        if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+        queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
+      }
+    }
+  };
+  for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
+  while (!queue.empty()) {
+    const Candidate c = queue.top();
+    queue.pop();
+    Group& a = (*groups)[c.a];
+    Group& b = (*groups)[c.b];
+    if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
+      continue;
+    }
+    if (!TryMerge(a, b, width, epsilon, max_added_cost, &line, &sweep)) continue;
+    a.moments.Merge(b.moments);
+    a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
+    SetLine(&a, line, sweep);
+    b.alive = false;
+    b.cells = {};
+    ++version[c.b];
+    ++version[c.a];
+    tiles.Add(c.a, a.segment);
+    push_candidates(c.a, false);
+  }
+}
+
+// Step 5: drop groups whose cells are all within epsilon of other segments.
+void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, double epsilon,
+                        double max_added_cost) {
+  std::vector<LineSegment> segments;
+  std::vector<std::uint32_t> group_of;
+  for (std::uint32_t id = 0; id < groups->size(); ++id) {
+    if (!(*groups)[id].alive) continue;
+    segments.push_back((*groups)[id].segment);
+    group_of.push_back(id);
+  }
+  SegmentIndex index(&segments, width, height);
+  std::vector<std::uint8_t> skip(segments.size(), 0);
+  std::vector<std::uint32_t> order(segments.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return (*groups)[group_of[a]].cells.size() < (*groups)[group_of[b]].cells.size();
+  });
+  std::vector<std::uint32_t> targets;
+  std::vector<double> distances;
+  for (std::uint32_t s : order) {
+    Group& group = (*groups)[group_of[s]];
+    skip[s] = 1;
+    targets.clear();
+    distances.clear();
+    bool covered = true;
+    double added_cost = -group.cost;
+    for (std::uint32_t index_of_cell : group.cells) {
+      const CellXY c = CellOfIndex(index_of_cell, width);
+      std::uint32_t nearest = 0;
+      const double d = index.NearestDistance(c.col, c.row, &skip, &nearest);
+      added_cost += d;
+      if (d > epsilon || added_cost > max_added_cost) {
+        covered = false;
+        break;
+      }
+      targets.push_back(nearest);
+      distances.push_back(d);
+    }
+    if (!covered || added_cost > max_added_cost) {
+      skip[s] = 0;
+      continue;
+    }
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+      Group& target = (*groups)[group_of[targets[i]]];
+      target.cells.push_back(group.cells[i]);
+      target.cost += distances[i];
+    }
+    group.alive = false;
+    group.cells.clear();
+  }
+}
+
+// Step 6: moves each group's line towards the least-absolute-distance line
+// of its cells (what DisPL_ave measures) by iteratively reweighted total
+// least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
+// covariance), keeping a new line only while it lowers the summed distance
+// and keeps every cell within epsilon. The segment spans all cells.
+void PolishGroupL1(Group* group, int width, double epsilon) {
+  const std::size_t n = group->cells.size();
+  if (n < 3) return;
+  std::vector<double> xs(n), ys(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const CellXY c = CellOfIndex(group->cells[i], width);
+    xs[i] = c.col;
+    ys[i] = c.row;
+  }
+  auto evaluate = [&](const FittedLine& line, double* sum, double* worst) {
+    *sum = 0;
+    *worst = 0;
+    const double nx = -line.direction.y(), ny = line.direction.x();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d =
+          std::abs((xs[i] - line.centroid.x()) * nx + (ys[i] - line.centroid.y()) * ny);
+      *sum += d;
+      *worst = std::max(*worst, d);
+    }
+  };
+  FittedLine best = group->line;
+  double best_sum = 0, worst = 0;
+  evaluate(best, &best_sum, &worst);
+  if (worst > epsilon + kRoundingSlack) return;  // cells handed over off the line's end
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double nx = -best.direction.y(), ny = best.direction.x();
+    double sw = 0, sx = 0, sy = 0;
+    std::vector<double> w(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d =
+          std::abs((xs[i] - best.centroid.x()) * nx + (ys[i] - best.centroid.y()) * ny);
+      w[i] = 1.0 / std::max(d, 0.1);
+      sw += w[i];
+      sx += w[i] * xs[i];
+      sy += w[i] * ys[i];
+    }
+    const Eigen::Vector2d mean(sx / sw, sy / sw);
+    Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dx = xs[i] - mean.x(), dy = ys[i] - mean.y();
+      cov(0, 0) += w[i] * dx * dx;
+      cov(0, 1) += w[i] * dx * dy;
+      cov(1, 1) += w[i] * dy * dy;
+    }
+    cov(1, 0) = cov(0, 1);
+    const FittedLine candidate = FitFromCovariance(mean, cov / sw);
+    double sum = 0;
+    evaluate(candidate, &sum, &worst);
+    if (worst > epsilon + kRoundingSlack || sum >= best_sum - 1e-9) break;
+    best = candidate;
+    best_sum = sum;
+  }
+  group->line = best;
+  group->cost = best_sum;
+  group->segment = SegmentFromProjections(best, xs.data(), ys.data(), n);
+}
+
+// Step 7: corners. Two segments whose ends are within `reach` cells of each
+// other and which meet at more than 20 degrees are both extended to the
+// intersection of their lines when that point lies beyond both ends and
+// within `reach` of each, so that decoded walls close at corners. Segments
+// only grow, so no cell gets farther from its segment.
+void JoinCorners(std::vector<LineSegment>* segments, int width, int height, double reach) {
+  constexpr int kTile = 8;
+  const int tiles_x = std::max(1, (width + kTile - 1) / kTile);
+  const int tiles_y = std::max(1, (height + kTile - 1) / kTile);
+  auto tile_of = [&](double x, double y) {
+    const int tx = std::clamp(static_cast<int>(std::floor((x + 0.5) / kTile)), 0, tiles_x - 1);
+    const int ty = std::clamp(static_cast<int>(std::floor((y + 0.5) / kTile)), 0, tiles_y - 1);
+    return std::pair<int, int>(tx, ty);
+  };
+  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)).
+  std::vector<std::vector<std::uint32_t>> ends(static_cast<std::size_t>(tiles_x) * tiles_y);
+  auto end_point = [&](std::uint32_t end) {
+    const LineSegment& s = (*segments)[end / 2];
+    return (end % 2 == 0) ? Eigen::Vector2d(s.x1, s.y1) : Eigen::Vector2d(s.x2, s.y2);
+  };
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx, ty] = tile_of(p.x(), p.y());
+    ends[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(end);
+  }
+  std::vector<std::uint8_t> joined(2 * segments->size(), 0);
+  const double min_sine = std::sin(20.0 * std::numbers::pi / 180.0);
+  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+    if (joined[end]) continue;
+    const Eigen::Vector2d p = end_point(end);
+    const auto [tx0, ty0] = tile_of(p.x() - reach, p.y() - reach);
+    const auto [tx1, ty1] = tile_of(p.x() + reach, p.y() + reach);
+    for (int ty = ty0; ty <= ty1 && !joined[end]; ++ty) {
+      for (int tx = tx0; tx <= tx1 && !joined[end]; ++tx) {
+        for (std::uint32_t other : ends[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+          if (other / 2 == end / 2 || joined[other]) continue;
+          const Eigen::Vector2d q = end_point(other);
+          if ((p - q).norm() > reach) continue;
+          // Directions pointing outwards from each end.
+          const Eigen::Vector2d u = p - end_point(end ^ 1u);
+          const Eigen::Vector2d v = q - end_point(other ^ 1u);
+          if (u.norm() <= 0 || v.norm() <= 0) continue;
+          const Eigen::Vector2d du = u.normalized(), dv = v.normalized();
+          const double cross = du.x() * dv.y() - du.y() * dv.x();
+          if (std::abs(cross) < min_sine) continue;
+          // p + a * du = q + b * dv.
+          const Eigen::Vector2d w = q - p;
+          const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
+          const double b = (w.x() * du.y() - w.y() * du.x()) / cross;
+          if (a < 0 || b < 0 || a > reach || b > reach) continue;
+          const Eigen::Vector2d corner = p + a * du;
+          for (std::uint32_t e : {end, other}) {
+            LineSegment& s = (*segments)[e / 2];
+            (e % 2 == 0 ? s.x1 : s.x2) = corner.x();
+            (e % 2 == 0 ? s.y1 : s.y2) = corner.y();
+            joined[e] = 1;
+          }
+          break;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// TraceEdgeChains over the cells of `cells` (raster order) whose `open` flag
+// is set; clears the flags as it goes.
+std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
+                                                    const std::vector<std::uint32_t>& cells,
+                                                    std::vector<std::uint8_t>& open) {
+  const int width = edges.width, height = edges.height;
+  auto untraced_neighbours = [&](int col, int row) {
+    int count = 0;
+    for (int k = 0; k < 8; ++k) {
+      const int c = col + kDcol[k], r = row + kDrow[k];
+      if (c >= 0 && r >= 0 && c < width && r < height &&
+          open[static_cast<std::size_t>(r) * width + c]) {
+        ++count;
+      }
+    }
+    return count;
+  };
+  // Extends `chain` from its last cell until no untraced neighbour is left,
+  // going straight on where possible (so that the two sides of a two-cell
+  // wall become two chains rather than one zig-zag), then turning as little
+  // as possible; ties go to the neighbour with fewer untraced neighbours.
+  auto walk = [&](std::vector<std::uint32_t>* chain) {
+    int heading = -1;  // direction of the last step, index into kDcol/kDrow
+    if (chain->size() >= 2) {
+      const CellXY a = CellOfIndex((*chain)[chain->size() - 2], width);
+      const CellXY b = CellOfIndex(chain->back(), width);
+      for (int k = 0; k < 8; ++k) {
+        if (a.col + kDcol[k] == b.col && a.row + kDrow[k] == b.row) heading = k;
+      }
+    }
+    for (;;) {
+      const CellXY c = CellOfIndex(chain->back(), width);
+      int best = -1, best_k = -1, best_score = 1 << 30;
+      for (int k = 0; k < 8; ++k) {
+        const int col = c.col + kDcol[k], row = c.row + kDrow[k];
+        if (col < 0 || row < 0 || col >= width || row >= height) continue;
+        if (!open[static_cast<std::size_t>(row) * width + col]) continue;
+        const int turn = heading < 0 ? 0 : TurnSteps(heading, k);
+        const int score = 32 * turn + 2 * untraced_neighbours(col, row) + (k >= 4 ? 1 : 0);
+        if (score < best_score) {
+          best_score = score;
+          best = row * width + col;
+          best_k = k;
+        }
+      }
+      if (best < 0) return;
+      open[best] = 0;
+      chain->push_back(static_cast<std::uint32_t>(best));
+      heading = best_k;
+    }
+  };
+  std::vector<std::vector<std::uint32_t>> chains;
+  auto trace_from = [&](std::size_t seed) {
+    std::vector<std::uint32_t> chain = {static_cast<std::uint32_t>(seed)};
+    open[seed] = 0;
+    walk(&chain);
+    std::reverse(chain.begin(), chain.end());
+    walk(&chain);  // the other way from the seed
+    chains.push_back(std::move(chain));
+  };
+  // Contour ends first, then whatever is left (closed contours).
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::uint32_t i : cells) {
+      if (!open[i]) continue;
+      const CellXY c = CellOfIndex(i, width);
+      if (pass == 0 && untraced_neighbours(c.col, c.row) > 1) continue;
+      trace_from(i);
+    }
+  }
+  return chains;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
+                                                        const std::vector<std::uint8_t>& include) {
+  std::vector<std::uint8_t> open = include;
+  std::vector<std::uint32_t> cells;
+  for (std::size_t i = 0; i < include.size(); ++i) {
+    if (include[i]) cells.push_back(static_cast<std::uint32_t>(i));
+  }
+  return TraceChains(edges, cells, open);
+}
+
+std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
+                            double epsilon_cells) {
+  const ChainMoments moments(chain, width);
+  const int n = static_cast<int>(chain.size());
+  std::vector<int> pieces;
+  for (int begin = 0; begin < n;) {
+    int good = std::min(2, n - begin);
+    int bad = -1;
+    while (good < n - begin) {
+      const int trial = std::min(2 * good, n - begin);
+      if (moments.Valid(begin, begin + trial, epsilon_cells)) {
+        good = trial;
+      } else {
+        bad = trial;
+        break;
+      }
+    }
+    while (bad > 0 && bad - good > 1) {
+      const int mid = (good + bad) / 2;
+      (moments.Valid(begin, begin + mid, epsilon_cells) ? good : bad) = mid;
+    }
+    pieces.push_back(good);
+    begin += good;
+  }
+  return pieces;
+}
+
+StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
+                                           const LineExtractionOptions& options) {
+  const double epsilon = options.epsilon_cells;
+  if (!(epsilon > 0)) return InvalidArgumentError("epsilon must be positive");
+  if (!(options.merge_gap_cells >= 0)) return InvalidArgumentError("merge gap must be >= 0");
+  const int width = edges.width, height = edges.height;
+  const std::vector<std::uint32_t> edge_cells = EdgeCellList(edges);
+  // First the cells to chain (1), then, cleared by the tracing, scratch.
+  std::vector<std::uint8_t> open(edges.is_edge.size(), 0);
+  FlagLargeComponents(edges, edge_cells, std::max(1, options.min_component_cells), &open);
+  std::vector<std::uint32_t> speckle;
+  for (std::uint32_t i : edge_cells) {
+    if (!open[i]) speckle.push_back(i);
+  }
+
+  const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
+  std::vector<Group> groups;
+  for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
+    int begin = 0;
+    for (int length : SplitChain(chain, width, split_epsilon)) {
+      Group group;
+      group.cells.assign(chain.begin() + begin, chain.begin() + begin + length);
+      for (std::uint32_t index : group.cells) {
+        const CellXY c = CellOfIndex(index, width);
+        group.moments.Add(c.col, c.row);
+      }
+      // SplitChain checked the same line (up to rounding).
+      if (!RefitGroup(&group, width, epsilon)) {
+        return InternalError("a chain piece broke the epsilon bound");
+      }
+      groups.push_back(std::move(group));
+      begin += length;
+    }
+  }
+  MergeGroups(&groups, width, height, epsilon, options.merge_gap_cells,
+              options.max_added_cost_cells);
+  PruneCoveredGroups(&groups, width, height, epsilon, options.max_added_cost_cells);
+  for (Group& group : groups) {
+    if (group.alive) PolishGroupL1(&group, width, epsilon);
+  }
+
+  LinemapLines result;
+  for (const Group& group : groups) {
+    if (group.alive) result.segments.push_back(group.segment);
+  }
+  JoinCorners(&result.segments, width, height, options.corner_join_cells);
+  // Speckle not within epsilon of a wall is left to the furniture layer.
+  result.left_to_blobs.assign(edges.is_edge.size(), 0);
+  SegmentIndex index(&result.segments, width, height);
+  for (std::uint32_t i : speckle) {
+    const CellXY c = CellOfIndex(i, width);
+    if (index.NearestDistance(c.col, c.row) > epsilon) {
+      result.left_to_blobs[i] = 1;
+      ++result.cells_left_to_blobs;
+    }
+  }
+  return result;
+}
+
+}  // namespace linemap::lines_internal

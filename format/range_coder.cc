@@ -1,0 +1,85 @@
+#include "format/range_coder.h"
+
+namespace linemap {
+namespace {
+constexpr std::uint32_t kTopValue = 1u << 24;
+}  // namespace
+
+void RangeEncoder::ShiftLow() {
+  if (static_cast<std::uint32_t>(low_) < 0xFF000000u || (low_ >> 32) != 0) {
+    const std::uint8_t carry = static_cast<std::uint8_t>(low_ >> 32);
+    std::uint8_t temp = cache_;
+    do {
+      out_.push_back(static_cast<std::uint8_t>(temp + carry));
+      temp = 0xFF;
+    } while (--cache_size_ != 0);
+    cache_ = static_cast<std::uint8_t>(low_ >> 24);
+  }
+  ++cache_size_;
+  low_ = (low_ & 0x00FFFFFFu) << 8;
+}
+
+void RangeEncoder::Encode(BitModel* model, int bit) {
+  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+  if (bit == 0) {
+    range_ = bound;
+  } else {
+    low_ += bound;
+    range_ -= bound;
+  }
+  model->Update(bit);
+  while (range_ < kTopValue) {
+    range_ <<= 8;
+    ShiftLow();
+  }
+}
+
+void RangeEncoder::Finish() {
+  // Any value in [low, low + range) identifies the stream; take the one
+  // with the most trailing zero bits, so the flushed tail is zero bytes,
+  // which are dropped (the decoder reads missing bytes as zero).
+  const std::uint64_t hi = low_ + range_ - 1;
+  for (int bits = 32; bits >= 0; --bits) {
+    const std::uint64_t v = hi & ~((std::uint64_t{1} << bits) - 1);
+    if (v >= low_) {
+      low_ = v;
+      break;
+    }
+  }
+  for (int i = 0; i < 5; ++i) ShiftLow();
+  // The first byte is always 0 (the code value is below 1): not stored.
+  out_.erase(out_.begin());
+  while (!out_.empty() && out_.back() == 0) out_.pop_back();
+}
+
+RangeDecoder::RangeDecoder(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {
+  valid_start_ = size == 0 || data[size - 1] != 0;  // canonical: no trailing zero byte
+  for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
+}
+
+std::uint8_t RangeDecoder::NextByte() {
+  if (pos_ < size_) return data_[pos_++];
+  ++overrun_;
+  return 0;
+}
+
+int RangeDecoder::Decode(BitModel* model) {
+  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+  int bit;
+  if (code_ < bound) {
+    range_ = bound;
+    bit = 0;
+  } else {
+    range_ -= bound;
+    code_ -= bound;
+    bit = 1;
+  }
+  model->Update(bit);
+  while (range_ < kTopValue) {
+    range_ <<= 8;
+    code_ = (code_ << 8) | NextByte();
+  }
+  return bit;
+}
+
+}  // namespace linemap

@@ -1,0 +1,78 @@
+// Adaptive binary range coder (after the LZMA "rc" coder, Igor Pavlov, public
+// domain; specified bit for bit in spec/format.md section "Binary range
+// coder"). All arithmetic is on unsigned integers, so every platform produces
+// and reads the same bytes.
+#ifndef LINEMAP_FORMAT_RANGE_CODER_H_
+#define LINEMAP_FORMAT_RANGE_CODER_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace linemap {
+
+// An adaptive bit model: `p` is the probability that the next bit is 0, in
+// units of 2^-16, starting at one half. Each coded bit moves p towards the
+// bit by 1/2^shift of the gap, with shift = kAdaptShift[n] for the model's
+// n-th update (fast at first, then steady at 1/32), so contexts learn quickly
+// and a certain bit costs only ~0.0007 bits.
+inline constexpr int kProbBits = 16;
+inline constexpr int kAdaptSteps = 5;
+inline constexpr std::uint8_t kAdaptShift[kAdaptSteps + 1] = {1, 2, 3, 4, 4, 5};
+
+struct BitModel {
+  std::uint16_t p = 1u << (kProbBits - 1);
+  std::uint8_t n = 0;  // updates so far, saturating at kAdaptSteps
+  void Update(int bit) {
+    const int shift = kAdaptShift[n];
+    if (bit == 0) {
+      p = static_cast<std::uint16_t>(p + (((1u << kProbBits) - p) >> shift));
+    } else {
+      p = static_cast<std::uint16_t>(p - (p >> shift));
+    }
+    if (n < kAdaptSteps) ++n;
+  }
+};
+
+class RangeEncoder {
+ public:
+  void Encode(BitModel* model, int bit);
+  // Writes the final bytes; call once, then take bytes().
+  void Finish();
+  const std::vector<std::uint8_t>& bytes() const { return out_; }
+
+ private:
+  void ShiftLow();
+  std::uint64_t low_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint8_t cache_ = 0;
+  std::uint64_t cache_size_ = 1;
+  std::vector<std::uint8_t> out_;
+};
+
+// Never reads outside [data, data + size): past the end it reads zero bytes
+// (the encoder drops the zero tail). A valid stream does not end in a zero
+// byte and has every byte read by the end of decoding.
+class RangeDecoder {
+ public:
+  RangeDecoder(const std::uint8_t* data, std::size_t size);
+  int Decode(BitModel* model);
+  // False when the stream ends in a zero byte (not canonical: corrupt).
+  bool valid_start() const { return valid_start_; }
+  std::size_t overrun() const { return overrun_; }
+  std::size_t consumed() const { return pos_; }
+
+ private:
+  std::uint8_t NextByte();
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+  std::size_t overrun_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint32_t code_ = 0;
+  bool valid_start_ = true;
+};
+
+}  // namespace linemap
+
+#endif  // LINEMAP_FORMAT_RANGE_CODER_H_

@@ -1,0 +1,129 @@
+// The .lmap codec: encode a trinary occupancy grid into the chunked file
+// format of spec/format.md and decode it back, bit-exactly and without
+// floating point in the decoding path.
+//
+// Lossy mode (default) stores wall segments, room-border chains, furniture
+// blobs, a free-space mask and the occupied cells the geometry misses;
+// lossless mode adds a residual so the decoded grid equals the input.
+#ifndef LINEMAP_CODEC_H_
+#define LINEMAP_CODEC_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "linemap/grid.h"
+#include "linemap/lines.h"
+#include "linemap/segmentation.h"
+#include "linemap/status.h"
+
+namespace linemap {
+
+enum class LosslessMethod {
+  // The occupied and free layers are coded exactly (segments only on
+  // occupied cells); no residual is needed. The default: the smallest.
+  kExactLayers,
+  // The lossy layers plus a RESD residual plane (the difference).
+  kResidual,
+};
+
+struct EncodeOptions {
+  bool lossless = false;
+  LosslessMethod lossless_method = LosslessMethod::kExactLayers;
+  // Store the extractor's wall segments (SEGS). Segments shorter than
+  // min_segment_cells (cells along the longer axis; default 16) are left to
+  // the OCCP plane, which codes short pieces more cheaply.
+  bool store_segments = true;
+  int min_segment_cells = 16;
+  // Store the room-border chains of SegmentMap() (ROOM), filled as free
+  // space before the FREE plane, which is then coded against them.
+  bool store_room_chains = false;
+  // Line extractor for the wall segments.
+  LineMethod method = LineMethod::kLinemap;
+  // linemap extractor tolerance in cells (default 1.0); see lines.h.
+  double epsilon_cells = 1.0;
+  // Robot position in map-frame metres, stored in the metadata and used to
+  // seed the edge map when given.
+  std::optional<Pose2D> robot_pose;
+  // Metadata text, each entry stored only when non-empty (the "meta" chunk
+  // is left out when all are): a tiny map's file stays smaller than its PNG,
+  // and without `time` encoding the same map twice gives the same bytes.
+  std::string creator;
+  std::string time;
+  std::string frame_id;
+};
+
+// Caller-set bounds on what a file may make the decoder allocate or do.
+struct DecodeLimits {
+  std::uint64_t max_file_bytes = std::uint64_t{1} << 31;      // load() only
+  std::uint64_t max_cells = std::uint64_t{1} << 28;           // width * height
+  std::uint64_t max_chunk_bytes = std::uint64_t{1} << 30;     // one chunk's payload
+  std::uint64_t max_inflated_bytes = std::uint64_t{1} << 28;  // one inflated payload
+  std::uint64_t max_segments = std::uint64_t{1} << 24;        // per chunk
+  std::uint64_t max_chain_length = std::uint64_t{1} << 26;    // cells per chain, and in total
+};
+
+// An integer-lattice segment between two cell centres (the stored form).
+struct LatticeSegment {
+  CellIndex a;
+  CellIndex b;
+  bool operator==(const LatticeSegment&) const = default;
+};
+
+// Everything a file holds, for `info` and `export`.
+struct LmapChunkInfo {
+  std::string type;
+  std::size_t payload_bytes = 0;
+  std::string coder;  // "header", "raw", "deflate", "range"
+};
+
+struct LmapContents {
+  int major = 0;
+  int minor = 0;
+  bool lossless = false;
+  Grid grid;  // the decoded grid, metadata included
+  std::vector<LatticeSegment> segments;
+  std::vector<std::vector<CellIndex>> room_chains;
+  std::vector<std::vector<CellIndex>> blob_outlines;
+  std::vector<std::pair<std::string, std::string>> metadata;  // key, value
+  std::vector<LmapChunkInfo> chunks;
+};
+
+StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options = {});
+StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {});
+StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes,
+                                          const DecodeLimits& limits = {});
+
+// save(): encodes, then writes atomically (temporary file, fsync, rename), so
+// a crash or a full disk never leaves a broken file where a good one was.
+Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options = {});
+StatusOr<Grid> LoadLmap(const std::string& path, const DecodeLimits& limits = {});
+StatusOr<LmapContents> LoadLmapContents(const std::string& path, const DecodeLimits& limits = {});
+
+// True when `bytes` start with the .lmap signature.
+bool LooksLikeLmap(const std::vector<std::uint8_t>& bytes);
+
+// The quality measures of a decoded grid against the original.
+struct GridComparison {
+  bool same_geometry = false;  // width, height, resolution, origin
+  std::size_t cells = 0;
+  std::size_t cells_equal = 0;
+  double obstacle_recall_1 = 1.0;     // original occupied with a decoded occupied within 1 cell
+  double obstacle_precision_1 = 1.0;  // decoded occupied with an original occupied within 1 cell
+  double free_iou = 1.0;
+  // Free regions of >= kLeakRegionCells cells (4-connected in the original)
+  // that the decoded free space joins: sum over decoded components of
+  // (original regions touched - 1).
+  std::size_t leaks = 0;
+  std::size_t unknown_turned_free = 0;
+  double unknown_turned_free_share = 0;  // of the original free cells
+};
+inline constexpr std::size_t kLeakRegionCells = 50;
+
+GridComparison CompareGrids(const Grid& original, const Grid& decoded);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_H_

@@ -1,0 +1,326 @@
+// Round trips, edge cases, determinism, limits and corruption handling of
+// the .lmap encoder and decoder.
+#include "linemap/codec.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "codec/codec/chunk_coding.h"
+#include "codec/codec/draco_segments.h"
+#include "format/container.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+Grid RandomGrid(std::mt19937& rng, int width, int height, int blockiness) {
+  Grid grid(width, height, Cell::kUnknown);
+  grid.meta.resolution = 0.05;
+  grid.meta.origin = Pose2D{-1.5, 2.25, 0.0};
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c) {
+      // Copy a neighbour most of the time so regions form, as in real maps.
+      if (blockiness > 0 && c > 0 && static_cast<int>(rng() % 10) < blockiness) {
+        grid.set(c, r, grid.at(c - 1, r));
+      } else if (blockiness > 0 && r > 0 && static_cast<int>(rng() % 10) < blockiness) {
+        grid.set(c, r, grid.at(c, r - 1));
+      } else {
+        grid.set(c, r, static_cast<Cell>(rng() % 3));
+      }
+    }
+  }
+  return grid;
+}
+
+Grid RoundTrip(const Grid& grid, const EncodeOptions& options) {
+  auto bytes = EncodeLmap(grid, options);
+  EXPECT_TRUE(bytes.ok()) << bytes.status().ToString();
+  if (!bytes.ok()) return Grid();
+  auto decoded = DecodeLmap(*bytes);
+  EXPECT_TRUE(decoded.ok()) << decoded.status().ToString();
+  return decoded.ok() ? *decoded : Grid();
+}
+
+EncodeOptions Lossless(LosslessMethod method) {
+  EncodeOptions options;
+  options.lossless = true;
+  options.lossless_method = method;
+  return options;
+}
+
+TEST(CodecTest, LosslessRoundTripOnRandomGrids) {
+  std::mt19937 rng(1);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 1 + static_cast<int>(rng() % 70);
+    const int h = 1 + static_cast<int>(rng() % 50);
+    const Grid grid = RandomGrid(rng, w, h, static_cast<int>(trial % 10));
+    for (LosslessMethod method : {LosslessMethod::kExactLayers, LosslessMethod::kResidual}) {
+      const Grid decoded = RoundTrip(grid, Lossless(method));
+      ASSERT_EQ(decoded, grid) << "trial " << trial << " " << w << "x" << h;
+    }
+  }
+}
+
+TEST(CodecTest, ResidualAloneRebuildsAnyGrid) {
+  // Lossy layers off: RESD codes the whole grid against an all-unknown base.
+  std::mt19937 rng(2);
+  EncodeOptions options = Lossless(LosslessMethod::kResidual);
+  options.store_segments = false;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Grid grid =
+        RandomGrid(rng, 1 + static_cast<int>(rng() % 40), 1 + static_cast<int>(rng() % 40), 5);
+    ASSERT_EQ(RoundTrip(grid, options), grid) << "trial " << trial;
+  }
+}
+
+TEST(CodecTest, EdgeCases) {
+  std::vector<Grid> grids;
+  for (Cell c : {Cell::kFree, Cell::kOccupied, Cell::kUnknown}) {
+    grids.emplace_back(1, 1, c);    // a 1x1 map of each kind
+    grids.emplace_back(37, 23, c);  // all free (no obstacles), all occupied, all unknown
+  }
+  grids.emplace_back(0, 0);
+  grids.emplace_back(5, 0);
+  Grid no_free(20, 20, Cell::kUnknown);
+  for (int i = 0; i < 20; ++i) no_free.set(i, i, Cell::kOccupied);
+  grids.push_back(no_free);
+  for (const Grid& grid : grids) {
+    EXPECT_EQ(RoundTrip(grid, Lossless(LosslessMethod::kExactLayers)), grid)
+        << grid.width() << "x" << grid.height();
+    const Grid lossy = RoundTrip(grid, EncodeOptions());
+    EXPECT_EQ(lossy.width(), grid.width());
+    EXPECT_EQ(lossy.height(), grid.height());
+    EXPECT_EQ(lossy.meta, grid.meta);
+  }
+}
+
+TEST(CodecTest, HeaderKeepsMetadataBitForBit) {
+  Grid grid(3, 2, Cell::kFree);
+  grid.meta.resolution = 0.1 + 1e-17;
+  grid.meta.origin = Pose2D{-12.345678901234567, 0.1, 0.7853981633974483};
+  grid.meta.occupied_thresh = 0.7;
+  grid.meta.free_thresh = 0.25;
+  grid.meta.negate = true;
+  grid.meta.mode = MapMode::kScale;
+  const Grid decoded = RoundTrip(grid, EncodeOptions());
+  EXPECT_EQ(decoded.meta, grid.meta);
+}
+
+TEST(CodecTest, MetadataChunkIsReadBack) {
+  EncodeOptions options;
+  options.creator = "unit test";
+  options.time = "2026-11-22T04:00:00Z";
+  options.frame_id = "map";
+  options.robot_pose = Pose2D{1.5, -2.0, 0.25};
+  auto bytes = EncodeLmap(Grid(4, 4, Cell::kFree), options);
+  ASSERT_TRUE(bytes.ok());
+  auto contents = DecodeLmapContents(*bytes);
+  ASSERT_TRUE(contents.ok());
+  ASSERT_EQ(contents->metadata.size(), 4u);
+  EXPECT_EQ(contents->metadata[0], (std::pair<std::string, std::string>{"creator", "unit test"}));
+  EXPECT_EQ(contents->metadata[1].second, "2026-11-22T04:00:00Z");
+  EXPECT_EQ(contents->metadata[3].first, "robot_pose");
+}
+
+TEST(CodecTest, EncodingIsDeterministic) {
+  const std::string map = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  auto grid = LoadRosMap(map);
+  ASSERT_TRUE(grid.ok());
+  for (bool lossless : {false, true}) {
+    EncodeOptions options;
+    options.lossless = lossless;
+    auto a = EncodeLmap(*grid, options);
+    auto b = EncodeLmap(*grid, options);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(*a, *b);
+  }
+}
+
+// The lossy goals, on the bundled maps.
+TEST(CodecTest, LossyGoalsOnBundledMaps) {
+  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
+  ASSERT_FALSE(maps.empty());
+  for (const std::string& path : maps) {
+    auto grid = LoadRosMap(path);
+    ASSERT_TRUE(grid.ok()) << path;
+    const Grid decoded = RoundTrip(*grid, EncodeOptions());
+    const GridComparison m = CompareGrids(*grid, decoded);
+    EXPECT_TRUE(m.same_geometry) << path;
+    EXPECT_EQ(m.leaks, 0u) << path;
+    EXPECT_GE(m.obstacle_recall_1, 0.98) << path;
+    EXPECT_GE(m.obstacle_precision_1, 0.98) << path;
+    EXPECT_GE(m.free_iou, 0.95) << path;
+    EXPECT_LE(m.unknown_turned_free_share, 0.02) << path;
+  }
+}
+
+TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
+  const std::string dir = testing::SharedMapsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  std::vector<std::string> maps = testing::FindYamlFiles(dir);
+  for (const std::string& image : testing::FindBareImages(dir)) maps.push_back(image);
+  int tested = 0;
+  for (const std::string& path : maps) {
+    auto grid = LoadRosMap(path);
+    if (!grid.ok()) continue;  // e.g. a YAML naming a missing image
+    EncodeOptions options;
+    options.lossless = true;
+    options.store_segments = false;  // the segments do not change exactness; keep the test fast
+    EXPECT_EQ(RoundTrip(*grid, options), *grid) << path;
+    ++tested;
+  }
+  EXPECT_GT(tested, 10);
+}
+
+TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
+  ContainerWriter writer;
+  HeaderFields header;
+  header.width = 100000;
+  header.height = 100000;
+  writer.AddChunk("LMHD", WriteHeader(header));
+  auto grid = DecodeLmap(writer.Finish());
+  ASSERT_FALSE(grid.ok());
+  EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(grid.status().message().find("LMHD"), std::string::npos);
+}
+
+std::vector<std::uint8_t> WithExtraChunk(const std::string& type) {
+  ContainerWriter writer;
+  HeaderFields header;
+  header.width = 4;
+  header.height = 3;
+  writer.AddChunk("LMHD", WriteHeader(header));
+  writer.AddChunk(type, {0, 1, 2});
+  return writer.Finish();
+}
+
+TEST(CodecTest, UnknownAncillaryChunkIsSkippedUnknownCriticalRefused) {
+  auto skipped = DecodeLmap(WithExtraChunk("zzzz"));
+  ASSERT_TRUE(skipped.ok()) << skipped.status().ToString();
+  EXPECT_EQ(*skipped, Grid(4, 3, Cell::kUnknown));
+  auto refused = DecodeLmap(WithExtraChunk("ZZZZ"));
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().code(), StatusCode::kUnsupported);
+  EXPECT_NE(refused.status().message().find("ZZZZ"), std::string::npos);
+}
+
+TEST(CodecTest, EveryBitFlipOfASmallFileIsDetectedOrHarmless) {
+  std::mt19937 rng(9);
+  Grid grid = RandomGrid(rng, 24, 16, 8);
+  EncodeOptions options;
+  options.lossless = true;
+  options.creator = "x";
+  auto bytes = EncodeLmap(grid, options);
+  ASSERT_TRUE(bytes.ok());
+  for (std::size_t i = 0; i < bytes->size(); ++i) {
+    for (int bit = 0; bit < 8; ++bit) {
+      std::vector<std::uint8_t> bad = *bytes;
+      bad[i] ^= static_cast<std::uint8_t>(1 << bit);
+      auto decoded = DecodeLmap(bad);
+      if (decoded.ok()) {
+        EXPECT_EQ(*decoded, grid) << "byte " << i << " bit " << bit;
+      }
+    }
+  }
+  for (std::size_t n = 0; n < bytes->size(); ++n) {
+    EXPECT_FALSE(DecodeLmap(std::vector<std::uint8_t>(bytes->begin(), bytes->begin() + n)).ok());
+  }
+}
+
+TEST(CodecTest, SaveAndLoad) {
+  const std::string dir = testing::MakeTempDir("codec_save");
+  const std::string path = dir + "/map.lmap";
+  std::mt19937 rng(4);
+  const Grid grid = RandomGrid(rng, 30, 20, 7);
+  EncodeOptions options;
+  options.lossless = true;
+  ASSERT_TRUE(SaveLmap(path, grid, options).ok());
+  auto loaded = LoadLmap(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.status().ToString();
+  EXPECT_EQ(*loaded, grid);
+  // Saving into a missing folder fails and writes nothing.
+  EXPECT_FALSE(SaveLmap(dir + "/missing/map.lmap", grid, options).ok());
+  auto missing = LoadLmap(dir + "/nothing.lmap");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.status().code(), StatusCode::kNotFound);
+}
+
+TEST(CompareGridsTest, CountsLeaksBetweenLargeRegions) {
+  // Two 10x10 free rooms split by an occupied column; the decode opens it.
+  Grid original(21, 10, Cell::kFree);
+  for (int r = 0; r < 10; ++r) original.set(10, r, Cell::kOccupied);
+  Grid decoded = original;
+  decoded.set(10, 5, Cell::kFree);
+  const GridComparison m = CompareGrids(original, decoded);
+  EXPECT_EQ(m.leaks, 1u);
+  EXPECT_EQ(m.cells_equal, original.size() - 1);
+  EXPECT_DOUBLE_EQ(m.obstacle_recall_1, 1.0);  // (10,5) has occupied neighbours
+  EXPECT_DOUBLE_EQ(m.obstacle_precision_1, 1.0);
+  EXPECT_DOUBLE_EQ(m.free_iou, 200.0 / 201.0);
+  EXPECT_EQ(CompareGrids(original, original).leaks, 0u);
+}
+
+TEST(CompareGridsTest, RecallPrecisionAndUnknownTurnedFree) {
+  Grid original(10, 1, Cell::kUnknown);
+  original.set(0, 0, Cell::kOccupied);
+  original.set(5, 0, Cell::kOccupied);
+  original.set(9, 0, Cell::kFree);
+  Grid decoded(10, 1, Cell::kUnknown);
+  decoded.set(1, 0, Cell::kOccupied);  // within one cell of (0,0)
+  decoded.set(8, 0, Cell::kOccupied);  // far from any original obstacle
+  decoded.set(9, 0, Cell::kFree);
+  decoded.set(3, 0, Cell::kFree);  // was unknown
+  const GridComparison m = CompareGrids(original, decoded);
+  EXPECT_DOUBLE_EQ(m.obstacle_recall_1, 0.5);
+  EXPECT_DOUBLE_EQ(m.obstacle_precision_1, 0.5);
+  EXPECT_EQ(m.unknown_turned_free, 1u);
+  EXPECT_DOUBLE_EQ(m.unknown_turned_free_share, 1.0);
+  EXPECT_DOUBLE_EQ(m.free_iou, 0.5);
+}
+
+}  // namespace
+}  // namespace linemap
+
+namespace linemap {
+namespace {
+
+// A SEGS chunk may be Draco-coded (payload coder 2); it must decode to the
+// same grid as the varint form.
+TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
+  const std::vector<LatticeSegment> segments = {
+      {{0, 0}, {9, 0}}, {{2, 1}, {2, 7}}, {{8, 3}, {1, 6}}, {{5, 5}, {9, 9}}};
+  HeaderFields header;
+  header.width = 10;
+  header.height = 10;
+  auto file = [&](const std::vector<std::uint8_t>& segs_payload) {
+    ContainerWriter writer;
+    writer.AddChunk("LMHD", WriteHeader(header));
+    writer.AddChunk("SEGS", segs_payload);
+    return writer.Finish();
+  };
+  std::vector<LatticeSegment> canonical = segments;
+  CanonicalizeSegments(&canonical);
+  std::vector<std::uint8_t> draco = {static_cast<std::uint8_t>(PayloadCoder::kDraco)};
+  const std::vector<std::uint8_t> body = EncodeSegmentsDraco(canonical);
+  ASSERT_FALSE(body.empty());
+  draco.insert(draco.end(), body.begin(), body.end());
+  auto from_draco = DecodeLmapContents(file(draco));
+  ASSERT_TRUE(from_draco.ok()) << from_draco.status().ToString();
+  auto from_varint = DecodeLmapContents(file(WrapPayload(WriteSegments(canonical), false)));
+  ASSERT_TRUE(from_varint.ok());
+  EXPECT_EQ(from_draco->segments, canonical);
+  EXPECT_EQ(from_draco->grid, from_varint->grid);
+  EXPECT_EQ(from_draco->chunks[1].coder, "draco");
+  // Draco is accepted for SEGS only.
+  ContainerWriter writer;
+  writer.AddChunk("LMHD", WriteHeader(header));
+  writer.AddChunk("OCCP", draco);
+  EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
+}
+
+}  // namespace
+}  // namespace linemap

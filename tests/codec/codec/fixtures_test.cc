@@ -1,0 +1,82 @@
+// Files written by format version 1.0 decode to the same grids forever:
+// the lossless fixtures to their source maps, the lossy ones to the grids
+// recorded when they were written (CRC-32 of the cell values 0/1/2 in
+// grid-row order, computed from the decoded PGM by a separate script).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "format/deflate.h"
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+std::string Fixture(const std::string& name) {
+  return testing::SourceDir() + "/tests/data/lmap/" + name;
+}
+
+std::uint32_t CellsCrc(const Grid& grid) {
+  std::vector<std::uint8_t> values(grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    values[i] = static_cast<std::uint8_t>(grid.cells()[i]);
+  return Crc32(0, values.data(), values.size());
+}
+
+TEST(FixturesTest, LosslessFixturesDecodeToTheirMaps) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"lse_arena_lossless.lmap", "/navtut/lse_arena.yaml"},
+      {"depot_lossless.lmap", "/nav2/depot.yaml"},
+  };
+  for (const auto& [file, map] : cases) {
+    auto decoded = LoadLmap(Fixture(file));
+    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+    auto original = LoadRosMap(testing::BundledMapsDir() + map);
+    ASSERT_TRUE(original.ok());
+    EXPECT_EQ(*decoded, *original) << file;
+  }
+}
+
+TEST(FixturesTest, LossyFixturesDecodeToTheRecordedGrids) {
+  struct Case {
+    const char* file;
+    int width, height;
+    std::uint32_t crc;
+    std::size_t free, occupied, unknown;
+  };
+  const Case cases[] = {
+      {"lse_arena_lossy.lmap", 80, 60, 0x6305db6fu, 4455, 339, 6},
+      {"depot_lossy.lmap", 604, 307, 0x6afc8617u, 180014, 4942, 472},
+  };
+  for (const Case& c : cases) {
+    auto decoded = LoadLmap(Fixture(c.file));
+    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+    EXPECT_EQ(decoded->width(), c.width);
+    EXPECT_EQ(decoded->height(), c.height);
+    const CellCounts counts = decoded->Count();
+    EXPECT_EQ(counts.free, c.free) << c.file;
+    EXPECT_EQ(counts.occupied, c.occupied) << c.file;
+    EXPECT_EQ(counts.unknown, c.unknown) << c.file;
+    EXPECT_EQ(CellsCrc(*decoded), c.crc) << c.file;
+  }
+}
+
+TEST(FixturesTest, MustFailFilesGiveTheirErrors) {
+  const std::pair<const char*, StatusCode> cases[] = {
+      {"bad_crc.lmap", StatusCode::kCorrupt},
+      {"truncated.lmap", StatusCode::kCorrupt},
+      {"huge_dimensions.lmap", StatusCode::kResourceExhausted},
+  };
+  for (const auto& [file, code] : cases) {
+    auto decoded = LoadLmap(Fixture(file));
+    ASSERT_FALSE(decoded.ok()) << file;
+    EXPECT_EQ(decoded.status().code(), code) << file << ": " << decoded.status().ToString();
+    EXPECT_NE(decoded.status().message().find(file), std::string::npos) << "names the file";
+  }
+}
+
+}  // namespace
+}  // namespace linemap

@@ -1,0 +1,271 @@
+// linemap's extractor: the epsilon bound as a property (checked by brute
+// force here), and hand-made maps with known answers.
+#include "codec/lines/linemap_extractor.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "linemap/grid.h"
+#include "linemap/lines.h"
+#include "linemap/map_io.h"
+#include "tests/codec/lines/test_maps.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::DrawRoom;
+using testing::FillBox;
+
+LineExtractionOptions LinemapOptions(double epsilon) {
+  LineExtractionOptions options;
+  options.method = LineMethod::kLinemap;
+  options.epsilon_cells = epsilon;
+  return options;
+}
+
+double BruteDistance(double px, double py, const LineSegment& s) {
+  const double vx = s.x2 - s.x1, vy = s.y2 - s.y1;
+  const double len2 = vx * vx + vy * vy;
+  double t = len2 > 0 ? ((px - s.x1) * vx + (py - s.y1) * vy) / len2 : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(px - (s.x1 + t * vx), py - (s.y1 + t * vy));
+}
+
+// Sizes of the 8-connected components of the edge map, per cell (an
+// independent flood written for the test).
+std::vector<int> ComponentSizes(const EdgeMap& edges) {
+  const int w = edges.width, h = edges.height;
+  std::vector<int> label(w * h, -1), sizes;
+  for (int seed = 0; seed < w * h; ++seed) {
+    if (!edges.is_edge[seed] || label[seed] >= 0) continue;
+    const int id = static_cast<int>(sizes.size());
+    std::vector<int> stack = {seed};
+    label[seed] = id;
+    int size = 0;
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      ++size;
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          const int c = i % w + dc, r = i / w + dr;
+          if (c < 0 || r < 0 || c >= w || r >= h) continue;
+          if (edges.is_edge[r * w + c] && label[r * w + c] < 0) {
+            label[r * w + c] = id;
+            stack.push_back(r * w + c);
+          }
+        }
+      }
+    }
+    sizes.push_back(size);
+  }
+  std::vector<int> per_cell(w * h, 0);
+  for (int i = 0; i < w * h; ++i) per_cell[i] = label[i] >= 0 ? sizes[label[i]] : 0;
+  return per_cell;
+}
+
+// Every edge cell is within epsilon of a segment, except the cells left to
+// the furniture layer, which must all belong to small components.
+void ExpectBoundHolds(const LineExtraction& result, const LineExtractionOptions& options) {
+  const EdgeMap& edges = result.edges;
+  const std::vector<int> sizes = ComponentSizes(edges);
+  ASSERT_EQ(result.left_to_blobs.size(), edges.is_edge.size());
+  std::size_t left = 0;
+  for (int row = 0; row < edges.height; ++row) {
+    for (int col = 0; col < edges.width; ++col) {
+      const int i = row * edges.width + col;
+      if (!edges.is_edge[i]) {
+        EXPECT_FALSE(result.left_to_blobs[i]);
+        continue;
+      }
+      double best = std::numeric_limits<double>::infinity();
+      for (const LineSegment& s : result.segments)
+        best = std::min(best, BruteDistance(col, row, s));
+      if (result.left_to_blobs[i]) {
+        ++left;
+        EXPECT_LT(sizes[i], options.min_component_cells) << col << "," << row;
+        EXPECT_GT(best, options.epsilon_cells) << col << "," << row;
+      } else {
+        EXPECT_LE(best, options.epsilon_cells + 1e-9) << col << "," << row;
+      }
+    }
+  }
+  EXPECT_EQ(left, result.cells_left_to_blobs);
+}
+
+TEST(LinemapBoundTest, HoldsOnRandomMaps) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 12; ++trial) {
+    // Rooms and boxes with speckle: walls, corners, thin and thick parts.
+    Grid grid(60 + 7 * trial, 45 + 5 * trial, Cell::kFree);
+    std::uniform_int_distribution<int> col(0, grid.width() - 1), row(0, grid.height() - 1);
+    for (int k = 0; k < 6; ++k) {
+      const int c0 = col(rng), r0 = row(rng);
+      FillBox(&grid, c0, r0, std::min(grid.width() - 1, c0 + col(rng) / 3),
+              std::min(grid.height() - 1, r0 + 1 + trial % 3), Cell::kOccupied);
+    }
+    std::bernoulli_distribution speck(0.03);
+    for (int r = 0; r < grid.height(); ++r) {
+      for (int c = 0; c < grid.width(); ++c) {
+        if (speck(rng)) grid.set(c, r, Cell::kOccupied);
+      }
+    }
+    for (double epsilon : {0.5, 1.0, 2.0}) {
+      const LineExtractionOptions options = LinemapOptions(epsilon);
+      StatusOr<LineExtraction> result = ExtractLines(grid, options);
+      ASSERT_TRUE(result.ok()) << result.status().message();
+      ExpectBoundHolds(*result, options);
+    }
+  }
+}
+
+TEST(LinemapBoundTest, HoldsOnBundledMaps) {
+  for (const char* name : {"/nav2/depot.yaml", "/navtut/lse_arena.yaml", "/strands/kth/map.yaml"}) {
+    StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + name);
+    ASSERT_TRUE(grid.ok()) << name;
+    const LineExtractionOptions options = LinemapOptions(1.0);
+    StatusOr<LineExtraction> result = ExtractLines(*grid, options);
+    ASSERT_TRUE(result.ok()) << name;
+    ExpectBoundHolds(*result, options);
+  }
+}
+
+TEST(LinemapExtractorTest, RoomWithADoorGivesFourWalls) {
+  // Room walls on the border of [1,40] x [1,30], a 10-cell doorway in the
+  // bottom wall (cols 15-24), unknown outside. Four walls; the bottom wall
+  // may come as its two sides of the door.
+  Grid grid(42, 32, Cell::kUnknown);
+  DrawRoom(&grid, 1, 1, 40, 30);
+  FillBox(&grid, 15, 1, 24, 1, Cell::kFree);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.0));
+  ASSERT_TRUE(result.ok());
+  const std::vector<LineSegment>& segments = result->segments;
+  ASSERT_GE(segments.size(), 4u);
+  ASSERT_LE(segments.size(), 5u);
+  int top = 0, left = 0, right = 0, bottom = 0;
+  for (const LineSegment& s : segments) {
+    if (std::abs(s.y1 - 30) < 1e-6 && std::abs(s.y2 - 30) < 1e-6) ++top;
+    if (std::abs(s.x1 - 1) < 1e-6 && std::abs(s.x2 - 1) < 1e-6) ++left;
+    if (std::abs(s.x1 - 40) < 1e-6 && std::abs(s.x2 - 40) < 1e-6) ++right;
+    if (std::abs(s.y1 - 1) < 1e-6 && std::abs(s.y2 - 1) < 1e-6) {
+      ++bottom;
+      // No segment crosses the doorway.
+      EXPECT_TRUE(std::max(s.x1, s.x2) <= 14 + 1e-6 || std::min(s.x1, s.x2) >= 25 - 1e-6);
+    }
+  }
+  EXPECT_EQ(top, 1);
+  EXPECT_EQ(left, 1);
+  EXPECT_EQ(right, 1);
+  EXPECT_GE(bottom, 1);
+  EXPECT_EQ(top + left + right + bottom, static_cast<int>(segments.size()));
+}
+
+TEST(LinemapExtractorTest, RoomWallsAreJoinedAtTheCorners) {
+  // Walls on the border of [1,20] x [1,14], unknown outside: the corner cells
+  // are not edge points, so the four wall segments end one cell short of
+  // each corner; corner joining extends them to the corner cell centres.
+  Grid grid(22, 16, Cell::kUnknown);
+  DrawRoom(&grid, 1, 1, 20, 14);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.0));
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->segments.size(), 4u);
+  auto has_end_at = [&](double x, double y) {
+    int count = 0;
+    for (const LineSegment& s : result->segments) {
+      count += std::hypot(s.x1 - x, s.y1 - y) < 1e-6;
+      count += std::hypot(s.x2 - x, s.y2 - y) < 1e-6;
+    }
+    return count;
+  };
+  EXPECT_EQ(has_end_at(1, 1), 2);
+  EXPECT_EQ(has_end_at(20, 1), 2);
+  EXPECT_EQ(has_end_at(1, 14), 2);
+  EXPECT_EQ(has_end_at(20, 14), 2);
+  LineExtractionOptions no_join = LinemapOptions(1.0);
+  no_join.corner_join_cells = 0;
+  StatusOr<LineExtraction> unjoined = ExtractLines(grid, no_join);
+  ASSERT_TRUE(unjoined.ok());
+  for (const LineSegment& s : unjoined->segments) {
+    EXPECT_GT(std::hypot(s.x1 - 1, s.y1 - 1), 0.5);
+    EXPECT_GT(std::hypot(s.x2 - 1, s.y2 - 1), 0.5);
+  }
+}
+
+TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
+  // The obstacle fills rows 0..20 + j(col), j random in {-1, 0, 1}, across
+  // the whole width; free above. Its edge map is the ragged top boundary,
+  // within rows 19..21, so one horizontal segment on row 20 bounds it by 1.5.
+  // The merge cost cap is lifted: this is the pure minimum-segment mode.
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> jitter(-1, 1);
+  Grid grid(80, 40, Cell::kFree);
+  for (int col = 0; col < 80; ++col) FillBox(&grid, col, 0, col, 20 + jitter(rng), Cell::kOccupied);
+  LineExtractionOptions options = LinemapOptions(1.5);
+  options.max_added_cost_cells = std::numeric_limits<double>::infinity();
+  StatusOr<LineExtraction> result = ExtractLines(grid, options);
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->segments.size(), 1u);
+  const LineSegment& s = result->segments[0];
+  const double angle = testing::SegmentAngleDeg(s);
+  EXPECT_LT(std::min(angle, 180 - angle), 1.5);
+  EXPECT_NEAR(std::min(s.x1, s.x2), 0, 1.0);
+  EXPECT_NEAR(std::max(s.x1, s.x2), 79, 1.0);
+  EXPECT_NEAR(0.5 * (s.y1 + s.y2), 20, 0.5);
+}
+
+TEST(LinemapExtractorTest, SpeckleIsLeftToTheFurnitureLayerAndCounted) {
+  // A straight wall and two isolated specks far from it: the specks are
+  // components of one cell, below min_component_cells = 3.
+  Grid grid(40, 20, Cell::kFree);
+  FillBox(&grid, 5, 5, 34, 5, Cell::kOccupied);
+  grid.set(10, 15, Cell::kOccupied);
+  grid.set(30, 16, Cell::kOccupied);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.0));
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->segments.size(), 1u);
+  EXPECT_EQ(result->cells_left_to_blobs, 2u);
+  EXPECT_TRUE(result->left_to_blobs[15 * 40 + 10]);
+  EXPECT_TRUE(result->left_to_blobs[16 * 40 + 30]);
+}
+
+TEST(LinemapChainsTest, EveryCellInExactlyOneChainOfNeighbours) {
+  Grid grid(30, 30, Cell::kUnknown);
+  DrawRoom(&grid, 2, 2, 27, 20);
+  FillBox(&grid, 8, 8, 12, 9, Cell::kOccupied);
+  const EdgeMap edges = ComputeEdgeMap(grid);
+  const auto chains = lines_internal::TraceEdgeChains(edges, edges.is_edge);
+  std::vector<int> seen(edges.is_edge.size(), 0);
+  for (const auto& chain : chains) {
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      ++seen[chain[i]];
+      if (i == 0) continue;
+      const int dc = static_cast<int>(chain[i] % 30) - static_cast<int>(chain[i - 1] % 30);
+      const int dr = static_cast<int>(chain[i] / 30) - static_cast<int>(chain[i - 1] / 30);
+      EXPECT_LE(std::max(std::abs(dc), std::abs(dr)), 1);
+    }
+  }
+  for (std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], edges.is_edge[i] ? 1 : 0);
+}
+
+TEST(LinemapSplitTest, StraightChainIsOnePieceAndACornerTwo) {
+  // Cells (0..9, 0) then (9, 1..9): an L of 19 cells.
+  std::vector<std::uint32_t> chain;
+  const int width = 20;
+  for (int c = 0; c < 10; ++c) chain.push_back(static_cast<std::uint32_t>(c));
+  EXPECT_EQ(lines_internal::SplitChain(chain, width, 0.5), std::vector<int>{10});
+  for (int r = 1; r < 10; ++r) chain.push_back(static_cast<std::uint32_t>(r * width + 9));
+  const std::vector<int> pieces = lines_internal::SplitChain(chain, width, 0.5);
+  ASSERT_EQ(pieces.size(), 2u);
+  // The first piece may take the corner cell's neighbour only if it stays within 0.5.
+  EXPECT_GE(pieces[0], 10);
+  EXPECT_LE(pieces[0], 11);
+}
+
+}  // namespace
+}  // namespace linemap

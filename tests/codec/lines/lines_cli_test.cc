@@ -1,0 +1,72 @@
+// `linemap lines` end to end on a map written by the test.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "linemap/grid.h"
+#include "linemap/map_io.h"
+#include "tests/codec/lines/test_maps.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::RunCli;
+
+// One wall along row 3, cols 2..17, at 0.1 m/cell with origin (1, 2).
+std::string WriteWallMap(const std::string& dir) {
+  Grid grid(20, 7, Cell::kFree);
+  grid.meta.resolution = 0.1;
+  grid.meta.origin = {1.0, 2.0, 0.0};
+  testing::FillBox(&grid, 2, 3, 17, 3, Cell::kOccupied);
+  const std::string yaml = dir + "/wall.yaml";
+  EXPECT_TRUE(SaveRosMap(yaml, grid).ok());
+  return yaml;
+}
+
+TEST(LinesCliTest, WritesSegmentsInMapMetres) {
+  const std::string dir = testing::MakeTempDir("lines_cli_csv");
+  const std::string yaml = WriteWallMap(dir);
+  const testing::CliResult r =
+      RunCli({"lines", yaml, "--method", "rmline", "-o", dir + "/lines.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // x = 1 + (col + 0.5) * 0.1, y = 2 + (3 + 0.5) * 0.1.
+  EXPECT_EQ(testing::ReadFile(dir + "/lines.csv"),
+            "layer,x1,y1,x2,y2\nsegment,1.250000,2.350000,2.750000,2.350000\n");
+  EXPECT_NE(r.out.find("lines:      1"), std::string::npos) << r.out;
+}
+
+TEST(LinesCliTest, JsonHasTheFiveFigures) {
+  const std::string dir = testing::MakeTempDir("lines_cli_json");
+  const testing::CliResult r = RunCli({"lines", WriteWallMap(dir), "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* key : {"\"lines\":1,", "\"displ_cm\":0,", "\"displ_cells\":0,",
+                          "\"displ_max_cells\":0,", "\"ms\":"}) {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  }
+}
+
+TEST(LinesCliTest, PoseSelectsTheComponent) {
+  const std::string dir = testing::MakeTempDir("lines_cli_pose");
+  const std::string yaml = WriteWallMap(dir);
+  // (1.35, 2.15) m is cell (0, 1): free, below the wall.
+  const testing::CliResult r = RunCli({"lines", yaml, "--pose", "1.35,2.15", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"lines\":1,"), std::string::npos) << r.out;
+}
+
+TEST(LinesCliTest, BadInputExitsWithTwoAndWritesNothing) {
+  const std::string dir = testing::MakeTempDir("lines_cli_bad");
+  const std::string yaml = WriteWallMap(dir);
+  const std::string out = dir + "/never.csv";
+  EXPECT_EQ(RunCli({"lines", yaml, "--method", "hough", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", yaml, "--dtheta", "0", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", yaml, "--pose", "100,100", "-o", out}).exit_code, 2);
+  // (2.25, 2.35) m is cell (12, 3), on the wall.
+  EXPECT_EQ(RunCli({"lines", yaml, "--pose", "2.25,2.35", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", dir + "/missing.yaml", "-o", out}).exit_code, 2);
+  EXPECT_FALSE(testing::FileExists(out));
+}
+
+}  // namespace
+}  // namespace linemap

@@ -1,0 +1,251 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include "linemap/plan.h"
+#include "tests/codec/plan/plan_test_util.h"
+
+namespace linemap {
+namespace {
+
+using plan_test::GridFromText;
+using plan_test::SampledSegmentSafe;
+
+std::vector<std::pair<int, int>> Pairs(const std::vector<CellIndex>& cells) {
+  std::vector<std::pair<int, int>> out;
+  for (const CellIndex& c : cells) out.emplace_back(c.col, c.row);
+  return out;
+}
+
+TEST(SegmentCellsTest, KnownLines) {
+  using P = std::vector<std::pair<int, int>>;
+  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {2, 0})), (P{{0, 0}, {1, 0}, {2, 0}}));
+  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {0, -2})), (P{{0, 0}, {0, -1}, {0, -2}}));
+  // Through the corner at (0.5, 0.5): both side cells are touched.
+  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {1, 1})), (P{{0, 0}, {1, 0}, {0, 1}, {1, 1}}));
+  // y = x / 2 crosses x = 0.5 at y = 0.25, y = 0.5 at x = 1, x = 1.5 at 0.75.
+  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {2, 1})), (P{{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
+  EXPECT_EQ(Pairs(SegmentCells({3, 3}, {3, 3})), (P{{3, 3}}));
+}
+
+// Every cell a dense sampling of the segment meets is in SegmentCells.
+TEST(SegmentCellsTest, CoversDenseSampling) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(-12, 12);
+  for (int trial = 0; trial < 300; ++trial) {
+    const CellIndex a{coord(rng), coord(rng)}, b{coord(rng), coord(rng)};
+    const std::vector<CellIndex> cells = SegmentCells(a, b);
+    std::set<std::pair<int, int>> set;
+    for (const CellIndex& c : cells) set.insert({c.col, c.row});
+    const int steps = 4000;
+    for (int i = 0; i <= steps; ++i) {
+      const double t = static_cast<double>(i) / steps;
+      const int c = static_cast<int>(std::floor(a.col + t * (b.col - a.col) + 0.5));
+      const int r = static_cast<int>(std::floor(a.row + t * (b.row - a.row) + 0.5));
+      ASSERT_TRUE(set.count({c, r})) << a.col << "," << a.row << " -> " << b.col << "," << b.row;
+    }
+    // 4-connected walk from a to b: no cell twice.
+    EXPECT_EQ(set.size(), cells.size());
+  }
+}
+
+TEST(MoveTemplateTest, RaysCoverTheDisk) {
+  const MoveTemplate moves = MoveTemplate::Build(10.0);
+  EXPECT_EQ(moves.rays.size() % 8, 0u);
+  EXPECT_GE(moves.rays.size(), 63u);  // angular step <= 1 / D_max
+  const std::vector<CellOffset> east = {{1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0},
+                                        {6, 0}, {7, 0}, {8, 0}, {9, 0}, {10, 0}};
+  EXPECT_EQ(moves.rays[0].cells, east);
+  std::set<std::pair<int, int>> seen;
+  for (const TemplateRay& ray : moves.rays) {
+    for (std::size_t k = 0; k < ray.cells.size(); ++k) {
+      seen.insert({ray.cells[k].dx, ray.cells[k].dy});
+      EXPECT_LE(std::hypot(ray.cells[k].dx, ray.cells[k].dy), 10.0 + 1e-9);
+      if (k > 0) {  // consecutive cells are 8-adjacent
+        EXPECT_LE(std::abs(ray.cells[k].dx - ray.cells[k - 1].dx), 1);
+        EXPECT_LE(std::abs(ray.cells[k].dy - ray.cells[k - 1].dy), 1);
+      }
+    }
+  }
+  for (int dy = -10; dy <= 10; ++dy) {
+    for (int dx = -10; dx <= 10; ++dx) {
+      if ((dx || dy) && dx * dx + dy * dy <= 100) {
+        EXPECT_TRUE(seen.count({dx, dy})) << dx << "," << dy;
+      }
+    }
+  }
+}
+
+struct Planned {
+  SafeZone zone;
+  std::vector<CellTrajectory> trajectories;
+};
+
+Planned Generate(const Grid& grid, CellIndex start, CellIndex goal, double radius = 0.0,
+                 double d_min = 0.0, double d_max = 20.0) {
+  Planned p;
+  p.zone = ComputeSafeZone(grid, ImpassableAreaMask::Build(radius));
+  const LeeWave wave = RunLeeWave(p.zone, start, goal);
+  const TrajectoryRegion region = MarkTrajectoryRegion(p.zone, wave, goal);
+  GenerationOptions options;
+  options.d_min_cells = d_min;
+  p.trajectories =
+      GenerateTrajectories(p.zone, wave, region, MoveTemplate::Build(d_max), start, goal, options);
+  return p;
+}
+
+void ExpectAllSafe(const Planned& p, CellIndex start, CellIndex goal) {
+  for (const CellTrajectory& t : p.trajectories) {
+    ASSERT_GE(t.waypoints.size(), 1u);
+    EXPECT_EQ(t.waypoints.front(), start);
+    EXPECT_EQ(t.waypoints.back(), goal);
+    double length = 0;
+    for (std::size_t i = 1; i < t.waypoints.size(); ++i) {
+      EXPECT_TRUE(SampledSegmentSafe(p.zone, t.waypoints[i - 1], t.waypoints[i]));
+      length += std::hypot(t.waypoints[i].col - t.waypoints[i - 1].col,
+                           t.waypoints[i].row - t.waypoints[i - 1].row);
+    }
+    EXPECT_NEAR(t.length_cells, length, 1e-9);
+  }
+  // Best first: fewest moves, then shortest, among those within 5 % of the
+  // shortest; the longer ones after them, in the same order.
+  double shortest = 1e300;
+  for (const CellTrajectory& t : p.trajectories) shortest = std::min(shortest, t.length_cells);
+  const auto rank = [&](const CellTrajectory& t) {
+    return std::make_tuple(t.length_cells > 1.05 * shortest + 1e-9, t.waypoints.size(),
+                           t.length_cells);
+  };
+  for (std::size_t i = 1; i < p.trajectories.size(); ++i) {
+    EXPECT_LE(rank(p.trajectories[i - 1]), rank(p.trajectories[i]));
+  }
+}
+
+TEST(GenerateTrajectoriesTest, StraightCorridorIsOneMove) {
+  const Grid grid = GridFromText({
+      "############",
+      "#..........#",
+      "############",
+  });
+  const Planned p = Generate(grid, {1, 1}, {10, 1});
+  ASSERT_FALSE(p.trajectories.empty());
+  EXPECT_EQ(Pairs(p.trajectories[0].waypoints),
+            (std::vector<std::pair<int, int>>{{1, 1}, {10, 1}}));
+  ExpectAllSafe(p, {1, 1}, {10, 1});
+}
+
+TEST(GenerateTrajectoriesTest, LShapedCorridorTurnsOnceAtTheCorner) {
+  const Grid grid = GridFromText({
+      "##########",
+      "########.#",
+      "########.#",
+      "########.#",
+      "########.#",
+      "########.#",
+      "########.#",
+      "########.#",
+      "#........#",
+      "##########",
+  });
+  const Planned p = Generate(grid, {1, 1}, {8, 8});
+  ASSERT_FALSE(p.trajectories.empty());
+  EXPECT_EQ(Pairs(p.trajectories[0].waypoints),
+            (std::vector<std::pair<int, int>>{{1, 1}, {8, 1}, {8, 8}}));
+  EXPECT_DOUBLE_EQ(p.trajectories[0].length_cells, 14.0);
+  EXPECT_FALSE(p.trajectories[0].straightened);
+  ExpectAllSafe(p, {1, 1}, {8, 8});
+}
+
+// A square pillar straight between start and goal: going over it and going
+// under it are equally short, and both must be returned.
+TEST(GenerateTrajectoriesTest, ReturnsEquallyShortAlternatives) {
+  const Grid grid = GridFromText({
+      "...........",
+      "...........",
+      "....###....",
+      "....###....",
+      "....###....",
+      "....###....",
+      "....###....",
+      "...........",
+      "...........",
+  });
+  const CellIndex start{1, 4}, goal{9, 4};
+  const Planned p = Generate(grid, start, goal);
+  ASSERT_GE(p.trajectories.size(), 2u);
+  ExpectAllSafe(p, start, goal);
+  const std::size_t best_nodes = p.trajectories[0].waypoints.size();
+  const double best_length = p.trajectories[0].length_cells;
+  bool above = false, below = false;
+  for (const CellTrajectory& t : p.trajectories) {
+    if (t.waypoints.size() != best_nodes || std::abs(t.length_cells - best_length) > 1e-9) continue;
+    for (const CellIndex& c : t.waypoints) {
+      above = above || c.row > 6;
+      below = below || c.row < 2;
+    }
+  }
+  EXPECT_TRUE(above);
+  EXPECT_TRUE(below);
+  // The node queue itself (not only the straightened shortest paths) goes
+  // both ways: Node_Max keeps mirror-image ties.
+  bool queue_above = false, queue_below = false;
+  for (const CellTrajectory& t : p.trajectories) {
+    if (t.straightened) continue;
+    for (const CellIndex& c : t.waypoints) {
+      queue_above = queue_above || c.row > 6;
+      queue_below = queue_below || c.row < 2;
+    }
+  }
+  EXPECT_TRUE(queue_above);
+  EXPECT_TRUE(queue_below);
+}
+
+TEST(GenerateTrajectoriesTest, NoTrajectoryWhenNoneExists) {
+  const Grid grid = GridFromText({
+      "....#....",
+      "....#....",
+      "....#....",
+  });
+  EXPECT_TRUE(Generate(grid, {0, 1}, {8, 1}).trajectories.empty());
+  // Reachable only through a gap narrower than the safety radius.
+  const Grid narrow = GridFromText({
+      "...........",
+      "...........",
+      ".....#.....",
+      "...........",
+      "...........",
+  });
+  EXPECT_TRUE(Generate(narrow, {0, 2}, {10, 2}, 1.5).trajectories.empty());
+}
+
+TEST(GenerateTrajectoriesTest, StartEqualsGoal) {
+  const Grid grid(4, 4, Cell::kFree);
+  const Planned p = Generate(grid, {1, 1}, {1, 1});
+  ASSERT_EQ(p.trajectories.size(), 1u);
+  EXPECT_EQ(p.trajectories[0].waypoints.size(), 1u);
+}
+
+// With D_min longer than the corridor's legs no move can be generated; the
+// fallback still returns a safe trajectory because the goal is reachable.
+TEST(GenerateTrajectoriesTest, FallbackWhenDMinForbidsEveryMove) {
+  const Grid grid = GridFromText({
+      "######",
+      "####.#",
+      "####.#",
+      "#....#",
+      "######",
+  });
+  const Planned p = Generate(grid, {1, 1}, {4, 3}, 0.0, /*d_min=*/6.0);
+  ASSERT_EQ(p.trajectories.size(), 1u);
+  EXPECT_TRUE(p.trajectories[0].straightened);
+  EXPECT_EQ(Pairs(p.trajectories[0].waypoints),
+            (std::vector<std::pair<int, int>>{{1, 1}, {4, 1}, {4, 3}}));
+  ExpectAllSafe(p, {1, 1}, {4, 3});
+}
+
+}  // namespace
+}  // namespace linemap

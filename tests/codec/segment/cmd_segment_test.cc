@@ -1,0 +1,49 @@
+// The `linemap segment` command, end to end through the built CLI.
+#include <gtest/gtest.h>
+
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+std::string Arena() { return testing::BundledMapsDir() + "/navtut/lse_arena.yaml"; }
+
+TEST(CmdSegmentTest, WritesJsonAndPrintsCounts) {
+  const std::string out = testing::MakeTempDir("cmd_segment") + "/arena.json";
+  const testing::CliResult result = testing::RunCli({"segment", Arena(), "-o", out});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("rooms: 1"), std::string::npos) << result.out;
+  const std::string json = testing::ReadFile(out);
+  EXPECT_EQ(json.rfind("{\"resolution\":0.05,\"timings_ms\":{\"layout\":", 0), 0u)
+      << json.substr(0, 80);
+  // 4455 = the map's free cells (`linemap info`), all in one component.
+  EXPECT_NE(json.find("\"rooms\":[{\"free_cells\":4455,"), std::string::npos);
+  EXPECT_NE(json.find("\"closed_by_lee\":true"), std::string::npos);
+  EXPECT_NE(json.find("\"blobs\":["), std::string::npos);
+}
+
+TEST(CmdSegmentTest, WritesGeoJson) {
+  const std::string out = testing::MakeTempDir("cmd_segment_geo") + "/arena.geojson";
+  const testing::CliResult result =
+      testing::RunCli({"segment", Arena(), "--pose", "1.0,1.0", "--geojson", "-o", out});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string json = testing::ReadFile(out);
+  EXPECT_EQ(json.rfind("{\"type\":\"FeatureCollection\",\"features\":[", 0), 0u);
+  EXPECT_NE(json.find("\"layer\":\"room_border\""), std::string::npos);
+  EXPECT_NE(json.find("\"type\":\"Polygon\""), std::string::npos);
+}
+
+TEST(CmdSegmentTest, BadUsageAndBadPose) {
+  const std::string dir = testing::MakeTempDir("cmd_segment_bad");
+  EXPECT_EQ(testing::RunCli({"segment", Arena()}).exit_code, 2);  // no -o
+  const testing::CliResult outside =
+      testing::RunCli({"segment", Arena(), "--pose", "-50,-50", "-o", dir + "/x.json"});
+  EXPECT_EQ(outside.exit_code, 2);
+  EXPECT_NE(outside.err.find("outside the map"), std::string::npos) << outside.err;
+  EXPECT_FALSE(testing::FileExists(dir + "/x.json"));
+  EXPECT_EQ(testing::RunCli({"segment", dir + "/missing.yaml", "-o", dir + "/y.json"}).exit_code,
+            2);
+}
+
+}  // namespace
+}  // namespace linemap

@@ -1,0 +1,62 @@
+#include "tools/linemap/lmap_cli_util.h"
+
+#include <chrono>
+#include <fstream>
+
+#include "format/png_writer.h"
+#include "linemap/map_io.h"
+
+namespace linemap::cli {
+
+std::vector<OptionSpec> DecodeLimitOptionSpecs() {
+  return {
+      {"--max-cells", "N", "refuse maps with more cells than N (default 268435456 = 2^28)"},
+      {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
+  };
+}
+
+StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
+  DecodeLimits limits;
+  if (args.Get("--max-cells")) {
+    LINEMAP_ASSIGN_OR_RETURN(double v, args.GetDouble("--max-cells", 0.0));
+    if (!(v >= 1)) return InvalidArgumentError("--max-cells must be at least 1");
+    limits.max_cells = static_cast<std::uint64_t>(v);
+  }
+  if (args.Get("--max-file-bytes")) {
+    LINEMAP_ASSIGN_OR_RETURN(double v, args.GetDouble("--max-file-bytes", 0.0));
+    if (!(v >= 1)) return InvalidArgumentError("--max-file-bytes must be at least 1");
+    limits.max_file_bytes = static_cast<std::uint64_t>(v);
+  }
+  return limits;
+}
+
+bool IsLmapFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> head(8, 0);
+  in.read(reinterpret_cast<char*>(head.data()), 8);
+  return in.gcount() == 8 && LooksLikeLmap(head);
+}
+
+StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+  // The 2-bit palette PNG: for three-level maps it is within a few bytes of
+  // netpbm's `pnmtopng -compression 9` and four times cheaper to make than
+  // the 8-bit grey one.
+  const int w = grid.width();
+  const int h = grid.height();
+  std::vector<std::uint8_t> index(grid.size());
+  for (int y = 0; y < h; ++y) {
+    const int row = h - 1 - y;  // image row 0 is the top
+    for (int x = 0; x < w; ++x) {
+      index[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(grid.at(x, row));
+    }
+  }
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> p,
+                           EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown}));
+  return p.size();
+}
+
+double NowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace linemap::cli

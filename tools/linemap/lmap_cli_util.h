@@ -1,0 +1,31 @@
+// Helpers shared by the .lmap commands (encode, decode, export, eval, info).
+#ifndef LINEMAP_TOOLS_LINEMAP_LMAP_CLI_UTIL_H_
+#define LINEMAP_TOOLS_LINEMAP_LMAP_CLI_UTIL_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/grid.h"
+#include "linemap/status.h"
+#include "tools/linemap/cli.h"
+
+namespace linemap::cli {
+
+// --max-cells etc. of the decoder, from the parsed arguments.
+std::vector<OptionSpec> DecodeLimitOptionSpecs();
+StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
+
+// True when the file at `path` starts with the .lmap signature.
+bool IsLmapFile(const std::string& path);
+
+// Bytes of the 2-bit palette PNG (zlib level 9) of the grid's trinary image.
+StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid);
+
+// Seconds on a monotonic clock.
+double NowSeconds();
+
+}  // namespace linemap::cli
+
+#endif  // LINEMAP_TOOLS_LINEMAP_LMAP_CLI_UTIL_H_
