@@ -115,7 +115,11 @@ Status WriteOutputs(const BenchArgs& args, const std::string& header,
                     const std::vector<bench::NamedTable>& tables, const std::string& notes,
                     const std::vector<bench::MapResult>& results) {
   if (args.md) {
-    std::string md = "## linemap bench results\n\n" + header + "\n" + bench::TablesMarkdown(tables);
+    // Markdown joins single lines; a trailing double space keeps them apart.
+    std::string md_header;
+    for (char c : header) md_header += c == '\n' ? std::string("  \n") : std::string(1, c);
+    std::string md =
+        "## linemap bench results\n\n" + md_header + "\n" + bench::TablesMarkdown(tables);
     if (!notes.empty()) md += "\n```\n" + notes.substr(1) + "```\n";
     LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(*args.md, md));
   }
@@ -144,7 +148,9 @@ int RunBench(const std::vector<std::string>& argv) {
     if (ec) return ReportError("bench", IoError(*args->svg_dir + ": " + ec.message()));
   }
 
-  std::string header = "machine: " + bench::MachineDescription() + "\ncorpus:";
+  std::string header = "command: linemap bench";
+  for (const std::string& arg : argv) header += " " + arg;
+  header += "\nmachine: " + bench::MachineDescription() + "\ncorpus:";
   for (const std::string& dir : args->dirs) header += " " + dir;
   header += " (" + std::to_string(corpus->size()) + " maps found)\n";
   std::printf("linemap bench\n%s", header.c_str());
