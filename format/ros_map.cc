@@ -165,17 +165,28 @@ void ApplyOverrides(const MapLoadOptions& options, MapMetadata* meta) {
   if (options.mode) meta->mode = *options.mode;
 }
 
-// The grey value in 0..255 that reads back as `target` under `meta`,
-// preferring map_saver's own value; -1 when there is none.
-int GreyFor(Cell target, const MapMetadata& meta) {
-  const int preferred = target == Cell::kFree       ? kPgmFree
-                        : target == Cell::kOccupied ? kPgmOccupied
-                                                    : kPgmUnknown;
-  if (ClassifyGrey8(static_cast<std::uint8_t>(preferred), meta) == target) return preferred;
-  for (int v = 0; v < 256; ++v) {
-    if (ClassifyGrey8(static_cast<std::uint8_t>(v), meta) == target) return v;
+// True when map_saver's three grey values read back as their own states
+// under `meta`.
+bool HoldsMapSaverValues(const MapMetadata& meta) {
+  return ClassifyGrey8(kPgmFree, meta) == Cell::kFree &&
+         ClassifyGrey8(kPgmOccupied, meta) == Cell::kOccupied &&
+         ClassifyGrey8(kPgmUnknown, meta) == Cell::kUnknown;
+}
+
+// The metadata written beside a map_saver PGM: always trinary without
+// negate (the pixel values are fixed), keeping the grid's thresholds when
+// they read 0 / 254 / 205 back correctly and map_saver's 0.65 / 0.196
+// otherwise (nav2's own depot.yaml has free_thresh 0.25, under which 205
+// would read as free).
+MapMetadata SavedMetadata(const MapMetadata& source) {
+  MapMetadata meta = source;
+  meta.mode = MapMode::kTrinary;
+  meta.negate = false;
+  if (!HoldsMapSaverValues(meta)) {
+    meta.occupied_thresh = kDefaultOccupiedThresh;
+    meta.free_thresh = kDefaultFreeThresh;
   }
-  return -1;
+  return meta;
 }
 
 std::string YamlText(const std::string& image_name, const MapMetadata& meta) {
@@ -235,28 +246,14 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
   if (grid.width() <= 0 || grid.height() <= 0) {
     return InvalidArgumentError(Quoted(yaml_path) + ": cannot save an empty grid");
   }
-  // Keep the grid's own metadata when three grey values exist that read back
-  // as free, occupied and unknown under it; otherwise fall back to map_saver's
-  // plain trinary metadata, which always has them.
-  MapMetadata meta = grid.meta;
-  int grey[3] = {GreyFor(Cell::kFree, meta), GreyFor(Cell::kOccupied, meta),
-                 GreyFor(Cell::kUnknown, meta)};
-  if (grey[0] < 0 || grey[1] < 0 || grey[2] < 0) {
-    const double resolution = meta.resolution;
-    const Pose2D origin = meta.origin;
-    meta = MapMetadata();
-    meta.resolution = resolution;
-    meta.origin = origin;
-    grey[0] = kPgmFree;
-    grey[1] = kPgmOccupied;
-    grey[2] = kPgmUnknown;
-  }
+  const MapMetadata meta = SavedMetadata(grid.meta);
+  const std::uint8_t grey[3] = {kPgmFree, kPgmOccupied, kPgmUnknown};  // by Cell value
   std::vector<std::uint8_t> pixels(grid.size());
   for (int row = 0; row < grid.height(); ++row) {
     const int y = grid.height() - 1 - row;
     for (int col = 0; col < grid.width(); ++col) {
       pixels[static_cast<std::size_t>(y) * grid.width() + col] =
-          static_cast<std::uint8_t>(grey[static_cast<int>(grid.at(col, row))]);
+          grey[static_cast<int>(grid.at(col, row))];
     }
   }
   const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";

@@ -52,9 +52,13 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
 
 // Writes `yaml_path` and an image next to it (same stem, .pgm), as nav2's
 // map_saver does in trinary mode: 0 occupied, 254 free, 205 unknown, and a
-// YAML with mode trinary, negate 0 and the grid's thresholds, which loads
-// back to the same grid. Both files are written to temporary names first and
-// renamed into place, so a failure leaves existing files untouched.
+// YAML (mode trinary, negate 0) that loads back to the same grid. The YAML
+// keeps the grid's resolution and origin in full precision, and its
+// thresholds when they read 0 / 254 / 205 back correctly; otherwise it gets
+// map_saver's 0.65 / 0.196 (a source with negate 1, or nav2's depot.yaml with
+// free_thresh 0.25, under which 205 reads as free). Both files are written
+// under temporary names and flushed before either is renamed into place, so
+// a failure leaves existing files untouched.
 Status SaveRosMap(const std::string& yaml_path, const Grid& grid);
 
 // The trinary PGM pixel values map_saver writes.
