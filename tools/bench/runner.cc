@@ -221,6 +221,7 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
           Median(TimeRuns([&] { (void)DecodeTrinaryPng(Bytes(*png)); }, runs)) / mcells;
     }
     LineExtractionOptions options;
+    options.method = LineMethod::kRmLine;
     row.rmline_ms_per_mcell =
         Median(TimeRuns([&] { (void)ExtractLines(grid, options); }, 1)) / mcells;
     MapResult lmap;
