@@ -24,9 +24,8 @@ std::string PbmPlane(const Grid& grid, BitPlane plane) {
 
 StatusOr<std::string> JbigEncodePbm(const std::string& pbm, const JbigOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(ScratchDir dir, ScratchDir::Create("jbig"));
-  const std::string in = dir.path() + "/plane.pbm";
+  LINEMAP_ASSIGN_OR_RETURN(const std::string in, dir.WriteScratchFile("plane.pbm", pbm));
   const std::string out = dir.path() + "/plane.jbg";
-  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(in, pbm));
   std::vector<std::string> argv = {options.encoder};
   if (options.sequential) argv.push_back("-q");
   argv.push_back(in);

@@ -1,6 +1,7 @@
 #include "tools/bench/report.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 
 #include "tools/bench/opencv_lines.h"
@@ -178,9 +179,15 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results) {
     table.AddRow({name, std::to_string(maps), MedianText(results, lines, 0),
                   MedianText(results, displ, 2), MedianText(results, ms, 1)});
   };
-  row("RM-Line (dtheta 1 deg, ds 0.5 cell)", key::kRmLineLines, key::kRmLineDisplCm,
-      key::kRmLineMs);
-  row("linemap extractor", key::kLinemapLines, key::kLinemapDisplCm, key::kLinemapMs);
+  // The labels state the library defaults the bench runs with.
+  const LineExtractionOptions defaults;
+  char rmline[96], linemap[96];
+  std::snprintf(rmline, sizeof rmline, "RM-Line (dtheta %g deg, ds %g cell)",
+                defaults.rmline_dtheta_deg, defaults.rmline_ds_cells);
+  std::snprintf(linemap, sizeof linemap, "linemap extractor (epsilon %g cells)",
+                defaults.epsilon_cells);
+  row(rmline, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs);
+  row(linemap, key::kLinemapLines, key::kLinemapDisplCm, key::kLinemapMs);
   for (const DetectorName& name : OpenCvDetectorNames()) {
     const std::string k = name.key;
     const std::string lines = k + "_lines", displ = k + "_displ_cm", ms = k + "_ms";

@@ -73,14 +73,14 @@ void AddPnmtopngSize(const Grid& grid, MapResult* result) {
                                                                              : kPgmUnknown;
     }
   }
-  const std::string pgm = dir->path() + "/map.pgm";
+  StatusOr<std::string> pgm =
+      dir->WriteScratchFile("map.pgm", EncodePgm(grid.width(), grid.height(), grey));
+  if (!pgm.ok()) return Note(result, "pnmtopng", pgm.status());
   const std::string png = dir->path() + "/map.png";
-  Status written = WriteFileAtomic(pgm, EncodePgm(grid.width(), grid.height(), grey));
-  if (!written.ok()) return Note(result, "pnmtopng", written);
   // pnmtopng writes to stdout: run it through sh only for the redirection,
   // with both paths from mkdtemp (no user text in the command).
   StatusOr<int> code =
-      RunSubprocess({"sh", "-c", "pnmtopng -compression 9 '" + pgm + "' > '" + png + "'"});
+      RunSubprocess({"sh", "-c", "pnmtopng -compression 9 '" + *pgm + "' > '" + png + "'"});
   if (!code.ok()) return Note(result, "pnmtopng", code.status());
   if (*code != 0) return Note(result, "pnmtopng", IoError("exit code " + std::to_string(*code)));
   std::error_code ec;
@@ -221,6 +221,7 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
           Median(TimeRuns([&] { (void)DecodeTrinaryPng(Bytes(*png)); }, runs)) / mcells;
     }
     LineExtractionOptions options;
+    options.method = LineMethod::kRmLine;
     row.rmline_ms_per_mcell =
         Median(TimeRuns([&] { (void)ExtractLines(grid, options); }, 1)) / mcells;
     MapResult lmap;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -66,6 +67,16 @@ StatusOr<ScratchDir> ScratchDir::Create(const std::string& tag) {
 
 ScratchDir::ScratchDir(ScratchDir&& other) noexcept : path_(std::move(other.path_)) {
   other.path_.clear();
+}
+
+StatusOr<std::string> ScratchDir::WriteScratchFile(const std::string& name,
+                                                   std::string_view data) const {
+  const std::string path = path_ + "/" + name;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return IoError(path + ": " + std::strerror(errno));
+  const bool written = std::fwrite(data.data(), 1, data.size(), f) == data.size();
+  if (std::fclose(f) != 0 || !written) return IoError(path + ": write failed");
+  return path;
 }
 
 ScratchDir::~ScratchDir() {

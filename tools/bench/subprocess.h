@@ -4,6 +4,7 @@
 #define LINEMAP_TOOLS_BENCH_SUBPROCESS_H_
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "linemap/status.h"
@@ -28,6 +29,10 @@ class ScratchDir {
   ScratchDir(const ScratchDir&) = delete;
   ~ScratchDir();
   const std::string& path() const { return path_; }
+  // Writes `data` to `name` inside the folder, without the fsyncs of
+  // WriteFileAtomic: scratch files need no durability, and fsync on a busy
+  // disk would dominate the benchmark's wall time. Returns the full path.
+  StatusOr<std::string> WriteScratchFile(const std::string& name, std::string_view data) const;
 
  private:
   explicit ScratchDir(std::string path) : path_(std::move(path)) {}

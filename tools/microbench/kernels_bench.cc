@@ -79,13 +79,20 @@ void BM_RmLineRayScoring(benchmark::State& state) {
 }
 BENCHMARK(BM_RmLineRayScoring)->Arg(1)->Arg(5);
 
-void BM_RmLineWholeMap(benchmark::State& state) {
+// range(1): 0 = RM-Line, 1 = linemap's extractor (LineMethod order).
+void BM_ExtractLinesWholeMap(benchmark::State& state) {
   const Grid grid = GenerateOfficeMap(static_cast<int>(state.range(0)));
   LineExtractionOptions options;
+  options.method = static_cast<LineMethod>(state.range(1));
   for (auto _ : state) benchmark::DoNotOptimize(ExtractLines(grid, options));
   SetCellsProcessed(state, grid.size());
 }
-BENCHMARK(BM_RmLineWholeMap)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExtractLinesWholeMap)
+    ->Args({512, static_cast<int>(LineMethod::kRmLine)})
+    ->Args({1024, static_cast<int>(LineMethod::kRmLine)})
+    ->Args({512, static_cast<int>(LineMethod::kLinemap)})
+    ->Args({1024, static_cast<int>(LineMethod::kLinemap)})
+    ->Unit(benchmark::kMillisecond);
 
 // A closed 8-connected chain around a diamond-ish octagon of radius r.
 std::vector<CellIndex> OctagonChain(int r) {
