@@ -6,11 +6,14 @@
 //         min_segment_cells long and on the walls (FollowsWalls). Occupied
 //         cells within one cell of a segment are then dropped: the segment
 //         recalls them within one cell.
-//   OCCP  the remaining occupied cells, minus isolated occupied specks (at
-//         most kSpeckBudget of the occupied cells).
-//   FREE  the free cells, with free specks under kMinFreeRegionCells cells
-//         dropped and small enclosed holes filled (only when all their free
-//         neighbours are one region, so no two regions are ever joined).
+//   OCCP  the remaining occupied cells, minus isolated occupied specks, with
+//         notches filled and spurs into the unknown left out (SmoothWalls).
+//   FREE  the free cells, with free specks dropped, small enclosed holes
+//         filled (only when all their free neighbours are one region, so no
+//         two regions are ever joined) and the boundary smoothed
+//         (SmoothFreeBoundary).
+// The lossy encoder tries the tunings of kLossyTunings, boldest first, and
+// keeps the smallest file that decodes within the goals (EncodeLossy).
 // Lossless mode codes the layers exactly (kExactLayers), or the lossy
 // layers plus RESD, the exact grid coded against the lossy one (kResidual).
 // ROOM and BLOB chunks are defined by the format; this encoder does not
@@ -32,14 +35,41 @@
 namespace linemap {
 namespace {
 
-// Free 4-connected regions smaller than this are dropped (cells).
-constexpr std::size_t kMinFreeRegionCells = 3;
-// Enclosed holes in the free space up to this size are filled (cells), at
-// most kHoleBudget of the free cells in all (unknown turned free <= 2%).
-constexpr std::size_t kMaxHoleCells = 8;
-constexpr double kHoleBudget = 0.01;
-// Largest share of occupied cells that may be dropped as isolated specks.
-constexpr double kSpeckBudget = 0.01;
+// How far a lossy encoding may move away from the map. The encoder tries
+// the tunings of kLossyTunings from the boldest, checks each decoded result
+// against the goals (kGoal*) and keeps the smallest file that meets them.
+struct LossyTuning {
+  // Free 4-connected regions smaller than this are dropped (cells; 3).
+  std::size_t min_free_region_cells;
+  // Enclosed holes in the free space up to this size are filled (cells; 8),
+  // at most hole_budget of the free cells in all (share; 0.01).
+  std::size_t max_hole_cells;
+  double hole_budget;
+  // Largest share of occupied cells that may be dropped as isolated specks
+  // (share; 0.01).
+  double speck_budget;
+  // Passes of the free/unknown boundary smoothing (SmoothFreeBoundary; 0..3)
+  // and the largest share of the free cells each direction of change may
+  // touch in all (share; 0.015).
+  int smoothing_passes;
+  double smoothing_budget;
+  // Passes of the wall smoothing (SmoothWalls; 0..2): unknown cells in wall
+  // notches become occupied and lone wall spurs into the unknown go.
+  int wall_passes;
+};
+constexpr LossyTuning kLossyTunings[] = {
+    {24, 48, 0.012, 0.016, 3, 0.018, 2},
+    {12, 24, 0.010, 0.012, 2, 0.012, 1},
+    {6, 12, 0.008, 0.010, 1, 0.008, 1},
+    {3, 8, 0.010, 0.010, 0, 0.0, 0},
+};
+// The goals a lossy file must meet, with a margin below issue 6's limits
+// (recall / precision within one cell >= 0.98, free IoU >= 0.95, unknown
+// turned free <= 2% of the free cells, no leaks).
+constexpr double kGoalRecall = 0.982;
+constexpr double kGoalPrecision = 0.982;
+constexpr double kGoalFreeIou = 0.952;
+constexpr double kGoalUnknownTurnedFree = 0.019;
 // Share of a stored segment's cells that must be occupied cells.
 constexpr double kMinOnWallShare = 0.75;
 
@@ -112,12 +142,99 @@ std::vector<std::uint8_t> OccupiedTarget(const Grid& grid, double speck_budget) 
   return target;
 }
 
+// Smooths the free/unknown boundary, which scans leave ragged and which
+// costs most of the FREE plane: an inner cell (not occupied) with at least
+// 5 of its 8 neighbours on the other side flips, in raster order and in
+// place, within tuning.smoothing_budget of `free_cells` per direction. A
+// cell turns free only when every free neighbour belongs to one region
+// (`region`, updated as cells turn free), so no two regions are joined.
+void SmoothFreeBoundary(int w, int h, const std::vector<std::uint8_t>& occupied,
+                        const LossyTuning& tuning, std::size_t free_cells,
+                        std::vector<std::uint32_t>* region, std::vector<std::uint8_t>* target) {
+  const auto budget =
+      static_cast<std::size_t>(tuning.smoothing_budget * static_cast<double>(free_cells));
+  std::size_t added = 0, removed = 0;
+  std::vector<std::uint8_t>& t = *target;
+  std::vector<std::uint32_t>& id = *region;
+  for (int pass = 0; pass < tuning.smoothing_passes; ++pass) {
+    for (int r = 1; r + 1 < h; ++r) {
+      for (int c = 1; c + 1 < w; ++c) {
+        const std::size_t i = static_cast<std::size_t>(r) * w + c;
+        if (occupied[i]) continue;
+        int free = 0, open = 0;
+        std::uint32_t only = 0;
+        bool one_region = true;
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            if (!dr && !dc) continue;
+            const std::size_t j = i + static_cast<std::ptrdiff_t>(dr) * w + dc;
+            if (t[j]) {
+              ++free;
+              if (only != 0 && only != id[j]) one_region = false;
+              only = id[j];
+            } else if (!occupied[j]) {
+              ++open;
+            }
+          }
+        }
+        if (t[i] && open >= 5 && removed < budget) {
+          t[i] = 0;
+          id[i] = 0;
+          ++removed;
+        } else if (!t[i] && free >= 5 && one_region && only != 0 && added < budget) {
+          t[i] = 1;
+          id[i] = only;
+          ++added;
+        }
+      }
+    }
+  }
+}
+
+// Smooths the walls where it costs no measure: an unknown cell of the map
+// with at least 5 occupied neighbours (a notch) becomes occupied (precision
+// holds: it touches a wall), and an occupied cell that touches no free cell,
+// has at most 2 occupied neighbours, none of them dropped, and at least one
+// kept, goes (recall holds: a kept neighbour is within one cell).
+void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupied) {
+  const int w = grid.width();
+  const int h = grid.height();
+  const std::vector<Cell>& cells = grid.cells();
+  std::vector<std::uint8_t>& o = *occupied;
+  std::vector<std::uint8_t> dropped(o.size(), 0);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int r = 1; r + 1 < h; ++r) {
+      for (int c = 1; c + 1 < w; ++c) {
+        const std::size_t i = static_cast<std::size_t>(r) * w + c;
+        int occ = 0;
+        bool touches_free = false, touches_dropped = false;
+        for (int dr = -1; dr <= 1; ++dr) {
+          for (int dc = -1; dc <= 1; ++dc) {
+            if (!dr && !dc) continue;
+            const std::size_t j = i + static_cast<std::ptrdiff_t>(dr) * w + dc;
+            occ += o[j];
+            touches_free = touches_free || cells[j] == Cell::kFree;
+            touches_dropped = touches_dropped || dropped[j];
+          }
+        }
+        if (!o[i] && cells[i] == Cell::kUnknown && !dropped[i] && occ >= 5) {
+          o[i] = 1;
+        } else if (o[i] && cells[i] == Cell::kOccupied && !touches_free && !touches_dropped &&
+                   occ >= 1 && occ <= 2) {
+          o[i] = 0;
+          dropped[i] = 1;
+        }
+      }
+    }
+  }
+}
+
 // Free cells to reproduce: the free cells minus free specks, plus small
 // enclosed holes whose free neighbours all belong to one free region (so a
 // filled hole never joins two regions) and which hold no occupied cell that
 // will be drawn.
 std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::uint8_t>& occupied,
-                                       bool exact) {
+                                       bool exact, const LossyTuning& tuning) {
   const int w = grid.width();
   const int h = grid.height();
   const std::vector<Cell>& cells = grid.cells();
@@ -128,7 +245,7 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::
   for (std::size_t i = 0; i < cells.size(); ++i) member[i] = cells[i] == Cell::kFree;
   ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool) {
     ++regions;
-    if (!exact && comp.size() < kMinFreeRegionCells) return;
+    if (!exact && comp.size() < tuning.min_free_region_cells) return;
     for (std::size_t i : comp) {
       target[i] = 1;
       region[i] = regions;
@@ -137,10 +254,11 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::
   if (exact) return target;
   std::size_t free_cells = 0;
   for (std::uint8_t t : target) free_cells += t;
-  std::size_t budget = static_cast<std::size_t>(kHoleBudget * static_cast<double>(free_cells));
+  std::size_t budget =
+      static_cast<std::size_t>(tuning.hole_budget * static_cast<double>(free_cells));
   for (std::size_t i = 0; i < cells.size(); ++i) member[i] = target[i] == 0 && !occupied[i];
   ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool border) {
-    if (border || comp.size() > kMaxHoleCells || comp.size() > budget) return;
+    if (border || comp.size() > tuning.max_hole_cells || comp.size() > budget) return;
     std::uint32_t seen = 0;
     for (std::size_t i : comp) {
       const int c = static_cast<int>(i % w);
@@ -156,9 +274,13 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::
       }
     }
     if (seen == 0) return;
-    for (std::size_t i : comp) target[i] = 1;
+    for (std::size_t i : comp) {
+      target[i] = 1;
+      region[i] = seen;
+    }
     budget -= comp.size();
   });
+  SmoothFreeBoundary(w, h, occupied, tuning, free_cells, &region, &target);
   return target;
 }
 
@@ -323,7 +445,8 @@ std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions&
 // reproduced as it is and segments may only cover occupied cells, so no
 // residual is needed.
 StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options,
-                                               bool exact, bool with_segments) {
+                                               bool exact, bool with_segments,
+                                               const LossyTuning& tuning) {
   const int w = grid.width();
   const int h = grid.height();
   ContainerWriter writer;
@@ -334,7 +457,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
   }
 
   std::vector<Cell> canvas(grid.size(), Cell::kUnknown);
-  std::vector<std::uint8_t> occupied = OccupiedTarget(grid, exact ? 0.0 : kSpeckBudget);
+  std::vector<std::uint8_t> occupied = OccupiedTarget(grid, exact ? 0.0 : tuning.speck_budget);
+  if (!exact) SmoothWalls(grid, tuning.wall_passes, &occupied);
 
   if (options.store_room_chains) {
     LINEMAP_ASSIGN_OR_RETURN(std::vector<std::vector<CellIndex>> chains, RoomChains(grid, options));
@@ -361,7 +485,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (occupied[i]) canvas[i] = Cell::kOccupied;
   }
-  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, occupied, exact);
+  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, occupied, exact, tuning);
   writer.AddChunk(kFreeChunk, WrapPayload(EncodeFreePlane(free_target, canvas, w, h), false));
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (canvas[i] != Cell::kOccupied) canvas[i] = free_target[i] ? Cell::kFree : Cell::kUnknown;
@@ -371,6 +495,50 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
                     WrapPayload(EncodeResidualPlane(grid.cells(), canvas, w, h), false));
   }
   return writer.Finish();
+}
+
+// True when `bytes` decode to a grid that meets the lossy goals against
+// `grid`.
+bool MeetsLossyGoals(const Grid& grid, const std::vector<std::uint8_t>& bytes) {
+  StatusOr<Grid> decoded = DecodeLmap(bytes);
+  if (!decoded.ok()) return false;
+  const GridComparison m = CompareGrids(grid, *decoded);
+  const bool has_occupied =
+      std::find(grid.cells().begin(), grid.cells().end(), Cell::kOccupied) != grid.cells().end();
+  const bool has_free =
+      std::find(grid.cells().begin(), grid.cells().end(), Cell::kFree) != grid.cells().end();
+  return m.leaks == 0 && m.unknown_turned_free_share <= kGoalUnknownTurnedFree &&
+         (!has_occupied ||
+          (m.obstacle_recall_1 >= kGoalRecall && m.obstacle_precision_1 >= kGoalPrecision)) &&
+         (!has_free || m.free_iou >= kGoalFreeIou);
+}
+
+// The smallest lossy file that meets the goals: the boldest tuning that
+// does (with or without segments, whichever is smaller), or the exact
+// layers when those are smaller still, so a lossy file is never larger than
+// the lossless one.
+StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
+  const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> best,
+                           EncodeFile(grid, options, true, false, mildest));
+  if (options.store_segments) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact,
+                             EncodeFile(grid, options, true, true, mildest));
+    if (exact.size() < best.size()) best = std::move(exact);
+  }
+  for (const LossyTuning& tuning : kLossyTunings) {
+    bool met = false;
+    for (bool with_segments : {true, false}) {
+      if (with_segments && !options.store_segments) continue;
+      LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> candidate,
+                               EncodeFile(grid, options, false, with_segments, tuning));
+      if (!MeetsLossyGoals(grid, candidate)) continue;
+      met = true;
+      if (candidate.size() < best.size()) best = std::move(candidate);
+    }
+    if (met) break;
+  }
+  return best;
 }
 
 }  // namespace
@@ -387,13 +555,15 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   if (options.min_segment_cells < 1) {
     return InvalidArgumentError("min_segment_cells must be at least 1");
   }
-  const bool exact = options.lossless && options.lossless_method == LosslessMethod::kExactLayers;
+  const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
+  if (!options.lossless) return EncodeLossy(grid, options);
+  const bool exact = options.lossless_method == LosslessMethod::kExactLayers;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
-                           EncodeFile(grid, options, exact, options.store_segments));
-  if (options.lossless && options.store_segments) {
+                           EncodeFile(grid, options, exact, options.store_segments, mildest));
+  if (options.store_segments) {
     // Lossless files need no geometry: keep segments only when they pay.
     LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> plain,
-                             EncodeFile(grid, options, exact, false));
+                             EncodeFile(grid, options, exact, false, mildest));
     if (plain.size() < bytes.size()) bytes = std::move(plain);
   }
   return bytes;

@@ -159,6 +159,23 @@ TEST(CodecTest, LossyGoalsOnBundledMaps) {
   }
 }
 
+// The lossy encoder falls back to the exact layers rather than write a file
+// larger than the lossless one.
+TEST(CodecTest, LossyIsNeverLargerThanLosslessOnBundledMaps) {
+  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
+  ASSERT_FALSE(maps.empty());
+  EncodeOptions lossless;
+  lossless.lossless = true;
+  for (const std::string& path : maps) {
+    auto grid = LoadRosMap(path);
+    ASSERT_TRUE(grid.ok()) << path;
+    auto lossy_bytes = EncodeLmap(*grid, EncodeOptions());
+    auto lossless_bytes = EncodeLmap(*grid, lossless);
+    ASSERT_TRUE(lossy_bytes.ok() && lossless_bytes.ok()) << path;
+    EXPECT_LE(lossy_bytes->size(), lossless_bytes->size()) << path;
+  }
+}
+
 TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
   const std::string dir = testing::SharedMapsDir();
   if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
