@@ -21,9 +21,14 @@
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
 //     first, when every cell stays within epsilon_cells AND the summed
-//     cell-to-segment distance grows by at most max_added_cost_cells. The
-//     cost cap is what keeps DisPL_ave low: without it the L-infinity bound
-//     alone would happily merge the two sides of a wall into a centre line.
+//     cell-to-segment distance grows by at most max_added_cost_cells *
+//     epsilon_cells^2 (a wall ragged by +-k cells merges in steps that move
+//     ~k cells by ~k each), or
+//     stays within noise_merge_factor times the cells' summed local noise
+//     (distance to the TLS line of a window of 2 * noise_window_cells + 1
+//     chain cells). The cost cap is what keeps DisPL_ave low: without it the
+//     L-infinity bound alone would merge the two sides of a wall into a
+//     centre line.
 //  5. Prune: a segment whose cells all lie within epsilon of other segments
 //     (and cost at most max_added_cost_cells more there) is dropped, smallest
 //     first, handing its cells over.
@@ -33,7 +38,9 @@
 // Parameters (LineExtractionOptions, all in cells; defaults chosen on
 // ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
 // bound), split_epsilon_cells 0.3 (pieces are digital straight segments),
-// merge_gap_cells 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3,
+// merge_gap_cells 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3
+// (times epsilon^2), noise_merge_factor and noise_window_cells (see
+// lines.h),
 // min_component_cells 2 (lone cells are speckle), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
 // the re-evaluation of a group against its neighbours after each merge.
@@ -155,6 +162,19 @@ class ChainMoments {
     return FitFromCovariance({ox_ + mx, oy_ + my}, cov);
   }
 
+  // Distance of cell i to the TLS line of the window of 2 * half + 1 chain
+  // cells around it (shifted to stay inside the chain): the chain's local
+  // noise at i, which a straight wall's digitisation keeps near 0.25 cells.
+  double LocalResidual(int i, int half) const {
+    const int n = static_cast<int>(x_.size());
+    const int size = std::min(n, 2 * half + 1);
+    const int begin = std::clamp(i - half, 0, n - size);
+    if (size <= 2) return 0;
+    const FittedLine line = Fit(begin, begin + size);
+    return std::abs((x_[i] - line.centroid.x()) * -line.direction.y() +
+                    (y_[i] - line.centroid.y()) * line.direction.x());
+  }
+
   // True when every cell of [begin, end) is within epsilon of its TLS line.
   bool Valid(int begin, int end, double epsilon) const {
     if (end - begin <= 2) return true;
@@ -182,6 +202,7 @@ struct Group {
   LineSegment segment;
   double max_residual = 0;  // largest distance of a cell to `line`
   double cost = 0;          // sum of the cells' distances to `segment` (cells)
+  double noise = 0;         // sum of the cells' local residuals (ChainMoments::LocalResidual)
   bool alive = true;
 };
 
@@ -309,6 +330,13 @@ double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
   return ex * ex + ey * ey;
 }
 
+// What a merge may cost; see MergeGroups.
+struct MergeLimits {
+  double epsilon = 1;       // the bound, cells
+  double max_added = 3;     // summed distance a merge may always add, cells
+  double noise_factor = 0;  // merged cost may reach this times the summed local noise
+};
+
 // A necessary condition for a merge, in O(1): a line within epsilon of both
 // extreme cells of a group (length l along its line, residual r) makes an
 // angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
@@ -341,14 +369,22 @@ bool EndsWithinGap(const Group& a, const Group& b, double gap) {
 // Evaluates merging groups a and b: false when the union breaks the bound
 // or adds more than max_added to the summed distance; otherwise *line and
 // *sweep describe the union's segment.
-bool TryMerge(const Group& a, const Group& b, double epsilon, double max_added, FittedLine* line,
+// The summed distance a merged group may reach: its parts' cost plus
+// max_added, or, when larger, noise_factor times the parts' summed local
+// noise (a merge may raise the mean distance up to the walls' own noise).
+double MergeBudget(const Group& a, const Group& b, const MergeLimits& limits) {
+  return std::max(a.cost + b.cost + limits.max_added, limits.noise_factor * (a.noise + b.noise));
+}
+
+bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, FittedLine* line,
               LineSweep* sweep) {
+  const double epsilon = limits.epsilon;
   PointMoments moments = a.moments;
   moments.Merge(b.moments);
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
-  const double max_cost = a.cost + b.cost + max_added;
+  const double max_cost = MergeBudget(a, b, limits);
   return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
          SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
@@ -357,8 +393,9 @@ bool TryMerge(const Group& a, const Group& b, double epsilon, double max_added, 
 // bound holds and each merge adds at most max_added_cost to the summed
 // distance. Pairs are candidates when an end of one is within `gap` of the
 // other segment.
-void MergeGroups(std::vector<Group>* groups, int width, int height, double epsilon, double gap,
-                 double max_added_cost) {
+void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
+                 double gap) {
+  const double epsilon = limits.epsilon;
   struct Candidate {
     double added;
     std::uint32_t a, b;
@@ -387,7 +424,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
+        if (!TryMerge(a, b, limits, &line, &sweep)) continue;
         queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
       }
     }
@@ -401,8 +438,9 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, double epsil
     if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
       continue;
     }
-    if (!TryMerge(a, b, epsilon, max_added_cost, &line, &sweep)) continue;
+    if (!TryMerge(a, b, limits, &line, &sweep)) continue;
     a.moments.Merge(b.moments);
+    a.noise += b.noise;
     a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
     SetLine(&a, line, sweep);
     b.alive = false;
@@ -722,8 +760,11 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   }
 
   const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
+  const MergeLimits limits{epsilon, options.max_added_cost_cells * epsilon * epsilon,
+                           options.noise_merge_factor};
   std::vector<Group> groups;
   for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
+    const ChainMoments chain_moments(chain, width);
     int begin = 0;
     for (int length : SplitChain(chain, width, split_epsilon)) {
       Group group;
@@ -731,6 +772,9 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
         const CellXY c = CellOfIndex(chain[i], width);
         group.cells.push_back(c);
         group.moments.Add(c.col, c.row);
+        if (limits.noise_factor > 0) {
+          group.noise += chain_moments.LocalResidual(i, options.noise_window_cells);
+        }
       }
       // SplitChain checked the same line (up to rounding).
       if (!RefitGroup(&group, epsilon)) {
@@ -740,9 +784,8 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       begin += length;
     }
   }
-  MergeGroups(&groups, width, height, epsilon, options.merge_gap_cells,
-              options.max_added_cost_cells);
-  PruneCoveredGroups(&groups, width, height, epsilon, options.max_added_cost_cells);
+  MergeGroups(&groups, width, height, limits, options.merge_gap_cells);
+  PruneCoveredGroups(&groups, width, height, epsilon, limits.max_added);
   for (Group& group : groups) {
     if (group.alive) PolishGroupL1(&group, epsilon);
   }

@@ -5,7 +5,10 @@
 // larger) and whether its epsilon bound holds on every non-furniture edge cell.
 //
 // Usage: bench_lines [MAPS_DIR] [--epsilon E] [--max-added-cost C] [--merge-gap G]
-//                    [--min-component N] [--runs N]
+//                    [--min-component N] [--noise-factor F]
+//                    [--noise-window W] [--runs N] [--rm-cache FILE]
+// --rm-cache FILE: RM-Line's lines, DisPL and ms per map are read from FILE
+// when it exists (written by an earlier run otherwise), to tune linemap fast.
 // Times are the fastest of N runs (default 3) of ExtractLines() alone, in
 // process CPU milliseconds (the extraction is single-threaded; CPU time is
 // steadier than wall time on a shared machine).
@@ -95,11 +98,31 @@ StatusOr<Run> Measure(const Grid& grid, const LineExtractionOptions& options, in
   return run;
 }
 
+// One line per map in the cache: name, lines, DisPL_ave (cells), max, ms.
+StatusOr<Run> ReadCachedRun(const std::string& cache, const std::string& name) {
+  std::ifstream in(cache);
+  std::string key;
+  Run run;
+  while (in >> key >> run.lines >> run.fidelity.displ_ave_cells >> run.fidelity.displ_max_cells >>
+         run.ms) {
+    if (key == name) return run;
+  }
+  return NotFoundError("not cached");
+}
+
+void AppendCachedRun(const std::string& cache, const std::string& name, const Run& run) {
+  if (cache.empty()) return;
+  std::ofstream out(cache, std::ios::app);
+  out << name << ' ' << run.lines << ' ' << run.fidelity.displ_ave_cells << ' '
+      << run.fidelity.displ_max_cells << ' ' << run.ms << '\n';
+}
+
 int Main(int argc, char** argv) {
   std::string dir = "../shared/maps";
   LineExtractionOptions lm;
   lm.method = LineMethod::kLinemap;
   int runs = 3;
+  std::string rm_cache;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--epsilon" && i + 1 < argc) {
@@ -112,6 +135,12 @@ int Main(int argc, char** argv) {
       lm.merge_gap_cells = std::atof(argv[++i]);
     } else if (arg == "--min-component" && i + 1 < argc) {
       lm.min_component_cells = std::atoi(argv[++i]);
+    } else if (arg == "--noise-factor" && i + 1 < argc) {
+      lm.noise_merge_factor = std::atof(argv[++i]);
+    } else if (arg == "--noise-window" && i + 1 < argc) {
+      lm.noise_window_cells = std::atoi(argv[++i]);
+    } else if (arg == "--rm-cache" && i + 1 < argc) {
+      rm_cache = argv[++i];
     } else if (arg == "--runs" && i + 1 < argc) {
       runs = std::max(1, std::atoi(argv[++i]));
     } else {
@@ -137,7 +166,11 @@ int Main(int argc, char** argv) {
     }
     LineExtractionOptions rm;
     rm.method = LineMethod::kRmLine;
-    StatusOr<Run> a = Measure(*grid, rm, runs);
+    StatusOr<Run> a = ReadCachedRun(rm_cache, entry.name);
+    if (!a.ok()) {
+      a = Measure(*grid, rm, runs);
+      if (a.ok()) AppendCachedRun(rm_cache, entry.name, *a);
+    }
     StatusOr<Run> b = Measure(*grid, lm, runs);
     if (!a.ok() || !b.ok()) {
       std::printf("| %s | extraction failed |\n", entry.name.c_str());
@@ -160,9 +193,10 @@ int Main(int argc, char** argv) {
   std::printf(
       "\nPareto-better (<= 0.7x lines and DisPL_ave <= RM-Line's) on %d of %d maps; "
       "epsilon %.2f cells, split epsilon %.2f, merge gap %.1f, max added cost %.1f, min component "
-      "%d\n",
+      "%d, noise factor %.2f, noise window %d\n",
       pareto, counted, lm.epsilon_cells, lm.split_epsilon_cells, lm.merge_gap_cells,
-      lm.max_added_cost_cells, lm.min_component_cells);
+      lm.max_added_cost_cells, lm.min_component_cells, lm.noise_merge_factor,
+      lm.noise_window_cells);
   return 0;
 }
 

@@ -201,14 +201,12 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   // The obstacle fills rows 0..20 + j(col), j random in {-1, 0, 1}, across
   // the whole width; free above. Its edge map is the ragged top boundary,
   // within rows 19..21, so one horizontal segment on row 20 bounds it by 1.5.
-  // The merge cost cap is lifted: this is the pure minimum-segment mode.
+  // Default options: the merge cost cap scales with epsilon.
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> jitter(-1, 1);
   Grid grid(80, 40, Cell::kFree);
   for (int col = 0; col < 80; ++col) FillBox(&grid, col, 0, col, 20 + jitter(rng), Cell::kOccupied);
-  LineExtractionOptions options = LinemapOptions(1.5);
-  options.max_added_cost_cells = std::numeric_limits<double>::infinity();
-  StatusOr<LineExtraction> result = ExtractLines(grid, options);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.5));
   ASSERT_TRUE(result.ok());
   ASSERT_EQ(result->segments.size(), 1u);
   const LineSegment& s = result->segments[0];
