@@ -5,9 +5,43 @@
 #include <draco/point_cloud/point_cloud_builder.h>
 
 #include <array>
+#include <cstring>
 #include <tuple>
 
 namespace linemap {
+namespace {
+
+// Draco allocates its attribute buffers from the point count in its header
+// before any of our checks could run, so the count is read and bounded
+// first. Layout of a sequential point cloud (what EncodeSegmentsDraco
+// writes): "DRACO", major, minor, encoder type (0 = point cloud), method
+// (0 = sequential), flags (u16 LE), then the point count (int32 LE).
+constexpr std::size_t kDracoPointCountOffset = 11;
+constexpr std::uint16_t kDracoMetadataFlag = 0x8000;
+constexpr std::uint64_t kMaxDracoPointsPerByte = 1024;
+
+Status CheckDracoPointCount(const std::vector<std::uint8_t>& body, const DecodeLimits& limits) {
+  if (body.size() < kDracoPointCountOffset + 4 || std::memcmp(body.data(), "DRACO", 5) != 0) {
+    return CorruptError("Draco data is malformed: short or bad header");
+  }
+  if (body[7] != 0 || body[8] != 0) {
+    return CorruptError("Draco data is not a sequential point cloud");
+  }
+  const std::uint16_t flags = static_cast<std::uint16_t>(body[9] | (body[10] << 8));
+  if ((flags & kDracoMetadataFlag) != 0) return CorruptError("Draco data has metadata");
+  std::uint32_t points = 0;
+  for (int i = 3; i >= 0; --i) points = (points << 8) | body[kDracoPointCountOffset + i];
+  // Entropy coding can pack very regular segments far below a bit each, so
+  // the body-size bound is generous: it only stops tiny bodies that claim
+  // millions of points (the allocation then stays within ~16 KiB per byte).
+  if (points > limits.max_segments || points > kMaxDracoPointsPerByte * body.size()) {
+    return ResourceExhaustedError("Draco data claims " + std::to_string(points) +
+                                  " segments, over the limit or the data size");
+  }
+  return Status::Ok();
+}
+
+}  // namespace
 
 std::vector<std::uint8_t> EncodeSegmentsDraco(const std::vector<LatticeSegment>& segments) {
   if (segments.empty()) return {};
@@ -33,6 +67,7 @@ std::vector<std::uint8_t> EncodeSegmentsDraco(const std::vector<LatticeSegment>&
 StatusOr<std::vector<LatticeSegment>> DecodeSegmentsDraco(const std::vector<std::uint8_t>& body,
                                                           int width, int height,
                                                           const DecodeLimits& limits) {
+  LINEMAP_RETURN_IF_ERROR(CheckDracoPointCount(body, limits));
   draco::DecoderBuffer buffer;
   buffer.Init(reinterpret_cast<const char*>(body.data()), body.size());
   draco::Decoder decoder;

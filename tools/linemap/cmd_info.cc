@@ -29,7 +29,10 @@ namespace {
 // `linemap info X.lmap`: the header fields, each chunk with its size and
 // coder, and the counts of segments, chains and blobs.
 int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
+  StatusOr<MapLoadOptions> options = MapLoadOptionsFrom(args);
+  if (!options.ok()) return ReportError("info", options.status());
   DecodeLimits limits;
+  limits.max_cells = options->max_cells;  // --max-cells applies to .lmap input too
   StatusOr<LmapContents> contents = LoadLmapContents(path, limits);
   if (!contents.ok()) return ReportError("info", contents.status());
   const Grid& grid = contents->grid;

@@ -31,6 +31,9 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
 }
 
 bool IsLmapFile(const std::string& path) {
+  // A file named .lmap is decoded as one, so that a renamed image is refused
+  // as a bad .lmap instead of being silently read as a map image.
+  if (path.ends_with(".lmap")) return true;
   std::ifstream in(path, std::ios::binary);
   std::vector<std::uint8_t> head(8, 0);
   in.read(reinterpret_cast<char*>(head.data()), 8);

@@ -17,7 +17,7 @@ namespace linemap::cli {
 std::vector<OptionSpec> DecodeLimitOptionSpecs();
 StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 
-// True when the file at `path` starts with the .lmap signature.
+// True when `path` ends in .lmap or the file starts with the .lmap signature.
 bool IsLmapFile(const std::string& path);
 
 // Bytes of the 2-bit palette PNG (zlib level 9) of the grid's trinary image.

@@ -1,0 +1,106 @@
+// Must-fail .lmap files (tests/data/bad/lmap_decode/, named after their
+// defect): each must be refused with an error that names the problem and,
+// where the defect sits in one chunk, that chunk. The same files are
+// replayed under the fuzz target by ctest (fuzz.replay.lmap_decode).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "codec/codec/draco_segments.h"
+#include "format/file_io.h"
+#include "linemap/codec.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+struct BadFile {
+  const char* name;
+  const char* expected;  // a substring of the error message, written by hand
+};
+
+const BadFile kBadFiles[] = {
+    {"bad_crc.lmap", "fails its CRC check"},
+    {"chunk_length_overflow.lmap", "chunk SEGS"},
+    {"data_after_lend.lmap", "data after the LEND chunk"},
+    {"draco_in_free_chunk.lmap", "chunk FREE: only SEGS may use the Draco payload coder"},
+    {"draco_malformed.lmap", "chunk SEGS: Draco data"},
+    {"empty.lmap", "bad signature"},
+    {"huge_dimensions.lmap", "over the limit"},
+    {"inflate_bomb.lmap", "chunk FREE: inflated size"},
+    {"negative_resolution.lmap", "chunk LMHD: resolution is not a positive number"},
+    {"no_header_chunk.lmap", "the first chunk is not LMHD"},
+    {"png_renamed.lmap", "bad signature"},
+    {"repeated_chunk.lmap", "chunk SEGS: chunk out of order or repeated"},
+    {"second_header_chunk.lmap", "a second LMHD chunk"},
+    {"segment_outside_map.lmap", "chunk SEGS"},
+    {"too_many_segments.lmap", "chunk SEGS: segment count"},
+    {"truncated.lmap", "truncated"},
+    {"unknown_critical_chunk.lmap", "chunk XTRA: unknown critical chunk"},
+    {"unknown_payload_coder.lmap", "chunk FREE: unknown payload coder 7"},
+    {"unsupported_version.lmap", "format version 2"},
+    {"zero_resolution.lmap", "chunk LMHD: resolution is not a positive number"},
+};
+
+std::string BadDir() { return testing::SourceDir() + "/tests/data/bad/lmap_decode/"; }
+
+class LmapBadFileTest : public ::testing::TestWithParam<BadFile> {};
+
+TEST_P(LmapBadFileTest, FailsNamingTheProblem) {
+  const BadFile& bad = GetParam();
+  auto bytes = ReadFileBytes(BadDir() + bad.name, std::uint64_t{1} << 20);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
+  auto decoded = DecodeLmapContents(*bytes);
+  ASSERT_FALSE(decoded.ok()) << bad.name << " decoded without error";
+  EXPECT_NE(decoded.status().ToString().find(bad.expected), std::string::npos)
+      << bad.name << ": " << decoded.status().ToString();
+}
+
+INSTANTIATE_TEST_SUITE_P(AllBadFiles, LmapBadFileTest, ::testing::ValuesIn(kBadFiles),
+                         [](const auto& info) {
+                           std::string name = info.param.name;
+                           return name.substr(0, name.find('.'));
+                         });
+
+TEST(LmapBadFiles, EveryFileInTheFolderHasARow) {
+  const std::vector<std::string> files = testing::ListDir(BadDir());
+  ASSERT_FALSE(files.empty());
+  for (const std::string& file : files) {
+    bool listed = false;
+    for (const BadFile& bad : kBadFiles) listed = listed || file.ends_with(bad.name);
+    EXPECT_TRUE(listed) << file << " has no row in kBadFiles";
+  }
+}
+
+// A Draco SEGS body whose header claims 2^31 - 1 points: refused from the
+// header, before the Draco decoder could allocate for that many points.
+TEST(LmapBadFiles, DracoPointCountIsCheckedBeforeDraco) {
+  const std::vector<LatticeSegment> segments = {{{0, 0}, {5, 0}}, {{1, 2}, {1, 7}}};
+  std::vector<std::uint8_t> body = EncodeSegmentsDraco(segments);
+  ASSERT_GE(body.size(), 15u);
+  ASSERT_EQ(std::memcmp(body.data(), "DRACO", 5), 0);
+  ASSERT_EQ(body[11], 2u);  // the point count, little-endian int32 at byte 11
+  ASSERT_EQ(body[12] | body[13] | body[14], 0);
+  auto ok = DecodeSegmentsDraco(body, 10, 10, DecodeLimits{});
+  ASSERT_TRUE(ok.ok()) << ok.status().ToString();
+  EXPECT_EQ(*ok, segments);
+
+  body[11] = body[12] = body[13] = 0xFF;
+  body[14] = 0x7F;
+  auto huge = DecodeSegmentsDraco(body, 10, 10, DecodeLimits{});
+  ASSERT_FALSE(huge.ok());
+  EXPECT_EQ(huge.status().code(), StatusCode::kResourceExhausted) << huge.status().ToString();
+  EXPECT_NE(huge.status().message().find("2147483647 segments"), std::string::npos);
+
+  DecodeLimits tight;
+  tight.max_segments = 1;
+  body[11] = 2;
+  body[12] = body[13] = body[14] = 0;
+  EXPECT_FALSE(DecodeSegmentsDraco(body, 10, 10, tight).ok());
+}
+
+}  // namespace
+}  // namespace linemap
