@@ -50,7 +50,8 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
   if (fd < 0) {
     const int err = errno;
     if (err == ENOENT) return NotFoundError(Quoted(path) + ": no such file");
-    return IoError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
+    // An input the caller cannot open is bad input, not a failure of ours.
+    return InvalidArgumentError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
   }
   struct stat st;
   if (::fstat(fd, &st) != 0) {
@@ -78,7 +79,7 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
       ::close(fd);
       // Reading a directory opened on some systems fails with EISDIR.
       if (err == EISDIR) return InvalidArgumentError(Quoted(path) + " is a directory");
-      return IoError("cannot read " + Quoted(path) + ": " + ErrnoText(err));
+      return InvalidArgumentError("cannot read " + Quoted(path) + ": " + ErrnoText(err));
     }
     if (n == 0) break;
     if (bytes.size() + static_cast<std::size_t>(n) > max_bytes) {

@@ -11,8 +11,10 @@
 
 namespace linemap {
 
-// Reads all of `path`. Fails with kNotFound for a missing file, kInvalidArgument
-// for a directory, kResourceExhausted when it is larger than `max_bytes`.
+// Reads all of `path`. Fails with kNotFound for a missing file,
+// kInvalidArgument for a directory or a file that cannot be opened or read
+// (bad input: the CLI exits 2), kResourceExhausted when it is larger than
+// `max_bytes`.
 // Messages name the file.
 StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes);
 
