@@ -44,6 +44,10 @@ int RunDecode(const std::vector<std::string>& args) {
   if (!grid.ok()) return ReportError("decode", grid.status());
   Status saved = SaveRosMap(*out, *grid);
   if (!saved.ok()) return ReportError("decode", saved);
+  const CellCounts counts = grid->Count();
+  std::printf("wrote %s and its .pgm: %d x %d cells, %zu free, %zu occupied, %zu unknown\n",
+              out->c_str(), grid->width(), grid->height(), counts.free, counts.occupied,
+              counts.unknown);
   return kExitOk;
 }
 
