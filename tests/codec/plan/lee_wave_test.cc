@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <deque>
 #include <vector>
 
 #include "linemap/plan.h"
@@ -9,6 +8,8 @@
 namespace linemap {
 namespace {
 
+using plan_test::FreeStepCounts;
+using plan_test::GappedWallsGrid;
 using plan_test::GridFromText;
 
 SafeZone ZoneOf(const Grid& grid) { return ComputeSafeZone(grid, ImpassableAreaMask::Build(0.0)); }
@@ -60,38 +61,10 @@ TEST(LeeWaveTest, UnreachableGoalAndUnsafeEnds) {
 // Against a full breadth-first search written here: the early stop keeps
 // every index below the goal's exact and labels nothing above it.
 TEST(LeeWaveTest, EarlyStopAgreesWithFullSearch) {
-  const Grid grid = GridFromText({
-      "..........#.....",
-      "..####....#..#..",
-      ".....#....#..#..",
-      ".....#.......#..",
-      "..####..######..",
-      "................",
-  });
+  const Grid grid = GappedWallsGrid();
   const SafeZone zone = ZoneOf(grid);
   const CellIndex start{0, 0}, goal{15, 5};
-  std::vector<int> full(grid.size(), -1);
-  std::deque<CellIndex> queue = {start};
-  full[grid.Index(0, 0)] = 0;
-  while (!queue.empty()) {
-    const CellIndex c = queue.front();
-    queue.pop_front();
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int x = c.col + dx, y = c.row + dy;
-        if (!grid.Contains(x, y) || grid.at(x, y) != Cell::kFree || full[grid.Index(x, y)] >= 0) {
-          continue;
-        }
-        if (dx != 0 && dy != 0 &&
-            (grid.at(c.col + dx, c.row) != Cell::kFree ||
-             grid.at(c.col, c.row + dy) != Cell::kFree)) {
-          continue;
-        }
-        full[grid.Index(x, y)] = full[grid.Index(c.col, c.row)] + 1;
-        queue.push_back({x, y});
-      }
-    }
-  }
+  const std::vector<int> full = FreeStepCounts(grid, start);
   const LeeWave wave = RunLeeWave(zone, start, goal);
   ASSERT_EQ(wave.goal_index, full[grid.Index(goal.col, goal.row)]);
   for (int r = 0; r < grid.height(); ++r) {

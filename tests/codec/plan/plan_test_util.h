@@ -4,6 +4,7 @@
 #define LINEMAP_TESTS_CODEC_PLAN_PLAN_TEST_UTIL_H_
 
 #include <cmath>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,47 @@ inline Grid GridFromText(const std::vector<std::string>& lines, double resolutio
     }
   }
   return grid;
+}
+
+// Walls with gaps, shared by the wave and region tests that compare with a
+// full search.
+inline Grid GappedWallsGrid() {
+  return GridFromText({
+      "..........#.....",
+      "..####....#..#..",
+      ".....#....#..#..",
+      ".....#.......#..",
+      "..####..######..",
+      "................",
+  });
+}
+
+// Independent of the planner: 8-connected breadth-first step counts from
+// `from` over the free cells of `grid`, never stepping diagonally past a
+// non-free cell (the zero-radius safe zone's rule); -1 where unreached.
+inline std::vector<int> FreeStepCounts(const Grid& grid, CellIndex from) {
+  std::vector<int> steps(grid.size(), -1);
+  std::deque<CellIndex> queue = {from};
+  steps[grid.Index(from.col, from.row)] = 0;
+  const auto free = [&grid](int c, int r) {
+    return grid.Contains(c, r) && grid.at(c, r) == Cell::kFree;
+  };
+  while (!queue.empty()) {
+    const CellIndex c = queue.front();
+    queue.pop_front();
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = c.col + dx, y = c.row + dy;
+        if ((dx == 0 && dy == 0) || !free(x, y) || steps[grid.Index(x, y)] >= 0) continue;
+        if (dx != 0 && dy != 0 && (!free(c.col + dx, c.row) || !free(c.col, c.row + dy))) {
+          continue;
+        }
+        steps[grid.Index(x, y)] = steps[grid.Index(c.col, c.row)] + 1;
+        queue.push_back({x, y});
+      }
+    }
+  }
+  return steps;
 }
 
 // Safe iff free and every obstacle cell (occupied, unknown, or the ring of

@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <deque>
 #include <vector>
 
 #include "linemap/plan.h"
@@ -9,6 +8,8 @@
 namespace linemap {
 namespace {
 
+using plan_test::FreeStepCounts;
+using plan_test::GappedWallsGrid;
 using plan_test::GridFromText;
 
 SafeZone ZoneOf(const Grid& grid) { return ComputeSafeZone(grid, ImpassableAreaMask::Build(0.0)); }
@@ -63,36 +64,10 @@ TEST(TrajectoryRegionTest, EmptyWhenUnreachable) {
 // Against the definition, with two full searches written here: a cell is in
 // the region iff dist(start, p) + dist(p, goal) == dist(start, goal).
 TEST(TrajectoryRegionTest, MatchesTwoSidedDistanceDefinition) {
-  const Grid grid = GridFromText({
-      "..........#.....",
-      "..####....#..#..",
-      ".....#....#..#..",
-      ".....#.......#..",
-      "..####..######..",
-      "................",
-  });
+  const Grid grid = GappedWallsGrid();
   const SafeZone zone = ZoneOf(grid);
-  const auto bfs = [&](CellIndex from) {
-    std::vector<int> d(grid.size(), -1);
-    std::deque<CellIndex> q = {from};
-    d[grid.Index(from.col, from.row)] = 0;
-    while (!q.empty()) {
-      const CellIndex c = q.front();
-      q.pop_front();
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          if ((dx || dy) && zone.CanStep(c.col, c.row, dx, dy) &&
-              d[grid.Index(c.col + dx, c.row + dy)] < 0) {
-            d[grid.Index(c.col + dx, c.row + dy)] = d[grid.Index(c.col, c.row)] + 1;
-            q.push_back({c.col + dx, c.row + dy});
-          }
-        }
-      }
-    }
-    return d;
-  };
   const CellIndex start{0, 0}, goal{15, 5};
-  const std::vector<int> ds = bfs(start), dg = bfs(goal);
+  const std::vector<int> ds = FreeStepCounts(grid, start), dg = FreeStepCounts(grid, goal);
   const int total = ds[grid.Index(goal.col, goal.row)];
   const TrajectoryRegion region = RegionOf(zone, start, goal);
   for (int r = 0; r < grid.height(); ++r) {
