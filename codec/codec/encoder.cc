@@ -161,6 +161,12 @@ void SmoothFreeBoundary(int w, int h, const std::vector<std::uint8_t>& occupied,
       for (int c = 1; c + 1 < w; ++c) {
         const std::size_t i = static_cast<std::size_t>(r) * w + c;
         if (occupied[i]) continue;
+        // A flip needs 5 of the 8 neighbours on the other side, so at least
+        // one of the four edge neighbours: most cells are settled here.
+        const std::uint8_t side = t[i];
+        if (t[i - 1] == side && t[i + 1] == side && t[i - w] == side && t[i + w] == side) {
+          continue;
+        }
         int free = 0, open = 0;
         std::uint32_t only = 0;
         bool one_region = true;
@@ -206,6 +212,12 @@ void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupi
     for (int r = 1; r + 1 < h; ++r) {
       for (int c = 1; c + 1 < w; ++c) {
         const std::size_t i = static_cast<std::size_t>(r) * w + c;
+        // Only unknown cells (which need 5 occupied neighbours, so at least
+        // one edge neighbour) and occupied cells of the map can change.
+        if (!o[i] && (cells[i] != Cell::kUnknown ||
+                      (!o[i - 1] && !o[i + 1] && !o[i - w] && !o[i + w]))) {
+          continue;
+        }
         int occ = 0;
         bool touches_free = false, touches_dropped = false;
         for (int dr = -1; dr <= 1; ++dr) {
@@ -351,13 +363,11 @@ bool FollowsWalls(const Grid& grid, const std::vector<std::uint8_t>& occupied,
   return near && static_cast<double>(on_wall) >= min_on_wall_share * static_cast<double>(cells);
 }
 
-// The wall segments to store: the extractor's lines on the lattice, kept
-// when they follow the walls.
-StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid,
-                                                   const std::vector<std::uint8_t>& occupied,
-                                                   const EncodeOptions& options, bool exact) {
-  std::vector<LatticeSegment> segments;
-  if (grid.empty()) return segments;
+// The extractor's lines for the grid (ExtractLines, lines.h), computed once
+// per encode: every candidate file with segments starts from them.
+StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
+                                                    const EncodeOptions& options) {
+  if (grid.empty()) return std::vector<LineSegment>{};
   LineExtractionOptions line_options;
   line_options.method = options.method;
   line_options.epsilon_cells = options.epsilon_cells;
@@ -369,15 +379,17 @@ StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid,
       line_options.robot = robot;
     }
   }
-  StatusOr<LineExtraction> lines = ExtractLines(grid, line_options);
-  if (!lines.ok() && lines.status().code() == StatusCode::kUnsupported &&
-      options.method == LineMethod::kLinemap) {
-    // linemap's own extractor has not landed yet: RM-Line stands in.
-    line_options.method = LineMethod::kRmLine;
-    lines = ExtractLines(grid, line_options);
-  }
-  if (!lines.ok()) return lines.status();
-  for (const LineSegment& line : lines->segments) {
+  LINEMAP_ASSIGN_OR_RETURN(LineExtraction lines, ExtractLines(grid, line_options));
+  return std::move(lines.segments);
+}
+
+// The wall segments to store: the extractor's lines on the lattice, kept
+// when they are long enough and follow the walls.
+std::vector<LatticeSegment> WallSegments(const Grid& grid, const std::vector<std::uint8_t>& occupied,
+                                         const std::vector<LineSegment>& lines,
+                                         const EncodeOptions& options, bool exact) {
+  std::vector<LatticeSegment> segments;
+  for (const LineSegment& line : lines) {
     const LatticeSegment s = ToLattice(line, grid.width(), grid.height());
     const int cells = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row)) + 1;
     if (cells < options.min_segment_cells) continue;
@@ -441,11 +453,12 @@ std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions&
   return entries;
 }
 
-// One complete file. With `exact`, every occupied and free cell is
-// reproduced as it is and segments may only cover occupied cells, so no
-// residual is needed.
+// One complete file; segments come from `wall_lines` when it is given. With
+// `exact`, every occupied and free cell is reproduced as it is and segments
+// may only cover occupied cells, so no residual is needed.
 StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options,
-                                               bool exact, bool with_segments,
+                                               bool exact,
+                                               const std::vector<LineSegment>* wall_lines,
                                                const LossyTuning& tuning) {
   const int w = grid.width();
   const int h = grid.height();
@@ -471,9 +484,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
   }
 
   std::vector<LatticeSegment> segments;
-  if (with_segments) {
-    LINEMAP_ASSIGN_OR_RETURN(segments, WallSegments(grid, occupied, options, exact));
-  }
+  if (wall_lines) segments = WallSegments(grid, occupied, *wall_lines, options, exact);
   if (!segments.empty()) {
     writer.AddChunk(kSegmentChunk, SegmentPayload(segments));
     for (const LatticeSegment& s : segments) {
@@ -515,23 +526,23 @@ bool MeetsLossyGoals(const Grid& grid, const std::vector<std::uint8_t>& bytes) {
 
 // The smallest lossy file that meets the goals: the boldest tuning that
 // does (with or without segments, whichever is smaller), or the exact
-// layers when those are smaller still, so a lossy file is never larger than
-// the lossless one.
+// layers without segments when those are smaller still, so a lossy file is
+// never larger than the plainest lossless one.
 StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> best,
-                           EncodeFile(grid, options, true, false, mildest));
+                           EncodeFile(grid, options, true, nullptr, mildest));
+  std::vector<LineSegment> lines;
   if (options.store_segments) {
-    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact,
-                             EncodeFile(grid, options, true, true, mildest));
-    if (exact.size() < best.size()) best = std::move(exact);
+    LINEMAP_ASSIGN_OR_RETURN(lines, ExtractWallLines(grid, options));
   }
   for (const LossyTuning& tuning : kLossyTunings) {
     bool met = false;
     for (bool with_segments : {true, false}) {
       if (with_segments && !options.store_segments) continue;
-      LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> candidate,
-                               EncodeFile(grid, options, false, with_segments, tuning));
+      LINEMAP_ASSIGN_OR_RETURN(
+          std::vector<std::uint8_t> candidate,
+          EncodeFile(grid, options, false, with_segments ? &lines : nullptr, tuning));
       if (!MeetsLossyGoals(grid, candidate)) continue;
       met = true;
       if (candidate.size() < best.size()) best = std::move(candidate);
@@ -559,12 +570,13 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   if (!options.lossless) return EncodeLossy(grid, options);
   const bool exact = options.lossless_method == LosslessMethod::kExactLayers;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
-                           EncodeFile(grid, options, exact, options.store_segments, mildest));
+                           EncodeFile(grid, options, exact, nullptr, mildest));
   if (options.store_segments) {
     // Lossless files need no geometry: keep segments only when they pay.
-    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> plain,
-                             EncodeFile(grid, options, exact, false, mildest));
-    if (plain.size() < bytes.size()) bytes = std::move(plain);
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> with_lines,
+                             EncodeFile(grid, options, exact, &lines, mildest));
+    if (with_lines.size() < bytes.size()) bytes = std::move(with_lines);
   }
   return bytes;
 }

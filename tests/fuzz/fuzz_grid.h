@@ -1,0 +1,59 @@
+// Shared by the round-trip fuzz targets: a small grid and encoder options
+// derived from the fuzzer's bytes.
+//
+// Input layout: byte 0 -> width (1..64), byte 1 -> height (1..64), byte 2 ->
+// encoder options (bit 0: residual lossless method, bit 1: store segments,
+// bit 2: store room chains), then one byte per cell (value % 3 is the Cell,
+// row 0 first); cells past the end of the input are unknown. The height is
+// cut so that the grid holds at most 4 cells per input cell byte plus 64:
+// short inputs (which libFuzzer prefers) stay small grids, so executions
+// stay cheap, and long unknown tails add nothing a shorter input lacks.
+#ifndef LINEMAP_TESTS_FUZZ_FUZZ_GRID_H_
+#define LINEMAP_TESTS_FUZZ_FUZZ_GRID_H_
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+
+#include "linemap/codec.h"
+#include "linemap/grid.h"
+
+namespace linemap::fuzz {
+
+constexpr int kMaxSide = 64;
+constexpr std::size_t kHeaderBytes = 3;
+
+inline Grid GridFromBytes(const std::uint8_t* data, std::size_t size) {
+  const int width = 1 + data[0] % kMaxSide;
+  const std::size_t max_cells = 4 * (size - kHeaderBytes) + 64;
+  const int max_height = static_cast<int>(std::max<std::size_t>(1, max_cells / width));
+  const int height = std::min(1 + data[1] % kMaxSide, max_height);
+  Grid grid(width, height, Cell::kUnknown);
+  std::size_t next = kHeaderBytes;
+  for (auto& cell : grid.mutable_cells()) {
+    if (next >= size) break;
+    cell = static_cast<Cell>(data[next++] % 3);
+  }
+  return grid;
+}
+
+inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
+  EncodeOptions options;
+  options.lossless = lossless;
+  options.lossless_method =
+      (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
+  options.store_segments = (flags & 2) != 0;
+  options.store_room_chains = (flags & 4) != 0;
+  return options;
+}
+
+[[noreturn]] inline void Fail(const char* target, const char* what, const Status& status = {}) {
+  std::fprintf(stderr, "%s: %s %s\n", target, what, status.ToString().c_str());
+  std::abort();
+}
+
+}  // namespace linemap::fuzz
+
+#endif  // LINEMAP_TESTS_FUZZ_FUZZ_GRID_H_
