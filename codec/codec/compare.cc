@@ -1,9 +1,13 @@
 // CompareGrids(): the quality measures of issue 6 (cells equal, obstacle
 // recall / precision within one cell, free IoU, leaks, unknown turned free).
 #include <algorithm>
-#include <set>
+#include <cstdint>
+#include <utility>
+#include <vector>
 
+#include "codec/codec/compare_internal.h"
 #include "linemap/codec.h"
+#include "linemap/labeling.h"
 
 namespace linemap {
 namespace {
@@ -18,44 +22,18 @@ bool OccupiedNear(const Grid& grid, int c, int r) {
   return false;
 }
 
-// Labels the 4-connected free components of `grid`; returns labels (0 = not
-// free) and fills `sizes` (index = label).
-std::vector<std::uint32_t> LabelFree(const Grid& grid, std::vector<std::size_t>* sizes) {
-  const int w = grid.width();
-  const int h = grid.height();
-  std::vector<std::uint32_t> label(grid.size(), 0);
-  sizes->assign(1, 0);
-  std::vector<std::size_t> stack;
-  for (std::size_t start = 0; start < label.size(); ++start) {
-    if (label[start] || grid.cells()[start] != Cell::kFree) continue;
-    const std::uint32_t id = static_cast<std::uint32_t>(sizes->size());
-    sizes->push_back(0);
-    label[start] = id;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      ++(*sizes)[id];
-      const int c = static_cast<int>(i % w);
-      const int r = static_cast<int>(i / w);
-      auto push = [&](std::size_t j) {
-        if (!label[j] && grid.cells()[j] == Cell::kFree) {
-          label[j] = id;
-          stack.push_back(j);
-        }
-      };
-      if (c > 0) push(i - 1);
-      if (c + 1 < w) push(i + 1);
-      if (r > 0) push(i - w);
-      if (r + 1 < h) push(i + w);
-    }
-  }
-  return label;
-}
-
 }  // namespace
 
-GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
+namespace codec_internal {
+
+Labeling LabelFree(const Grid& grid) {
+  BinaryMask free(grid.width(), grid.height());
+  for (std::size_t i = 0; i < free.bits.size(); ++i) free.bits[i] = grid.cells()[i] == Cell::kFree;
+  return LabelComponents(free, Connectivity::kFour);
+}
+
+GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
+                            const Grid& decoded) {
   GridComparison out;
   out.same_geometry = original.width() == decoded.width() &&
                       original.height() == decoded.height() &&
@@ -96,19 +74,29 @@ GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
   }
   // Leaks: original regions of kLeakRegionCells+ cells that share a decoded
   // free component.
-  std::vector<std::size_t> orig_sizes, dec_sizes;
-  const std::vector<std::uint32_t> orig_label = LabelFree(original, &orig_sizes);
-  const std::vector<std::uint32_t> dec_label = LabelFree(decoded, &dec_sizes);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (decoded, original)
-  for (std::size_t i = 0; i < orig_label.size(); ++i) {
-    if (orig_label[i] && dec_label[i] && orig_sizes[orig_label[i]] >= kLeakRegionCells) {
-      pairs.emplace_back(dec_label[i], orig_label[i]);
+  const Labeling& orig = original_free;
+  const Labeling dec = LabelFree(decoded);
+  std::vector<std::pair<std::int32_t, std::int32_t>> pairs;  // (decoded, original)
+  for (std::size_t i = 0; i < orig.labels.size(); ++i) {
+    const std::int32_t a = orig.labels[i];
+    const std::int32_t b = dec.labels[i];
+    if (a && b && orig.components[a - 1].cell_count >= kLeakRegionCells) {
+      // Runs of cells repeat the pair: keeping one per run makes the sort
+      // below cost O(boundary) instead of O(free cells * log).
+      const std::pair<std::int32_t, std::int32_t> pair(b, a);
+      if (pairs.empty() || pairs.back() != pair) pairs.push_back(pair);
     }
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   for (std::size_t i = 1; i < pairs.size(); ++i) out.leaks += pairs[i].first == pairs[i - 1].first;
   return out;
+}
+
+}  // namespace codec_internal
+
+GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
+  return codec_internal::CompareGrids(original, codec_internal::LabelFree(original), decoded);
 }
 
 }  // namespace linemap

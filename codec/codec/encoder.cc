@@ -21,16 +21,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/compare_internal.h"
 #include "codec/codec/draco_segments.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/raster.h"
 #include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/labeling.h"
 
 namespace linemap {
 namespace {
@@ -73,39 +74,17 @@ constexpr double kGoalUnknownTurnedFree = 0.019;
 // Share of a stored segment's cells that must be occupied cells.
 constexpr double kMinOnWallShare = 0.75;
 
-// 4-connected components of the cells where `member` is 1; calls
-// visit(cells, touches_border) for each.
-void ForEachComponent(int width, int height, const std::vector<std::uint8_t>& member,
-                      const std::function<void(const std::vector<std::size_t>&, bool)>& visit) {
-  std::vector<std::uint8_t> seen = member;  // 1 = still to visit
-  std::vector<std::size_t> stack;
-  std::vector<std::size_t> cells;
-  for (std::size_t start = 0; start < seen.size(); ++start) {
-    if (!seen[start]) continue;
-    cells.clear();
-    bool border = false;
-    seen[start] = 0;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      cells.push_back(i);
-      const int c = static_cast<int>(i % width);
-      const int r = static_cast<int>(i / width);
-      if (c == 0 || r == 0 || c == width - 1 || r == height - 1) border = true;
-      auto push = [&](std::size_t j) {
-        if (seen[j]) {
-          seen[j] = 0;
-          stack.push_back(j);
-        }
-      };
-      if (c > 0) push(i - 1);
-      if (c + 1 < width) push(i + 1);
-      if (r > 0) push(i - width);
-      if (r + 1 < height) push(i + width);
-    }
-    visit(cells, border);
-  }
+// 4-connected components of the cells where `member` is 1 (two-pass
+// labelling, linear and cache-friendly).
+Labeling LabelMembers(int width, int height, std::vector<std::uint8_t> member) {
+  BinaryMask mask(width, height);
+  mask.bits = std::move(member);
+  return LabelComponents(mask, Connectivity::kFour);
+}
+
+bool TouchesBorder(const ComponentStats& component, int width, int height) {
+  return component.box.min_col == 0 || component.box.min_row == 0 ||
+         component.box.max_col == width - 1 || component.box.max_row == height - 1;
 }
 
 // Occupied cells to reproduce: all but isolated specks, within the budget.
@@ -245,53 +224,69 @@ void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupi
 // enclosed holes whose free neighbours all belong to one free region (so a
 // filled hole never joins two regions) and which hold no occupied cell that
 // will be drawn.
-std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const std::vector<std::uint8_t>& occupied,
-                                       bool exact, const LossyTuning& tuning) {
+std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const Labeling& free_regions,
+                                       const std::vector<std::uint8_t>& occupied, bool exact,
+                                       const LossyTuning& tuning) {
   const int w = grid.width();
   const int h = grid.height();
   const std::vector<Cell>& cells = grid.cells();
   std::vector<std::uint8_t> target(cells.size(), 0);
-  std::vector<std::uint32_t> region(cells.size(), 0);
-  std::uint32_t regions = 0;
-  std::vector<std::uint8_t> member(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i) member[i] = cells[i] == Cell::kFree;
-  ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool) {
-    ++regions;
-    if (!exact && comp.size() < tuning.min_free_region_cells) return;
-    for (std::size_t i : comp) {
-      target[i] = 1;
-      region[i] = regions;
+  std::vector<std::uint32_t> region(cells.size(), 0);  // free component label, 0 = none
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::int32_t label = free_regions.labels[i];
+    if (!label) continue;
+    if (!exact && free_regions.components[label - 1].cell_count < tuning.min_free_region_cells) {
+      continue;
     }
-  });
+    target[i] = 1;
+    region[i] = static_cast<std::uint32_t>(label);
+  }
   if (exact) return target;
   std::size_t free_cells = 0;
   for (std::uint8_t t : target) free_cells += t;
   std::size_t budget =
       static_cast<std::size_t>(tuning.hole_budget * static_cast<double>(free_cells));
+  std::vector<std::uint8_t> member(cells.size());
+  // Holes: components of neither free nor drawn cells. A hole may be filled
+  // when it is small, off the border and all its free 4-neighbours belong to
+  // one region (`joins`: that region, 0 = none yet, kJoinsMany = several).
   for (std::size_t i = 0; i < cells.size(); ++i) member[i] = target[i] == 0 && !occupied[i];
-  ForEachComponent(w, h, member, [&](const std::vector<std::size_t>& comp, bool border) {
-    if (border || comp.size() > tuning.max_hole_cells || comp.size() > budget) return;
-    std::uint32_t seen = 0;
-    for (std::size_t i : comp) {
-      const int c = static_cast<int>(i % w);
-      const int r = static_cast<int>(i / w);
+  const Labeling holes = LabelMembers(w, h, std::move(member));
+  constexpr std::uint32_t kJoinsMany = ~0u;
+  std::vector<std::uint32_t> joins(holes.components.size(), 0);
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = static_cast<std::size_t>(r) * w + c;
+      const std::int32_t hole = holes.labels[i];
+      if (!hole || holes.components[hole - 1].cell_count > tuning.max_hole_cells) continue;
+      std::uint32_t& join = joins[hole - 1];
       const std::size_t around[4] = {i - 1, i + 1, i - w, i + w};
       const bool inside[4] = {c > 0, c + 1 < w, r > 0, r + 1 < h};
-      for (int k = 0; k < 4; ++k) {
-        if (!inside[k]) continue;
-        const std::uint32_t id = region[around[k]];
-        if (id == 0) continue;
-        if (seen != 0 && seen != id) return;
-        seen = id;
+      for (int k = 0; k < 4 && join != kJoinsMany; ++k) {
+        const std::uint32_t id = inside[k] ? region[around[k]] : 0;
+        if (id != 0) join = (join == 0 || join == id) ? id : kJoinsMany;
       }
     }
-    if (seen == 0) return;
-    for (std::size_t i : comp) {
-      target[i] = 1;
-      region[i] = seen;
+  }
+  // Holes are taken in the raster order of their first cells until the
+  // budget is spent; two holes are never 4-adjacent, so the choices are
+  // independent.
+  for (std::size_t k = 0; k < holes.components.size(); ++k) {
+    const ComponentStats& hole = holes.components[k];
+    if (TouchesBorder(hole, w, h) || hole.cell_count > tuning.max_hole_cells ||
+        hole.cell_count > budget || joins[k] == 0 || joins[k] == kJoinsMany) {
+      joins[k] = 0;
+      continue;
     }
-    budget -= comp.size();
-  });
+    budget -= hole.cell_count;
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::int32_t hole = holes.labels[i];
+    if (hole && joins[hole - 1]) {
+      target[i] = 1;
+      region[i] = joins[hole - 1];
+    }
+  }
   SmoothFreeBoundary(w, h, occupied, tuning, free_cells, &region, &target);
   return target;
 }
@@ -453,13 +448,21 @@ std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions&
   return entries;
 }
 
-// One complete file; segments come from `wall_lines` when it is given. With
-// `exact`, every occupied and free cell is reproduced as it is and segments
-// may only cover occupied cells, so no residual is needed.
-StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options,
-                                               bool exact,
-                                               const std::vector<LineSegment>* wall_lines,
-                                               const LossyTuning& tuning) {
+// A candidate file and the grid it decodes to (what the decoder rebuilds
+// from the same layers; without RESD).
+struct EncodedFile {
+  std::vector<std::uint8_t> bytes;
+  std::vector<Cell> decoded_cells;
+};
+
+// One complete file; segments come from `wall_lines` when it is given, and
+// `free_regions` is LabelFree(grid). With `exact`, every occupied and free
+// cell is reproduced as it is and segments may only cover occupied cells, so
+// no residual is needed.
+StatusOr<EncodedFile> EncodeFile(const Grid& grid, const Labeling& free_regions,
+                                 const EncodeOptions& options, bool exact,
+                                 const std::vector<LineSegment>* wall_lines,
+                                 const LossyTuning& tuning) {
   const int w = grid.width();
   const int h = grid.height();
   ContainerWriter writer;
@@ -496,7 +499,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (occupied[i]) canvas[i] = Cell::kOccupied;
   }
-  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, occupied, exact, tuning);
+  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, free_regions, occupied, exact, tuning);
   writer.AddChunk(kFreeChunk, WrapPayload(EncodeFreePlane(free_target, canvas, w, h), false));
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (canvas[i] != Cell::kOccupied) canvas[i] = free_target[i] ? Cell::kFree : Cell::kUnknown;
@@ -505,33 +508,45 @@ StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOpt
     writer.AddChunk(kResidualChunk,
                     WrapPayload(EncodeResidualPlane(grid.cells(), canvas, w, h), false));
   }
-  return writer.Finish();
+  return EncodedFile{writer.Finish(), std::move(canvas)};
 }
 
-// True when `bytes` decode to a grid that meets the lossy goals against
-// `grid`.
-bool MeetsLossyGoals(const Grid& grid, const std::vector<std::uint8_t>& bytes) {
-  StatusOr<Grid> decoded = DecodeLmap(bytes);
-  if (!decoded.ok()) return false;
-  const GridComparison m = CompareGrids(grid, *decoded);
+// True when `decoded_cells` meet the lossy goals against `grid`.
+bool MeetsLossyGoals(const Grid& grid, const Labeling& free_regions,
+                     const std::vector<Cell>& decoded_cells) {
+  Grid decoded(grid.width(), grid.height(), Cell::kUnknown);
+  decoded.mutable_cells() = decoded_cells;
+  const GridComparison m = codec_internal::CompareGrids(grid, free_regions, decoded);
   const bool has_occupied =
       std::find(grid.cells().begin(), grid.cells().end(), Cell::kOccupied) != grid.cells().end();
-  const bool has_free =
-      std::find(grid.cells().begin(), grid.cells().end(), Cell::kFree) != grid.cells().end();
+  const bool has_free = !free_regions.components.empty();
   return m.leaks == 0 && m.unknown_turned_free_share <= kGoalUnknownTurnedFree &&
          (!has_occupied ||
           (m.obstacle_recall_1 >= kGoalRecall && m.obstacle_precision_1 >= kGoalPrecision)) &&
          (!has_free || m.free_iou >= kGoalFreeIou);
 }
 
+// The file decodes to the cells the goals were checked on: a last check
+// that encoder and decoder agree, so the goals hold for the file itself.
+Status CheckDecodesTo(const EncodedFile& file) {
+  LINEMAP_ASSIGN_OR_RETURN(Grid decoded, DecodeLmap(file.bytes));
+  if (decoded.cells() != file.decoded_cells) {
+    return InternalError("lossy encoder and decoder disagree on the decoded grid");
+  }
+  return Status::Ok();
+}
+
 // The smallest lossy file that meets the goals: the boldest tuning that
 // does (with or without segments, whichever is smaller), or the exact
 // layers without segments when those are smaller still, so a lossy file is
-// never larger than the plainest lossless one.
+// never larger than the plainest lossless one. The goals are checked on the
+// cells each candidate decodes to, computed while encoding; the chosen file
+// is decoded once to confirm them.
 StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> best,
-                           EncodeFile(grid, options, true, nullptr, mildest));
+  const Labeling free_regions = codec_internal::LabelFree(grid);
+  LINEMAP_ASSIGN_OR_RETURN(EncodedFile best,
+                           EncodeFile(grid, free_regions, options, true, nullptr, mildest));
   std::vector<LineSegment> lines;
   if (options.store_segments) {
     LINEMAP_ASSIGN_OR_RETURN(lines, ExtractWallLines(grid, options));
@@ -540,16 +555,17 @@ StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOp
     bool met = false;
     for (bool with_segments : {true, false}) {
       if (with_segments && !options.store_segments) continue;
-      LINEMAP_ASSIGN_OR_RETURN(
-          std::vector<std::uint8_t> candidate,
-          EncodeFile(grid, options, false, with_segments ? &lines : nullptr, tuning));
-      if (!MeetsLossyGoals(grid, candidate)) continue;
+      LINEMAP_ASSIGN_OR_RETURN(EncodedFile candidate,
+                               EncodeFile(grid, free_regions, options, false,
+                                          with_segments ? &lines : nullptr, tuning));
+      if (!MeetsLossyGoals(grid, free_regions, candidate.decoded_cells)) continue;
       met = true;
-      if (candidate.size() < best.size()) best = std::move(candidate);
+      if (candidate.bytes.size() < best.bytes.size()) best = std::move(candidate);
     }
     if (met) break;
   }
-  return best;
+  LINEMAP_RETURN_IF_ERROR(CheckDecodesTo(best));
+  return std::move(best.bytes);
 }
 
 }  // namespace
@@ -569,16 +585,17 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
   if (!options.lossless) return EncodeLossy(grid, options);
   const bool exact = options.lossless_method == LosslessMethod::kExactLayers;
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
-                           EncodeFile(grid, options, exact, nullptr, mildest));
+  const Labeling free_regions = codec_internal::LabelFree(grid);
+  LINEMAP_ASSIGN_OR_RETURN(EncodedFile file,
+                           EncodeFile(grid, free_regions, options, exact, nullptr, mildest));
   if (options.store_segments) {
     // Lossless files need no geometry: keep segments only when they pay.
     LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
-    LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> with_lines,
-                             EncodeFile(grid, options, exact, &lines, mildest));
-    if (with_lines.size() < bytes.size()) bytes = std::move(with_lines);
+    LINEMAP_ASSIGN_OR_RETURN(EncodedFile with_lines,
+                             EncodeFile(grid, free_regions, options, exact, &lines, mildest));
+    if (with_lines.bytes.size() < file.bytes.size()) file = std::move(with_lines);
   }
-  return bytes;
+  return std::move(file.bytes);
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {
