@@ -292,8 +292,18 @@ int BenchRoundTrip(const std::string& original_path, const std::string& decoded_
   if (safe.empty()) return 0;
   std::mt19937 rng(args.seed);
   std::uniform_int_distribution<std::size_t> pick(0, safe.size() - 1);
+  const SafeZone decoded_zone = ComputeSafeZone(*decoded, on_decoded->mask());
   int found_original = 0, found_decoded = 0, agree = 0, both = 0, within = 0;
-  double worst = 0.0;
+  int astar_both = 0, astar_within = 0, shortest_within = 0;
+  double worst = 0.0, astar_worst = 0.0, shortest_worst = 0.0;
+  const auto excess_of = [](double la, double lb) {
+    return la > 0 ? std::abs(lb / la - 1.0) : (lb > 0 ? 1.0 : 0.0);
+  };
+  const auto shortest = [](const PlanResult& p) {
+    double best = p.trajectories.front().length_m;
+    for (const auto& t : p.trajectories) best = std::min(best, t.length_m);
+    return best;
+  };
   for (int k = 0; k < args.pairs; ++k) {
     const CellIndex s = safe[pick(rng)], g = safe[pick(rng)];
     PlanRequest q;
@@ -305,16 +315,30 @@ int BenchRoundTrip(const std::string& original_path, const std::string& decoded_
     found_original += a->found();
     found_decoded += b->found();
     agree += a->found() == b->found();
+    // The same pair on the two safe zones by A*: how much of a difference
+    // is the map's, not the planner's.
+    const AStarPath ra = AStar(zone, s, g);
+    const AStarPath rb = AStar(decoded_zone, s, g);
+    if (ra.found && rb.found) {
+      ++astar_both;
+      const double e = excess_of(ra.length, rb.length);
+      astar_worst = std::max(astar_worst, e);
+      astar_within += e <= 0.03 + 1e-12;
+    }
     if (!a->found() || !b->found()) continue;
     ++both;
-    const double la = a->trajectories.front().length_m, lb = b->trajectories.front().length_m;
-    const double excess = la > 0 ? std::abs(lb / la - 1.0) : (lb > 0 ? 1.0 : 0.0);
+    const double excess =
+        excess_of(a->trajectories.front().length_m, b->trajectories.front().length_m);
     worst = std::max(worst, excess);
     within += excess <= 0.03 + 1e-12;
+    const double shortest_excess = excess_of(shortest(*a), shortest(*b));
+    shortest_worst = std::max(shortest_worst, shortest_excess);
+    shortest_within += shortest_excess <= 0.03 + 1e-12;
   }
-  std::printf("| %s | %d | %d | %d | %d / %d | %d / %d | %.1f %% |\n", original_path.c_str(),
-              args.pairs, found_original, found_decoded, agree, args.pairs, within, both,
-              100.0 * worst);
+  std::printf("| %s | %d | %d | %d | %d / %d | %d / %d | %.1f %% | %d / %d | %.1f %% | %d / %d | %.1f %% |\n",
+              original_path.c_str(), args.pairs, found_original, found_decoded, agree,
+              args.pairs, within, both, 100.0 * worst, shortest_within, both,
+              100.0 * shortest_worst, astar_within, astar_both, 100.0 * astar_worst);
   std::fflush(stdout);
   return 0;
 }
@@ -333,7 +357,8 @@ int main(int argc, char** argv) {
   if (args.maps.front().find("::") != std::string::npos) {
     std::printf(
         "| original map | pairs | found on original | found on decoded | agree | best length "
-        "within 3 %% | worst length difference |\n|---|---|---|---|---|---|---|\n");
+        "within 3 %% | worst length difference | shortest trajectory within 3 %% | worst | "
+        "A* within 3 %% | worst |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     int rc = 0;
     for (const std::string& arg : args.maps) {
       const std::size_t cut = arg.find("::");
