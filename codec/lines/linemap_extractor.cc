@@ -357,8 +357,18 @@ bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
   return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
 }
 
+// False when the segments' bounding boxes, one grown by `gap`, are apart:
+// then no end of one is within `gap` of the other (a cheap first test).
+bool BoxesWithinGap(const LineSegment& a, const LineSegment& b, double gap) {
+  return std::min(a.x1, a.x2) - gap <= std::max(b.x1, b.x2) &&
+         std::min(b.x1, b.x2) <= std::max(a.x1, a.x2) + gap &&
+         std::min(a.y1, a.y2) - gap <= std::max(b.y1, b.y2) &&
+         std::min(b.y1, b.y2) <= std::max(a.y1, a.y2) + gap;
+}
+
 // True when an end of one segment is within `gap` of the other segment.
 bool EndsWithinGap(const Group& a, const Group& b, double gap) {
+  if (!BoxesWithinGap(a.segment, b.segment, gap)) return false;
   const double gap_sq = gap * gap;
   return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
          SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
