@@ -52,7 +52,6 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
-#include <queue>
 #include <utility>
 
 #include "codec/lines/line_fit.h"
@@ -279,13 +278,14 @@ class GroupTiles {
     }
   }
 
-  // Ids of live groups registered in the tiles within `radius` of (x, y)
+  // Ids of live groups (`alive`, one flag per group id; compact, so the scan
+  // touches no Group) registered in the tiles within `radius` of (x, y)
   // (an id may repeat across tiles). Dead and repeated entries are dropped
   // from the buckets on the way, so merged groups do not pile up.
-  void Near(double x, double y, double radius, const std::vector<Group>& groups,
+  void Near(double x, double y, double radius, const std::vector<std::uint8_t>& alive,
             std::vector<std::uint32_t>* out) {
     out->clear();
-    if (mark_.size() < groups.size()) mark_.resize(groups.size(), 0);
+    if (mark_.size() < alive.size()) mark_.resize(alive.size(), 0);
     const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
     const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
     const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
@@ -296,7 +296,7 @@ class GroupTiles {
         ++stamp_;
         std::size_t kept = 0;
         for (std::uint32_t id : bucket) {
-          if (!groups[id].alive || mark_[id] == stamp_) continue;
+          if (!alive[id] || mark_[id] == stamp_) continue;
           mark_[id] = stamp_;
           bucket[kept++] = id;
         }
@@ -357,8 +357,18 @@ bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
   return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
 }
 
+// False when the segments' bounding boxes, one grown by `gap`, are apart:
+// then no end of one is within `gap` of the other (a cheap first test).
+bool BoxesWithinGap(const LineSegment& a, const LineSegment& b, double gap) {
+  return std::min(a.x1, a.x2) - gap <= std::max(b.x1, b.x2) &&
+         std::min(b.x1, b.x2) <= std::max(a.x1, a.x2) + gap &&
+         std::min(a.y1, a.y2) - gap <= std::max(b.y1, b.y2) &&
+         std::min(b.y1, b.y2) <= std::max(a.y1, a.y2) + gap;
+}
+
 // True when an end of one segment is within `gap` of the other segment.
 bool EndsWithinGap(const Group& a, const Group& b, double gap) {
+  if (!BoxesWithinGap(a.segment, b.segment, gap)) return false;
   const double gap_sq = gap * gap;
   return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
          SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
@@ -376,11 +386,36 @@ double MergeBudget(const Group& a, const Group& b, const MergeLimits& limits) {
   return std::max(a.cost + b.cost + limits.max_added, limits.noise_factor * (a.noise + b.noise));
 }
 
+// The merged moments of a and b (O(1)); their TLS line is the merge's line.
+PointMoments MergedMoments(const Group& a, const Group& b) {
+  PointMoments moments = a.moments;
+  moments.Merge(b.moments);
+  return moments;
+}
+
+// A lower bound, in O(1), on what merging a and b adds to the summed
+// distance, or infinity when the merge surely breaks the bound or the
+// budget. The merged cells' squared distances to their TLS line sum to
+// S = n * (smallest eigenvalue of their covariance); with every distance at
+// most epsilon, the summed distance is at least S / epsilon, and at least
+// sqrt(S).
+double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits) {
+  const PointMoments moments = MergedMoments(a, b);
+  const double mean_sq = SmallestEigenvalue(moments.Covariance());
+  const double epsilon = limits.epsilon;
+  if (mean_sq > epsilon * epsilon) return std::numeric_limits<double>::infinity();
+  const double sum_sq = mean_sq * static_cast<double>(moments.count());
+  const double cost = std::max(sum_sq / epsilon, std::sqrt(sum_sq));
+  if (cost > MergeBudget(a, b, limits) + kRoundingSlack) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return cost - a.cost - b.cost;
+}
+
 bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, FittedLine* line,
               LineSweep* sweep) {
   const double epsilon = limits.epsilon;
-  PointMoments moments = a.moments;
-  moments.Merge(b.moments);
+  const PointMoments moments = MergedMoments(a, b);
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
@@ -389,62 +424,92 @@ bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, FittedL
          SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
 
+// Moves b's cells into a (the larger vector is kept, so a wall built up
+// piece by piece is copied O(log n) times per cell, not O(n)) and gives a
+// the merged line.
+void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sweep) {
+  a->moments.Merge(b->moments);
+  a->noise += b->noise;
+  if (a->cells.size() < b->cells.size()) a->cells.swap(b->cells);
+  a->cells.insert(a->cells.end(), b->cells.begin(), b->cells.end());
+  SetLine(a, line, sweep);
+  b->alive = false;
+  b->cells = {};
+}
+
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
 // bound holds and each merge adds at most max_added_cost to the summed
 // distance. Pairs are candidates when an end of one is within `gap` of the
-// other segment.
+// other segment. Lazy greedy: a pair is queued under an O(1) lower bound of
+// its added cost (MergeLowerBound) and swept over its cells only when it
+// reaches the top; it is merged then if its exact cost is still the
+// cheapest, else requeued under the exact cost. Pairs that a merge of one of
+// their groups makes stale are thus never swept.
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap) {
   const double epsilon = limits.epsilon;
   struct Candidate {
-    double added;
+    double added;  // a lower bound, or the exact cost when `exact`
     std::uint32_t a, b;
     std::uint32_t version_a, version_b;
     bool operator>(const Candidate& other) const { return added > other.added; }
   };
-  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue;
+  // A min-heap on `added`; the first candidates are heapified at once.
+  std::vector<Candidate> heap;
+  bool heap_ready = false;
+  auto push = [&](const Candidate& c) {
+    heap.push_back(c);
+    if (heap_ready) std::push_heap(heap.begin(), heap.end(), std::greater<Candidate>());
+  };
   std::vector<std::uint32_t> version(groups->size(), 0);
   GroupTiles tiles(width, height, 8);
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
+  std::vector<std::uint8_t> alive(groups->size());
+  for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
   std::vector<std::uint32_t> near;
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::uint32_t stamp = 0;
-  FittedLine line;
-  LineSweep sweep;
-  // Queues every valid merge of g with a group near one of its ends.
+  // Queues every possible merge of g with a group near one of its ends.
   auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
     for (int end = 0; end < 2; ++end) {
-      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, *groups, &near);
+      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, alive, &near);
       for (std::uint32_t h : near) {
-        if (h == g || seen_stamp[h] == stamp || !(*groups)[h].alive) continue;
+        if (h == g || seen_stamp[h] == stamp || !alive[h]) continue;
         if (only_higher_ids && h < g) continue;
         seen_stamp[h] = stamp;
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        if (!TryMerge(a, b, limits, &line, &sweep)) continue;
-        queue.push({sweep.cost - a.cost - b.cost, g, h, version[g], version[h]});
+        const double bound = MergeLowerBound(a, b, limits);
+        if (bound == std::numeric_limits<double>::infinity()) continue;
+        push({bound, g, h, version[g], version[h]});
       }
     }
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
-  while (!queue.empty()) {
-    const Candidate c = queue.top();
-    queue.pop();
+  std::make_heap(heap.begin(), heap.end(), std::greater<Candidate>());
+  heap_ready = true;
+  FittedLine line;
+  LineSweep sweep;
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
+    Candidate c = heap.back();
+    heap.pop_back();
     Group& a = (*groups)[c.a];
     Group& b = (*groups)[c.b];
-    if (!a.alive || !b.alive || version[c.a] != c.version_a || version[c.b] != c.version_b) {
+    if (!alive[c.a] || !alive[c.b] || version[c.a] != c.version_a || version[c.b] != c.version_b) {
       continue;
     }
     if (!TryMerge(a, b, limits, &line, &sweep)) continue;
-    a.moments.Merge(b.moments);
-    a.noise += b.noise;
-    a.cells.insert(a.cells.end(), b.cells.begin(), b.cells.end());
-    SetLine(&a, line, sweep);
-    b.alive = false;
-    b.cells = {};
+    c.added = sweep.cost - a.cost - b.cost;
+    if (!heap.empty() && c.added > heap.front().added) {
+      push(c);  // no longer the cheapest: wait for its turn
+      continue;
+    }
+    AbsorbGroup(&a, &b, line, sweep);
+    alive[c.b] = 0;
     ++version[c.b];
     ++version[c.a];
     tiles.Add(c.a, a.segment);
