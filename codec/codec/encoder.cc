@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
@@ -73,6 +74,10 @@ constexpr double kGoalFreeIou = 0.952;
 constexpr double kGoalUnknownTurnedFree = 0.019;
 // Share of a stored segment's cells that must be occupied cells.
 constexpr double kMinOnWallShare = 0.75;
+// How much larger (share) a lossy file with wall segments may be than the
+// smallest one without, and still be chosen (0.10: walls as lines are worth
+// a tenth of the file; tiny maps, where they cost more, go without).
+constexpr double kSegmentOverhead = 0.10;
 
 // 4-connected components of the cells where `member` is 1 (two-pass
 // labelling, linear and cache-friendly).
@@ -536,36 +541,51 @@ Status CheckDecodesTo(const EncodedFile& file) {
   return Status::Ok();
 }
 
-// The smallest lossy file that meets the goals: the boldest tuning that
-// does (with or without segments, whichever is smaller), or the exact
-// layers without segments when those are smaller still, so a lossy file is
-// never larger than the plainest lossless one. The goals are checked on the
-// cells each candidate decodes to, computed while encoding; the chosen file
-// is decoded once to confirm them.
+// The lossy file: for the boldest tuning that meets the goals, the file
+// with wall segments when it is at most kSegmentOverhead larger than the
+// smallest file without them (the walls as lines are what lossy files are
+// for: export, DisPL, planning overlays), else that smallest file. Without
+// segments the exactly coded layers also compete, so such a file is never
+// larger than the lossless one. The goals are checked on the cells each
+// candidate decodes to, computed while encoding; the chosen file is decoded
+// once to confirm them.
 StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
   const Labeling free_regions = codec_internal::LabelFree(grid);
-  LINEMAP_ASSIGN_OR_RETURN(EncodedFile best,
+  LINEMAP_ASSIGN_OR_RETURN(EncodedFile plain,
                            EncodeFile(grid, free_regions, options, true, nullptr, mildest));
+  std::optional<EncodedFile> with_segments;
   std::vector<LineSegment> lines;
   if (options.store_segments) {
     LINEMAP_ASSIGN_OR_RETURN(lines, ExtractWallLines(grid, options));
   }
-  for (const LossyTuning& tuning : kLossyTunings) {
+  for (LossyTuning tuning : kLossyTunings) {
+    if (!options.simplify_free_space) {
+      tuning.max_hole_cells = 0;
+      tuning.smoothing_passes = 0;
+    }
     bool met = false;
-    for (bool with_segments : {true, false}) {
-      if (with_segments && !options.store_segments) continue;
+    for (bool segments : {true, false}) {
+      if (segments && !options.store_segments) continue;
       LINEMAP_ASSIGN_OR_RETURN(EncodedFile candidate,
                                EncodeFile(grid, free_regions, options, false,
-                                          with_segments ? &lines : nullptr, tuning));
+                                          segments ? &lines : nullptr, tuning));
       if (!MeetsLossyGoals(grid, free_regions, candidate.decoded_cells)) continue;
       met = true;
-      if (candidate.bytes.size() < best.bytes.size()) best = std::move(candidate);
+      if (segments) {
+        with_segments = std::move(candidate);
+      } else if (candidate.bytes.size() < plain.bytes.size()) {
+        plain = std::move(candidate);
+      }
     }
     if (met) break;
   }
+  const bool segments_pay =
+      with_segments && static_cast<double>(with_segments->bytes.size()) <=
+                           (1.0 + kSegmentOverhead) * static_cast<double>(plain.bytes.size());
+  const EncodedFile& best = segments_pay ? *with_segments : plain;
   LINEMAP_RETURN_IF_ERROR(CheckDecodesTo(best));
-  return std::move(best.bytes);
+  return best.bytes;
 }
 
 }  // namespace

@@ -40,6 +40,14 @@ struct EncodeOptions {
   // Store the room-border chains of SegmentMap() (ROOM), filled as free
   // space before the FREE plane, which is then coded against them.
   bool store_room_chains = false;
+  // Lossy mode: also fill small unknown holes in the free space and smooth
+  // the free/unknown boundary (a 3x3 majority rule). Files get smaller (about
+  // 10 % at the median of ../shared/maps), but a planner that treats unknown
+  // cells as obstacles (plan.h does) sees obstacles move by a cell, which
+  // changes plans through narrow passages. Off by default: apart from free
+  // specks of a few cells and the cells under wall segments, the lossy decode
+  // then keeps free space exactly, and plans on it match the original's.
+  bool simplify_free_space = false;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
   // linemap extractor tolerance in cells (default 1.0); see lines.h.

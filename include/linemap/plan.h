@@ -58,8 +58,10 @@ struct PlanOptions {
   int max_extra_nodes = 2;
   // Ranking: fewest moves first (the paper's criterion), except that a
   // trajectory longer than (1 + this) x the shortest one found ranks after
-  // every trajectory that is not. 0.05 = 5 %. Default 0.05.
-  double max_length_excess = 0.05;
+  // every trajectory that is not. 0.01 = 1 %. Default 0.01: fewer turns win
+  // only near-ties, so the best trajectory is (nearly) the shortest found
+  // and small map changes cannot swap it for a much longer one.
+  double max_length_excess = 0.01;
   // Safety valves for pathological maps; generation stops at either.
   std::size_t max_expansions = 20000;  // nodes taken from the queue. Default 20000.
   std::size_t max_trajectories = 32;   // trajectories kept. Default 32.
@@ -192,7 +194,7 @@ struct MoveTemplate {
 struct GenerationOptions {
   double d_min_cells = 0.0;  // see PlanOptions::d_min_m, in cells
   int max_extra_nodes = 2;
-  double max_length_excess = 0.05;
+  double max_length_excess = 0.01;
   std::size_t max_expansions = 20000;
   std::size_t max_trajectories = 32;
 };

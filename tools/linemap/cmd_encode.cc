@@ -30,6 +30,9 @@ const CommandSpec kEncodeSpec = {
         {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
         {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
         {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
+        {"--simplify-free", "",
+         "lossy: also fill small unknown holes and smooth the free/unknown boundary (smaller files; "
+         "plans through narrow passages may change)"},
         {"--json", "", "print one JSON object instead of text"},
     }),
     1,
@@ -43,6 +46,7 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   options.lossless = args.Has("--lossless");
   options.store_room_chains = args.Has("--rooms");
   if (args.Has("--no-segments")) options.store_segments = false;
+  options.simplify_free_space = args.Has("--simplify-free");
   if (std::optional<std::string> method = args.Get("--method")) {
     if (*method == "linemap") {
       options.method = LineMethod::kLinemap;

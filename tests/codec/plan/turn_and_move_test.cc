@@ -112,13 +112,14 @@ void ExpectAllSafe(const Planned& p, CellIndex start, CellIndex goal) {
     }
     EXPECT_NEAR(t.length_cells, length, 1e-9);
   }
-  // Best first: fewest moves, then shortest, among those within 5 % of the
-  // shortest; the longer ones after them, in the same order.
+  // Best first: fewest moves, then shortest, among those within
+  // max_length_excess of the shortest; the longer ones after them, in the
+  // same order.
   double shortest = 1e300;
   for (const CellTrajectory& t : p.trajectories) shortest = std::min(shortest, t.length_cells);
+  const double too_long = (1.0 + GenerationOptions{}.max_length_excess) * shortest + 1e-9;
   const auto rank = [&](const CellTrajectory& t) {
-    return std::make_tuple(t.length_cells > 1.05 * shortest + 1e-9, t.waypoints.size(),
-                           t.length_cells);
+    return std::make_tuple(t.length_cells > too_long, t.waypoints.size(), t.length_cells);
   };
   for (std::size_t i = 1; i < p.trajectories.size(); ++i) {
     EXPECT_LE(rank(p.trajectories[i - 1]), rank(p.trajectories[i]));
