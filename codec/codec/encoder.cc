@@ -343,15 +343,18 @@ LatticeSegment ToLattice(const LineSegment& line, int width, int height) {
 }
 
 // True when the segment's cells stay on the walls: each within one cell of
-// an occupied cell of the map, and at least `min_on_wall_share` of them on
-// an occupied cell the decoder will draw anyway.
+// an occupied cell of the map, at least `min_on_wall_share` of them on an
+// occupied cell the decoder will draw anyway, and (unless `may_cover_free`)
+// none on a free cell of the map, so that the free space a planner sees is
+// kept.
 bool FollowsWalls(const Grid& grid, const std::vector<std::uint8_t>& occupied,
-                  const LatticeSegment& s, double min_on_wall_share) {
+                  const LatticeSegment& s, double min_on_wall_share, bool may_cover_free) {
   std::size_t cells = 0, on_wall = 0;
   bool near = true;
   RasterizeSegment(s.a, s.b, [&](int c, int r) {
     ++cells;
     on_wall += occupied[grid.Index(c, r)];
+    if (!may_cover_free && grid.at(c, r) == Cell::kFree) near = false;
     bool any = false;
     for (int dr = -1; dr <= 1 && !any; ++dr) {
       for (int dc = -1; dc <= 1 && !any; ++dc) {
@@ -393,7 +396,10 @@ std::vector<LatticeSegment> WallSegments(const Grid& grid, const std::vector<std
     const LatticeSegment s = ToLattice(line, grid.width(), grid.height());
     const int cells = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row)) + 1;
     if (cells < options.min_segment_cells) continue;
-    if (FollowsWalls(grid, occupied, s, exact ? 1.0 : kMinOnWallShare)) segments.push_back(s);
+    if (FollowsWalls(grid, occupied, s, exact ? 1.0 : kMinOnWallShare,
+                     options.simplify_free_space)) {
+      segments.push_back(s);
+    }
   }
   CanonicalizeSegments(&segments);
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());

@@ -132,6 +132,7 @@ struct Args {
   int pairs = 100;
   unsigned seed = 1;
   int crop_w = 0, crop_h = 0;
+  bool verbose = false;  // round trip: print the pairs that disagree
   PlanOptions options;
   std::vector<std::string> maps;
 };
@@ -140,7 +141,9 @@ bool ParseArgs(int argc, char** argv, Args* a) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
-    if (arg == "--pairs" && has_value) {
+    if (arg == "--verbose") {
+      a->verbose = true;
+    } else if (arg == "--pairs" && has_value) {
       a->pairs = std::atoi(argv[++i]);
     } else if (arg == "--seed" && has_value) {
       a->seed = static_cast<unsigned>(std::atoi(argv[++i]));
@@ -315,6 +318,10 @@ int BenchRoundTrip(const std::string& original_path, const std::string& decoded_
     found_original += a->found();
     found_decoded += b->found();
     agree += a->found() == b->found();
+    if (args.verbose && a->found() != b->found()) {
+      std::fprintf(stderr, "%s: (%d,%d) -> (%d,%d): found %d on the original, %d decoded\n",
+                   original_path.c_str(), s.col, s.row, g.col, g.row, a->found(), b->found());
+    }
     // The same pair on the two safe zones by A*: how much of a difference
     // is the map's, not the planner's.
     const AStarPath ra = AStar(zone, s, g);
