@@ -12,6 +12,7 @@
 #include "codec/codec/draco_segments.h"
 #include "format/container.h"
 #include "format/deflate.h"
+#include "linemap/labeling.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
@@ -183,6 +184,59 @@ TEST(CodecTest, LossyIsNeverLargerThanLosslessOnBundledMaps) {
               1.10 * static_cast<double>(lossy_bytes->size()))
         << path;
   }
+}
+
+// By default the lossy decode keeps the free space a planner sees: no cell
+// turns free, and every free cell of a free region of 24+ cells (the largest
+// speck the boldest tuning drops) stays free. Checked independently of the
+// encoder, with the paper's labelling.
+void ExpectFreeSpaceKept(const std::string& path) {
+  auto grid = LoadRosMap(path);
+  ASSERT_TRUE(grid.ok()) << path;
+  auto bytes = EncodeLmap(*grid, EncodeOptions());
+  ASSERT_TRUE(bytes.ok()) << path;
+  auto decoded = DecodeLmap(*bytes);
+  ASSERT_TRUE(decoded.ok()) << path;
+  BinaryMask free(grid->width(), grid->height());
+  for (std::size_t i = 0; i < free.bits.size(); ++i) {
+    free.bits[i] = grid->cells()[i] == Cell::kFree;
+  }
+  const Labeling regions = LabelComponents(free, Connectivity::kFour);
+  std::size_t turned_free = 0, lost = 0;
+  for (std::size_t i = 0; i < free.bits.size(); ++i) {
+    const bool was_free = free.bits[i] != 0;
+    const bool is_free = decoded->cells()[i] == Cell::kFree;
+    turned_free += is_free && !was_free;
+    lost += was_free && !is_free && regions.components[regions.labels[i] - 1].cell_count >= 24;
+  }
+  EXPECT_EQ(turned_free, 0u) << path;
+  EXPECT_EQ(lost, 0u) << path;
+}
+
+TEST(CodecTest, LossyKeepsFreeSpaceOnBundledMaps) {
+  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
+  ASSERT_FALSE(maps.empty());
+  for (const std::string& path : maps) ExpectFreeSpaceKept(path);
+}
+
+TEST(CodecTest, SimplifyFreeSpaceChangesFreeCellsOnARaggedMap) {
+  // The option is what trades the free space for size: on a scanned map it
+  // must actually move the free boundary.
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/strands/kth/map.yaml");
+  ASSERT_TRUE(grid.ok());
+  EncodeOptions simplify;
+  simplify.simplify_free_space = true;
+  auto plain = EncodeLmap(*grid, EncodeOptions());
+  auto simplified = EncodeLmap(*grid, simplify);
+  ASSERT_TRUE(plain.ok() && simplified.ok());
+  EXPECT_LT(simplified->size(), plain->size());
+  auto decoded = DecodeLmap(*simplified);
+  ASSERT_TRUE(decoded.ok());
+  std::size_t turned_free = 0;
+  for (std::size_t i = 0; i < grid->size(); ++i) {
+    turned_free += decoded->cells()[i] == Cell::kFree && grid->cells()[i] != Cell::kFree;
+  }
+  EXPECT_GT(turned_free, 0u);
 }
 
 TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
