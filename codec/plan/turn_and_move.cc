@@ -25,6 +25,8 @@
 //    are straightened greedily and always added as alternatives: they are
 //    the only trajectories when the queue finds nothing (possible with a
 //    large D_min), so a reachable goal always yields a trajectory;
+//  - so is the Euclidean-shortest 8-connected path (octile A*): the wave
+//    counts steps, and a route with more steps can be shorter in metres;
 //  - every trajectory is tightened: waypoints that a direct safe move
 //    (<= D_max) can skip are dropped, and inner waypoints slide to shorten
 //    their two moves;
@@ -33,8 +35,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
+#include <queue>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "linemap/plan.h"
@@ -280,11 +285,80 @@ std::vector<CellTrajectory> Generator::Run() {
   return found;
 }
 
+// A cell path (start first, consecutive cells 8-adjacent) straightened
+// greedily: from each waypoint, the farthest path cell reachable by a safe
+// straight move no longer than D_max, before the first one that is not.
+CellTrajectory StraightenPath(const SafeZone& zone, const std::vector<CellIndex>& path,
+                              double d_max_cells) {
+  CellTrajectory t;
+  t.straightened = true;
+  t.waypoints.push_back(path.front());
+  const auto fits = [&](std::size_t i, std::size_t j) {
+    return Length(path[j].col - path[i].col, path[j].row - path[i].row) <= d_max_cells + 1e-9 &&
+           SegmentIsSafe(zone, path[i], path[j]);
+  };
+  std::size_t i = 0;
+  while (i + 1 < path.size()) {
+    std::size_t j = i + 1;
+    while (j + 1 < path.size() && fits(i, j + 1)) ++j;
+    t.length_cells += Length(path[j].col - path[i].col, path[j].row - path[i].row);
+    t.waypoints.push_back(path[j]);
+    i = j;
+  }
+  return t;
+}
+
+// The Euclidean-shortest 8-connected path (octile costs: 1 and sqrt 2; A*
+// with the octile heuristic; SafeZone::CanStep steps), or an empty path. The
+// Lee wave counts a diagonal step as 1, so the region's paths are shortest
+// in steps, and around obstacles a route with more steps can be shorter in
+// metres; this one covers that case.
+std::vector<CellIndex> OctileShortestPath(const SafeZone& zone, CellIndex start, CellIndex goal) {
+  const int w = zone.width;
+  const auto at = [w](int c, int r) { return static_cast<std::size_t>(r) * w + c; };
+  const auto heuristic = [&](int c, int r) {
+    const double dx = std::abs(c - goal.col), dy = std::abs(r - goal.row);
+    return std::max(dx, dy) + (std::numbers::sqrt2 - 1) * std::min(dx, dy);
+  };
+  std::vector<double> cost(zone.safe.size(), std::numeric_limits<double>::infinity());
+  std::vector<std::int32_t> parent(zone.safe.size(), -1);
+  using Item = std::pair<double, std::size_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  cost[at(start.col, start.row)] = 0;
+  open.push({heuristic(start.col, start.row), at(start.col, start.row)});
+  const std::size_t target = at(goal.col, goal.row);
+  while (!open.empty()) {
+    const auto [key, i] = open.top();
+    open.pop();
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    if (key > cost[i] + heuristic(c, r) + 1e-9) continue;  // stale entry
+    if (i == target) break;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if ((dx == 0 && dy == 0) || !zone.CanStep(c, r, dx, dy)) continue;
+        const std::size_t j = at(c + dx, r + dy);
+        const double next = cost[i] + ((dx && dy) ? std::numbers::sqrt2 : 1.0);
+        if (next < cost[j] - 1e-12) {
+          cost[j] = next;
+          parent[j] = static_cast<std::int32_t>(i);
+          open.push({next + heuristic(c + dx, r + dy), j});
+        }
+      }
+    }
+  }
+  std::vector<CellIndex> path;
+  if (!std::isfinite(cost[target])) return path;
+  for (std::int64_t i = static_cast<std::int64_t>(target); i >= 0; i = parent[i]) {
+    path.push_back({static_cast<int>(i % w), static_cast<int>(i / w)});
+  }
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
 // One shortest path of the region (goal back to start by index steps; at a
 // choice, the first neighbour in row order, bottom-up or top-down as asked,
 // so the two calls give mirror-image paths in symmetric rooms), then
-// straightened: from each waypoint, the farthest path cell reachable by a
-// safe straight move no longer than D_max, before the first one that is not.
+// straightened (StraightenPath).
 CellTrajectory Straightened(const SafeZone& zone, const LeeWave& wave,
                             const TrajectoryRegion& region, CellIndex goal, bool top_down,
                             double d_max_cells) {
@@ -306,22 +380,7 @@ CellTrajectory Straightened(const SafeZone& zone, const LeeWave& wave,
     path.push_back(next);
   }
   std::reverse(path.begin(), path.end());
-  CellTrajectory t;
-  t.straightened = true;
-  t.waypoints.push_back(path.front());
-  const auto fits = [&](std::size_t i, std::size_t j) {
-    return Length(path[j].col - path[i].col, path[j].row - path[i].row) <= d_max_cells + 1e-9 &&
-           SegmentIsSafe(zone, path[i], path[j]);
-  };
-  std::size_t i = 0;
-  while (i + 1 < path.size()) {
-    std::size_t j = i + 1;
-    while (j + 1 < path.size() && fits(i, j + 1)) ++j;
-    t.length_cells += Length(path[j].col - path[i].col, path[j].row - path[i].row);
-    t.waypoints.push_back(path[j]);
-    i = j;
-  }
-  return t;
+  return StraightenPath(zone, path, d_max_cells);
 }
 
 // Drops waypoints that a direct safe move no longer than D_max can skip
@@ -547,6 +606,8 @@ std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const Lee
         Straightened(zone, wave, region, goal, top_down, moves.d_max_cells);
     if (!straightened.waypoints.empty()) found.push_back(std::move(straightened));
   }
+  const std::vector<CellIndex> octile = OctileShortestPath(zone, start, goal);
+  if (octile.size() >= 2) found.push_back(StraightenPath(zone, octile, moves.d_max_cells));
   std::set<std::vector<std::pair<int, int>>> seen;
   std::vector<CellTrajectory> shortened;
   for (const CellTrajectory& t : found) {
