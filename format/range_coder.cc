@@ -1,9 +1,6 @@
 #include "format/range_coder.h"
 
 namespace linemap {
-namespace {
-constexpr std::uint32_t kTopValue = 1u << 24;
-}  // namespace
 
 void RangeEncoder::ShiftLow() {
   if (static_cast<std::uint32_t>(low_) < 0xFF000000u || (low_ >> 32) != 0) {
@@ -17,21 +14,6 @@ void RangeEncoder::ShiftLow() {
   }
   ++cache_size_;
   low_ = (low_ & 0x00FFFFFFu) << 8;
-}
-
-void RangeEncoder::Encode(BitModel* model, int bit) {
-  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
-  if (bit == 0) {
-    range_ = bound;
-  } else {
-    low_ += bound;
-    range_ -= bound;
-  }
-  model->Update(bit);
-  while (range_ < kTopValue) {
-    range_ <<= 8;
-    ShiftLow();
-  }
 }
 
 void RangeEncoder::Finish() {
@@ -55,31 +37,6 @@ void RangeEncoder::Finish() {
 RangeDecoder::RangeDecoder(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {
   valid_start_ = size == 0 || data[size - 1] != 0;  // canonical: no trailing zero byte
   for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
-}
-
-std::uint8_t RangeDecoder::NextByte() {
-  if (pos_ < size_) return data_[pos_++];
-  ++overrun_;
-  return 0;
-}
-
-int RangeDecoder::Decode(BitModel* model) {
-  const std::uint32_t bound = (range_ >> kProbBits) * model->p;
-  int bit;
-  if (code_ < bound) {
-    range_ = bound;
-    bit = 0;
-  } else {
-    range_ -= bound;
-    code_ -= bound;
-    bit = 1;
-  }
-  model->Update(bit);
-  while (range_ < kTopValue) {
-    range_ <<= 8;
-    code_ = (code_ << 8) | NextByte();
-  }
-  return bit;
 }
 
 }  // namespace linemap

@@ -19,6 +19,8 @@ namespace linemap {
 inline constexpr int kProbBits = 16;
 inline constexpr int kAdaptSteps = 5;
 inline constexpr std::uint8_t kAdaptShift[kAdaptSteps + 1] = {1, 2, 3, 4, 4, 5};
+// The coders renormalise (shift a byte) when the range drops below this.
+inline constexpr std::uint32_t kRangeTop = 1u << 24;
 
 struct BitModel {
   std::uint16_t p = 1u << (kProbBits - 1);
@@ -36,7 +38,21 @@ struct BitModel {
 
 class RangeEncoder {
  public:
-  void Encode(BitModel* model, int bit);
+  // Inline: the plane encoders call it once per cell.
+  void Encode(BitModel* model, int bit) {
+    const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+    if (bit == 0) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    model->Update(bit);
+    while (range_ < kRangeTop) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
   // Writes the final bytes; call once, then take bytes().
   void Finish();
   const std::vector<std::uint8_t>& bytes() const { return out_; }
@@ -56,14 +72,36 @@ class RangeEncoder {
 class RangeDecoder {
  public:
   RangeDecoder(const std::uint8_t* data, std::size_t size);
-  int Decode(BitModel* model);
+  // Inline: the plane decoders call it once per cell.
+  int Decode(BitModel* model) {
+    const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+    int bit;
+    if (code_ < bound) {
+      range_ = bound;
+      bit = 0;
+    } else {
+      range_ -= bound;
+      code_ -= bound;
+      bit = 1;
+    }
+    model->Update(bit);
+    while (range_ < kRangeTop) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | NextByte();
+    }
+    return bit;
+  }
   // False when the stream ends in a zero byte (not canonical: corrupt).
   bool valid_start() const { return valid_start_; }
   std::size_t overrun() const { return overrun_; }
   std::size_t consumed() const { return pos_; }
 
  private:
-  std::uint8_t NextByte();
+  std::uint8_t NextByte() {
+    if (pos_ < size_) return data_[pos_++];
+    ++overrun_;
+    return 0;
+  }
   const std::uint8_t* data_;
   std::size_t size_;
   std::size_t pos_ = 0;
