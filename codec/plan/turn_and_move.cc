@@ -313,7 +313,9 @@ CellTrajectory StraightenPath(const SafeZone& zone, const std::vector<CellIndex>
 // Lee wave counts a diagonal step as 1, so the region's paths are shortest
 // in steps, and around obstacles a route with more steps can be shorter in
 // metres; this one covers that case.
-std::vector<CellIndex> OctileShortestPath(const SafeZone& zone, CellIndex start, CellIndex goal) {
+// Paths longer than `max_length` cells (octile) are not searched.
+std::vector<CellIndex> OctileShortestPath(const SafeZone& zone, CellIndex start, CellIndex goal,
+                                          double max_length) {
   const int w = zone.width;
   const auto at = [w](int c, int r) { return static_cast<std::size_t>(r) * w + c; };
   const auto heuristic = [&](int c, int r) {
@@ -332,7 +334,7 @@ std::vector<CellIndex> OctileShortestPath(const SafeZone& zone, CellIndex start,
     open.pop();
     const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
     if (key > cost[i] + heuristic(c, r) + 1e-9) continue;  // stale entry
-    if (i == target) break;
+    if (i == target || key > max_length) break;
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if ((dx == 0 && dy == 0) || !zone.CanStep(c, r, dx, dy)) continue;
@@ -347,7 +349,7 @@ std::vector<CellIndex> OctileShortestPath(const SafeZone& zone, CellIndex start,
     }
   }
   std::vector<CellIndex> path;
-  if (!std::isfinite(cost[target])) return path;
+  if (!(cost[target] <= max_length)) return path;
   for (std::int64_t i = static_cast<std::int64_t>(target); i >= 0; i = parent[i]) {
     path.push_back({static_cast<int>(i % w), static_cast<int>(i / w)});
   }
@@ -606,21 +608,31 @@ std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const Lee
         Straightened(zone, wave, region, goal, top_down, moves.d_max_cells);
     if (!straightened.waypoints.empty()) found.push_back(std::move(straightened));
   }
-  const std::vector<CellIndex> octile = OctileShortestPath(zone, start, goal);
-  if (octile.size() >= 2) found.push_back(StraightenPath(zone, octile, moves.d_max_cells));
   std::set<std::vector<std::pair<int, int>>> seen;
   std::vector<CellTrajectory> shortened;
-  for (const CellTrajectory& t : found) {
+  double shortest = std::numeric_limits<double>::infinity();
+  const auto add_tightened = [&](const CellTrajectory& t) {
     CellTrajectory s = Tighten(zone, t, options.d_min_cells, moves.d_max_cells);
     std::vector<std::pair<int, int>> key;
     for (const CellIndex& c : s.waypoints) key.emplace_back(c.col, c.row);
-    if (seen.insert(key).second) shortened.push_back(std::move(s));
+    if (!seen.insert(key).second) return;
+    shortest = std::min(shortest, s.length_cells);
+    shortened.push_back(std::move(s));
+  };
+  for (const CellTrajectory& t : found) add_tightened(t);
+  // The octile path, when a shorter trajectory may exist (the best is not
+  // already the straight line). A safe polyline of length E rasterises to an
+  // 8-connected path of octile length <= kOctileExcess * E (the largest
+  // octile / Euclidean ratio, 1 / cos 22.5 deg, at 22.5 degrees), so octile
+  // paths longer than that times the shortest so far are not searched.
+  constexpr double kOctileExcess = 1.0824;
+  const double direct = Length(goal.col - start.col, goal.row - start.row);
+  if (shortest > direct * (1.0 + options.max_length_excess)) {
+    const std::vector<CellIndex> octile =
+        OctileShortestPath(zone, start, goal, kOctileExcess * shortest);
+    if (octile.size() >= 2) add_tightened(StraightenPath(zone, octile, moves.d_max_cells));
   }
   found = std::move(shortened);
-  double shortest = 0.0;
-  for (std::size_t i = 0; i < found.size(); ++i) {
-    if (i == 0 || found[i].length_cells < shortest) shortest = found[i].length_cells;
-  }
   const double too_long = shortest * (1.0 + options.max_length_excess) + 1e-9;
   std::stable_sort(
       found.begin(), found.end(), [&](const CellTrajectory& a, const CellTrajectory& b) {
