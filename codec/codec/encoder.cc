@@ -235,8 +235,10 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const Labeling& free_re
   const int w = grid.width();
   const int h = grid.height();
   const std::vector<Cell>& cells = grid.cells();
+  // Holes and smoothing need each free cell's region; the rest does not.
+  const bool reshapes = !exact && (tuning.max_hole_cells > 0 || tuning.smoothing_passes > 0);
   std::vector<std::uint8_t> target(cells.size(), 0);
-  std::vector<std::uint32_t> region(cells.size(), 0);  // free component label, 0 = none
+  std::vector<std::uint32_t> region(reshapes ? cells.size() : 0, 0);  // label, 0 = none
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const std::int32_t label = free_regions.labels[i];
     if (!label) continue;
@@ -244,9 +246,9 @@ std::vector<std::uint8_t> FreeTargetOf(const Grid& grid, const Labeling& free_re
       continue;
     }
     target[i] = 1;
-    region[i] = static_cast<std::uint32_t>(label);
+    if (reshapes) region[i] = static_cast<std::uint32_t>(label);
   }
-  if (exact) return target;
+  if (!reshapes) return target;
   std::size_t free_cells = 0;
   for (std::uint8_t t : target) free_cells += t;
   std::size_t budget =
