@@ -3,17 +3,20 @@
 // Lossy layers, in decoding order:
 //   SEGS  wall segments on the integer lattice: the extractor's lines
 //         (ExtractLines, lines.h) rounded to cell centres, kept when at least
-//         min_segment_cells long and on the walls (FollowsWalls). Occupied
-//         cells within one cell of a segment are then dropped: the segment
-//         recalls them within one cell.
+//         min_segment_cells long and on the walls (FollowsWalls; by default
+//         never over a free cell). Occupied cells within one cell of a
+//         segment are then dropped: the segment recalls them within one cell.
 //   OCCP  the remaining occupied cells, minus isolated occupied specks, with
 //         notches filled and spurs into the unknown left out (SmoothWalls).
-//   FREE  the free cells, with free specks dropped, small enclosed holes
+//   FREE  the free cells, with free specks dropped; with
+//         EncodeOptions::simplify_free_space also small enclosed holes
 //         filled (only when all their free neighbours are one region, so no
 //         two regions are ever joined) and the boundary smoothed
-//         (SmoothFreeBoundary).
-// The lossy encoder tries the tunings of kLossyTunings, boldest first, and
-// keeps the smallest file that decodes within the goals (EncodeLossy).
+//         (SmoothFreeBoundary). Without it the free space a planner sees is
+//         kept: every change above turns an obstacle into another obstacle.
+// The lossy encoder tries the tunings of kLossyTunings, boldest first, with
+// and without segments, and keeps the file of the first tuning that meets
+// the goals (EncodeLossy).
 // Lossless mode codes the layers exactly (kExactLayers), or the lossy
 // layers plus RESD, the exact grid coded against the lossy one (kResidual).
 // ROOM and BLOB chunks are defined by the format; this encoder does not
@@ -198,8 +201,8 @@ void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupi
         const std::size_t i = static_cast<std::size_t>(r) * w + c;
         // Only unknown cells (which need 5 occupied neighbours, so at least
         // one edge neighbour) and occupied cells of the map can change.
-        if (!o[i] && (cells[i] != Cell::kUnknown ||
-                      (!o[i - 1] && !o[i + 1] && !o[i - w] && !o[i + w]))) {
+        if (!o[i] &&
+            (cells[i] != Cell::kUnknown || (!o[i - 1] && !o[i + 1] && !o[i - w] && !o[i + w]))) {
           continue;
         }
         int occ = 0;
@@ -390,7 +393,8 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
 
 // The wall segments to store: the extractor's lines on the lattice, kept
 // when they are long enough and follow the walls.
-std::vector<LatticeSegment> WallSegments(const Grid& grid, const std::vector<std::uint8_t>& occupied,
+std::vector<LatticeSegment> WallSegments(const Grid& grid,
+                                         const std::vector<std::uint8_t>& occupied,
                                          const std::vector<LineSegment>& lines,
                                          const EncodeOptions& options, bool exact) {
   std::vector<LatticeSegment> segments;
@@ -512,7 +516,8 @@ StatusOr<EncodedFile> EncodeFile(const Grid& grid, const Labeling& free_regions,
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (occupied[i]) canvas[i] = Cell::kOccupied;
   }
-  const std::vector<std::uint8_t> free_target = FreeTargetOf(grid, free_regions, occupied, exact, tuning);
+  const std::vector<std::uint8_t> free_target =
+      FreeTargetOf(grid, free_regions, occupied, exact, tuning);
   writer.AddChunk(kFreeChunk, WrapPayload(EncodeFreePlane(free_target, canvas, w, h), false));
   for (std::size_t i = 0; i < canvas.size(); ++i) {
     if (canvas[i] != Cell::kOccupied) canvas[i] = free_target[i] ? Cell::kFree : Cell::kUnknown;
@@ -575,9 +580,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOp
     bool met = false;
     for (bool segments : {true, false}) {
       if (segments && !options.store_segments) continue;
-      LINEMAP_ASSIGN_OR_RETURN(EncodedFile candidate,
-                               EncodeFile(grid, free_regions, options, false,
-                                          segments ? &lines : nullptr, tuning));
+      LINEMAP_ASSIGN_OR_RETURN(
+          EncodedFile candidate,
+          EncodeFile(grid, free_regions, options, false, segments ? &lines : nullptr, tuning));
       if (!MeetsLossyGoals(grid, free_regions, candidate.decoded_cells)) continue;
       met = true;
       if (segments) {

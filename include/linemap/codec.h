@@ -2,9 +2,11 @@
 // format of spec/format.md and decode it back, bit-exactly and without
 // floating point in the decoding path.
 //
-// Lossy mode (default) stores wall segments, room-border chains, furniture
-// blobs, a free-space mask and the occupied cells the geometry misses;
-// lossless mode adds a residual so the decoded grid equals the input.
+// Lossy mode (default) stores wall segments (where they pay), the occupied
+// cells the segments miss and the free-space plane, with room-border chains
+// on request (furniture blobs are defined by the format, not yet written);
+// obstacles stay within one cell and free space is kept. Lossless mode
+// decodes to the input cell for cell.
 #ifndef LINEMAP_CODEC_H_
 #define LINEMAP_CODEC_H_
 
@@ -45,8 +47,9 @@ struct EncodeOptions {
   // 10 % at the median of ../shared/maps), but a planner that treats unknown
   // cells as obstacles (plan.h does) sees obstacles move by a cell, which
   // changes plans through narrow passages. Off by default: apart from free
-  // specks of a few cells and the cells under wall segments, the lossy decode
-  // then keeps free space exactly, and plans on it match the original's.
+  // specks of a few cells the lossy decode then keeps free space exactly
+  // (wall segments never cover a free cell either), and plans on it match
+  // the original's.
   bool simplify_free_space = false;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;

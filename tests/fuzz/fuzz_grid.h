@@ -42,8 +42,7 @@ inline Grid GridFromBytes(const std::uint8_t* data, std::size_t size) {
 inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   EncodeOptions options;
   options.lossless = lossless;
-  options.lossless_method =
-      (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
+  options.lossless_method = (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
   options.store_segments = (flags & 2) != 0;
   options.store_room_chains = (flags & 4) != 0;
   return options;

@@ -342,10 +342,12 @@ int BenchRoundTrip(const std::string& original_path, const std::string& decoded_
     shortest_worst = std::max(shortest_worst, shortest_excess);
     shortest_within += shortest_excess <= 0.03 + 1e-12;
   }
-  std::printf("| %s | %d | %d | %d | %d / %d | %d / %d | %.1f %% | %d / %d | %.1f %% | %d / %d | %.1f %% |\n",
-              original_path.c_str(), args.pairs, found_original, found_decoded, agree,
-              args.pairs, within, both, 100.0 * worst, shortest_within, both,
-              100.0 * shortest_worst, astar_within, astar_both, 100.0 * astar_worst);
+  std::printf(
+      "| %s | %d | %d | %d | %d / %d | %d / %d | %.1f %% | %d / %d | %.1f %% | %d / %d | %.1f %% "
+      "|\n",
+      original_path.c_str(), args.pairs, found_original, found_decoded, agree, args.pairs, within,
+      both, 100.0 * worst, shortest_within, both, 100.0 * shortest_worst, astar_within, astar_both,
+      100.0 * astar_worst);
   std::fflush(stdout);
   return 0;
 }

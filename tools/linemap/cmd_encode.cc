@@ -31,7 +31,8 @@ const CommandSpec kEncodeSpec = {
         {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
         {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
         {"--simplify-free", "",
-         "lossy: also fill small unknown holes and smooth the free/unknown boundary (smaller files; "
+         "lossy: also fill small unknown holes and smooth the free/unknown boundary (smaller "
+         "files; "
          "plans through narrow passages may change)"},
         {"--json", "", "print one JSON object instead of text"},
     }),
