@@ -24,8 +24,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <utility>
 
 #include "codec/codec/chunk_coding.h"
 #include "codec/codec/compare_internal.h"
@@ -562,34 +565,60 @@ Status CheckDecodesTo(const EncodedFile& file) {
 // larger than the lossless one. The goals are checked on the cells each
 // candidate decodes to, computed while encoding; the chosen file is decoded
 // once to confirm them.
+// Runs `task` on a thread of its own when `own_thread` (and the system gives
+// one), else when its result is asked for.
+template <typename Task>
+auto StartTask(bool own_thread, Task task) {
+  if (own_thread) {
+    try {
+      return std::async(std::launch::async, task);
+    } catch (const std::system_error&) {
+      // No thread to be had: run it on the caller's.
+    }
+  }
+  return std::async(std::launch::deferred, task);
+}
+
 StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
   const Labeling free_regions = codec_internal::LabelFree(grid);
-  LINEMAP_ASSIGN_OR_RETURN(EncodedFile plain,
-                           EncodeFile(grid, free_regions, options, true, nullptr, mildest));
-  std::optional<EncodedFile> with_segments;
+  const bool two_threads = options.max_threads >= 2;
+  // The exact file runs beside the line extraction; each tuning's file with
+  // segments runs beside the one without. Every task reads only shared
+  // constants and writes its own result.
+  std::future<StatusOr<EncodedFile>> plain_task = StartTask(
+      two_threads, [&] { return EncodeFile(grid, free_regions, options, true, nullptr, mildest); });
   std::vector<LineSegment> lines;
   if (options.store_segments) {
     LINEMAP_ASSIGN_OR_RETURN(lines, ExtractWallLines(grid, options));
   }
+  LINEMAP_ASSIGN_OR_RETURN(EncodedFile plain, plain_task.get());
+  std::optional<EncodedFile> with_segments;
   for (LossyTuning tuning : kLossyTunings) {
     if (!options.simplify_free_space) {
       tuning.max_hole_cells = 0;
       tuning.smoothing_passes = 0;
     }
-    bool met = false;
-    for (bool segments : {true, false}) {
-      if (segments && !options.store_segments) continue;
-      LINEMAP_ASSIGN_OR_RETURN(
-          EncodedFile candidate,
-          EncodeFile(grid, free_regions, options, false, segments ? &lines : nullptr, tuning));
-      if (!MeetsLossyGoals(grid, free_regions, candidate.decoded_cells)) continue;
-      met = true;
-      if (segments) {
-        with_segments = std::move(candidate);
-      } else if (candidate.bytes.size() < plain.bytes.size()) {
-        plain = std::move(candidate);
-      }
+    // A candidate and whether it meets the goals.
+    const auto candidate = [&](bool segments) -> StatusOr<std::pair<EncodedFile, bool>> {
+      LINEMAP_ASSIGN_OR_RETURN(EncodedFile file, EncodeFile(grid, free_regions, options, false,
+                                                            segments ? &lines : nullptr, tuning));
+      const bool meets = MeetsLossyGoals(grid, free_regions, file.decoded_cells);
+      return std::make_pair(std::move(file), meets);
+    };
+    std::future<StatusOr<std::pair<EncodedFile, bool>>> segments_task;
+    if (options.store_segments) {
+      segments_task = StartTask(two_threads, [&] { return candidate(true); });
+    }
+    LINEMAP_ASSIGN_OR_RETURN(auto without, candidate(false));
+    bool met = without.second;
+    if (without.second && without.first.bytes.size() < plain.bytes.size()) {
+      plain = std::move(without.first);
+    }
+    if (segments_task.valid()) {
+      LINEMAP_ASSIGN_OR_RETURN(auto with, segments_task.get());
+      if (with.second) with_segments = std::move(with.first);
+      met = met || with.second;
     }
     if (met) break;
   }
@@ -611,6 +640,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   }
   if (!(grid.meta.resolution > 0) || !std::isfinite(grid.meta.resolution)) {
     return InvalidArgumentError("grid resolution must be a positive number");
+  }
+  if (options.max_threads < 1) {
+    return InvalidArgumentError("max_threads must be at least 1");
   }
   if (options.min_segment_cells < 1) {
     return InvalidArgumentError("min_segment_cells must be at least 1");

@@ -45,6 +45,7 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   options.lossless_method = (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
   options.store_segments = (flags & 2) != 0;
   options.store_room_chains = (flags & 4) != 0;
+  options.max_threads = 1;  // a thread per execution would only slow fuzzing
   return options;
 }
 

@@ -142,6 +142,28 @@ TEST(CodecTest, EncodingIsDeterministic) {
   }
 }
 
+// The candidates coded on a second thread give the same bytes as coding all
+// on the calling thread.
+TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
+  for (const std::string& path : testing::FindYamlFiles(testing::BundledMapsDir())) {
+    auto grid = LoadRosMap(path);
+    ASSERT_TRUE(grid.ok()) << path;
+    EncodeOptions one, two;
+    one.max_threads = 1;
+    two.max_threads = 2;
+    auto a = EncodeLmap(*grid, one);
+    auto b = EncodeLmap(*grid, two);
+    ASSERT_TRUE(a.ok() && b.ok()) << path;
+    EXPECT_EQ(*a, *b) << path;
+  }
+  EncodeOptions none;
+  none.max_threads = 0;
+  auto bad = EncodeLmap(Grid(4, 4, Cell::kFree), none);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(bad.status().message().find("max_threads"), std::string::npos);
+}
+
 // The lossy goals, on the bundled maps.
 TEST(CodecTest, LossyGoalsOnBundledMaps) {
   const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
