@@ -401,14 +401,32 @@ std::vector<LatticeSegment> WallSegments(const Grid& grid,
                                          const std::vector<LineSegment>& lines,
                                          const EncodeOptions& options, bool exact) {
   std::vector<LatticeSegment> segments;
+  const double on_wall_share = exact ? 1.0 : kMinOnWallShare;
+  const auto keep = [&](const LatticeSegment& s) {
+    const int cells = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row)) + 1;
+    if (cells < options.min_segment_cells) return false;
+    if (!FollowsWalls(grid, occupied, s, on_wall_share, options.simplify_free_space)) return false;
+    segments.push_back(s);
+    return true;
+  };
   for (const LineSegment& line : lines) {
     const LatticeSegment s = ToLattice(line, grid.width(), grid.height());
-    const int cells = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row)) + 1;
-    if (cells < options.min_segment_cells) continue;
-    if (FollowsWalls(grid, occupied, s, exact ? 1.0 : kMinOnWallShare,
-                     options.simplify_free_space)) {
-      segments.push_back(s);
-    }
+    if (keep(s) || options.simplify_free_space) continue;
+    // A segment that crosses free cells: its runs of raster cells between
+    // them, each as a segment of its own.
+    std::vector<CellIndex> run;
+    const auto flush = [&] {
+      if (run.size() >= 2) keep(LatticeSegment{run.front(), run.back()});
+      run.clear();
+    };
+    RasterizeSegment(s.a, s.b, [&](int c, int r) {
+      if (grid.at(c, r) == Cell::kFree) {
+        flush();
+      } else {
+        run.push_back({c, r});
+      }
+    });
+    flush();
   }
   CanonicalizeSegments(&segments);
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
