@@ -32,7 +32,7 @@ Labeling LabelFree(const Grid& grid) {
   return LabelComponents(free, Connectivity::kFour);
 }
 
-GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
+GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
                             const Grid& decoded) {
   GridComparison out;
   out.same_geometry = original.width() == decoded.width() &&
@@ -42,7 +42,7 @@ GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
   if (original.width() != decoded.width() || original.height() != decoded.height()) return out;
   out.cells = original.size();
   std::size_t occ_orig = 0, occ_recalled = 0, occ_dec = 0, occ_precise = 0;
-  std::size_t free_both = 0, free_any = 0, free_orig = 0;
+  std::size_t free_both = 0, free_any = 0, free_orig = 0, free_only_decoded = 0;
   for (int r = 0; r < original.height(); ++r) {
     for (int c = 0; c < original.width(); ++c) {
       const Cell a = original.at(c, r);
@@ -61,6 +61,7 @@ GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
       free_orig += fa;
       free_both += fa && fb;
       free_any += fa || fb;
+      free_only_decoded += fb && !fa;
       out.unknown_turned_free += a == Cell::kUnknown && fb;
     }
   }
@@ -73,8 +74,12 @@ GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
     out.unknown_turned_free_share = 1.0;
   }
   // Leaks: original regions of kLeakRegionCells+ cells that share a decoded
-  // free component.
-  const Labeling& orig = original_free;
+  // free component. When every decoded free cell is free in the original,
+  // each decoded component lies inside one original component: no leaks,
+  // and no labelling needed.
+  if (free_only_decoded == 0) return out;
+  const Labeling own_labels = original_free ? Labeling() : LabelFree(original);
+  const Labeling& orig = original_free ? *original_free : own_labels;
   const Labeling dec = LabelFree(decoded);
   std::vector<std::pair<std::int32_t, std::int32_t>> pairs;  // (decoded, original)
   for (std::size_t i = 0; i < orig.labels.size(); ++i) {
@@ -96,7 +101,7 @@ GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
 }  // namespace codec_internal
 
 GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
-  return codec_internal::CompareGrids(original, codec_internal::LabelFree(original), decoded);
+  return codec_internal::CompareGrids(original, nullptr, decoded);
 }
 
 }  // namespace linemap

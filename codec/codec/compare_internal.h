@@ -13,8 +13,9 @@ namespace linemap::codec_internal {
 // cache-friendly on maps of any size).
 Labeling LabelFree(const Grid& grid);
 
-// CompareGrids(original, decoded) with original_free = LabelFree(original).
-GridComparison CompareGrids(const Grid& original, const Labeling& original_free,
+// CompareGrids(original, decoded); `original_free` is LabelFree(original)
+// when the caller has it, else null (it is then made when needed).
+GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
                             const Grid& decoded);
 
 }  // namespace linemap::codec_internal

@@ -555,7 +555,7 @@ bool MeetsLossyGoals(const Grid& grid, const Labeling& free_regions,
                      const std::vector<Cell>& decoded_cells) {
   Grid decoded(grid.width(), grid.height(), Cell::kUnknown);
   decoded.mutable_cells() = decoded_cells;
-  const GridComparison m = codec_internal::CompareGrids(grid, free_regions, decoded);
+  const GridComparison m = codec_internal::CompareGrids(grid, &free_regions, decoded);
   const bool has_occupied =
       std::find(grid.cells().begin(), grid.cells().end(), Cell::kOccupied) != grid.cells().end();
   const bool has_free = !free_regions.components.empty();

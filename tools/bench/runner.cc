@@ -209,9 +209,10 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     const double mcells = side * side;
     progress(std::to_string(side * side) + " Mcells");
     const Grid grid = GenerateOfficeMap(1024 * side);
-    // At least 3 runs at every size, so that each row is a median of warm
-    // runs (the first run of a process pays for fresh memory).
-    const int runs = std::max(3, RepeatsFor(grid.size(), repeats));
+    // At least 5 runs at every size, so that each row is a median of warm
+    // runs (the first run of a process pays for fresh memory) and one slow
+    // run on a shared machine does not move it.
+    const int runs = std::max(5, RepeatsFor(grid.size(), repeats));
     ScalingRow row;
     row.mcells = mcells;
     row.repeats = runs;
