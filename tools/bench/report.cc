@@ -118,7 +118,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
   tables.push_back(
       {"Speed and memory",
        "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
-       "resident memory the operation adds, in MB, measured once in a forked child.",
+       "resident memory the operation adds, in MB, measured once in a forked child; "
+       "Mcells/s = cells / CPU time.",
        ColumnsTable(results, {{key::kRepeats, "runs"},
                               {key::kPngEncodeMs, "PNG enc ms", 1},
                               {key::kPngDecodeMs, "PNG dec ms", 1},
@@ -127,7 +128,11 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kLmapEncodeMs, "lmap enc ms", 1},
                               {key::kLmapDecodeMs, "lmap dec ms", 1},
                               {key::kLmapEncodePeakMb, "lmap enc MB", 1},
-                              {key::kLmapDecodePeakMb, "lmap dec MB", 1}})});
+                              {key::kLmapDecodePeakMb, "lmap dec MB", 1},
+                              {key::kPngEncodeMcellsPerS, "PNG enc Mcells/s", 1},
+                              {key::kPngDecodeMcellsPerS, "PNG dec Mcells/s", 1},
+                              {key::kLmapEncodeMcellsPerS, "lmap enc Mcells/s", 1},
+                              {key::kLmapDecodeMcellsPerS, "lmap dec Mcells/s", 1}})});
   tables.push_back(
       {"Fidelity of lossy .lmap",
        "linemap eval of the lossy decode against the map: obstacle recall and precision "

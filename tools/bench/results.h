@@ -34,6 +34,11 @@ inline constexpr const char* kPngEncodePeakMb = "png_encode_peak_mb";
 inline constexpr const char* kPngDecodePeakMb = "png_decode_peak_mb";
 inline constexpr const char* kLmapEncodeMs = "lmap_encode_ms";
 inline constexpr const char* kLmapDecodeMs = "lmap_decode_ms";
+// Throughput, Mcells per CPU second, from the times above.
+inline constexpr const char* kPngEncodeMcellsPerS = "png_encode_mcells_per_s";
+inline constexpr const char* kPngDecodeMcellsPerS = "png_decode_mcells_per_s";
+inline constexpr const char* kLmapEncodeMcellsPerS = "lmap_encode_mcells_per_s";
+inline constexpr const char* kLmapDecodeMcellsPerS = "lmap_decode_mcells_per_s";
 inline constexpr const char* kLmapEncodePeakMb = "lmap_encode_peak_mb";
 inline constexpr const char* kLmapDecodePeakMb = "lmap_decode_peak_mb";
 inline constexpr const char* kRepeats = "timing_repeats";

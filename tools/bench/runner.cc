@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
+#include <utility>
 
 #include "format/file_io.h"
 #include "format/image.h"
@@ -163,6 +165,21 @@ void AddOpenCvFigures(const Grid& grid, MapResult* result) {
 
 }  // namespace
 
+// Mcells per CPU second for every time measured: cells / 1e6 / (ms / 1e3).
+void AddThroughput(MapResult* result) {
+  const std::optional<double> cells = result->Get(key::kCells);
+  if (!cells) return;
+  const std::pair<const char*, const char*> pairs[] = {
+      {key::kPngEncodeMs, key::kPngEncodeMcellsPerS},
+      {key::kPngDecodeMs, key::kPngDecodeMcellsPerS},
+      {key::kLmapEncodeMs, key::kLmapEncodeMcellsPerS},
+      {key::kLmapDecodeMs, key::kLmapDecodeMcellsPerS}};
+  for (const auto& [ms_key, rate_key] : pairs) {
+    const std::optional<double> ms = result->Get(ms_key);
+    if (ms && *ms > 0) result->figures[rate_key] = *cells / 1e3 / *ms;
+  }
+}
+
 MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
                      const BenchOptions& options) {
   MapResult result;
@@ -198,6 +215,7 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   AddOpenCvFigures(grid, &result);
   Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
   if (!lmap.ok()) Note(&result, ".lmap", lmap);
+  AddThroughput(&result);
   return result;
 }
 
