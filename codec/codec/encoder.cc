@@ -4,7 +4,8 @@
 //   SEGS  wall segments on the integer lattice: the extractor's lines
 //         (ExtractLines, lines.h) rounded to cell centres, kept when at least
 //         min_segment_cells long and on the walls (FollowsWalls; by default
-//         never over a free cell). Occupied cells within one cell of a
+//         never over a free cell: a line crossing free cells is split into
+//         its runs between them). Occupied cells within one cell of a
 //         segment are then dropped: the segment recalls them within one cell.
 //   OCCP  the remaining occupied cells, minus isolated occupied specks, with
 //         notches filled and spurs into the unknown left out (SmoothWalls).
@@ -15,8 +16,8 @@
 //         (SmoothFreeBoundary). Without it the free space a planner sees is
 //         kept: every change above turns an obstacle into another obstacle.
 // The lossy encoder tries the tunings of kLossyTunings, boldest first, with
-// and without segments, and keeps the file of the first tuning that meets
-// the goals (EncodeLossy).
+// and without segments, and keeps for each the first that meets the goals
+// (EncodeLossy).
 // Lossless mode codes the layers exactly (kExactLayers), or the lossy
 // layers plus RESD, the exact grid coded against the lossy one (kResidual).
 // ROOM and BLOB chunks are defined by the format; this encoder does not
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <limits>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -567,22 +569,23 @@ bool MeetsLossyGoals(const Grid& grid, const Labeling& free_regions,
 
 // The file decodes to the cells the goals were checked on: a last check
 // that encoder and decoder agree, so the goals hold for the file itself.
+// The limits are the file's own (it was just made from a grid in memory):
+// the caller's grid may be larger than the decoder's defaults allow.
 Status CheckDecodesTo(const EncodedFile& file) {
-  LINEMAP_ASSIGN_OR_RETURN(Grid decoded, DecodeLmap(file.bytes));
+  constexpr std::uint64_t kNoLimit = std::numeric_limits<std::uint64_t>::max();
+  DecodeLimits own;
+  own.max_cells = std::max<std::uint64_t>(own.max_cells, file.decoded_cells.size());
+  own.max_chunk_bytes = kNoLimit;
+  own.max_inflated_bytes = kNoLimit;
+  own.max_segments = kNoLimit;
+  own.max_chain_length = kNoLimit;
+  LINEMAP_ASSIGN_OR_RETURN(Grid decoded, DecodeLmap(file.bytes, own));
   if (decoded.cells() != file.decoded_cells) {
     return InternalError("lossy encoder and decoder disagree on the decoded grid");
   }
   return Status::Ok();
 }
 
-// The lossy file: for the boldest tuning that meets the goals, the file
-// with wall segments when it is at most kSegmentOverhead larger than the
-// smallest file without them (the walls as lines are what lossy files are
-// for: export, DisPL, planning overlays), else that smallest file. Without
-// segments the exactly coded layers also compete, so such a file is never
-// larger than the lossless one. The goals are checked on the cells each
-// candidate decodes to, computed while encoding; the chosen file is decoded
-// once to confirm them.
 // Runs `task` on a thread of its own when `own_thread` (and the system gives
 // one), else when its result is asked for.
 template <typename Task>
@@ -597,6 +600,14 @@ auto StartTask(bool own_thread, Task task) {
   return std::async(std::launch::deferred, task);
 }
 
+// The lossy file. Files with wall segments and without are searched apart,
+// each from the boldest tuning to the first that meets the goals; without
+// segments the exactly coded layers also compete, so that file is never
+// larger than the lossless one without segments. The file with segments is
+// kept when it is at most kSegmentOverhead larger than the one without (the
+// walls as lines are what lossy files are for: export, DisPL, planning
+// overlays). The goals are checked on the cells each candidate decodes to,
+// computed while encoding; the chosen file is decoded once to confirm them.
 StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOptions& options) {
   const LossyTuning& mildest = kLossyTunings[std::size(kLossyTunings) - 1];
   const Labeling free_regions = codec_internal::LabelFree(grid);
@@ -612,7 +623,10 @@ StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOp
   }
   LINEMAP_ASSIGN_OR_RETURN(EncodedFile plain, plain_task.get());
   std::optional<EncodedFile> with_segments;
+  bool plain_met = false;
+  bool segments_met = !options.store_segments;  // nothing to search
   for (LossyTuning tuning : kLossyTunings) {
+    if (plain_met && segments_met) break;
     if (!options.simplify_free_space) {
       tuning.max_hole_cells = 0;
       tuning.smoothing_passes = 0;
@@ -625,20 +639,21 @@ StatusOr<std::vector<std::uint8_t>> EncodeLossy(const Grid& grid, const EncodeOp
       return std::make_pair(std::move(file), meets);
     };
     std::future<StatusOr<std::pair<EncodedFile, bool>>> segments_task;
-    if (options.store_segments) {
+    if (!segments_met) {
       segments_task = StartTask(two_threads, [&] { return candidate(true); });
     }
-    LINEMAP_ASSIGN_OR_RETURN(auto without, candidate(false));
-    bool met = without.second;
-    if (without.second && without.first.bytes.size() < plain.bytes.size()) {
-      plain = std::move(without.first);
+    if (!plain_met) {
+      LINEMAP_ASSIGN_OR_RETURN(auto without, candidate(false));
+      plain_met = without.second;
+      if (without.second && without.first.bytes.size() < plain.bytes.size()) {
+        plain = std::move(without.first);
+      }
     }
     if (segments_task.valid()) {
       LINEMAP_ASSIGN_OR_RETURN(auto with, segments_task.get());
+      segments_met = with.second;
       if (with.second) with_segments = std::move(with.first);
-      met = met || with.second;
     }
-    if (met) break;
   }
   const bool segments_pay =
       with_segments && static_cast<double>(with_segments->bytes.size()) <=

@@ -621,11 +621,11 @@ std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const Lee
   };
   for (const CellTrajectory& t : found) add_tightened(t);
   // The octile path, when a shorter trajectory may exist (the best is not
-  // already the straight line). A safe polyline of length E rasterises to an
-  // 8-connected path of octile length <= kOctileExcess * E (the largest
-  // octile / Euclidean ratio, 1 / cos 22.5 deg, at 22.5 degrees), so octile
-  // paths longer than that times the shortest so far are not searched.
-  constexpr double kOctileExcess = 1.0824;
+  // already the straight line). A safe polyline of length E has a
+  // 4-connected cell path of length <= sqrt 2 * E, and octile lengths are at
+  // most 4-connected ones, so octile paths longer than sqrt 2 times the
+  // shortest so far cannot lead to a shorter trajectory and are not searched.
+  constexpr double kOctileExcess = std::numbers::sqrt2;
   const double direct = Length(goal.col - start.col, goal.row - start.row);
   if (shortest > direct * (1.0 + options.max_length_excess)) {
     const std::vector<CellIndex> octile =

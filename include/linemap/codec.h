@@ -51,9 +51,10 @@ struct EncodeOptions {
   // (wall segments never cover a free cell either), and plans on it match
   // the original's.
   bool simplify_free_space = false;
-  // Lossy mode codes up to three candidate files and keeps one; with 2 they
-  // are coded on two threads (the calling one and one more), with 1 all on
-  // the calling thread. The bytes are the same either way. Default 2.
+  // Lossy mode codes the exact file and, per tuning tried, a file with and
+  // one without segments, and keeps one; with 2 these are coded two at a
+  // time (the calling thread and one more), with 1 all on the calling
+  // thread. The bytes are the same either way. Default 2.
   int max_threads = 2;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;

@@ -204,15 +204,17 @@ struct GenerationOptions {
 struct CellTrajectory {
   std::vector<CellIndex> waypoints;
   double length_cells = 0.0;
-  // True when it is the region's shortest path straightened greedily (added
-  // to the node queue's results as one more alternative) rather than a
-  // result of the node queue.
+  // True when it is a shortest path straightened greedily (one of the
+  // region's two, or the octile-shortest path of the safe zone; added to the
+  // node queue's results as alternatives) rather than a result of the queue.
   bool straightened = false;
 };
 
-// Every trajectory found, best first: fewest moves, then shortest, except
-// that trajectories more than max_length_excess longer than the shortest
-// found come after all the others. Each
+// Every trajectory found (the node queue's, the region's two shortest paths
+// straightened and, when the best is not the straight line, the octile-
+// shortest path of the safe zone straightened), best first: fewest moves,
+// then shortest, except that trajectories more than max_length_excess
+// longer than the shortest found come after all the others. Each
 // straight move's segment (centre to centre) only crosses safe cells.
 std::vector<CellTrajectory> GenerateTrajectories(const SafeZone& zone, const LeeWave& wave,
                                                  const TrajectoryRegion& region,

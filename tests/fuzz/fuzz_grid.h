@@ -3,7 +3,7 @@
 //
 // Input layout: byte 0 -> width (1..64), byte 1 -> height (1..64), byte 2 ->
 // encoder options (bit 0: residual lossless method, bit 1: store segments,
-// bit 2: store room chains), then one byte per cell (value % 3 is the Cell,
+// bit 2: store room chains, bit 3: two threads), then one byte per cell (value % 3 is the Cell,
 // row 0 first); cells past the end of the input are unknown. The height is
 // cut so that the grid holds at most 4 cells per input cell byte plus 64:
 // short inputs (which libFuzzer prefers) stay small grids, so executions
@@ -45,12 +45,13 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   options.lossless_method = (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
   options.store_segments = (flags & 2) != 0;
   options.store_room_chains = (flags & 4) != 0;
-  options.max_threads = 1;  // a thread per execution would only slow fuzzing
+  options.max_threads = (flags & 8) ? 2 : 1;
   return options;
 }
 
 [[noreturn]] inline void Fail(const char* target, const char* what, const Status& status = {}) {
-  std::fprintf(stderr, "%s: %s %s\n", target, what, status.ToString().c_str());
+  std::fprintf(stderr, "%s: %s%s%s\n", target, what, status.ok() ? "" : ": ",
+               status.ok() ? "" : status.ToString().c_str());
   std::abort();
 }
 

@@ -163,8 +163,6 @@ void AddOpenCvFigures(const Grid& grid, MapResult* result) {
   }
 }
 
-}  // namespace
-
 // Mcells per CPU second for every time measured: cells / 1e6 / (ms / 1e3).
 void AddThroughput(MapResult* result) {
   const std::optional<double> cells = result->Get(key::kCells);
@@ -179,6 +177,8 @@ void AddThroughput(MapResult* result) {
     if (ms && *ms > 0) result->figures[rate_key] = *cells / 1e3 / *ms;
   }
 }
+
+}  // namespace
 
 MapResult MeasureMap(const std::string& name, const std::string& source_path, const Grid& grid,
                      const BenchOptions& options) {

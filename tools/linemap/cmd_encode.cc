@@ -1,4 +1,4 @@
-// linemap encode MAP -o OUT.lmap [--lossless] [--method linemap|rmline]
+// linemap encode MAP -o OUT.lmap [--lossless] [--simplify-free] [--method linemap|rmline]
 //                 [--epsilon E] [--pose X,Y[,YAW]] [--json]
 #include <cstdio>
 #include <future>
@@ -15,7 +15,8 @@ namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
     "encode",
-    "MAP -o OUT.lmap [--lossless] [--method linemap|rmline] [--epsilon E] [--pose X,Y]",
+    "MAP -o OUT.lmap [--lossless] [--simplify-free] [--method linemap|rmline] [--epsilon E] "
+    "[--pose X,Y]",
     "compress a map into an .lmap file",
     "Prints the input cells, the output bytes, the ratio to the smallest PNG\n"
     "(zlib level 9, grey or palette) of the same trinary map, and the time.\n"
@@ -33,9 +34,8 @@ const CommandSpec kEncodeSpec = {
         {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
         {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
         {"--simplify-free", "",
-         "lossy: also fill small unknown holes and smooth the free/unknown boundary (smaller "
-         "files; "
-         "plans through narrow passages may change)"},
+         "lossy: also fill small unknown holes and smooth the free/unknown boundary "
+         "(smaller files; plans through narrow passages may change)"},
         {"--json", "", "print one JSON object instead of text"},
     }),
     1,
