@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 
 #include "linemap/codec.h"
 #include "linemap/grid.h"
@@ -53,6 +54,17 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   std::fprintf(stderr, "%s: %s%s%s\n", target, what, status.ok() ? "" : ": ",
                status.ok() ? "" : status.ToString().c_str());
   std::abort();
+}
+
+// Encodes `grid` (lossy or lossless, options from `flags`) and decodes the
+// bytes; any error aborts, naming `target`. Returns the decoded grid.
+inline Grid EncodeDecodeOrFail(const char* target, const Grid& grid, std::uint8_t flags,
+                               bool lossless) {
+  auto encoded = EncodeLmap(grid, OptionsFromByte(flags, lossless));
+  if (!encoded.ok()) Fail(target, "encode failed", encoded.status());
+  auto decoded = DecodeLmap(*encoded);
+  if (!decoded.ok()) Fail(target, "decode failed", decoded.status());
+  return *std::move(decoded);
 }
 
 }  // namespace linemap::fuzz

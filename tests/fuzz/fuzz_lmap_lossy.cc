@@ -12,12 +12,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace linemap;
   if (size < fuzz::kHeaderBytes) return 0;
   const Grid grid = fuzz::GridFromBytes(data, size);
-  auto encoded = EncodeLmap(grid, fuzz::OptionsFromByte(data[2], /*lossless=*/false));
-  if (!encoded.ok()) fuzz::Fail("lmap_lossy", "lossy encode failed", encoded.status());
-  auto decoded = DecodeLmap(*encoded);
-  if (!decoded.ok()) fuzz::Fail("lmap_lossy", "lossy decode failed", decoded.status());
-  if (decoded->width() != grid.width() || decoded->height() != grid.height() ||
-      !(decoded->meta == grid.meta)) {
+  const Grid decoded = fuzz::EncodeDecodeOrFail("lmap_lossy", grid, data[2], /*lossless=*/false);
+  if (decoded.width() != grid.width() || decoded.height() != grid.height() ||
+      !(decoded.meta == grid.meta)) {
     fuzz::Fail("lmap_lossy", "lossy round trip changed the dimensions or metadata");
   }
   return 0;

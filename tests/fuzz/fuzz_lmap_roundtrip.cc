@@ -14,12 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace linemap;
   if (size < fuzz::kHeaderBytes) return 0;
   const Grid grid = fuzz::GridFromBytes(data, size);
-  auto encoded = EncodeLmap(grid, fuzz::OptionsFromByte(data[2], /*lossless=*/true));
-  if (!encoded.ok()) fuzz::Fail("lmap_roundtrip", "lossless encode failed", encoded.status());
-  auto decoded = DecodeLmap(*encoded);
-  if (!decoded.ok()) fuzz::Fail("lmap_roundtrip", "lossless decode failed", decoded.status());
-  if (decoded->width() != grid.width() || decoded->height() != grid.height() ||
-      decoded->cells() != grid.cells() || !(decoded->meta == grid.meta)) {
+  const Grid decoded = fuzz::EncodeDecodeOrFail("lmap_roundtrip", grid, data[2], /*lossless=*/true);
+  if (decoded.width() != grid.width() || decoded.height() != grid.height() ||
+      decoded.cells() != grid.cells() || !(decoded.meta == grid.meta)) {
     fuzz::Fail("lmap_roundtrip", "lossless round trip changed the grid");
   }
   return 0;
