@@ -249,9 +249,13 @@ StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cell
   return CorruptError(name + ": not a map image (PGM P2/P5 or PNG expected)");
 }
 
+std::string PgmHeader(int width, int height) {
+  return "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " + std::to_string(height) +
+         "\n255\n";
+}
+
 std::string EncodePgm(int width, int height, std::span<const std::uint8_t> grey) {
-  std::string out =
-      "P5\n# CREATOR: linemap\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n";
+  std::string out = PgmHeader(width, height);
   out.append(reinterpret_cast<const char*>(grey.data()), grey.size());
   return out;
 }

@@ -37,6 +37,10 @@ StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::str
 // Chooses the decoder by the file's magic bytes, not its name.
 StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cells);
 
+// The header of a binary 8-bit PGM (P5) of width x height pixels; the
+// pixel bytes (rows top first) follow it.
+std::string PgmHeader(int width, int height);
+
 // A binary 8-bit PGM (P5) of `grey` (width * height bytes, rows top first).
 std::string EncodePgm(int width, int height, std::span<const std::uint8_t> grey);
 

@@ -248,17 +248,20 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
   }
   const MapMetadata meta = SavedMetadata(grid.meta);
   const std::uint8_t grey[3] = {kPgmFree, kPgmOccupied, kPgmUnknown};  // by Cell value
-  std::vector<std::uint8_t> pixels(grid.size());
+  // The PGM is written straight into its file buffer (no pixel copy: the
+  // decoder's peak memory is the grid plus this buffer).
+  std::string pgm = PgmHeader(grid.width(), grid.height());
+  const std::size_t header_bytes = pgm.size();
+  pgm.resize(header_bytes + grid.size());
   for (int row = 0; row < grid.height(); ++row) {
-    const int y = grid.height() - 1 - row;
+    const int y = grid.height() - 1 - row;  // PGM rows run top down, grid rows bottom up
+    char* line = pgm.data() + header_bytes + static_cast<std::size_t>(y) * grid.width();
     for (int col = 0; col < grid.width(); ++col) {
-      pixels[static_cast<std::size_t>(y) * grid.width() + col] =
-          grey[static_cast<int>(grid.at(col, row))];
+      line[col] = static_cast<char>(grey[static_cast<int>(grid.at(col, row))]);
     }
   }
   const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
   const std::string image_name = StemOf(yaml_path) + ".pgm";
-  const std::string pgm = EncodePgm(grid.width(), grid.height(), pixels);
   const std::string yaml = YamlText(image_name, meta);
   return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}});
 }

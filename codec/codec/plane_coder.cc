@@ -26,12 +26,14 @@ class PaddedPlane {
 
 // The 10-cell causal template (spec "Plane template"): W, WW, and the cells
 // at columns -1..+1, -2, +2 of the previous row and -1..+1 two rows back.
+// Reads bit 0 of each byte (the FREE plane keeps more in the others).
 inline unsigned Template10(const PaddedPlane& g, std::size_t i) {
   const std::size_t s = g.stride();
   const std::size_t n = i - s;
   const std::size_t nn = n - s;
-  return g[i - 1] | g[i - 2] << 1 | g[n - 1] << 2 | g[n] << 3 | g[n + 1] << 4 | g[n - 2] << 5 |
-         g[n + 2] << 6 | g[nn] << 7 | g[nn - 1] << 8 | g[nn + 1] << 9;
+  const auto b = [&](std::size_t j) { return g[j] & 1u; };
+  return b(i - 1) | b(i - 2) << 1 | b(n - 1) << 2 | b(n) << 3 | b(n + 1) << 4 | b(n - 2) << 5 |
+         b(n + 2) << 6 | b(nn) << 7 | b(nn - 1) << 8 | b(nn + 1) << 9;
 }
 
 inline bool IsFree(Cell c) { return c == Cell::kFree; }
@@ -46,13 +48,14 @@ Status CheckEnd(const RangeDecoder& dec, std::size_t size, const char* plane) {
   return Status::Ok();
 }
 
-// The canvas's occupied cells as a padded plane.
-PaddedPlane OccupiedPlane(const std::vector<Cell>& canvas, int width, int height) {
+// The canvas's occupied cells as a padded plane, each as `occupied_value`.
+PaddedPlane OccupiedPlane(const std::vector<Cell>& canvas, int width, int height,
+                          std::uint8_t occupied_value) {
   PaddedPlane occ(width, height, 0);
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col, ++cell) {
-      occ[occ.At(col, row)] = IsOccupied(canvas[cell]) ? 1 : 0;
+      occ[occ.At(col, row)] = IsOccupied(canvas[cell]) ? occupied_value : 0;
     }
   }
   return occ;
@@ -67,13 +70,19 @@ inline unsigned OccupiedContext(const PaddedPlane& g, std::size_t i, bool canvas
 }
 constexpr unsigned kOccupiedContexts = 1u << 13;
 
+// The FREE plane holds two bits per cell: bit 0 the free bits coded so far,
+// bit 1 the canvas occupancy (one array rather than two: the decoder's peak
+// memory and the encoder's fresh memory per candidate).
+constexpr std::uint8_t kFreeBit = 1;
+constexpr std::uint8_t kCanvasOccupiedBit = 2;
+
 // FREE context: the template over the free bits, the canvas occupancy at the
 // four neighbours, and whether the canvas cell is free.
-inline unsigned FreeContext(const PaddedPlane& f, const PaddedPlane& occ, std::size_t i,
-                            bool canvas_free) {
-  const std::size_t s = occ.stride();
-  return Template10(f, i) | occ[i - 1] << 10 | occ[i + 1] << 11 | occ[i - s] << 12 |
-         occ[i + s] << 13 | (canvas_free ? 1u : 0u) << 14;
+inline unsigned FreeContext(const PaddedPlane& fo, std::size_t i, bool canvas_free) {
+  const std::size_t s = fo.stride();
+  const auto occ = [&](std::size_t j) { return static_cast<unsigned>(fo[j]) >> 1; };
+  return Template10(fo, i) | occ(i - 1) << 10 | occ(i + 1) << 11 | occ(i - s) << 12 |
+         occ(i + s) << 13 | (canvas_free ? 1u : 0u) << 14;
 }
 constexpr unsigned kFreeContexts = 1u << 15;
 
@@ -82,7 +91,7 @@ constexpr unsigned kFreeContexts = 1u << 15;
 std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& target,
                                               const std::vector<Cell>& canvas, int width,
                                               int height) {
-  PaddedPlane g = OccupiedPlane(canvas, width, height);
+  PaddedPlane g = OccupiedPlane(canvas, width, height, 1);
   std::vector<BitModel> models(kOccupiedContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
@@ -101,7 +110,7 @@ std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& t
 
 Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
-  PaddedPlane g = OccupiedPlane(*canvas, width, height);
+  PaddedPlane g = OccupiedPlane(*canvas, width, height, 1);
   std::vector<BitModel> models(kOccupiedContexts);
   RangeDecoder dec(data, size);
   std::vector<Cell>& cv = *canvas;
@@ -121,18 +130,17 @@ Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width
 
 std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& target,
                                           const std::vector<Cell>& canvas, int width, int height) {
-  const PaddedPlane occ = OccupiedPlane(canvas, width, height);
-  PaddedPlane f(width, height, 0);
+  PaddedPlane fo = OccupiedPlane(canvas, width, height, kCanvasOccupiedBit);
   std::vector<BitModel> models(kFreeContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
     for (int col = 0; col < width; ++col, ++cell) {
       if (IsOccupied(canvas[cell])) continue;
-      const std::size_t i = f.At(col, row);
+      const std::size_t i = fo.At(col, row);
       const int bit = target[cell] ? 1 : 0;
-      enc.Encode(&models[FreeContext(f, occ, i, IsFree(canvas[cell]))], bit);
-      f[i] = static_cast<std::uint8_t>(bit);
+      enc.Encode(&models[FreeContext(fo, i, IsFree(canvas[cell]))], bit);
+      if (bit) fo[i] |= kFreeBit;
     }
   }
   enc.Finish();
@@ -141,8 +149,7 @@ std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& targe
 
 Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
                        std::vector<Cell>* canvas) {
-  const PaddedPlane occ = OccupiedPlane(*canvas, width, height);
-  PaddedPlane f(width, height, 0);
+  PaddedPlane fo = OccupiedPlane(*canvas, width, height, kCanvasOccupiedBit);
   std::vector<BitModel> models(kFreeContexts);
   RangeDecoder dec(data, size);
   std::size_t cell = 0;
@@ -150,9 +157,9 @@ Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, in
     for (int col = 0; col < width; ++col, ++cell) {
       Cell& c = (*canvas)[cell];
       if (IsOccupied(c)) continue;
-      const std::size_t i = f.At(col, row);
-      const int bit = dec.Decode(&models[FreeContext(f, occ, i, IsFree(c))]);
-      f[i] = static_cast<std::uint8_t>(bit);
+      const std::size_t i = fo.At(col, row);
+      const int bit = dec.Decode(&models[FreeContext(fo, i, IsFree(c))]);
+      if (bit) fo[i] |= kFreeBit;
       c = bit ? Cell::kFree : Cell::kUnknown;
     }
   }
