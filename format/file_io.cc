@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -96,7 +97,8 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
 namespace {
 
 // Writes `data` to a new temporary file beside `path` and flushes it.
-StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view data) {
+StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view data,
+                                     Durability durability) {
   if (path.empty()) return InvalidArgumentError("empty output file name");
   if (IsDirectory(path)) {
     return InvalidArgumentError(Quoted(path) + " is a directory; give a file name");
@@ -108,7 +110,7 @@ StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view d
                    ": " + ErrnoText(errno));
   }
   Status status = WriteAll(fd, data, path);
-  if (status.ok() && ::fsync(fd) != 0) {
+  if (status.ok() && durability == Durability::kSynced && ::fsync(fd) != 0) {
     status = IoError("cannot flush " + Quoted(path) + " to disk: " + ErrnoText(errno));
   }
   if (status.ok()) {
@@ -137,13 +139,13 @@ void SyncDirectory(const std::string& dir) {
 
 }  // namespace
 
-Status WriteFilesAtomic(const std::vector<FileToWrite>& files) {
+Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durability) {
   std::vector<std::string> temporaries;
   auto remove_temporaries = [&temporaries](std::size_t from) {
     for (std::size_t i = from; i < temporaries.size(); ++i) ::unlink(temporaries[i].c_str());
   };
   for (const FileToWrite& file : files) {
-    StatusOr<std::string> tmp = WriteTemporary(file.path, file.data);
+    StatusOr<std::string> tmp = WriteTemporary(file.path, file.data, durability);
     if (!tmp.ok()) {
       remove_temporaries(0);
       return tmp.status();
@@ -158,12 +160,20 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files) {
                      ErrnoText(err));
     }
   }
-  for (const FileToWrite& file : files) SyncDirectory(DirectoryOf(file.path));
+  if (durability == Durability::kSynced) {
+    std::vector<std::string> synced;
+    for (const FileToWrite& file : files) {
+      const std::string dir = DirectoryOf(file.path);
+      if (std::find(synced.begin(), synced.end(), dir) != synced.end()) continue;
+      SyncDirectory(dir);
+      synced.push_back(dir);
+    }
+  }
   return Status::Ok();
 }
 
-Status WriteFileAtomic(const std::string& path, std::string_view data) {
-  return WriteFilesAtomic({{path, data}});
+Status WriteFileAtomic(const std::string& path, std::string_view data, Durability durability) {
+  return WriteFilesAtomic({{path, data}}, durability);
 }
 
 }  // namespace linemap

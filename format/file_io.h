@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "linemap/map_io.h"
 #include "linemap/status.h"
 
 namespace linemap {
@@ -19,9 +20,11 @@ namespace linemap {
 StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes);
 
 // Writes `data` to a temporary file in the same directory, flushes it to
-// disk (fsync), then renames it over `path` and syncs the directory. On any
-// failure the temporary file is removed and an existing `path` is untouched.
-Status WriteFileAtomic(const std::string& path, std::string_view data);
+// disk (fsync, unless `durability` is kUnsynced), then renames it over
+// `path` and syncs the directory. On any failure the temporary file is
+// removed and an existing `path` is untouched.
+Status WriteFileAtomic(const std::string& path, std::string_view data,
+                       Durability durability = Durability::kSynced);
 
 struct FileToWrite {
   std::string path;
@@ -31,7 +34,9 @@ struct FileToWrite {
 // As WriteFileAtomic for several files that belong together (a map YAML and
 // its image): every file is written and flushed under a temporary name before
 // the first rename, so a failure while writing leaves all old files intact.
-Status WriteFilesAtomic(const std::vector<FileToWrite>& files);
+// Each directory involved is synced once.
+Status WriteFilesAtomic(const std::vector<FileToWrite>& files,
+                        Durability durability = Durability::kSynced);
 
 // True when `path` names an existing directory.
 bool IsDirectory(const std::string& path);

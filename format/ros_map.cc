@@ -239,7 +239,7 @@ StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options
   return grid;
 }
 
-Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
+Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability durability) {
   if (!IsYamlPath(yaml_path)) {
     return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml");
   }
@@ -263,7 +263,7 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid) {
   const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
   const std::string image_name = StemOf(yaml_path) + ".pgm";
   const std::string yaml = YamlText(image_name, meta);
-  return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}});
+  return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}}, durability);
 }
 
 }  // namespace linemap

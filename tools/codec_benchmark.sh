@@ -3,21 +3,23 @@
 # prints lossy / lossless .lmap sizes against netpbm's PNG-9 of the same
 # trinary map, the lossy quality measures (linemap eval), and the times of
 # `linemap encode` / `linemap decode` against `pnmtopng -compression 9` /
-# `pngtopnm` (best of 3 wall-clock runs), plus the decoder's peak memory.
+# `pngtopnm` (best of 5 wall-clock runs; pngtopnm writes its PGM to a file,
+# as decode does; dec_s is the default decode, which flushes both files to
+# disk, dec_ns the same with --no-sync), plus the decoder's peak memory.
 # Usage: tools/codec_benchmark.sh [MAPS_DIR] [LINEMAP_BINARY]
 set -u
 MAPS=${1:-$(dirname "$0")/../../shared/maps}
 L=${2:-$(dirname "$0")/../build/linemap}
 T=$(mktemp -d)
-best() {  # best-of-3 wall time in seconds of the command "$@"
+best() {  # best-of-5 wall time in seconds of "$@" with stdout to $OUT (default /dev/null)
   local b=999
-  for _ in 1 2 3; do
-    local s=$(date +%s.%N); "$@" >/dev/null 2>&1; local e=$(date +%s.%N)
+  for _ in 1 2 3 4 5; do
+    local s=$(date +%s.%N); "$@" >"${OUT:-/dev/null}" 2>/dev/null; local e=$(date +%s.%N)
     b=$(echo "$e - $s" | bc -l | awk -v b="$b" '{print ($1 < b) ? $1 : b}')
   done
   echo "$b"
 }
-printf "%-36s %8s %7s %7s %6s %7s %6s %6s %6s %6s %5s %6s %6s %6s %6s %6s %6s\n" map cells png9 lossy ratio lossless ll/png recall prec iou leaks u2f enc_s png_s dec_s unpng_s dec_MB
+printf "%-36s %8s %7s %7s %6s %7s %6s %6s %6s %6s %5s %6s %6s %6s %6s %6s %6s %6s\n" map cells png9 lossy ratio lossless ll/png recall prec iou leaks u2f enc_s png_s dec_s dec_ns unpng_s dec_MB
 find "$MAPS" \( -name '*.yaml' -o -name '*.pgm' -o -name '*.png' \) | sort | while read -r m; do
   case "$m" in *.yaml) ;; *) [ -e "${m%.*}.yaml" ] && continue; grep -qs "$(basename "$m")" "$(dirname "$m")"/*.yaml && continue ;; esac
   n=$(echo "${m#$MAPS/}" | tr / _); n=${n%.*}
@@ -29,14 +31,15 @@ find "$MAPS" \( -name '*.yaml' -o -name '*.pgm' -o -name '*.png' \) | sort | whi
   ev=$("$L" eval "$m" "$T/$n.lmap" --json)
   png=$(stat -c %s "$T/$n.png"); lossy=$(stat -c %s "$T/$n.lmap"); ll=$(stat -c %s "$T/$n.ll.lmap")
   enc=$(best "$L" encode "$m" -o "$T/$n.t.lmap")
-  pngt=$(best pnmtopng -compression 9 "$T/$n.tri.pgm")
+  pngt=$(OUT="$T/$n.t.png" best pnmtopng -compression 9 "$T/$n.tri.pgm")
   dec=$(best "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml")
-  unpng=$(best pngtopnm "$T/$n.png")
+  decns=$(best "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml" --no-sync)
+  unpng=$(OUT="$T/$n.unpng.pgm" best pngtopnm "$T/$n.png")
   mem=$( { /usr/bin/time -f "%M" "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml" >/dev/null; } 2>&1 | tail -1)
   echo "$ev" | python3 -c "
 import json,sys
 e=json.load(sys.stdin)
-print('%-36s %8d %7d %7d %6.2f %7d %6.3f %6.4f %6.4f %6.4f %5d %6.4f %6.3f %6.3f %6.3f %6.3f %6.1f' % ('$n', $cells, $png, $lossy, $png/$lossy, $ll, $ll/$png,
-  e['obstacle_recall_1'], e['obstacle_precision_1'], e['free_iou'], e['leaks'], e['unknown_turned_free_share'], $enc, $pngt, $dec, $unpng, $mem/1024.0))"
+print('%-36s %8d %7d %7d %6.2f %7d %6.3f %6.4f %6.4f %6.4f %5d %6.4f %6.3f %6.3f %6.3f %6.3f %6.3f %6.1f' % ('$n', $cells, $png, $lossy, $png/$lossy, $ll, $ll/$png,
+  e['obstacle_recall_1'], e['obstacle_precision_1'], e['free_iou'], e['leaks'], e['unknown_turned_free_share'], $enc, $pngt, $dec, $decns, $unpng, $mem/1024.0))"
 done
 rm -rf "$T"

@@ -249,7 +249,8 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
           "repeated tiles and speed up); CPU time per Mcell "
-          "(median of `runs`, at least 5 at every size; RM-Line one run). spread = largest / "
+          "(median of `runs`: at least 9 up to 16 Mcells, 5 at 64; RM-Line one run). spread = "
+          "largest / "
           "smallest - 1 (goal: "
           "within 25%).",
           table};

@@ -227,10 +227,11 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     const double mcells = side * side;
     progress(std::to_string(side * side) + " Mcells");
     const Grid grid = GenerateOfficeMap(1024 * side);
-    // At least 5 runs at every size, so that each row is a median of warm
-    // runs (the first run of a process pays for fresh memory) and one slow
-    // run on a shared machine does not move it.
-    const int runs = std::max(5, RepeatsFor(grid.size(), repeats));
+    // At least 9 runs up to 16 Mcells and 5 at 64, so that each row is a
+    // median of warm runs (the first run of a process pays for fresh memory)
+    // and a few slow runs on a shared machine do not move it: the spread
+    // compares rows, so one noisy row decides it.
+    const int runs = std::max(side <= 4 ? 9 : 5, RepeatsFor(grid.size(), repeats));
     ScalingRow row;
     row.mcells = mcells;
     row.repeats = runs;

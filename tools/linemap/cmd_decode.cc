@@ -12,7 +12,11 @@ namespace linemap::cli {
 
 namespace {
 std::vector<OptionSpec> DecodeOptions() {
-  std::vector<OptionSpec> options = {{"-o", "OUT.yaml", "output YAML; the PGM goes beside it"}};
+  std::vector<OptionSpec> options = {
+      {"-o", "OUT.yaml", "output YAML; the PGM goes beside it"},
+      {"--no-sync", "",
+       "skip flushing the files to disk (fsync); they are still replaced atomically, but a "
+       "power cut right after may lose them"}};
   for (OptionSpec& o : DecodeLimitOptionSpecs()) options.push_back(std::move(o));
   return options;
 }
@@ -42,7 +46,8 @@ int RunDecode(const std::vector<std::string>& args) {
   if (!limits.ok()) return ReportError("decode", limits.status());
   StatusOr<Grid> grid = LoadLmap(parsed->positional[0], *limits);
   if (!grid.ok()) return ReportError("decode", grid.status());
-  Status saved = SaveRosMap(*out, *grid);
+  Status saved = SaveRosMap(*out, *grid,
+                            parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
   if (!saved.ok()) return ReportError("decode", saved);
   const CellCounts counts = grid->Count();
   std::printf("wrote %s and its .pgm: %d x %d cells, %zu free, %zu occupied, %zu unknown\n",

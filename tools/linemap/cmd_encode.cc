@@ -36,6 +36,9 @@ const CommandSpec kEncodeSpec = {
         {"--simplify-free", "",
          "lossy: also fill small unknown holes and smooth the free/unknown boundary "
          "(smaller files; plans through narrow passages may change)"},
+        {"--no-sync", "",
+         "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
+         "power cut right after may lose it"},
         {"--json", "", "print one JSON object instead of text"},
     }),
     1,
@@ -101,7 +104,8 @@ int RunEncode(const std::vector<std::string>& args) {
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *options);
   if (!bytes.ok()) return ReportError("encode", bytes.status());
   Status written = WriteFileAtomic(
-      *out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()));
+      *out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+      parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
   if (!written.ok()) return ReportError("encode", written);
   const double seconds = NowSeconds() - start;
   StatusOr<std::size_t> png = png_task.get();
