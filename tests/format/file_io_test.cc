@@ -38,6 +38,16 @@ TEST(FileIoTest, ReadsBackWhatWasWritten) {
   EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"a.bin"});
 }
 
+TEST(FileIoTest, UnsyncedWriteReplacesTheFileWhole) {
+  const std::string dir = MakeTempDir("fio");
+  ASSERT_TRUE(WriteFileAtomic(dir + "/a.bin", "old contents").ok());
+  ASSERT_TRUE(WriteFileAtomic(dir + "/a.bin", "new", Durability::kUnsynced).ok());
+  StatusOr<std::vector<std::uint8_t>> bytes = ReadFileBytes(dir + "/a.bin", 100);
+  ASSERT_TRUE(bytes.ok());
+  EXPECT_EQ(std::string(bytes->begin(), bytes->end()), "new");
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"a.bin"});
+}
+
 TEST(FileIoTest, ReadErrorsNameTheFile) {
   const std::string dir = MakeTempDir("fio");
   WriteFile(dir + "/big.bin", std::string(101, 'x'));

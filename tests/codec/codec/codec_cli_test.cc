@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
@@ -27,6 +28,23 @@ TEST(CodecCliTest, EncodeDecodeRoundTripLossless) {
   ASSERT_TRUE(original.ok() && decoded.ok());
   EXPECT_EQ(decoded->cells(), original->cells());
   EXPECT_EQ(decoded->width(), original->width());
+}
+
+TEST(CodecCliTest, NoSyncStillReplacesFilesWhole) {
+  const std::string dir = testing::MakeTempDir("cli_nosync");
+  auto enc = RunCli({"encode", kArena, "-o", dir + "/a.lmap", "--lossless", "--no-sync"});
+  ASSERT_EQ(enc.exit_code, 0) << enc.err;
+  // Decoding twice over the same output replaces both files.
+  for (int i = 0; i < 2; ++i) {
+    auto dec = RunCli({"decode", dir + "/a.lmap", "-o", dir + "/a.yaml", "--no-sync"});
+    ASSERT_EQ(dec.exit_code, 0) << dec.err;
+  }
+  auto original = LoadRosMap(kArena);
+  auto decoded = LoadRosMap(dir + "/a.yaml");
+  ASSERT_TRUE(original.ok() && decoded.ok());
+  EXPECT_EQ(decoded->cells(), original->cells());
+  // No temporary file is left behind.
+  EXPECT_EQ(testing::ListDir(dir), (std::vector<std::string>{"a.lmap", "a.pgm", "a.yaml"}));
 }
 
 TEST(CodecCliTest, InfoListsChunksAndEvalReportsExactness) {
