@@ -48,13 +48,14 @@ GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
       const Cell a = original.at(c, r);
       const Cell b = decoded.at(c, r);
       out.cells_equal += a == b;
+      // A cell occupied in both is its own neighbour within one cell.
       if (a == Cell::kOccupied) {
         ++occ_orig;
-        occ_recalled += OccupiedNear(decoded, c, r);
+        occ_recalled += b == Cell::kOccupied || OccupiedNear(decoded, c, r);
       }
       if (b == Cell::kOccupied) {
         ++occ_dec;
-        occ_precise += OccupiedNear(original, c, r);
+        occ_precise += a == Cell::kOccupied || OccupiedNear(original, c, r);
       }
       const bool fa = a == Cell::kFree;
       const bool fb = b == Cell::kFree;

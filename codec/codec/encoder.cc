@@ -205,11 +205,12 @@ void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupi
       for (int c = 1; c + 1 < w; ++c) {
         const std::size_t i = static_cast<std::size_t>(r) * w + c;
         // Only unknown cells (which need 5 occupied neighbours, so at least
-        // one edge neighbour) and occupied cells of the map can change.
-        if (!o[i] &&
-            (cells[i] != Cell::kUnknown || (!o[i - 1] && !o[i + 1] && !o[i - w] && !o[i + w]))) {
-          continue;
-        }
+        // one edge neighbour) and occupied cells of the map can change; an
+        // occupied cell with 3 or 4 occupied edge neighbours has more than 2
+        // occupied neighbours and stays (the inside of solid walls).
+        const int edge_occupied = o[i - 1] + o[i + 1] + o[i - w] + o[i + w];
+        if (!o[i] && (cells[i] != Cell::kUnknown || edge_occupied == 0)) continue;
+        if (o[i] && edge_occupied >= 3) continue;
         int occ = 0;
         bool touches_free = false, touches_dropped = false;
         for (int dr = -1; dr <= 1; ++dr) {
@@ -454,22 +455,20 @@ void DropCellsNearSegments(const Grid& grid, const std::vector<Cell>& canvas,
                            std::vector<std::uint8_t>* occupied) {
   const int w = grid.width();
   const int h = grid.height();
+  std::vector<std::uint8_t>& o = *occupied;
+  // From each drawn cell outwards (the drawn cells are few): its occupied
+  // 8-neighbours that are not drawn themselves go.
   for (int r = 0; r < h; ++r) {
     for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      if (canvas[i] == Cell::kOccupied) {
-        (*occupied)[i] = 1;
-        continue;
-      }
-      if (!(*occupied)[i]) continue;
-      bool near = false;
-      for (int dr = -1; dr <= 1 && !near; ++dr) {
-        for (int dc = -1; dc <= 1 && !near; ++dc) {
-          near = grid.Contains(c + dc, r + dr) &&
-                 canvas[grid.Index(c + dc, r + dr)] == Cell::kOccupied;
+      if (canvas[grid.Index(c, r)] != Cell::kOccupied) continue;
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          if (!grid.Contains(c + dc, r + dr)) continue;
+          const std::size_t j = grid.Index(c + dc, r + dr);
+          if (canvas[j] != Cell::kOccupied) o[j] = 0;
         }
       }
-      if (near) (*occupied)[i] = 0;
+      o[grid.Index(c, r)] = 1;
     }
   }
 }
