@@ -41,7 +41,7 @@ void PrintUsage(std::FILE* out) {
 // The codec allocates a few grid-sized arrays per candidate file and frees
 // them again. glibc serves arrays over 32 MB (a 32-Mcell grid) by mmap and
 // returns them to the kernel when freed, so every such array of a large map
-// is faulted in and zeroed afresh: 64-Mcell encodes spent about 8 % of their
+// is faulted in and zeroed afresh: 64-Mcell encodes spent about 7 % of their
 // time in page faults. Raising the mmap and trim thresholds keeps freed
 // arrays in the heap for reuse. A process-wide setting, so it belongs to the
 // program, not the library (README: "Large maps").
