@@ -211,10 +211,24 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
   LINEMAP_ASSIGN_OR_RETURN(RawImage image, ReadImageFile(image_path, max_cells));
   Grid grid(image.width, image.height);
   grid.meta = meta;
+  // A grey pixel's cell depends on its one sample only, and maps are long
+  // runs of equal samples: classify each new sample once.
+  const bool grey = image.channels == 1;
+  std::uint16_t last_sample = 0;
+  Cell last_cell = ClassifyPixel(&last_sample, 1, meta);
   for (int y = 0; y < image.height; ++y) {
     const int row = image.height - 1 - y;  // image row 0 is the top of the map
     for (int x = 0; x < image.width; ++x) {
-      grid.set(x, row, ClassifyPixel(image.pixel(x, y), image.channels, meta));
+      const std::uint16_t* samples = image.pixel(x, y);
+      if (!grey) {
+        grid.set(x, row, ClassifyPixel(samples, image.channels, meta));
+        continue;
+      }
+      if (samples[0] != last_sample) {
+        last_sample = samples[0];
+        last_cell = ClassifyPixel(samples, 1, meta);
+      }
+      grid.set(x, row, last_cell);
     }
   }
   return grid;
