@@ -36,6 +36,17 @@ TEST(BenchCliTest, WritesCsvMarkdownAndSvgForAOneMapCorpus) {
   EXPECT_TRUE(FileExists(out + "/svg/summary.svg"));
 }
 
+TEST(BenchCliTest, ScalingTableHasARowPerSizeAndTheSpread) {
+  const CliResult r = RunCli({"bench", OneMapCorpus(), "--scaling-max", "1", "--no-memory",
+                              "--no-jbig", "--repeats", "1"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t table = r.out.find("== Scaling ==");
+  ASSERT_NE(table, std::string::npos) << r.out;
+  // The 1-Mcell row has its 9 interleaved runs, then the spread row.
+  EXPECT_NE(r.out.find("\n1            9 ", table), std::string::npos) << r.out.substr(table);
+  EXPECT_NE(r.out.find("\nspread %", table), std::string::npos);
+}
+
 TEST(BenchCliTest, BadUsageExitsTwo) {
   EXPECT_EQ(RunCli({"bench", "/nonexistent/linemap-corpus", "--scaling-max", "0"}).exit_code, 2);
   EXPECT_EQ(RunCli({"bench", "--repeats", "0"}).exit_code, 2);

@@ -9,6 +9,7 @@
 
 #include "format/file_io.h"
 #include "format/image.h"
+#include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
@@ -219,38 +220,99 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   return result;
 }
 
+namespace {
+
+// Sides (in Kcells) of the scaling maps up to `max_mcells` Mcells.
+std::vector<int> ScalingSides(int max_mcells) {
+  std::vector<int> sides;
+  for (int side : {1, 2, 4, 8}) {
+    if (side * side <= max_mcells) sides.push_back(side);
+  }
+  return sides;
+}
+
+// Timed runs per scaling map: at least 9 up to 16 Mcells and 5 at 64, so
+// that each row is a median of warm runs (the first run of a process pays for
+// fresh memory) and a few slow runs on a shared machine do not move it.
+int ScalingRuns(int side, int repeats) {
+  const std::size_t cells = (static_cast<std::size_t>(side) * side) << 20;  // (1024 side)^2
+  return std::max(side <= 4 ? 9 : 5, RepeatsFor(cells, repeats));
+}
+
+// One scaling map and its timings so far.
+struct ScalingMap {
+  int side = 0;
+  int runs = 0;
+  Grid grid;
+  std::string png;
+  std::vector<std::uint8_t> lmap;
+  std::vector<double> png_encode_ms, png_decode_ms, lmap_encode_ms, lmap_decode_ms;
+  double rmline_ms = 0;
+};
+
+}  // namespace
+
+int ScalingProgressSteps(int max_mcells, int repeats) {
+  const std::vector<int> sides = ScalingSides(max_mcells);
+  int rounds = 0;
+  for (int side : sides) rounds = std::max(rounds, ScalingRuns(side, repeats));
+  return sides.empty() ? 0 : static_cast<int>(sides.size()) + rounds;
+}
+
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
                                    const std::function<void(const std::string&)>& progress) {
-  std::vector<ScalingRow> rows;
-  for (int side : {1, 2, 4, 8}) {
-    if (side * side > max_mcells) break;
-    const double mcells = side * side;
-    progress(std::to_string(side * side) + " Mcells");
-    const Grid grid = GenerateOfficeMap(1024 * side);
-    // At least 9 runs up to 16 Mcells and 5 at 64, so that each row is a
-    // median of warm runs (the first run of a process pays for fresh memory)
-    // and a few slow runs on a shared machine do not move it: the spread
-    // compares rows, so one noisy row decides it.
-    const int runs = std::max(side <= 4 ? 9 : 5, RepeatsFor(grid.size(), repeats));
-    ScalingRow row;
-    row.mcells = mcells;
-    row.repeats = runs;
-    StatusOr<std::string> png = EncodeTrinaryPng(grid, PngLayout::kGrey8, 9);
-    row.png_encode_ms_per_mcell =
-        Median(TimeRuns([&] { (void)EncodeTrinaryPng(grid, PngLayout::kGrey8, 9); }, runs)) /
-        mcells;
-    if (png.ok()) {
-      row.png_decode_ms_per_mcell =
-          Median(TimeRuns([&] { (void)DecodeTrinaryPng(Bytes(*png)); }, runs)) / mcells;
+  std::vector<ScalingMap> maps;
+  for (int side : ScalingSides(max_mcells)) {
+    progress("preparing " + std::to_string(side * side) + " Mcells");
+    ScalingMap map;
+    map.side = side;
+    map.runs = ScalingRuns(side, repeats);
+    map.grid = GenerateOfficeMap(1024 * side);
+    if (StatusOr<std::string> png = EncodeTrinaryPng(map.grid, PngLayout::kGrey8, 9); png.ok()) {
+      map.png = *std::move(png);
+    }
+    if (StatusOr<std::vector<std::uint8_t>> lmap = EncodeLmap(map.grid, EncodeOptions());
+        lmap.ok()) {
+      map.lmap = *std::move(lmap);
     }
     LineExtractionOptions options;
     options.method = LineMethod::kRmLine;
-    row.rmline_ms_per_mcell =
-        Median(TimeRuns([&] { (void)ExtractLines(grid, options); }, 1)) / mcells;
-    MapResult lmap;
-    if (AddLmapFigures(grid, {runs, false, false}, &lmap).ok()) {
-      if (auto ms = lmap.Get(key::kLmapEncodeMs)) row.lmap_encode_ms_per_mcell = *ms / mcells;
-      if (auto ms = lmap.Get(key::kLmapDecodeMs)) row.lmap_decode_ms_per_mcell = *ms / mcells;
+    map.rmline_ms = TimeRuns([&] { (void)ExtractLines(map.grid, options); }, 1)[0];
+    maps.push_back(std::move(map));
+  }
+  // The runs are interleaved (round k times every size once), so that a slow
+  // phase of a shared machine slows every size alike rather than one row.
+  int rounds = 0;
+  for (const ScalingMap& map : maps) rounds = std::max(rounds, map.runs);
+  for (int round = 0; round < rounds; ++round) {
+    progress("round " + std::to_string(round + 1) + "/" + std::to_string(rounds));
+    for (ScalingMap& map : maps) {
+      if (round >= map.runs) continue;
+      const auto once = [](const std::function<void()>& op) { return TimeRuns(op, 1)[0]; };
+      map.png_encode_ms.push_back(
+          once([&] { (void)EncodeTrinaryPng(map.grid, PngLayout::kGrey8, 9); }));
+      if (!map.png.empty()) {
+        map.png_decode_ms.push_back(once([&] { (void)DecodeTrinaryPng(Bytes(map.png)); }));
+      }
+      if (!map.lmap.empty()) {
+        map.lmap_encode_ms.push_back(once([&] { (void)EncodeLmap(map.grid, EncodeOptions()); }));
+        map.lmap_decode_ms.push_back(once([&] { (void)DecodeLmap(map.lmap); }));
+      }
+    }
+  }
+  std::vector<ScalingRow> rows;
+  for (const ScalingMap& map : maps) {
+    const double mcells = map.side * map.side;
+    ScalingRow row;
+    row.mcells = mcells;
+    row.repeats = map.runs;
+    row.png_encode_ms_per_mcell = Median(map.png_encode_ms) / mcells;
+    if (!map.png_decode_ms.empty())
+      row.png_decode_ms_per_mcell = Median(map.png_decode_ms) / mcells;
+    row.rmline_ms_per_mcell = map.rmline_ms / mcells;
+    if (!map.lmap_encode_ms.empty()) {
+      row.lmap_encode_ms_per_mcell = Median(map.lmap_encode_ms) / mcells;
+      row.lmap_decode_ms_per_mcell = Median(map.lmap_decode_ms) / mcells;
     }
     rows.push_back(row);
   }

@@ -36,10 +36,12 @@ struct ScalingRow {
 };
 
 // Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16
-// and 64 Mcells)
-// (up to `max_mcells`); `progress` is called before each size.
+// and 64 Mcells, up to `max_mcells`), timed in interleaved rounds; `progress`
+// is called ScalingProgressSteps(max_mcells, repeats) times: once per size
+// while it is prepared, then once per round.
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
                                    const std::function<void(const std::string&)>& progress);
+int ScalingProgressSteps(int max_mcells, int repeats);
 
 }  // namespace linemap::bench
 

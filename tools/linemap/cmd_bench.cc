@@ -159,11 +159,7 @@ int RunBench(const std::vector<std::string>& argv) {
   std::vector<bench::MapResult> results;
   std::vector<std::string> skipped;
   std::set<std::uint64_t> seen;
-  const int scaling_steps = args->scaling_max >= 64   ? 4
-                            : args->scaling_max >= 16 ? 3
-                            : args->scaling_max >= 4  ? 2
-                            : args->scaling_max >= 1  ? 1
-                                                      : 0;
+  const int scaling_steps = bench::ScalingProgressSteps(args->scaling_max, args->options.repeats);
   bench::ProgressBar progress(corpus->size() + static_cast<std::size_t>(scaling_steps));
   std::size_t step = 0;
   for (const bench::CorpusMap& map : *corpus) {

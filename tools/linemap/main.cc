@@ -43,13 +43,17 @@ void PrintUsage(std::FILE* out) {
 // returns them to the kernel when freed, so every such array of a large map
 // is faulted in and zeroed afresh: 64-Mcell encodes spent about 7 % of their
 // time in page faults. Raising the mmap and trim thresholds keeps freed
-// arrays in the heap for reuse. A process-wide setting, so it belongs to the
-// program, not the library (README: "Large maps").
+// arrays in the heap for reuse; one arena keeps the encoder's second thread
+// from mapping its own (a thread arena's heaps hold at most 64 MB, so larger
+// arrays were mapped afresh there whatever the threshold). Process-wide
+// settings, so they belong to the program, not the library (README: "Large
+// maps").
 void KeepLargeArraysForReuse() {
 #if defined(__GLIBC__)
   constexpr int kOneGiB = 1 << 30;
   mallopt(M_MMAP_THRESHOLD, kOneGiB);
   mallopt(M_TRIM_THRESHOLD, kOneGiB);
+  mallopt(M_ARENA_MAX, 1);
 #endif
 }
 
