@@ -16,7 +16,8 @@
 //     (the L-infinity polyline criterion of Imai & Iri 1986, with TLS lines
 //     in place of chords; greedy is optimal when validity is hereditary,
 //     which holds closely for TLS). Prefix moments make each trial fit O(1);
-//     doubling then bisection finds each piece in O(n log n).
+//     doubling then bisection finds each piece in O(n log n). At 0.1 cells
+//     the pieces are (nearly) exact runs, e.g. single steps of a staircase.
 //  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
@@ -29,19 +30,32 @@
 //     chain cells). The cost cap is what keeps DisPL_ave low: without it the
 //     L-infinity bound alone would merge the two sides of a wall into a
 //     centre line.
+//     Rate-distortion budget: making every merge that adds at most a price
+//     per segment, cheapest first, greedily minimises summed distance +
+//     price * segments, the Lagrangian form of "fewest segments for a given
+//     summed distance" (Shoham & Gersho 1988 for bit allocation; Perez &
+//     Vidal 1994 for polygonal approximation). Merges adding at most
+//     free_merge_cost_cells (the price) are always made; dearer ones only
+//     while the map's mean distance stays within target_mean_distance_cells
+//     + (1 + distance_growth_factor) times that of the unmerged pieces. So on
+//     a clean map a slanted wall keeps an exact segment per long step while
+//     short steps and noisy walls merge.
 //  5. Prune: a segment whose cells all lie within epsilon of other segments
-//     (and cost at most max_added_cost_cells more there) is dropped, smallest
-//     first, handing its cells over.
+//     (and cost at most prune_added_cost_cells more there) is dropped,
+//     smallest first, handing its cells over.
 //  6. Polish: each line moves towards the least-absolute-distance line of its
 //     cells (iteratively reweighted TLS), only while the bound holds.
 //  7. Corners: wall ends that meet at a corner are extended to it.
 // Parameters (LineExtractionOptions, all in cells; defaults chosen on
 // ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
-// bound), split_epsilon_cells 0.3 (pieces are digital straight segments),
-// merge_gap_cells 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3
-// (times epsilon^2), noise_merge_factor and noise_window_cells (see
-// lines.h),
-// min_component_cells 2 (lone cells are speckle), corner_join_cells 3.
+// bound), split_epsilon_cells 0.1 (pieces are exact runs), merge_gap_cells
+// 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3 (times
+// epsilon^2), free_merge_cost_cells 0.95 (times epsilon^2; the price of a
+// segment), target_mean_distance_cells 0.05 (times epsilon) and
+// distance_growth_factor 1 (the budget of the dearer merges),
+// prune_added_cost_cells 1.5 (times epsilon^2), noise_merge_factor and
+// noise_window_cells (see lines.h), min_component_cells 2 (lone cells are
+// speckle), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
 // the re-evaluation of a group against its neighbours after each merge.
 #include "codec/lines/linemap_extractor.h"
@@ -333,8 +347,12 @@ double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
 // What a merge may cost; see MergeGroups.
 struct MergeLimits {
   double epsilon = 1;       // the bound, cells
-  double max_added = 3;     // summed distance a merge may always add, cells
+  double max_added = 3;     // summed distance a merge may add at most, cells
   double noise_factor = 0;  // merged cost may reach this times the summed local noise
+  double free_added = 3;    // merges adding at most this (cells) are always made
+  // Dearer merges are made only while the chained cells' summed distance to
+  // their segments stays at most this (cells).
+  double total_budget = std::numeric_limits<double>::infinity();
 };
 
 // A necessary condition for a merge, in O(1): a line within epsilon of both
@@ -412,14 +430,17 @@ double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits
   return cost - a.cost - b.cost;
 }
 
-bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, FittedLine* line,
-              LineSweep* sweep) {
+// Fits the union of a and b and sweeps its cells; false when a cell breaks
+// the bound or the summed distance passes MergeBudget or, besides, grows by
+// more than `max_added` (cells: the map's budget left).
+bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, double max_added,
+              FittedLine* line, LineSweep* sweep) {
   const double epsilon = limits.epsilon;
   const PointMoments moments = MergedMoments(a, b);
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
-  const double max_cost = MergeBudget(a, b, limits);
+  const double max_cost = std::min(MergeBudget(a, b, limits), a.cost + b.cost + max_added);
   return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
          SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
@@ -439,14 +460,16 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
 
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
 // bound holds and each merge adds at most max_added_cost to the summed
-// distance. Pairs are candidates when an end of one is within `gap` of the
-// other segment. Lazy greedy: a pair is queued under an O(1) lower bound of
-// its added cost (MergeLowerBound) and swept over its cells only when it
-// reaches the top; it is merged then if its exact cost is still the
-// cheapest, else requeued under the exact cost. Pairs that a merge of one of
-// their groups makes stale are thus never swept.
+// distance; a merge adding more than limits.free_added is made only while
+// *total_cost (the chained cells' summed distance, kept up to date) stays
+// within limits.total_budget. Pairs are candidates when an end of one is
+// within `gap` of the other segment. Lazy greedy: a pair is queued under an
+// O(1) lower bound of its added cost (MergeLowerBound) and swept over its
+// cells only when it reaches the top; it is merged then if its exact cost is
+// still the cheapest, else requeued under the exact cost. Pairs that a merge
+// of one of their groups makes stale are thus never swept.
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
-                 double gap) {
+                 double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
   struct Candidate {
     double added;  // a lower bound, or the exact cost when `exact`
@@ -469,6 +492,11 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   std::vector<std::uint32_t> near;
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::uint32_t stamp = 0;
+  // True when a merge adding `added` (or, for a lower bound, more) is
+  // neither free nor within the budget left.
+  auto over_budget = [&](double added) {
+    return added > limits.free_added + kRoundingSlack && *total_cost + added > limits.total_budget;
+  };
   // Queues every possible merge of g with a group near one of its ends.
   auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
@@ -483,7 +511,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
         const double bound = MergeLowerBound(a, b, limits);
-        if (bound == std::numeric_limits<double>::infinity()) continue;
+        if (bound == std::numeric_limits<double>::infinity() || over_budget(bound)) continue;
         push({bound, g, h, version[g], version[h]});
       }
     }
@@ -494,6 +522,9 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   FittedLine line;
   LineSweep sweep;
   while (!heap.empty()) {
+    // The top has the smallest bound: once it is over the budget, so is
+    // every queued merge, and none of them can be free any more.
+    if (over_budget(heap.front().added)) break;
     std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
     Candidate c = heap.back();
     heap.pop_back();
@@ -502,12 +533,17 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     if (!alive[c.a] || !alive[c.b] || version[c.a] != c.version_a || version[c.b] != c.version_b) {
       continue;
     }
-    if (!TryMerge(a, b, limits, &line, &sweep)) continue;
+    // A merge over the budget left is not made: stop its sweep there.
+    const double allowed =
+        std::max(limits.free_added + kRoundingSlack, limits.total_budget - *total_cost);
+    if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
     c.added = sweep.cost - a.cost - b.cost;
     if (!heap.empty() && c.added > heap.front().added) {
       push(c);  // no longer the cheapest: wait for its turn
       continue;
     }
+    if (over_budget(c.added)) continue;  // free merges may still follow
+    *total_cost += c.added;
     AbsorbGroup(&a, &b, line, sweep);
     alive[c.b] = 0;
     ++version[c.b];
@@ -515,6 +551,41 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     tiles.Add(c.a, a.segment);
     push_candidates(c.a, false);
   }
+}
+
+// The summed distance (cells) the chained cells may reach through merges
+// dearer than free_merge_cost_cells (see target_mean_distance_cells in
+// lines.h): with D0 the mean distance of all edge cells to the unmerged
+// pieces `groups` (chained cells to their own piece, speckle cells to the
+// nearest piece) and N the number of edge cells, the merges may raise the
+// mean to at most
+// target * epsilon + (1 + distance_growth_factor) * D0; the speckle cells'
+// distances are taken as fixed. *chained_cost gets the pieces' summed
+// distance. Infinity when the options set no budget.
+double DistanceBudget(const std::vector<Group>& groups, const std::vector<std::uint32_t>& speckle,
+                      int width, int height, double epsilon, const LineExtractionOptions& options,
+                      double* chained_cost) {
+  double cells = static_cast<double>(speckle.size());
+  *chained_cost = 0;
+  for (const Group& group : groups) {
+    *chained_cost += group.cost;
+    cells += static_cast<double>(group.cells.size());
+  }
+  const double target = options.target_mean_distance_cells * epsilon;
+  const double growth = options.distance_growth_factor;
+  if (!(target > 0 || growth > 0)) return std::numeric_limits<double>::infinity();
+  double speckle_cost = 0;
+  if (growth > 0 && !speckle.empty() && !groups.empty()) {
+    std::vector<LineSegment> pieces;
+    pieces.reserve(groups.size());
+    for (const Group& group : groups) pieces.push_back(group.segment);
+    SegmentIndex index(&pieces, width, height);
+    for (std::uint32_t i : speckle) {
+      const CellXY c = CellOfIndex(i, width);
+      speckle_cost += index.NearestDistance(c.col, c.row);
+    }
+  }
+  return *chained_cost + growth * (*chained_cost + speckle_cost) + target * cells;
 }
 
 // Step 5: drop groups whose cells are all within epsilon of other segments.
@@ -825,8 +896,8 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   }
 
   const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
-  const MergeLimits limits{epsilon, options.max_added_cost_cells * epsilon * epsilon,
-                           options.noise_merge_factor};
+  MergeLimits limits{epsilon, options.max_added_cost_cells * epsilon * epsilon,
+                     options.noise_merge_factor, options.free_merge_cost_cells * epsilon * epsilon};
   std::vector<Group> groups;
   for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
     const ChainMoments chain_moments(chain, width);
@@ -849,8 +920,13 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       begin += length;
     }
   }
-  MergeGroups(&groups, width, height, limits, options.merge_gap_cells);
-  PruneCoveredGroups(&groups, width, height, epsilon, limits.max_added);
+  double total_cost = 0;
+  limits.total_budget =
+      DistanceBudget(groups, speckle, width, height, epsilon, options, &total_cost);
+  MergeGroups(&groups, width, height, limits, options.merge_gap_cells, &total_cost);
+  PruneCoveredGroups(
+      &groups, width, height, epsilon,
+      std::min(limits.max_added, options.prune_added_cost_cells * epsilon * epsilon));
   for (Group& group : groups) {
     if (group.alive) PolishGroupL1(&group, epsilon);
   }

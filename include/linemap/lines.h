@@ -72,7 +72,46 @@ struct LineExtractionOptions {
   // for walls longer than this.
   // Scaled by epsilon_cells^2 (the value is the cap at epsilon 1): on a wall
   // ragged by +-epsilon, each merge step moves ~epsilon cells by ~epsilon.
+  // Merges adding more than free_merge_cost_cells are further limited by the
+  // map's distance budget (target_mean_distance_cells).
   double max_added_cost_cells = 3.0;
+  // linemap extractor: the price of one segment in summed distance (cells,
+  // scaled by epsilon_cells^2 like max_added_cost_cells). Merges that add at
+  // most this are always made (cheapest first), so a segment is kept where
+  // it saves more than this much distance: a staircase wall with steps of q
+  // cells keeps one exact segment per step when merging two steps costs more
+  // (about q / 2), and becomes one slanted segment otherwise. Suggested
+  // 0.95: just under one cell, so that absorbing a lone cell one cell off a
+  // wall is not free (on ../shared/maps, 0.85-0.97 give the same passes;
+  // 1.0 loses nav2/tb3_sandbox).
+  double free_merge_cost_cells = 0.95;
+  // linemap extractor: the map's distance budget for the dearer merges
+  // (those adding more than free_merge_cost_cells, up to
+  // max_added_cost_cells). They are made, cheapest first, only while the
+  // edge cells' mean distance to the nearest segment (DisPL_ave, with the
+  // unchained cells' distances as they are to the unmerged pieces) stays at
+  // most target_mean_distance_cells + (1 + distance_growth_factor) times
+  // that of the unmerged pieces (the chains cut at split_epsilon_cells).
+  // Cells, scaled by epsilon_cells; suggested 0.05 (one cell in twenty off
+  // by one cell on average). Clean maps, whose pieces fit their cells almost
+  // exactly, stop near target_mean_distance_cells; maps with much speckle or
+  // ragged walls, whose pieces already leave a large mean distance, merge
+  // further. 0 (with distance_growth_factor 0) = no budget: every merge up
+  // to max_added_cost_cells is made.
+  double target_mean_distance_cells = 0.05;
+  // linemap extractor: see target_mean_distance_cells (dimensionless;
+  // suggested 1: the merges may at most double the unmerged pieces' mean
+  // distance, plus the target).
+  double distance_growth_factor = 1.0;
+  // linemap extractor: a segment whose cells all lie within epsilon of other
+  // segments is dropped (its cells handed over) when that adds at most this
+  // to the summed distance (cells, scaled by epsilon_cells^2, and at most
+  // max_added_cost_cells; not counted against the distance budget).
+  // Suggested 1.5, between free_merge_cost_cells and max_added_cost_cells: a
+  // lone cell one cell beside a wall goes, a staircase step of several cells
+  // one cell off its neighbours stays (on ../shared/maps 1-1.6 give the same
+  // passes, 2 and 3 drop so many steps that two clean maps fail).
+  double prune_added_cost_cells = 1.5;
   // linemap extractor: a merge may also go ahead when the merged cells' mean
   // distance to their segment stays within this factor of their mean local
   // noise (each cell's distance to the TLS line of the 2 * noise_window_cells
@@ -88,7 +127,11 @@ struct LineExtractionOptions {
   // of their line (cells; capped at epsilon_cells), then merged under
   // epsilon_cells and max_added_cost_cells. Below 0.5 the pieces are digital
   // straight segments, so the two sides of a wall never start merged.
-  double split_epsilon_cells = 0.3;
+  // Suggested 0.1: the pieces are (nearly) exact runs of cells, e.g. one
+  // step of a staircase, so that the merge decides every step of a slanted
+  // wall by its cost; 0.3 starts from longer pieces that already spread a
+  // staircase by up to 0.3 cells.
+  double split_epsilon_cells = 0.1;
   // linemap extractor: segment ends at most this far apart (cells) that meet
   // at more than 20 degrees are extended to their common corner (0 = off).
   double corner_join_cells = 3.0;

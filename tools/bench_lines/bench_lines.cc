@@ -5,6 +5,8 @@
 // larger) and whether its epsilon bound holds on every non-furniture edge cell.
 //
 // Usage: bench_lines [MAPS_DIR] [--epsilon E] [--max-added-cost C] [--merge-gap G]
+//                    [--split-epsilon S] [--free-cost C] [--target-distance T]
+//                    [--growth G] [--prune-cost C]
 //                    [--min-component N] [--noise-factor F]
 //                    [--noise-window W] [--runs N] [--rm-cache FILE]
 // --rm-cache FILE: RM-Line's lines, DisPL and ms per map are read from FILE
@@ -129,6 +131,14 @@ int Main(int argc, char** argv) {
       lm.epsilon_cells = std::atof(argv[++i]);
     } else if (arg == "--max-added-cost" && i + 1 < argc) {
       lm.max_added_cost_cells = std::atof(argv[++i]);
+    } else if (arg == "--free-cost" && i + 1 < argc) {
+      lm.free_merge_cost_cells = std::atof(argv[++i]);
+    } else if (arg == "--target-distance" && i + 1 < argc) {
+      lm.target_mean_distance_cells = std::atof(argv[++i]);
+    } else if (arg == "--growth" && i + 1 < argc) {
+      lm.distance_growth_factor = std::atof(argv[++i]);
+    } else if (arg == "--prune-cost" && i + 1 < argc) {
+      lm.prune_added_cost_cells = std::atof(argv[++i]);
     } else if (arg == "--split-epsilon" && i + 1 < argc) {
       lm.split_epsilon_cells = std::atof(argv[++i]);
     } else if (arg == "--merge-gap" && i + 1 < argc) {
@@ -192,11 +202,13 @@ int Main(int argc, char** argv) {
   }
   std::printf(
       "\nPareto-better (<= 0.7x lines and DisPL_ave <= RM-Line's) on %d of %d maps; "
-      "epsilon %.2f cells, split epsilon %.2f, merge gap %.1f, max added cost %.1f, min component "
-      "%d, noise factor %.2f, noise window %d\n",
+      "epsilon %.2f cells, split epsilon %.2f, merge gap %.1f, max added cost %.1f, free cost "
+      "%.2f, target distance %.3f, growth %.2f, prune cost %.2f, min component %d, noise factor "
+      "%.2f, noise window %d\n",
       pareto, counted, lm.epsilon_cells, lm.split_epsilon_cells, lm.merge_gap_cells,
-      lm.max_added_cost_cells, lm.min_component_cells, lm.noise_merge_factor,
-      lm.noise_window_cells);
+      lm.max_added_cost_cells, lm.free_merge_cost_cells, lm.target_mean_distance_cells,
+      lm.distance_growth_factor, lm.prune_added_cost_cells, lm.min_component_cells,
+      lm.noise_merge_factor, lm.noise_window_cells);
   return 0;
 }
 
