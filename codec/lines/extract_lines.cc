@@ -47,4 +47,12 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
   return InternalError("unknown line extraction method");
 }
 
+LineExtractionOptions FollowPixelSteps(LineExtractionOptions options) {
+  options.split_epsilon_cells = 0.1;
+  options.target_mean_distance_cells = 0.05;
+  options.distance_growth_factor = 1.0;
+  options.prune_added_cost_cells = 1.5;
+  return options;
+}
+
 }  // namespace linemap

@@ -48,12 +48,13 @@
 //  7. Corners: wall ends that meet at a corner are extended to it.
 // Parameters (LineExtractionOptions, all in cells; defaults chosen on
 // ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
-// bound), split_epsilon_cells 0.1 (pieces are exact runs), merge_gap_cells
-// 8 (below a doorway at 5 cm/cell), max_added_cost_cells 3 (times
-// epsilon^2), free_merge_cost_cells 0.95 (times epsilon^2; the price of a
-// segment), target_mean_distance_cells 0.05 (times epsilon) and
-// distance_growth_factor 1 (the budget of the dearer merges),
-// prune_added_cost_cells 1.5 (times epsilon^2), noise_merge_factor and
+// bound), split_epsilon_cells 0.3 (0.1 in FollowPixelSteps: pieces are exact
+// runs), merge_gap_cells 8 (below a doorway at 5 cm/cell),
+// max_added_cost_cells 3 (times epsilon^2), free_merge_cost_cells 0.95
+// (times epsilon^2; the price of a segment), target_mean_distance_cells 0
+// and distance_growth_factor 0 (no budget; 0.05 times epsilon and 1 in
+// FollowPixelSteps), prune_added_cost_cells 3 (1.5 in FollowPixelSteps;
+// times epsilon^2), noise_merge_factor and
 // noise_window_cells (see lines.h), min_component_cells 2 (lone cells are
 // speckle), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and

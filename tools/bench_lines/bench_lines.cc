@@ -4,7 +4,7 @@
 // both, whether linemap is Pareto-better (<= 0.7x the lines and a DisPL_ave no
 // larger) and whether its epsilon bound holds on every non-furniture edge cell.
 //
-// Usage: bench_lines [MAPS_DIR] [--epsilon E] [--max-added-cost C] [--merge-gap G]
+// Usage: bench_lines [MAPS_DIR] [--follow-steps] [--epsilon E] [--max-added-cost C] [--merge-gap G]
 //                    [--split-epsilon S] [--free-cost C] [--target-distance T]
 //                    [--growth G] [--prune-cost C]
 //                    [--min-component N] [--noise-factor F]
@@ -127,7 +127,9 @@ int Main(int argc, char** argv) {
   std::string rm_cache;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--epsilon" && i + 1 < argc) {
+    if (arg == "--follow-steps") {
+      lm = FollowPixelSteps(lm);
+    } else if (arg == "--epsilon" && i + 1 < argc) {
       lm.epsilon_cells = std::atof(argv[++i]);
     } else if (arg == "--max-added-cost" && i + 1 < argc) {
       lm.max_added_cost_cells = std::atof(argv[++i]);

@@ -34,6 +34,9 @@ const CommandSpec kLinesSpec = {
         {"--max-added-cost", "C",
          "linemap: a merge may add at most C cells to the summed cell-to-segment distance "
          "(default 3; lower = closer fit, more lines)"},
+        {"--follow-steps", "",
+         "linemap: follow the pixel steps of slanted walls on clean maps (more lines, "
+         "lower DisPL_ave; see FollowPixelSteps in linemap/lines.h)"},
         {"--pose", "X,Y", "robot position in map metres; flood only its free component"},
         {"--json", "",
          "print one JSON object with keys lines, displ_cm, displ_cells, "
@@ -47,6 +50,7 @@ namespace {
 
 StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Grid& grid) {
   LineExtractionOptions options;
+  if (args.Has("--follow-steps")) options = FollowPixelSteps(options);
   const std::string method = args.Get("--method").value_or("linemap");
   if (method == "rmline") {
     options.method = LineMethod::kRmLine;

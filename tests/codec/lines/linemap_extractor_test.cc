@@ -201,17 +201,12 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   // The obstacle fills rows 0..20 + j(col), j random in {-1, 0, 1}, across
   // the whole width; free above. Its edge map is the ragged top boundary,
   // within rows 19..21, so one horizontal segment on row 20 bounds it by 1.5.
-  // Pieces cut at 0.3 cells and no distance budget: the merge cost cap
-  // scales with epsilon.
+  // Default options: the merge cost cap scales with epsilon.
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> jitter(-1, 1);
   Grid grid(80, 40, Cell::kFree);
   for (int col = 0; col < 80; ++col) FillBox(&grid, col, 0, col, 20 + jitter(rng), Cell::kOccupied);
-  LineExtractionOptions options = LinemapOptions(1.5);
-  options.split_epsilon_cells = 0.3;
-  options.target_mean_distance_cells = 0;
-  options.distance_growth_factor = 0;
-  StatusOr<LineExtraction> result = ExtractLines(grid, options);
+  StatusOr<LineExtraction> result = ExtractLines(grid, LinemapOptions(1.5));
   ASSERT_TRUE(result.ok());
   ASSERT_EQ(result->segments.size(), 1u);
   const LineSegment& s = result->segments[0];
@@ -222,13 +217,14 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   EXPECT_NEAR(0.5 * (s.y1 + s.y2), 20, 0.5);
   const double one_segment = MeasureLineFidelity(result->edges, result->segments).displ_ave_cells;
 
-  // Default options (exact pieces, distance budget): a few segments that
+  // FollowPixelSteps (exact pieces, distance budget): a few segments that
   // follow the wall closer, within the same bound.
-  StatusOr<LineExtraction> budgeted = ExtractLines(grid, LinemapOptions(1.5));
+  const LineExtractionOptions steps = FollowPixelSteps(LinemapOptions(1.5));
+  StatusOr<LineExtraction> budgeted = ExtractLines(grid, steps);
   ASSERT_TRUE(budgeted.ok());
   EXPECT_GE(budgeted->segments.size(), 2u);
   EXPECT_LE(budgeted->segments.size(), 8u);
-  ExpectBoundHolds(*budgeted, LinemapOptions(1.5));
+  ExpectBoundHolds(*budgeted, steps);
   EXPECT_LT(MeasureLineFidelity(budgeted->edges, budgeted->segments).displ_ave_cells,
             0.5 * one_segment);
 }
@@ -243,30 +239,35 @@ Grid StaircaseGrid(int step) {
 
 TEST(LinemapExtractorTest, StaircaseOfShortStepsGivesOneSlantedSegment) {
   // Merging steps of two cells costs less than free_merge_cost_cells each:
-  // one segment along the slope.
-  StatusOr<LineExtraction> result = ExtractLines(StaircaseGrid(2), LinemapOptions(1.0));
-  ASSERT_TRUE(result.ok());
-  ASSERT_EQ(result->segments.size(), 1u);
-  const double angle = testing::SegmentAngleDeg(result->segments[0]);
-  EXPECT_NEAR(std::min(angle, 180 - angle), std::atan(0.5) * 180 / std::acos(-1.0), 2.0);
-  ExpectBoundHolds(*result, LinemapOptions(1.0));
+  // one segment along the slope, with the defaults and when following steps.
+  for (const LineExtractionOptions& options :
+       {LinemapOptions(1.0), FollowPixelSteps(LinemapOptions(1.0))}) {
+    StatusOr<LineExtraction> result = ExtractLines(StaircaseGrid(2), options);
+    ASSERT_TRUE(result.ok());
+    ASSERT_EQ(result->segments.size(), 1u);
+    const double angle = testing::SegmentAngleDeg(result->segments[0]);
+    EXPECT_NEAR(std::min(angle, 180 - angle), std::atan(0.5) * 180 / std::acos(-1.0), 2.0);
+    ExpectBoundHolds(*result, options);
+  }
 }
 
 TEST(LinemapExtractorTest, StaircaseOfLongStepsKeepsItsStepsUnderTheDistanceBudget) {
   // Steps of four cells: merging two costs about two cells of summed
   // distance, above free_merge_cost_cells, so the map's distance budget
-  // (nearly all of it left: the pieces fit exactly) decides. With the
-  // default target most steps keep their exact segment; without a budget
-  // the cost cap alone merges the staircase into one slanted segment.
+  // (nearly all of it left: the pieces fit exactly) decides. Following
+  // steps, most steps keep their exact segment; without a budget (the
+  // defaults' choice) the cost cap alone merges the staircase into one
+  // slanted segment.
   const Grid grid = StaircaseGrid(4);
-  StatusOr<LineExtraction> budgeted = ExtractLines(grid, LinemapOptions(1.0));
+  const LineExtractionOptions steps = FollowPixelSteps(LinemapOptions(1.0));
+  StatusOr<LineExtraction> budgeted = ExtractLines(grid, steps);
   ASSERT_TRUE(budgeted.ok());
   EXPECT_GE(budgeted->segments.size(), 10u);
-  ExpectBoundHolds(*budgeted, LinemapOptions(1.0));
+  ExpectBoundHolds(*budgeted, steps);
   const LineFidelity kept = MeasureLineFidelity(budgeted->edges, budgeted->segments);
   EXPECT_LT(kept.displ_ave_cells, 0.1);  // about the 0.05-cell target
 
-  LineExtractionOptions no_budget = LinemapOptions(1.0);
+  LineExtractionOptions no_budget = steps;
   no_budget.target_mean_distance_cells = 0;
   no_budget.distance_growth_factor = 0;
   StatusOr<LineExtraction> merged = ExtractLines(grid, no_budget);
@@ -275,6 +276,12 @@ TEST(LinemapExtractorTest, StaircaseOfLongStepsKeepsItsStepsUnderTheDistanceBudg
   ExpectBoundHolds(*merged, no_budget);
   EXPECT_GT(MeasureLineFidelity(merged->edges, merged->segments).displ_ave_cells,
             kept.displ_ave_cells);
+
+  // The defaults draw the wall a robot sees: one slanted segment.
+  StatusOr<LineExtraction> defaults = ExtractLines(grid, LinemapOptions(1.0));
+  ASSERT_TRUE(defaults.ok());
+  EXPECT_EQ(defaults->segments.size(), 1u);
+  ExpectBoundHolds(*defaults, LinemapOptions(1.0));
 }
 
 TEST(LinemapExtractorTest, SpeckleIsLeftToTheFurnitureLayerAndCounted) {

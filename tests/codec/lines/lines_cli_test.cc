@@ -56,6 +56,28 @@ TEST(LinesCliTest, DefaultMethodIsLinemapAndReportsFurnitureCells) {
   EXPECT_EQ(rm.out.find("furniture:"), std::string::npos) << rm.out;
 }
 
+// A wall rising one row every 4 columns (rows 0..2 + col / 4 filled, free
+// above), at 0.05 m/cell.
+std::string WriteStaircaseMap(const std::string& dir) {
+  Grid grid(60, 20, Cell::kFree);
+  for (int col = 0; col < 60; ++col)
+    testing::FillBox(&grid, col, 0, col, 2 + col / 4, Cell::kOccupied);
+  const std::string yaml = dir + "/stairs.yaml";
+  EXPECT_TRUE(SaveRosMap(yaml, grid).ok());
+  return yaml;
+}
+
+TEST(LinesCliTest, FollowStepsKeepsTheStepsOfASlantedWall) {
+  const std::string dir = testing::MakeTempDir("lines_cli_steps");
+  const std::string yaml = WriteStaircaseMap(dir);
+  const testing::CliResult plain = RunCli({"lines", yaml, "--json"});
+  const testing::CliResult steps = RunCli({"lines", yaml, "--json", "--follow-steps"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ASSERT_EQ(steps.exit_code, 0) << steps.err;
+  EXPECT_NE(plain.out.find("\"lines\":1,"), std::string::npos) << plain.out;
+  EXPECT_EQ(steps.out.find("\"lines\":1,"), std::string::npos) << steps.out;
+}
+
 TEST(LinesCliTest, PoseSelectsTheComponent) {
   const std::string dir = testing::MakeTempDir("lines_cli_pose");
   const std::string yaml = WriteWallMap(dir);
