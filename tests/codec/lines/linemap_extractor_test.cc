@@ -229,11 +229,15 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
             0.5 * one_segment);
 }
 
-// The obstacle fills rows 0..5 + col / step across the width, free above: its
-// edge map is a staircase of steps of `step` cells rising one row each.
+// The obstacle fills rows 0..5 + col / step across the width, free above (at
+// least 5 rows): its edge map is a staircase of steps of `step` cells rising
+// one row each.
 Grid StaircaseGrid(int step) {
-  Grid grid(80, 40, Cell::kFree);
-  for (int col = 0; col < 80; ++col) FillBox(&grid, col, 0, col, 5 + col / step, Cell::kOccupied);
+  constexpr int kWidth = 80;
+  Grid grid(kWidth, 5 + (kWidth - 1) / step + 6, Cell::kFree);
+  for (int col = 0; col < kWidth; ++col) {
+    FillBox(&grid, col, 0, col, 5 + col / step, Cell::kOccupied);
+  }
   return grid;
 }
 
