@@ -96,7 +96,8 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
 
 namespace {
 
-// Writes `data` to a new temporary file beside `path` and flushes it.
+// Writes `data` to a new temporary file beside `path`; flushes it to disk
+// when `durability` is kSynced.
 StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view data,
                                      Durability durability) {
   if (path.empty()) return InvalidArgumentError("empty output file name");
