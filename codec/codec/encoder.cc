@@ -208,8 +208,9 @@ void SmoothWalls(const Grid& grid, int passes, std::vector<std::uint8_t>* occupi
         // one edge neighbour) and occupied cells of the map can change; an
         // occupied cell with 3 or 4 occupied edge neighbours has more than 2
         // occupied neighbours and stays (the inside of solid walls).
+        if (!o[i] && cells[i] != Cell::kUnknown) continue;  // most cells: free
         const int edge_occupied = o[i - 1] + o[i + 1] + o[i - w] + o[i + w];
-        if (!o[i] && (cells[i] != Cell::kUnknown || edge_occupied == 0)) continue;
+        if (!o[i] && edge_occupied == 0) continue;
         if (o[i] && edge_occupied >= 3) continue;
         int occ = 0;
         bool touches_free = false, touches_dropped = false;
