@@ -13,15 +13,20 @@ namespace {
 
 using testing::RunCli;
 
+// Saves `grid` as dir/NAME.yaml (+ .pgm) and returns the YAML's path.
+std::string SaveMap(const std::string& dir, const std::string& name, const Grid& grid) {
+  const std::string yaml = dir + "/" + name + ".yaml";
+  EXPECT_TRUE(SaveRosMap(yaml, grid).ok());
+  return yaml;
+}
+
 // One wall along row 3, cols 2..17, at 0.1 m/cell with origin (1, 2).
 std::string WriteWallMap(const std::string& dir) {
   Grid grid(20, 7, Cell::kFree);
   grid.meta.resolution = 0.1;
   grid.meta.origin = {1.0, 2.0, 0.0};
   testing::FillBox(&grid, 2, 3, 17, 3, Cell::kOccupied);
-  const std::string yaml = dir + "/wall.yaml";
-  EXPECT_TRUE(SaveRosMap(yaml, grid).ok());
-  return yaml;
+  return SaveMap(dir, "wall", grid);
 }
 
 TEST(LinesCliTest, WritesSegmentsInMapMetres) {
@@ -60,11 +65,10 @@ TEST(LinesCliTest, DefaultMethodIsLinemapAndReportsFurnitureCells) {
 // above), at 0.05 m/cell.
 std::string WriteStaircaseMap(const std::string& dir) {
   Grid grid(60, 20, Cell::kFree);
-  for (int col = 0; col < 60; ++col)
+  for (int col = 0; col < 60; ++col) {
     testing::FillBox(&grid, col, 0, col, 2 + col / 4, Cell::kOccupied);
-  const std::string yaml = dir + "/stairs.yaml";
-  EXPECT_TRUE(SaveRosMap(yaml, grid).ok());
-  return yaml;
+  }
+  return SaveMap(dir, "stairs", grid);
 }
 
 TEST(LinesCliTest, FollowStepsKeepsTheStepsOfASlantedWall) {
