@@ -7,11 +7,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 namespace linemap {
 
-// An adaptive bit model: `p` is the probability that the next bit is 0, in
+// An adaptive bit model: p() is the probability that the next bit is 0, in
 // units of 2^-16, starting at one half. Each coded bit moves p towards the
 // bit by 1/2^shift of the gap, with shift = kAdaptShift[n] for the model's
 // n-th update (fast at first, then steady at 1/32), so contexts learn quickly
@@ -22,25 +26,49 @@ inline constexpr std::uint8_t kAdaptShift[kAdaptSteps + 1] = {1, 2, 3, 4, 4, 5};
 // The coders renormalise (shift a byte) when the range drops below this.
 inline constexpr std::uint32_t kRangeTop = 1u << 24;
 
+// All-zero bytes are the initial state (p = one half is stored as 0), so a
+// value-initialised model (`BitModel{}`) or table (BitModelTable) is a
+// memset.
 struct BitModel {
-  std::uint16_t p = 1u << (kProbBits - 1);
-  std::uint8_t n = 0;  // updates so far, saturating at kAdaptSteps
+  static constexpr std::uint16_t kHalf = 1u << (kProbBits - 1);
+  std::uint16_t p_xor_half;  // p() ^ kHalf
+  std::uint8_t n;            // updates so far, saturating at kAdaptSteps
+  std::uint32_t p() const { return p_xor_half ^ kHalf; }
   void Update(int bit) {
+    const std::uint32_t old = p();
     const int shift = kAdaptShift[n];
-    if (bit == 0) {
-      p = static_cast<std::uint16_t>(p + (((1u << kProbBits) - p) >> shift));
-    } else {
-      p = static_cast<std::uint16_t>(p - (p >> shift));
-    }
+    const std::uint32_t next =
+        bit == 0 ? old + (((1u << kProbBits) - old) >> shift) : old - (old >> shift);
+    p_xor_half = static_cast<std::uint16_t>(next ^ kHalf);
     if (n < kAdaptSteps) ++n;
   }
+};
+static_assert(std::is_trivially_default_constructible_v<BitModel>);
+
+// `size` models in their initial state. The plane coders make tens of
+// thousands per plane; set one by one (as a std::vector fills them) or even
+// memset they cost more than coding a small map, so the table comes from
+// calloc, which hands out fresh pages without touching them.
+class BitModelTable {
+ public:
+  explicit BitModelTable(std::size_t size)
+      : models_(static_cast<BitModel*>(std::calloc(size, sizeof(BitModel)))) {
+    if (models_ == nullptr && size > 0) throw std::bad_alloc();
+  }
+  BitModel& operator[](std::size_t i) { return models_.get()[i]; }
+
+ private:
+  struct Free {
+    void operator()(BitModel* p) const { std::free(p); }
+  };
+  std::unique_ptr<BitModel, Free> models_;
 };
 
 class RangeEncoder {
  public:
   // Inline: the plane encoders call it once per cell.
   void Encode(BitModel* model, int bit) {
-    const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+    const std::uint32_t bound = (range_ >> kProbBits) * model->p();
     if (bit == 0) {
       range_ = bound;
     } else {
@@ -74,7 +102,7 @@ class RangeDecoder {
   RangeDecoder(const std::uint8_t* data, std::size_t size);
   // Inline: the plane decoders call it once per cell.
   int Decode(BitModel* model) {
-    const std::uint32_t bound = (range_ >> kProbBits) * model->p;
+    const std::uint32_t bound = (range_ >> kProbBits) * model->p();
     int bit;
     if (code_ < bound) {
       range_ = bound;

@@ -92,7 +92,7 @@ std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& t
                                               const std::vector<Cell>& canvas, int width,
                                               int height) {
   PaddedPlane g = OccupiedPlane(canvas, width, height, 1);
-  std::vector<BitModel> models(kOccupiedContexts);
+  BitModelTable models(kOccupiedContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
@@ -111,7 +111,7 @@ std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& t
 Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
   PaddedPlane g = OccupiedPlane(*canvas, width, height, 1);
-  std::vector<BitModel> models(kOccupiedContexts);
+  BitModelTable models(kOccupiedContexts);
   RangeDecoder dec(data, size);
   std::vector<Cell>& cv = *canvas;
   std::size_t cell = 0;
@@ -131,7 +131,7 @@ Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width
 std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& target,
                                           const std::vector<Cell>& canvas, int width, int height) {
   PaddedPlane fo = OccupiedPlane(canvas, width, height, kCanvasOccupiedBit);
-  std::vector<BitModel> models(kFreeContexts);
+  BitModelTable models(kFreeContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
@@ -150,7 +150,7 @@ std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& targe
 Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
                        std::vector<Cell>* canvas) {
   PaddedPlane fo = OccupiedPlane(*canvas, width, height, kCanvasOccupiedBit);
-  std::vector<BitModel> models(kFreeContexts);
+  BitModelTable models(kFreeContexts);
   RangeDecoder dec(data, size);
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
@@ -201,7 +201,7 @@ inline Cell Alternative(Cell predicted, int which) {
 std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
                                               const std::vector<Cell>& canvas, int width,
                                               int height) {
-  std::vector<BitModel> probs(2 * kResidualContexts);
+  BitModelTable probs(2 * kResidualContexts);
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
@@ -220,7 +220,7 @@ std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
 
 Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
-  std::vector<BitModel> probs(2 * kResidualContexts);
+  BitModelTable probs(2 * kResidualContexts);
   RangeDecoder dec(data, size);
   const std::vector<Cell> lossy = *canvas;
   std::vector<Cell>& truth = *canvas;

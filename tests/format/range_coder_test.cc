@@ -10,7 +10,7 @@ namespace {
 
 // Encodes `bits` with `contexts` models chosen by index % contexts.
 std::vector<std::uint8_t> EncodeBits(const std::vector<int>& bits, int contexts) {
-  std::vector<BitModel> models(contexts);
+  BitModelTable models(contexts);
   RangeEncoder enc;
   for (std::size_t i = 0; i < bits.size(); ++i) enc.Encode(&models[i % contexts], bits[i]);
   enc.Finish();
@@ -18,7 +18,7 @@ std::vector<std::uint8_t> EncodeBits(const std::vector<int>& bits, int contexts)
 }
 
 std::vector<int> DecodeBits(std::size_t n, int contexts, RangeDecoder* dec) {
-  std::vector<BitModel> models(contexts);
+  BitModelTable models(contexts);
   std::vector<int> bits;
   for (std::size_t i = 0; i < n; ++i) bits.push_back(dec->Decode(&models[i % contexts]));
   return bits;
@@ -51,21 +51,21 @@ TEST(RangeCoderTest, PredictableBitsCostLittle) {
 }
 
 TEST(RangeCoderTest, ModelAdaptsWithTheDocumentedSchedule) {
-  BitModel m;
-  EXPECT_EQ(m.p, 32768);
+  BitModel m{};
+  EXPECT_EQ(m.p(), 32768);
   m.Update(0);  // shift 1: p += (65536 - 32768) >> 1
-  EXPECT_EQ(m.p, 49152);
+  EXPECT_EQ(m.p(), 49152);
   m.Update(1);  // shift 2: p -= 49152 >> 2
-  EXPECT_EQ(m.p, 36864);
+  EXPECT_EQ(m.p(), 36864);
   m.Update(0);  // shift 3: p += (65536 - 36864) >> 3 = 3584
-  EXPECT_EQ(m.p, 40448);
+  EXPECT_EQ(m.p(), 40448);
 }
 
 TEST(RangeCoderTest, NeverReadsPastTheEnd) {
   // A decoder over a short buffer keeps returning bits from zero padding.
   const std::vector<std::uint8_t> bytes = {0x12};
   RangeDecoder dec(bytes.data(), bytes.size());
-  BitModel m;
+  BitModel m{};
   for (int i = 0; i < 1000; ++i) dec.Decode(&m);
   EXPECT_EQ(dec.consumed(), 1u);
   EXPECT_GT(dec.overrun(), 0u);
