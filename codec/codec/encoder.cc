@@ -383,7 +383,10 @@ bool FollowsWalls(const Grid& grid, const std::vector<std::uint8_t>& occupied,
 StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
                                                     const EncodeOptions& options) {
   if (grid.empty()) return std::vector<LineSegment>{};
-  LineExtractionOptions line_options;
+  // One segment per straight wall: the layer is the map's walls as lines
+  // (export, planning overlays), not the pixel steps the extractor's
+  // defaults follow for the paper's DisPL_ave.
+  LineExtractionOptions line_options = StraightWalls(LineExtractionOptions{});
   line_options.method = options.method;
   line_options.epsilon_cells = options.epsilon_cells;
   if (options.robot_pose) {

@@ -47,11 +47,12 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
   return InternalError("unknown line extraction method");
 }
 
-LineExtractionOptions FollowPixelSteps(LineExtractionOptions options) {
-  options.split_epsilon_cells = 0.1;
-  options.target_mean_distance_cells = 0.05;
-  options.distance_growth_factor = 1.0;
-  options.prune_added_cost_cells = 1.5;
+LineExtractionOptions StraightWalls(LineExtractionOptions options) {
+  options.split_epsilon_cells = 0.3;
+  options.target_mean_distance_cells = 0;
+  options.distance_growth_factor = 0;
+  options.prune_added_cost_cells = 3.0;
+  options.noise_merge_factor = 0;
   return options;
 }
 

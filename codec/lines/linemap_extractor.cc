@@ -27,9 +27,12 @@
 //     ~k cells by ~k each), or
 //     stays within noise_merge_factor times the cells' summed local noise
 //     (distance to the TLS line of a window of 2 * noise_window_cells + 1
-//     chain cells). The cost cap is what keeps DisPL_ave low: without it the
-//     L-infinity bound alone would merge the two sides of a wall into a
-//     centre line.
+//     chain cells; 0 where the window never turns back, as a staircase
+//     does not): what a merge adds within that noise is not charged
+//     (NoiseSlack), so a ragged wall becomes one segment while a clean
+//     slanted wall keeps its steps. The cost cap is what keeps DisPL_ave
+//     low: without it the L-infinity bound alone would merge the two sides
+//     of a wall into a centre line.
 //     Rate-distortion budget: making every merge that adds at most a price
 //     per segment, cheapest first, greedily minimises summed distance +
 //     price * segments, the Lagrangian form of "fewest segments for a given
@@ -48,14 +51,15 @@
 //  7. Corners: wall ends that meet at a corner are extended to it.
 // Parameters (LineExtractionOptions, all in cells; defaults chosen on
 // ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
-// bound), split_epsilon_cells 0.3 (0.1 in FollowPixelSteps: pieces are exact
-// runs), merge_gap_cells 8 (below a doorway at 5 cm/cell),
+// bound), split_epsilon_cells 0.1 (pieces are exact runs; 0.3 in
+// StraightWalls), merge_gap_cells 8 (below a doorway at 5 cm/cell),
 // max_added_cost_cells 3 (times epsilon^2), free_merge_cost_cells 0.95
-// (times epsilon^2; the price of a segment), target_mean_distance_cells 0
-// and distance_growth_factor 0 (no budget; 0.05 times epsilon and 1 in
-// FollowPixelSteps), prune_added_cost_cells 3 (1.5 in FollowPixelSteps;
-// times epsilon^2), noise_merge_factor and
-// noise_window_cells (see lines.h), min_component_cells 2 (lone cells are
+// (times epsilon^2; the price of a segment), target_mean_distance_cells 0.05
+// (times epsilon) and distance_growth_factor 1 (no budget in StraightWalls),
+// prune_added_cost_cells 1.5 (3 in StraightWalls; times epsilon^2),
+// noise_merge_factor 1.5 with noise_window_cells 4, noise_min_mean_cells
+// 0.35 and noise_min_cells 16 (a wall's own noise is forgiven, see
+// NoiseSlack; off in StraightWalls), min_component_cells 2 (lone cells are
 // speckle), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
 // the re-evaluation of a group against its neighbours after each merge.
@@ -183,10 +187,25 @@ class ChainMoments {
     const int n = static_cast<int>(x_.size());
     const int size = std::min(n, 2 * half + 1);
     const int begin = std::clamp(i - half, 0, n - size);
-    if (size <= 2) return 0;
+    if (size <= 2 || Monotone(begin, begin + size)) return 0;
     const FittedLine line = Fit(begin, begin + size);
     return std::abs((x_[i] - line.centroid.x()) * -line.direction.y() +
                     (y_[i] - line.centroid.y()) * line.direction.x());
+  }
+
+  // True when cells [begin, end) never turn back along either axis: a
+  // staircase (a digitised straight wall or curve) has no noise to forgive,
+  // a wall ragged by +-1 cell goes up and down.
+  bool Monotone(int begin, int end) const {
+    int sign_x = 0, sign_y = 0;
+    for (int k = begin + 1; k < end; ++k) {
+      const int dx = (x_[k] > x_[k - 1]) - (x_[k] < x_[k - 1]);
+      const int dy = (y_[k] > y_[k - 1]) - (y_[k] < y_[k - 1]);
+      if ((dx && sign_x && dx != sign_x) || (dy && sign_y && dy != sign_y)) return false;
+      if (dx) sign_x = dx;
+      if (dy) sign_y = dy;
+    }
+    return true;
   }
 
   // True when every cell of [begin, end) is within epsilon of its TLS line.
@@ -347,10 +366,12 @@ double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
 
 // What a merge may cost; see MergeGroups.
 struct MergeLimits {
-  double epsilon = 1;       // the bound, cells
-  double max_added = 3;     // summed distance a merge may add at most, cells
-  double noise_factor = 0;  // merged cost may reach this times the summed local noise
-  double free_added = 3;    // merges adding at most this (cells) are always made
+  double epsilon = 1;          // the bound, cells
+  double max_added = 3;        // summed distance a merge may add at most, cells
+  double noise_factor = 0;     // merged cost may reach this times the summed local noise
+  double noise_min_mean = 0;   // ... when the merged cells' mean noise is at least this
+  double noise_min_cells = 0;  // ... and they are at least this many
+  double free_added = 3;       // merges adding at most this (cells) are always made
   // Dearer merges are made only while the chained cells' summed distance to
   // their segments stays at most this (cells).
   double total_budget = std::numeric_limits<double>::infinity();
@@ -395,14 +416,29 @@ bool EndsWithinGap(const Group& a, const Group& b, double gap) {
          SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
 }
 
-// Evaluates merging groups a and b: false when the union breaks the bound
-// or adds more than max_added to the summed distance; otherwise *line and
-// *sweep describe the union's segment.
+// The part of a merge's added distance (`added`, exact or a lower bound)
+// that is charged as a merge's cost: what it adds beyond what the parts'
+// local noise allows (NoiseSlack: noise_factor times their summed noise,
+// less their cost; only for groups of noise_min_cells cells or more whose
+// mean noise is at least noise_min_mean). A wall ragged by its own noise
+// merges for free up to that noise; a clean staircase, whose noise is 0
+// (ChainMoments::LocalResidual), pays for every step it loses. Equal to
+// `added` when noise_factor is 0.
+double NoiseSlack(const Group& a, const Group& b, const MergeLimits& limits) {
+  const double cells = static_cast<double>(a.cells.size() + b.cells.size());
+  const double noise = a.noise + b.noise;
+  if (cells < limits.noise_min_cells || noise < limits.noise_min_mean * cells) return 0;
+  return std::max(0.0, limits.noise_factor * noise - a.cost - b.cost);
+}
+double ChargedCost(const Group& a, const Group& b, double added, const MergeLimits& limits) {
+  return added - std::min(NoiseSlack(a, b, limits), std::max(added, 0.0));
+}
+
 // The summed distance a merged group may reach: its parts' cost plus
-// max_added, or, when larger, noise_factor times the parts' summed local
-// noise (a merge may raise the mean distance up to the walls' own noise).
+// max_added or, when larger, the noise slack (a merge may raise the mean
+// distance up to the walls' own noise).
 double MergeBudget(const Group& a, const Group& b, const MergeLimits& limits) {
-  return std::max(a.cost + b.cost + limits.max_added, limits.noise_factor * (a.noise + b.noise));
+  return a.cost + b.cost + std::max(limits.max_added, NoiseSlack(a, b, limits));
 }
 
 // The merged moments of a and b (O(1)); their TLS line is the merge's line.
@@ -461,10 +497,12 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
 
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
 // bound holds and each merge adds at most max_added_cost to the summed
-// distance; a merge adding more than limits.free_added is made only while
-// *total_cost (the chained cells' summed distance, kept up to date) stays
-// within limits.total_budget. Pairs are candidates when an end of one is
-// within `gap` of the other segment. Lazy greedy: a pair is queued under an
+// distance beyond the noise slack; a merge charged more than
+// limits.free_added (ChargedCost: what it adds beyond the walls' own noise)
+// is made only while *total_cost (the pieces' summed distance plus the
+// charges of the merges made) stays within limits.total_budget. Queue keys
+// are charged costs. Pairs are candidates when an end of one is within
+// `gap` of the other segment. Lazy greedy: a pair is queued under an
 // O(1) lower bound of its added cost (MergeLowerBound) and swept over its
 // cells only when it reaches the top; it is merged then if its exact cost is
 // still the cheapest, else requeued under the exact cost. Pairs that a merge
@@ -511,8 +549,10 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
         const Group& a = (*groups)[g];
         const Group& b = (*groups)[h];
         if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        const double bound = MergeLowerBound(a, b, limits);
-        if (bound == std::numeric_limits<double>::infinity() || over_budget(bound)) continue;
+        const double lower = MergeLowerBound(a, b, limits);
+        if (lower == std::numeric_limits<double>::infinity()) continue;
+        const double bound = ChargedCost(a, b, lower, limits);
+        if (over_budget(bound)) continue;
         push({bound, g, h, version[g], version[h]});
       }
     }
@@ -536,9 +576,10 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     }
     // A merge over the budget left is not made: stop its sweep there.
     const double allowed =
-        std::max(limits.free_added + kRoundingSlack, limits.total_budget - *total_cost);
+        std::max(limits.free_added + kRoundingSlack, limits.total_budget - *total_cost) +
+        NoiseSlack(a, b, limits);
     if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
-    c.added = sweep.cost - a.cost - b.cost;
+    c.added = ChargedCost(a, b, sweep.cost - a.cost - b.cost, limits);
     if (!heap.empty() && c.added > heap.front().added) {
       push(c);  // no longer the cheapest: wait for its turn
       continue;
@@ -897,8 +938,12 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   }
 
   const double split_epsilon = std::min(epsilon, options.split_epsilon_cells);
-  MergeLimits limits{epsilon, options.max_added_cost_cells * epsilon * epsilon,
-                     options.noise_merge_factor, options.free_merge_cost_cells * epsilon * epsilon};
+  MergeLimits limits{epsilon,
+                     options.max_added_cost_cells * epsilon * epsilon,
+                     options.noise_merge_factor,
+                     options.noise_min_mean_cells,
+                     static_cast<double>(options.noise_min_cells),
+                     options.free_merge_cost_cells * epsilon * epsilon};
   std::vector<Group> groups;
   for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
     const ChainMoments chain_moments(chain, width);

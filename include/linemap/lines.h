@@ -97,13 +97,12 @@ struct LineExtractionOptions {
   // exactly, stop near target_mean_distance_cells; maps with much speckle or
   // ragged walls, whose pieces already leave a large mean distance, merge
   // further. 0 (with distance_growth_factor 0) = no budget: every merge up
-  // to max_added_cost_cells is made.
-  double target_mean_distance_cells = 0.0;
+  // to max_added_cost_cells is made (StraightWalls()).
+  double target_mean_distance_cells = 0.05;
   // linemap extractor: see target_mean_distance_cells (dimensionless;
   // suggested 1: the merges may at most double the unmerged pieces' mean
-  // distance, plus the target).
-  // Both are 0 by default (no budget); FollowPixelSteps() sets 0.05 and 1.
-  double distance_growth_factor = 0.0;
+  // distance, plus the target; StraightWalls() sets 0).
+  double distance_growth_factor = 1.0;
   // linemap extractor: a segment whose cells all lie within epsilon of other
   // segments is dropped (its cells handed over) when that adds at most this
   // to the summed distance (cells, scaled by epsilon_cells^2, and at most
@@ -112,28 +111,41 @@ struct LineExtractionOptions {
   // lone cell one cell beside a wall goes, a staircase step of several cells
   // one cell off its neighbours stays (on ../shared/maps 1-1.6 give the same
   // passes, 2 and 3 drop so many steps that two clean maps fail).
-  // Default 3 (= max_added_cost_cells); FollowPixelSteps() sets 1.5.
-  double prune_added_cost_cells = 3.0;
-  // linemap extractor: a merge may also go ahead when the merged cells' mean
-  // distance to their segment stays within this factor of their mean local
-  // noise (each cell's distance to the TLS line of the 2 * noise_window_cells
-  // + 1 chain cells around it), so noisy walls merge into long segments
-  // (dimensionless; 0 = off, the default: on ../shared/maps 1.2 saves 3-8%
-  // of the lines but raises DisPL_ave about as much, because a digitised
-  // curve's local noise lets its pieces merge too; suggested 1.2 when fewer
-  // lines matter more than distance).
-  double noise_merge_factor = 0.0;
-  // linemap extractor: half-width of the local-noise window (chain cells).
+  // StraightWalls() sets 3 (= max_added_cost_cells).
+  double prune_added_cost_cells = 1.5;
+  // linemap extractor: a wall's own noise is forgiven. A cell's local noise
+  // is its distance to the TLS line of the 2 * noise_window_cells + 1 chain
+  // cells around it, and 0 where those cells never turn back along either
+  // axis (a staircase: a digitised straight wall or curve is exact, not
+  // noisy). A merge may raise the merged cells' summed distance up to this
+  // factor times their summed noise without paying for it (neither against
+  // max_added_cost_cells nor against the distance budget), when the merged
+  // group has at least noise_min_cells cells of mean noise at least
+  // noise_min_mean_cells: so a wall ragged by +-1 cell becomes one segment
+  // while the steps of a clean slanted wall, and small noisy objects, keep
+  // their segments (dimensionless; suggested 1.5; on ../shared/maps 1.2-2
+  // give the same passes; 0 = off, StraightWalls()).
+  double noise_merge_factor = 1.5;
+  // linemap extractor: half-width of the local-noise window (chain cells;
+  // suggested 4).
   int noise_window_cells = 4;
+  // linemap extractor: see noise_merge_factor (cells; suggested 0.35: a wall
+  // ragged by +-1 cell has a mean noise of about 0.5, a clean wall with a
+  // few noisy corners far less; 0.3-0.4 give the same passes).
+  double noise_min_mean_cells = 0.35;
+  // linemap extractor: see noise_merge_factor (cells; suggested 16: shorter
+  // noisy groups are objects whose outline matters, not ragged walls; 10
+  // loses two clean maps).
+  int noise_min_cells = 16;
   // linemap extractor: chains are first cut into pieces within this distance
   // of their line (cells; capped at epsilon_cells), then merged under
   // epsilon_cells and max_added_cost_cells. Below 0.5 the pieces are digital
   // straight segments, so the two sides of a wall never start merged.
   // Default 0.3: pieces that spread a staircase by up to 0.3 cells, so that
-  // a slanted wall becomes one slanted segment. FollowPixelSteps() sets 0.1:
-  // (nearly) exact runs of cells, e.g. one step of a staircase, so that the
-  // merge decides every step of a slanted wall by its cost.
-  double split_epsilon_cells = 0.3;
+  // a slanted wall becomes one slanted segment (StraightWalls()). Default
+  // 0.1: (nearly) exact runs of cells, e.g. one step of a staircase, so that
+  // the merge decides every step of a slanted wall by its cost.
+  double split_epsilon_cells = 0.1;
   // linemap extractor: segment ends at most this far apart (cells) that meet
   // at more than 20 degrees are extended to their common corner (0 = off).
   double corner_join_cells = 3.0;
@@ -151,18 +163,16 @@ struct LineExtraction {
 
 StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOptions& options);
 
-// `options` with the linemap extractor set to follow the pixel steps of
-// slanted walls on clean maps: exact pieces (split_epsilon_cells 0.1), a
-// distance budget for the dearer merges (target_mean_distance_cells 0.05,
-// distance_growth_factor 1) and a cheaper prune (prune_added_cost_cells
-// 1.5). It trades line count for the paper's DisPL_ave: on ../shared/maps it
-// is Pareto-better than RM-Line (at most 0.7x its lines, no larger DisPL_ave)
-// on 21 of 25 maps against 16 for the defaults, with about 15 % more work.
-// The price is geometry a robot would not draw: a slanted wall of 4-cell
-// steps keeps a segment per step, and a wall ragged by +-1 cell becomes a
-// few segments hugging it instead of one centre line. `linemap lines
-// --follow-steps`.
-LineExtractionOptions FollowPixelSteps(LineExtractionOptions options);
+// `options` with the linemap extractor set to draw each straight wall as one
+// segment: pieces that spread a staircase by up to 0.3 cells
+// (split_epsilon_cells), no distance budget, the prune at
+// max_added_cost_cells and no noise forgiveness. Fewer lines (on
+// ../shared/maps about 0.75x the defaults'), but a higher DisPL_ave on clean
+// maps, where the defaults follow the pixel steps of slanted walls as the
+// paper's measure rewards (Pareto-better than RM-Line on 16 of 25 maps
+// against 21). The .lmap encoder uses it for its wall layer. `linemap lines
+// --straight-walls`.
+LineExtractionOptions StraightWalls(LineExtractionOptions options);
 
 // The paper's measures (section 3.1, Eq. 5) over the edge cells.
 struct LineFidelity {

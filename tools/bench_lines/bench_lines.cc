@@ -4,11 +4,13 @@
 // both, whether linemap is Pareto-better (<= 0.7x the lines and a DisPL_ave no
 // larger) and whether its epsilon bound holds on every non-furniture edge cell.
 //
-// Usage: bench_lines [MAPS_DIR] [--follow-steps] [--epsilon E] [--max-added-cost C] [--merge-gap G]
+// Usage: bench_lines [MAPS_DIR] [--straight-walls] [--epsilon E] [--max-added-cost C] [--merge-gap
+// G]
 //                    [--split-epsilon S] [--free-cost C] [--target-distance T]
 //                    [--growth G] [--prune-cost C]
 //                    [--min-component N] [--noise-factor F]
-//                    [--noise-window W] [--runs N] [--rm-cache FILE]
+//                    [--noise-window W] [--noise-min-mean M] [--noise-min-cells N]
+//                    [--runs N] [--rm-cache FILE]
 // --rm-cache FILE: RM-Line's lines, DisPL and ms per map are read from FILE
 // when it exists (written by an earlier run otherwise), to tune linemap fast.
 // Times are the fastest of N runs (default 3) of ExtractLines() alone, in
@@ -127,8 +129,8 @@ int Main(int argc, char** argv) {
   std::string rm_cache;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--follow-steps") {
-      lm = FollowPixelSteps(lm);
+    if (arg == "--straight-walls") {
+      lm = StraightWalls(lm);
     } else if (arg == "--epsilon" && i + 1 < argc) {
       lm.epsilon_cells = std::atof(argv[++i]);
     } else if (arg == "--max-added-cost" && i + 1 < argc) {
@@ -151,6 +153,10 @@ int Main(int argc, char** argv) {
       lm.noise_merge_factor = std::atof(argv[++i]);
     } else if (arg == "--noise-window" && i + 1 < argc) {
       lm.noise_window_cells = std::atoi(argv[++i]);
+    } else if (arg == "--noise-min-mean" && i + 1 < argc) {
+      lm.noise_min_mean_cells = std::atof(argv[++i]);
+    } else if (arg == "--noise-min-cells" && i + 1 < argc) {
+      lm.noise_min_cells = std::atoi(argv[++i]);
     } else if (arg == "--rm-cache" && i + 1 < argc) {
       rm_cache = argv[++i];
     } else if (arg == "--runs" && i + 1 < argc) {
@@ -206,11 +212,11 @@ int Main(int argc, char** argv) {
       "\nPareto-better (<= 0.7x lines and DisPL_ave <= RM-Line's) on %d of %d maps; "
       "epsilon %.2f cells, split epsilon %.2f, merge gap %.1f, max added cost %.1f, free cost "
       "%.2f, target distance %.3f, growth %.2f, prune cost %.2f, min component %d, noise factor "
-      "%.2f, noise window %d\n",
+      "%.2f, noise window %d, noise min mean %.2f, noise min cells %d\n",
       pareto, counted, lm.epsilon_cells, lm.split_epsilon_cells, lm.merge_gap_cells,
       lm.max_added_cost_cells, lm.free_merge_cost_cells, lm.target_mean_distance_cells,
       lm.distance_growth_factor, lm.prune_added_cost_cells, lm.min_component_cells,
-      lm.noise_merge_factor, lm.noise_window_cells);
+      lm.noise_merge_factor, lm.noise_window_cells, lm.noise_min_mean_cells, lm.noise_min_cells);
   return 0;
 }
 

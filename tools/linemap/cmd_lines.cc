@@ -34,9 +34,10 @@ const CommandSpec kLinesSpec = {
         {"--max-added-cost", "C",
          "linemap: a merge may add at most C cells to the summed cell-to-segment distance "
          "(default 3; lower = closer fit, more lines)"},
-        {"--follow-steps", "",
-         "linemap: follow the pixel steps of slanted walls on clean maps (more lines, "
-         "lower DisPL_ave; see FollowPixelSteps in linemap/lines.h)"},
+        {"--straight-walls", "",
+         "linemap: one segment per straight wall instead of following the pixel steps of "
+         "slanted walls (fewer lines, higher DisPL_ave on clean maps; see StraightWalls in "
+         "linemap/lines.h)"},
         {"--pose", "X,Y", "robot position in map metres; flood only its free component"},
         {"--json", "",
          "print one JSON object with keys lines, displ_cm, displ_cells, "
@@ -50,7 +51,7 @@ namespace {
 
 StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Grid& grid) {
   LineExtractionOptions options;
-  if (args.Has("--follow-steps")) options = FollowPixelSteps(options);
+  if (args.Has("--straight-walls")) options = StraightWalls(options);
   const std::string method = args.Get("--method").value_or("linemap");
   if (method == "rmline") {
     options.method = LineMethod::kRmLine;

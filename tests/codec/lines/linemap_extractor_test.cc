@@ -201,7 +201,7 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   // The obstacle fills rows 0..20 + j(col), j random in {-1, 0, 1}, across
   // the whole width; free above. Its edge map is the ragged top boundary,
   // within rows 19..21, so one horizontal segment on row 20 bounds it by 1.5.
-  // Default options: the merge cost cap scales with epsilon.
+  // Default options: the wall's own noise is forgiven (noise_merge_factor).
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> jitter(-1, 1);
   Grid grid(80, 40, Cell::kFree);
@@ -217,16 +217,22 @@ TEST(LinemapExtractorTest, RaggedWallGivesOneSegmentAtEpsilonOneAndAHalf) {
   EXPECT_NEAR(0.5 * (s.y1 + s.y2), 20, 0.5);
   const double one_segment = MeasureLineFidelity(result->edges, result->segments).displ_ave_cells;
 
-  // FollowPixelSteps (exact pieces, distance budget): a few segments that
-  // follow the wall closer, within the same bound.
-  const LineExtractionOptions steps = FollowPixelSteps(LinemapOptions(1.5));
-  StatusOr<LineExtraction> budgeted = ExtractLines(grid, steps);
+  // Without the noise forgiven, the distance budget keeps a few segments
+  // that hug the wall, within the same bound.
+  LineExtractionOptions hugging = LinemapOptions(1.5);
+  hugging.noise_merge_factor = 0;
+  StatusOr<LineExtraction> budgeted = ExtractLines(grid, hugging);
   ASSERT_TRUE(budgeted.ok());
   EXPECT_GE(budgeted->segments.size(), 2u);
   EXPECT_LE(budgeted->segments.size(), 8u);
-  ExpectBoundHolds(*budgeted, steps);
+  ExpectBoundHolds(*budgeted, hugging);
   EXPECT_LT(MeasureLineFidelity(budgeted->edges, budgeted->segments).displ_ave_cells,
             0.5 * one_segment);
+
+  // StraightWalls (no budget) also draws the one centre line.
+  StatusOr<LineExtraction> straight = ExtractLines(grid, StraightWalls(LinemapOptions(1.5)));
+  ASSERT_TRUE(straight.ok());
+  EXPECT_EQ(straight->segments.size(), 1u);
 }
 
 // The obstacle fills rows 0..5 + col / step across the width, free above (at
@@ -243,9 +249,9 @@ Grid StaircaseGrid(int step) {
 
 TEST(LinemapExtractorTest, StaircaseOfShortStepsGivesOneSlantedSegment) {
   // Merging steps of two cells costs less than free_merge_cost_cells each:
-  // one segment along the slope, with the defaults and when following steps.
+  // one segment along the slope, with the defaults and with StraightWalls.
   for (const LineExtractionOptions& options :
-       {LinemapOptions(1.0), FollowPixelSteps(LinemapOptions(1.0))}) {
+       {LinemapOptions(1.0), StraightWalls(LinemapOptions(1.0))}) {
     StatusOr<LineExtraction> result = ExtractLines(StaircaseGrid(2), options);
     ASSERT_TRUE(result.ok());
     ASSERT_EQ(result->segments.size(), 1u);
@@ -258,12 +264,12 @@ TEST(LinemapExtractorTest, StaircaseOfShortStepsGivesOneSlantedSegment) {
 TEST(LinemapExtractorTest, StaircaseOfLongStepsKeepsItsStepsUnderTheDistanceBudget) {
   // Steps of four cells: merging two costs about two cells of summed
   // distance, above free_merge_cost_cells, so the map's distance budget
-  // (nearly all of it left: the pieces fit exactly) decides. Following
-  // steps, most steps keep their exact segment; without a budget (the
-  // defaults' choice) the cost cap alone merges the staircase into one
-  // slanted segment.
+  // (nearly all of it left: the pieces fit exactly) decides: with the
+  // defaults most steps keep their exact segment (a staircase has no noise
+  // to forgive); without a budget the cost cap alone merges the staircase
+  // into one slanted segment.
   const Grid grid = StaircaseGrid(4);
-  const LineExtractionOptions steps = FollowPixelSteps(LinemapOptions(1.0));
+  const LineExtractionOptions steps = LinemapOptions(1.0);
   StatusOr<LineExtraction> budgeted = ExtractLines(grid, steps);
   ASSERT_TRUE(budgeted.ok());
   EXPECT_GE(budgeted->segments.size(), 10u);
@@ -281,11 +287,12 @@ TEST(LinemapExtractorTest, StaircaseOfLongStepsKeepsItsStepsUnderTheDistanceBudg
   EXPECT_GT(MeasureLineFidelity(merged->edges, merged->segments).displ_ave_cells,
             kept.displ_ave_cells);
 
-  // The defaults draw the wall a robot sees: one slanted segment.
-  StatusOr<LineExtraction> defaults = ExtractLines(grid, LinemapOptions(1.0));
-  ASSERT_TRUE(defaults.ok());
-  EXPECT_EQ(defaults->segments.size(), 1u);
-  ExpectBoundHolds(*defaults, LinemapOptions(1.0));
+  // StraightWalls draws the wall as one slanted segment.
+  const LineExtractionOptions straight_options = StraightWalls(LinemapOptions(1.0));
+  StatusOr<LineExtraction> straight = ExtractLines(grid, straight_options);
+  ASSERT_TRUE(straight.ok());
+  EXPECT_EQ(straight->segments.size(), 1u);
+  ExpectBoundHolds(*straight, straight_options);
 }
 
 TEST(LinemapExtractorTest, SpeckleIsLeftToTheFurnitureLayerAndCounted) {

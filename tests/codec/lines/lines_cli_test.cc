@@ -71,15 +71,15 @@ std::string WriteStaircaseMap(const std::string& dir) {
   return SaveMap(dir, "stairs", grid);
 }
 
-TEST(LinesCliTest, FollowStepsKeepsTheStepsOfASlantedWall) {
+TEST(LinesCliTest, StraightWallsDrawsASlantedWallAsOneSegment) {
   const std::string dir = testing::MakeTempDir("lines_cli_steps");
   const std::string yaml = WriteStaircaseMap(dir);
-  const testing::CliResult plain = RunCli({"lines", yaml, "--json"});
-  const testing::CliResult steps = RunCli({"lines", yaml, "--json", "--follow-steps"});
-  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const testing::CliResult steps = RunCli({"lines", yaml, "--json"});
+  const testing::CliResult straight = RunCli({"lines", yaml, "--json", "--straight-walls"});
   ASSERT_EQ(steps.exit_code, 0) << steps.err;
-  EXPECT_NE(plain.out.find("\"lines\":1,"), std::string::npos) << plain.out;
+  ASSERT_EQ(straight.exit_code, 0) << straight.err;
   EXPECT_EQ(steps.out.find("\"lines\":1,"), std::string::npos) << steps.out;
+  EXPECT_NE(straight.out.find("\"lines\":1,"), std::string::npos) << straight.out;
 }
 
 TEST(LinesCliTest, PoseSelectsTheComponent) {
