@@ -209,12 +209,13 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results) {
 
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
-               "lmap enc ms/Mcell", "lmap dec ms/Mcell"});
+               "linemap lines ms/Mcell", "lmap enc ms/Mcell", "lmap dec ms/Mcell"});
   for (const ScalingRow& row : rows) {
     table.AddRow(
         {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
          FormatFixed(row.png_encode_ms_per_mcell, 1), FormatFixed(row.png_decode_ms_per_mcell, 1),
-         FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.lmap_encode_ms_per_mcell, 1),
+         FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.linemap_lines_ms_per_mcell, 1),
+         FormatFixed(row.lmap_encode_ms_per_mcell, 1),
          FormatFixed(row.lmap_decode_ms_per_mcell, 1)});
   }
   auto spread = [&](auto get) -> std::optional<double> {
@@ -243,13 +244,18 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
        FormatFixed(
            spread([](const ScalingRow& r) { return std::optional<double>(r.rmline_ms_per_mcell); }),
            0),
+       FormatFixed(spread([](const ScalingRow& r) {
+                     return std::optional<double>(r.linemap_lines_ms_per_mcell);
+                   }),
+                   0),
        FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; }), 0),
        FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0)});
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
           "repeated tiles and speed up); CPU time per Mcell "
-          "(median of `runs`: at least 9 up to 16 Mcells, 5 at 64; RM-Line one run). spread = "
+          "(median of `runs`: at least 9 up to 16 Mcells, 5 at 64; RM-Line and linemap lines one "
+          "run). spread = "
           "largest / "
           "smallest - 1 (goal: "
           "within 25%).",

@@ -248,6 +248,7 @@ struct ScalingMap {
   std::vector<std::uint8_t> lmap;
   std::vector<double> png_encode_ms, png_decode_ms, lmap_encode_ms, lmap_decode_ms;
   double rmline_ms = 0;
+  double linemap_lines_ms = 0;
 };
 
 }  // namespace
@@ -278,6 +279,8 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     LineExtractionOptions options;
     options.method = LineMethod::kRmLine;
     map.rmline_ms = TimeRuns([&] { (void)ExtractLines(map.grid, options); }, 1)[0];
+    const LineExtractionOptions linemap_defaults;
+    map.linemap_lines_ms = TimeRuns([&] { (void)ExtractLines(map.grid, linemap_defaults); }, 1)[0];
     maps.push_back(std::move(map));
   }
   // The runs are interleaved (round k times every size once), so that a slow
@@ -310,6 +313,7 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     if (!map.png_decode_ms.empty())
       row.png_decode_ms_per_mcell = Median(map.png_decode_ms) / mcells;
     row.rmline_ms_per_mcell = map.rmline_ms / mcells;
+    row.linemap_lines_ms_per_mcell = map.linemap_lines_ms / mcells;
     if (!map.lmap_encode_ms.empty()) {
       row.lmap_encode_ms_per_mcell = Median(map.lmap_encode_ms) / mcells;
       row.lmap_decode_ms_per_mcell = Median(map.lmap_decode_ms) / mcells;

@@ -31,6 +31,7 @@ struct ScalingRow {
   double png_encode_ms_per_mcell = 0;
   double png_decode_ms_per_mcell = 0;
   double rmline_ms_per_mcell = 0;
+  double linemap_lines_ms_per_mcell = 0;  // ExtractLines() with the defaults
   std::optional<double> lmap_encode_ms_per_mcell;
   std::optional<double> lmap_decode_ms_per_mcell;
 };
