@@ -53,6 +53,7 @@ LineExtractionOptions StraightWalls(LineExtractionOptions options) {
   options.distance_growth_factor = 0;
   options.prune_added_cost_cells = 3.0;
   options.noise_merge_factor = 0;
+  options.speck_max_cells = 0;
   return options;
 }
 

@@ -46,9 +46,17 @@
 //  5. Prune: a segment whose cells all lie within epsilon of other segments
 //     (and cost at most prune_added_cost_cells more there) is dropped,
 //     smallest first, handing its cells over.
-//  6. Polish: each line moves towards the least-absolute-distance line of its
+//  6. Specks: a segment of at most speck_max_cells cells that holds whole
+//     edge components, with no other segment within speck_min_gap_cells of
+//     its cells, is a speck, not a wall: it is left to the furniture layer (its cells become speckle)
+//     when that adds at most speck_max_added_cells to the summed distance,
+//     cheapest first, while the distance budget of step 4 allows. Clean
+//     maps have little budget left, so their isolated specks keep their
+//     segments; noisy SLAM maps, whose speckle already leaves a large mean
+//     distance, hand many of them over.
+//  7. Polish: each line moves towards the least-absolute-distance line of its
 //     cells (iteratively reweighted TLS), only while the bound holds.
-//  7. Corners: wall ends that meet at a corner are extended to it.
+//  8. Corners: wall ends that meet at a corner are extended to it.
 // Parameters (LineExtractionOptions, all in cells; defaults chosen on
 // ../shared/maps with tools/bench_lines): epsilon_cells 1 (the guaranteed
 // bound), split_epsilon_cells 0.1 (pieces are exact runs; 0.3 in
@@ -60,7 +68,8 @@
 // noise_merge_factor 1.5 with noise_window_cells 4, noise_min_mean_cells
 // 0.35 and noise_min_cells 16 (a wall's own noise is forgiven, see
 // NoiseSlack; off in StraightWalls), min_component_cells 2 (lone cells are
-// speckle), corner_join_cells 3.
+// speckle), speck_max_cells 3 with speck_min_gap_cells 2 and
+// speck_max_added_cells 64 (off in StraightWalls), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
 // the re-evaluation of a group against its neighbours after each merge.
 #include "codec/lines/linemap_extractor.h"
@@ -681,7 +690,90 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
   }
 }
 
-// Step 6: moves each group's line towards the least-absolute-distance line
+// True when `cells` are whole 8-connected components of the edge map: no
+// edge cell outside them touches one of them.
+bool HoldsWholeComponents(const EdgeMap& edges, const std::vector<CellXY>& cells) {
+  for (const CellXY& c : cells) {
+    for (int k = 0; k < 8; ++k) {
+      const int col = c.col + kDcol[k], row = c.row + kDrow[k];
+      if (col < 0 || row < 0 || col >= edges.width || row >= edges.height) continue;
+      if (!edges.is_edge[static_cast<std::size_t>(row) * edges.width + col]) continue;
+      const bool inside = std::any_of(cells.begin(), cells.end(), [&](const CellXY& other) {
+        return other.col == col && other.row == row;
+      });
+      if (!inside) return false;
+    }
+  }
+  return true;
+}
+
+// Step 6: specks. Segments of at most `max_cells` cells that hold whole
+// edge components and whose cells are all at least `min_gap` from every
+// other segment are left to the furniture layer when that adds at most
+// `max_added` to the summed distance (the cells' distances to the nearest
+// remaining segment, less their distance to their own), in order of that
+// cost when the step starts (recomputed as specks go), while *total_cost
+// stays within `budget`. Returns the cells handed over (raster indices);
+// their groups die.
+std::vector<std::uint32_t> LeaveSpecksToFurniture(const EdgeMap& edges, std::vector<Group>* groups,
+                                                  std::size_t max_cells, double min_gap,
+                                                  double max_added, double budget,
+                                                  double* total_cost) {
+  std::vector<std::uint32_t> handed_over;
+  if (max_cells == 0) return handed_over;
+  const int width = edges.width, height = edges.height;
+  std::vector<LineSegment> segments;
+  std::vector<std::uint32_t> group_of;
+  for (std::uint32_t id = 0; id < groups->size(); ++id) {
+    if (!(*groups)[id].alive) continue;
+    segments.push_back((*groups)[id].segment);
+    group_of.push_back(id);
+  }
+  SegmentIndex index(&segments, width, height);
+  std::vector<std::uint8_t> gone(segments.size(), 0);
+  // What leaving segment s's cells to the furniture layer adds to the
+  // summed distance; infinity when another segment is within min_gap.
+  auto added_cost = [&](std::uint32_t s) {
+    const Group& group = (*groups)[group_of[s]];
+    gone[s] = 1;
+    double added = -group.cost;
+    for (const CellXY& c : group.cells) {
+      const double d = index.NearestDistance(c.col, c.row, &gone);
+      if (d < min_gap) {
+        added = std::numeric_limits<double>::infinity();
+        break;
+      }
+      added += d;
+    }
+    gone[s] = 0;
+    return added;
+  };
+  std::vector<std::pair<double, std::uint32_t>> specks;  // (added cost, segment)
+  for (std::uint32_t s = 0; s < segments.size(); ++s) {
+    const Group& group = (*groups)[group_of[s]];
+    if (group.cells.size() > max_cells || !HoldsWholeComponents(edges, group.cells)) continue;
+    const double added = added_cost(s);
+    if (added <= max_added) specks.push_back({added, s});
+  }
+  std::stable_sort(specks.begin(), specks.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [first_cost, s] : specks) {
+    const double added = added_cost(s);  // higher if a nearer speck went
+    if (!(added <= max_added) || *total_cost + added > budget) continue;
+    *total_cost += added;
+    gone[s] = 1;
+    Group& group = (*groups)[group_of[s]];
+    for (const CellXY& c : group.cells) {
+      handed_over.push_back(static_cast<std::uint32_t>(c.row) * static_cast<std::uint32_t>(width) +
+                            static_cast<std::uint32_t>(c.col));
+    }
+    group.alive = false;
+    group.cells = {};
+  }
+  return handed_over;
+}
+
+// Step 7: moves each group's line towards the least-absolute-distance line
 // of its cells (what DisPL_ave measures) by iteratively reweighted total
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
@@ -743,7 +835,7 @@ void PolishGroupL1(Group* group, double epsilon) {
   group->segment = SegmentFromProjections(best, xs.data(), ys.data(), n);
 }
 
-// Step 7: corners. Two segments whose ends are within `reach` cells of each
+// Step 8: corners. Two segments whose ends are within `reach` cells of each
 // other and which meet at more than 20 degrees are both extended to the
 // intersection of their lines when that point lies beyond both ends and
 // within `reach` of each, so that decoded walls close at corners. Segments
@@ -927,6 +1019,10 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   const double epsilon = options.epsilon_cells;
   if (!(epsilon > 0)) return InvalidArgumentError("epsilon must be positive");
   if (!(options.merge_gap_cells >= 0)) return InvalidArgumentError("merge gap must be >= 0");
+  if (options.speck_max_cells < 0 || !(options.speck_min_gap_cells >= 0) ||
+      !(options.speck_max_added_cells >= 0)) {
+    return InvalidArgumentError("speck options must be >= 0");
+  }
   const int width = edges.width, height = edges.height;
   const std::vector<std::uint32_t> edge_cells = EdgeCellList(edges);
   // First the cells to chain (1), then, cleared by the tracing, scratch.
@@ -973,6 +1069,11 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   PruneCoveredGroups(
       &groups, width, height, epsilon,
       std::min(limits.max_added, options.prune_added_cost_cells * epsilon * epsilon));
+  const std::vector<std::uint32_t> specks = LeaveSpecksToFurniture(
+      edges, &groups, static_cast<std::size_t>(options.speck_max_cells),
+      options.speck_min_gap_cells, options.speck_max_added_cells, limits.total_budget,
+      &total_cost);
+  speckle.insert(speckle.end(), specks.begin(), specks.end());
   for (Group& group : groups) {
     if (group.alive) PolishGroupL1(&group, epsilon);
   }

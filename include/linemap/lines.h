@@ -65,6 +65,23 @@ struct LineExtractionOptions {
   // this, and not within epsilon of a segment, are left to the furniture
   // layer instead of getting their own segment (speckle; 2 = lone cells).
   int min_component_cells = 2;
+  // linemap extractor: specks. A segment fitted to at most speck_max_cells
+  // cells, which are whole edge components (8-connected) and all lie at
+  // least speck_min_gap_cells from every other segment, is a speck (SLAM noise, a chair leg), not a wall: its cells are
+  // left to the furniture layer (and counted there) when that adds at most
+  // speck_max_added_cells to the summed distance of the edge cells to their
+  // nearest segment, cheapest first, while the distance budget of
+  // target_mean_distance_cells allows. Clean maps have little budget left
+  // after the merges and keep their specks; noisy SLAM maps hand many over
+  // (rosnav1/willow-full-0.05: 1190 -> 899 lines, DisPL_ave 2.09 -> 3.49
+  // cells). Suggested 3 cells (2 hands over too few specks on that map, 4
+  // nearly costs strands/bham its DisPL_ave lead), a gap of 2 cells (1.5-4
+  // give the same passes on ../shared/maps) and 64 cells (32-128 at a gap of
+  // 2 give the same passes; no cap spends the whole budget, which costs
+  // mrpt/map1 its lead). speck_max_cells 0 = off (StraightWalls()).
+  int speck_max_cells = 3;
+  double speck_min_gap_cells = 2.0;
+  double speck_max_added_cells = 64.0;
   // linemap extractor: a merge (or the removal of a covered segment) is made
   // only if it adds at most this much to the summed distance of the cells to
   // their segment (cells). It trades one segment against DisPL_ave: merging
@@ -167,7 +184,8 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
 // `options` with the linemap extractor set to draw each straight wall as one
 // segment: pieces that spread a staircase by up to 0.3 cells
 // (split_epsilon_cells), no distance budget, the prune at
-// max_added_cost_cells and no noise forgiveness. Fewer lines (on
+// max_added_cost_cells, no noise forgiveness and no specks left to the
+// furniture layer. Fewer lines (on
 // ../shared/maps a median 339 against the defaults' 469), but a higher
 // DisPL_ave (0.96 cm against 0.60 at the median), most on clean
 // maps, where the defaults follow the pixel steps of slanted walls as the

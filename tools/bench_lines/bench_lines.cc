@@ -8,7 +8,8 @@
 // G]
 //                    [--split-epsilon S] [--free-cost C] [--target-distance T]
 //                    [--growth G] [--prune-cost C]
-//                    [--min-component N] [--noise-factor F]
+//                    [--min-component N] [--speck-max-cells N] [--speck-gap G]
+//                    [--speck-max-added C] [--noise-factor F]
 //                    [--noise-window W] [--noise-min-mean M] [--noise-min-cells N]
 //                    [--runs N] [--rm-cache FILE]
 // --rm-cache FILE: RM-Line's lines, DisPL and ms per map are read from FILE
@@ -149,6 +150,12 @@ int Main(int argc, char** argv) {
       lm.merge_gap_cells = std::atof(argv[++i]);
     } else if (arg == "--min-component" && i + 1 < argc) {
       lm.min_component_cells = std::atoi(argv[++i]);
+    } else if (arg == "--speck-max-cells" && i + 1 < argc) {
+      lm.speck_max_cells = std::atoi(argv[++i]);
+    } else if (arg == "--speck-gap" && i + 1 < argc) {
+      lm.speck_min_gap_cells = std::atof(argv[++i]);
+    } else if (arg == "--speck-max-added" && i + 1 < argc) {
+      lm.speck_max_added_cells = std::atof(argv[++i]);
     } else if (arg == "--noise-factor" && i + 1 < argc) {
       lm.noise_merge_factor = std::atof(argv[++i]);
     } else if (arg == "--noise-window" && i + 1 < argc) {
@@ -212,11 +219,13 @@ int Main(int argc, char** argv) {
       "\nPareto-better (<= 0.7x lines and DisPL_ave <= RM-Line's) on %d of %d maps; "
       "epsilon %.2f cells, split epsilon %.2f, merge gap %.1f, max added cost %.1f, free cost "
       "%.2f, target distance %.3f, growth %.2f, prune cost %.2f, min component %d, noise factor "
-      "%.2f, noise window %d, noise min mean %.2f, noise min cells %d\n",
+      "%.2f, noise window %d, noise min mean %.2f, noise min cells %d, speck max cells %d, speck "
+      "gap %.1f, speck max added %.0f\n",
       pareto, counted, lm.epsilon_cells, lm.split_epsilon_cells, lm.merge_gap_cells,
       lm.max_added_cost_cells, lm.free_merge_cost_cells, lm.target_mean_distance_cells,
       lm.distance_growth_factor, lm.prune_added_cost_cells, lm.min_component_cells,
-      lm.noise_merge_factor, lm.noise_window_cells, lm.noise_min_mean_cells, lm.noise_min_cells);
+      lm.noise_merge_factor, lm.noise_window_cells, lm.noise_min_mean_cells, lm.noise_min_cells,
+      lm.speck_max_cells, lm.speck_min_gap_cells, lm.speck_max_added_cells);
   return 0;
 }
 
