@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <string_view>
 
@@ -120,6 +121,12 @@ StatusOr<RawImage> DecodePgm(std::span<const std::uint8_t> bytes, const std::str
   const std::uint64_t cells = width * height;
   const std::size_t bytes_per_sample = maxval > 255 ? 2 : 1;
   std::size_t pos = header.position();
+  // Checked before the raster is allocated: a header may claim any size. An
+  // ASCII sample takes at least one digit and one separator.
+  if (ascii && bytes.size() - pos < 2 * cells - 1) {
+    return CorruptError(name + ": PGM raster is truncated (" + std::to_string(bytes.size() - pos) +
+                        " bytes for " + std::to_string(cells) + " ASCII pixels)");
+  }
   if (!ascii && bytes.size() - pos < cells * bytes_per_sample) {
     return CorruptError(name + ": PGM raster is truncated (" + std::to_string(bytes.size() - pos) +
                         " bytes for " + std::to_string(cells) + " pixels)");
@@ -235,10 +242,37 @@ StatusOr<RawImage> DecodePng(std::span<const std::uint8_t> bytes, const std::str
   return image;
 }
 
+namespace {
+
+// True when `prefix` (the first bytes of a file) can start a PNG or a PGM.
+bool LooksLikeMapImage(const std::uint8_t* prefix, std::size_t size) {
+  if (size >= 8 && png_sig_cmp(prefix, 0, 8) == 0) return true;
+  return size >= 2 && prefix[0] == 'P' && (prefix[1] == '5' || prefix[1] == '2');
+}
+
+// The first up to 8 bytes of `path` (fewer if it is shorter or cannot be
+// read: ReadFileBytes then says why).
+std::size_t ReadSignature(const std::string& path, std::uint8_t (&prefix)[8]) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return 0;
+  const std::size_t size = std::fread(prefix, 1, sizeof(prefix), file);
+  std::fclose(file);
+  return size;
+}
+
+}  // namespace
+
 StatusOr<RawImage> ReadImageFile(const std::string& path, std::uint64_t max_cells) {
+  const std::string name = "'" + path + "'";
+  // A file that is no image (or an endless stream such as /dev/zero) is
+  // refused on its first bytes, not after reading gigabytes of it.
+  std::uint8_t prefix[8];
+  const std::size_t prefix_size = ReadSignature(path, prefix);
+  if (prefix_size >= 2 && !LooksLikeMapImage(prefix, prefix_size)) {
+    return CorruptError(name + ": not a map image (PGM P2/P5 or PNG expected)");
+  }
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
                            ReadFileBytes(path, kMaxImageFileBytes));
-  const std::string name = "'" + path + "'";
   if (bytes.empty()) return CorruptError(name + ": file is empty, not a map image");
   if (bytes.size() >= 8 && png_sig_cmp(bytes.data(), 0, 8) == 0) {
     return DecodePng(bytes, name, max_cells);

@@ -191,6 +191,24 @@ TEST(ImageTest, RejectsMalformedImages) {
   EXPECT_EQ(LoadRosMap(dir + "/huge.pgm").status().code(), StatusCode::kResourceExhausted);
 }
 
+TEST(ImageTest, RefusesANonImageOnItsFirstBytes) {
+  // An endless stream: read whole, it would take gigabytes before the
+  // signature check.
+  StatusOr<RawImage> image = ReadImageFile("/dev/zero", std::uint64_t{1} << 28);
+  ASSERT_FALSE(image.ok());
+  EXPECT_EQ(image.status().code(), StatusCode::kCorrupt);
+  EXPECT_NE(image.status().message().find("/dev/zero"), std::string::npos);
+}
+
+TEST(ImageTest, AsciiPgmClaimingMoreCellsThanItsBytesIsTruncated) {
+  const std::string dir = MakeTempDir("img");
+  WriteFile(dir + "/short_ascii.pgm", "P2 16384 16383 255\n0 0 0\n");
+  StatusOr<RawImage> image = ReadImageFile(dir + "/short_ascii.pgm", std::uint64_t{1} << 28);
+  ASSERT_FALSE(image.ok());
+  EXPECT_EQ(image.status().code(), StatusCode::kCorrupt);
+  EXPECT_NE(image.status().message().find("truncated"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace linemap
 
