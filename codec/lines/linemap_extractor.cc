@@ -639,16 +639,27 @@ double DistanceBudget(const std::vector<Group>& groups, const std::vector<std::u
   return *chained_cost + growth * (*chained_cost + speckle_cost) + target * cells;
 }
 
+// The segments of the live groups, and the group of each.
+struct LiveSegments {
+  std::vector<LineSegment> segments;
+  std::vector<std::uint32_t> group_of;
+};
+LiveSegments CollectLiveSegments(const std::vector<Group>& groups) {
+  LiveSegments live;
+  for (std::uint32_t id = 0; id < groups.size(); ++id) {
+    if (!groups[id].alive) continue;
+    live.segments.push_back(groups[id].segment);
+    live.group_of.push_back(id);
+  }
+  return live;
+}
+
 // Step 5: drop groups whose cells are all within epsilon of other segments.
 void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, double epsilon,
                         double max_added_cost) {
-  std::vector<LineSegment> segments;
-  std::vector<std::uint32_t> group_of;
-  for (std::uint32_t id = 0; id < groups->size(); ++id) {
-    if (!(*groups)[id].alive) continue;
-    segments.push_back((*groups)[id].segment);
-    group_of.push_back(id);
-  }
+  const LiveSegments live = CollectLiveSegments(*groups);
+  const std::vector<LineSegment>& segments = live.segments;
+  const std::vector<std::uint32_t>& group_of = live.group_of;
   SegmentIndex index(&segments, width, height);
   std::vector<std::uint8_t> skip(segments.size(), 0);
   std::vector<std::uint32_t> order(segments.size());
@@ -722,13 +733,9 @@ std::vector<std::uint32_t> LeaveSpecksToFurniture(const EdgeMap& edges, std::vec
   std::vector<std::uint32_t> handed_over;
   if (max_cells == 0) return handed_over;
   const int width = edges.width, height = edges.height;
-  std::vector<LineSegment> segments;
-  std::vector<std::uint32_t> group_of;
-  for (std::uint32_t id = 0; id < groups->size(); ++id) {
-    if (!(*groups)[id].alive) continue;
-    segments.push_back((*groups)[id].segment);
-    group_of.push_back(id);
-  }
+  const LiveSegments live = CollectLiveSegments(*groups);
+  const std::vector<LineSegment>& segments = live.segments;
+  const std::vector<std::uint32_t>& group_of = live.group_of;
   SegmentIndex index(&segments, width, height);
   std::vector<std::uint8_t> gone(segments.size(), 0);
   // What leaving segment s's cells to the furniture layer adds to the
