@@ -48,11 +48,13 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
     auto length_or = cursor.ReadVarint("chunk length");
     if (!length_or.ok()) return CorruptError("chunk " + name + " has a malformed length");
     const std::uint64_t length = *length_or;
+    // Past the end of the file is corrupt whatever the limit; over the
+    // caller's limit, resource exhausted.
+    if (length > cursor.remaining()) return CorruptError("chunk " + name + " is truncated");
     if (length > max_chunk_bytes) {
       return ResourceExhaustedError("chunk " + name + " has " + std::to_string(length) +
                                     " bytes, over the limit of " + std::to_string(max_chunk_bytes));
     }
-    if (length > cursor.remaining()) return CorruptError("chunk " + name + " is truncated");
     auto payload = cursor.ReadBytes(static_cast<std::size_t>(length), "chunk payload");
     if (!payload.ok()) return CorruptError("chunk " + name + " is truncated");
     auto crc = cursor.ReadU32("chunk CRC");

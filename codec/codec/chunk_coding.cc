@@ -59,14 +59,15 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
       *coder = PayloadCoder::kDeflate;
       auto inflated = cursor.ReadVarint("inflated size");
       if (!inflated.ok()) return inflated.status();
+      // Deflate expands at most ~1032:1; a larger claim is corrupt whatever
+      // the limit, so it is checked first.
+      if (*inflated > 1032 * std::uint64_t{cursor.remaining()} + 64) {
+        return CorruptError("inflated size is impossible for the deflate data");
+      }
       if (*inflated > limits.max_inflated_bytes) {
         return ResourceExhaustedError("inflated size " + std::to_string(*inflated) +
                                       " is over the limit of " +
                                       std::to_string(limits.max_inflated_bytes));
-      }
-      // Deflate expands at most ~1032:1; a larger claim is corrupt.
-      if (*inflated > 1032 * std::uint64_t{cursor.remaining()} + 64) {
-        return CorruptError("inflated size is impossible for the deflate data");
       }
       const std::size_t at = cursor.position();
       return InflateBytes(payload + at, size - at, static_cast<std::size_t>(*inflated));
@@ -76,7 +77,8 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
       *coder = PayloadCoder::kDraco;
       return std::vector<std::uint8_t>(payload + 1, payload + size);
     default:
-      return CorruptError("unknown payload coder " + std::to_string(kind));
+      // Reserved for later minor versions: well-formed, just not known here.
+      return UnsupportedError("unknown payload coder " + std::to_string(kind));
   }
 }
 
@@ -232,11 +234,14 @@ std::vector<std::uint8_t> WriteSegments(const std::vector<LatticeSegment>& segme
 StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_t>& body, int width,
                                                    int height, const DecodeLimits& limits) {
   ByteCursor c(body);
-  // Each segment takes at least 4 bytes.
-  LINEMAP_ASSIGN_OR_RETURN(
-      std::uint64_t count,
-      c.ReadVarintAtMost(std::min<std::uint64_t>(limits.max_segments, body.size() / 4),
-                         "segment count"));
+  // Each segment takes at least 4 bytes: a larger count is impossible for the
+  // body (corrupt); the caller's limit is checked second (resource exhausted).
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count,
+                           c.ReadVarintAtMost(body.size() / 4, "segment count"));
+  if (count > limits.max_segments) {
+    return ResourceExhaustedError("segment count " + std::to_string(count) +
+                                  " is over the limit of " + std::to_string(limits.max_segments));
+  }
   std::vector<LatticeSegment> segments;
   segments.reserve(count);
   CellIndex prev{0, 0};
@@ -245,14 +250,21 @@ StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t col, c.ReadVarintAtMost(width, "segment column"));
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t length_rows, c.ReadVarintAtMost(height, "segment rows"));
     LINEMAP_ASSIGN_OR_RETURN(std::int64_t dcol, c.ReadSignedVarint("segment columns"));
-    LatticeSegment s;
-    s.a.row = prev.row + static_cast<int>(drow);
-    s.a.col = static_cast<int>(drow == 0 ? prev.col + static_cast<std::int64_t>(col) : col);
-    const std::int64_t brow = std::int64_t{s.a.row} + static_cast<std::int64_t>(length_rows);
-    const std::int64_t bcol = std::int64_t{s.a.col} + dcol;
-    if (s.a.row >= height || s.a.col >= width || brow >= height || bcol < 0 || bcol >= width) {
+    // In 64 bits and checked before narrowing: near 2^31 cells a sum of two
+    // in-range fields can wrap an int to a negative position.
+    const std::int64_t arow = std::int64_t{prev.row} + static_cast<std::int64_t>(drow);
+    const std::int64_t acol = static_cast<std::int64_t>(col) + (drow == 0 ? prev.col : 0);
+    const std::int64_t brow = arow + static_cast<std::int64_t>(length_rows);
+    // |dcol| > width puts b outside anyway; the test keeps acol + dcol from
+    // overflowing.
+    const bool dcol_ok = dcol >= -std::int64_t{width} && dcol <= width;
+    const std::int64_t bcol = dcol_ok ? acol + dcol : -1;
+    if (arow < 0 || arow >= height || acol < 0 || acol >= width || brow < 0 || brow >= height ||
+        bcol < 0 || bcol >= width) {
       return CorruptError("segment " + std::to_string(i) + " lies outside the map");
     }
+    LatticeSegment s;
+    s.a = CellIndex{static_cast<int>(acol), static_cast<int>(arow)};
     s.b = CellIndex{static_cast<int>(bcol), static_cast<int>(brow)};
     if (Before(s.b, s.a)) return CorruptError("segment " + std::to_string(i) + " is not canonical");
     segments.push_back(s);
@@ -289,9 +301,14 @@ StatusOr<std::vector<std::vector<CellIndex>>> ReadChains(const std::vector<std::
   std::uint64_t total = 0;
   for (std::uint64_t k = 0; k < count; ++k) {
     const std::string name = "chain " + std::to_string(k);
-    LINEMAP_ASSIGN_OR_RETURN(std::uint64_t length,
-                             c.ReadVarintAtMost(limits.max_chain_length - total, "chain length"));
+    LINEMAP_ASSIGN_OR_RETURN(std::uint64_t length, c.ReadVarint("chain length"));
+    // Steps past the body are corrupt; past the caller's limit, resource
+    // exhausted (total <= limit here, so the subtraction cannot wrap).
     if (length == 0 || length - 1 > c.remaining()) return CorruptError(name + " has a bad length");
+    if (length > limits.max_chain_length - total) {
+      return ResourceExhaustedError(name + " takes the chain cells over the limit of " +
+                                    std::to_string(limits.max_chain_length));
+    }
     total += length;
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t col, c.ReadVarintAtMost(width - 1, "chain column"));
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t row, c.ReadVarintAtMost(height - 1, "chain row"));

@@ -34,9 +34,17 @@ Status CheckDracoPointCount(const std::vector<std::uint8_t>& body, const DecodeL
   // Entropy coding can pack very regular segments far below a bit each, so
   // the body-size bound is generous: it only stops tiny bodies that claim
   // millions of points (the allocation then stays within ~16 KiB per byte).
-  if (points > limits.max_segments || points > kMaxDracoPointsPerByte * body.size()) {
+  // Over it the file breaks a format rule (corrupt); over the caller's limit
+  // it is resource exhausted.
+  // Draco reads the count as an int32: a negative one is never valid.
+  if (points > 0x7FFFFFFF || points > kMaxDracoPointsPerByte * body.size()) {
+    return CorruptError("Draco data claims " + std::to_string(points) +
+                        " segments, more than its size allows");
+  }
+  if (points > limits.max_segments) {
     return ResourceExhaustedError("Draco data claims " + std::to_string(points) +
-                                  " segments, over the limit or the data size");
+                                  " segments, over the limit of " +
+                                  std::to_string(limits.max_segments));
   }
   return Status::Ok();
 }
@@ -61,6 +69,8 @@ std::vector<std::uint8_t> EncodeSegmentsDraco(const std::vector<LatticeSegment>&
   encoder.SetSpeedOptions(0, 0);  // best compression
   draco::EncoderBuffer buffer;
   if (!encoder.EncodePointCloudToBuffer(*cloud, &buffer).ok()) return {};
+  // The decoder refuses denser claims; never write what it would refuse.
+  if (segments.size() > kMaxDracoPointsPerByte * buffer.size()) return {};
   return std::vector<std::uint8_t>(buffer.data(), buffer.data() + buffer.size());
 }
 
@@ -75,6 +85,8 @@ StatusOr<std::vector<LatticeSegment>> DecodeSegmentsDraco(const std::vector<std:
   if (!decoded.ok()) {
     return CorruptError(std::string("Draco data is malformed: ") + decoded.status().error_msg());
   }
+  // As in the varint form, nothing may follow the coded segments.
+  if (buffer.remaining_size() != 0) return CorruptError("Draco data has trailing bytes");
   const std::unique_ptr<draco::PointCloud>& cloud = decoded.value();
   if (cloud->num_points() > limits.max_segments) {
     return ResourceExhaustedError("more segments than the limit");

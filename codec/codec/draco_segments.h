@@ -17,7 +17,9 @@ namespace linemap {
 std::vector<std::uint8_t> EncodeSegmentsDraco(const std::vector<LatticeSegment>& segments);
 
 // Decodes and checks the segments as the varint form is checked (inside the
-// grid, canonical, at most the segment limit).
+// grid, canonical, at most the segment limit, no trailing bytes), after the
+// header rules of spec 4.5.1 (sequential point cloud, no metadata, at most
+// 1024 points per byte).
 StatusOr<std::vector<LatticeSegment>> DecodeSegmentsDraco(const std::vector<std::uint8_t>& body,
                                                           int width, int height,
                                                           const DecodeLimits& limits);

@@ -28,6 +28,7 @@ const BadFile kBadFiles[] = {
     {"data_after_lend.lmap", "data after the LEND chunk"},
     {"draco_in_free_chunk.lmap", "chunk FREE: only SEGS may use the Draco payload coder"},
     {"draco_malformed.lmap", "chunk SEGS: Draco data"},
+    {"draco_trailing_bytes.lmap", "chunk SEGS: Draco data has trailing bytes"},
     {"empty.lmap", "bad signature"},
     {"huge_dimensions.lmap", "over the limit"},
     {"inflate_bomb.lmap", "chunk FREE: inflated size"},
@@ -76,7 +77,8 @@ TEST(LmapBadFiles, EveryFileInTheFolderHasARow) {
 }
 
 // A Draco SEGS body whose header claims 2^31 - 1 points: refused from the
-// header, before the Draco decoder could allocate for that many points.
+// header, before the Draco decoder could allocate for that many points
+// (corrupt: more than 1024 points per body byte).
 TEST(LmapBadFiles, DracoPointCountIsCheckedBeforeDraco) {
   const std::vector<LatticeSegment> segments = {{{0, 0}, {5, 0}}, {{1, 2}, {1, 7}}};
   std::vector<std::uint8_t> body = EncodeSegmentsDraco(segments);
@@ -92,14 +94,15 @@ TEST(LmapBadFiles, DracoPointCountIsCheckedBeforeDraco) {
   body[14] = 0x7F;
   auto huge = DecodeSegmentsDraco(body, 10, 10, DecodeLimits{});
   ASSERT_FALSE(huge.ok());
-  EXPECT_EQ(huge.status().code(), StatusCode::kResourceExhausted) << huge.status().ToString();
+  EXPECT_EQ(huge.status().code(), StatusCode::kCorrupt) << huge.status().ToString();
   EXPECT_NE(huge.status().message().find("2147483647 segments"), std::string::npos);
 
   DecodeLimits tight;
   tight.max_segments = 1;
   body[11] = 2;
   body[12] = body[13] = body[14] = 0;
-  EXPECT_FALSE(DecodeSegmentsDraco(body, 10, 10, tight).ok());
+  EXPECT_EQ(DecodeSegmentsDraco(body, 10, 10, tight).status().code(),
+            StatusCode::kResourceExhausted);
 }
 
 }  // namespace
