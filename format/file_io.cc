@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -43,6 +44,12 @@ Status WriteAll(int fd, std::string_view data, const std::string& path) {
 bool IsDirectory(const std::string& path) {
   struct stat st;
   return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+bool IsSameFile(const std::string& a, const std::string& b) {
+  struct stat sa, sb;
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+         sa.st_ino == sb.st_ino;
 }
 
 StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
@@ -96,29 +103,93 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
 
 namespace {
 
-// Writes `data` to a new temporary file beside `path`; flushes it to disk
-// when `durability` is kSynced.
-StatusOr<std::string> WriteTemporary(const std::string& path, std::string_view data,
-                                     Durability durability) {
-  if (path.empty()) return InvalidArgumentError("empty output file name");
-  if (IsDirectory(path)) {
+constexpr int kMaxSymlinkHops = 40;  // as the kernel's ELOOP limit
+
+// Where a save to `path` must go: the file at the end of a chain of symlinks
+// (so a "current map" link keeps pointing at the new contents), or `path`
+// itself when it is not a symlink. A dangling link gives the file it names.
+StatusOr<std::string> ResolveTarget(const std::string& path) {
+  std::string target = path;
+  for (int hop = 0; hop < kMaxSymlinkHops; ++hop) {
+    struct stat st;
+    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
+    std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
+    const ssize_t n = ::readlink(target.c_str(), link.data(), link.size());
+    if (n < 0) {
+      return IoError("cannot read the symlink " + Quoted(target) + ": " + ErrnoText(errno));
+    }
+    if (static_cast<std::size_t>(n) >= link.size()) {
+      return IoError("the symlink " + Quoted(target) + " changed while being read");
+    }
+    link.resize(static_cast<std::size_t>(n));
+    target = link[0] == '/' ? link : DirectoryOf(target) + "/" + link;
+  }
+  return IoError(Quoted(path) + ": too many levels of symbolic links");
+}
+
+// What a replaced file keeps: its permission bits and owner.
+struct ExistingFile {
+  bool exists = false;
+  struct stat st = {};
+};
+
+// Refuses to replace a file the caller may not write (as cp without -f
+// does): one with no write permission for us, or none for anyone (root may
+// write anything, but a 0444 map was made read-only on purpose).
+StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::string& target) {
+  ExistingFile existing;
+  // A target that cannot be looked at (missing, or its folder is) is
+  // created; creating the temporary file beside it reports what is wrong.
+  if (::stat(target.c_str(), &existing.st) != 0) return existing;
+  existing.exists = true;
+  if (S_ISDIR(existing.st.st_mode)) {
     return InvalidArgumentError(Quoted(path) + " is a directory; give a file name");
   }
-  std::string tmp = path + ".tmp-XXXXXX";
+  if (!S_ISREG(existing.st.st_mode)) {
+    return InvalidArgumentError(Quoted(path) + " is not a regular file; not replacing it");
+  }
+  if (::access(target.c_str(), W_OK) != 0 || (existing.st.st_mode & 0222) == 0) {
+    char mode[8];
+    std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(existing.st.st_mode & 07777));
+    return IoError("cannot replace " + Quoted(path) + ": " + ErrnoText(EACCES) +
+                   " (the file is read-only, mode " + mode + "; make it writable or remove it)");
+  }
+  return existing;
+}
+
+// Writes `data` to a new temporary file beside `target`, the file `path`
+// resolves to; flushes it to disk when `durability` is kSynced. The new file
+// gets the permission bits (and, where allowed, the owner) of an existing
+// `target`, else the mode a plain create would give.
+StatusOr<std::string> WriteTemporary(const std::string& path, const std::string& target,
+                                     const ExistingFile& existing, std::string_view data,
+                                     Durability durability) {
+  std::string tmp = target + ".tmp-XXXXXX";
   const int fd = ::mkstemp(tmp.data());
   if (fd < 0) {
-    return IoError("cannot create a file in " + Quoted(DirectoryOf(path)) + " for " + Quoted(path) +
-                   ": " + ErrnoText(errno));
+    return IoError("cannot create a file in " + Quoted(DirectoryOf(target)) + " for " +
+                   Quoted(path) + ": " + ErrnoText(errno));
   }
   Status status = WriteAll(fd, data, path);
   if (status.ok() && durability == Durability::kSynced && ::fsync(fd) != 0) {
     status = IoError("cannot flush " + Quoted(path) + " to disk: " + ErrnoText(errno));
   }
   if (status.ok()) {
-    // mkstemp creates files 0600; give the file the mode a plain create would.
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
+    mode_t mode = 0;
+    if (existing.exists) {
+      mode = existing.st.st_mode & 0777;
+      // Best effort, as the replaced file's owner is not ours to insist on:
+      // only root (or the owner, for the group) may give a file away.
+      (void)::fchown(fd, existing.st.st_uid, existing.st.st_gid);
+    } else {
+      // mkstemp creates files 0600; give the file the mode a plain create would.
+      const mode_t mask = ::umask(0);
+      ::umask(mask);
+      mode = 0666 & ~mask;
+    }
+    if (::fchmod(fd, mode) != 0) {
+      status = IoError("cannot set the permissions of " + Quoted(path) + ": " + ErrnoText(errno));
+    }
   }
   if (::close(fd) != 0 && status.ok()) {
     status = IoError("cannot close " + Quoted(path) + ": " + ErrnoText(errno));
@@ -141,12 +212,23 @@ void SyncDirectory(const std::string& dir) {
 }  // namespace
 
 Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durability) {
+  // Every target is resolved and checked before anything is written.
+  std::vector<std::string> targets;
+  std::vector<ExistingFile> existing;
+  for (const FileToWrite& file : files) {
+    if (file.path.empty()) return InvalidArgumentError("empty output file name");
+    LINEMAP_ASSIGN_OR_RETURN(std::string target, ResolveTarget(file.path));
+    LINEMAP_ASSIGN_OR_RETURN(ExistingFile old, CheckReplaceable(file.path, target));
+    targets.push_back(std::move(target));
+    existing.push_back(old);
+  }
   std::vector<std::string> temporaries;
   auto remove_temporaries = [&temporaries](std::size_t from) {
     for (std::size_t i = from; i < temporaries.size(); ++i) ::unlink(temporaries[i].c_str());
   };
-  for (const FileToWrite& file : files) {
-    StatusOr<std::string> tmp = WriteTemporary(file.path, file.data, durability);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    StatusOr<std::string> tmp =
+        WriteTemporary(files[i].path, targets[i], existing[i], files[i].data, durability);
     if (!tmp.ok()) {
       remove_temporaries(0);
       return tmp.status();
@@ -154,7 +236,7 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durabi
     temporaries.push_back(*tmp);
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temporaries[i].c_str(), files[i].path.c_str()) != 0) {
+    if (::rename(temporaries[i].c_str(), targets[i].c_str()) != 0) {
       const int err = errno;
       remove_temporaries(i);
       return IoError("cannot rename the new file onto " + Quoted(files[i].path) + ": " +
@@ -163,8 +245,8 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durabi
   }
   if (durability == Durability::kSynced) {
     std::vector<std::string> synced;
-    for (const FileToWrite& file : files) {
-      const std::string dir = DirectoryOf(file.path);
+    for (const std::string& target : targets) {
+      const std::string dir = DirectoryOf(target);
       if (std::find(synced.begin(), synced.end(), dir) != synced.end()) continue;
       SyncDirectory(dir);
       synced.push_back(dir);

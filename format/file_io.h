@@ -41,6 +41,10 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files,
 // True when `path` names an existing directory.
 bool IsDirectory(const std::string& path);
 
+// True when `a` and `b` both exist and are the same file (same device and
+// inode, after following symlinks): hard links and symlinks included.
+bool IsSameFile(const std::string& a, const std::string& b);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_FORMAT_FILE_IO_H_

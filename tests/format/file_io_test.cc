@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -91,6 +92,100 @@ TEST(FileIoTest, WriteIntoAReadOnlyFileSystemFails) {
   const Status status = WriteFileAtomic("/proc/linemap-test.lmap", "x");
   EXPECT_FALSE(status.ok());
   EXPECT_NE(status.message().find("/proc/linemap-test.lmap"), std::string::npos);
+}
+
+mode_t ModeOf(const std::string& path) {
+  struct stat st;
+  EXPECT_EQ(::stat(path.c_str(), &st), 0) << path;
+  return st.st_mode & 07777;
+}
+
+bool IsSymlink(const std::string& path) {
+  struct stat st;
+  return ::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode);
+}
+
+// A "current map" symlink stays a symlink: the file it points at gets the
+// new contents (through a chain of links and a relative target too).
+TEST(FileIoTest, SaveThroughASymlinkReplacesItsTarget) {
+  const std::string dir = MakeTempDir("fio_link");
+  ::mkdir((dir + "/maps").c_str(), 0755);
+  WriteFile(dir + "/maps/real.lmap", "old");
+  ASSERT_EQ(::symlink("maps/real.lmap", (dir + "/current.lmap").c_str()), 0);
+  ASSERT_EQ(::symlink("current.lmap", (dir + "/alias.lmap").c_str()), 0);
+  ASSERT_TRUE(WriteFileAtomic(dir + "/current.lmap", "new").ok());
+  EXPECT_TRUE(IsSymlink(dir + "/current.lmap"));
+  EXPECT_EQ(ReadFile(dir + "/maps/real.lmap"), "new");
+  ASSERT_TRUE(WriteFileAtomic(dir + "/alias.lmap", "newer", Durability::kUnsynced).ok());
+  EXPECT_TRUE(IsSymlink(dir + "/alias.lmap"));
+  EXPECT_TRUE(IsSymlink(dir + "/current.lmap"));
+  EXPECT_EQ(ReadFile(dir + "/maps/real.lmap"), "newer");
+  // Absolute targets, and a dangling link creates the file it names.
+  ASSERT_EQ(::symlink((dir + "/maps/later.lmap").c_str(), (dir + "/next.lmap").c_str()), 0);
+  ASSERT_TRUE(WriteFileAtomic(dir + "/next.lmap", "created").ok());
+  EXPECT_TRUE(IsSymlink(dir + "/next.lmap"));
+  EXPECT_EQ(ReadFile(dir + "/maps/later.lmap"), "created");
+  EXPECT_EQ(testing::ListDir(dir + "/maps"), (std::vector<std::string>{"later.lmap", "real.lmap"}));
+  // A loop is an error naming the file, and writes nothing.
+  ASSERT_EQ(::symlink("loop_b.lmap", (dir + "/loop_a.lmap").c_str()), 0);
+  ASSERT_EQ(::symlink("loop_a.lmap", (dir + "/loop_b.lmap").c_str()), 0);
+  const Status loop = WriteFileAtomic(dir + "/loop_a.lmap", "x");
+  EXPECT_FALSE(loop.ok());
+  EXPECT_NE(loop.message().find("loop_a.lmap"), std::string::npos) << loop.message();
+}
+
+TEST(FileIoTest, ReplacedFileKeepsItsPermissionBits) {
+  const std::string dir = MakeTempDir("fio_mode");
+  const std::string target = dir + "/map.lmap";
+  WriteFile(target, "old");
+  ASSERT_EQ(::chmod(target.c_str(), 0640), 0);
+  ASSERT_TRUE(WriteFileAtomic(target, "new").ok());
+  EXPECT_EQ(ReadFile(target), "new");
+  EXPECT_EQ(ModeOf(target), 0640u);
+  ASSERT_EQ(::chmod(target.c_str(), 0604), 0);
+  ASSERT_TRUE(WriteFileAtomic(target, "newer").ok());
+  EXPECT_EQ(ModeOf(target), 0604u);
+  // A new file gets the mode a plain create gives (0666 less the umask).
+  const mode_t mask = ::umask(022);
+  ASSERT_TRUE(WriteFileAtomic(dir + "/fresh.lmap", "x").ok());
+  ::umask(mask);
+  EXPECT_EQ(ModeOf(dir + "/fresh.lmap"), 0644u);
+}
+
+// A read-only file is refused, not replaced, even for root (which the
+// permission bits do not stop): the file and the folder stay as they were.
+TEST(FileIoTest, ReadOnlyFileIsRefused) {
+  const std::string dir = MakeTempDir("fio_ro");
+  const std::string target = dir + "/map.lmap";
+  WriteFile(target, "keep me");
+  ASSERT_EQ(::chmod(target.c_str(), 0444), 0);
+  const Status status = WriteFileAtomic(target, "new");
+  EXPECT_EQ(status.code(), StatusCode::kIoError);
+  EXPECT_NE(status.message().find("map.lmap"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("read-only"), std::string::npos) << status.message();
+  EXPECT_EQ(ReadFile(target), "keep me");
+  EXPECT_EQ(ModeOf(target), 0444u);
+  // Through a symlink too, and in a pair nothing is written.
+  ASSERT_EQ(::symlink("map.lmap", (dir + "/link.lmap").c_str()), 0);
+  EXPECT_FALSE(WriteFileAtomic(dir + "/link.lmap", "new").ok());
+  EXPECT_FALSE(WriteFilesAtomic({{dir + "/other.pgm", "pgm"}, {target, "yaml"}}).ok());
+  EXPECT_EQ(testing::ListDir(dir), (std::vector<std::string>{"link.lmap", "map.lmap"}));
+  EXPECT_EQ(ReadFile(target), "keep me");
+  ASSERT_EQ(::chmod(target.c_str(), 0644), 0);
+}
+
+TEST(FileIoTest, IsSameFileSeesLinks) {
+  const std::string dir = MakeTempDir("fio_same");
+  WriteFile(dir + "/a.pgm", "a");
+  WriteFile(dir + "/b.pgm", "a");
+  ASSERT_EQ(::link((dir + "/a.pgm").c_str(), (dir + "/hard.pgm").c_str()), 0);
+  ASSERT_EQ(::symlink("a.pgm", (dir + "/soft.pgm").c_str()), 0);
+  EXPECT_TRUE(IsSameFile(dir + "/a.pgm", dir + "/a.pgm"));
+  EXPECT_TRUE(IsSameFile(dir + "/a.pgm", dir + "/./hard.pgm"));
+  EXPECT_TRUE(IsSameFile(dir + "/soft.pgm", dir + "/a.pgm"));
+  EXPECT_FALSE(IsSameFile(dir + "/a.pgm", dir + "/b.pgm"));
+  EXPECT_FALSE(IsSameFile(dir + "/a.pgm", dir + "/missing.pgm"));
+  EXPECT_FALSE(IsSameFile(dir + "/missing.pgm", dir + "/missing.pgm"));
 }
 
 TEST(FileIoTest, KilledSaveLeavesOldOrNewCompleteFile) {
