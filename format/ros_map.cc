@@ -1,6 +1,7 @@
 // ROS map_server YAML + image reading and writing (include/linemap/map_io.h).
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -189,9 +190,58 @@ MapMetadata SavedMetadata(const MapMetadata& source) {
   return meta;
 }
 
+// True for a name YAML reads back as the same text without quotes: letters,
+// digits and "._-", not starting with '-' (map_saver's names stay as they
+// were, unquoted). The name always ends in ".pgm", so it never reads as a
+// number, a bool or null.
+bool IsPlainYamlName(const std::string& name) {
+  if (name.empty() || name[0] == '-') return false;
+  for (const char ch : name) {
+    const bool plain = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') ||
+                       (ch >= '0' && ch <= '9') || ch == '.' || ch == '_' || ch == '-';
+    if (!plain) return false;
+  }
+  return true;
+}
+
+// `name` as a YAML scalar that yaml-cpp (and so nav2's map_server) reads back
+// byte for byte, whatever the file name holds: plain when it can be, else
+// single-quoted ('' for '), else, when it holds ASCII control characters
+// (which a single-quoted scalar cannot carry: line breaks fold), double-quoted
+// with \xNN escapes. Bytes from 0x80 up are written as they are.
+std::string YamlScalar(const std::string& name) {
+  if (IsPlainYamlName(name)) return name;
+  const auto is_control = [](char ch) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    return c < 0x20 || c == 0x7f;
+  };
+  std::string out;
+  if (std::none_of(name.begin(), name.end(), is_control)) {
+    out = "'";
+    for (const char c : name) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+  }
+  out = "\"";
+  for (const char c : name) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (is_control(c)) {
+      static const char kHex[] = "0123456789ABCDEF";
+      const unsigned char u = static_cast<unsigned char>(c);
+      out += "\\x";
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 std::string YamlText(const std::string& image_name, const MapMetadata& meta) {
   std::string y;
-  y += "image: " + image_name + "\n";
+  y += "image: " + YamlScalar(image_name) + "\n";
   y += std::string("mode: ") + MapModeName(meta.mode) + "\n";
   y += "resolution: " + FormatDouble(meta.resolution) + "\n";
   y += "origin: [" + FormatDouble(meta.origin.x) + ", " + FormatDouble(meta.origin.y) + ", " +
@@ -251,6 +301,12 @@ StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options
   }
   if (!grid.ok()) return grid.status().WithContext(Quoted(path));
   return grid;
+}
+
+StatusOr<std::string> RosMapImagePath(const std::string& path) {
+  if (!IsYamlPath(path)) return path;
+  LINEMAP_ASSIGN_OR_RETURN(YamlMap yaml, ParseMapYaml(path));
+  return yaml.image_path;
 }
 
 Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability durability) {

@@ -58,6 +58,11 @@ struct MapLoadOptions {
 // 0.196, trinary, no negate) unless overridden by `options`.
 StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options = {});
 
+// The image file LoadRosMap(path) reads: for a map YAML the image it names
+// (a relative name taken from the YAML's folder), for anything else `path`
+// itself. Fails as LoadRosMap does on a YAML it cannot parse.
+StatusOr<std::string> RosMapImagePath(const std::string& path);
+
 // Classifies an image file with the given metadata (no YAML involved).
 StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
                             std::uint64_t max_cells = std::uint64_t{1} << 28);

@@ -1,6 +1,7 @@
 // Map YAML parsing, writing maps as map_saver does, and the round trip over
 // the bundled maps and every map in ../shared/maps.
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <filesystem>
 #include <random>
@@ -59,6 +60,86 @@ TEST(RosMapTest, RandomGridsRoundTripWithMetadata) {
     EXPECT_EQ(back->cells(), grid.cells()) << "seed " << seed;
     EXPECT_EQ(back->meta, grid.meta) << "seed " << seed;
   }
+}
+
+// Every legal file name survives the YAML: the image the saved YAML names
+// is read back, by LoadRosMap and by yaml-cpp (as nav2's map_server reads
+// it), byte for byte. Plain names stay unquoted, as map_saver writes them.
+TEST(RosMapTest, AnyFileNameRoundTripsThroughTheYaml) {
+  const std::string dir = MakeTempDir("ros_names");
+  const Grid grid = RandomGrid(5, 4, 9);
+  const std::vector<std::string> stems = {"plain_map-2.v1",
+                                          "my map #2",
+                                          "map: v2",
+                                          "[x]",
+                                          "{x}",
+                                          "&a",
+                                          "*a",
+                                          "!tag",
+                                          "%x",
+                                          "@x",
+                                          "`x",
+                                          "|x",
+                                          ">x",
+                                          "?x",
+                                          ",x",
+                                          "-x",
+                                          "- x",
+                                          "#",
+                                          "a'b",
+                                          "''",
+                                          "a\"b",
+                                          "a\\b",
+                                          " lead",
+                                          "trail ",
+                                          "two  spaces",
+                                          "tab\there",
+                                          "new\nline",
+                                          "cr\rx",
+                                          "\x01\x1f\x7f",
+                                          "caf\xc3\xa9",
+                                          "\xe2\x80\xa8sep",
+                                          "\xc2\x85nel",
+                                          "\xff\xfe raw bytes",
+                                          "\xef\xbb\xbf"
+                                          "bom",
+                                          "'quoted'",
+                                          "\"dq\"",
+                                          "a: b # c",
+                                          "..."};
+  for (const std::string& stem : stems) {
+    SCOPED_TRACE(stem);
+    const std::string yaml_path = dir + "/" + stem + ".yaml";
+    ASSERT_TRUE(SaveRosMap(yaml_path, grid).ok());
+    ASSERT_TRUE(FileExists(dir + "/" + stem + ".pgm"));
+    StatusOr<Grid> back = LoadRosMap(yaml_path);
+    ASSERT_TRUE(back.ok()) << back.status().message();
+    EXPECT_EQ(back->cells(), grid.cells());
+    const YAML::Node doc = YAML::Load(ReadFile(yaml_path));
+    EXPECT_EQ(doc["image"].as<std::string>(), stem + ".pgm");
+    EXPECT_DOUBLE_EQ(doc["resolution"].as<double>(), grid.meta.resolution);
+    StatusOr<std::string> image = RosMapImagePath(yaml_path);
+    ASSERT_TRUE(image.ok()) << image.status().message();
+    EXPECT_EQ(*image, dir + "/" + stem + ".pgm");
+    std::filesystem::remove(yaml_path);
+    std::filesystem::remove(dir + "/" + stem + ".pgm");
+  }
+  ASSERT_TRUE(SaveRosMap(dir + "/plain_map-2.v1.yaml", grid).ok());
+  EXPECT_EQ(ReadFile(dir + "/plain_map-2.v1.yaml").rfind("image: plain_map-2.v1.pgm\n", 0), 0u);
+  ASSERT_TRUE(SaveRosMap(dir + "/it's.yaml", grid).ok());
+  EXPECT_EQ(ReadFile(dir + "/it's.yaml").rfind("image: 'it''s.pgm'\n", 0), 0u);
+  ASSERT_TRUE(SaveRosMap(dir + "/a\tb.yaml", grid).ok());
+  EXPECT_EQ(ReadFile(dir + "/a\tb.yaml").rfind("image: \"a\\x09b.pgm\"\n", 0), 0u);
+}
+
+TEST(RosMapTest, ImagePathOfAMap) {
+  const std::string dir = MakeTempDir("ros_image_path");
+  WriteFile(dir + "/rel.yaml", "image: sub/m.pgm\nresolution: 0.05\n");
+  WriteFile(dir + "/abs.yaml", "image: /maps/m.pgm\nresolution: 0.05\n");
+  EXPECT_EQ(RosMapImagePath(dir + "/rel.yaml").value(), dir + "/sub/m.pgm");
+  EXPECT_EQ(RosMapImagePath(dir + "/abs.yaml").value(), "/maps/m.pgm");
+  EXPECT_EQ(RosMapImagePath(dir + "/bare.pgm").value(), dir + "/bare.pgm");
+  EXPECT_EQ(RosMapImagePath(dir + "/missing.yaml").status().code(), StatusCode::kNotFound);
 }
 
 TEST(RosMapTest, ThresholdsThatCannotHoldMapSaverValuesFallBackToDefaults) {
