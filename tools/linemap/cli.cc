@@ -1,10 +1,12 @@
 #include "tools/linemap/cli.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 
 namespace linemap::cli {
 namespace {
@@ -64,6 +66,25 @@ StatusOr<int> ParsedArgs::GetInt(const std::string& name, int fallback) const {
   auto result = std::from_chars(text->data(), text->data() + text->size(), v);
   if (result.ec != std::errc() || result.ptr != text->data() + text->size()) {
     return InvalidArgumentError(name + " expects a whole number, not '" + *text + "'");
+  }
+  return v;
+}
+
+StatusOr<std::uint64_t> ParsedArgs::GetUint64(const std::string& name, std::uint64_t fallback,
+                                              std::uint64_t min) const {
+  std::optional<std::string> text = Get(name);
+  if (!text) return fallback;
+  const std::string range = " from " + std::to_string(min) + " to " +
+                            std::to_string(std::numeric_limits<std::uint64_t>::max());
+  std::uint64_t v = 0;
+  const bool digits = !text->empty() && std::all_of(text->begin(), text->end(),
+                                                    [](char c) { return c >= '0' && c <= '9'; });
+  const auto result = std::from_chars(text->data(), text->data() + text->size(), v);
+  if (!digits || result.ptr != text->data() + text->size()) {
+    return InvalidArgumentError(name + " expects a whole number" + range + ", not '" + *text + "'");
+  }
+  if (result.ec == std::errc::result_out_of_range || v < min) {
+    return InvalidArgumentError(name + " must be" + range + ", not " + *text);
   }
   return v;
 }

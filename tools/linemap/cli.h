@@ -5,6 +5,7 @@
 #ifndef LINEMAP_TOOLS_LINEMAP_CLI_H_
 #define LINEMAP_TOOLS_LINEMAP_CLI_H_
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -45,6 +46,10 @@ class ParsedArgs {
   // kInvalidArgument status naming the option.
   StatusOr<double> GetDouble(const std::string& name, double fallback) const;
   StatusOr<int> GetInt(const std::string& name, int fallback) const;
+  // A count or a size: decimal digits only, from `min` up to 2^64 - 1 (no
+  // sign, fraction or exponent).
+  StatusOr<std::uint64_t> GetUint64(const std::string& name, std::uint64_t fallback,
+                                    std::uint64_t min = 0) const;
   // "A,B[,C...]" with exactly `count` numbers (or count..max_count).
   StatusOr<std::vector<double>> GetDoubleList(const std::string& name, int count,
                                               int max_count = -1) const;

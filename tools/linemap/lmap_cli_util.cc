@@ -17,16 +17,10 @@ std::vector<OptionSpec> DecodeLimitOptionSpecs() {
 
 StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
   DecodeLimits limits;
-  if (args.Get("--max-cells")) {
-    LINEMAP_ASSIGN_OR_RETURN(double v, args.GetDouble("--max-cells", 0.0));
-    if (!(v >= 1)) return InvalidArgumentError("--max-cells must be at least 1");
-    limits.max_cells = static_cast<std::uint64_t>(v);
-  }
-  if (args.Get("--max-file-bytes")) {
-    LINEMAP_ASSIGN_OR_RETURN(double v, args.GetDouble("--max-file-bytes", 0.0));
-    if (!(v >= 1)) return InvalidArgumentError("--max-file-bytes must be at least 1");
-    limits.max_file_bytes = static_cast<std::uint64_t>(v);
-  }
+  LINEMAP_ASSIGN_OR_RETURN(limits.max_cells,
+                           args.GetUint64("--max-cells", limits.max_cells, /*min=*/1));
+  LINEMAP_ASSIGN_OR_RETURN(limits.max_file_bytes,
+                           args.GetUint64("--max-file-bytes", limits.max_file_bytes, /*min=*/1));
   return limits;
 }
 

@@ -8,7 +8,8 @@ namespace linemap::cli {
 std::vector<OptionSpec> MapLoadOptionSpecs() {
   return {
       {"--resolution", "M", "metres per cell; overrides the YAML (bare images: 0.05)"},
-      {"--origin", "X,Y,YAW", "map origin in metres and radians; overrides the YAML (bare: 0,0,0)"},
+      {"--origin", "X,Y[,YAW]",
+       "map origin in metres and radians; overrides the YAML (bare: 0,0,0)"},
       {"--negate", "", "treat dark pixels as free (the YAML's negate: 1)"},
       {"--occupied-thresh", "P", "occupancy above which a pixel is occupied (default 0.65)"},
       {"--free-thresh", "P", "occupancy below which a pixel is free (default 0.196)"},
@@ -53,11 +54,8 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
       return InvalidArgumentError("--mode must be trinary, scale or raw, not '" + *mode + "'");
     }
   }
-  if (args.Get("--max-cells")) {
-    LINEMAP_ASSIGN_OR_RETURN(double v, args.GetDouble("--max-cells", 0.0));
-    if (v < 1) return InvalidArgumentError("--max-cells must be at least 1");
-    options.max_cells = static_cast<std::uint64_t>(v);
-  }
+  LINEMAP_ASSIGN_OR_RETURN(options.max_cells,
+                           args.GetUint64("--max-cells", options.max_cells, /*min=*/1));
   return options;
 }
 
