@@ -1,11 +1,15 @@
-// linemap encode MAP -o OUT.lmap [--lossless] [--simplify-free] [--method linemap|rmline]
+// linemap encode MAP -o OUT.lmap [--lossless | --simplify-free] [--method linemap|rmline]
 //                 [--epsilon E] [--pose X,Y[,YAW]] [--json]
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <future>
+#include <string_view>
 #include <system_error>
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/map_io.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
 #include "tools/linemap/lmap_cli_util.h"
@@ -15,19 +19,22 @@ namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
     "encode",
-    "MAP -o OUT.lmap [--lossless] [--simplify-free] [--method linemap|rmline] [--epsilon E] "
-    "[--pose X,Y]",
+    "MAP -o OUT.lmap [--lossless | --simplify-free] [--method linemap|rmline] [--epsilon E] "
+    "[--pose X,Y[,YAW]]",
     "compress a map into an .lmap file",
     "Prints the input cells, the output bytes, the ratio to the smallest PNG\n"
     "(zlib level 9, grey or palette) of the same trinary map, and the time.\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
-    "by a complete new file.",
+    "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
+    "map or the image its YAML names.",
     WithMapLoadOptions({
-        {"-o", "OUT.lmap", "output file (required)"},
+        {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--lossless", "", "store a residual so the decoded grid equals the input exactly"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
         {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
-        {"--pose", "X,Y[,YAW]", "robot pose in map-frame metres, stored as metadata"},
+        {"--pose", "X,Y[,YAW]",
+         "robot pose in map-frame metres (on the map), stored as metadata; the wall lines and "
+         "rooms are then those of its free space"},
         {"--time", "TEXT",
          "creation time stored as metadata (default: none, for reproducible output)"},
         {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
@@ -35,7 +42,7 @@ const CommandSpec kEncodeSpec = {
         {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
         {"--simplify-free", "",
          "lossy: also fill small unknown holes and smooth the free/unknown boundary "
-         "(smaller files; plans through narrow passages may change)"},
+         "(smaller files; plans through narrow passages may change); not with --lossless"},
         {"--no-sync", "",
          "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
          "power cut right after may lose it"},
@@ -53,6 +60,10 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   options.store_room_chains = args.Has("--rooms");
   if (args.Has("--no-segments")) options.store_segments = false;
   options.simplify_free_space = args.Has("--simplify-free");
+  if (options.lossless && options.simplify_free_space) {
+    return InvalidArgumentError(
+        "--simplify-free changes the map and --lossless keeps it exact; give one of them");
+  }
   if (std::optional<std::string> method = args.Get("--method")) {
     if (*method == "linemap") {
       options.method = LineMethod::kLinemap;
@@ -76,6 +87,49 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   return options;
 }
 
+bool EndsInLmap(const std::string& path) {
+  static constexpr std::string_view kSuffix = ".lmap";
+  if (path.size() <= kSuffix.size()) return false;
+  for (std::size_t i = 0; i < kSuffix.size(); ++i) {
+    const char c = path[path.size() - kSuffix.size() + i];
+    if (std::tolower(static_cast<unsigned char>(c)) != kSuffix[i]) return false;
+  }
+  return true;
+}
+
+// Refuses an output that would destroy the input: the map file itself or the
+// image its YAML names (same file by device and inode, so links count too).
+Status CheckOutput(const std::string& out, const std::string& map_path) {
+  if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
+  if (!EndsInLmap(out)) {
+    return InvalidArgumentError("output '" + out + "' must end in .lmap");
+  }
+  if (IsSameFile(out, map_path)) {
+    return InvalidArgumentError("output '" + out + "' is the input map '" + map_path +
+                                "'; give another output name");
+  }
+  // A YAML that cannot be read is reported by the load that follows.
+  StatusOr<std::string> image = RosMapImagePath(map_path);
+  if (image.ok() && IsSameFile(out, *image)) {
+    return InvalidArgumentError("output '" + out + "' is the image '" + *image +
+                                "' of the input map '" + map_path + "'; give another output name");
+  }
+  return Status::Ok();
+}
+
+// The pose must fall in a cell of the map (the cell whose square holds it).
+Status CheckPoseOnMap(const Grid& grid, const Pose2D& pose, const std::string& map_path) {
+  double col = 0, row = 0;
+  grid.WorldToCell(pose.x, pose.y, &col, &row);
+  col = std::floor(col + 0.5);
+  row = std::floor(row + 0.5);
+  if (col >= 0 && row >= 0 && col < grid.width() && row < grid.height()) return Status::Ok();
+  char text[160];
+  std::snprintf(text, sizeof(text), ": --pose %.3f,%.3f is outside the map (%d x %d cells)", pose.x,
+                pose.y, grid.width(), grid.height());
+  return InvalidArgumentError("'" + map_path + "'" + text);
+}
+
 }  // namespace
 
 int RunEncode(const std::vector<std::string>& args) {
@@ -84,14 +138,18 @@ int RunEncode(const std::vector<std::string>& args) {
   if (!parsed) return exit_code;
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("encode", InvalidArgumentError("missing -o OUT.lmap"));
-  if (IsDirectory(*out)) {
-    return ReportError("encode", InvalidArgumentError("'" + *out + "' is a directory"));
-  }
+  const std::string& map_path = parsed->positional[0];
+  const Status output_ok = CheckOutput(*out, map_path);
+  if (!output_ok.ok()) return ReportError("encode", output_ok);
   StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);
   if (!options.ok()) return ReportError("encode", options.status());
   const double start = NowSeconds();
-  StatusOr<Grid> grid = LoadMapArgument(parsed->positional[0], *parsed);
+  StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("encode", grid.status());
+  if (options->robot_pose) {
+    const Status pose_ok = CheckPoseOnMap(*grid, *options->robot_pose, map_path);
+    if (!pose_ok.ok()) return ReportError("encode", pose_ok);
+  }
   // The PNG the ratio is reported against is made beside the encoding (it
   // is only a report; the .lmap does not depend on it).
   const auto make_png = [&grid] { return SmallestTrinaryPngBytes(*grid); };
@@ -102,7 +160,7 @@ int RunEncode(const std::vector<std::string>& args) {
     png_task = std::async(std::launch::deferred, make_png);
   }
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *options);
-  if (!bytes.ok()) return ReportError("encode", bytes.status());
+  if (!bytes.ok()) return ReportError("encode", bytes.status().WithContext("'" + map_path + "'"));
   Status written = WriteFileAtomic(
       *out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
       parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);

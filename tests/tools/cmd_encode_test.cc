@@ -1,0 +1,144 @@
+// `linemap encode` through the built CLI: the output may not be the input
+// (nor the image its YAML names), must end in .lmap, and options that cannot
+// hold are refused with one line naming the file, exit 2, nothing written.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::ListDir;
+using testing::MakeTempDir;
+using testing::ReadFile;
+using testing::RunCli;
+
+// A copy of nav2's depot map (YAML naming depot.pgm beside it) in `dir`.
+std::string CopyDepot(const std::string& dir) {
+  const std::string src = testing::BundledMapsDir() + "/nav2/depot";
+  fs::copy_file(src + ".yaml", dir + "/depot.yaml");
+  fs::copy_file(src + ".pgm", dir + "/depot.pgm");
+  return dir + "/depot.yaml";
+}
+
+// Runs `argv`, which must fail with exit 2 and one line on stderr holding
+// every string of `named`, leaving `dir` exactly as it was.
+void ExpectRefused(const std::vector<std::string>& argv, const std::string& dir,
+                   const std::vector<std::string>& named) {
+  std::vector<std::pair<std::string, std::string>> before;
+  for (const std::string& name : ListDir(dir))
+    before.emplace_back(name, ReadFile(dir + "/" + name));
+  const CliResult r = RunCli(argv);
+  std::string where;
+  for (const std::string& a : argv) where += a + " ";
+  where += "\nstderr: " + r.err;
+  EXPECT_EQ(r.exit_code, 2) << where;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << where;
+  for (const std::string& n : named)
+    EXPECT_NE(r.err.find(n), std::string::npos) << n << ": " << where;
+  std::vector<std::pair<std::string, std::string>> after;
+  for (const std::string& name : ListDir(dir)) after.emplace_back(name, ReadFile(dir + "/" + name));
+  EXPECT_TRUE(after == before) << "the folder changed: " << where;
+}
+
+TEST(CmdEncodeTest, RefusesToOverwriteTheInputMapOrItsImage) {
+  const std::string dir = MakeTempDir("encode_self");
+  const std::string yaml = CopyDepot(dir);
+  const std::string pgm = dir + "/depot.pgm";
+  // The reviewer's case: -o the image the YAML names (and the YAML itself).
+  ExpectRefused({"encode", yaml, "-o", pgm}, dir, {"depot.pgm", ".lmap"});
+  ExpectRefused({"encode", yaml, "-o", yaml}, dir, {"depot.yaml", ".lmap"});
+  // Names ending in .lmap that are the image all the same: a hard link and
+  // a symlink.
+  ASSERT_EQ(::link(pgm.c_str(), (dir + "/hard.lmap").c_str()), 0);
+  ASSERT_EQ(::symlink("depot.pgm", (dir + "/soft.lmap").c_str()), 0);
+  ExpectRefused({"encode", yaml, "-o", dir + "/hard.lmap"}, dir, {"hard.lmap", "depot.pgm"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/soft.lmap"}, dir, {"soft.lmap", "depot.pgm"});
+  // A bare image read through its .lmap-named hard link is the input map.
+  ExpectRefused({"encode", pgm, "-o", dir + "/hard.lmap"}, dir, {"hard.lmap", "input map"});
+  fs::remove(dir + "/hard.lmap");
+  fs::remove(dir + "/soft.lmap");
+  // An .lmap input re-encoded onto itself, by any spelling of its name.
+  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/d.lmap"}).exit_code, 0);
+  ExpectRefused({"encode", dir + "/d.lmap", "-o", dir + "/d.lmap"}, dir, {"d.lmap", "input map"});
+  ExpectRefused({"encode", dir + "/d.lmap", "-o", dir + "/./d.lmap"}, dir, {"d.lmap"});
+}
+
+TEST(CmdEncodeTest, OutputNameMustEndInLmap) {
+  const std::string dir = MakeTempDir("encode_suffix");
+  const std::string yaml = CopyDepot(dir);
+  ExpectRefused({"encode", yaml, "-o", dir + "/out.bin"}, dir, {"out.bin", "must end in .lmap"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/lmap"}, dir, {"lmap"});
+  const CliResult upper = RunCli({"encode", yaml, "-o", dir + "/OUT.LMAP"});
+  EXPECT_EQ(upper.exit_code, 0) << upper.err;
+  EXPECT_TRUE(testing::FileExists(dir + "/OUT.LMAP"));
+}
+
+TEST(CmdEncodeTest, WritesThroughACurrentMapSymlinkAndRefusesReadOnlyFiles) {
+  const std::string dir = MakeTempDir("encode_link");
+  const std::string yaml = CopyDepot(dir);
+  testing::WriteFile(dir + "/v1.lmap", "old");
+  ASSERT_EQ(::symlink("v1.lmap", (dir + "/current.lmap").c_str()), 0);
+  const CliResult r = RunCli({"encode", yaml, "-o", dir + "/current.lmap"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(dir + "/current.lmap"));
+  EXPECT_EQ(ReadFile(dir + "/v1.lmap").substr(1, 4), "LMAP");
+  // A read-only target is left alone: exit 1 (a failure to write), one line.
+  testing::WriteFile(dir + "/ro.lmap", "read-only map");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0444), 0);
+  const CliResult ro = RunCli({"encode", yaml, "-o", dir + "/ro.lmap"});
+  EXPECT_EQ(ro.exit_code, 1) << ro.err;
+  EXPECT_NE(ro.err.find("ro.lmap"), std::string::npos) << ro.err;
+  EXPECT_NE(ro.err.find("read-only"), std::string::npos) << ro.err;
+  EXPECT_EQ(ReadFile(dir + "/ro.lmap"), "read-only map");
+  ::chmod((dir + "/ro.lmap").c_str(), 0644);
+}
+
+TEST(CmdEncodeTest, LosslessAndSimplifyFreeAreExclusive) {
+  const std::string dir = MakeTempDir("encode_modes");
+  const std::string yaml = CopyDepot(dir);
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossless", "--simplify-free"}, dir,
+                {"--simplify-free", "--lossless"});
+  EXPECT_EQ(RunCli({"encode", yaml, "-o", dir + "/y.lmap", "--simplify-free"}).exit_code, 0);
+}
+
+// --pose must fall on the map; its lower edge (0,0 with origin 0,0) is on it.
+TEST(CmdEncodeTest, PoseOffTheMapIsRefused) {
+  const std::string dir = MakeTempDir("encode_pose");
+  const std::string yaml = CopyDepot(dir);  // 604 x 307 cells at 0.05 m, origin 0,0
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--pose", "500,5"}, dir,
+                {"depot.yaml", "outside the map", "500.000,5.000"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--pose", "-0.01,5,1.5"}, dir,
+                {"depot.yaml", "outside the map"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--pose", "30.2,5"}, dir,
+                {"depot.yaml", "outside the map"});
+  // An all-free map: the corner on the lower edge is its cell (0, 0).
+  std::string pgm = "P5\n40 20\n255\n" + std::string(40 * 20, '\xfe');
+  testing::WriteFile(dir + "/free.pgm", pgm);
+  for (const char* pose : {"0,0", "0,0,1.57", "1.99,0.99"}) {
+    const CliResult r =
+        RunCli({"encode", dir + "/free.pgm", "-o", dir + "/f.lmap", "--pose", pose});
+    EXPECT_EQ(r.exit_code, 0) << pose << ": " << r.err;
+  }
+}
+
+TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
+  const CliResult r = RunCli({"encode", "--help"});
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("--origin X,Y[,YAW]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[--pose X,Y[,YAW]]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[--lossless | --simplify-free]"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("X,Y,YAW"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace linemap
