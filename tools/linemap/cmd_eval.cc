@@ -20,7 +20,10 @@ const CommandSpec kEvalSpec = {
     "IoU, free regions (50+ cells) merged by the decode (leaks), and unknown cells\n"
     "turned free; for an .lmap file with wall segments also DisPL_ave (mean\n"
     "distance from the original's edge cells to the nearest segment, RM-Line's\n"
-    "measure) and the share of edge cells within one cell of a segment.",
+    "measure) and the share of edge cells within one cell of a segment.\n"
+    "The map-reading options (--negate, --mode, the thresholds, --resolution,\n"
+    "--origin) apply to ORIGINAL only: a decoded map's YAML carries its own\n"
+    "values. --max-cells limits both. Maps of different sizes are refused.",
     WithMapLoadOptions({{"--json", "", "print one JSON object"}}),
     2,
     2,
@@ -30,15 +33,31 @@ int RunEval(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kEvalSpec, args, &exit_code);
   if (!parsed) return exit_code;
-  StatusOr<Grid> original = LoadMapArgument(parsed->positional[0], *parsed);
+  const std::string& original_path = parsed->positional[0];
+  const std::string& decoded_path = parsed->positional[1];
+  StatusOr<MapLoadOptions> original_options = MapLoadOptionsFrom(*parsed);
+  if (!original_options.ok()) return ReportError("eval", original_options.status());
+  StatusOr<Grid> original = LoadMapWithOptions(original_path, *original_options);
   if (!original.ok()) return ReportError("eval", original.status());
-  StatusOr<Grid> decoded = LoadMapArgument(parsed->positional[1], *parsed);
+  MapLoadOptions decoded_options;  // the file's own values; only the limit is shared
+  decoded_options.max_cells = original_options->max_cells;
+  StatusOr<Grid> decoded = LoadMapWithOptions(decoded_path, decoded_options);
   if (!decoded.ok()) return ReportError("eval", decoded.status());
+  if (original->width() != decoded->width() || original->height() != decoded->height()) {
+    return ReportError(
+        "eval", InvalidArgumentError(
+                    "'" + original_path + "' is " + std::to_string(original->width()) + " x " +
+                    std::to_string(original->height()) + " cells but '" + decoded_path + "' is " +
+                    std::to_string(decoded->width()) + " x " + std::to_string(decoded->height()) +
+                    ": eval compares maps of the same size"));
+  }
   const GridComparison m = CompareGrids(*original, *decoded);
   // Line fidelity when the second file is an .lmap with segments.
   std::optional<LineFidelity> fidelity;
-  if (IsLmapFile(parsed->positional[1])) {
-    StatusOr<LmapContents> contents = LoadLmapContents(parsed->positional[1]);
+  if (IsLmapFile(decoded_path)) {
+    DecodeLimits limits;
+    limits.max_cells = decoded_options.max_cells;
+    StatusOr<LmapContents> contents = LoadLmapContents(decoded_path, limits);
     if (!contents.ok()) return ReportError("eval", contents.status());
     if (!contents->segments.empty() && m.same_geometry) {
       std::vector<LineSegment> lines;

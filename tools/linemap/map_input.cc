@@ -61,6 +61,10 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
 
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
   LINEMAP_ASSIGN_OR_RETURN(MapLoadOptions options, MapLoadOptionsFrom(args));
+  return LoadMapWithOptions(path, options);
+}
+
+StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapLoadOptions& options) {
   if (IsLmapFile(path)) {  // an .lmap file is decoded
     DecodeLimits limits;
     limits.max_cells = options.max_cells;

@@ -22,6 +22,10 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args);
 // Loads `path` as a map (YAML or image) with the overrides in `args`.
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args);
 
+// Loads `path` (.lmap, YAML or image) with `options`; for an .lmap file only
+// options.max_cells applies.
+StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapLoadOptions& options);
+
 // Options of `spec` followed by MapLoadOptionSpecs().
 std::vector<OptionSpec> WithMapLoadOptions(std::vector<OptionSpec> options);
 
