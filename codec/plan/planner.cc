@@ -67,11 +67,15 @@ PlanOutcome CheckEndpoint(const Grid& grid, const SafeZone& zone, double x, doub
                           CellIndex* cell) {
   double col = 0, row = 0;
   grid.WorldToCell(x, y, &col, &row);
-  cell->col = static_cast<int>(std::lround(col));
-  cell->row = static_cast<int>(std::lround(row));
-  if (!std::isfinite(col) || !std::isfinite(row) || !grid.Contains(cell->col, cell->row)) {
+  // The cell whose square [c - 0.5, c + 0.5) holds the point, as the edge map
+  // and the line extractor round (a point on the map's lower edge is in).
+  col = std::floor(col + 0.5);
+  row = std::floor(row + 0.5);
+  if (!(col >= 0 && row >= 0 && col < grid.width() && row < grid.height())) {
     return is_start ? PlanOutcome::kStartOutsideMap : PlanOutcome::kGoalOutsideMap;
   }
+  cell->col = static_cast<int>(col);
+  cell->row = static_cast<int>(row);
   if (grid.at(cell->col, cell->row) != Cell::kFree) {
     return is_start ? PlanOutcome::kStartInObstacle : PlanOutcome::kGoalInObstacle;
   }

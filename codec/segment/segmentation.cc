@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <string>
 
@@ -42,16 +43,22 @@ int HalfExtent(const std::vector<StructuringElement>& elements) {
 // cells when its own cell is not free).
 StatusOr<std::int32_t> RobotRoom(const Grid& grid, const Labeling& free_labels, CellPoint robot,
                                  CellIndex* cell) {
-  constexpr double kFar = 1e9;  // keeps the rounding below in int range
-  if (!(std::abs(robot.col) < kFar && std::abs(robot.row) < kFar)) {
-    return InvalidArgumentError("robot position is outside the map");
+  // The cell whose square [c - 0.5, c + 0.5) holds the point, as the edge map
+  // and the line extractor round (a point on the map's lower edge is in).
+  const double col_f = std::floor(robot.col + 0.5);
+  const double row_f = std::floor(robot.row + 0.5);
+  const auto where = [&] {
+    double x = 0, y = 0;
+    grid.CellToWorld(robot.col, robot.row, &x, &y);
+    char text[96];
+    std::snprintf(text, sizeof(text), "robot position %.3f,%.3f m", x, y);
+    return std::string(text);
+  };
+  if (!(col_f >= 0 && row_f >= 0 && col_f < grid.width() && row_f < grid.height())) {
+    return InvalidArgumentError(where() + " is outside the map");
   }
-  const int col = static_cast<int>(std::lround(robot.col));
-  const int row = static_cast<int>(std::lround(robot.row));
-  if (!grid.Contains(col, row)) {
-    return InvalidArgumentError("robot position (" + std::to_string(col) + ", " +
-                                std::to_string(row) + ") is outside the map");
-  }
+  const int col = static_cast<int>(col_f);
+  const int row = static_cast<int>(row_f);
   for (int radius = 0; radius <= 3; ++radius) {
     for (int dr = -radius; dr <= radius; ++dr) {
       for (int dc = -radius; dc <= radius; ++dc) {
@@ -64,8 +71,7 @@ StatusOr<std::int32_t> RobotRoom(const Grid& grid, const Labeling& free_labels, 
       }
     }
   }
-  return InvalidArgumentError("robot position (" + std::to_string(col) + ", " +
-                              std::to_string(row) + ") is not in free space");
+  return InvalidArgumentError(where() + " is not in free space (nor within 3 cells of it)");
 }
 
 std::vector<std::int32_t> RoomLabels(const Labeling& free_labels, std::size_t min_cells) {

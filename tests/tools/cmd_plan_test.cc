@@ -67,6 +67,23 @@ TEST(CmdPlanTest, BadStartsAndGoalsExitOne) {
   EXPECT_NE(r.err.find("safe distance"), std::string::npos) << r.err;
 }
 
+// A start on the map's lower edge (0,0 with origin 0,0) is in cell 0, not
+// outside the map; the border cell is then too close to the map's edge.
+TEST(CmdPlanTest, LowerMapEdgeIsOnTheMap) {
+  const std::string dir = MakeTempDir("plan-edge");
+  const std::string map = SplitRoom(dir);
+  CliResult r = RunCli({"plan", map, "--from", "0,0", "--to", "0.5,0.5"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.find("outside the map"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("safe distance"), std::string::npos) << r.err;
+  r = RunCli({"plan", map, "--from", "0.5,0.5", "--to", "0,0"});
+  EXPECT_EQ(r.err.find("outside the map"), std::string::npos) << r.err;
+  r = RunCli({"plan", map, "--from", "-0.001,0", "--to", "0.5,0.5"});
+  EXPECT_NE(r.err.find("outside the map"), std::string::npos) << r.err;
+  r = RunCli({"plan", map, "--from", "2.0,0.5", "--to", "0.5,0.5"});  // the upper edge
+  EXPECT_NE(r.err.find("outside the map"), std::string::npos) << r.err;
+}
+
 TEST(CmdPlanTest, UnreachableGoalExitsOneWithoutOutputFile) {
   const std::string dir = MakeTempDir("plan-split");
   const std::string map = SplitRoom(dir);

@@ -155,7 +155,8 @@ int RunSegment(const std::vector<std::string>& args) {
   if (!out_path || out_path->empty()) {
     return ReportError("segment", InvalidArgumentError("missing -o OUT.json"));
   }
-  StatusOr<Grid> grid = LoadMapArgument(parsed->positional[0], *parsed);
+  const std::string& map_path = parsed->positional[0];
+  StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("segment", grid.status());
   SegmentationOptions options;
   if (parsed->Has("--pose")) {
@@ -170,7 +171,7 @@ int RunSegment(const std::vector<std::string>& args) {
   StatusOr<Segmentation> seg = SegmentMap(*grid, options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!seg.ok()) return ReportError("segment", seg.status());
+  if (!seg.ok()) return ReportError("segment", seg.status().WithContext(map_path));
   const std::string text = parsed->Has("--geojson") ? GeoJson(*grid, *seg) : PlainJson(*grid, *seg);
   const Status written = WriteFileAtomic(*out_path, text);
   if (!written.ok()) return ReportError("segment", written.WithContext(*out_path));

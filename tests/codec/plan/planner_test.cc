@@ -132,6 +132,30 @@ TEST(PlannerTest, ReportsBadStartsAndGoals) {
   EXPECT_FALSE(r.message.empty());
 }
 
+// A point exactly on the map's lower edge lies in cell 0 (each cell c holds
+// [c - 0.5, c + 0.5) in cell units, as the edge map rounds); one on the upper
+// edge is outside. Huge and non-finite points are outside, not undefined.
+TEST(PlannerTest, MapEdgesBelongToTheCellsInside) {
+  const Grid grid = GridFromText({"....", "....", "...."}, 0.5);  // 2 m x 1.5 m
+  PlanOptions o;
+  o.robot = {0.01, 0.01, 0.0};  // d_save 0.005 m: every free cell is safe
+  o.d_min_m = 0.0;
+  o.d_max_m = 5.0;
+  const PlanResult corner = PlanOn(grid, o, {0.0, 0.0, 0, 1.25, 0.75});
+  EXPECT_NE(corner.outcome, PlanOutcome::kStartOutsideMap) << corner.message;
+  EXPECT_EQ(corner.start_cell, (CellIndex{0, 0}));
+  const PlanResult goal_corner = PlanOn(grid, o, {1.25, 0.75, 0, 0.0, 0.0});
+  EXPECT_NE(goal_corner.outcome, PlanOutcome::kGoalOutsideMap) << goal_corner.message;
+  EXPECT_EQ(goal_corner.goal_cell, (CellIndex{0, 0}));
+  EXPECT_EQ(PlanOn(grid, o, {-0.001, 0.0, 0, 1.25, 0.75}).outcome, PlanOutcome::kStartOutsideMap);
+  EXPECT_EQ(PlanOn(grid, o, {2.0, 0.5, 0, 1.25, 0.75}).outcome, PlanOutcome::kStartOutsideMap);
+  EXPECT_EQ(PlanOn(grid, o, {1.999, 1.499, 0, 0.25, 0.25}).start_cell, (CellIndex{3, 2}));
+  EXPECT_EQ(PlanOn(grid, o, {1e300, 0.5, 0, 1.25, 0.75}).outcome, PlanOutcome::kStartOutsideMap);
+  EXPECT_EQ(PlanOn(grid, o, {0.5, -1e300, 0, 1.25, 0.75}).outcome, PlanOutcome::kStartOutsideMap);
+  EXPECT_EQ(PlanOn(grid, o, {0.5, 0.5, 0, std::nan(""), 0.75}).outcome,
+            PlanOutcome::kGoalOutsideMap);
+}
+
 TEST(PlannerTest, RejectsBadOptions) {
   PlanOptions o = DefaultRobot();
   o.robot.width_m = 0;

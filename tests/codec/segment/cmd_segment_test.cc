@@ -45,5 +45,24 @@ TEST(CmdSegmentTest, BadUsageAndBadPose) {
             2);
 }
 
+// --pose on the map's lower edge (0,0 with origin 0,0) is in cell 0, as for
+// `lines`; off the map the error names the map and gives metres.
+TEST(CmdSegmentTest, PoseOnTheLowerEdgeAndOffTheMap) {
+  const std::string dir = testing::MakeTempDir("cmd_segment_edge");
+  testing::WriteFile(dir + "/free.pgm", "P5\n40 20\n255\n" + std::string(40 * 20, '\xfe'));
+  const std::string map = dir + "/free.pgm";
+  const testing::CliResult corner =
+      testing::RunCli({"segment", map, "--pose", "0,0", "-o", dir + "/a.json"});
+  EXPECT_EQ(corner.exit_code, 0) << corner.err;
+  EXPECT_EQ(testing::RunCli({"lines", map, "--pose", "0,0"}).exit_code, 0);
+  const testing::CliResult off =
+      testing::RunCli({"segment", map, "--pose", "-1,0.5", "-o", dir + "/b.json"});
+  EXPECT_EQ(off.exit_code, 2);
+  EXPECT_NE(off.err.find("free.pgm: robot position -1.000,0.500 m is outside the map"),
+            std::string::npos)
+      << off.err;
+  EXPECT_FALSE(testing::FileExists(dir + "/b.json"));
+}
+
 }  // namespace
 }  // namespace linemap

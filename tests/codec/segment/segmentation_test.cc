@@ -176,6 +176,26 @@ TEST(SegmentationTest, RobotPicksItsRoom) {
   EXPECT_FALSE(SegmentMap(grid, options).ok());
 }
 
+// A robot exactly on the map's lower edge (cell units -0.5) is in cell 0, as
+// the edge map and the line extractor have it; the error for a robot off the
+// map gives the position in metres.
+TEST(SegmentationTest, RobotOnTheLowerEdgeIsOnTheMap) {
+  Grid grid(30, 20, Cell::kFree);
+  grid.meta.resolution = 0.1;
+  grid.meta.origin = {2.0, -1.0, 0.0};
+  SegmentationOptions options;
+  options.robot = CellPoint{-0.5, -0.5};
+  StatusOr<Segmentation> seg = SegmentMap(grid, options);
+  ASSERT_TRUE(seg.ok()) << seg.status().message();
+  EXPECT_EQ(seg->rooms.size(), 1u);
+  options.robot = CellPoint{29.5, 10};  // the upper edge is the next cell's
+  StatusOr<Segmentation> off = SegmentMap(grid, options);
+  ASSERT_FALSE(off.ok());
+  EXPECT_NE(off.status().message().find("robot position 5.000,0.050 m is outside the map"),
+            std::string::npos)
+      << off.status().message();
+}
+
 TEST(SegmentationTest, EmptyAndUnknownGridsHaveNoRooms) {
   for (const Grid& grid : {Grid(), Grid(20, 10, Cell::kUnknown), Grid(20, 10, Cell::kOccupied)}) {
     StatusOr<Segmentation> seg = SegmentMap(grid);
