@@ -190,7 +190,7 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
 // DisPL_ave (0.96 cm against 0.60 at the median), most on clean
 // maps, where the defaults follow the pixel steps of slanted walls as the
 // paper's measure rewards (Pareto-better than RM-Line on 16 of 25 maps
-// against 21). The .lmap encoder uses it for its wall layer. `linemap lines
+// against 22). The .lmap encoder uses it for its wall layer. `linemap lines
 // --straight-walls`.
 LineExtractionOptions StraightWalls(LineExtractionOptions options);
 
