@@ -48,12 +48,12 @@
 //     smallest first, handing its cells over.
 //  6. Specks: a segment of at most speck_max_cells cells that holds whole
 //     edge components, with no other segment within speck_min_gap_cells of
-//     its cells, is a speck, not a wall: it is left to the furniture layer (its cells become speckle)
-//     when that adds at most speck_max_added_cells to the summed distance,
-//     cheapest first, while the distance budget of step 4 allows. Clean
-//     maps have little budget left, so their isolated specks keep their
-//     segments; noisy SLAM maps, whose speckle already leaves a large mean
-//     distance, hand many of them over.
+//     its cells, is a speck, not a wall: it is left to the furniture layer
+//     (its cells become speckle) when that adds at most
+//     speck_max_added_cells to the summed distance, cheapest first, while
+//     the distance budget of step 4 allows. Clean maps have little budget
+//     left, so their isolated specks keep their segments; noisy SLAM maps,
+//     whose speckle already leaves a large mean distance, hand many over.
 //  7. Polish: each line moves towards the least-absolute-distance line of its
 //     cells (iteratively reweighted TLS), only while the bound holds.
 //  8. Corners: wall ends that meet at a corner are extended to it.
@@ -1078,8 +1078,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       std::min(limits.max_added, options.prune_added_cost_cells * epsilon * epsilon));
   const std::vector<std::uint32_t> specks = LeaveSpecksToFurniture(
       edges, &groups, static_cast<std::size_t>(options.speck_max_cells),
-      options.speck_min_gap_cells, options.speck_max_added_cells, limits.total_budget,
-      &total_cost);
+      options.speck_min_gap_cells, options.speck_max_added_cells, limits.total_budget, &total_cost);
   speckle.insert(speckle.end(), specks.begin(), specks.end());
   for (Group& group : groups) {
     if (group.alive) PolishGroupL1(&group, epsilon);

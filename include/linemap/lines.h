@@ -67,8 +67,9 @@ struct LineExtractionOptions {
   int min_component_cells = 2;
   // linemap extractor: specks. A segment fitted to at most speck_max_cells
   // cells, which are whole edge components (8-connected) and all lie at
-  // least speck_min_gap_cells from every other segment, is a speck (SLAM noise, a chair leg), not a wall: its cells are
-  // left to the furniture layer (and counted there) when that adds at most
+  // least speck_min_gap_cells from every other segment, is a speck (SLAM
+  // noise, a chair leg), not a wall: its cells are left to the furniture
+  // layer (and counted there) when that adds at most
   // speck_max_added_cells to the summed distance of the edge cells to their
   // nearest segment, cheapest first, while the distance budget of
   // target_mean_distance_cells allows. Clean maps have little budget left
