@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -157,18 +159,32 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   return existing;
 }
 
+// A new file beside a save's target: unnamed (O_TMPFILE; `fd` open) until
+// NameTemporary links it, or named from the start (`name`; `fd` closed)
+// where the file system has no unnamed files.
+struct Temporary {
+  int fd = -1;
+  std::string name;
+};
+
 // Writes `data` to a new temporary file beside `target`, the file `path`
-// resolves to; flushes it to disk when `durability` is kSynced. The new file
-// gets the permission bits (and, where allowed, the owner) of an existing
-// `target`, else the mode a plain create would give.
-StatusOr<std::string> WriteTemporary(const std::string& path, const std::string& target,
-                                     const ExistingFile& existing, std::string_view data,
-                                     Durability durability) {
-  std::string tmp = target + ".tmp-XXXXXX";
-  const int fd = ::mkstemp(tmp.data());
-  if (fd < 0) {
-    return IoError("cannot create a file in " + Quoted(DirectoryOf(target)) + " for " +
-                   Quoted(path) + ": " + ErrnoText(errno));
+// resolves to; flushes it to disk when `durability` is kSynced. The file has
+// no name while it is written, so a save killed meanwhile leaves nothing
+// behind; `named` asks for a named one at once. It gets the permission bits
+// (and, where allowed, the owner) of an existing `target`, else the mode a
+// plain create would give.
+StatusOr<Temporary> WriteTemporary(const std::string& path, const std::string& target,
+                                   const ExistingFile& existing, std::string_view data,
+                                   Durability durability, bool named) {
+  Temporary tmp;
+  int fd = named ? -1 : ::open(DirectoryOf(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0) {  // no unnamed files here (old kernel, some file systems)
+    tmp.name = target + ".tmp-XXXXXX";
+    fd = ::mkstemp(tmp.name.data());
+    if (fd < 0) {
+      return IoError("cannot create a file in " + Quoted(DirectoryOf(target)) + " for " +
+                     Quoted(path) + ": " + ErrnoText(errno));
+    }
   }
   Status status = WriteAll(fd, data, path);
   if (status.ok() && durability == Durability::kSynced && ::fsync(fd) != 0) {
@@ -182,7 +198,7 @@ StatusOr<std::string> WriteTemporary(const std::string& path, const std::string&
       // only root (or the owner, for the group) may give a file away.
       (void)::fchown(fd, existing.st.st_uid, existing.st.st_gid);
     } else {
-      // mkstemp creates files 0600; give the file the mode a plain create would.
+      // New files start 0600; give the file the mode a plain create would.
       const mode_t mask = ::umask(0);
       ::umask(mask);
       mode = 0666 & ~mask;
@@ -191,14 +207,54 @@ StatusOr<std::string> WriteTemporary(const std::string& path, const std::string&
       status = IoError("cannot set the permissions of " + Quoted(path) + ": " + ErrnoText(errno));
     }
   }
+  if (tmp.name.empty() && status.ok()) {
+    tmp.fd = fd;  // closed when named
+    return tmp;
+  }
   if (::close(fd) != 0 && status.ok()) {
     status = IoError("cannot close " + Quoted(path) + ": " + ErrnoText(errno));
   }
   if (!status.ok()) {
-    ::unlink(tmp.c_str());
+    if (!tmp.name.empty()) ::unlink(tmp.name.c_str());
     return status;
   }
   return tmp;
+}
+
+// Gives an unnamed temporary a name beside `target` (just before the rename,
+// so a killed save leaves a named temporary only in that instant) and closes
+// it. False, with the temporary untouched, when it cannot be linked (no
+// /proc): the caller writes a named one instead.
+bool NameTemporary(Temporary* tmp, const std::string& target) {
+  if (!tmp->name.empty()) return true;
+  const std::string fd_path = "/proc/self/fd/" + std::to_string(tmp->fd);
+  // A name no other save uses: the clock and the process id, retried on a clash.
+  const std::uint64_t seed =
+      static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+      (static_cast<std::uint64_t>(::getpid()) << 32);
+  for (std::uint64_t attempt = 0; attempt < 100; ++attempt) {
+    char suffix[24];
+    std::snprintf(suffix, sizeof(suffix), ".tmp-%06llx",
+                  static_cast<unsigned long long>((seed + attempt * 0x9e3779b9u) & 0xffffff));
+    const std::string name = target + suffix;
+    if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      tmp->name = name;
+      ::close(tmp->fd);
+      tmp->fd = -1;
+      return true;
+    }
+    if (errno != EEXIST) return false;
+  }
+  return false;
+}
+
+// Closes or removes what is left of temporaries that were not renamed.
+void DiscardTemporaries(std::vector<Temporary>* temporaries, std::size_t from) {
+  for (std::size_t i = from; i < temporaries->size(); ++i) {
+    Temporary& tmp = (*temporaries)[i];
+    if (tmp.fd >= 0) ::close(tmp.fd);  // unnamed: the file goes with it
+    if (!tmp.name.empty()) ::unlink(tmp.name.c_str());
+  }
 }
 
 void SyncDirectory(const std::string& dir) {
@@ -222,23 +278,33 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durabi
     targets.push_back(std::move(target));
     existing.push_back(old);
   }
-  std::vector<std::string> temporaries;
-  auto remove_temporaries = [&temporaries](std::size_t from) {
-    for (std::size_t i = from; i < temporaries.size(); ++i) ::unlink(temporaries[i].c_str());
-  };
+  std::vector<Temporary> temporaries;
   for (std::size_t i = 0; i < files.size(); ++i) {
-    StatusOr<std::string> tmp =
-        WriteTemporary(files[i].path, targets[i], existing[i], files[i].data, durability);
+    StatusOr<Temporary> tmp = WriteTemporary(files[i].path, targets[i], existing[i], files[i].data,
+                                             durability, /*named=*/false);
     if (!tmp.ok()) {
-      remove_temporaries(0);
+      DiscardTemporaries(&temporaries, 0);
       return tmp.status();
     }
-    temporaries.push_back(*tmp);
+    temporaries.push_back(std::move(*tmp));
+  }
+  // Every file is written; now each gets a name and takes its target's.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (!NameTemporary(&temporaries[i], targets[i])) {
+      StatusOr<Temporary> named = WriteTemporary(files[i].path, targets[i], existing[i],
+                                                 files[i].data, durability, /*named=*/true);
+      if (!named.ok()) {
+        DiscardTemporaries(&temporaries, 0);
+        return named.status();
+      }
+      ::close(temporaries[i].fd);
+      temporaries[i] = std::move(*named);
+    }
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temporaries[i].c_str(), targets[i].c_str()) != 0) {
+    if (::rename(temporaries[i].name.c_str(), targets[i].c_str()) != 0) {
       const int err = errno;
-      remove_temporaries(i);
+      DiscardTemporaries(&temporaries, i);
       return IoError("cannot rename the new file onto " + Quoted(files[i].path) + ": " +
                      ErrnoText(err));
     }

@@ -22,7 +22,11 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::
 // Writes `data` to a temporary file in the same directory, flushes it to
 // disk (fsync, unless `durability` is kUnsynced), then renames it over
 // `path` and syncs the directory. On any failure the temporary file is
-// removed and an existing `path` is untouched.
+// removed and an existing `path` is untouched. The temporary file has no
+// name while it is written (O_TMPFILE, linked under a name just before the
+// rename), so a process killed meanwhile leaves nothing behind; where the
+// file system has no unnamed files (or /proc is missing), it is named
+// `path.tmp-XXXXXX` from the start.
 Status WriteFileAtomic(const std::string& path, std::string_view data,
                        Durability durability = Durability::kSynced);
 

@@ -12,6 +12,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "tests/testing/test_support.h"
 
@@ -212,6 +213,35 @@ TEST(FileIoTest, KilledSaveLeavesOldOrNewCompleteFile) {
   }
   // The kills landed at different moments: some saves finished, some did not.
   EXPECT_GT(saw_new, 0);
+}
+
+TEST(FileIoTest, SaveKilledWhileWritingLeavesNoTemporaryFile) {
+  // The new file has no name until it is written (and flushed): killed
+  // meanwhile, the save leaves the old file and nothing beside it.
+  const std::string dir = MakeTempDir("fio");
+  const std::string target = dir + "/map.lmap";
+  WriteFile(target, Version('a', 1024));
+  int started[2];
+  ASSERT_EQ(::pipe(started), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // 96 MB: writing and flushing it takes far longer than the 2 ms below.
+    const std::string data = Version('b', std::size_t{96} << 20);
+    const char go = 1;
+    (void)!::write(started[1], &go, 1);
+    (void)WriteFileAtomic(target, data);
+    ::_exit(0);
+  }
+  char go = 0;
+  ASSERT_EQ(::read(started[0], &go, 1), 1);
+  ::usleep(2000);
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, nullptr, 0);
+  ::close(started[0]);
+  ::close(started[1]);
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"map.lmap"});
+  EXPECT_TRUE(IsWholeVersion(ReadFile(target), 1024));
 }
 
 }  // namespace
