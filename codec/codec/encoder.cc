@@ -687,15 +687,19 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   if (!options.lossless) return EncodeLossy(grid, options);
   const bool exact = options.lossless_method == LosslessMethod::kExactLayers;
   const Labeling free_regions = codec_internal::LabelFree(grid);
-  LINEMAP_ASSIGN_OR_RETURN(EncodedFile file,
-                           EncodeFile(grid, free_regions, options, exact, nullptr, mildest));
+  // The file without segments is coded beside the line extraction.
+  std::future<StatusOr<EncodedFile>> plain_task = StartTask(options.max_threads >= 2, [&] {
+    return EncodeFile(grid, free_regions, options, exact, nullptr, mildest);
+  });
+  std::optional<EncodedFile> with_lines;
   if (options.store_segments) {
     // Lossless files need no geometry: keep segments only when they pay.
     LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
-    LINEMAP_ASSIGN_OR_RETURN(EncodedFile with_lines,
+    LINEMAP_ASSIGN_OR_RETURN(with_lines,
                              EncodeFile(grid, free_regions, options, exact, &lines, mildest));
-    if (with_lines.bytes.size() < file.bytes.size()) file = std::move(with_lines);
   }
+  LINEMAP_ASSIGN_OR_RETURN(EncodedFile file, plain_task.get());
+  if (with_lines && with_lines->bytes.size() < file.bytes.size()) file = std::move(*with_lines);
   return std::move(file.bytes);
 }
 

@@ -1,5 +1,7 @@
 #include "codec/codec/plane_coder.h"
 
+#include <array>
+
 #include "format/range_coder.h"
 
 namespace linemap {
@@ -24,17 +26,65 @@ class PaddedPlane {
   std::vector<std::uint8_t> bits_;
 };
 
-// The 10-cell causal template (spec "Plane template"): W, WW, and the cells
-// at columns -1..+1, -2, +2 of the previous row and -1..+1 two rows back.
-// Reads bit 0 of each byte (the FREE plane keeps more in the others).
-inline unsigned Template10(const PaddedPlane& g, std::size_t i) {
-  const std::size_t s = g.stride();
-  const std::size_t n = i - s;
-  const std::size_t nn = n - s;
-  const auto b = [&](std::size_t j) { return g[j] & 1u; };
-  return b(i - 1) | b(i - 2) << 1 | b(n - 1) << 2 | b(n) << 3 | b(n + 1) << 4 | b(n - 2) << 5 |
-         b(n + 2) << 6 | b(nn) << 7 | b(nn - 1) << 8 | b(nn + 1) << 9;
+// RollingTemplate's registers hold column k-2 of the previous row in bit k
+// and column k-1 of the row before in bit k; these tables move those bits
+// to their places in the template's context.
+constexpr std::array<std::uint16_t, 32> AboveBits() {
+  std::array<std::uint16_t, 32> t{};
+  for (unsigned r = 0; r < 32; ++r) {
+    t[r] = static_cast<std::uint16_t>((r & 1) << 5 | (r >> 1 & 1) << 2 | (r >> 2 & 1) << 3 |
+                                      (r >> 3 & 1) << 4 | (r >> 4 & 1) << 6);
+  }
+  return t;
 }
+constexpr std::array<std::uint16_t, 8> Above2Bits() {
+  std::array<std::uint16_t, 8> t{};
+  for (unsigned r = 0; r < 8; ++r) {
+    t[r] = static_cast<std::uint16_t>((r & 1) << 8 | (r >> 1 & 1) << 7 | (r >> 2 & 1) << 9);
+  }
+  return t;
+}
+constexpr std::array<std::uint16_t, 32> kAboveBits = AboveBits();
+constexpr std::array<std::uint16_t, 8> kAbove2Bits = Above2Bits();
+
+// The 10-cell causal template (spec "Plane template"): W (context bit 0),
+// WW (1), the previous row's columns -1, 0, +1, -2, +2 (bits 2-6) and the
+// row before's columns 0, -1, +1 (bits 7-9). Reads bit 0 of each byte (the
+// FREE plane keeps more in the others). The scan keeps the template in
+// shift registers as it moves east, loading two cells per step instead of
+// ten: the plane coders spend most of their time here.
+class RollingTemplate {
+ public:
+  // At column 0 of `row`.
+  RollingTemplate(const PaddedPlane& g, int row)
+      : g_(g), above_index_(g.At(0, row) - g.stride()), above2_index_(above_index_ - g.stride()) {
+    const std::size_t i = g.At(0, row);
+    west_ = Bit(i - 1) | Bit(i - 2) << 1;
+    above_ = Bit(above_index_ - 2) | Bit(above_index_ - 1) << 1 | Bit(above_index_) << 2 |
+             Bit(above_index_ + 1) << 3 | Bit(above_index_ + 2) << 4;
+    above2_ = Bit(above2_index_ - 1) | Bit(above2_index_) << 1 | Bit(above2_index_ + 1) << 2;
+  }
+  unsigned Context() const { return west_ | kAboveBits[above_] | kAbove2Bits[above2_]; }
+  // Moves one cell east; `bit` is bit 0 of the cell just left, as stored now.
+  void Advance(unsigned bit) {
+    west_ = (west_ & 1u) << 1 | bit;
+    ++above_index_;
+    ++above2_index_;
+    // The loads past the row's end read the next row's padding, in bounds.
+    above_ = above_ >> 1 | Bit(above_index_ + 2) << 4;
+    above2_ = above2_ >> 1 | Bit(above2_index_ + 1) << 2;
+  }
+
+ private:
+  unsigned Bit(std::size_t j) const { return g_[j] & 1u; }
+
+  const PaddedPlane& g_;
+  std::size_t above_index_;
+  std::size_t above2_index_;
+  unsigned west_;
+  unsigned above_;
+  unsigned above2_;
+};
 
 inline bool IsFree(Cell c) { return c == Cell::kFree; }
 inline bool IsOccupied(Cell c) { return c == Cell::kOccupied; }
@@ -64,9 +114,9 @@ PaddedPlane OccupiedPlane(const std::vector<Cell>& canvas, int width, int height
 // OCCP context: the template over the occupancy so far (cells the canvas
 // already holds as occupied count, also ahead of the scan), the canvas
 // occupancy east and on the next row, and whether the canvas cell is free.
-inline unsigned OccupiedContext(const PaddedPlane& g, std::size_t i, bool canvas_free) {
-  return Template10(g, i) | g[i + 1] << 10 | g[i + g.stride()] << 11 |
-         (canvas_free ? 1u : 0u) << 12;
+inline unsigned OccupiedContext(const RollingTemplate& t, const PaddedPlane& g, std::size_t i,
+                                bool canvas_free) {
+  return t.Context() | g[i + 1] << 10 | g[i + g.stride()] << 11 | (canvas_free ? 1u : 0u) << 12;
 }
 constexpr unsigned kOccupiedContexts = 1u << 13;
 
@@ -78,11 +128,12 @@ constexpr std::uint8_t kCanvasOccupiedBit = 2;
 
 // FREE context: the template over the free bits, the canvas occupancy at the
 // four neighbours, and whether the canvas cell is free.
-inline unsigned FreeContext(const PaddedPlane& fo, std::size_t i, bool canvas_free) {
+inline unsigned FreeContext(const RollingTemplate& t, const PaddedPlane& fo, std::size_t i,
+                            bool canvas_free) {
   const std::size_t s = fo.stride();
   const auto occ = [&](std::size_t j) { return static_cast<unsigned>(fo[j]) >> 1; };
-  return Template10(fo, i) | occ(i - 1) << 10 | occ(i + 1) << 11 | occ(i - s) << 12 |
-         occ(i + s) << 13 | (canvas_free ? 1u : 0u) << 14;
+  return t.Context() | occ(i - 1) << 10 | occ(i + 1) << 11 | occ(i - s) << 12 | occ(i + s) << 13 |
+         (canvas_free ? 1u : 0u) << 14;
 }
 constexpr unsigned kFreeContexts = 1u << 15;
 
@@ -96,12 +147,15 @@ std::vector<std::uint8_t> EncodeOccupiedPlane(const std::vector<std::uint8_t>& t
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
+    RollingTemplate t(g, row);
     for (int col = 0; col < width; ++col, ++cell) {
-      if (IsOccupied(canvas[cell])) continue;
       const std::size_t i = g.At(col, row);
-      const int bit = target[cell] ? 1 : 0;
-      enc.Encode(&models[OccupiedContext(g, i, IsFree(canvas[cell]))], bit);
-      g[i] = static_cast<std::uint8_t>(bit);
+      if (!IsOccupied(canvas[cell])) {
+        const int bit = target[cell] ? 1 : 0;
+        enc.Encode(&models[OccupiedContext(t, g, i, IsFree(canvas[cell]))], bit);
+        g[i] = static_cast<std::uint8_t>(bit);
+      }
+      t.Advance(g[i]);
     }
   }
   enc.Finish();
@@ -116,13 +170,15 @@ Status DecodeOccupiedPlane(const std::uint8_t* data, std::size_t size, int width
   std::vector<Cell>& cv = *canvas;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
+    RollingTemplate t(g, row);
     for (int col = 0; col < width; ++col, ++cell) {
-      if (IsOccupied(cv[cell])) continue;
       const std::size_t i = g.At(col, row);
-      if (dec.Decode(&models[OccupiedContext(g, i, IsFree(cv[cell]))])) {
+      if (!IsOccupied(cv[cell]) &&
+          dec.Decode(&models[OccupiedContext(t, g, i, IsFree(cv[cell]))])) {
         g[i] = 1;
         cv[cell] = Cell::kOccupied;
       }
+      t.Advance(g[i]);
     }
   }
   return CheckEnd(dec, size, "OCCP");
@@ -135,12 +191,16 @@ std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& targe
   RangeEncoder enc;
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
+    RollingTemplate t(fo, row);
     for (int col = 0; col < width; ++col, ++cell) {
-      if (IsOccupied(canvas[cell])) continue;
       const std::size_t i = fo.At(col, row);
-      const int bit = target[cell] ? 1 : 0;
-      enc.Encode(&models[FreeContext(fo, i, IsFree(canvas[cell]))], bit);
-      if (bit) fo[i] |= kFreeBit;
+      unsigned bit = 0;
+      if (!IsOccupied(canvas[cell])) {
+        bit = target[cell] ? 1 : 0;
+        enc.Encode(&models[FreeContext(t, fo, i, IsFree(canvas[cell]))], static_cast<int>(bit));
+        if (bit) fo[i] |= kFreeBit;
+      }
+      t.Advance(bit);
     }
   }
   enc.Finish();
@@ -154,13 +214,17 @@ Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, in
   RangeDecoder dec(data, size);
   std::size_t cell = 0;
   for (int row = 0; row < height; ++row) {
+    RollingTemplate t(fo, row);
     for (int col = 0; col < width; ++col, ++cell) {
       Cell& c = (*canvas)[cell];
-      if (IsOccupied(c)) continue;
       const std::size_t i = fo.At(col, row);
-      const int bit = dec.Decode(&models[FreeContext(fo, i, IsFree(c))]);
-      if (bit) fo[i] |= kFreeBit;
-      c = bit ? Cell::kFree : Cell::kUnknown;
+      unsigned bit = 0;
+      if (!IsOccupied(c)) {
+        bit = static_cast<unsigned>(dec.Decode(&models[FreeContext(t, fo, i, IsFree(c))]));
+        if (bit) fo[i] |= kFreeBit;
+        c = bit ? Cell::kFree : Cell::kUnknown;
+      }
+      t.Advance(bit);
     }
   }
   return CheckEnd(dec, size, "FREE");

@@ -52,9 +52,10 @@ struct EncodeOptions {
   // the original's.
   bool simplify_free_space = false;
   // Lossy mode codes the exact file and, per tuning tried, a file with and
-  // one without segments, and keeps one; with 2 these are coded two at a
-  // time (the calling thread and one more), with 1 all on the calling
-  // thread. The bytes are the same either way. Default 2.
+  // one without segments, and keeps one; lossless mode a file with and one
+  // without segments. With 2 these are coded two at a time (the calling
+  // thread and one more), with 1 all on the calling thread. The bytes are
+  // the same either way. Default 2.
   int max_threads = 2;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
