@@ -309,6 +309,10 @@ StatusOr<std::string> RosMapImagePath(const std::string& path) {
   return yaml.image_path;
 }
 
+std::string SavedImagePath(const std::string& yaml_path) {
+  return DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
+}
+
 Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability durability) {
   if (!IsYamlPath(yaml_path)) {
     return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml");
@@ -330,7 +334,7 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability dur
       line[col] = static_cast<char>(grey[static_cast<int>(grid.at(col, row))]);
     }
   }
-  const std::string image_path = DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
+  const std::string image_path = SavedImagePath(yaml_path);
   const std::string image_name = StemOf(yaml_path) + ".pgm";
   const std::string yaml = YamlText(image_name, meta);
   return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}}, durability);

@@ -79,6 +79,10 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
 Status SaveRosMap(const std::string& yaml_path, const Grid& grid,
                   Durability durability = Durability::kSynced);
 
+// The image SaveRosMap() writes beside `yaml_path`: same directory and stem,
+// ending in .pgm ("maps/office.yaml" -> "maps/office.pgm").
+std::string SavedImagePath(const std::string& yaml_path);
+
 // The trinary PGM pixel values map_saver writes.
 inline constexpr std::uint8_t kPgmOccupied = 0;
 inline constexpr std::uint8_t kPgmFree = 254;

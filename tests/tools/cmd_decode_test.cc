@@ -34,5 +34,21 @@ TEST(CmdDecodeTest, AwkwardOutputNamesLoadBack) {
             0u);
 }
 
+// An .lmap named like the files decode writes is refused, not replaced.
+TEST(CmdDecodeTest, RefusesToOverwriteItsInput) {
+  const std::string dir = testing::MakeTempDir("decode_self");
+  const std::string arena = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  ASSERT_EQ(RunCli({"encode", arena, "-o", dir + "/a.lmap"}).exit_code, 0);
+  const std::string lmap = testing::ReadFile(dir + "/a.lmap");
+  for (const std::string name : {"map.pgm", "map.yaml"}) {
+    SCOPED_TRACE(name);
+    testing::WriteFile(dir + "/" + name, lmap);
+    const CliResult decoded = RunCli({"decode", dir + "/" + name, "-o", dir + "/map.yaml"});
+    EXPECT_EQ(decoded.exit_code, 2) << decoded.out;
+    EXPECT_NE(decoded.err.find("is the input file"), std::string::npos) << decoded.err;
+    EXPECT_EQ(testing::ReadFile(dir + "/" + name), lmap);
+  }
+}
+
 }  // namespace
 }  // namespace linemap

@@ -11,6 +11,20 @@
 namespace linemap::cli {
 
 namespace {
+
+// Refuses outputs that would replace the input file (only possible when an
+// .lmap is named *.yaml or *.pgm; by device and inode, so links count too).
+Status CheckOutput(const std::string& out, const std::string& in) {
+  if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
+  for (const std::string& written : {out, SavedImagePath(out)}) {
+    if (IsSameFile(written, in)) {
+      return InvalidArgumentError("output '" + written + "' is the input file '" + in +
+                                  "'; give another output name");
+    }
+  }
+  return Status::Ok();
+}
+
 std::vector<OptionSpec> DecodeOptions() {
   std::vector<OptionSpec> options = {
       {"-o", "OUT.yaml", "output YAML; the PGM goes beside it"},
@@ -39,9 +53,8 @@ int RunDecode(const std::vector<std::string>& args) {
   if (!parsed) return exit_code;
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("decode", InvalidArgumentError("missing -o OUT.yaml"));
-  if (IsDirectory(*out)) {
-    return ReportError("decode", InvalidArgumentError("'" + *out + "' is a directory"));
-  }
+  const Status output_ok = CheckOutput(*out, parsed->positional[0]);
+  if (!output_ok.ok()) return ReportError("decode", output_ok);
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
   if (!limits.ok()) return ReportError("decode", limits.status());
   StatusOr<Grid> grid = LoadLmap(parsed->positional[0], *limits);
