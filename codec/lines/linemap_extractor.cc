@@ -523,7 +523,12 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     double added;  // a lower bound, or the exact cost when `exact`
     std::uint32_t a, b;
     std::uint32_t version_a, version_b;
-    bool operator>(const Candidate& other) const { return added > other.added; }
+    // A total order: ties go to the lower ids, whatever the queue's layout.
+    bool operator>(const Candidate& other) const {
+      if (added != other.added) return added > other.added;
+      if (a != other.a) return a > other.a;
+      return b > other.b;
+    }
   };
   // A min-heap on `added`; the first candidates are heapified at once.
   std::vector<Candidate> heap;
@@ -571,7 +576,20 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   heap_ready = true;
   FittedLine line;
   LineSweep sweep;
-  while (!heap.empty()) {
+  auto fresh = [&](const Candidate& c) {
+    return version[c.a] == c.version_a && version[c.b] == c.version_b;
+  };
+  // Drops stale candidates from the top, so that the top is the cheapest
+  // merge still possible.
+  auto clean_top = [&] {
+    while (!heap.empty() && !fresh(heap.front())) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
+      heap.pop_back();
+    }
+  };
+  for (;;) {
+    clean_top();
+    if (heap.empty()) break;
     // The top has the smallest bound: once it is over the budget, so is
     // every queued merge, and none of them can be free any more.
     if (over_budget(heap.front().added)) break;
@@ -580,15 +598,13 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     heap.pop_back();
     Group& a = (*groups)[c.a];
     Group& b = (*groups)[c.b];
-    if (!alive[c.a] || !alive[c.b] || version[c.a] != c.version_a || version[c.b] != c.version_b) {
-      continue;
-    }
     // A merge over the budget left is not made: stop its sweep there.
     const double allowed =
         std::max(limits.free_added + kRoundingSlack, limits.total_budget - *total_cost) +
         NoiseSlack(a, b, limits);
     if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
     c.added = ChargedCost(a, b, sweep.cost - a.cost - b.cost, limits);
+    clean_top();
     if (!heap.empty() && c.added > heap.front().added) {
       push(c);  // no longer the cheapest: wait for its turn
       continue;
