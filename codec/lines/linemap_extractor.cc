@@ -504,6 +504,164 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
   b->cells = {};
 }
 
+// A merge candidate: groups a and b under `added`, a lower bound of its
+// charged cost or the exact one; live while b's version is `version_b` (a's
+// candidates are dropped whenever a changes).
+struct Candidate {
+  double added;
+  std::uint32_t a, b;
+  std::uint32_t version_b;
+};
+
+// Candidates ordered by (added, a, b), a total order, so that the merges
+// made do not depend on how the queue stores ties. Two levels: each group
+// keeps the candidates it queued in a short list, and a binary heap of
+// groups is keyed by each list's cheapest entry. A merge drops its groups'
+// lists in O(1) instead of leaving them stale in one large heap; stale
+// entries of the other lists are dropped when they reach their list's top.
+class MergeQueue {
+ public:
+  explicit MergeQueue(std::size_t groups)
+      : lists_(groups), best_(groups, 0), best_key_(groups), position_(groups, kAbsent) {}
+
+  // Queues c; until Build() only into c.a's list.
+  void Push(const Candidate& c) {
+    std::vector<Entry>& list = lists_[c.a];
+    list.push_back({c.added, c.b, c.version_b});
+    if (!built_) return;
+    if (list.size() == 1 || Less(list.back(), list[best_[c.a]])) {
+      SetBest(c.a, static_cast<std::uint32_t>(list.size() - 1));
+      if (position_[c.a] == kAbsent) Insert(c.a);
+      SiftUp(position_[c.a]);
+    }
+  }
+
+  // Heapifies the groups queued so far.
+  void Build() {
+    for (std::uint32_t g = 0; g < lists_.size(); ++g) {
+      if (lists_[g].empty()) continue;
+      FindBest(g);
+      position_[g] = static_cast<std::int32_t>(heap_.size());
+      heap_.push_back(g);
+    }
+    for (std::size_t i = heap_.size() / 2; i-- > 0;) SiftDown(i);
+    built_ = true;
+  }
+
+  // The cheapest live candidate (versions: per group), dropping stale ones;
+  // false when none is left.
+  bool Top(const std::vector<std::uint32_t>& version, Candidate* top) {
+    while (!heap_.empty()) {
+      const std::uint32_t g = heap_[0];
+      const Entry& e = lists_[g][best_[g]];
+      if (version[e.b] == e.version_b) {
+        *top = {e.added, g, e.b, e.version_b};
+        return true;
+      }
+      RemoveBest(g);
+    }
+    return false;
+  }
+
+  // Removes the candidate Top() returned.
+  void Pop() { RemoveBest(heap_[0]); }
+
+  // Drops every candidate queued by g.
+  void Clear(std::uint32_t g) {
+    lists_[g].clear();
+    if (position_[g] != kAbsent) Erase(g);
+  }
+
+ private:
+  struct Entry {
+    double added;
+    std::uint32_t b;
+    std::uint32_t version_b;
+  };
+  static constexpr std::int32_t kAbsent = -1;
+
+  static bool Less(const Entry& x, const Entry& y) {
+    return x.added < y.added || (x.added == y.added && x.b < y.b);
+  }
+  // Group order in the heap: by its best entry, then (a, b).
+  bool Before(std::uint32_t g, std::uint32_t h) const {
+    if (best_key_[g] != best_key_[h]) return best_key_[g] < best_key_[h];
+    if (g != h) return g < h;
+    return false;
+  }
+  void SetBest(std::uint32_t g, std::uint32_t index) {
+    best_[g] = index;
+    best_key_[g] = lists_[g][index].added;
+  }
+  void FindBest(std::uint32_t g) {
+    const std::vector<Entry>& list = lists_[g];
+    std::uint32_t best = 0;
+    for (std::uint32_t i = 1; i < list.size(); ++i) {
+      if (Less(list[i], list[best])) best = i;
+    }
+    SetBest(g, best);
+  }
+  // Swap-removes g's best entry and repositions g.
+  void RemoveBest(std::uint32_t g) {
+    std::vector<Entry>& list = lists_[g];
+    list[best_[g]] = list.back();
+    list.pop_back();
+    if (list.empty()) {
+      Erase(g);
+      return;
+    }
+    FindBest(g);
+    SiftDown(static_cast<std::size_t>(position_[g]));  // its key only grew
+  }
+  void Insert(std::uint32_t g) {
+    position_[g] = static_cast<std::int32_t>(heap_.size());
+    heap_.push_back(g);
+  }
+  void Erase(std::uint32_t g) {
+    const std::size_t i = static_cast<std::size_t>(position_[g]);
+    position_[g] = kAbsent;
+    const std::uint32_t last = heap_.back();
+    heap_.pop_back();
+    if (i == heap_.size()) return;
+    Place(i, last);
+    SiftDown(i);
+    SiftUp(static_cast<std::size_t>(position_[last]));
+  }
+  void Place(std::size_t i, std::uint32_t g) {
+    heap_[i] = g;
+    position_[g] = static_cast<std::int32_t>(i);
+  }
+  void SiftUp(std::size_t i) {
+    const std::uint32_t g = heap_[i];
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 2;
+      if (!Before(g, heap_[parent])) break;
+      Place(i, heap_[parent]);
+      i = parent;
+    }
+    Place(i, g);
+  }
+  void SiftDown(std::size_t i) {
+    const std::uint32_t g = heap_[i];
+    for (;;) {
+      std::size_t child = 2 * i + 1;
+      if (child >= heap_.size()) break;
+      if (child + 1 < heap_.size() && Before(heap_[child + 1], heap_[child])) ++child;
+      if (!Before(heap_[child], g)) break;
+      Place(i, heap_[child]);
+      i = child;
+    }
+    Place(i, g);
+  }
+
+  std::vector<std::vector<Entry>> lists_;  // per group: the candidates it queued
+  std::vector<std::uint32_t> best_;        // per group: index of its cheapest entry
+  std::vector<double> best_key_;           // per group: that entry's `added`
+  std::vector<std::int32_t> position_;     // per group: index in heap_, or kAbsent
+  std::vector<std::uint32_t> heap_;        // groups with candidates
+  bool built_ = false;
+};
+
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
 // bound holds and each merge adds at most max_added_cost to the summed
 // distance beyond the noise slack; a merge charged more than
@@ -519,24 +677,7 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
-  struct Candidate {
-    double added;  // a lower bound, or the exact cost when `exact`
-    std::uint32_t a, b;
-    std::uint32_t version_a, version_b;
-    // A total order: ties go to the lower ids, whatever the queue's layout.
-    bool operator>(const Candidate& other) const {
-      if (added != other.added) return added > other.added;
-      if (a != other.a) return a > other.a;
-      return b > other.b;
-    }
-  };
-  // A min-heap on `added`; the first candidates are heapified at once.
-  std::vector<Candidate> heap;
-  bool heap_ready = false;
-  auto push = [&](const Candidate& c) {
-    heap.push_back(c);
-    if (heap_ready) std::push_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-  };
+  MergeQueue queue(groups->size());
   std::vector<std::uint32_t> version(groups->size(), 0);
   GroupTiles tiles(width, height, 8);
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
@@ -567,35 +708,20 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
         if (lower == std::numeric_limits<double>::infinity()) continue;
         const double bound = ChargedCost(a, b, lower, limits);
         if (over_budget(bound)) continue;
-        push({bound, g, h, version[g], version[h]});
+        queue.Push({bound, g, h, version[h]});
       }
     }
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
-  std::make_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-  heap_ready = true;
+  queue.Build();
   FittedLine line;
   LineSweep sweep;
-  auto fresh = [&](const Candidate& c) {
-    return version[c.a] == c.version_a && version[c.b] == c.version_b;
-  };
-  // Drops stale candidates from the top, so that the top is the cheapest
-  // merge still possible.
-  auto clean_top = [&] {
-    while (!heap.empty() && !fresh(heap.front())) {
-      std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-      heap.pop_back();
-    }
-  };
-  for (;;) {
-    clean_top();
-    if (heap.empty()) break;
+  Candidate c;
+  while (queue.Top(version, &c)) {
     // The top has the smallest bound: once it is over the budget, so is
     // every queued merge, and none of them can be free any more.
-    if (over_budget(heap.front().added)) break;
-    std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-    Candidate c = heap.back();
-    heap.pop_back();
+    if (over_budget(c.added)) break;
+    queue.Pop();
     Group& a = (*groups)[c.a];
     Group& b = (*groups)[c.b];
     // A merge over the budget left is not made: stop its sweep there.
@@ -604,9 +730,9 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
         NoiseSlack(a, b, limits);
     if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
     c.added = ChargedCost(a, b, sweep.cost - a.cost - b.cost, limits);
-    clean_top();
-    if (!heap.empty() && c.added > heap.front().added) {
-      push(c);  // no longer the cheapest: wait for its turn
+    Candidate next;
+    if (queue.Top(version, &next) && c.added > next.added) {
+      queue.Push(c);  // no longer the cheapest: wait for its turn
       continue;
     }
     if (over_budget(c.added)) continue;  // free merges may still follow
@@ -615,6 +741,8 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     alive[c.b] = 0;
     ++version[c.b];
     ++version[c.a];
+    queue.Clear(c.a);
+    queue.Clear(c.b);
     tiles.Add(c.a, a.segment);
     push_candidates(c.a, false);
   }
