@@ -98,11 +98,11 @@ constexpr double kRoundingSlack = 1e-9;
 
 // Angle between two of the 8 directions of kDcol/kDrow, in 45-degree steps (0..4).
 int TurnSteps(int a, int b) {
-  const double angle_a = std::atan2(kDrow[a], kDcol[a]);
-  const double angle_b = std::atan2(kDrow[b], kDcol[b]);
-  double diff = std::abs(angle_a - angle_b);
-  if (diff > std::numbers::pi) diff = 2 * std::numbers::pi - diff;
-  return static_cast<int>(std::lround(diff / (std::numbers::pi / 4)));
+  // Each direction's angle from +x in 45-degree steps (counter-clockwise in
+  // (col, row)).
+  constexpr int kOctant[8] = {0, 2, 4, 6, 1, 3, 5, 7};
+  const int diff = (kOctant[a] - kOctant[b] + 8) % 8;
+  return std::min(diff, 8 - diff);
 }
 
 struct CellXY {
@@ -521,8 +521,13 @@ struct Candidate {
 // entries of the other lists are dropped when they reach their list's top.
 class MergeQueue {
  public:
-  explicit MergeQueue(std::size_t groups)
-      : lists_(groups), best_(groups, 0), best_key_(groups), position_(groups, kAbsent) {}
+  // `version`: per group, bumped whenever the group changes or dies.
+  explicit MergeQueue(const std::vector<std::uint32_t>* version)
+      : version_(version),
+        lists_(version->size()),
+        best_(version->size(), 0),
+        best_key_(version->size()),
+        position_(version->size(), kAbsent) {}
 
   // Queues c; until Build() only into c.a's list.
   void Push(const Candidate& c) {
@@ -548,13 +553,13 @@ class MergeQueue {
     built_ = true;
   }
 
-  // The cheapest live candidate (versions: per group), dropping stale ones;
-  // false when none is left.
-  bool Top(const std::vector<std::uint32_t>& version, Candidate* top) {
+  // The cheapest live candidate, dropping stale ones; false when none is
+  // left.
+  bool Top(Candidate* top) {
     while (!heap_.empty()) {
       const std::uint32_t g = heap_[0];
       const Entry& e = lists_[g][best_[g]];
-      if (version[e.b] == e.version_b) {
+      if (Live(e)) {
         *top = {e.added, g, e.b, e.version_b};
         return true;
       }
@@ -580,6 +585,7 @@ class MergeQueue {
   };
   static constexpr std::int32_t kAbsent = -1;
 
+  bool Live(const Entry& e) const { return (*version_)[e.b] == e.version_b; }
   static bool Less(const Entry& x, const Entry& y) {
     return x.added < y.added || (x.added == y.added && x.b < y.b);
   }
@@ -593,24 +599,29 @@ class MergeQueue {
     best_[g] = index;
     best_key_[g] = lists_[g][index].added;
   }
-  void FindBest(std::uint32_t g) {
-    const std::vector<Entry>& list = lists_[g];
-    std::uint32_t best = 0;
-    for (std::uint32_t i = 1; i < list.size(); ++i) {
-      if (Less(list[i], list[best])) best = i;
+  // Drops g's stale entries and finds its cheapest; false when none is left.
+  bool FindBest(std::uint32_t g) {
+    std::vector<Entry>& list = lists_[g];
+    std::size_t kept = 0;
+    for (const Entry& e : list) {
+      if (!Live(e)) continue;
+      if (kept == 0 || Less(e, list[best_[g]])) best_[g] = static_cast<std::uint32_t>(kept);
+      list[kept++] = e;
     }
-    SetBest(g, best);
+    list.resize(kept);
+    if (kept == 0) return false;
+    SetBest(g, best_[g]);
+    return true;
   }
   // Swap-removes g's best entry and repositions g.
   void RemoveBest(std::uint32_t g) {
     std::vector<Entry>& list = lists_[g];
     list[best_[g]] = list.back();
     list.pop_back();
-    if (list.empty()) {
+    if (!FindBest(g)) {
       Erase(g);
       return;
     }
-    FindBest(g);
     SiftDown(static_cast<std::size_t>(position_[g]));  // its key only grew
   }
   void Insert(std::uint32_t g) {
@@ -654,6 +665,7 @@ class MergeQueue {
     Place(i, g);
   }
 
+  const std::vector<std::uint32_t>* version_;
   std::vector<std::vector<Entry>> lists_;  // per group: the candidates it queued
   std::vector<std::uint32_t> best_;        // per group: index of its cheapest entry
   std::vector<double> best_key_;           // per group: that entry's `added`
@@ -677,8 +689,8 @@ class MergeQueue {
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
-  MergeQueue queue(groups->size());
   std::vector<std::uint32_t> version(groups->size(), 0);
+  MergeQueue queue(&version);
   GroupTiles tiles(width, height, 8);
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
   std::vector<std::uint8_t> alive(groups->size());
@@ -717,7 +729,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   FittedLine line;
   LineSweep sweep;
   Candidate c;
-  while (queue.Top(version, &c)) {
+  while (queue.Top(&c)) {
     // The top has the smallest bound: once it is over the budget, so is
     // every queued merge, and none of them can be free any more.
     if (over_budget(c.added)) break;
@@ -731,7 +743,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
     c.added = ChargedCost(a, b, sweep.cost - a.cost - b.cost, limits);
     Candidate next;
-    if (queue.Top(version, &next) && c.added > next.added) {
+    if (queue.Top(&next) && c.added > next.added) {
       queue.Push(c);  // no longer the cheapest: wait for its turn
       continue;
     }
@@ -929,10 +941,19 @@ std::vector<std::uint32_t> LeaveSpecksToFurniture(const EdgeMap& edges, std::vec
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
 // and keeps every cell within epsilon. The segment spans all cells.
-void PolishGroupL1(Group* group, double epsilon) {
+// Buffers reused across PolishGroupL1 calls.
+struct PolishScratch {
+  std::vector<double> xs, ys, w;
+};
+void PolishGroupL1(Group* group, double epsilon, PolishScratch* scratch) {
   const std::size_t n = group->cells.size();
   if (n < 3) return;
-  std::vector<double> xs(n), ys(n);
+  std::vector<double>& xs = scratch->xs;
+  std::vector<double>& ys = scratch->ys;
+  std::vector<double>& w = scratch->w;
+  xs.resize(n);
+  ys.resize(n);
+  w.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const CellXY& c = group->cells[i];
     xs[i] = c.col;
@@ -956,7 +977,6 @@ void PolishGroupL1(Group* group, double epsilon) {
   for (int iteration = 0; iteration < 8; ++iteration) {
     const double nx = -best.direction.y(), ny = best.direction.x();
     double sw = 0, sx = 0, sy = 0;
-    std::vector<double> w(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double d =
           std::abs((xs[i] - best.centroid.x()) * nx + (ys[i] - best.centroid.y()) * ny);
@@ -1197,6 +1217,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
     int begin = 0;
     for (int length : SplitChain(chain, width, split_epsilon)) {
       Group group;
+      group.cells.reserve(length);
       for (int i = begin; i < begin + length; ++i) {
         const CellXY c = CellOfIndex(chain[i], width);
         group.cells.push_back(c);
@@ -1224,8 +1245,9 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       edges, &groups, static_cast<std::size_t>(options.speck_max_cells),
       options.speck_min_gap_cells, options.speck_max_added_cells, limits.total_budget, &total_cost);
   speckle.insert(speckle.end(), specks.begin(), specks.end());
+  PolishScratch polish_scratch;
   for (Group& group : groups) {
-    if (group.alive) PolishGroupL1(&group, epsilon);
+    if (group.alive) PolishGroupL1(&group, epsilon, &polish_scratch);
   }
 
   LinemapLines result;
