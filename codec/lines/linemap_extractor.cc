@@ -321,13 +321,14 @@ class GroupTiles {
     }
   }
 
-  // Ids of live groups (`alive`, one flag per group id; compact, so the scan
-  // touches no Group) registered in the tiles within `radius` of (x, y)
-  // (an id may repeat across tiles). Dead and repeated entries are dropped
-  // from the buckets on the way, so merged groups do not pile up.
-  void Near(double x, double y, double radius, const std::vector<std::uint8_t>& alive,
-            std::vector<std::uint32_t>* out) {
-    out->clear();
+  // Calls visit(id) for the live groups (`alive`, one flag per group id;
+  // compact, so the scan touches no Group) registered in the tiles within
+  // `radius` of (x, y) (an id may repeat across tiles). Dead and repeated
+  // entries are dropped from the buckets on the way, so merged groups do not
+  // pile up.
+  template <typename Visit>
+  void ForEachNear(double x, double y, double radius, const std::vector<std::uint8_t>& alive,
+                   Visit visit) {
     if (mark_.size() < alive.size()) mark_.resize(alive.size(), 0);
     const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
     const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
@@ -342,9 +343,9 @@ class GroupTiles {
           if (!alive[id] || mark_[id] == stamp_) continue;
           mark_[id] = stamp_;
           bucket[kept++] = id;
+          visit(id);
         }
         bucket.resize(kept);
-        out->insert(out->end(), bucket.begin(), bucket.end());
       }
     }
   }
@@ -695,7 +696,6 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
   std::vector<std::uint8_t> alive(groups->size());
   for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
-  std::vector<std::uint32_t> near;
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::uint32_t stamp = 0;
   // True when a merge adding `added` (or, for a lower bound, more) is
@@ -708,20 +708,21 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
     for (int end = 0; end < 2; ++end) {
-      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, alive, &near);
-      for (std::uint32_t h : near) {
-        if (h == g || seen_stamp[h] == stamp || !alive[h]) continue;
-        if (only_higher_ids && h < g) continue;
-        seen_stamp[h] = stamp;
-        const Group& a = (*groups)[g];
-        const Group& b = (*groups)[h];
-        if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        const double lower = MergeLowerBound(a, b, limits);
-        if (lower == std::numeric_limits<double>::infinity()) continue;
-        const double bound = ChargedCost(a, b, lower, limits);
-        if (over_budget(bound)) continue;
-        queue.Push({bound, g, h, version[h]});
-      }
+      tiles.ForEachNear(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, alive,
+                        [&](std::uint32_t h) {
+                          if (h == g || seen_stamp[h] == stamp) return;
+                          if (only_higher_ids && h < g) return;
+                          seen_stamp[h] = stamp;
+                          const Group& a = (*groups)[g];
+                          const Group& b = (*groups)[h];
+                          if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon))
+                            return;
+                          const double lower = MergeLowerBound(a, b, limits);
+                          if (lower == std::numeric_limits<double>::infinity()) return;
+                          const double bound = ChargedCost(a, b, lower, limits);
+                          if (over_budget(bound)) return;
+                          queue.Push({bound, g, h, version[h]});
+                        });
     }
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
