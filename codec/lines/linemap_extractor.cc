@@ -337,36 +337,53 @@ class GroupTiles {
 
   // Calls visit(id) for the live groups (`alive`, one flag per group id;
   // compact, so the scan touches no Group) registered in the tiles within
-  // `radius` of (x, y) (an id may repeat across tiles). Dead and repeated
-  // entries are dropped from the buckets on the way, so merged groups do not
-  // pile up.
+  // `radius` of either end of `s` (an id may repeat across tiles; tiles
+  // near both ends are scanned once). Dead and repeated entries are dropped
+  // from the buckets on the way, so merged groups do not pile up.
   template <typename Visit>
-  void ForEachNear(double x, double y, double radius, const std::vector<std::uint8_t>& alive,
-                   Visit visit) {
+  void ForEachNearEnds(const LineSegment& s, double radius, const std::vector<std::uint8_t>& alive,
+                       Visit visit) {
     if (mark_.size() < alive.size()) mark_.resize(alive.size(), 0);
-    const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
-    const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
-    const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
-    const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
-    for (int ty = ty0; ty <= ty1; ++ty) {
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
-        ++stamp_;
-        std::size_t kept = 0;
-        for (std::uint32_t id : bucket) {
-          if (!alive[id] || mark_[id] == stamp_) continue;
-          mark_[id] = stamp_;
-          bucket[kept++] = id;
-          visit(id);
-        }
-        bucket.resize(kept);
+    const TileRange first = RangeNear(s.x1, s.y1, radius);
+    const TileRange second = RangeNear(s.x2, s.y2, radius);
+    for (int ty = first.y0; ty <= first.y1; ++ty) {
+      for (int tx = first.x0; tx <= first.x1; ++tx) ScanBucket(tx, ty, alive, visit);
+    }
+    for (int ty = second.y0; ty <= second.y1; ++ty) {
+      for (int tx = second.x0; tx <= second.x1; ++tx) {
+        if (!first.Contains(tx, ty)) ScanBucket(tx, ty, alive, visit);
       }
     }
   }
 
  private:
+  struct TileRange {
+    int x0, x1, y0, y1;
+    bool Contains(int tx, int ty) const { return tx >= x0 && tx <= x1 && ty >= y0 && ty <= y1; }
+  };
+  TileRange RangeNear(double x, double y, double radius) const {
+    return {
+        Clamp((x - radius + 0.5) / tile_, tiles_x_), Clamp((x + radius + 0.5) / tile_, tiles_x_),
+        Clamp((y - radius + 0.5) / tile_, tiles_y_), Clamp((y + radius + 0.5) / tile_, tiles_y_)};
+  }
+  template <typename Visit>
+  void ScanBucket(int tx, int ty, const std::vector<std::uint8_t>& alive, Visit& visit) {
+    auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+    ++stamp_;
+    std::size_t kept = 0;
+    for (std::uint32_t id : bucket) {
+      if (!alive[id] || mark_[id] == stamp_) continue;
+      mark_[id] = stamp_;
+      bucket[kept++] = id;
+      visit(id);
+    }
+    bucket.resize(kept);
+  }
+  // floor(t) clamped to [0, tiles - 1] (truncation is floor for t >= 0).
   static int Clamp(double t, int tiles) {
-    return static_cast<int>(std::clamp(std::floor(t), 0.0, static_cast<double>(tiles - 1)));
+    if (!(t > 0)) return 0;
+    if (t >= tiles - 1) return tiles - 1;
+    return static_cast<int>(t);
   }
   int TileIndex(double x, double y) const {
     return Clamp((y + 0.5) / tile_, tiles_y_) * tiles_x_ + Clamp((x + 0.5) / tile_, tiles_x_);
@@ -721,23 +738,19 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
-    for (int end = 0; end < 2; ++end) {
-      tiles.ForEachNear(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, alive,
-                        [&](std::uint32_t h) {
-                          if (h == g || seen_stamp[h] == stamp) return;
-                          if (only_higher_ids && h < g) return;
-                          seen_stamp[h] = stamp;
-                          const Group& a = (*groups)[g];
-                          const Group& b = (*groups)[h];
-                          if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon))
-                            return;
-                          const double lower = MergeLowerBound(a, b, limits);
-                          if (lower == std::numeric_limits<double>::infinity()) return;
-                          const double bound = ChargedCost(a, b, lower, limits);
-                          if (over_budget(bound)) return;
-                          queue.Push({bound, g, h, version[h]});
-                        });
-    }
+    tiles.ForEachNearEnds(s, gap, alive, [&](std::uint32_t h) {
+      if (h == g || seen_stamp[h] == stamp) return;
+      if (only_higher_ids && h < g) return;
+      seen_stamp[h] = stamp;
+      const Group& a = (*groups)[g];
+      const Group& b = (*groups)[h];
+      if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) return;
+      const double lower = MergeLowerBound(a, b, limits);
+      if (lower == std::numeric_limits<double>::infinity()) return;
+      const double bound = ChargedCost(a, b, lower, limits);
+      if (over_budget(bound)) return;
+      queue.Push({bound, g, h, version[h]});
+    });
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
   queue.Build();
