@@ -396,12 +396,35 @@ class GroupTiles {
   std::uint32_t stamp_ = 0;
 };
 
-double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
-  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
-  const double length_sq = dx * dx + dy * dy;
+// A group's segment and what the merge's candidate filters derive from it,
+// computed once per group rather than once per pair.
+struct SegmentShape {
+  LineSegment s;
+  double dx = 0, dy = 0;  // s.x2 - s.x1, s.y2 - s.y1
+  double length_sq = 0;
+  // sin of the largest angle a line within epsilon of both ends may make
+  // with the group's line (see DirectionsCompatible); >= 1: any angle.
+  double max_sine = 1;
+};
+
+SegmentShape ShapeOf(const Group& g, double epsilon) {
+  SegmentShape shape;
+  shape.s = g.segment;
+  shape.dx = g.segment.x2 - g.segment.x1;
+  shape.dy = g.segment.y2 - g.segment.y1;
+  shape.length_sq = shape.dx * shape.dx + shape.dy * shape.dy;
+  const double reach = 2 * (epsilon + g.max_residual);
+  shape.max_sine = shape.length_sq <= reach * reach ? 1.0 : reach / std::sqrt(shape.length_sq);
+  return shape;
+}
+
+double SquaredDistanceToSegment(double x, double y, const SegmentShape& shape) {
+  const LineSegment& s = shape.s;
   double t = 0;
-  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
-  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+  if (shape.length_sq > 0) {
+    t = std::clamp(((x - s.x1) * shape.dx + (y - s.y1) * shape.dy) / shape.length_sq, 0.0, 1.0);
+  }
+  const double ex = x - (s.x1 + t * shape.dx), ey = y - (s.y1 + t * shape.dy);
   return ex * ex + ey * ey;
 }
 
@@ -422,16 +445,10 @@ struct MergeLimits {
 // extreme cells of a group (length l along its line, residual r) makes an
 // angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
 // so the two groups' directions may differ by at most the sum of the two
-// such angles.
-bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
-  // sin of each group's largest allowed angle; >= 1 means any angle.
-  auto max_sine = [epsilon](const Group& g) {
-    const double dx = g.segment.x2 - g.segment.x1, dy = g.segment.y2 - g.segment.y1;
-    const double length_sq = dx * dx + dy * dy;
-    const double reach = 2 * (epsilon + g.max_residual);
-    return length_sq <= reach * reach ? 1.0 : reach / std::sqrt(length_sq);
-  };
-  const double sa = max_sine(a), sb = max_sine(b);
+// such angles (SegmentShape::max_sine).
+bool DirectionsCompatible(const Group& a, const SegmentShape& shape_a, const Group& b,
+                          const SegmentShape& shape_b) {
+  const double sa = shape_a.max_sine, sb = shape_b.max_sine;
   if (sa >= 1 || sb >= 1) return true;
   // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B.
   const double cosine = std::abs(a.line.direction.dot(b.line.direction));
@@ -448,13 +465,13 @@ bool BoxesWithinGap(const LineSegment& a, const LineSegment& b, double gap) {
 }
 
 // True when an end of one segment is within `gap` of the other segment.
-bool EndsWithinGap(const Group& a, const Group& b, double gap) {
-  if (!BoxesWithinGap(a.segment, b.segment, gap)) return false;
+bool EndsWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
+  if (!BoxesWithinGap(a.s, b.s, gap)) return false;
   const double gap_sq = gap * gap;
-  return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
-         SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
-         SquaredDistanceToSegment(b.segment.x1, b.segment.y1, a.segment) <= gap_sq ||
-         SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
+  return SquaredDistanceToSegment(a.s.x1, a.s.y1, b) <= gap_sq ||
+         SquaredDistanceToSegment(a.s.x2, a.s.y2, b) <= gap_sq ||
+         SquaredDistanceToSegment(b.s.x1, b.s.y1, a) <= gap_sq ||
+         SquaredDistanceToSegment(b.s.x2, b.s.y2, a) <= gap_sq;
 }
 
 // The part of a merge's added distance (`added`, exact or a lower bound)
@@ -471,8 +488,11 @@ double NoiseSlack(const Group& a, const Group& b, const MergeLimits& limits) {
   if (cells < limits.noise_min_cells || noise < limits.noise_min_mean * cells) return 0;
   return std::max(0.0, limits.noise_factor * noise - a.cost - b.cost);
 }
+double ChargedCost(double added, double slack) {
+  return added - std::min(slack, std::max(added, 0.0));
+}
 double ChargedCost(const Group& a, const Group& b, double added, const MergeLimits& limits) {
-  return added - std::min(NoiseSlack(a, b, limits), std::max(added, 0.0));
+  return ChargedCost(added, NoiseSlack(a, b, limits));
 }
 
 // The summed distance a merged group may reach: its parts' cost plus
@@ -491,18 +511,17 @@ PointMoments MergedMoments(const Group& a, const Group& b) {
 
 // A lower bound, in O(1), on what merging a and b adds to the summed
 // distance, or infinity when the merge surely breaks the bound or the
-// budget. The merged cells' squared distances to their TLS line sum to
-// S = n * (smallest eigenvalue of their covariance); with every distance at
-// most epsilon, the summed distance is at least S / epsilon, and at least
-// sqrt(S).
-double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits) {
+// budget (MergeBudget with noise slack `slack`). The merged cells' squared distances to their TLS
+// line sum to S = n * (smallest eigenvalue of their covariance); with every distance at most
+// epsilon, the summed distance is at least S / epsilon, and at least sqrt(S).
+double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits, double slack) {
   const PointMoments moments = MergedMoments(a, b);
   const double mean_sq = SmallestEigenvalue(moments.Covariance());
   const double epsilon = limits.epsilon;
   if (mean_sq > epsilon * epsilon) return std::numeric_limits<double>::infinity();
   const double sum_sq = mean_sq * static_cast<double>(moments.count());
   const double cost = std::max(sum_sq / epsilon, std::sqrt(sum_sq));
-  if (cost > MergeBudget(a, b, limits) + kRoundingSlack) {
+  if (cost > a.cost + b.cost + std::max(limits.max_added, slack) + kRoundingSlack) {
     return std::numeric_limits<double>::infinity();
   }
   return cost - a.cost - b.cost;
@@ -727,6 +746,9 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
   std::vector<std::uint8_t> alive(groups->size());
   for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
+  std::vector<SegmentShape> shapes(groups->size());
+  for (std::uint32_t id = 0; id < groups->size(); ++id)
+    shapes[id] = ShapeOf((*groups)[id], epsilon);
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::uint32_t stamp = 0;
   // True when a merge adding `added` (or, for a lower bound, more) is
@@ -738,16 +760,21 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
+    const Group& a = (*groups)[g];
+    const SegmentShape& shape_a = shapes[g];
     tiles.ForEachNearEnds(s, gap, alive, [&](std::uint32_t h) {
       if (h == g || seen_stamp[h] == stamp) return;
       if (only_higher_ids && h < g) return;
       seen_stamp[h] = stamp;
-      const Group& a = (*groups)[g];
       const Group& b = (*groups)[h];
-      if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) return;
-      const double lower = MergeLowerBound(a, b, limits);
+      const SegmentShape& shape_b = shapes[h];
+      if (!EndsWithinGap(shape_a, shape_b, gap) || !DirectionsCompatible(a, shape_a, b, shape_b)) {
+        return;
+      }
+      const double slack = NoiseSlack(a, b, limits);
+      const double lower = MergeLowerBound(a, b, limits, slack);
       if (lower == std::numeric_limits<double>::infinity()) return;
-      const double bound = ChargedCost(a, b, lower, limits);
+      const double bound = ChargedCost(lower, slack);
       if (over_budget(bound)) return;
       queue.Push({bound, g, h, version[h]});
     });
@@ -784,6 +811,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     queue.Clear(c.a);
     queue.Clear(c.b);
     tiles.Add(c.a, a.segment);
+    shapes[c.a] = ShapeOf(a, epsilon);
     push_candidates(c.a, false);
   }
 }
