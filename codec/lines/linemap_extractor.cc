@@ -577,7 +577,6 @@ class MergeQueue {
       : version_(version),
         lists_(version->size()),
         best_(version->size(), 0),
-        best_key_(version->size()),
         position_(version->size(), kAbsent) {}
 
   // Queues c; until Build() only into c.a's list.
@@ -586,19 +585,22 @@ class MergeQueue {
     list.push_back({c.added, c.b, c.version_b});
     if (!built_) return;
     if (list.size() == 1 || Less(list.back(), list[best_[c.a]])) {
-      SetBest(c.a, static_cast<std::uint32_t>(list.size() - 1));
-      if (position_[c.a] == kAbsent) Insert(c.a);
-      SiftUp(position_[c.a]);
+      best_[c.a] = static_cast<std::uint32_t>(list.size() - 1);
+      if (position_[c.a] == kAbsent) {
+        position_[c.a] = static_cast<std::int32_t>(heap_.size());
+        heap_.push_back({c.added, c.a});
+      }
+      heap_[position_[c.a]].key = c.added;
+      SiftUp(static_cast<std::size_t>(position_[c.a]));
     }
   }
 
   // Heapifies the groups queued so far.
   void Build() {
     for (std::uint32_t g = 0; g < lists_.size(); ++g) {
-      if (lists_[g].empty()) continue;
-      FindBest(g);
+      if (!FindBest(g)) continue;
       position_[g] = static_cast<std::int32_t>(heap_.size());
-      heap_.push_back(g);
+      heap_.push_back({lists_[g][best_[g]].added, g});
     }
     for (std::size_t i = heap_.size() / 2; i-- > 0;) SiftDown(i);
     built_ = true;
@@ -608,7 +610,7 @@ class MergeQueue {
   // left.
   bool Top(Candidate* top) {
     while (!heap_.empty()) {
-      const std::uint32_t g = heap_[0];
+      const std::uint32_t g = heap_[0].group;
       const Entry& e = lists_[g][best_[g]];
       if (Live(e)) {
         *top = {e.added, g, e.b, e.version_b};
@@ -620,7 +622,7 @@ class MergeQueue {
   }
 
   // Removes the candidate Top() returned.
-  void Pop() { RemoveBest(heap_[0]); }
+  void Pop() { RemoveBest(heap_[0].group); }
 
   // Drops every candidate queued by g.
   void Clear(std::uint32_t g) {
@@ -634,21 +636,21 @@ class MergeQueue {
     std::uint32_t b;
     std::uint32_t version_b;
   };
+  // A group in the heap under its cheapest entry's `added` (kept here so
+  // that sifting reads only the heap).
+  struct HeapEntry {
+    double key;
+    std::uint32_t group;
+  };
   static constexpr std::int32_t kAbsent = -1;
 
   bool Live(const Entry& e) const { return (*version_)[e.b] == e.version_b; }
   static bool Less(const Entry& x, const Entry& y) {
     return x.added < y.added || (x.added == y.added && x.b < y.b);
   }
-  // Group order in the heap: by its best entry, then (a, b).
-  bool Before(std::uint32_t g, std::uint32_t h) const {
-    if (best_key_[g] != best_key_[h]) return best_key_[g] < best_key_[h];
-    if (g != h) return g < h;
-    return false;
-  }
-  void SetBest(std::uint32_t g, std::uint32_t index) {
-    best_[g] = index;
-    best_key_[g] = lists_[g][index].added;
+  // Heap order: by the best entry, then (a, b).
+  static bool Before(const HeapEntry& x, const HeapEntry& y) {
+    return x.key < y.key || (x.key == y.key && x.group < y.group);
   }
   // Drops g's stale entries and finds its cheapest; false when none is left.
   bool FindBest(std::uint32_t g) {
@@ -660,11 +662,9 @@ class MergeQueue {
       list[kept++] = e;
     }
     list.resize(kept);
-    if (kept == 0) return false;
-    SetBest(g, best_[g]);
-    return true;
+    return kept > 0;
   }
-  // Swap-removes g's best entry and repositions g.
+  // Swap-removes the best entry of g (the heap's top) and repositions g.
   void RemoveBest(std::uint32_t g) {
     std::vector<Entry>& list = lists_[g];
     list[best_[g]] = list.back();
@@ -673,55 +673,52 @@ class MergeQueue {
       Erase(g);
       return;
     }
-    SiftDown(static_cast<std::size_t>(position_[g]));  // its key only grew
-  }
-  void Insert(std::uint32_t g) {
-    position_[g] = static_cast<std::int32_t>(heap_.size());
-    heap_.push_back(g);
+    const std::size_t i = static_cast<std::size_t>(position_[g]);
+    heap_[i].key = list[best_[g]].added;
+    SiftDown(i);  // its key only grew
   }
   void Erase(std::uint32_t g) {
     const std::size_t i = static_cast<std::size_t>(position_[g]);
     position_[g] = kAbsent;
-    const std::uint32_t last = heap_.back();
+    const HeapEntry last = heap_.back();
     heap_.pop_back();
     if (i == heap_.size()) return;
     Place(i, last);
     SiftDown(i);
-    SiftUp(static_cast<std::size_t>(position_[last]));
+    SiftUp(static_cast<std::size_t>(position_[last.group]));
   }
-  void Place(std::size_t i, std::uint32_t g) {
-    heap_[i] = g;
-    position_[g] = static_cast<std::int32_t>(i);
+  void Place(std::size_t i, const HeapEntry& entry) {
+    heap_[i] = entry;
+    position_[entry.group] = static_cast<std::int32_t>(i);
   }
   void SiftUp(std::size_t i) {
-    const std::uint32_t g = heap_[i];
+    const HeapEntry entry = heap_[i];
     while (i > 0) {
       const std::size_t parent = (i - 1) / 2;
-      if (!Before(g, heap_[parent])) break;
+      if (!Before(entry, heap_[parent])) break;
       Place(i, heap_[parent]);
       i = parent;
     }
-    Place(i, g);
+    Place(i, entry);
   }
   void SiftDown(std::size_t i) {
-    const std::uint32_t g = heap_[i];
+    const HeapEntry entry = heap_[i];
     for (;;) {
       std::size_t child = 2 * i + 1;
       if (child >= heap_.size()) break;
       if (child + 1 < heap_.size() && Before(heap_[child + 1], heap_[child])) ++child;
-      if (!Before(heap_[child], g)) break;
+      if (!Before(heap_[child], entry)) break;
       Place(i, heap_[child]);
       i = child;
     }
-    Place(i, g);
+    Place(i, entry);
   }
 
   const std::vector<std::uint32_t>* version_;
   std::vector<std::vector<Entry>> lists_;  // per group: the candidates it queued
   std::vector<std::uint32_t> best_;        // per group: index of its cheapest entry
-  std::vector<double> best_key_;           // per group: that entry's `added`
   std::vector<std::int32_t> position_;     // per group: index in heap_, or kAbsent
-  std::vector<std::uint32_t> heap_;        // groups with candidates
+  std::vector<HeapEntry> heap_;            // groups with candidates
   bool built_ = false;
 };
 
