@@ -72,14 +72,4 @@ LineSegment SegmentFromProjections(const FittedLine& line, const double* xs, con
   return {a.x(), a.y(), b.x(), b.y()};
 }
 
-double PointSegmentDistance(double x, double y, const LineSegment& s) {
-  const double dx = s.x2 - s.x1;
-  const double dy = s.y2 - s.y1;
-  const double length_sq = dx * dx + dy * dy;
-  double t = 0;
-  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
-  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
-  return std::sqrt(ex * ex + ey * ey);
-}
-
 }  // namespace linemap::lines_internal

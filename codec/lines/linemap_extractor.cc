@@ -400,7 +400,8 @@ class GroupTiles {
 // computed once per group rather than once per pair.
 struct SegmentShape {
   LineSegment s;
-  double dx = 0, dy = 0;  // s.x2 - s.x1, s.y2 - s.y1
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;  // bounding box
+  double dx = 0, dy = 0;                              // s.x2 - s.x1, s.y2 - s.y1
   double length_sq = 0;
   // sin of the largest angle a line within epsilon of both ends may make
   // with the group's line (see DirectionsCompatible); >= 1: any angle.
@@ -410,6 +411,10 @@ struct SegmentShape {
 SegmentShape ShapeOf(const Group& g, double epsilon) {
   SegmentShape shape;
   shape.s = g.segment;
+  shape.x_min = std::min(g.segment.x1, g.segment.x2);
+  shape.x_max = std::max(g.segment.x1, g.segment.x2);
+  shape.y_min = std::min(g.segment.y1, g.segment.y2);
+  shape.y_max = std::max(g.segment.y1, g.segment.y2);
   shape.dx = g.segment.x2 - g.segment.x1;
   shape.dy = g.segment.y2 - g.segment.y1;
   shape.length_sq = shape.dx * shape.dx + shape.dy * shape.dy;
@@ -457,16 +462,14 @@ bool DirectionsCompatible(const Group& a, const SegmentShape& shape_a, const Gro
 
 // False when the segments' bounding boxes, one grown by `gap`, are apart:
 // then no end of one is within `gap` of the other (a cheap first test).
-bool BoxesWithinGap(const LineSegment& a, const LineSegment& b, double gap) {
-  return std::min(a.x1, a.x2) - gap <= std::max(b.x1, b.x2) &&
-         std::min(b.x1, b.x2) <= std::max(a.x1, a.x2) + gap &&
-         std::min(a.y1, a.y2) - gap <= std::max(b.y1, b.y2) &&
-         std::min(b.y1, b.y2) <= std::max(a.y1, a.y2) + gap;
+bool BoxesWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
+  return a.x_min - gap <= b.x_max && b.x_min <= a.x_max + gap && a.y_min - gap <= b.y_max &&
+         b.y_min <= a.y_max + gap;
 }
 
 // True when an end of one segment is within `gap` of the other segment.
 bool EndsWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
-  if (!BoxesWithinGap(a.s, b.s, gap)) return false;
+  if (!BoxesWithinGap(a, b, gap)) return false;
   const double gap_sq = gap * gap;
   return SquaredDistanceToSegment(a.s.x1, a.s.y1, b) <= gap_sq ||
          SquaredDistanceToSegment(a.s.x2, a.s.y2, b) <= gap_sq ||
