@@ -50,6 +50,15 @@ void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s) {
   }
 }
 
+double SegmentIndex::DistanceOutside(double x, double y, int qx, int qy, int ring) const {
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  const double left = qx - ring > 0 ? x - ((qx - ring) * tile_ - 0.5) : kFar;
+  const double right = qx + ring < tiles_x_ - 1 ? (qx + ring + 1) * tile_ - 0.5 - x : kFar;
+  const double top = qy - ring > 0 ? y - ((qy - ring) * tile_ - 0.5) : kFar;
+  const double bottom = qy + ring < tiles_y_ - 1 ? (qy + ring + 1) * tile_ - 0.5 - y : kFar;
+  return std::min(std::min(left, right), std::min(top, bottom));
+}
+
 double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::uint8_t>* skip,
                                      std::uint32_t* nearest_id) {
   double best = std::numeric_limits<double>::infinity();
@@ -80,9 +89,10 @@ double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::
         if (ring == 0) break;
       }
     }
-    // Any segment not yet seen touches only tiles outside this ring, which
-    // are at least ring * tile away from a query point inside tile (qx, qy).
-    if (best <= static_cast<double>(ring) * tile_) break;
+    // Any segment not yet seen touches only tiles outside this ring: it is at
+    // least as far as the border of the rings' square (at least ring * tile
+    // away; the map's border tiles own everything beyond them).
+    if (best <= DistanceOutside(x, y, qx, qy, ring)) break;
   }
   return best;
 }

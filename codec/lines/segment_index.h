@@ -30,6 +30,10 @@ class SegmentIndex {
  private:
   void AddToTiles(std::uint32_t id, const LineSegment& s);
   int TileOf(double coordinate, int tiles) const;
+  // Distance from (x, y), in tile (qx, qy), to the nearest point outside the
+  // square of tiles within `ring` of that tile (infinity past the map's border
+  // tiles, which own everything clamped into them).
+  double DistanceOutside(double x, double y, int qx, int qy, int ring) const;
 
   const std::vector<LineSegment>* segments_;
   int tile_ = 16;
