@@ -580,15 +580,19 @@ class MergeQueue {
       : version_(version),
         lists_(version->size()),
         best_(version->size(), 0),
-        position_(version->size(), kAbsent) {}
+        position_(version->size(), kAbsent) {
+    arena_.reserve(16 * version->size());  // ~10 candidates per group
+  }
 
   // Queues c; until Build() only into c.a's list.
   void Push(const Candidate& c) {
-    std::vector<Entry>& list = lists_[c.a];
-    list.push_back({c.added, c.b, c.version_b});
+    List& list = lists_[c.a];
+    if (list.size == list.capacity) Grow(&list);
+    Entry* entries = &arena_[list.begin];
+    entries[list.size++] = {c.added, c.b, c.version_b};
     if (!built_) return;
-    if (list.size() == 1 || Less(list.back(), list[best_[c.a]])) {
-      best_[c.a] = static_cast<std::uint32_t>(list.size() - 1);
+    if (list.size == 1 || Less(entries[list.size - 1], entries[best_[c.a]])) {
+      best_[c.a] = list.size - 1;
       if (position_[c.a] == kAbsent) {
         position_[c.a] = static_cast<std::int32_t>(heap_.size());
         heap_.push_back({c.added, c.a});
@@ -603,7 +607,7 @@ class MergeQueue {
     for (std::uint32_t g = 0; g < lists_.size(); ++g) {
       if (!FindBest(g)) continue;
       position_[g] = static_cast<std::int32_t>(heap_.size());
-      heap_.push_back({lists_[g][best_[g]].added, g});
+      heap_.push_back({Best(g).added, g});
     }
     for (std::size_t i = heap_.size() / 2; i-- > 0;) SiftDown(i);
     built_ = true;
@@ -614,7 +618,7 @@ class MergeQueue {
   bool Top(Candidate* top) {
     while (!heap_.empty()) {
       const std::uint32_t g = heap_[0].group;
-      const Entry& e = lists_[g][best_[g]];
+      const Entry& e = Best(g);
       if (Live(e)) {
         *top = {e.added, g, e.b, e.version_b};
         return true;
@@ -629,7 +633,7 @@ class MergeQueue {
 
   // Drops every candidate queued by g.
   void Clear(std::uint32_t g) {
-    lists_[g].clear();
+    lists_[g].size = 0;  // keeps its room in the arena
     if (position_[g] != kAbsent) Erase(g);
   }
 
@@ -645,7 +649,23 @@ class MergeQueue {
     double key;
     std::uint32_t group;
   };
+  // A group's candidates: arena_[begin, begin + size), with room for
+  // `capacity` (one arena instead of a vector per group: fewer allocations).
+  struct List {
+    std::uint32_t begin = 0, size = 0, capacity = 0;
+  };
   static constexpr std::int32_t kAbsent = -1;
+
+  // Moves a full list to the arena's end with twice the room.
+  void Grow(List* list) {
+    const std::uint32_t capacity = std::max<std::uint32_t>(8, 2 * list->capacity);
+    const std::uint32_t begin = static_cast<std::uint32_t>(arena_.size());
+    arena_.resize(arena_.size() + capacity);
+    std::copy_n(arena_.begin() + list->begin, list->size, arena_.begin() + begin);
+    list->begin = begin;
+    list->capacity = capacity;
+  }
+  const Entry& Best(std::uint32_t g) const { return arena_[lists_[g].begin + best_[g]]; }
 
   bool Live(const Entry& e) const { return (*version_)[e.b] == e.version_b; }
   static bool Less(const Entry& x, const Entry& y) {
@@ -657,27 +677,29 @@ class MergeQueue {
   }
   // Drops g's stale entries and finds its cheapest; false when none is left.
   bool FindBest(std::uint32_t g) {
-    std::vector<Entry>& list = lists_[g];
-    std::size_t kept = 0;
-    for (const Entry& e : list) {
+    List& list = lists_[g];
+    Entry* entries = &arena_[list.begin];
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < list.size; ++i) {
+      const Entry e = entries[i];
       if (!Live(e)) continue;
-      if (kept == 0 || Less(e, list[best_[g]])) best_[g] = static_cast<std::uint32_t>(kept);
-      list[kept++] = e;
+      if (kept == 0 || Less(e, entries[best_[g]])) best_[g] = kept;
+      entries[kept++] = e;
     }
-    list.resize(kept);
+    list.size = kept;
     return kept > 0;
   }
   // Swap-removes the best entry of g (the heap's top) and repositions g.
   void RemoveBest(std::uint32_t g) {
-    std::vector<Entry>& list = lists_[g];
-    list[best_[g]] = list.back();
-    list.pop_back();
+    List& list = lists_[g];
+    arena_[list.begin + best_[g]] = arena_[list.begin + list.size - 1];
+    --list.size;
     if (!FindBest(g)) {
       Erase(g);
       return;
     }
     const std::size_t i = static_cast<std::size_t>(position_[g]);
-    heap_[i].key = list[best_[g]].added;
+    heap_[i].key = Best(g).added;
     SiftDown(i);  // its key only grew
   }
   void Erase(std::uint32_t g) {
@@ -718,10 +740,11 @@ class MergeQueue {
   }
 
   const std::vector<std::uint32_t>* version_;
-  std::vector<std::vector<Entry>> lists_;  // per group: the candidates it queued
-  std::vector<std::uint32_t> best_;        // per group: index of its cheapest entry
-  std::vector<std::int32_t> position_;     // per group: index in heap_, or kAbsent
-  std::vector<HeapEntry> heap_;            // groups with candidates
+  std::vector<List> lists_;  // per group: the candidates it queued
+  std::vector<Entry> arena_;
+  std::vector<std::uint32_t> best_;     // per group: index of its cheapest entry
+  std::vector<std::int32_t> position_;  // per group: index in heap_, or kAbsent
+  std::vector<HeapEntry> heap_;         // groups with candidates
   bool built_ = false;
 };
 
