@@ -1099,16 +1099,27 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
     const int ty = std::clamp(static_cast<int>(std::floor((y + 0.5) / kTile)), 0, tiles_y - 1);
     return std::pair<int, int>(tx, ty);
   };
-  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)).
-  std::vector<std::vector<std::uint32_t>> ends(static_cast<std::size_t>(tiles_x) * tiles_y);
+  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)), bucketed by tile in
+  // increasing order (a counting sort: tile t's ends are
+  // ends[tile_begin[t], tile_begin[t + 1])).
   auto end_point = [&](std::uint32_t end) {
     const LineSegment& s = (*segments)[end / 2];
     return (end % 2 == 0) ? Eigen::Vector2d(s.x1, s.y1) : Eigen::Vector2d(s.x2, s.y2);
   };
-  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+  const std::uint32_t end_count = static_cast<std::uint32_t>(2 * segments->size());
+  std::vector<std::uint32_t> tile_of_end(end_count);
+  std::vector<std::uint32_t> tile_begin(static_cast<std::size_t>(tiles_x) * tiles_y + 1, 0);
+  for (std::uint32_t end = 0; end < end_count; ++end) {
     const Eigen::Vector2d p = end_point(end);
     const auto [tx, ty] = tile_of(p.x(), p.y());
-    ends[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(end);
+    tile_of_end[end] = static_cast<std::uint32_t>(ty) * tiles_x + tx;
+    ++tile_begin[tile_of_end[end] + 1];
+  }
+  for (std::size_t t = 1; t < tile_begin.size(); ++t) tile_begin[t] += tile_begin[t - 1];
+  std::vector<std::uint32_t> ends(end_count);
+  {
+    std::vector<std::uint32_t> fill(tile_begin.begin(), tile_begin.end() - 1);
+    for (std::uint32_t end = 0; end < end_count; ++end) ends[fill[tile_of_end[end]]++] = end;
   }
   std::vector<std::uint8_t> joined(2 * segments->size(), 0);
   const double min_sine = std::sin(20.0 * std::numbers::pi / 180.0);
@@ -1119,7 +1130,9 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
     const auto [tx1, ty1] = tile_of(p.x() + reach, p.y() + reach);
     for (int ty = ty0; ty <= ty1 && !joined[end]; ++ty) {
       for (int tx = tx0; tx <= tx1 && !joined[end]; ++tx) {
-        for (std::uint32_t other : ends[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+        const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
+        for (std::uint32_t k = tile_begin[tile]; k < tile_begin[tile + 1]; ++k) {
+          const std::uint32_t other = ends[k];
           if (other / 2 == end / 2 || joined[other]) continue;
           const Eigen::Vector2d q = end_point(other);
           if ((p - q).norm() > reach) continue;
