@@ -406,6 +406,7 @@ struct SegmentShape {
   // sin of the largest angle a line within epsilon of both ends may make
   // with the group's line (see DirectionsCompatible); >= 1: any angle.
   double max_sine = 1;
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // the group's line's
 };
 
 SegmentShape ShapeOf(const Group& g, double epsilon) {
@@ -420,15 +421,17 @@ SegmentShape ShapeOf(const Group& g, double epsilon) {
   shape.length_sq = shape.dx * shape.dx + shape.dy * shape.dy;
   const double reach = 2 * (epsilon + g.max_residual);
   shape.max_sine = shape.length_sq <= reach * reach ? 1.0 : reach / std::sqrt(shape.length_sq);
+  shape.direction = g.line.direction;
   return shape;
 }
 
+// Selects rather than branches (the candidate filters run on many pairs
+// with data-dependent outcomes): the same value as clamping t to [0, 1] for
+// a segment of positive length, 0 for a point.
 double SquaredDistanceToSegment(double x, double y, const SegmentShape& shape) {
   const LineSegment& s = shape.s;
-  double t = 0;
-  if (shape.length_sq > 0) {
-    t = std::clamp(((x - s.x1) * shape.dx + (y - s.y1) * shape.dy) / shape.length_sq, 0.0, 1.0);
-  }
+  const double along = ((x - s.x1) * shape.dx + (y - s.y1) * shape.dy) / shape.length_sq;
+  const double t = shape.length_sq > 0 ? std::min(std::max(along, 0.0), 1.0) : 0.0;
   const double ex = x - (s.x1 + t * shape.dx), ey = y - (s.y1 + t * shape.dy);
   return ex * ex + ey * ey;
 }
@@ -451,25 +454,25 @@ struct MergeLimits {
 // angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
 // so the two groups' directions may differ by at most the sum of the two
 // such angles (SegmentShape::max_sine).
-bool DirectionsCompatible(const Group& a, const SegmentShape& shape_a, const Group& b,
-                          const SegmentShape& shape_b) {
+bool DirectionsCompatible(const SegmentShape& shape_a, const SegmentShape& shape_b) {
   const double sa = shape_a.max_sine, sb = shape_b.max_sine;
-  if (sa >= 1 || sb >= 1) return true;
-  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B.
-  const double cosine = std::abs(a.line.direction.dot(b.line.direction));
-  return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
+  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B
+  // (evaluated whatever sa and sb, so that the result is a select).
+  const double cosine = std::abs(shape_a.direction.dot(shape_b.direction));
+  const double limit = std::sqrt(std::max(0.0, (1 - sa * sa) * (1 - sb * sb))) - sa * sb - 1e-12;
+  return (sa >= 1) | (sb >= 1) | (cosine >= limit);
 }
 
 // False when the segments' bounding boxes, one grown by `gap`, are apart:
 // then no end of one is within `gap` of the other (a cheap first test).
 bool BoxesWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
-  return a.x_min - gap <= b.x_max && b.x_min <= a.x_max + gap && a.y_min - gap <= b.y_max &&
-         b.y_min <= a.y_max + gap;
+  return (a.x_min - gap <= b.x_max) & (b.x_min <= a.x_max + gap) & (a.y_min - gap <= b.y_max) &
+         (b.y_min <= a.y_max + gap);
 }
 
 // True when an end of one segment is within `gap` of the other segment.
+// (BoxesWithinGap is the cheap first test.)
 bool EndsWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
-  if (!BoxesWithinGap(a, b, gap)) return false;
   const double gap_sq = gap * gap;
   return SquaredDistanceToSegment(a.s.x1, a.s.y1, b) <= gap_sq ||
          SquaredDistanceToSegment(a.s.x2, a.s.y2, b) <= gap_sq ||
@@ -773,6 +776,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   for (std::uint32_t id = 0; id < groups->size(); ++id)
     shapes[id] = ShapeOf((*groups)[id], epsilon);
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
+  std::vector<std::uint32_t> batch(groups->size());  // candidate ids (each at most once)
   std::uint32_t stamp = 0;
   // True when a merge adding `added` (or, for a lower bound, more) is
   // neither free nor within the budget left.
@@ -785,22 +789,37 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     const LineSegment s = (*groups)[g].segment;
     const Group& a = (*groups)[g];
     const SegmentShape& shape_a = shapes[g];
+    // The filters run in passes over a batch that keep the survivors
+    // (selects, not branches: their outcomes are data dependent).
+    std::size_t n = 0;
     tiles.ForEachNearEnds(s, gap, alive, [&](std::uint32_t h) {
-      if (h == g || seen_stamp[h] == stamp) return;
-      if (only_higher_ids && h < g) return;
+      const bool take = (h != g) & (seen_stamp[h] != stamp) & (!only_higher_ids | (h > g));
       seen_stamp[h] = stamp;
+      batch[n] = h;
+      n += take;
+    });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      batch[kept] = batch[i];
+      kept += BoxesWithinGap(shape_a, shapes[batch[i]], gap);
+    }
+    n = kept;
+    kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SegmentShape& shape_b = shapes[batch[i]];
+      batch[kept] = batch[i];
+      kept += EndsWithinGap(shape_a, shape_b, gap) & DirectionsCompatible(shape_a, shape_b);
+    }
+    for (std::size_t i = 0; i < kept; ++i) {
+      const std::uint32_t h = batch[i];
       const Group& b = (*groups)[h];
-      const SegmentShape& shape_b = shapes[h];
-      if (!EndsWithinGap(shape_a, shape_b, gap) || !DirectionsCompatible(a, shape_a, b, shape_b)) {
-        return;
-      }
       const double slack = NoiseSlack(a, b, limits);
       const double lower = MergeLowerBound(a, b, limits, slack);
-      if (lower == std::numeric_limits<double>::infinity()) return;
+      if (lower == std::numeric_limits<double>::infinity()) continue;
       const double bound = ChargedCost(lower, slack);
-      if (over_budget(bound)) return;
+      if (over_budget(bound)) continue;
       queue.Push({bound, g, h, version[h]});
-    });
+    }
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
   queue.Build();
