@@ -676,7 +676,8 @@ class MergeQueue {
   }
   // Heap order: by the best entry, then (a, b).
   static bool Before(const HeapEntry& x, const HeapEntry& y) {
-    return x.key < y.key || (x.key == y.key && x.group < y.group);
+    // Branch-free: sifting compares are data dependent.
+    return (x.key < y.key) | ((x.key == y.key) & (x.group < y.group));
   }
   // Drops g's stale entries and finds its cheapest; false when none is left.
   bool FindBest(std::uint32_t g) {
