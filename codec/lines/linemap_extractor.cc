@@ -400,8 +400,7 @@ class GroupTiles {
 // computed once per group rather than once per pair.
 struct SegmentShape {
   LineSegment s;
-  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;  // bounding box
-  double dx = 0, dy = 0;                              // s.x2 - s.x1, s.y2 - s.y1
+  double dx = 0, dy = 0;  // s.x2 - s.x1, s.y2 - s.y1
   double length_sq = 0;
   // sin of the largest angle a line within epsilon of both ends may make
   // with the group's line (see DirectionsCompatible); >= 1: any angle.
@@ -412,10 +411,6 @@ struct SegmentShape {
 SegmentShape ShapeOf(const Group& g, double epsilon) {
   SegmentShape shape;
   shape.s = g.segment;
-  shape.x_min = std::min(g.segment.x1, g.segment.x2);
-  shape.x_max = std::max(g.segment.x1, g.segment.x2);
-  shape.y_min = std::min(g.segment.y1, g.segment.y2);
-  shape.y_max = std::max(g.segment.y1, g.segment.y2);
   shape.dx = g.segment.x2 - g.segment.x1;
   shape.dy = g.segment.y2 - g.segment.y1;
   shape.length_sq = shape.dx * shape.dx + shape.dy * shape.dy;
@@ -463,9 +458,18 @@ bool DirectionsCompatible(const SegmentShape& shape_a, const SegmentShape& shape
   return (sa >= 1) | (sb >= 1) | (cosine >= limit);
 }
 
+// A segment's bounding box (kept apart from SegmentShape: the first filter
+// reads only this, for many more pairs).
+struct Box {
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+};
+Box BoxOf(const LineSegment& s) {
+  return {std::min(s.x1, s.x2), std::max(s.x1, s.x2), std::min(s.y1, s.y2), std::max(s.y1, s.y2)};
+}
+
 // False when the segments' bounding boxes, one grown by `gap`, are apart:
 // then no end of one is within `gap` of the other (a cheap first test).
-bool BoxesWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
+bool BoxesWithinGap(const Box& a, const Box& b, double gap) {
   return (a.x_min - gap <= b.x_max) & (b.x_min <= a.x_max + gap) & (a.y_min - gap <= b.y_max) &
          (b.y_min <= a.y_max + gap);
 }
@@ -774,8 +778,11 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   std::vector<std::uint8_t> alive(groups->size());
   for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
   std::vector<SegmentShape> shapes(groups->size());
-  for (std::uint32_t id = 0; id < groups->size(); ++id)
+  std::vector<Box> boxes(groups->size());
+  for (std::uint32_t id = 0; id < groups->size(); ++id) {
     shapes[id] = ShapeOf((*groups)[id], epsilon);
+    boxes[id] = BoxOf((*groups)[id].segment);
+  }
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
   std::vector<std::uint32_t> batch(groups->size());  // candidate ids (each at most once)
   std::uint32_t stamp = 0;
@@ -790,6 +797,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     const LineSegment s = (*groups)[g].segment;
     const Group& a = (*groups)[g];
     const SegmentShape& shape_a = shapes[g];
+    const Box& box_a = boxes[g];
     // The filters run in passes over a batch that keep the survivors
     // (selects, not branches: their outcomes are data dependent).
     std::size_t n = 0;
@@ -802,7 +810,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
       batch[kept] = batch[i];
-      kept += BoxesWithinGap(shape_a, shapes[batch[i]], gap);
+      kept += BoxesWithinGap(box_a, boxes[batch[i]], gap);
     }
     n = kept;
     kept = 0;
@@ -855,6 +863,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     queue.Clear(c.b);
     tiles.Add(c.a, a.segment);
     shapes[c.a] = ShapeOf(a, epsilon);
+    boxes[c.a] = BoxOf(a.segment);
     push_candidates(c.a, false);
   }
 }
