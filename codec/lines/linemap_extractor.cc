@@ -21,7 +21,8 @@
 //  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
-//     first, when every cell stays within epsilon_cells AND the summed
+//     first (ties to the lower piece ids), when every cell stays within
+//     epsilon_cells AND the summed
 //     cell-to-segment distance grows by at most max_added_cost_cells *
 //     epsilon_cells^2 (a wall ragged by +-k cells merges in steps that move
 //     ~k cells by ~k each), or
@@ -71,7 +72,9 @@
 // speckle), speck_max_cells 3 with speck_min_gap_cells 2 and
 // speck_max_added_cells 64 (off in StraightWalls), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
-// the re-evaluation of a group against its neighbours after each merge.
+// the re-evaluation of a group against its neighbours after each merge. The
+// merge's cost is mostly that candidate search (tile scans and O(1) filters
+// per pair); see MergeGroups and MergeQueue for how it is kept small.
 #include "codec/lines/linemap_extractor.h"
 
 #include <algorithm>
@@ -767,7 +770,9 @@ class MergeQueue {
 // O(1) lower bound of its added cost (MergeLowerBound) and swept over its
 // cells only when it reaches the top; it is merged then if its exact cost is
 // still the cheapest, else requeued under the exact cost. Pairs that a merge
-// of one of their groups makes stale are thus never swept.
+// of one of their groups makes stale are thus never swept. Equal keys go to
+// the lower ids (MergeQueue's total order), so the merges made do not depend
+// on how the queue stores its candidates.
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
