@@ -22,10 +22,9 @@
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
 //     first (ties to the lower piece ids), when every cell stays within
-//     epsilon_cells AND the summed
-//     cell-to-segment distance grows by at most max_added_cost_cells *
-//     epsilon_cells^2 (a wall ragged by +-k cells merges in steps that move
-//     ~k cells by ~k each), or
+//     epsilon_cells AND the summed cell-to-segment distance grows by at most
+//     max_added_cost_cells * epsilon_cells^2 (a wall ragged by +-k cells
+//     merges in steps that move ~k cells by ~k each), or
 //     stays within noise_merge_factor times the cells' summed local noise
 //     (distance to the TLS line of a window of 2 * noise_window_cells + 1
 //     chain cells; 0 where the window never turns back, as a staircase
