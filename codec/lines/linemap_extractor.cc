@@ -253,14 +253,16 @@ class ChainMoments {
 };
 
 // A candidate wall: its cells, their moments and the fitted segment.
+// The fields a merge's lower bound reads for every candidate pair come
+// first, near each other.
 struct Group {
-  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   PointMoments moments;
-  FittedLine line;
-  LineSegment segment;
-  double max_residual = 0;  // largest distance of a cell to `line`
   double cost = 0;          // sum of the cells' distances to `segment` (cells)
   double noise = 0;         // sum of the cells' local residuals (ChainMoments::LocalResidual)
+  double max_residual = 0;  // largest distance of a cell to `line`
+  FittedLine line;
+  LineSegment segment;
+  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   bool alive = true;
 };
 
@@ -495,7 +497,8 @@ bool EndsWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
 // (ChainMoments::LocalResidual), pays for every step it loses. Equal to
 // `added` when noise_factor is 0.
 double NoiseSlack(const Group& a, const Group& b, const MergeLimits& limits) {
-  const double cells = static_cast<double>(a.cells.size() + b.cells.size());
+  // The moments count the cells (cells.size(), without reading the vector).
+  const double cells = static_cast<double>(a.moments.count() + b.moments.count());
   const double noise = a.noise + b.noise;
   if (cells < limits.noise_min_cells || noise < limits.noise_min_mean * cells) return 0;
   return std::max(0.0, limits.noise_factor * noise - a.cost - b.cost);
