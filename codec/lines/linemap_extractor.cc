@@ -83,6 +83,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <span>
 #include <utility>
 
 #include "codec/lines/line_fit.h"
@@ -173,7 +174,11 @@ void FlagLargeComponents(const EdgeMap& edges, const std::vector<std::uint32_t>&
 // Moments of chain prefixes: the fit of any sub-range in O(1).
 class ChainMoments {
  public:
-  ChainMoments(const std::vector<std::uint32_t>& chain, int width) {
+  ChainMoments() = default;
+  ChainMoments(std::span<const std::uint32_t> chain, int width) { Assign(chain, width); }
+
+  // The moments of `chain` (reusing this object's buffers).
+  void Assign(std::span<const std::uint32_t> chain, int width) {
     const std::size_t n = chain.size();
     x_.resize(n);
     y_.resize(n);
@@ -1202,11 +1207,21 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
 
 namespace {
 
+// Chains stored end to end: chain k is cells[begin[k], begin[k + 1]) (one
+// array rather than a vector per chain).
+struct FlatChains {
+  std::vector<std::uint32_t> cells;
+  std::vector<std::size_t> begin = {0};
+  std::size_t size() const { return begin.size() - 1; }
+  std::span<const std::uint32_t> operator[](std::size_t k) const {
+    return std::span<const std::uint32_t>(cells).subspan(begin[k], begin[k + 1] - begin[k]);
+  }
+};
+
 // TraceEdgeChains over the cells of `cells` (raster order) whose `open` flag
 // is set; clears the flags as it goes.
-std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
-                                                    const std::vector<std::uint32_t>& cells,
-                                                    std::vector<std::uint8_t>& open) {
+FlatChains TraceChains(const EdgeMap& edges, const std::vector<std::uint32_t>& cells,
+                       std::vector<std::uint8_t>& open) {
   const int width = edges.width, height = edges.height;
   auto untraced_neighbours = [&](int col, int row) {
     int count = 0;
@@ -1253,14 +1268,17 @@ std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
       heading = best_k;
     }
   };
-  std::vector<std::vector<std::uint32_t>> chains;
+  FlatChains chains;
+  chains.cells.reserve(cells.size());
+  std::vector<std::uint32_t> chain;  // the chain being traced (reused)
   auto trace_from = [&](std::size_t seed) {
-    std::vector<std::uint32_t> chain = {static_cast<std::uint32_t>(seed)};
+    chain.assign(1, static_cast<std::uint32_t>(seed));
     open[seed] = 0;
     walk(&chain);
     std::reverse(chain.begin(), chain.end());
     walk(&chain);  // the other way from the seed
-    chains.push_back(std::move(chain));
+    chains.cells.insert(chains.cells.end(), chain.begin(), chain.end());
+    chains.begin.push_back(chains.cells.size());
   };
   // Contour ends first, then whatever is left (closed contours).
   for (int pass = 0; pass < 2; ++pass) {
@@ -1283,15 +1301,20 @@ std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
   for (std::size_t i = 0; i < include.size(); ++i) {
     if (include[i]) cells.push_back(static_cast<std::uint32_t>(i));
   }
-  return TraceChains(edges, cells, open);
+  const FlatChains flat = TraceChains(edges, cells, open);
+  std::vector<std::vector<std::uint32_t>> chains;
+  for (std::size_t k = 0; k < flat.size(); ++k) chains.emplace_back(flat[k].begin(), flat[k].end());
+  return chains;
 }
 
 namespace {
 
-// SplitChain over the chain of `moments`.
-std::vector<int> SplitChainMoments(const ChainMoments& moments, double epsilon_cells) {
+// SplitChain over the chain of `moments`, into *pieces (cleared first).
+void SplitChainMoments(const ChainMoments& moments, double epsilon_cells,
+                       std::vector<int>* pieces_out) {
   const int n = moments.size();
-  std::vector<int> pieces;
+  std::vector<int>& pieces = *pieces_out;
+  pieces.clear();
   for (int begin = 0; begin < n;) {
     int good = std::min(2, n - begin);
     int bad = -1;
@@ -1311,14 +1334,15 @@ std::vector<int> SplitChainMoments(const ChainMoments& moments, double epsilon_c
     pieces.push_back(good);
     begin += good;
   }
-  return pieces;
 }
 
 }  // namespace
 
 std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
                             double epsilon_cells) {
-  return SplitChainMoments(ChainMoments(chain, width), epsilon_cells);
+  std::vector<int> pieces;
+  SplitChainMoments(ChainMoments(chain, width), epsilon_cells, &pieces);
+  return pieces;
 }
 
 StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
@@ -1348,10 +1372,15 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
                      static_cast<double>(options.noise_min_cells),
                      options.free_merge_cost_cells * epsilon * epsilon};
   std::vector<Group> groups;
-  for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
-    const ChainMoments chain_moments(chain, width);
+  const FlatChains chains = TraceChains(edges, edge_cells, open);
+  ChainMoments chain_moments;
+  std::vector<int> pieces;
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    const std::span<const std::uint32_t> chain = chains[k];
+    chain_moments.Assign(chain, width);
+    SplitChainMoments(chain_moments, split_epsilon, &pieces);
     int begin = 0;
-    for (int length : SplitChainMoments(chain_moments, split_epsilon)) {
+    for (int length : pieces) {
       Group group;
       group.cells.reserve(length);
       for (int i = begin; i < begin + length; ++i) {
