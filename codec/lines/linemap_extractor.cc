@@ -938,11 +938,14 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
   const std::vector<std::uint32_t>& group_of = live.group_of;
   SegmentIndex index(&segments, width, height);
   std::vector<std::uint8_t> skip(segments.size(), 0);
+  // Smallest first, ties in segment order: (cells, segment) pairs sorted.
+  std::vector<std::pair<std::size_t, std::uint32_t>> by_size(segments.size());
+  for (std::uint32_t s = 0; s < segments.size(); ++s) {
+    by_size[s] = {(*groups)[group_of[s]].cells.size(), s};
+  }
+  std::sort(by_size.begin(), by_size.end());
   std::vector<std::uint32_t> order(segments.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return (*groups)[group_of[a]].cells.size() < (*groups)[group_of[b]].cells.size();
-  });
+  for (std::size_t i = 0; i < by_size.size(); ++i) order[i] = by_size[i].second;
   std::vector<std::uint32_t> targets;
   std::vector<double> distances;
   for (std::uint32_t s : order) {
