@@ -82,7 +82,6 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <span>
 #include <utility>
 
