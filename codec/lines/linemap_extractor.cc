@@ -108,6 +108,13 @@ int TurnSteps(int a, int b) {
   return std::min(diff, 8 - diff);
 }
 
+// std::max and std::min for doubles as value selects: the same results
+// (including the sign of zero and NaNs), but compiled to maxsd/minsd
+// rather than to branches, which the merge's data-dependent tests
+// mispredict.
+double MaxOf(double a, double b) { return b > a ? b : a; }
+double MinOf(double a, double b) { return b < a ? b : a; }
+
 struct CellXY {
   int col;
   int row;
@@ -289,10 +296,10 @@ bool SweepCells(const FittedLine& line, const std::vector<CellXY>& cells, double
     const double d = std::abs(-u.y() * dx + u.x() * dy);
     sweep->cost += d;
     if (d > epsilon + kRoundingSlack || sweep->cost > max_cost) return false;
-    sweep->worst = std::max(sweep->worst, d);
+    sweep->worst = MaxOf(sweep->worst, d);
     const double t = u.x() * dx + u.y() * dy;
-    sweep->t_min = sweep->any ? std::min(sweep->t_min, t) : t;
-    sweep->t_max = sweep->any ? std::max(sweep->t_max, t) : t;
+    sweep->t_min = sweep->any ? MinOf(sweep->t_min, t) : t;
+    sweep->t_max = sweep->any ? MaxOf(sweep->t_max, t) : t;
     sweep->any = true;
   }
   return true;
@@ -434,7 +441,7 @@ SegmentShape ShapeOf(const Group& g, double epsilon) {
 double SquaredDistanceToSegment(double x, double y, const SegmentShape& shape) {
   const LineSegment& s = shape.s;
   const double along = ((x - s.x1) * shape.dx + (y - s.y1) * shape.dy) / shape.length_sq;
-  const double t = shape.length_sq > 0 ? std::min(std::max(along, 0.0), 1.0) : 0.0;
+  const double t = shape.length_sq > 0 ? MinOf(MaxOf(along, 0.0), 1.0) : 0.0;
   const double ex = x - (s.x1 + t * shape.dx), ey = y - (s.y1 + t * shape.dy);
   return ex * ex + ey * ey;
 }
@@ -462,7 +469,7 @@ bool DirectionsCompatible(const SegmentShape& shape_a, const SegmentShape& shape
   // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B
   // (evaluated whatever sa and sb, so that the result is a select).
   const double cosine = std::abs(shape_a.direction.dot(shape_b.direction));
-  const double limit = std::sqrt(std::max(0.0, (1 - sa * sa) * (1 - sb * sb))) - sa * sb - 1e-12;
+  const double limit = std::sqrt(MaxOf(0.0, (1 - sa * sa) * (1 - sb * sb))) - sa * sb - 1e-12;
   return (sa >= 1) | (sb >= 1) | (cosine >= limit);
 }
 
@@ -472,7 +479,7 @@ struct Box {
   double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
 };
 Box BoxOf(const LineSegment& s) {
-  return {std::min(s.x1, s.x2), std::max(s.x1, s.x2), std::min(s.y1, s.y2), std::max(s.y1, s.y2)};
+  return {MinOf(s.x1, s.x2), MaxOf(s.x1, s.x2), MinOf(s.y1, s.y2), MaxOf(s.y1, s.y2)};
 }
 
 // False when the segments' bounding boxes, one grown by `gap`, are apart:
@@ -505,11 +512,9 @@ double NoiseSlack(const Group& a, const Group& b, const MergeLimits& limits) {
   const double cells = static_cast<double>(a.moments.count() + b.moments.count());
   const double noise = a.noise + b.noise;
   if (cells < limits.noise_min_cells || noise < limits.noise_min_mean * cells) return 0;
-  return std::max(0.0, limits.noise_factor * noise - a.cost - b.cost);
+  return MaxOf(0.0, limits.noise_factor * noise - a.cost - b.cost);
 }
-double ChargedCost(double added, double slack) {
-  return added - std::min(slack, std::max(added, 0.0));
-}
+double ChargedCost(double added, double slack) { return added - MinOf(slack, MaxOf(added, 0.0)); }
 double ChargedCost(const Group& a, const Group& b, double added, const MergeLimits& limits) {
   return ChargedCost(added, NoiseSlack(a, b, limits));
 }
@@ -518,7 +523,7 @@ double ChargedCost(const Group& a, const Group& b, double added, const MergeLimi
 // max_added or, when larger, the noise slack (a merge may raise the mean
 // distance up to the walls' own noise).
 double MergeBudget(const Group& a, const Group& b, const MergeLimits& limits) {
-  return a.cost + b.cost + std::max(limits.max_added, NoiseSlack(a, b, limits));
+  return a.cost + b.cost + MaxOf(limits.max_added, NoiseSlack(a, b, limits));
 }
 
 // The merged moments of a and b (O(1)); their TLS line is the merge's line.
@@ -539,8 +544,8 @@ double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits
   const double epsilon = limits.epsilon;
   if (mean_sq > epsilon * epsilon) return std::numeric_limits<double>::infinity();
   const double sum_sq = mean_sq * static_cast<double>(moments.count());
-  const double cost = std::max(sum_sq / epsilon, std::sqrt(sum_sq));
-  if (cost > a.cost + b.cost + std::max(limits.max_added, slack) + kRoundingSlack) {
+  const double cost = MaxOf(sum_sq / epsilon, std::sqrt(sum_sq));
+  if (cost > a.cost + b.cost + MaxOf(limits.max_added, slack) + kRoundingSlack) {
     return std::numeric_limits<double>::infinity();
   }
   return cost - a.cost - b.cost;
@@ -556,7 +561,7 @@ bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, double 
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
-  const double max_cost = std::min(MergeBudget(a, b, limits), a.cost + b.cost + max_added);
+  const double max_cost = MinOf(MergeBudget(a, b, limits), a.cost + b.cost + max_added);
   return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
          SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
