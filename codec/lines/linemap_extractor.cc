@@ -339,15 +339,27 @@ class GroupTiles {
   }
 
   void Add(std::uint32_t id, const LineSegment& s) {
-    const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
-    const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
-    int last = -1;
-    for (int k = 0; k <= steps; ++k) {
-      const double t = static_cast<double>(k) / steps;
-      const int tile = TileIndex(s.x1 + t * (s.x2 - s.x1), s.y1 + t * (s.y2 - s.y1));
-      if (tile != last) buckets_[tile].push_back(id);
-      last = tile;
+    ForEachTile(s, [&](int tile) {
+      Bucket& bucket = buckets_[tile];
+      if (bucket.size == bucket.capacity) Grow(&bucket);
+      arena_[bucket.begin + bucket.size++] = id;
+    });
+  }
+
+  // Add() for groups 0, 1, ... in order, their buckets laid out in tile
+  // order with room for a few merged groups each.
+  void AddAll(const std::vector<Group>& groups) {
+    for (const Group& group : groups) {
+      ForEachTile(group.segment, [&](int tile) { ++buckets_[tile].capacity; });
     }
+    std::uint32_t begin = 0;
+    for (Bucket& bucket : buckets_) {
+      bucket.begin = begin;
+      if (bucket.capacity > 0) bucket.capacity += kBucketSlack;
+      begin += bucket.capacity;
+    }
+    arena_.resize(begin);
+    for (std::uint32_t id = 0; id < groups.size(); ++id) Add(id, groups[id].segment);
   }
 
   // Calls visit(id) for the live groups (`alive`, one flag per group id;
@@ -383,16 +395,47 @@ class GroupTiles {
   }
   template <typename Visit>
   void ScanBucket(int tx, int ty, const std::vector<std::uint8_t>& alive, Visit& visit) {
-    auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+    Bucket& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+    std::uint32_t* ids = arena_.data() + bucket.begin;
     ++stamp_;
-    std::size_t kept = 0;
-    for (std::uint32_t id : bucket) {
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < bucket.size; ++i) {
+      const std::uint32_t id = ids[i];
       if (!alive[id] || mark_[id] == stamp_) continue;
       mark_[id] = stamp_;
-      bucket[kept++] = id;
+      ids[kept++] = id;
       visit(id);
     }
-    bucket.resize(kept);
+    bucket.size = kept;
+  }
+  // Calls visit(tile) for the tiles of points every half tile along s (each
+  // tile once per run of equal tiles).
+  template <typename Visit>
+  void ForEachTile(const LineSegment& s, Visit visit) const {
+    const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
+    const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
+    int last = -1;
+    for (int k = 0; k <= steps; ++k) {
+      const double t = static_cast<double>(k) / steps;
+      const int tile = TileIndex(s.x1 + t * (s.x2 - s.x1), s.y1 + t * (s.y2 - s.y1));
+      if (tile != last) visit(tile);
+      last = tile;
+    }
+  }
+  // A tile's group ids: arena_[begin, begin + size), room for `capacity`
+  // (one arena rather than a vector per tile).
+  struct Bucket {
+    std::uint32_t begin = 0, size = 0, capacity = 0;
+  };
+  static constexpr std::uint32_t kBucketSlack = 4;
+  // Moves a full bucket to the arena's end with twice the room.
+  void Grow(Bucket* bucket) {
+    const std::uint32_t capacity = std::max<std::uint32_t>(kBucketSlack, 2 * bucket->capacity);
+    const std::uint32_t begin = static_cast<std::uint32_t>(arena_.size());
+    arena_.resize(arena_.size() + capacity);
+    std::copy_n(arena_.begin() + bucket->begin, bucket->size, arena_.begin() + begin);
+    bucket->begin = begin;
+    bucket->capacity = capacity;
   }
   // floor(t) clamped to [0, tiles - 1] (truncation is floor for t >= 0).
   static int Clamp(double t, int tiles) {
@@ -406,7 +449,8 @@ class GroupTiles {
 
   int tile_;
   int tiles_x_ = 1, tiles_y_ = 1;
-  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<Bucket> buckets_;
+  std::vector<std::uint32_t> arena_;
   std::vector<std::uint32_t> mark_;  // per group: the last bucket scan that kept it
   std::uint32_t stamp_ = 0;
 };
@@ -790,7 +834,7 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   std::vector<std::uint32_t> version(groups->size(), 0);
   MergeQueue queue(&version);
   GroupTiles tiles(width, height, 8);
-  for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
+  tiles.AddAll(*groups);
   std::vector<std::uint8_t> alive(groups->size());
   for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
   std::vector<SegmentShape> shapes(groups->size());
