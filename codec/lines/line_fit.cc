@@ -37,48 +37,6 @@ void PointMoments::Add(double x, double y) {
   syy_ += dy * dy;
 }
 
-void PointMoments::Merge(const PointMoments& other) {
-  if (other.count_ == 0) return;
-  if (!has_reference_) {
-    *this = other;
-    return;
-  }
-  // Shift other's sums from its reference point to ours.
-  const double ox = other.ref_x_ - ref_x_;
-  const double oy = other.ref_y_ - ref_y_;
-  const double n = static_cast<double>(other.count_);
-  sxx_ += other.sxx_ + 2 * ox * other.sx_ + n * ox * ox;
-  syy_ += other.syy_ + 2 * oy * other.sy_ + n * oy * oy;
-  sxy_ += other.sxy_ + ox * other.sy_ + oy * other.sx_ + n * ox * oy;
-  sx_ += other.sx_ + n * ox;
-  sy_ += other.sy_ + n * oy;
-  count_ += other.count_;
-}
-
-Eigen::Vector2d PointMoments::Mean() const {
-  if (count_ == 0) return Eigen::Vector2d::Zero();
-  const double n = static_cast<double>(count_);
-  return {ref_x_ + sx_ / n, ref_y_ + sy_ / n};
-}
-
-Eigen::Matrix2d PointMoments::Covariance() const {
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  if (count_ == 0) return cov;
-  const double n = static_cast<double>(count_);
-  const double mx = sx_ / n;
-  const double my = sy_ / n;
-  cov(0, 0) = std::max(0.0, sxx_ / n - mx * mx);  // mu_xx
-  cov(1, 1) = std::max(0.0, syy_ / n - my * my);  // mu_yy
-  cov(0, 1) = cov(1, 0) = sxy_ / n - mx * my;     // mu_xy
-  return cov;
-}
-
-double SmallestEigenvalue(const Eigen::Matrix2d& cov) {
-  const double half_trace = 0.5 * (cov(0, 0) + cov(1, 1));
-  const double half_diff = 0.5 * (cov(0, 0) - cov(1, 1));
-  return std::max(0.0, half_trace - std::sqrt(half_diff * half_diff + cov(0, 1) * cov(0, 1)));
-}
-
 FittedLine PointMoments::Fit() const { return FitFromCovariance(Mean(), Covariance()); }
 
 FittedLine FitFromCovariance(const Eigen::Vector2d& centroid, const Eigen::Matrix2d& covariance) {
@@ -112,16 +70,6 @@ LineSegment SegmentFromProjections(const FittedLine& line, const double* xs, con
   const Eigen::Vector2d a = line.centroid + t_min * line.direction;
   const Eigen::Vector2d b = line.centroid + t_max * line.direction;
   return {a.x(), a.y(), b.x(), b.y()};
-}
-
-double PointSegmentDistance(double x, double y, const LineSegment& s) {
-  const double dx = s.x2 - s.x1;
-  const double dy = s.y2 - s.y1;
-  const double length_sq = dx * dx + dy * dy;
-  double t = 0;
-  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
-  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
-  return std::sqrt(ex * ex + ey * ey);
 }
 
 }  // namespace linemap::lines_internal

@@ -21,10 +21,10 @@
 //  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
-//     first, when every cell stays within epsilon_cells AND the summed
-//     cell-to-segment distance grows by at most max_added_cost_cells *
-//     epsilon_cells^2 (a wall ragged by +-k cells merges in steps that move
-//     ~k cells by ~k each), or
+//     first (ties to the lower piece ids), when every cell stays within
+//     epsilon_cells AND the summed cell-to-segment distance grows by at most
+//     max_added_cost_cells * epsilon_cells^2 (a wall ragged by +-k cells
+//     merges in steps that move ~k cells by ~k each), or
 //     stays within noise_merge_factor times the cells' summed local noise
 //     (distance to the TLS line of a window of 2 * noise_window_cells + 1
 //     chain cells; 0 where the window never turns back, as a staircase
@@ -71,15 +71,18 @@
 // speckle), speck_max_cells 3 with speck_min_gap_cells 2 and
 // speck_max_added_cells 64 (off in StraightWalls), corner_join_cells 3.
 // Time: linear in the edge cells apart from the merge queue (log factor) and
-// the re-evaluation of a group against its neighbours after each merge.
+// the re-evaluation of a group against its neighbours after each merge. The
+// merge's cost is mostly that candidate search (tile scans and O(1) filters
+// per pair); see MergeGroups and MergeQueue for how it is kept small.
 #include "codec/lines/linemap_extractor.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
-#include <numeric>
+#include <span>
 #include <utility>
 
 #include "codec/lines/line_fit.h"
@@ -98,12 +101,19 @@ constexpr double kRoundingSlack = 1e-9;
 
 // Angle between two of the 8 directions of kDcol/kDrow, in 45-degree steps (0..4).
 int TurnSteps(int a, int b) {
-  const double angle_a = std::atan2(kDrow[a], kDcol[a]);
-  const double angle_b = std::atan2(kDrow[b], kDcol[b]);
-  double diff = std::abs(angle_a - angle_b);
-  if (diff > std::numbers::pi) diff = 2 * std::numbers::pi - diff;
-  return static_cast<int>(std::lround(diff / (std::numbers::pi / 4)));
+  // Each direction's angle from +x in 45-degree steps (counter-clockwise in
+  // (col, row)).
+  constexpr int kOctant[8] = {0, 2, 4, 6, 1, 3, 5, 7};
+  const int diff = (kOctant[a] - kOctant[b] + 8) % 8;
+  return std::min(diff, 8 - diff);
 }
+
+// std::max and std::min for doubles as value selects: the same results
+// (including the sign of zero and NaNs), but compiled to maxsd/minsd
+// rather than to branches, which the merge's data-dependent tests
+// mispredict.
+double MaxOf(double a, double b) { return b > a ? b : a; }
+double MinOf(double a, double b) { return b < a ? b : a; }
 
 struct CellXY {
   int col;
@@ -119,8 +129,19 @@ CellXY CellOfIndex(std::uint32_t index, int width) {
 std::vector<std::uint32_t> EdgeCellList(const EdgeMap& edges) {
   std::vector<std::uint32_t> list;
   list.reserve(edges.edge_count);
-  for (std::size_t i = 0; i < edges.is_edge.size(); ++i) {
-    if (edges.is_edge[i]) list.push_back(static_cast<std::uint32_t>(i));
+  const std::uint8_t* flags = edges.is_edge.data();
+  const std::size_t n = edges.is_edge.size();
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    std::uint64_t word;  // most of a map is not edge: skip 8 cells at a time
+    std::memcpy(&word, flags + i, sizeof(word));
+    if (word == 0) continue;
+    for (std::size_t k = i; k < i + 8; ++k) {
+      if (flags[k]) list.push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+  for (; i < n; ++i) {
+    if (flags[i]) list.push_back(static_cast<std::uint32_t>(i));
   }
   return list;
 }
@@ -159,7 +180,11 @@ void FlagLargeComponents(const EdgeMap& edges, const std::vector<std::uint32_t>&
 // Moments of chain prefixes: the fit of any sub-range in O(1).
 class ChainMoments {
  public:
-  ChainMoments(const std::vector<std::uint32_t>& chain, int width) {
+  ChainMoments() = default;
+  ChainMoments(std::span<const std::uint32_t> chain, int width) { Assign(chain, width); }
+
+  // The moments of `chain` (reusing this object's buffers).
+  void Assign(std::span<const std::uint32_t> chain, int width) {
     const std::size_t n = chain.size();
     x_.resize(n);
     y_.resize(n);
@@ -176,6 +201,8 @@ class ChainMoments {
                    s_[i][4] + dy * dy};
     }
   }
+
+  int size() const { return static_cast<int>(x_.size()); }
 
   // TLS line of cells [begin, end).
   FittedLine Fit(int begin, int end) const {
@@ -237,14 +264,16 @@ class ChainMoments {
 };
 
 // A candidate wall: its cells, their moments and the fitted segment.
+// The fields a merge's lower bound reads for every candidate pair come
+// first, near each other.
 struct Group {
-  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   PointMoments moments;
-  FittedLine line;
-  LineSegment segment;
-  double max_residual = 0;  // largest distance of a cell to `line`
   double cost = 0;          // sum of the cells' distances to `segment` (cells)
   double noise = 0;         // sum of the cells' local residuals (ChainMoments::LocalResidual)
+  double max_residual = 0;  // largest distance of a cell to `line`
+  FittedLine line;
+  LineSegment segment;
+  std::vector<CellXY> cells;  // (col, row): no division in the hot loops
   bool alive = true;
 };
 
@@ -267,10 +296,10 @@ bool SweepCells(const FittedLine& line, const std::vector<CellXY>& cells, double
     const double d = std::abs(-u.y() * dx + u.x() * dy);
     sweep->cost += d;
     if (d > epsilon + kRoundingSlack || sweep->cost > max_cost) return false;
-    sweep->worst = std::max(sweep->worst, d);
+    sweep->worst = MaxOf(sweep->worst, d);
     const double t = u.x() * dx + u.y() * dy;
-    sweep->t_min = sweep->any ? std::min(sweep->t_min, t) : t;
-    sweep->t_max = sweep->any ? std::max(sweep->t_max, t) : t;
+    sweep->t_min = sweep->any ? MinOf(sweep->t_min, t) : t;
+    sweep->t_max = sweep->any ? MaxOf(sweep->t_max, t) : t;
     sweep->any = true;
   }
   return true;
@@ -310,48 +339,109 @@ class GroupTiles {
   }
 
   void Add(std::uint32_t id, const LineSegment& s) {
+    ForEachTile(s, [&](int tile) {
+      Bucket& bucket = buckets_[tile];
+      if (bucket.size == bucket.capacity) Grow(&bucket);
+      arena_[bucket.begin + bucket.size++] = id;
+    });
+  }
+
+  // Add() for groups 0, 1, ... in order, their buckets laid out in tile
+  // order with room for a few merged groups each.
+  void AddAll(const std::vector<Group>& groups) {
+    for (const Group& group : groups) {
+      ForEachTile(group.segment, [&](int tile) { ++buckets_[tile].capacity; });
+    }
+    std::uint32_t begin = 0;
+    for (Bucket& bucket : buckets_) {
+      bucket.begin = begin;
+      if (bucket.capacity > 0) bucket.capacity += kBucketSlack;
+      begin += bucket.capacity;
+    }
+    arena_.resize(begin);
+    for (std::uint32_t id = 0; id < groups.size(); ++id) Add(id, groups[id].segment);
+  }
+
+  // Calls visit(id) for the live groups (`alive`, one flag per group id;
+  // compact, so the scan touches no Group) registered in the tiles within
+  // `radius` of either end of `s` (an id may repeat across tiles; tiles
+  // near both ends are scanned once). Dead and repeated entries are dropped
+  // from the buckets on the way, so merged groups do not pile up.
+  template <typename Visit>
+  void ForEachNearEnds(const LineSegment& s, double radius, const std::vector<std::uint8_t>& alive,
+                       Visit visit) {
+    if (mark_.size() < alive.size()) mark_.resize(alive.size(), 0);
+    const TileRange first = RangeNear(s.x1, s.y1, radius);
+    const TileRange second = RangeNear(s.x2, s.y2, radius);
+    for (int ty = first.y0; ty <= first.y1; ++ty) {
+      for (int tx = first.x0; tx <= first.x1; ++tx) ScanBucket(tx, ty, alive, visit);
+    }
+    for (int ty = second.y0; ty <= second.y1; ++ty) {
+      for (int tx = second.x0; tx <= second.x1; ++tx) {
+        if (!first.Contains(tx, ty)) ScanBucket(tx, ty, alive, visit);
+      }
+    }
+  }
+
+ private:
+  struct TileRange {
+    int x0, x1, y0, y1;
+    bool Contains(int tx, int ty) const { return tx >= x0 && tx <= x1 && ty >= y0 && ty <= y1; }
+  };
+  TileRange RangeNear(double x, double y, double radius) const {
+    return {
+        Clamp((x - radius + 0.5) / tile_, tiles_x_), Clamp((x + radius + 0.5) / tile_, tiles_x_),
+        Clamp((y - radius + 0.5) / tile_, tiles_y_), Clamp((y + radius + 0.5) / tile_, tiles_y_)};
+  }
+  template <typename Visit>
+  void ScanBucket(int tx, int ty, const std::vector<std::uint8_t>& alive, Visit& visit) {
+    Bucket& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
+    std::uint32_t* ids = arena_.data() + bucket.begin;
+    ++stamp_;
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < bucket.size; ++i) {
+      const std::uint32_t id = ids[i];
+      if (!alive[id] || mark_[id] == stamp_) continue;
+      mark_[id] = stamp_;
+      ids[kept++] = id;
+      visit(id);
+    }
+    bucket.size = kept;
+  }
+  // Calls visit(tile) for the tiles of points every half tile along s (each
+  // tile once per run of equal tiles).
+  template <typename Visit>
+  void ForEachTile(const LineSegment& s, Visit visit) const {
     const double length = std::sqrt((s.x2 - s.x1) * (s.x2 - s.x1) + (s.y2 - s.y1) * (s.y2 - s.y1));
     const int steps = 1 + static_cast<int>(length / (0.5 * tile_));
     int last = -1;
     for (int k = 0; k <= steps; ++k) {
       const double t = static_cast<double>(k) / steps;
       const int tile = TileIndex(s.x1 + t * (s.x2 - s.x1), s.y1 + t * (s.y2 - s.y1));
-      if (tile != last) buckets_[tile].push_back(id);
+      if (tile != last) visit(tile);
       last = tile;
     }
   }
-
-  // Ids of live groups (`alive`, one flag per group id; compact, so the scan
-  // touches no Group) registered in the tiles within `radius` of (x, y)
-  // (an id may repeat across tiles). Dead and repeated entries are dropped
-  // from the buckets on the way, so merged groups do not pile up.
-  void Near(double x, double y, double radius, const std::vector<std::uint8_t>& alive,
-            std::vector<std::uint32_t>* out) {
-    out->clear();
-    if (mark_.size() < alive.size()) mark_.resize(alive.size(), 0);
-    const int tx0 = Clamp((x - radius + 0.5) / tile_, tiles_x_);
-    const int tx1 = Clamp((x + radius + 0.5) / tile_, tiles_x_);
-    const int ty0 = Clamp((y - radius + 0.5) / tile_, tiles_y_);
-    const int ty1 = Clamp((y + radius + 0.5) / tile_, tiles_y_);
-    for (int ty = ty0; ty <= ty1; ++ty) {
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        auto& bucket = buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx];
-        ++stamp_;
-        std::size_t kept = 0;
-        for (std::uint32_t id : bucket) {
-          if (!alive[id] || mark_[id] == stamp_) continue;
-          mark_[id] = stamp_;
-          bucket[kept++] = id;
-        }
-        bucket.resize(kept);
-        out->insert(out->end(), bucket.begin(), bucket.end());
-      }
-    }
+  // A tile's group ids: arena_[begin, begin + size), room for `capacity`
+  // (one arena rather than a vector per tile).
+  struct Bucket {
+    std::uint32_t begin = 0, size = 0, capacity = 0;
+  };
+  static constexpr std::uint32_t kBucketSlack = 4;
+  // Moves a full bucket to the arena's end with twice the room.
+  void Grow(Bucket* bucket) {
+    const std::uint32_t capacity = std::max<std::uint32_t>(kBucketSlack, 2 * bucket->capacity);
+    const std::uint32_t begin = static_cast<std::uint32_t>(arena_.size());
+    arena_.resize(arena_.size() + capacity);
+    std::copy_n(arena_.begin() + bucket->begin, bucket->size, arena_.begin() + begin);
+    bucket->begin = begin;
+    bucket->capacity = capacity;
   }
-
- private:
+  // floor(t) clamped to [0, tiles - 1] (truncation is floor for t >= 0).
   static int Clamp(double t, int tiles) {
-    return static_cast<int>(std::clamp(std::floor(t), 0.0, static_cast<double>(tiles - 1)));
+    if (!(t > 0)) return 0;
+    if (t >= tiles - 1) return tiles - 1;
+    return static_cast<int>(t);
   }
   int TileIndex(double x, double y) const {
     return Clamp((y + 0.5) / tile_, tiles_y_) * tiles_x_ + Clamp((x + 0.5) / tile_, tiles_x_);
@@ -359,17 +449,44 @@ class GroupTiles {
 
   int tile_;
   int tiles_x_ = 1, tiles_y_ = 1;
-  std::vector<std::vector<std::uint32_t>> buckets_;
+  std::vector<Bucket> buckets_;
+  std::vector<std::uint32_t> arena_;
   std::vector<std::uint32_t> mark_;  // per group: the last bucket scan that kept it
   std::uint32_t stamp_ = 0;
 };
 
-double SquaredDistanceToSegment(double x, double y, const LineSegment& s) {
-  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
-  const double length_sq = dx * dx + dy * dy;
-  double t = 0;
-  if (length_sq > 0) t = std::clamp(((x - s.x1) * dx + (y - s.y1) * dy) / length_sq, 0.0, 1.0);
-  const double ex = x - (s.x1 + t * dx), ey = y - (s.y1 + t * dy);
+// A group's segment and what the merge's candidate filters derive from it,
+// computed once per group rather than once per pair.
+struct SegmentShape {
+  LineSegment s;
+  double dx = 0, dy = 0;  // s.x2 - s.x1, s.y2 - s.y1
+  double length_sq = 0;
+  // sin of the largest angle a line within epsilon of both ends may make
+  // with the group's line (see DirectionsCompatible); >= 1: any angle.
+  double max_sine = 1;
+  Eigen::Vector2d direction = Eigen::Vector2d::UnitX();  // the group's line's
+};
+
+SegmentShape ShapeOf(const Group& g, double epsilon) {
+  SegmentShape shape;
+  shape.s = g.segment;
+  shape.dx = g.segment.x2 - g.segment.x1;
+  shape.dy = g.segment.y2 - g.segment.y1;
+  shape.length_sq = shape.dx * shape.dx + shape.dy * shape.dy;
+  const double reach = 2 * (epsilon + g.max_residual);
+  shape.max_sine = shape.length_sq <= reach * reach ? 1.0 : reach / std::sqrt(shape.length_sq);
+  shape.direction = g.line.direction;
+  return shape;
+}
+
+// Selects rather than branches (the candidate filters run on many pairs
+// with data-dependent outcomes): the same value as clamping t to [0, 1] for
+// a segment of positive length, 0 for a point.
+double SquaredDistanceToSegment(double x, double y, const SegmentShape& shape) {
+  const LineSegment& s = shape.s;
+  const double along = ((x - s.x1) * shape.dx + (y - s.y1) * shape.dy) / shape.length_sq;
+  const double t = shape.length_sq > 0 ? MinOf(MaxOf(along, 0.0), 1.0) : 0.0;
+  const double ex = x - (s.x1 + t * shape.dx), ey = y - (s.y1 + t * shape.dy);
   return ex * ex + ey * ey;
 }
 
@@ -390,39 +507,40 @@ struct MergeLimits {
 // extreme cells of a group (length l along its line, residual r) makes an
 // angle theta with that line such that l * sin(theta) <= 2 (epsilon + r);
 // so the two groups' directions may differ by at most the sum of the two
-// such angles.
-bool DirectionsCompatible(const Group& a, const Group& b, double epsilon) {
-  // sin of each group's largest allowed angle; >= 1 means any angle.
-  auto max_sine = [epsilon](const Group& g) {
-    const double dx = g.segment.x2 - g.segment.x1, dy = g.segment.y2 - g.segment.y1;
-    const double length_sq = dx * dx + dy * dy;
-    const double reach = 2 * (epsilon + g.max_residual);
-    return length_sq <= reach * reach ? 1.0 : reach / std::sqrt(length_sq);
-  };
-  const double sa = max_sine(a), sb = max_sine(b);
-  if (sa >= 1 || sb >= 1) return true;
-  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B.
-  const double cosine = std::abs(a.line.direction.dot(b.line.direction));
-  return cosine >= std::sqrt((1 - sa * sa) * (1 - sb * sb)) - sa * sb - 1e-12;
+// such angles (SegmentShape::max_sine).
+bool DirectionsCompatible(const SegmentShape& shape_a, const SegmentShape& shape_b) {
+  const double sa = shape_a.max_sine, sb = shape_b.max_sine;
+  // angle <= A + B  <=>  cos(angle) >= cos(A + B) = cos A cos B - sin A sin B
+  // (evaluated whatever sa and sb, so that the result is a select).
+  const double cosine = std::abs(shape_a.direction.dot(shape_b.direction));
+  const double limit = std::sqrt(MaxOf(0.0, (1 - sa * sa) * (1 - sb * sb))) - sa * sb - 1e-12;
+  return (sa >= 1) | (sb >= 1) | (cosine >= limit);
+}
+
+// A segment's bounding box (kept apart from SegmentShape: the first filter
+// reads only this, for many more pairs).
+struct Box {
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+};
+Box BoxOf(const LineSegment& s) {
+  return {MinOf(s.x1, s.x2), MaxOf(s.x1, s.x2), MinOf(s.y1, s.y2), MaxOf(s.y1, s.y2)};
 }
 
 // False when the segments' bounding boxes, one grown by `gap`, are apart:
 // then no end of one is within `gap` of the other (a cheap first test).
-bool BoxesWithinGap(const LineSegment& a, const LineSegment& b, double gap) {
-  return std::min(a.x1, a.x2) - gap <= std::max(b.x1, b.x2) &&
-         std::min(b.x1, b.x2) <= std::max(a.x1, a.x2) + gap &&
-         std::min(a.y1, a.y2) - gap <= std::max(b.y1, b.y2) &&
-         std::min(b.y1, b.y2) <= std::max(a.y1, a.y2) + gap;
+bool BoxesWithinGap(const Box& a, const Box& b, double gap) {
+  return (a.x_min - gap <= b.x_max) & (b.x_min <= a.x_max + gap) & (a.y_min - gap <= b.y_max) &
+         (b.y_min <= a.y_max + gap);
 }
 
 // True when an end of one segment is within `gap` of the other segment.
-bool EndsWithinGap(const Group& a, const Group& b, double gap) {
-  if (!BoxesWithinGap(a.segment, b.segment, gap)) return false;
+// (BoxesWithinGap is the cheap first test.)
+bool EndsWithinGap(const SegmentShape& a, const SegmentShape& b, double gap) {
   const double gap_sq = gap * gap;
-  return SquaredDistanceToSegment(a.segment.x1, a.segment.y1, b.segment) <= gap_sq ||
-         SquaredDistanceToSegment(a.segment.x2, a.segment.y2, b.segment) <= gap_sq ||
-         SquaredDistanceToSegment(b.segment.x1, b.segment.y1, a.segment) <= gap_sq ||
-         SquaredDistanceToSegment(b.segment.x2, b.segment.y2, a.segment) <= gap_sq;
+  return SquaredDistanceToSegment(a.s.x1, a.s.y1, b) <= gap_sq ||
+         SquaredDistanceToSegment(a.s.x2, a.s.y2, b) <= gap_sq ||
+         SquaredDistanceToSegment(b.s.x1, b.s.y1, a) <= gap_sq ||
+         SquaredDistanceToSegment(b.s.x2, b.s.y2, a) <= gap_sq;
 }
 
 // The part of a merge's added distance (`added`, exact or a lower bound)
@@ -434,20 +552,22 @@ bool EndsWithinGap(const Group& a, const Group& b, double gap) {
 // (ChainMoments::LocalResidual), pays for every step it loses. Equal to
 // `added` when noise_factor is 0.
 double NoiseSlack(const Group& a, const Group& b, const MergeLimits& limits) {
-  const double cells = static_cast<double>(a.cells.size() + b.cells.size());
+  // The moments count the cells (cells.size(), without reading the vector).
+  const double cells = static_cast<double>(a.moments.count() + b.moments.count());
   const double noise = a.noise + b.noise;
   if (cells < limits.noise_min_cells || noise < limits.noise_min_mean * cells) return 0;
-  return std::max(0.0, limits.noise_factor * noise - a.cost - b.cost);
+  return MaxOf(0.0, limits.noise_factor * noise - a.cost - b.cost);
 }
+double ChargedCost(double added, double slack) { return added - MinOf(slack, MaxOf(added, 0.0)); }
 double ChargedCost(const Group& a, const Group& b, double added, const MergeLimits& limits) {
-  return added - std::min(NoiseSlack(a, b, limits), std::max(added, 0.0));
+  return ChargedCost(added, NoiseSlack(a, b, limits));
 }
 
 // The summed distance a merged group may reach: its parts' cost plus
 // max_added or, when larger, the noise slack (a merge may raise the mean
 // distance up to the walls' own noise).
 double MergeBudget(const Group& a, const Group& b, const MergeLimits& limits) {
-  return a.cost + b.cost + std::max(limits.max_added, NoiseSlack(a, b, limits));
+  return a.cost + b.cost + MaxOf(limits.max_added, NoiseSlack(a, b, limits));
 }
 
 // The merged moments of a and b (O(1)); their TLS line is the merge's line.
@@ -459,18 +579,17 @@ PointMoments MergedMoments(const Group& a, const Group& b) {
 
 // A lower bound, in O(1), on what merging a and b adds to the summed
 // distance, or infinity when the merge surely breaks the bound or the
-// budget. The merged cells' squared distances to their TLS line sum to
-// S = n * (smallest eigenvalue of their covariance); with every distance at
-// most epsilon, the summed distance is at least S / epsilon, and at least
-// sqrt(S).
-double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits) {
+// budget (MergeBudget with noise slack `slack`). The merged cells' squared distances to their TLS
+// line sum to S = n * (smallest eigenvalue of their covariance); with every distance at most
+// epsilon, the summed distance is at least S / epsilon, and at least sqrt(S).
+double MergeLowerBound(const Group& a, const Group& b, const MergeLimits& limits, double slack) {
   const PointMoments moments = MergedMoments(a, b);
   const double mean_sq = SmallestEigenvalue(moments.Covariance());
   const double epsilon = limits.epsilon;
   if (mean_sq > epsilon * epsilon) return std::numeric_limits<double>::infinity();
   const double sum_sq = mean_sq * static_cast<double>(moments.count());
-  const double cost = std::max(sum_sq / epsilon, std::sqrt(sum_sq));
-  if (cost > MergeBudget(a, b, limits) + kRoundingSlack) {
+  const double cost = MaxOf(sum_sq / epsilon, std::sqrt(sum_sq));
+  if (cost > a.cost + b.cost + MaxOf(limits.max_added, slack) + kRoundingSlack) {
     return std::numeric_limits<double>::infinity();
   }
   return cost - a.cost - b.cost;
@@ -486,7 +605,7 @@ bool TryMerge(const Group& a, const Group& b, const MergeLimits& limits, double 
   if (SmallestEigenvalue(moments.Covariance()) > epsilon * epsilon) return false;
   *line = moments.Fit();
   *sweep = LineSweep();
-  const double max_cost = std::min(MergeBudget(a, b, limits), a.cost + b.cost + max_added);
+  const double max_cost = MinOf(MergeBudget(a, b, limits), a.cost + b.cost + max_added);
   return SweepCells(*line, a.cells, epsilon, max_cost, sweep) &&
          SweepCells(*line, b.cells, epsilon, max_cost, sweep);
 }
@@ -504,6 +623,197 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
   b->cells = {};
 }
 
+// A merge candidate: groups a and b under `added`, a lower bound of its
+// charged cost or the exact one; live while b's version is `version_b` (a's
+// candidates are dropped whenever a changes).
+struct Candidate {
+  double added;
+  std::uint32_t a, b;
+  std::uint32_t version_b;
+};
+
+// Candidates ordered by (added, a, b), a total order, so that the merges
+// made do not depend on how the queue stores ties. Two levels: each group
+// keeps the candidates it queued in a short list, and a binary heap of
+// groups is keyed by each list's cheapest entry. A merge drops its groups'
+// lists in O(1) instead of leaving them stale in one large heap; stale
+// entries of the other lists are dropped when they reach their list's top.
+class MergeQueue {
+ public:
+  // `version`: per group, bumped whenever the group changes or dies.
+  explicit MergeQueue(const std::vector<std::uint32_t>* version)
+      : version_(version),
+        lists_(version->size()),
+        best_(version->size(), 0),
+        position_(version->size(), kAbsent) {
+    arena_.reserve(16 * version->size());  // ~10 candidates per group
+  }
+
+  // Queues c; until Build() only into c.a's list.
+  void Push(const Candidate& c) {
+    List& list = lists_[c.a];
+    if (list.size == list.capacity) Grow(&list);
+    Entry* entries = &arena_[list.begin];
+    entries[list.size++] = {c.added, c.b, c.version_b};
+    if (!built_) return;
+    if (list.size == 1 || Less(entries[list.size - 1], entries[best_[c.a]])) {
+      best_[c.a] = list.size - 1;
+      if (position_[c.a] == kAbsent) {
+        position_[c.a] = static_cast<std::int32_t>(heap_.size());
+        heap_.push_back({c.added, c.a});
+      }
+      heap_[position_[c.a]].key = c.added;
+      SiftUp(static_cast<std::size_t>(position_[c.a]));
+    }
+  }
+
+  // Heapifies the groups queued so far.
+  void Build() {
+    for (std::uint32_t g = 0; g < lists_.size(); ++g) {
+      if (!FindBest(g)) continue;
+      position_[g] = static_cast<std::int32_t>(heap_.size());
+      heap_.push_back({Best(g).added, g});
+    }
+    for (std::size_t i = heap_.size() / 2; i-- > 0;) SiftDown(i);
+    built_ = true;
+  }
+
+  // The cheapest live candidate, dropping stale ones; false when none is
+  // left.
+  bool Top(Candidate* top) {
+    while (!heap_.empty()) {
+      const std::uint32_t g = heap_[0].group;
+      const Entry& e = Best(g);
+      if (Live(e)) {
+        *top = {e.added, g, e.b, e.version_b};
+        return true;
+      }
+      RemoveBest(g);
+    }
+    return false;
+  }
+
+  // Removes the candidate Top() returned.
+  void Pop() { RemoveBest(heap_[0].group); }
+
+  // Drops every candidate queued by g.
+  void Clear(std::uint32_t g) {
+    lists_[g].size = 0;  // keeps its room in the arena
+    if (position_[g] != kAbsent) Erase(g);
+  }
+
+ private:
+  struct Entry {
+    double added;
+    std::uint32_t b;
+    std::uint32_t version_b;
+  };
+  // A group in the heap under its cheapest entry's `added` (kept here so
+  // that sifting reads only the heap).
+  struct HeapEntry {
+    double key;
+    std::uint32_t group;
+  };
+  // A group's candidates: arena_[begin, begin + size), with room for
+  // `capacity` (one arena instead of a vector per group: fewer allocations).
+  struct List {
+    std::uint32_t begin = 0, size = 0, capacity = 0;
+  };
+  static constexpr std::int32_t kAbsent = -1;
+
+  // Moves a full list to the arena's end with twice the room.
+  void Grow(List* list) {
+    const std::uint32_t capacity = std::max<std::uint32_t>(8, 2 * list->capacity);
+    const std::uint32_t begin = static_cast<std::uint32_t>(arena_.size());
+    arena_.resize(arena_.size() + capacity);
+    std::copy_n(arena_.begin() + list->begin, list->size, arena_.begin() + begin);
+    list->begin = begin;
+    list->capacity = capacity;
+  }
+  const Entry& Best(std::uint32_t g) const { return arena_[lists_[g].begin + best_[g]]; }
+
+  bool Live(const Entry& e) const { return (*version_)[e.b] == e.version_b; }
+  static bool Less(const Entry& x, const Entry& y) {
+    return x.added < y.added || (x.added == y.added && x.b < y.b);
+  }
+  // Heap order: by the best entry, then (a, b).
+  static bool Before(const HeapEntry& x, const HeapEntry& y) {
+    // Branch-free: sifting compares are data dependent.
+    return (x.key < y.key) | ((x.key == y.key) & (x.group < y.group));
+  }
+  // Drops g's stale entries and finds its cheapest; false when none is left.
+  bool FindBest(std::uint32_t g) {
+    List& list = lists_[g];
+    Entry* entries = &arena_[list.begin];
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < list.size; ++i) {
+      const Entry e = entries[i];
+      if (!Live(e)) continue;
+      if (kept == 0 || Less(e, entries[best_[g]])) best_[g] = kept;
+      entries[kept++] = e;
+    }
+    list.size = kept;
+    return kept > 0;
+  }
+  // Swap-removes the best entry of g (the heap's top) and repositions g.
+  void RemoveBest(std::uint32_t g) {
+    List& list = lists_[g];
+    arena_[list.begin + best_[g]] = arena_[list.begin + list.size - 1];
+    --list.size;
+    if (!FindBest(g)) {
+      Erase(g);
+      return;
+    }
+    const std::size_t i = static_cast<std::size_t>(position_[g]);
+    heap_[i].key = Best(g).added;
+    SiftDown(i);  // its key only grew
+  }
+  void Erase(std::uint32_t g) {
+    const std::size_t i = static_cast<std::size_t>(position_[g]);
+    position_[g] = kAbsent;
+    const HeapEntry last = heap_.back();
+    heap_.pop_back();
+    if (i == heap_.size()) return;
+    Place(i, last);
+    SiftDown(i);
+    SiftUp(static_cast<std::size_t>(position_[last.group]));
+  }
+  void Place(std::size_t i, const HeapEntry& entry) {
+    heap_[i] = entry;
+    position_[entry.group] = static_cast<std::int32_t>(i);
+  }
+  void SiftUp(std::size_t i) {
+    const HeapEntry entry = heap_[i];
+    while (i > 0) {
+      const std::size_t parent = (i - 1) / 2;
+      if (!Before(entry, heap_[parent])) break;
+      Place(i, heap_[parent]);
+      i = parent;
+    }
+    Place(i, entry);
+  }
+  void SiftDown(std::size_t i) {
+    const HeapEntry entry = heap_[i];
+    for (;;) {
+      std::size_t child = 2 * i + 1;
+      if (child >= heap_.size()) break;
+      if (child + 1 < heap_.size() && Before(heap_[child + 1], heap_[child])) ++child;
+      if (!Before(heap_[child], entry)) break;
+      Place(i, heap_[child]);
+      i = child;
+    }
+    Place(i, entry);
+  }
+
+  const std::vector<std::uint32_t>* version_;
+  std::vector<List> lists_;  // per group: the candidates it queued
+  std::vector<Entry> arena_;
+  std::vector<std::uint32_t> best_;     // per group: index of its cheapest entry
+  std::vector<std::int32_t> position_;  // per group: index in heap_, or kAbsent
+  std::vector<HeapEntry> heap_;         // groups with candidates
+  bool built_ = false;
+};
+
 // Step 4: merge groups, cheapest merge first (agglomerative), while the
 // bound holds and each merge adds at most max_added_cost to the summed
 // distance beyond the noise slack; a merge charged more than
@@ -515,30 +825,26 @@ void AbsorbGroup(Group* a, Group* b, const FittedLine& line, const LineSweep& sw
 // O(1) lower bound of its added cost (MergeLowerBound) and swept over its
 // cells only when it reaches the top; it is merged then if its exact cost is
 // still the cheapest, else requeued under the exact cost. Pairs that a merge
-// of one of their groups makes stale are thus never swept.
+// of one of their groups makes stale are thus never swept. Equal keys go to
+// the lower ids (MergeQueue's total order), so the merges made do not depend
+// on how the queue stores its candidates.
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
-  struct Candidate {
-    double added;  // a lower bound, or the exact cost when `exact`
-    std::uint32_t a, b;
-    std::uint32_t version_a, version_b;
-    bool operator>(const Candidate& other) const { return added > other.added; }
-  };
-  // A min-heap on `added`; the first candidates are heapified at once.
-  std::vector<Candidate> heap;
-  bool heap_ready = false;
-  auto push = [&](const Candidate& c) {
-    heap.push_back(c);
-    if (heap_ready) std::push_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-  };
   std::vector<std::uint32_t> version(groups->size(), 0);
+  MergeQueue queue(&version);
   GroupTiles tiles(width, height, 8);
-  for (std::uint32_t id = 0; id < groups->size(); ++id) tiles.Add(id, (*groups)[id].segment);
+  tiles.AddAll(*groups);
   std::vector<std::uint8_t> alive(groups->size());
   for (std::uint32_t id = 0; id < groups->size(); ++id) alive[id] = (*groups)[id].alive;
-  std::vector<std::uint32_t> near;
+  std::vector<SegmentShape> shapes(groups->size());
+  std::vector<Box> boxes(groups->size());
+  for (std::uint32_t id = 0; id < groups->size(); ++id) {
+    shapes[id] = ShapeOf((*groups)[id], epsilon);
+    boxes[id] = BoxOf((*groups)[id].segment);
+  }
   std::vector<std::uint32_t> seen_stamp(groups->size(), 0);
+  std::vector<std::uint32_t> batch(groups->size());  // candidate ids (each at most once)
   std::uint32_t stamp = 0;
   // True when a merge adding `added` (or, for a lower bound, more) is
   // neither free nor within the budget left.
@@ -549,48 +855,62 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
   auto push_candidates = [&](std::uint32_t g, bool only_higher_ids) {
     ++stamp;
     const LineSegment s = (*groups)[g].segment;
-    for (int end = 0; end < 2; ++end) {
-      tiles.Near(end == 0 ? s.x1 : s.x2, end == 0 ? s.y1 : s.y2, gap, alive, &near);
-      for (std::uint32_t h : near) {
-        if (h == g || seen_stamp[h] == stamp || !alive[h]) continue;
-        if (only_higher_ids && h < g) continue;
-        seen_stamp[h] = stamp;
-        const Group& a = (*groups)[g];
-        const Group& b = (*groups)[h];
-        if (!EndsWithinGap(a, b, gap) || !DirectionsCompatible(a, b, epsilon)) continue;
-        const double lower = MergeLowerBound(a, b, limits);
-        if (lower == std::numeric_limits<double>::infinity()) continue;
-        const double bound = ChargedCost(a, b, lower, limits);
-        if (over_budget(bound)) continue;
-        push({bound, g, h, version[g], version[h]});
-      }
+    const Group& a = (*groups)[g];
+    const SegmentShape& shape_a = shapes[g];
+    const Box& box_a = boxes[g];
+    // The filters run in passes over a batch that keep the survivors
+    // (selects, not branches: their outcomes are data dependent).
+    std::size_t n = 0;
+    tiles.ForEachNearEnds(s, gap, alive, [&](std::uint32_t h) {
+      const bool take = (h != g) & (seen_stamp[h] != stamp) & (!only_higher_ids | (h > g));
+      seen_stamp[h] = stamp;
+      batch[n] = h;
+      n += take;
+    });
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      batch[kept] = batch[i];
+      kept += BoxesWithinGap(box_a, boxes[batch[i]], gap);
+    }
+    n = kept;
+    kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SegmentShape& shape_b = shapes[batch[i]];
+      batch[kept] = batch[i];
+      kept += EndsWithinGap(shape_a, shape_b, gap) & DirectionsCompatible(shape_a, shape_b);
+    }
+    for (std::size_t i = 0; i < kept; ++i) {
+      const std::uint32_t h = batch[i];
+      const Group& b = (*groups)[h];
+      const double slack = NoiseSlack(a, b, limits);
+      const double lower = MergeLowerBound(a, b, limits, slack);
+      if (lower == std::numeric_limits<double>::infinity()) continue;
+      const double bound = ChargedCost(lower, slack);
+      if (over_budget(bound)) continue;
+      queue.Push({bound, g, h, version[h]});
     }
   };
   for (std::uint32_t g = 0; g < groups->size(); ++g) push_candidates(g, true);
-  std::make_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-  heap_ready = true;
+  queue.Build();
   FittedLine line;
   LineSweep sweep;
-  while (!heap.empty()) {
+  Candidate c;
+  while (queue.Top(&c)) {
     // The top has the smallest bound: once it is over the budget, so is
     // every queued merge, and none of them can be free any more.
-    if (over_budget(heap.front().added)) break;
-    std::pop_heap(heap.begin(), heap.end(), std::greater<Candidate>());
-    Candidate c = heap.back();
-    heap.pop_back();
+    if (over_budget(c.added)) break;
+    queue.Pop();
     Group& a = (*groups)[c.a];
     Group& b = (*groups)[c.b];
-    if (!alive[c.a] || !alive[c.b] || version[c.a] != c.version_a || version[c.b] != c.version_b) {
-      continue;
-    }
     // A merge over the budget left is not made: stop its sweep there.
     const double allowed =
         std::max(limits.free_added + kRoundingSlack, limits.total_budget - *total_cost) +
         NoiseSlack(a, b, limits);
     if (!TryMerge(a, b, limits, allowed, &line, &sweep)) continue;
     c.added = ChargedCost(a, b, sweep.cost - a.cost - b.cost, limits);
-    if (!heap.empty() && c.added > heap.front().added) {
-      push(c);  // no longer the cheapest: wait for its turn
+    Candidate next;
+    if (queue.Top(&next) && c.added > next.added) {
+      queue.Push(c);  // no longer the cheapest: wait for its turn
       continue;
     }
     if (over_budget(c.added)) continue;  // free merges may still follow
@@ -599,7 +919,11 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     alive[c.b] = 0;
     ++version[c.b];
     ++version[c.a];
+    queue.Clear(c.a);
+    queue.Clear(c.b);
     tiles.Add(c.a, a.segment);
+    shapes[c.a] = ShapeOf(a, epsilon);
+    boxes[c.a] = BoxOf(a.segment);
     push_candidates(c.a, false);
   }
 }
@@ -662,11 +986,14 @@ void PruneCoveredGroups(std::vector<Group>* groups, int width, int height, doubl
   const std::vector<std::uint32_t>& group_of = live.group_of;
   SegmentIndex index(&segments, width, height);
   std::vector<std::uint8_t> skip(segments.size(), 0);
+  // Smallest first, ties in segment order: (cells, segment) pairs sorted.
+  std::vector<std::pair<std::size_t, std::uint32_t>> by_size(segments.size());
+  for (std::uint32_t s = 0; s < segments.size(); ++s) {
+    by_size[s] = {(*groups)[group_of[s]].cells.size(), s};
+  }
+  std::sort(by_size.begin(), by_size.end());
   std::vector<std::uint32_t> order(segments.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return (*groups)[group_of[a]].cells.size() < (*groups)[group_of[b]].cells.size();
-  });
+  for (std::size_t i = 0; i < by_size.size(); ++i) order[i] = by_size[i].second;
   std::vector<std::uint32_t> targets;
   std::vector<double> distances;
   for (std::uint32_t s : order) {
@@ -785,10 +1112,19 @@ std::vector<std::uint32_t> LeaveSpecksToFurniture(const EdgeMap& edges, std::vec
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
 // and keeps every cell within epsilon. The segment spans all cells.
-void PolishGroupL1(Group* group, double epsilon) {
+// Buffers reused across PolishGroupL1 calls.
+struct PolishScratch {
+  std::vector<double> xs, ys, w;
+};
+void PolishGroupL1(Group* group, double epsilon, PolishScratch* scratch) {
   const std::size_t n = group->cells.size();
   if (n < 3) return;
-  std::vector<double> xs(n), ys(n);
+  std::vector<double>& xs = scratch->xs;
+  std::vector<double>& ys = scratch->ys;
+  std::vector<double>& w = scratch->w;
+  xs.resize(n);
+  ys.resize(n);
+  w.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const CellXY& c = group->cells[i];
     xs[i] = c.col;
@@ -812,7 +1148,6 @@ void PolishGroupL1(Group* group, double epsilon) {
   for (int iteration = 0; iteration < 8; ++iteration) {
     const double nx = -best.direction.y(), ny = best.direction.x();
     double sw = 0, sx = 0, sy = 0;
-    std::vector<double> w(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double d =
           std::abs((xs[i] - best.centroid.x()) * nx + (ys[i] - best.centroid.y()) * ny);
@@ -856,16 +1191,27 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
     const int ty = std::clamp(static_cast<int>(std::floor((y + 0.5) / kTile)), 0, tiles_y - 1);
     return std::pair<int, int>(tx, ty);
   };
-  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)).
-  std::vector<std::vector<std::uint32_t>> ends(static_cast<std::size_t>(tiles_x) * tiles_y);
+  // Ends: 2 * id + (0 for (x1, y1), 1 for (x2, y2)), bucketed by tile in
+  // increasing order (a counting sort: tile t's ends are
+  // ends[tile_begin[t], tile_begin[t + 1])).
   auto end_point = [&](std::uint32_t end) {
     const LineSegment& s = (*segments)[end / 2];
     return (end % 2 == 0) ? Eigen::Vector2d(s.x1, s.y1) : Eigen::Vector2d(s.x2, s.y2);
   };
-  for (std::uint32_t end = 0; end < 2 * segments->size(); ++end) {
+  const std::uint32_t end_count = static_cast<std::uint32_t>(2 * segments->size());
+  std::vector<std::uint32_t> tile_of_end(end_count);
+  std::vector<std::uint32_t> tile_begin(static_cast<std::size_t>(tiles_x) * tiles_y + 1, 0);
+  for (std::uint32_t end = 0; end < end_count; ++end) {
     const Eigen::Vector2d p = end_point(end);
     const auto [tx, ty] = tile_of(p.x(), p.y());
-    ends[static_cast<std::size_t>(ty) * tiles_x + tx].push_back(end);
+    tile_of_end[end] = static_cast<std::uint32_t>(ty) * tiles_x + tx;
+    ++tile_begin[tile_of_end[end] + 1];
+  }
+  for (std::size_t t = 1; t < tile_begin.size(); ++t) tile_begin[t] += tile_begin[t - 1];
+  std::vector<std::uint32_t> ends(end_count);
+  {
+    std::vector<std::uint32_t> fill(tile_begin.begin(), tile_begin.end() - 1);
+    for (std::uint32_t end = 0; end < end_count; ++end) ends[fill[tile_of_end[end]]++] = end;
   }
   std::vector<std::uint8_t> joined(2 * segments->size(), 0);
   const double min_sine = std::sin(20.0 * std::numbers::pi / 180.0);
@@ -876,7 +1222,9 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
     const auto [tx1, ty1] = tile_of(p.x() + reach, p.y() + reach);
     for (int ty = ty0; ty <= ty1 && !joined[end]; ++ty) {
       for (int tx = tx0; tx <= tx1 && !joined[end]; ++tx) {
-        for (std::uint32_t other : ends[static_cast<std::size_t>(ty) * tiles_x + tx]) {
+        const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x + tx;
+        for (std::uint32_t k = tile_begin[tile]; k < tile_begin[tile + 1]; ++k) {
+          const std::uint32_t other = ends[k];
           if (other / 2 == end / 2 || joined[other]) continue;
           const Eigen::Vector2d q = end_point(other);
           if ((p - q).norm() > reach) continue;
@@ -910,11 +1258,21 @@ void JoinCorners(std::vector<LineSegment>* segments, int width, int height, doub
 
 namespace {
 
+// Chains stored end to end: chain k is cells[begin[k], begin[k + 1]) (one
+// array rather than a vector per chain).
+struct FlatChains {
+  std::vector<std::uint32_t> cells;
+  std::vector<std::size_t> begin = {0};
+  std::size_t size() const { return begin.size() - 1; }
+  std::span<const std::uint32_t> operator[](std::size_t k) const {
+    return std::span<const std::uint32_t>(cells).subspan(begin[k], begin[k + 1] - begin[k]);
+  }
+};
+
 // TraceEdgeChains over the cells of `cells` (raster order) whose `open` flag
 // is set; clears the flags as it goes.
-std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
-                                                    const std::vector<std::uint32_t>& cells,
-                                                    std::vector<std::uint8_t>& open) {
+FlatChains TraceChains(const EdgeMap& edges, const std::vector<std::uint32_t>& cells,
+                       std::vector<std::uint8_t>& open) {
   const int width = edges.width, height = edges.height;
   auto untraced_neighbours = [&](int col, int row) {
     int count = 0;
@@ -961,14 +1319,17 @@ std::vector<std::vector<std::uint32_t>> TraceChains(const EdgeMap& edges,
       heading = best_k;
     }
   };
-  std::vector<std::vector<std::uint32_t>> chains;
+  FlatChains chains;
+  chains.cells.reserve(cells.size());
+  std::vector<std::uint32_t> chain;  // the chain being traced (reused)
   auto trace_from = [&](std::size_t seed) {
-    std::vector<std::uint32_t> chain = {static_cast<std::uint32_t>(seed)};
+    chain.assign(1, static_cast<std::uint32_t>(seed));
     open[seed] = 0;
     walk(&chain);
     std::reverse(chain.begin(), chain.end());
     walk(&chain);  // the other way from the seed
-    chains.push_back(std::move(chain));
+    chains.cells.insert(chains.cells.end(), chain.begin(), chain.end());
+    chains.begin.push_back(chains.cells.size());
   };
   // Contour ends first, then whatever is left (closed contours).
   for (int pass = 0; pass < 2; ++pass) {
@@ -991,14 +1352,20 @@ std::vector<std::vector<std::uint32_t>> TraceEdgeChains(const EdgeMap& edges,
   for (std::size_t i = 0; i < include.size(); ++i) {
     if (include[i]) cells.push_back(static_cast<std::uint32_t>(i));
   }
-  return TraceChains(edges, cells, open);
+  const FlatChains flat = TraceChains(edges, cells, open);
+  std::vector<std::vector<std::uint32_t>> chains;
+  for (std::size_t k = 0; k < flat.size(); ++k) chains.emplace_back(flat[k].begin(), flat[k].end());
+  return chains;
 }
 
-std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
-                            double epsilon_cells) {
-  const ChainMoments moments(chain, width);
-  const int n = static_cast<int>(chain.size());
-  std::vector<int> pieces;
+namespace {
+
+// SplitChain over the chain of `moments`, into *pieces (cleared first).
+void SplitChainMoments(const ChainMoments& moments, double epsilon_cells,
+                       std::vector<int>* pieces_out) {
+  const int n = moments.size();
+  std::vector<int>& pieces = *pieces_out;
+  pieces.clear();
   for (int begin = 0; begin < n;) {
     int good = std::min(2, n - begin);
     int bad = -1;
@@ -1018,6 +1385,14 @@ std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
     pieces.push_back(good);
     begin += good;
   }
+}
+
+}  // namespace
+
+std::vector<int> SplitChain(const std::vector<std::uint32_t>& chain, int width,
+                            double epsilon_cells) {
+  std::vector<int> pieces;
+  SplitChainMoments(ChainMoments(chain, width), epsilon_cells, &pieces);
   return pieces;
 }
 
@@ -1048,11 +1423,17 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
                      static_cast<double>(options.noise_min_cells),
                      options.free_merge_cost_cells * epsilon * epsilon};
   std::vector<Group> groups;
-  for (const std::vector<std::uint32_t>& chain : TraceChains(edges, edge_cells, open)) {
-    const ChainMoments chain_moments(chain, width);
+  const FlatChains chains = TraceChains(edges, edge_cells, open);
+  ChainMoments chain_moments;
+  std::vector<int> pieces;
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    const std::span<const std::uint32_t> chain = chains[k];
+    chain_moments.Assign(chain, width);
+    SplitChainMoments(chain_moments, split_epsilon, &pieces);
     int begin = 0;
-    for (int length : SplitChain(chain, width, split_epsilon)) {
+    for (int length : pieces) {
       Group group;
+      group.cells.reserve(length);
       for (int i = begin; i < begin + length; ++i) {
         const CellXY c = CellOfIndex(chain[i], width);
         group.cells.push_back(c);
@@ -1080,8 +1461,9 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       edges, &groups, static_cast<std::size_t>(options.speck_max_cells),
       options.speck_min_gap_cells, options.speck_max_added_cells, limits.total_budget, &total_cost);
   speckle.insert(speckle.end(), specks.begin(), specks.end());
+  PolishScratch polish_scratch;
   for (Group& group : groups) {
-    if (group.alive) PolishGroupL1(&group, epsilon);
+    if (group.alive) PolishGroupL1(&group, epsilon, &polish_scratch);
   }
 
   LinemapLines result;

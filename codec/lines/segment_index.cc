@@ -14,11 +14,21 @@ SegmentIndex::SegmentIndex(const std::vector<LineSegment>* segments, int width, 
     : segments_(segments), tile_(std::max(1, tile_cells)) {
   tiles_x_ = std::max(1, (width + tile_ - 1) / tile_);
   tiles_y_ = std::max(1, (height + tile_ - 1) / tile_);
-  buckets_.resize(static_cast<std::size_t>(tiles_x_) * tiles_y_);
   seen_stamp_.assign(segments->size(), 0);
+  // (tile, id) pairs in id order, then a stable counting sort by tile: one
+  // array for all buckets instead of a vector per tile.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> entries;
+  entries.reserve(2 * segments->size());
   for (std::size_t id = 0; id < segments->size(); ++id) {
-    AddToTiles(static_cast<std::uint32_t>(id), (*segments)[id]);
+    AddToTiles(static_cast<std::uint32_t>(id), (*segments)[id], &entries);
   }
+  const std::size_t tiles = static_cast<std::size_t>(tiles_x_) * tiles_y_;
+  bucket_begin_.assign(tiles + 1, 0);
+  for (const auto& [tile, id] : entries) ++bucket_begin_[tile + 1];
+  for (std::size_t t = 0; t < tiles; ++t) bucket_begin_[t + 1] += bucket_begin_[t];
+  bucket_ids_.resize(entries.size());
+  std::vector<std::uint32_t> fill(bucket_begin_.begin(), bucket_begin_.end() - 1);
+  for (const auto& [tile, id] : entries) bucket_ids_[fill[tile]++] = id;
 }
 
 // Tile of a coordinate in cell units; cell c covers [c-0.5, c+0.5), so tile
@@ -31,7 +41,8 @@ int SegmentIndex::TileOf(double coordinate, int tiles) const {
 
 // A segment goes into every tile whose square it may touch: the tiles of its
 // bounding box whose centre lies within half a tile diagonal of it.
-void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s) {
+void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s,
+                              std::vector<std::pair<std::uint32_t, std::uint32_t>>* entries) {
   const int tx0 = TileOf(std::min(s.x1, s.x2), tiles_x_);
   const int tx1 = TileOf(std::max(s.x1, s.x2), tiles_x_);
   const int ty0 = TileOf(std::min(s.y1, s.y2), tiles_y_);
@@ -44,10 +55,19 @@ void SegmentIndex::AddToTiles(std::uint32_t id, const LineSegment& s) {
       // Border tiles also own everything clamped into them.
       const bool border = tx == 0 || ty == 0 || tx == tiles_x_ - 1 || ty == tiles_y_ - 1;
       if (border || PointSegmentDistance(cx, cy, s) <= half_diagonal + 1e-9) {
-        buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx].push_back(id);
+        entries->push_back({static_cast<std::uint32_t>(ty) * tiles_x_ + tx, id});
       }
     }
   }
+}
+
+double SegmentIndex::DistanceOutside(double x, double y, int qx, int qy, int ring) const {
+  constexpr double kFar = std::numeric_limits<double>::infinity();
+  const double left = qx - ring > 0 ? x - ((qx - ring) * tile_ - 0.5) : kFar;
+  const double right = qx + ring < tiles_x_ - 1 ? (qx + ring + 1) * tile_ - 0.5 - x : kFar;
+  const double top = qy - ring > 0 ? y - ((qy - ring) * tile_ - 0.5) : kFar;
+  const double bottom = qy + ring < tiles_y_ - 1 ? (qy + ring + 1) * tile_ - 0.5 - y : kFar;
+  return std::min(std::min(left, right), std::min(top, bottom));
 }
 
 double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::uint8_t>* skip,
@@ -67,7 +87,9 @@ double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::
       const bool full_row = ty == qy - ring || ty == qy + ring;
       for (int tx = qx - ring; tx <= qx + ring; tx += full_row ? 1 : 2 * std::max(ring, 1)) {
         if (tx < 0 || tx >= tiles_x_) continue;
-        for (std::uint32_t id : buckets_[static_cast<std::size_t>(ty) * tiles_x_ + tx]) {
+        const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x_ + tx;
+        for (std::uint32_t k = bucket_begin_[tile]; k < bucket_begin_[tile + 1]; ++k) {
+          const std::uint32_t id = bucket_ids_[k];
           if (seen_stamp_[id] == stamp_) continue;
           seen_stamp_[id] = stamp_;
           if (skip != nullptr && (*skip)[id]) continue;
@@ -80,9 +102,10 @@ double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::
         if (ring == 0) break;
       }
     }
-    // Any segment not yet seen touches only tiles outside this ring, which
-    // are at least ring * tile away from a query point inside tile (qx, qy).
-    if (best <= static_cast<double>(ring) * tile_) break;
+    // Any segment not yet seen touches only tiles outside this ring: it is at
+    // least as far as the border of the rings' square (at least ring * tile
+    // away; the map's border tiles own everything beyond them).
+    if (best <= DistanceOutside(x, y, qx, qy, ring)) break;
   }
   return best;
 }

@@ -7,6 +7,7 @@
 #define LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "linemap/lines.h"
@@ -28,15 +29,24 @@ class SegmentIndex {
                          std::uint32_t* nearest_id = nullptr);
 
  private:
-  void AddToTiles(std::uint32_t id, const LineSegment& s);
+  // Appends (tile, id) for every tile segment s may touch.
+  void AddToTiles(std::uint32_t id, const LineSegment& s,
+                  std::vector<std::pair<std::uint32_t, std::uint32_t>>* entries);
   int TileOf(double coordinate, int tiles) const;
+  // Distance from (x, y), in tile (qx, qy), to the nearest point outside the
+  // square of tiles within `ring` of that tile (infinity past the map's border
+  // tiles, which own everything clamped into them).
+  double DistanceOutside(double x, double y, int qx, int qy, int ring) const;
 
   const std::vector<LineSegment>* segments_;
   int tile_ = 16;
   int tiles_x_ = 1;
   int tiles_y_ = 1;
-  std::vector<std::vector<std::uint32_t>> buckets_;  // tiles_x_ * tiles_y_
-  std::vector<std::uint32_t> seen_stamp_;            // per segment: last query that saw it
+  // Tile t's segment ids, in increasing order: bucket_ids_[bucket_begin_[t],
+  // bucket_begin_[t + 1]).
+  std::vector<std::uint32_t> bucket_begin_;  // tiles_x_ * tiles_y_ + 1
+  std::vector<std::uint32_t> bucket_ids_;
+  std::vector<std::uint32_t> seen_stamp_;  // per segment: last query that saw it
   std::uint32_t stamp_ = 0;
 };
 

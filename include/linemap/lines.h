@@ -187,7 +187,7 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
 // (split_epsilon_cells), no distance budget, the prune at
 // max_added_cost_cells, no noise forgiveness and no specks left to the
 // furniture layer. Fewer lines (on
-// ../shared/maps a median 339 against the defaults' 469), but a higher
+// ../shared/maps a median 336 against the defaults' 463), but a higher
 // DisPL_ave (0.96 cm against 0.60 at the median), most on clean
 // maps, where the defaults follow the pixel steps of slanted walls as the
 // paper's measure rewards (Pareto-better than RM-Line on 16 of 25 maps
