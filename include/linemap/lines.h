@@ -74,7 +74,7 @@ struct LineExtractionOptions {
   // nearest segment, cheapest first, while the distance budget of
   // target_mean_distance_cells allows. Clean maps have little budget left
   // after the merges and keep their specks; noisy SLAM maps hand many over
-  // (rosnav1/willow-full-0.05: 1190 -> 899 lines, DisPL_ave 2.09 -> 3.49
+  // (rosnav1/willow-full-0.05: 1185 -> 894 lines, DisPL_ave 2.09 -> 3.49
   // cells). Suggested 3 cells (2 hands over too few specks on that map, 4
   // nearly costs strands/bham its DisPL_ave lead), a gap of 2 cells (1.5-4
   // give the same passes on ../shared/maps) and 64 cells (32-128 at a gap of
