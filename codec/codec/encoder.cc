@@ -708,9 +708,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   const bool exact = options.lossless_method == LosslessMethod::kExactLayers;
   const Labeling free_regions = codec_internal::LabelFree(grid);
   // The file without segments is coded beside the line extraction.
-  std::future<StatusOr<EncodedFile>> plain_task = StartTask(options.max_threads >= 2, [&] {
-    return EncodeFile(grid, free_regions, options, exact, nullptr, mildest);
-  });
+  const bool beside = options.max_threads >= 2 && options.store_segments;
+  std::future<StatusOr<EncodedFile>> plain_task = StartTask(
+      beside, [&] { return EncodeFile(grid, free_regions, options, exact, nullptr, mildest); });
   std::optional<EncodedFile> with_lines;
   if (options.store_segments) {
     // Lossless files need no geometry: keep segments only when they pay.

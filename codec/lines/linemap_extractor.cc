@@ -21,7 +21,7 @@
 //  4. Merge (split-and-merge, Pavlidis & Horowitz 1974): pieces whose ends
 //     are within merge_gap_cells of the other segment are refitted together
 //     (TLS over the union: Eigen on the 2x2 covariance) and merged, cheapest
-//     first (ties to the lower piece ids), when every cell stays within
+//     first (equal queue keys in piece-id order), when every cell stays within
 //     epsilon_cells AND the summed cell-to-segment distance grows by at most
 //     max_added_cost_cells * epsilon_cells^2 (a wall ragged by +-k cells
 //     merges in steps that move ~k cells by ~k each), or
@@ -347,7 +347,8 @@ class GroupTiles {
   }
 
   // Add() for groups 0, 1, ... in order, their buckets laid out in tile
-  // order with room for a few merged groups each.
+  // order, each non-empty one with room for a few merged groups (an empty
+  // one grows at its first Add()).
   void AddAll(const std::vector<Group>& groups) {
     for (const Group& group : groups) {
       ForEachTile(group.segment, [&](int tile) { ++buckets_[tile].capacity; });
@@ -366,7 +367,9 @@ class GroupTiles {
   // compact, so the scan touches no Group) registered in the tiles within
   // `radius` of either end of `s` (an id may repeat across tiles; tiles
   // near both ends are scanned once). Dead and repeated entries are dropped
-  // from the buckets on the way, so merged groups do not pile up.
+  // from the buckets on the way, so merged groups do not pile up. `visit`
+  // must not call Add(): a bucket that grows moves in the arena under the
+  // scan.
   template <typename Visit>
   void ForEachNearEnds(const LineSegment& s, double radius, const std::vector<std::uint8_t>& alive,
                        Visit visit) {
@@ -646,7 +649,7 @@ class MergeQueue {
         lists_(version->size()),
         best_(version->size(), 0),
         position_(version->size(), kAbsent) {
-    arena_.reserve(16 * version->size());  // ~10 candidates per group
+    arena_.reserve(16 * version->size());  // room for 16 candidates per group
   }
 
   // Queues c; until Build() only into c.a's list.
@@ -825,9 +828,11 @@ class MergeQueue {
 // O(1) lower bound of its added cost (MergeLowerBound) and swept over its
 // cells only when it reaches the top; it is merged then if its exact cost is
 // still the cheapest, else requeued under the exact cost. Pairs that a merge
-// of one of their groups makes stale are thus never swept. Equal keys go to
-// the lower ids (MergeQueue's total order), so the merges made do not depend
-// on how the queue stores its candidates.
+// of one of their groups makes stale are thus never swept. Equal keys in the
+// queue go to the lower ids (MergeQueue's total order), and a swept pair
+// whose exact cost equals the next key is merged at once: the merges made
+// depend on neither how the queue stores its candidates nor the platform's
+// heap.
 void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeLimits& limits,
                  double gap, double* total_cost) {
   const double epsilon = limits.epsilon;
@@ -1107,15 +1112,16 @@ std::vector<std::uint32_t> LeaveSpecksToFurniture(const EdgeMap& edges, std::vec
   return handed_over;
 }
 
+// Buffers reused across PolishGroupL1 calls.
+struct PolishScratch {
+  std::vector<double> xs, ys, w;
+};
+
 // Step 7: moves each group's line towards the least-absolute-distance line
 // of its cells (what DisPL_ave measures) by iteratively reweighted total
 // least squares (weights 1 / max(|r|, 0.1 cell), Eigen on the weighted 2x2
 // covariance), keeping a new line only while it lowers the summed distance
 // and keeps every cell within epsilon. The segment spans all cells.
-// Buffers reused across PolishGroupL1 calls.
-struct PolishScratch {
-  std::vector<double> xs, ys, w;
-};
 void PolishGroupL1(Group* group, double epsilon, PolishScratch* scratch) {
   const std::size_t n = group->cells.size();
   if (n < 3) return;
