@@ -32,6 +32,13 @@ enum class LosslessMethod {
 };
 
 struct EncodeOptions {
+  // Largest distance, in cells (Chebyshev), by which the decoded map may
+  // differ from the input; 0 (the default) is an exact file. Only 0 is
+  // implemented yet: other values are refused (invalid argument).
+  int tolerance_cells = 0;
+  // Store the vector layers (walls, rooms, furniture) besides the cells
+  // (default true); false writes the smallest exact file, cells only.
+  bool vector_layers = true;
   bool lossless = false;
   LosslessMethod lossless_method = LosslessMethod::kExactLayers;
   // Store the extractor's wall segments (SEGS). Segments shorter than

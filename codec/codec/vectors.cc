@@ -1,0 +1,58 @@
+// LoadLmapVectors(): the vector layers of a file (include/linemap/lmap_vectors.h).
+#include <string>
+#include <vector>
+
+#include "format/file_io.h"
+#include "linemap/lmap_vectors.h"
+
+namespace linemap {
+
+const char* RoomKindName(RoomKind kind) {
+  switch (kind) {
+    case RoomKind::kRoom:
+      return "room";
+    case RoomKind::kCorridor:
+      return "corridor";
+    case RoomKind::kUnspecified:
+      break;
+  }
+  return "unspecified";
+}
+
+void LmapVectors::ToWorld(const CellIndex& p, double* x, double* y) const {
+  Grid frame;
+  frame.meta = meta;
+  frame.CellToWorld(p.col, p.row, x, y);
+}
+
+StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
+                                        const DecodeLimits& limits) {
+  // Version 1.0 files keep their layers between raster chunks, so they are
+  // read with the raster; each 1.0 segment is a two-point wall.
+  LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(bytes, limits));
+  LmapVectors v;
+  v.major = contents.major;
+  v.minor = contents.minor;
+  v.width = contents.grid.width();
+  v.height = contents.grid.height();
+  v.meta = contents.grid.meta;
+  for (const LatticeSegment& s : contents.segments) v.walls.push_back({{s.a, s.b}});
+  for (std::size_t i = 0; i < contents.room_chains.size(); ++i) {
+    v.rooms.push_back({static_cast<std::uint32_t>(i), RoomKind::kUnspecified,
+                       contents.room_chains[i]});
+  }
+  for (std::size_t i = 0; i < contents.blob_outlines.size(); ++i) {
+    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i], {}});
+  }
+  return v;
+}
+
+StatusOr<LmapVectors> LoadLmapVectors(const std::string& path, const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, limits.max_file_bytes));
+  StatusOr<LmapVectors> vectors = DecodeLmapVectors(bytes, limits);
+  if (!vectors.ok()) return vectors.status().WithContext("'" + path + "'");
+  return vectors;
+}
+
+}  // namespace linemap
