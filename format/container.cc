@@ -22,9 +22,10 @@ Status CheckHeader(ByteCursor* cursor, ContainerView* view) {
   }
   LINEMAP_ASSIGN_OR_RETURN(view->major, cursor->ReadU8("version"));
   LINEMAP_ASSIGN_OR_RETURN(view->minor, cursor->ReadU8("version"));
-  if (view->major != kFormatMajor) {
+  if (view->major < kOldestFormatMajor || view->major > kFormatMajor) {
     return UnsupportedError("format version " + std::to_string(view->major) + "." +
                             std::to_string(view->minor) + " is not supported (this decoder reads " +
+                            std::to_string(kOldestFormatMajor) + ".x to " +
                             std::to_string(kFormatMajor) + ".x)");
   }
   return Status::Ok();
@@ -72,10 +73,10 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
   }
 }
 
-ContainerWriter::ContainerWriter() {
+ContainerWriter::ContainerWriter(std::uint8_t major, std::uint8_t minor) {
   out_.assign(kLmapSignature.begin(), kLmapSignature.end());
-  out_.push_back(kFormatMajor);
-  out_.push_back(kFormatMinor);
+  out_.push_back(major);
+  out_.push_back(minor);
 }
 
 void ContainerWriter::AddChunk(const std::string& type, const std::vector<std::uint8_t>& payload) {

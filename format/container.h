@@ -19,8 +19,10 @@ namespace linemap {
 
 inline constexpr std::array<std::uint8_t, 8> kLmapSignature = {0x8A, 'L',  'M',  'A',
                                                                'P',  0x0D, 0x0A, 0x1A};
-inline constexpr std::uint8_t kFormatMajor = 1;
+// The newest version this code writes; it reads majors 1 and 2.
+inline constexpr std::uint8_t kFormatMajor = 2;
 inline constexpr std::uint8_t kFormatMinor = 0;
+inline constexpr std::uint8_t kOldestFormatMajor = 1;
 inline constexpr std::size_t kFileHeaderSize = 10;  // signature + major + minor
 
 struct Chunk {
@@ -38,7 +40,7 @@ struct ContainerView {
 };
 
 // Splits `bytes` into chunks, checking the signature, the version (major must
-// be kFormatMajor), type letters, lengths (<= max_chunk_bytes), every CRC, the
+// be kOldestFormatMajor..kFormatMajor), type letters, lengths (<= max_chunk_bytes), every CRC, the
 // final LEND and that nothing follows it. Errors name the chunk.
 StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
                                        std::uint64_t max_chunk_bytes);
@@ -46,7 +48,8 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
 // Builds a file: signature, version, the chunks in order, LEND.
 class ContainerWriter {
  public:
-  ContainerWriter();
+  // A file of version major.minor (default: the newest).
+  explicit ContainerWriter(std::uint8_t major = kFormatMajor, std::uint8_t minor = kFormatMinor);
   void AddChunk(const std::string& type, const std::vector<std::uint8_t>& payload);
   // Appends LEND and returns the file.
   std::vector<std::uint8_t> Finish();

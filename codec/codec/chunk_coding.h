@@ -14,7 +14,7 @@
 
 namespace linemap {
 
-// Chunk types, in their required order in a file.
+// Chunk types (the order a file must keep is in the decoders).
 inline constexpr char kHeaderChunk[] = "LMHD";
 inline constexpr char kRoomChunk[] = "ROOM";
 inline constexpr char kFreeChunk[] = "FREE";
@@ -23,6 +23,11 @@ inline constexpr char kBlobChunk[] = "BLOB";
 inline constexpr char kOccupiedChunk[] = "OCCP";
 inline constexpr char kResidualChunk[] = "RESD";
 inline constexpr char kMetadataChunk[] = "meta";
+// Version 2.x: the vector layers, then the tiled cells (ROOM keeps its
+// type with a 2.0 body).
+inline constexpr char kWallChunk[] = "WALL";
+inline constexpr char kFurnitureChunk[] = "FURN";
+inline constexpr char kCellChunk[] = "CELL";
 
 // Payload coders (the first byte of every payload but LMHD's).
 enum class PayloadCoder : std::uint8_t { kRaw = 0, kDeflate = 1, kDraco = 2 };

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/decoder_v2.h"
 #include "codec/codec/draco_segments.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/raster.h"
@@ -42,8 +43,7 @@ class Decoder {
  public:
   Decoder(const DecodeLimits& limits, LmapContents* out) : limits_(limits), out_(out) {}
 
-  Status Run(const std::vector<std::uint8_t>& bytes) {
-    LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits_.max_chunk_bytes));
+  Status Run(const ContainerView& view) {
     out_->major = view.major;
     out_->minor = view.minor;
     if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
@@ -145,10 +145,68 @@ bool LooksLikeLmap(const std::vector<std::uint8_t>& bytes) {
 
 StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes,
                                           const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits.max_chunk_bytes));
   LmapContents contents;
-  Decoder decoder(limits, &contents);
-  LINEMAP_RETURN_IF_ERROR(decoder.Run(bytes));
+  if (view.major == 1) {
+    Decoder decoder(limits, &contents);
+    LINEMAP_RETURN_IF_ERROR(decoder.Run(view));
+  } else {
+    contents.major = view.major;
+    contents.minor = view.minor;
+    LINEMAP_RETURN_IF_ERROR(DecodeV2Contents(view, limits, &contents));
+  }
   return contents;
+}
+
+namespace {
+
+Status CheckWindow(const CellWindow& w, int width, int height) {
+  if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height || w.col0 >= w.col1 ||
+      w.row0 >= w.row1) {
+    return InvalidArgumentError(
+        "window [" + std::to_string(w.col0) + ", " + std::to_string(w.col1) + ") x [" +
+        std::to_string(w.row0) + ", " + std::to_string(w.row1) +
+        ") is empty or not inside the map's " + std::to_string(width) + " x " +
+        std::to_string(height) + " cells");
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+StatusOr<Grid> DecodeLmapRegion(const std::vector<std::uint8_t>& bytes, const CellWindow& window,
+                                const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits.max_chunk_bytes));
+  if (view.major == 1) {
+    LmapContents contents;
+    Decoder decoder(limits, &contents);
+    LINEMAP_RETURN_IF_ERROR(decoder.Run(view));
+    const Grid& full = contents.grid;
+    LINEMAP_RETURN_IF_ERROR(CheckWindow(window, full.width(), full.height()));
+    Grid out = WindowGrid(full.meta, window);
+    for (int r = window.row0; r < window.row1; ++r) {
+      for (int c = window.col0; c < window.col1; ++c) {
+        out.set(c - window.col0, r - window.row0, full.at(c, r));
+      }
+    }
+    return out;
+  }
+  if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
+    return CorruptError("the first chunk is not LMHD");
+  }
+  StatusOr<HeaderFields> header = ReadHeader(view.chunks[0].payload, view.chunks[0].size, limits);
+  if (!header.ok()) return header.status().WithContext("chunk LMHD");
+  LINEMAP_RETURN_IF_ERROR(CheckWindow(window, header->width, header->height));
+  return DecodeV2Region(view, window, limits);
+}
+
+StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,
+                              const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, limits.max_file_bytes));
+  StatusOr<Grid> grid = DecodeLmapRegion(bytes, window, limits);
+  if (!grid.ok()) return grid.status().WithContext("'" + path + "'");
+  return grid;
 }
 
 StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits) {

@@ -2,6 +2,8 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/decoder_v2.h"
+#include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/lmap_vectors.h"
 
@@ -27,6 +29,21 @@ void LmapVectors::ToWorld(const CellIndex& p, double* x, double* y) const {
 
 StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
                                         const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits.max_chunk_bytes));
+  if (view.major >= 2) {
+    // The layers come before CELL and are read without touching it.
+    LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, false));
+    LmapVectors v;
+    v.major = view.major;
+    v.minor = view.minor;
+    v.width = file.header.width;
+    v.height = file.header.height;
+    v.meta = file.header.meta;
+    v.walls = std::move(file.walls);
+    v.rooms = std::move(file.rooms);
+    v.furniture = std::move(file.furniture);
+    return v;
+  }
   // Version 1.0 files keep their layers between raster chunks, so they are
   // read with the raster; each 1.0 segment is a two-point wall.
   LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(bytes, limits));
@@ -42,7 +59,7 @@ StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
                        contents.room_chains[i]});
   }
   for (std::size_t i = 0; i < contents.blob_outlines.size(); ++i) {
-    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i], {}});
+    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i]});
   }
   return v;
 }

@@ -2,11 +2,11 @@
 // format of spec/format.md and decode it back, bit-exactly and without
 // floating point in the decoding path.
 //
-// Lossy mode (default) stores wall segments (where they pay), the occupied
-// cells the segments miss and the free-space plane, with room-border chains
-// on request (furniture blobs are defined by the format, not yet written);
-// obstacles stay within one cell and free space is kept. Lossless mode
-// decodes to the input cell for cell.
+// A 2.0 file (the default) decodes to the input cell for cell and carries
+// the map's vector layers: walls as polylines, one border chain per room,
+// furniture outlines; the cells are coded in tiles against what the layers
+// draw. The former lossy mode writes 1.0 files (EncodeOptions::format_v1);
+// 1.0 files keep decoding.
 #ifndef LINEMAP_CODEC_H_
 #define LINEMAP_CODEC_H_
 
@@ -20,6 +20,7 @@
 #include "linemap/lines.h"
 #include "linemap/segmentation.h"
 #include "linemap/status.h"
+#include "linemap/vector_layers.h"
 
 namespace linemap {
 
@@ -39,7 +40,16 @@ struct EncodeOptions {
   // Store the vector layers (walls, rooms, furniture) besides the cells
   // (default true); false writes the smallest exact file, cells only.
   bool vector_layers = true;
-  bool lossless = false;
+  // Side of the square tiles the cells are coded in (cells, 16..65536;
+  // default 1024): each tile decodes on its own, so a window decodes only
+  // the tiles it meets, and tiles are coded on several threads. Smaller
+  // tiles make windows cheaper and files a little larger.
+  int tile_size_cells = 1024;
+  // Write a version 1.0 file with the 1.0 encoder instead (lossy unless
+  // `lossless`): the former lossy mode, kept until the tolerance mode
+  // replaces it. The fields below marked "1.0" apply only to it.
+  bool format_v1 = false;
+  bool lossless = false;  // 1.0
   LosslessMethod lossless_method = LosslessMethod::kExactLayers;
   // Store the extractor's wall segments (SEGS). Segments shorter than
   // min_segment_cells (cells along the longer axis; default 16) are left to
@@ -58,12 +68,11 @@ struct EncodeOptions {
   // (wall segments never cover a free cell either), and plans on it match
   // the original's.
   bool simplify_free_space = false;
-  // Lossy mode codes the exact file and, per tuning tried, a file with and
-  // one without segments, and keeps one; lossless mode a file with and one
-  // without segments. With 2 these are coded two at a time (the calling
-  // thread and one more), with 1 all on the calling thread. The bytes are
-  // the same either way. Default 2.
-  int max_threads = 2;
+  // Threads the encoder may use (the calling one included); 0 = one per
+  // core (the default). 2.0 files code their tiles in parallel and extract
+  // the walls beside the rooms; the 1.0 lossy mode codes two candidate
+  // files at a time. The bytes are the same for any number.
+  int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
   // linemap extractor tolerance in cells (default 1.0); see lines.h.
@@ -87,6 +96,9 @@ struct DecodeLimits {
   std::uint64_t max_inflated_bytes = std::uint64_t{1} << 28;  // one inflated payload
   std::uint64_t max_segments = std::uint64_t{1} << 24;        // per chunk
   std::uint64_t max_chain_length = std::uint64_t{1} << 26;    // cells per chain, and in total
+  // Threads the decoder may use for the tiles of a 2.0 file (the calling
+  // one included); 0 = one per core. The result is the same for any number.
+  int max_threads = 0;
 };
 
 // An integer-lattice segment between two cell centres (the stored form).
@@ -108,6 +120,11 @@ struct LmapContents {
   int minor = 0;
   bool lossless = false;
   Grid grid;  // the decoded grid, metadata included
+  // Version 2.x layers.
+  std::vector<WallPolyline> walls;
+  std::vector<RoomOutline> rooms;
+  std::vector<FurnitureObject> furniture;
+  // Version 1.0 layers.
   std::vector<LatticeSegment> segments;
   std::vector<std::vector<CellIndex>> room_chains;
   std::vector<std::vector<CellIndex>> blob_outlines;
@@ -119,6 +136,24 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
 StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {});
 StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes,
                                           const DecodeLimits& limits = {});
+
+// A window of cells [col0, col1) x [row0, row1) (grid rows, row 0 at the
+// origin).
+struct CellWindow {
+  int col0 = 0;
+  int row0 = 0;
+  int col1 = 0;
+  int row1 = 0;
+};
+
+// The cells of `window` (non-empty, inside the map; else invalid argument)
+// as a grid whose origin is the window's lower-left corner in the map frame.
+// A 2.0 file decodes only the tiles the window meets; a 1.0 file is decoded
+// whole and cropped.
+StatusOr<Grid> DecodeLmapRegion(const std::vector<std::uint8_t>& bytes, const CellWindow& window,
+                                const DecodeLimits& limits = {});
+StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,
+                              const DecodeLimits& limits = {});
 
 // save(): encodes, then writes atomically (temporary file, fsync, rename), so
 // a crash or a full disk never leaves a broken file where a good one was.

@@ -12,37 +12,12 @@
 #include <vector>
 
 #include "linemap/cells.h"
+#include "linemap/vector_layers.h"
 #include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
 
 namespace linemap {
-
-// A wall as a polyline through lattice points: consecutive points are the
-// ends of one straight segment; a closed wall repeats its first point last.
-struct WallPolyline {
-  std::vector<CellIndex> points;
-};
-
-enum class RoomKind : std::uint8_t { kUnspecified = 0, kRoom = 1, kCorridor = 2 };
-const char* RoomKindName(RoomKind kind);
-
-// One room: a closed 8-connected chain of border cells (each cell 8-adjacent
-// to the next, the last to the first) enclosing the room's free space.
-struct RoomOutline {
-  std::uint32_t id = 0;
-  RoomKind kind = RoomKind::kUnspecified;
-  std::vector<CellIndex> chain;
-};
-
-// One piece of furniture: its closed outline chain (8-connected) and, when
-// the file stores them, its exact cells.
-struct FurnitureObject {
-  std::uint32_t id = 0;
-  std::int32_t room_id = -1;  // the room it stands in, -1 when none is stored
-  std::vector<CellIndex> outline;
-  std::vector<CellIndex> cells;
-};
 
 struct LmapVectors {
   int major = 0;

@@ -1,5 +1,6 @@
-// linemap encode MAP -o OUT.lmap [--lossless | --simplify-free] [--method linemap|rmline]
-//                 [--epsilon E] [--pose X,Y[,YAW]] [--json]
+// linemap encode MAP -o OUT.lmap [--raster-only] [--tolerance 0] [--threads N]
+//                 [--lossy [--simplify-free]] [--method linemap|rmline] [--epsilon E]
+//                 [--pose X,Y[,YAW]] [--json]
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -19,17 +20,30 @@ namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
     "encode",
-    "MAP -o OUT.lmap [--lossless | --simplify-free] [--method linemap|rmline] [--epsilon E] "
-    "[--pose X,Y[,YAW]]",
-    "compress a map into an .lmap file",
-    "Prints the input cells, the output bytes, the ratio to the smallest PNG\n"
-    "(zlib level 9, grey or palette) of the same trinary map, and the time.\n"
+    "MAP -o OUT.lmap [--raster-only] [--threads N] [--lossy [--simplify-free]] "
+    "[--method linemap|rmline] [--epsilon E] [--pose X,Y[,YAW]]",
+    "save a map as an .lmap file (exact, with walls, rooms and furniture)",
+    "By default writes a version 2.0 file that decodes to the input cell for\n"
+    "cell and carries the vector layers: walls as polylines, one border chain\n"
+    "per room, furniture outlines. Prints the input cells, the output bytes,\n"
+    "the ratio to the smallest PNG (zlib level 9, grey or palette) of the same\n"
+    "trinary map, and the time.\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
     "map or the image its YAML names.",
     WithMapLoadOptions({
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
-        {"--lossless", "", "store a residual so the decoded grid equals the input exactly"},
+        {"--tolerance", "T",
+         "largest distance (cells) by which the decode may differ; only 0, exact (the "
+         "default), is implemented"},
+        {"--lossless", "", "the same as --tolerance 0 (the default)"},
+        {"--raster-only", "", "leave the vector layers out: the smallest exact file"},
+        {"--threads", "N", "threads to use (default 0: one per core); the bytes do not depend on it"},
+        {"--tile-size", "CELLS",
+         "side of the independently decodable tiles, 16..65536 (default 1024)"},
+        {"--lossy", "",
+         "write a version 1.0 file with the former lossy encoder (obstacles within one cell, "
+         "free space kept); replaced by --tolerance once it is implemented"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
         {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
         {"--pose", "X,Y[,YAW]",
@@ -38,11 +52,11 @@ const CommandSpec kEncodeSpec = {
         {"--time", "TEXT",
          "creation time stored as metadata (default: none, for reproducible output)"},
         {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
-        {"--rooms", "", "also store the room-border chains of the segmentation (ROOM)"},
-        {"--no-segments", "", "store no wall segments (SEGS); the planes code all walls"},
+        {"--rooms", "", "with --lossy: also store the room-border chains (ROOM)"},
+        {"--no-segments", "", "with --lossy: store no wall segments (SEGS)"},
         {"--simplify-free", "",
-         "lossy: also fill small unknown holes and smooth the free/unknown boundary "
-         "(smaller files; plans through narrow passages may change); not with --lossless"},
+         "with --lossy: also fill small unknown holes and smooth the free/unknown boundary "
+         "(smaller files; plans through narrow passages may change)"},
         {"--no-sync", "",
          "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
          "power cut right after may lose it"},
@@ -56,13 +70,33 @@ namespace {
 
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   EncodeOptions options;
-  options.lossless = args.Has("--lossless");
+  options.format_v1 = args.Has("--lossy");
+  for (const char* v1_only : {"--rooms", "--no-segments", "--simplify-free"}) {
+    if (args.Has(v1_only) && !options.format_v1) {
+      return InvalidArgumentError(std::string(v1_only) + " applies to --lossy files only");
+    }
+  }
+  if (options.format_v1 && (args.Has("--lossless") || args.Get("--tolerance"))) {
+    return InvalidArgumentError("--lossy writes a lossy file; --lossless / --tolerance 0 an exact "
+                                "one; give one of them");
+  }
   options.store_room_chains = args.Has("--rooms");
   if (args.Has("--no-segments")) options.store_segments = false;
   options.simplify_free_space = args.Has("--simplify-free");
-  if (options.lossless && options.simplify_free_space) {
-    return InvalidArgumentError(
-        "--simplify-free changes the map and --lossless keeps it exact; give one of them");
+  options.vector_layers = !args.Has("--raster-only");
+  LINEMAP_ASSIGN_OR_RETURN(options.tolerance_cells, args.GetInt("--tolerance", 0));
+  if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {
+    return InvalidArgumentError("--tolerance must be a whole number of cells from 0 to 4");
+  }
+  if (options.tolerance_cells != 0) {
+    return InvalidArgumentError("--tolerance " + std::to_string(options.tolerance_cells) +
+                                ": only 0 (exact) is implemented yet");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(options.max_threads, args.GetInt("--threads", 0));
+  if (options.max_threads < 0) return InvalidArgumentError("--threads must be 0 or more");
+  LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 1024));
+  if (options.tile_size_cells < 16 || options.tile_size_cells > 65536) {
+    return InvalidArgumentError("--tile-size must be 16..65536 cells");
   }
   if (std::optional<std::string> method = args.Get("--method")) {
     if (*method == "linemap") {
@@ -175,14 +209,17 @@ int RunEncode(const std::vector<std::string>& args) {
         .Add("bytes", std::uint64_t{bytes->size()})
         .Add("png_bytes", std::uint64_t{*png})
         .Add("ratio_to_png", ratio)
-        .Add("lossless", options->lossless)
+        .Add("exact", !options->format_v1)
+        .Add("vector_layers", !options->format_v1 && options->vector_layers)
         .Add("seconds", seconds);
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
-              options->lossless ? "lossless" : "lossy");
+              options->format_v1 ? "version 1.0, lossy"
+              : options->vector_layers ? "exact, with walls, rooms and furniture"
+                                       : "exact, cells only");
   std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
               ratio > 0 ? 1.0 / ratio : 0.0);
   std::printf("time:    %.3f s\n", seconds);

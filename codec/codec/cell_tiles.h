@@ -1,0 +1,52 @@
+// The CELL chunk of 2.0 files (spec/format.md section 6): the grid cut
+// into square tiles, each coded on its own by the tile coder against the
+// hints the vector layers draw into it, so that a window decodes only the
+// tiles it touches and tiles spread over threads.
+#ifndef LINEMAP_CODEC_CODEC_CELL_TILES_H_
+#define LINEMAP_CODEC_CODEC_CELL_TILES_H_
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "codec/codec/layer_hints.h"
+#include "codec/codec/tile_coder.h"
+#include "linemap/codec.h"
+#include "linemap/grid.h"
+#include "linemap/status.h"
+
+namespace linemap {
+
+// Tile sides a file may use (cells).
+inline constexpr int kMinTileSize = 16;
+inline constexpr int kMaxTileSize = 1 << 16;
+
+struct TileLayout {
+  int width = 0;
+  int height = 0;
+  int tile_size = 0;
+  int tiles_x = 0;  // ceil(width / tile_size)
+  int tiles_y = 0;
+
+  TileLayout(int width, int height, int tile_size);
+  std::uint64_t count() const { return std::uint64_t{static_cast<std::uint64_t>(tiles_x)} * tiles_y; }
+  // Tile i in raster order of tiles (row 0 at the origin), clipped to the grid.
+  CellRect Tile(std::uint64_t i) const;
+};
+
+// Runs body(i) for i in [0, n) on up to `threads` threads (the calling one
+// included); 0 = the machine's cores.
+void ForEachIndexParallel(std::uint64_t n, int threads,
+                          const std::function<void(std::uint64_t)>& body);
+
+std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers,
+                                          int tile_size, int threads);
+
+// Decodes the tiles that meet `window` (inside the grid, non-empty) into
+// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.
+Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
+                       int height, CellRect window, int threads, Cell* out);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_CODEC_CELL_TILES_H_

@@ -1,0 +1,143 @@
+// 2.x files: LMHD, then WALL, ROOM, FURN, CELL (each optional, at most once,
+// in this order), meta and unknown ancillary chunks anywhere after LMHD.
+#include "codec/codec/decoder_v2.h"
+
+#include <cmath>
+
+#include "codec/codec/cell_tiles.h"
+#include "codec/codec/layer_coding.h"
+#include "codec/codec/layer_hints.h"
+
+namespace linemap {
+namespace {
+
+constexpr const char* kV2CriticalOrder[] = {kWallChunk, kRoomChunk, kFurnitureChunk, kCellChunk};
+
+int V2Rank(const std::string& type) {
+  for (int i = 0; i < 4; ++i) {
+    if (type == kV2CriticalOrder[i]) return i;
+  }
+  return -1;
+}
+
+// One chunk after LMHD into `file`.
+Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cells, int* last_rank,
+                   V2File* file) {
+  if (chunk.type == kHeaderChunk) return CorruptError("a second LMHD chunk");
+  const int rank = V2Rank(chunk.type);
+  if (rank < 0 && chunk.type != kMetadataChunk) {
+    if (chunk.critical()) return UnsupportedError("unknown critical chunk");
+    file->chunks.push_back({chunk.type, chunk.size, "skipped"});
+    return Status::Ok();
+  }
+  if (rank >= 0) {
+    if (rank <= *last_rank) return CorruptError("chunk out of order or repeated");
+    *last_rank = rank;
+  }
+  if (chunk.type == kCellChunk && !read_cells) {
+    file->has_cells = true;
+    file->chunks.push_back({chunk.type, chunk.size, "tiles"});
+    return Status::Ok();
+  }
+  PayloadCoder coder = PayloadCoder::kRaw;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> body,
+                           UnwrapPayload(chunk.payload, chunk.size, limits, &coder));
+  if (coder == PayloadCoder::kDraco) return CorruptError("the Draco payload coder is for SEGS only");
+  const bool range = rank >= 0 && chunk.type != kCellChunk;
+  file->chunks.push_back({chunk.type, chunk.size,
+                          chunk.type == kCellChunk ? "tiles"
+                          : range ? (coder == PayloadCoder::kRaw ? "range" : "range+deflate")
+                                  : (coder == PayloadCoder::kRaw ? "raw" : "deflate")});
+  const int w = file->header.width;
+  const int h = file->header.height;
+  if (chunk.type == kMetadataChunk) {
+    LINEMAP_ASSIGN_OR_RETURN(file->metadata, ReadMetadata(body));
+  } else if (chunk.type == kWallChunk) {
+    LINEMAP_ASSIGN_OR_RETURN(file->walls, DecodeWalls(body, w, h, limits));
+  } else if (chunk.type == kRoomChunk) {
+    LINEMAP_ASSIGN_OR_RETURN(file->rooms, DecodeRooms(body, w, h, limits));
+  } else if (chunk.type == kFurnitureChunk) {
+    LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits));
+  } else {
+    file->has_cells = true;
+    file->cell_body = std::move(body);
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits,
+                            bool read_cells) {
+  if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
+    return CorruptError("the first chunk is not LMHD");
+  }
+  V2File file;
+  const Chunk& head = view.chunks[0];
+  StatusOr<HeaderFields> header = ReadHeader(head.payload, head.size, limits);
+  if (!header.ok()) return header.status().WithContext("chunk LMHD");
+  file.header = *header;
+  file.chunks.push_back({head.type, head.size, "header"});
+  int last_rank = -1;
+  for (std::size_t i = 1; i < view.chunks.size(); ++i) {
+    const Status status = ReadV2Chunk(view.chunks[i], limits, read_cells, &last_rank, &file);
+    if (!status.ok()) return status.WithContext("chunk " + view.chunks[i].type);
+  }
+  return file;
+}
+
+Grid WindowGrid(const MapMetadata& meta, const CellWindow& window) {
+  Grid grid(window.col1 - window.col0, window.row1 - window.row0, Cell::kUnknown);
+  grid.meta = meta;
+  // The window's lower-left corner: the map origin moved by (col0, row0)
+  // cells along the map's rotated axes.
+  const double dx = window.col0 * meta.resolution;
+  const double dy = window.row0 * meta.resolution;
+  const double c = std::cos(meta.origin.yaw), s = std::sin(meta.origin.yaw);
+  grid.meta.origin.x = meta.origin.x + c * dx - s * dy;
+  grid.meta.origin.y = meta.origin.y + s * dx + c * dy;
+  return grid;
+}
+
+namespace {
+
+Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLimits& limits,
+                   Grid* out) {
+  if (!file.has_cells) return Status::Ok();  // no CELL chunk: all unknown
+  const LayerIndex index(file.walls, file.rooms, file.furniture);
+  const CellRect rect{window.col0, window.row0, window.col1, window.row1};
+  const Status status = DecodeCellChunk(file.cell_body, index, file.header.width,
+                                        file.header.height, rect, limits.max_threads,
+                                        out->mutable_cells().data());
+  return status.ok() ? status : status.WithContext("chunk CELL");
+}
+
+}  // namespace
+
+Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out) {
+  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true));
+  const HeaderFields& h = file.header;
+  out->grid = Grid(h.width, h.height, Cell::kUnknown);
+  out->grid.meta = h.meta;
+  out->lossless = h.lossless;
+  if (h.width > 0 && h.height > 0) {
+    LINEMAP_RETURN_IF_ERROR(DecodeCells(file, CellWindow{0, 0, h.width, h.height}, limits,
+                                        &out->grid));
+  }
+  out->walls = std::move(file.walls);
+  out->rooms = std::move(file.rooms);
+  out->furniture = std::move(file.furniture);
+  out->metadata = std::move(file.metadata);
+  out->chunks = std::move(file.chunks);
+  return Status::Ok();
+}
+
+StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& window,
+                              const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true));
+  Grid grid = WindowGrid(file.header.meta, window);
+  LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
+  return grid;
+}
+
+}  // namespace linemap

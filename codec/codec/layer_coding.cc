@@ -1,0 +1,382 @@
+// WALL, ROOM and FURN bodies (spec/format.md sections 5.2-5.4).
+#include "codec/codec/layer_coding.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "codec/codec/int_coding.h"
+#include "format/byte_io.h"
+#include "format/range_coder.h"
+
+namespace linemap {
+namespace {
+
+// Axis directions of a wall step: +col, +row, -col, -row.
+constexpr int kAxisCol[4] = {1, 0, -1, 0};
+constexpr int kAxisRow[4] = {0, 1, 0, -1};
+// Chain directions (spec section 4.4's table), 0 = +col, counter-clockwise.
+constexpr int kChainCol[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+constexpr int kChainRow[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+
+int ChainDirection(CellIndex p, CellIndex q) {
+  for (int d = 0; d < 8; ++d) {
+    if (q.col - p.col == kChainCol[d] && q.row - p.row == kChainRow[d]) return d;
+  }
+  return -1;
+}
+
+bool Inside(CellIndex p, int width, int height) {
+  return p.col >= 0 && p.row >= 0 && p.col < width && p.row < height;
+}
+
+// The range-coded part of a body starts after the count; it must be read to
+// its last byte (the encoder drops the implied zero tail).
+Status CheckEnd(const RangeDecoder& dec, std::size_t size, const char* layer) {
+  if (!dec.valid_start() || dec.consumed() != size) {
+    return CorruptError(std::string(layer) + " range-coded data is malformed or truncated");
+  }
+  return Status::Ok();
+}
+
+std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc) {
+  ByteWriter out;
+  out.PutVarint(count);
+  out.PutBytes(enc.bytes());
+  return std::move(out.mutable_bytes());
+}
+
+// ---- walls ----
+
+struct WallModels {
+  UIntModel points;      // K - 2
+  UIntModel start_drow;  // rows below the previous start
+  UIntModel start_dcol;  // columns right of the previous start (same row)
+  UIntModel start_col;   // absolute column (new row)
+  BitModel axis[3];      // by the previous step: first, axis, diagonal
+  SymbolModel<2> dir[5];  // by the previous axis direction, 4 = none
+  UIntModel axis_len[2];  // length - 1; first step, later steps
+  UIntModel diag[2];      // dcol, drow of a diagonal step
+};
+
+void EncodeWall(RangeEncoder* enc, WallModels* m, const WallPolyline& wall, CellIndex* prev) {
+  const std::vector<CellIndex>& p = wall.points;
+  EncodeUInt(enc, &m->points, p.size() - 2);
+  const CellIndex s = p[0];
+  EncodeUInt(enc, &m->start_drow, static_cast<std::uint64_t>(s.row - prev->row));
+  if (s.row == prev->row) {
+    EncodeUInt(enc, &m->start_dcol, static_cast<std::uint64_t>(s.col - prev->col));
+  } else {
+    EncodeUInt(enc, &m->start_col, static_cast<std::uint64_t>(s.col));
+  }
+  *prev = s;
+  int kind = 0;      // 0 first step, 1 axis, 2 diagonal
+  int last_dir = 4;  // previous axis direction, 4 = none
+  for (std::size_t i = 1; i < p.size(); ++i) {
+    const int dc = p[i].col - p[i - 1].col;
+    const int dr = p[i].row - p[i - 1].row;
+    const bool axis = dc == 0 || dr == 0;
+    enc->Encode(&m->axis[kind], axis ? 1 : 0);
+    if (axis) {
+      const int dir = dc > 0 ? 0 : dr > 0 ? 1 : dc < 0 ? 2 : 3;
+      const unsigned symbol = last_dir == 4 ? dir : (dir - last_dir) & 3;
+      EncodeSymbol<2>(enc, &m->dir[last_dir], symbol);
+      EncodeUInt(enc, &m->axis_len[kind == 0 ? 0 : 1], std::abs(dc) + std::abs(dr) - 1);
+      last_dir = dir;
+      kind = 1;
+    } else {
+      EncodeSInt(enc, &m->diag[0], dc);
+      EncodeSInt(enc, &m->diag[1], dr);
+      last_dir = 4;
+      kind = 2;
+    }
+  }
+}
+
+}  // namespace
+
+void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
+  std::vector<WallPolyline> kept;
+  for (WallPolyline& wall : *walls) {
+    std::vector<CellIndex> points;
+    for (const CellIndex& q : wall.points) {
+      if (points.empty() || !(points.back() == q)) points.push_back(q);
+    }
+    if (points.size() < 2) continue;
+    const auto key = [](CellIndex c) { return std::make_tuple(c.row, c.col); };
+    if (key(points.back()) < key(points.front())) std::reverse(points.begin(), points.end());
+    kept.push_back({std::move(points)});
+  }
+  std::sort(kept.begin(), kept.end(), [](const WallPolyline& a, const WallPolyline& b) {
+    const auto ka = std::make_tuple(a.points[0].row, a.points[0].col, a.points.size());
+    const auto kb = std::make_tuple(b.points[0].row, b.points[0].col, b.points.size());
+    if (ka != kb) return ka < kb;
+    return std::lexicographical_compare(
+        a.points.begin(), a.points.end(), b.points.begin(), b.points.end(),
+        [](CellIndex x, CellIndex y) { return std::tie(x.row, x.col) < std::tie(y.row, y.col); });
+  });
+  *walls = std::move(kept);
+}
+
+std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
+  RangeEncoder enc;
+  auto m = std::make_unique<WallModels>();
+  CellIndex prev{0, 0};
+  for (const WallPolyline& wall : walls) EncodeWall(&enc, m.get(), wall, &prev);
+  enc.Finish();
+  return WithCount(walls.size(), enc);
+}
+
+StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
+                                                int height, const DecodeLimits& limits) {
+  ByteCursor cursor(body);
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("wall count"));
+  if (count > limits.max_segments) {
+    return ResourceExhaustedError(std::to_string(count) + " walls exceed the segment limit");
+  }
+  const std::uint8_t* data = body.data() + cursor.position();
+  const std::size_t size = cursor.remaining();
+  RangeDecoder dec(data, size);
+  auto m = std::make_unique<WallModels>();
+  std::vector<WallPolyline> walls;
+  std::uint64_t segments = 0;
+  CellIndex prev{0, 0};
+  const Status corrupt = CorruptError("wall out of the grid or malformed");
+  for (std::uint64_t w = 0; w < count; ++w) {
+    std::uint64_t k = 0, drow = 0, col = 0;
+    if (!DecodeUInt(&dec, &m->points, &k)) return corrupt;
+    segments += k + 1;
+    if (k + 1 > limits.max_segments || segments > limits.max_segments) {
+      return ResourceExhaustedError("wall segments exceed the segment limit");
+    }
+    if (!DecodeUInt(&dec, &m->start_drow, &drow) || drow >= static_cast<std::uint64_t>(height)) {
+      return corrupt;
+    }
+    const bool same_row = drow == 0;
+    if (!DecodeUInt(&dec, same_row ? &m->start_dcol : &m->start_col, &col) ||
+        col >= static_cast<std::uint64_t>(width)) {
+      return corrupt;
+    }
+    CellIndex p{static_cast<int>(col) + (same_row ? prev.col : 0),
+                prev.row + static_cast<int>(drow)};
+    if (!Inside(p, width, height)) return corrupt;
+    prev = p;
+    WallPolyline wall;
+    wall.points.push_back(p);
+    int kind = 0, last_dir = 4;
+    for (std::uint64_t i = 0; i <= k; ++i) {
+      std::int64_t dc = 0, dr = 0;
+      if (dec.Decode(&m->axis[kind]) == 1) {
+        const unsigned symbol = DecodeSymbol<2>(&dec, &m->dir[last_dir]);
+        const int dir = last_dir == 4 ? static_cast<int>(symbol)
+                                      : static_cast<int>((symbol + last_dir) & 3);
+        std::uint64_t len = 0;
+        if (!DecodeUInt(&dec, &m->axis_len[kind == 0 ? 0 : 1], &len) ||
+            len >= static_cast<std::uint64_t>(std::max(width, height))) {
+          return corrupt;
+        }
+        dc = kAxisCol[dir] * static_cast<std::int64_t>(len + 1);
+        dr = kAxisRow[dir] * static_cast<std::int64_t>(len + 1);
+        last_dir = dir;
+        kind = 1;
+      } else {
+        if (!DecodeSInt(&dec, &m->diag[0], &dc) || !DecodeSInt(&dec, &m->diag[1], &dr) ||
+            dc == 0 || dr == 0 || std::llabs(dc) >= width || std::llabs(dr) >= height) {
+          return corrupt;
+        }
+        last_dir = 4;
+        kind = 2;
+      }
+      const std::int64_t c = p.col + dc;
+      const std::int64_t r = p.row + dr;
+      if (c < 0 || r < 0 || c >= width || r >= height) return corrupt;
+      p = {static_cast<int>(c), static_cast<int>(r)};
+      wall.points.push_back(p);
+    }
+    walls.push_back(std::move(wall));
+  }
+  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "WALL"));
+  return walls;
+}
+
+// ---- chains (rooms and furniture) ----
+
+bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height) {
+  if (chain.empty()) return false;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    if (!Inside(chain[i], width, height)) return false;
+    if (i + 1 < chain.size() && ChainDirection(chain[i], chain[i + 1]) < 0) return false;
+  }
+  const int dc = std::abs(chain.back().col - chain.front().col);
+  const int dr = std::abs(chain.back().row - chain.front().row);
+  return dc <= 1 && dr <= 1;
+}
+
+namespace {
+
+struct ChainModels {
+  UIntModel length;  // L - 1
+  UIntModel row;
+  UIntModel col;
+  SymbolModel<3> first_dir;
+  SymbolModel<3> turn[8];  // by the previous turn
+};
+
+void EncodeChain(RangeEncoder* enc, ChainModels* m, const std::vector<CellIndex>& chain) {
+  EncodeUInt(enc, &m->length, chain.size() - 1);
+  EncodeUInt(enc, &m->row, static_cast<std::uint64_t>(chain[0].row));
+  EncodeUInt(enc, &m->col, static_cast<std::uint64_t>(chain[0].col));
+  int prev_dir = -1, prev_turn = 0;
+  for (std::size_t i = 1; i < chain.size(); ++i) {
+    const int d = ChainDirection(chain[i - 1], chain[i]);
+    if (prev_dir < 0) {
+      EncodeSymbol<3>(enc, &m->first_dir, static_cast<unsigned>(d));
+    } else {
+      const int turn = (d - prev_dir) & 7;
+      EncodeSymbol<3>(enc, &m->turn[prev_turn], static_cast<unsigned>(turn));
+      prev_turn = turn;
+    }
+    prev_dir = d;
+  }
+}
+
+// Decodes one chain; `cells` counts chain cells against the chain limit.
+StatusOr<std::vector<CellIndex>> DecodeChain(RangeDecoder* dec, ChainModels* m, int width,
+                                             int height, const DecodeLimits& limits,
+                                             std::uint64_t* cells) {
+  const Status corrupt = CorruptError("chain out of the grid, not closed, or malformed");
+  std::uint64_t len = 0, row = 0, col = 0;
+  if (!DecodeUInt(dec, &m->length, &len)) return corrupt;
+  *cells += len + 1;
+  if (len + 1 > limits.max_chain_length || *cells > limits.max_chain_length) {
+    return ResourceExhaustedError("chain cells exceed the chain limit");
+  }
+  if (!DecodeUInt(dec, &m->row, &row) || !DecodeUInt(dec, &m->col, &col) ||
+      row >= static_cast<std::uint64_t>(height) || col >= static_cast<std::uint64_t>(width)) {
+    return corrupt;
+  }
+  std::vector<CellIndex> chain;
+  CellIndex p{static_cast<int>(col), static_cast<int>(row)};
+  chain.push_back(p);
+  int prev_dir = -1, prev_turn = 0;
+  for (std::uint64_t i = 0; i < len; ++i) {
+    int d = 0;
+    if (prev_dir < 0) {
+      d = static_cast<int>(DecodeSymbol<3>(dec, &m->first_dir));
+    } else {
+      const int turn = static_cast<int>(DecodeSymbol<3>(dec, &m->turn[prev_turn]));
+      d = (prev_dir + turn) & 7;
+      prev_turn = turn;
+    }
+    prev_dir = d;
+    p = {p.col + kChainCol[d], p.row + kChainRow[d]};
+    if (!Inside(p, width, height)) return corrupt;
+    chain.push_back(p);
+  }
+  if (std::abs(p.col - chain[0].col) > 1 || std::abs(p.row - chain[0].row) > 1) return corrupt;
+  return chain;
+}
+
+struct RoomModels {
+  UIntModel id_gap;  // id - previous id - 1 (previous -1 before the first)
+  SymbolModel<2> kind;
+  ChainModels chain;
+};
+
+struct FurnitureModels {
+  UIntModel room;  // room id + 1 (0: none)
+  ChainModels chain;
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
+  RangeEncoder enc;
+  auto m = std::make_unique<RoomModels>();
+  std::int64_t prev_id = -1;
+  for (const RoomOutline& room : rooms) {
+    EncodeUInt(&enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
+    prev_id = room.id;
+    EncodeSymbol<2>(&enc, &m->kind, static_cast<unsigned>(room.kind));
+    EncodeChain(&enc, &m->chain, room.chain);
+  }
+  enc.Finish();
+  return WithCount(rooms.size(), enc);
+}
+
+StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
+                                               int height, const DecodeLimits& limits) {
+  ByteCursor cursor(body);
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("room count"));
+  if (count > limits.max_chain_length) {
+    return ResourceExhaustedError(std::to_string(count) + " rooms exceed the chain limit");
+  }
+  const std::size_t size = cursor.remaining();
+  RangeDecoder dec(body.data() + cursor.position(), size);
+  auto m = std::make_unique<RoomModels>();
+  std::vector<RoomOutline> rooms;
+  std::uint64_t cells = 0;
+  std::int64_t prev_id = -1;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint64_t gap = 0;
+    if (!DecodeUInt(&dec, &m->id_gap, &gap) || gap > 0xFFFFFFFFu ||
+        prev_id + 1 + static_cast<std::int64_t>(gap) > 0xFFFFFFFF) {
+      return CorruptError("room id above 2^32 - 1");
+    }
+    RoomOutline room;
+    room.id = static_cast<std::uint32_t>(prev_id + 1 + static_cast<std::int64_t>(gap));
+    prev_id = room.id;
+    const unsigned kind = DecodeSymbol<2>(&dec, &m->kind);
+    if (kind > 2) return CorruptError("room kind 3 is reserved");
+    room.kind = static_cast<RoomKind>(kind);
+    LINEMAP_ASSIGN_OR_RETURN(room.chain,
+                             DecodeChain(&dec, &m->chain, width, height, limits, &cells));
+    rooms.push_back(std::move(room));
+  }
+  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "ROOM"));
+  return rooms;
+}
+
+std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
+  RangeEncoder enc;
+  auto m = std::make_unique<FurnitureModels>();
+  for (const FurnitureObject& object : furniture) {
+    EncodeUInt(&enc, &m->room, static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1));
+    EncodeChain(&enc, &m->chain, object.outline);
+  }
+  enc.Finish();
+  return WithCount(furniture.size(), enc);
+}
+
+StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::uint8_t>& body,
+                                                       int width, int height,
+                                                       const DecodeLimits& limits) {
+  ByteCursor cursor(body);
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("furniture count"));
+  if (count > limits.max_chain_length) {
+    return ResourceExhaustedError(std::to_string(count) + " objects exceed the chain limit");
+  }
+  const std::size_t size = cursor.remaining();
+  RangeDecoder dec(body.data() + cursor.position(), size);
+  auto m = std::make_unique<FurnitureModels>();
+  std::vector<FurnitureObject> furniture;
+  std::uint64_t cells = 0;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint64_t room = 0;
+    if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
+      return CorruptError("furniture room id above 2^31 - 1");
+    }
+    FurnitureObject object;
+    object.id = static_cast<std::uint32_t>(i);
+    object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
+    LINEMAP_ASSIGN_OR_RETURN(object.outline,
+                             DecodeChain(&dec, &m->chain, width, height, limits, &cells));
+    furniture.push_back(std::move(object));
+  }
+  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "FURN"));
+  return furniture;
+}
+
+}  // namespace linemap

@@ -1,0 +1,47 @@
+// The bodies of the 2.0 vector-layer chunks WALL, ROOM and FURN
+// (spec/format.md sections 5.2-5.4): a varint count, then one range-coded
+// stream with adaptive integer models (int_coding.h).
+#ifndef LINEMAP_CODEC_CODEC_LAYER_CODING_H_
+#define LINEMAP_CODEC_CODEC_LAYER_CODING_H_
+
+#include <cstdint>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/status.h"
+#include "linemap/vector_layers.h"
+
+namespace linemap {
+
+// Walls must be canonical (CanonicalizeWalls): inside the grid, at least two
+// points each, no zero-length step, sorted by first point (row, col).
+std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls);
+// Total points above limits.max_segments (plus one per polyline) is
+// resource exhausted; points outside the width x height grid are corrupt.
+StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
+                                                int height, const DecodeLimits& limits);
+
+// Orients each polyline to start at its smaller end (row, then column),
+// drops zero-length steps and polylines left with fewer than two points,
+// and sorts them by first point, then by length and points.
+void CanonicalizeWalls(std::vector<WallPolyline>* walls);
+
+// Rooms must have strictly increasing ids and storable chains (8-adjacent
+// steps, closed, inside the grid).
+std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms);
+StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
+                                               int height, const DecodeLimits& limits);
+
+// Furniture ids are their index in the list; room_id is -1 or a room's id.
+std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture);
+StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::uint8_t>& body,
+                                                       int width, int height,
+                                                       const DecodeLimits& limits);
+
+// True when consecutive cells (and the last and first) are 8-neighbours, not
+// equal, and all lie in the width x height grid.
+bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_CODEC_LAYER_CODING_H_

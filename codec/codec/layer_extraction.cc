@@ -1,0 +1,162 @@
+// Vector layers from a grid (codec/codec/layer_extraction.h).
+#include "codec/codec/layer_extraction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <future>
+#include <system_error>
+#include <unordered_map>
+
+#include "codec/codec/layer_coding.h"
+#include "linemap/segmentation.h"
+
+namespace linemap {
+namespace {
+
+std::optional<CellPoint> RobotCell(const Grid& grid, const EncodeOptions& options) {
+  if (!options.robot_pose) return std::nullopt;
+  CellPoint robot;
+  grid.WorldToCell(options.robot_pose->x, options.robot_pose->y, &robot.col, &robot.row);
+  if (!grid.Contains(static_cast<int>(std::nearbyint(robot.col)),
+                     static_cast<int>(std::nearbyint(robot.row)))) {
+    return std::nullopt;
+  }
+  return robot;
+}
+
+StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOptions& options) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
+  std::vector<LatticeSegment> segments;
+  segments.reserve(lines.size());
+  for (const LineSegment& line : lines) {
+    segments.push_back(ToLattice(line, grid.width(), grid.height()));
+  }
+  return JoinSegments(segments);
+}
+
+// Rooms and furniture from SegmentMap(); chains the file cannot store (an
+// open or broken chain) are left out rather than failing the save.
+Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
+                              VectorLayers* layers) {
+  SegmentationOptions seg_options;
+  seg_options.robot = RobotCell(grid, options);
+  LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
+  std::uint32_t id = 0;
+  for (RoomBorder& room : seg.rooms) {
+    if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;
+    layers->rooms.push_back({id++, RoomKind::kUnspecified, std::move(room.chain)});
+  }
+  for (FurnitureBlob& blob : seg.blobs) {
+    if (!IsStorableChain(blob.outline, grid.width(), grid.height())) continue;
+    layers->furniture.push_back(
+        {static_cast<std::uint32_t>(layers->furniture.size()), -1, std::move(blob.outline)});
+  }
+  return Status::Ok();
+}
+
+template <typename Task>
+auto StartTask(bool own_thread, Task task) {
+  if (own_thread) {
+    try {
+      return std::async(std::launch::async, task);
+    } catch (const std::system_error&) {
+      // No thread to be had: run it on the caller's.
+    }
+  }
+  return std::async(std::launch::deferred, task);
+}
+
+}  // namespace
+
+LatticeSegment ToLattice(const LineSegment& line, int width, int height) {
+  auto clamp = [](double v, int hi) {
+    const double r = std::nearbyint(v);
+    return static_cast<int>(std::clamp(r, 0.0, static_cast<double>(hi)));
+  };
+  return LatticeSegment{{clamp(line.x1, width - 1), clamp(line.y1, height - 1)},
+                        {clamp(line.x2, width - 1), clamp(line.y2, height - 1)}};
+}
+
+StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
+                                                    const EncodeOptions& options) {
+  if (grid.empty()) return std::vector<LineSegment>{};
+  // One segment per straight wall: the layer is the map's walls as lines
+  // (export, planning overlays), not the pixel steps the extractor's
+  // defaults follow for the paper's DisPL_ave.
+  LineExtractionOptions line_options = StraightWalls(LineExtractionOptions{});
+  line_options.method = options.method;
+  line_options.epsilon_cells = options.epsilon_cells;
+  line_options.robot = RobotCell(grid, options);
+  LINEMAP_ASSIGN_OR_RETURN(LineExtraction lines, ExtractLines(grid, line_options));
+  return std::move(lines.segments);
+}
+
+std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segments) {
+  const auto key = [](CellIndex c) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.row)) << 32) |
+           static_cast<std::uint32_t>(c.col);
+  };
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> at_end;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    at_end[key(segments[i].a)].push_back(i);
+    if (!(segments[i].a == segments[i].b)) at_end[key(segments[i].b)].push_back(i);
+  }
+  std::vector<bool> used(segments.size(), false);
+  // The other end of an unused segment at `p`, marking it used.
+  const auto next_from = [&](CellIndex p, CellIndex* out) {
+    for (std::size_t i : at_end[key(p)]) {
+      if (used[i]) continue;
+      used[i] = true;
+      *out = segments[i].a == p ? segments[i].b : segments[i].a;
+      return true;
+    }
+    return false;
+  };
+  std::vector<WallPolyline> walls;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (used[i]) continue;
+    used[i] = true;
+    std::vector<CellIndex> forward = {segments[i].a, segments[i].b};
+    CellIndex q;
+    while (next_from(forward.back(), &q)) forward.push_back(q);
+    std::vector<CellIndex> backward;
+    while (next_from(backward.empty() ? forward.front() : backward.back(), &q)) {
+      backward.push_back(q);
+    }
+    std::reverse(backward.begin(), backward.end());
+    backward.insert(backward.end(), forward.begin(), forward.end());
+    walls.push_back({std::move(backward)});
+  }
+  CanonicalizeWalls(&walls);
+  return walls;
+}
+
+StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options) {
+  VectorLayers layers;
+  if (grid.empty()) return layers;
+  auto walls_task =
+      StartTask(options.max_threads != 1, [&] { return WallLayer(grid, options); });
+  const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
+  StatusOr<std::vector<WallPolyline>> walls = walls_task.get();
+  LINEMAP_RETURN_IF_ERROR(rooms);
+  if (!walls.ok()) return walls.status();
+  layers.walls = std::move(*walls);
+  return layers;
+}
+
+std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions& options) {
+  std::vector<std::pair<std::string, std::string>> entries;
+  if (!options.creator.empty()) entries.emplace_back("creator", options.creator);
+  if (!options.time.empty()) entries.emplace_back("time", options.time);
+  if (!options.frame_id.empty()) entries.emplace_back("frame_id", options.frame_id);
+  if (options.robot_pose) {
+    char text[96];
+    std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", options.robot_pose->x,
+                  options.robot_pose->y, options.robot_pose->yaw);
+    entries.emplace_back("robot_pose", text);
+  }
+  return entries;
+}
+
+}  // namespace linemap

@@ -1,0 +1,44 @@
+// The encoder's side of the vector layers: walls from the line extractor
+// joined into polylines, rooms and furniture from the segmentation.
+#ifndef LINEMAP_CODEC_CODEC_LAYER_EXTRACTION_H_
+#define LINEMAP_CODEC_CODEC_LAYER_EXTRACTION_H_
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/lines.h"
+#include "linemap/vector_layers.h"
+
+namespace linemap {
+
+struct VectorLayers {
+  std::vector<WallPolyline> walls;
+  std::vector<RoomOutline> rooms;
+  std::vector<FurnitureObject> furniture;
+};
+
+// Walls, rooms and furniture of `grid`; the line extraction and the
+// segmentation run on two threads when options.max_threads >= 2.
+StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options);
+
+// The extractor's lines for the grid (StraightWalls(): one segment per
+// straight wall).
+StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid, const EncodeOptions& options);
+
+// Quantises an extracted line to the lattice: endpoints rounded to the
+// nearest cell centre and clamped into the map.
+LatticeSegment ToLattice(const LineSegment& line, int width, int height);
+
+// Segments that share an end joined into polylines (each segment used once;
+// at a junction of three or more the first unused segment continues the
+// polyline), canonical (CanonicalizeWalls).
+std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segments);
+
+// The `meta` entries of the options (creator, time, frame_id, robot_pose).
+std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions& options);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_CODEC_LAYER_EXTRACTION_H_

@@ -1,0 +1,51 @@
+// What the vector layers of a 2.0 file draw into one tile, as the hint
+// bytes the tile coder conditions on (spec/format.md section 6.2). Encoder
+// and decoder build the same hints from the same layers, tile by tile, so a
+// tile decodes without the rest of the map.
+#ifndef LINEMAP_CODEC_CODEC_LAYER_HINTS_H_
+#define LINEMAP_CODEC_CODEC_LAYER_HINTS_H_
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "codec/codec/tile_coder.h"
+#include "linemap/cells.h"
+#include "linemap/vector_layers.h"
+
+namespace linemap {
+
+// The layers with what each tile needs to find them quickly: segment and
+// chain boxes, and each chain's row crossings in (row, column) order.
+class LayerIndex {
+ public:
+  LayerIndex(const std::vector<WallPolyline>& walls, const std::vector<RoomOutline>& rooms,
+             const std::vector<FurnitureObject>& furniture);
+
+  // The hint bytes of `tile`, (x1 - x0) x (y1 - y0), row-major from y0.
+  std::vector<std::uint8_t> TileHints(CellRect tile) const;
+  bool empty() const { return segments_.empty() && chains_.empty(); }
+
+ private:
+  struct Segment {
+    CellIndex a, b;
+    BoundingBox box;
+  };
+  struct Chain {
+    const std::vector<CellIndex>* cells;
+    BoundingBox box;
+    std::vector<std::pair<int, int>> crossings;  // (row, column), sorted
+    std::uint8_t fill_bits;                      // set inside the fill
+    std::uint8_t chain_bits;                     // set on the chain's cells
+    std::uint8_t clear_on_chain;                 // cleared on the chain's cells
+  };
+  void AddChain(const std::vector<CellIndex>& cells, std::uint8_t fill_bits,
+                std::uint8_t chain_bits, std::uint8_t clear_on_chain);
+
+  std::vector<Segment> segments_;
+  std::vector<Chain> chains_;  // rooms first, then furniture (drawing order)
+};
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_CODEC_LAYER_HINTS_H_
