@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "codec/codec/int_coding.h"
+#include "codec/codec/layer_order.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
 
@@ -51,10 +52,8 @@ std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc
 // ---- walls ----
 
 struct WallModels {
-  UIntModel points;      // K - 2
-  UIntModel start_drow;  // rows below the previous start
-  UIntModel start_dcol;  // columns right of the previous start (same row)
-  UIntModel start_col;   // absolute column (new row)
+  UIntModel points;    // K - 2
+  UIntModel start[2];  // start - the previous wall's last point: dcol, drow
   BitModel axis[3];      // by the previous step: first, axis, diagonal
   SymbolModel<2> dir[5];  // by the previous axis direction, 4 = none
   UIntModel axis_len[2];  // length - 1; first step, later steps
@@ -64,14 +63,9 @@ struct WallModels {
 void EncodeWall(RangeEncoder* enc, WallModels* m, const WallPolyline& wall, CellIndex* prev) {
   const std::vector<CellIndex>& p = wall.points;
   EncodeUInt(enc, &m->points, p.size() - 2);
-  const CellIndex s = p[0];
-  EncodeUInt(enc, &m->start_drow, static_cast<std::uint64_t>(s.row - prev->row));
-  if (s.row == prev->row) {
-    EncodeUInt(enc, &m->start_dcol, static_cast<std::uint64_t>(s.col - prev->col));
-  } else {
-    EncodeUInt(enc, &m->start_col, static_cast<std::uint64_t>(s.col));
-  }
-  *prev = s;
+  EncodeSInt(enc, &m->start[0], p[0].col - prev->col);
+  EncodeSInt(enc, &m->start[1], p[0].row - prev->row);
+  *prev = p.back();
   int kind = 0;      // 0 first step, 1 axis, 2 diagonal
   int last_dir = 4;  // previous axis direction, 4 = none
   for (std::size_t i = 1; i < p.size(); ++i) {
@@ -104,20 +98,10 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
     for (const CellIndex& q : wall.points) {
       if (points.empty() || !(points.back() == q)) points.push_back(q);
     }
-    if (points.size() < 2) continue;
-    const auto key = [](CellIndex c) { return std::make_tuple(c.row, c.col); };
-    if (key(points.back()) < key(points.front())) std::reverse(points.begin(), points.end());
-    kept.push_back({std::move(points)});
+    if (points.size() >= 2) kept.push_back({std::move(points)});
   }
-  std::sort(kept.begin(), kept.end(), [](const WallPolyline& a, const WallPolyline& b) {
-    const auto ka = std::make_tuple(a.points[0].row, a.points[0].col, a.points.size());
-    const auto kb = std::make_tuple(b.points[0].row, b.points[0].col, b.points.size());
-    if (ka != kb) return ka < kb;
-    return std::lexicographical_compare(
-        a.points.begin(), a.points.end(), b.points.begin(), b.points.end(),
-        [](CellIndex x, CellIndex y) { return std::tie(x.row, x.col) < std::tie(y.row, y.col); });
-  });
   *walls = std::move(kept);
+  OrderWallsForCoding(walls);
 }
 
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
@@ -145,24 +129,19 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
   CellIndex prev{0, 0};
   const Status corrupt = CorruptError("wall out of the grid or malformed");
   for (std::uint64_t w = 0; w < count; ++w) {
-    std::uint64_t k = 0, drow = 0, col = 0;
+    std::uint64_t k = 0;
+    std::int64_t dcol = 0, drow = 0;
     if (!DecodeUInt(&dec, &m->points, &k)) return corrupt;
     segments += k + 1;
     if (k + 1 > limits.max_segments || segments > limits.max_segments) {
       return ResourceExhaustedError("wall segments exceed the segment limit");
     }
-    if (!DecodeUInt(&dec, &m->start_drow, &drow) || drow >= static_cast<std::uint64_t>(height)) {
+    if (!DecodeSInt(&dec, &m->start[0], &dcol) || !DecodeSInt(&dec, &m->start[1], &drow) ||
+        std::llabs(dcol) >= width || std::llabs(drow) >= height) {
       return corrupt;
     }
-    const bool same_row = drow == 0;
-    if (!DecodeUInt(&dec, same_row ? &m->start_dcol : &m->start_col, &col) ||
-        col >= static_cast<std::uint64_t>(width)) {
-      return corrupt;
-    }
-    CellIndex p{static_cast<int>(col) + (same_row ? prev.col : 0),
-                prev.row + static_cast<int>(drow)};
+    CellIndex p{prev.col + static_cast<int>(dcol), prev.row + static_cast<int>(drow)};
     if (!Inside(p, width, height)) return corrupt;
-    prev = p;
     WallPolyline wall;
     wall.points.push_back(p);
     int kind = 0, last_dir = 4;
@@ -195,6 +174,7 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
       p = {static_cast<int>(c), static_cast<int>(r)};
       wall.points.push_back(p);
     }
+    prev = p;
     walls.push_back(std::move(wall));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "WALL"));
@@ -217,17 +197,18 @@ bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height)
 namespace {
 
 struct ChainModels {
-  UIntModel length;  // L - 1
-  UIntModel row;
-  UIntModel col;
+  UIntModel length;    // L - 1
+  UIntModel start[2];  // start - the previous chain's start: dcol, drow
   SymbolModel<3> first_dir;
   SymbolModel<3> turn[8];  // by the previous turn
 };
 
-void EncodeChain(RangeEncoder* enc, ChainModels* m, const std::vector<CellIndex>& chain) {
+void EncodeChain(RangeEncoder* enc, ChainModels* m, const std::vector<CellIndex>& chain,
+                 CellIndex* prev_start) {
   EncodeUInt(enc, &m->length, chain.size() - 1);
-  EncodeUInt(enc, &m->row, static_cast<std::uint64_t>(chain[0].row));
-  EncodeUInt(enc, &m->col, static_cast<std::uint64_t>(chain[0].col));
+  EncodeSInt(enc, &m->start[0], chain[0].col - prev_start->col);
+  EncodeSInt(enc, &m->start[1], chain[0].row - prev_start->row);
+  *prev_start = chain[0];
   int prev_dir = -1, prev_turn = 0;
   for (std::size_t i = 1; i < chain.size(); ++i) {
     const int d = ChainDirection(chain[i - 1], chain[i]);
@@ -245,20 +226,23 @@ void EncodeChain(RangeEncoder* enc, ChainModels* m, const std::vector<CellIndex>
 // Decodes one chain; `cells` counts chain cells against the chain limit.
 StatusOr<std::vector<CellIndex>> DecodeChain(RangeDecoder* dec, ChainModels* m, int width,
                                              int height, const DecodeLimits& limits,
-                                             std::uint64_t* cells) {
+                                             std::uint64_t* cells, CellIndex* prev_start) {
   const Status corrupt = CorruptError("chain out of the grid, not closed, or malformed");
-  std::uint64_t len = 0, row = 0, col = 0;
+  std::uint64_t len = 0;
+  std::int64_t dcol = 0, drow = 0;
   if (!DecodeUInt(dec, &m->length, &len)) return corrupt;
   *cells += len + 1;
   if (len + 1 > limits.max_chain_length || *cells > limits.max_chain_length) {
     return ResourceExhaustedError("chain cells exceed the chain limit");
   }
-  if (!DecodeUInt(dec, &m->row, &row) || !DecodeUInt(dec, &m->col, &col) ||
-      row >= static_cast<std::uint64_t>(height) || col >= static_cast<std::uint64_t>(width)) {
+  if (!DecodeSInt(dec, &m->start[0], &dcol) || !DecodeSInt(dec, &m->start[1], &drow) ||
+      std::llabs(dcol) >= width || std::llabs(drow) >= height) {
     return corrupt;
   }
+  CellIndex p{prev_start->col + static_cast<int>(dcol), prev_start->row + static_cast<int>(drow)};
+  if (!Inside(p, width, height)) return corrupt;
+  *prev_start = p;
   std::vector<CellIndex> chain;
-  CellIndex p{static_cast<int>(col), static_cast<int>(row)};
   chain.push_back(p);
   int prev_dir = -1, prev_turn = 0;
   for (std::uint64_t i = 0; i < len; ++i) {
@@ -296,11 +280,12 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
   RangeEncoder enc;
   auto m = std::make_unique<RoomModels>();
   std::int64_t prev_id = -1;
+  CellIndex prev_start{0, 0};
   for (const RoomOutline& room : rooms) {
     EncodeUInt(&enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
     prev_id = room.id;
     EncodeSymbol<2>(&enc, &m->kind, static_cast<unsigned>(room.kind));
-    EncodeChain(&enc, &m->chain, room.chain);
+    EncodeChain(&enc, &m->chain, room.chain, &prev_start);
   }
   enc.Finish();
   return WithCount(rooms.size(), enc);
@@ -319,6 +304,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
   std::vector<RoomOutline> rooms;
   std::uint64_t cells = 0;
   std::int64_t prev_id = -1;
+  CellIndex prev_start{0, 0};
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t gap = 0;
     if (!DecodeUInt(&dec, &m->id_gap, &gap) || gap > 0xFFFFFFFFu ||
@@ -332,7 +318,8 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
     if (kind > 2) return CorruptError("room kind 3 is reserved");
     room.kind = static_cast<RoomKind>(kind);
     LINEMAP_ASSIGN_OR_RETURN(room.chain,
-                             DecodeChain(&dec, &m->chain, width, height, limits, &cells));
+                             DecodeChain(&dec, &m->chain, width, height, limits, &cells,
+                                         &prev_start));
     rooms.push_back(std::move(room));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "ROOM"));
@@ -342,9 +329,10 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
   RangeEncoder enc;
   auto m = std::make_unique<FurnitureModels>();
+  CellIndex prev_start{0, 0};
   for (const FurnitureObject& object : furniture) {
     EncodeUInt(&enc, &m->room, static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1));
-    EncodeChain(&enc, &m->chain, object.outline);
+    EncodeChain(&enc, &m->chain, object.outline, &prev_start);
   }
   enc.Finish();
   return WithCount(furniture.size(), enc);
@@ -363,6 +351,7 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
   auto m = std::make_unique<FurnitureModels>();
   std::vector<FurnitureObject> furniture;
   std::uint64_t cells = 0;
+  CellIndex prev_start{0, 0};
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t room = 0;
     if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
@@ -372,7 +361,8 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
     object.id = static_cast<std::uint32_t>(i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
     LINEMAP_ASSIGN_OR_RETURN(object.outline,
-                             DecodeChain(&dec, &m->chain, width, height, limits, &cells));
+                             DecodeChain(&dec, &m->chain, width, height, limits, &cells,
+                                         &prev_start));
     furniture.push_back(std::move(object));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "FURN"));

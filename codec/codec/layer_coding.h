@@ -14,16 +14,16 @@
 namespace linemap {
 
 // Walls must be canonical (CanonicalizeWalls): inside the grid, at least two
-// points each, no zero-length step, sorted by first point (row, col).
+// points each, no zero-length step; any order (CanonicalizeWalls picks the
+// cheap one).
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls);
 // Total points above limits.max_segments (plus one per polyline) is
 // resource exhausted; points outside the width x height grid are corrupt.
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
                                                 int height, const DecodeLimits& limits);
 
-// Orients each polyline to start at its smaller end (row, then column),
-// drops zero-length steps and polylines left with fewer than two points,
-// and sorts them by first point, then by length and points.
+// Drops zero-length steps and polylines left with fewer than two points,
+// then orders and orients the rest for coding (OrderWallsForCoding).
 void CanonicalizeWalls(std::vector<WallPolyline>* walls);
 
 // Rooms must have strictly increasing ids and storable chains (8-adjacent

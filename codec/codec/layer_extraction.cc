@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "codec/codec/layer_coding.h"
+#include "codec/codec/layer_order.h"
 #include "linemap/segmentation.h"
 
 namespace linemap {
@@ -52,6 +53,7 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
     layers->furniture.push_back(
         {static_cast<std::uint32_t>(layers->furniture.size()), -1, std::move(blob.outline)});
   }
+  OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();
 }
 

@@ -14,8 +14,8 @@ constexpr std::uint64_t kNoLimit = std::uint64_t{1} << 40;
 TEST(ContainerTest, EmptyFileHasTheSpecifiedBytes) {
   ContainerWriter writer;
   const std::vector<std::uint8_t> bytes = writer.Finish();
-  // Signature, version 1.0, then LEND: type, length 0, CRC-32("LEND").
-  const std::vector<std::uint8_t> expected = {0x8A, 'L', 'M', 'A', 'P', 0x0D, 0x0A, 0x1A, 1,   0,
+  // Signature, version 2.0, then LEND: type, length 0, CRC-32("LEND").
+  const std::vector<std::uint8_t> expected = {0x8A, 'L', 'M', 'A', 'P', 0x0D, 0x0A, 0x1A, 2,   0,
                                               'L',  'E', 'N', 'D', 0,   0xB0, 0x90, 0x9C, 0x99};
   EXPECT_EQ(bytes, expected);
   auto view = ParseContainer(bytes, kNoLimit);
@@ -84,9 +84,15 @@ TEST(ContainerTest, RejectsWrongSignatureMajorVersionAndTrailingData) {
   std::vector<std::uint8_t> png = bytes;
   png[1] = 'P';
   EXPECT_EQ(ParseContainer(png, kNoLimit).status().code(), StatusCode::kCorrupt);
-  std::vector<std::uint8_t> v2 = bytes;
-  v2[8] = 2;
-  EXPECT_EQ(ParseContainer(v2, kNoLimit).status().code(), StatusCode::kUnsupported);
+  std::vector<std::uint8_t> v3 = bytes;
+  v3[8] = 3;
+  EXPECT_EQ(ParseContainer(v3, kNoLimit).status().code(), StatusCode::kUnsupported);
+  std::vector<std::uint8_t> v0 = bytes;
+  v0[8] = 0;
+  EXPECT_EQ(ParseContainer(v0, kNoLimit).status().code(), StatusCode::kUnsupported);
+  std::vector<std::uint8_t> v1 = bytes;
+  v1[8] = 1;
+  EXPECT_TRUE(ParseContainer(v1, kNoLimit).ok());
   std::vector<std::uint8_t> trailing = bytes;
   trailing.push_back(0);
   EXPECT_FALSE(ParseContainer(trailing, kNoLimit).ok());

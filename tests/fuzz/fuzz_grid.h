@@ -42,6 +42,11 @@ inline Grid GridFromBytes(const std::uint8_t* data, std::size_t size) {
 
 inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   EncodeOptions options;
+  // Lossy: the 1.0 encoder. Exact: a 2.0 file (with or without its layers,
+  // in 16-cell or 1024-cell tiles), or with bit 4 the 1.0 lossless encoder.
+  options.format_v1 = !lossless || (flags & 16) != 0;
+  options.vector_layers = (flags & 32) == 0;
+  options.tile_size_cells = (flags & 64) ? 16 : 1024;
   options.lossless = lossless;
   options.lossless_method = (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
   options.store_segments = (flags & 2) != 0;

@@ -130,7 +130,7 @@ TEST(ChunkCodingTest, ReservedPayloadCoderIsUnsupported) {
   HeaderFields header;
   header.width = 4;
   header.height = 3;
-  ContainerWriter writer;
+  ContainerWriter writer(1, 0);
   writer.AddChunk("LMHD", WriteHeader(header));
   writer.AddChunk("FREE", {7, 0, 0});
   auto decoded = DecodeLmap(writer.Finish());
@@ -147,7 +147,7 @@ TEST(ChunkCodingTest, UnknownAncillaryCoderIsNotReadLastMetaWins) {
   HeaderFields header;
   header.width = 4;
   header.height = 3;
-  ContainerWriter writer;
+  ContainerWriter writer(1, 0);
   writer.AddChunk("LMHD", WriteHeader(header));
   writer.AddChunk("zzzz", {200, 1});
   writer.AddChunk("meta", WrapPayload(WriteMetadata({{"creator", "first"}}), false));

@@ -47,8 +47,16 @@ Grid RoundTrip(const Grid& grid, const EncodeOptions& options) {
   return decoded.ok() ? *decoded : Grid();
 }
 
-EncodeOptions Lossless(LosslessMethod method) {
+// The 1.0 encoder, lossy (EncodeOptions::format_v1): what most tests here
+// check. Version 2.0 files are tested in codec_v2_test.cc.
+EncodeOptions LossyV1() {
   EncodeOptions options;
+  options.format_v1 = true;
+  return options;
+}
+
+EncodeOptions Lossless(LosslessMethod method) {
+  EncodeOptions options = LossyV1();
   options.lossless = true;
   options.lossless_method = method;
   return options;
@@ -93,7 +101,7 @@ TEST(CodecTest, EdgeCases) {
   for (const Grid& grid : grids) {
     EXPECT_EQ(RoundTrip(grid, Lossless(LosslessMethod::kExactLayers)), grid)
         << grid.width() << "x" << grid.height();
-    const Grid lossy = RoundTrip(grid, EncodeOptions());
+    const Grid lossy = RoundTrip(grid, LossyV1());
     EXPECT_EQ(lossy.width(), grid.width());
     EXPECT_EQ(lossy.height(), grid.height());
     EXPECT_EQ(lossy.meta, grid.meta);
@@ -108,12 +116,12 @@ TEST(CodecTest, HeaderKeepsMetadataBitForBit) {
   grid.meta.free_thresh = 0.25;
   grid.meta.negate = true;
   grid.meta.mode = MapMode::kScale;
-  const Grid decoded = RoundTrip(grid, EncodeOptions());
+  const Grid decoded = RoundTrip(grid, LossyV1());
   EXPECT_EQ(decoded.meta, grid.meta);
 }
 
 TEST(CodecTest, MetadataChunkIsReadBack) {
-  EncodeOptions options;
+  EncodeOptions options = LossyV1();
   options.creator = "unit test";
   options.time = "2026-11-22T04:00:00Z";
   options.frame_id = "map";
@@ -133,7 +141,7 @@ TEST(CodecTest, EncodingIsDeterministic) {
   auto grid = LoadRosMap(map);
   ASSERT_TRUE(grid.ok());
   for (bool lossless : {false, true}) {
-    EncodeOptions options;
+    EncodeOptions options = LossyV1();
     options.lossless = lossless;
     auto a = EncodeLmap(*grid, options);
     auto b = EncodeLmap(*grid, options);
@@ -148,16 +156,19 @@ TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
   for (const std::string& path : testing::FindYamlFiles(testing::BundledMapsDir())) {
     auto grid = LoadRosMap(path);
     ASSERT_TRUE(grid.ok()) << path;
-    EncodeOptions one, two;
-    one.max_threads = 1;
-    two.max_threads = 2;
-    auto a = EncodeLmap(*grid, one);
-    auto b = EncodeLmap(*grid, two);
-    ASSERT_TRUE(a.ok() && b.ok()) << path;
-    EXPECT_EQ(*a, *b) << path;
+    for (bool v1 : {false, true}) {
+      EncodeOptions one, two;
+      one.format_v1 = two.format_v1 = v1;
+      one.max_threads = 1;
+      two.max_threads = 2;
+      auto a = EncodeLmap(*grid, one);
+      auto b = EncodeLmap(*grid, two);
+      ASSERT_TRUE(a.ok() && b.ok()) << path;
+      EXPECT_EQ(*a, *b) << path;
+    }
   }
   EncodeOptions none;
-  none.max_threads = 0;
+  none.max_threads = -1;
   auto bad = EncodeLmap(Grid(4, 4, Cell::kFree), none);
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.status().code(), StatusCode::kInvalidArgument);
@@ -171,7 +182,7 @@ TEST(CodecTest, LossyGoalsOnBundledMaps) {
   for (const std::string& path : maps) {
     auto grid = LoadRosMap(path);
     ASSERT_TRUE(grid.ok()) << path;
-    const Grid decoded = RoundTrip(*grid, EncodeOptions());
+    const Grid decoded = RoundTrip(*grid, LossyV1());
     const GridComparison m = CompareGrids(*grid, decoded);
     EXPECT_TRUE(m.same_geometry) << path;
     EXPECT_EQ(m.leaks, 0u) << path;
@@ -188,7 +199,7 @@ TEST(CodecTest, LossyGoalsOnBundledMaps) {
 TEST(CodecTest, LossyIsNoLargerThanLosslessBeyondTheSegmentAllowanceOnBundledMaps) {
   const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
   ASSERT_FALSE(maps.empty());
-  EncodeOptions plain_lossy;
+  EncodeOptions plain_lossy = LossyV1();
   plain_lossy.store_segments = false;
   EncodeOptions plain_lossless = plain_lossy;
   plain_lossless.lossless = true;
@@ -197,7 +208,7 @@ TEST(CodecTest, LossyIsNoLargerThanLosslessBeyondTheSegmentAllowanceOnBundledMap
     ASSERT_TRUE(grid.ok()) << path;
     auto lossy_bytes = EncodeLmap(*grid, plain_lossy);
     auto lossless_bytes = EncodeLmap(*grid, plain_lossless);
-    auto default_bytes = EncodeLmap(*grid, EncodeOptions());
+    auto default_bytes = EncodeLmap(*grid, LossyV1());
     ASSERT_TRUE(lossy_bytes.ok() && lossless_bytes.ok() && default_bytes.ok()) << path;
     EXPECT_LE(lossy_bytes->size(), lossless_bytes->size()) << path;
     EXPECT_LE(static_cast<double>(default_bytes->size()),
@@ -213,7 +224,7 @@ TEST(CodecTest, LossyIsNoLargerThanLosslessBeyondTheSegmentAllowanceOnBundledMap
 void ExpectFreeSpaceKept(const std::string& path) {
   auto grid = LoadRosMap(path);
   ASSERT_TRUE(grid.ok()) << path;
-  auto bytes = EncodeLmap(*grid, EncodeOptions());
+  auto bytes = EncodeLmap(*grid, LossyV1());
   ASSERT_TRUE(bytes.ok()) << path;
   auto decoded = DecodeLmap(*bytes);
   ASSERT_TRUE(decoded.ok()) << path;
@@ -244,9 +255,9 @@ TEST(CodecTest, SimplifyFreeSpaceChangesFreeCellsOnARaggedMap) {
   // must actually move the free boundary.
   auto grid = LoadRosMap(testing::BundledMapsDir() + "/strands/kth/map.yaml");
   ASSERT_TRUE(grid.ok());
-  EncodeOptions simplify;
+  EncodeOptions simplify = LossyV1();
   simplify.simplify_free_space = true;
-  auto plain = EncodeLmap(*grid, EncodeOptions());
+  auto plain = EncodeLmap(*grid, LossyV1());
   auto simplified = EncodeLmap(*grid, simplify);
   ASSERT_TRUE(plain.ok() && simplified.ok());
   EXPECT_LT(simplified->size(), plain->size());
@@ -268,7 +279,7 @@ TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
   for (const std::string& path : maps) {
     auto grid = LoadRosMap(path);
     if (!grid.ok()) continue;  // e.g. a YAML naming a missing image
-    EncodeOptions options;
+    EncodeOptions options = LossyV1();
     options.lossless = true;
     options.store_segments = false;  // the segments do not change exactness; keep the test fast
     EXPECT_EQ(RoundTrip(*grid, options), *grid) << path;
@@ -278,7 +289,7 @@ TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
 }
 
 TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
-  ContainerWriter writer;
+  ContainerWriter writer(1, 0);
   HeaderFields header;
   header.width = 100000;
   header.height = 100000;
@@ -290,7 +301,7 @@ TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
 }
 
 std::vector<std::uint8_t> WithExtraChunk(const std::string& type) {
-  ContainerWriter writer;
+  ContainerWriter writer(1, 0);
   HeaderFields header;
   header.width = 4;
   header.height = 3;
@@ -312,7 +323,7 @@ TEST(CodecTest, UnknownAncillaryChunkIsSkippedUnknownCriticalRefused) {
 TEST(CodecTest, EveryBitFlipOfASmallFileIsDetectedOrHarmless) {
   std::mt19937 rng(9);
   Grid grid = RandomGrid(rng, 24, 16, 8);
-  EncodeOptions options;
+  EncodeOptions options = LossyV1();
   options.lossless = true;
   options.creator = "x";
   auto bytes = EncodeLmap(grid, options);
@@ -337,7 +348,7 @@ TEST(CodecTest, SaveAndLoad) {
   const std::string path = dir + "/map.lmap";
   std::mt19937 rng(4);
   const Grid grid = RandomGrid(rng, 30, 20, 7);
-  EncodeOptions options;
+  EncodeOptions options = LossyV1();
   options.lossless = true;
   ASSERT_TRUE(SaveLmap(path, grid, options).ok());
   auto loaded = LoadLmap(path);
@@ -398,7 +409,7 @@ TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
   header.width = 10;
   header.height = 10;
   auto file = [&](const std::vector<std::uint8_t>& segs_payload) {
-    ContainerWriter writer;
+    ContainerWriter writer(1, 0);
     writer.AddChunk("LMHD", WriteHeader(header));
     writer.AddChunk("SEGS", segs_payload);
     return writer.Finish();
@@ -417,7 +428,7 @@ TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
   EXPECT_EQ(from_draco->grid, from_varint->grid);
   EXPECT_EQ(from_draco->chunks[1].coder, "draco");
   // Draco is accepted for SEGS only.
-  ContainerWriter writer;
+  ContainerWriter writer(1, 0);
   writer.AddChunk("LMHD", WriteHeader(header));
   writer.AddChunk("OCCP", draco);
   EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
@@ -437,7 +448,7 @@ TEST(CodecTest, RandomlyDamagedChunksNeverCrash) {
   std::vector<std::vector<std::uint8_t>> files;
   for (int k = 0; k < 3; ++k) {
     const Grid grid = RandomGrid(rng, 12 + k * 9, 10 + k * 5, 8);
-    EncodeOptions options;
+    EncodeOptions options = LossyV1();
     options.lossless = k != 1;
     options.lossless_method = k == 2 ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
     options.creator = "t";
@@ -457,7 +468,7 @@ TEST(CodecTest, RandomlyDamagedChunksNeverCrash) {
     ASSERT_TRUE(view.ok());
     // Rebuild the file with one chunk's payload damaged and a valid CRC.
     const std::size_t target = rng() % view->chunks.size();
-    ContainerWriter writer;
+    ContainerWriter writer(1, 0);
     for (std::size_t i = 0; i < view->chunks.size(); ++i) {
       const Chunk& c = view->chunks[i];
       std::vector<std::uint8_t> payload(c.payload, c.payload + c.size);

@@ -42,7 +42,7 @@ const BadFile kBadFiles[] = {
     {"truncated.lmap", "truncated"},
     {"unknown_critical_chunk.lmap", "chunk XTRA: unknown critical chunk"},
     {"unknown_payload_coder.lmap", "chunk FREE: unknown payload coder 7"},
-    {"unsupported_version.lmap", "format version 2"},
+    {"unsupported_version.lmap", "format version 3"},
     {"zero_resolution.lmap", "chunk LMHD: resolution is not a positive number"},
 };
 
