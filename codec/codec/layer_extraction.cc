@@ -10,6 +10,7 @@
 
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_order.h"
+#include "codec/codec/raster.h"
 #include "linemap/segmentation.h"
 
 namespace linemap {
@@ -26,12 +27,55 @@ std::optional<CellPoint> RobotCell(const Grid& grid, const EncodeOptions& option
   return robot;
 }
 
+bool NearOccupied(const Grid& grid, int c, int r) {
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      if (grid.Contains(c + dc, r + dr) && grid.at(c + dc, r + dr) == Cell::kOccupied) return true;
+    }
+  }
+  return false;
+}
+
+bool OnWalls(const Grid& grid, const LatticeSegment& s) {
+  bool near = true;
+  RasterizeSegment(s.a, s.b, [&](int c, int r) { near = near && NearOccupied(grid, c, r); });
+  return near;
+}
+
+// A line rounded to the lattice can leave the wall where the extractor fit
+// it across a gap or past a wall's end: each of its cells must stay within
+// one cell of an occupied cell, so a line that does not is cut into the
+// runs of its cells that do (a run whose own segment still leaves the wall,
+// by the rounding of the shorter line, is dropped).
+void AddOnWalls(const Grid& grid, const LatticeSegment& s, std::vector<LatticeSegment>* out) {
+  if (OnWalls(grid, s)) {
+    out->push_back(s);
+    return;
+  }
+  std::vector<CellIndex> run;
+  const auto flush = [&] {
+    if (run.size() >= 2) {
+      const LatticeSegment piece{run.front(), run.back()};
+      if (OnWalls(grid, piece)) out->push_back(piece);
+    }
+    run.clear();
+  };
+  RasterizeSegment(s.a, s.b, [&](int c, int r) {
+    if (NearOccupied(grid, c, r)) {
+      run.push_back({c, r});
+    } else {
+      flush();
+    }
+  });
+  flush();
+}
+
 StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
   std::vector<LatticeSegment> segments;
   segments.reserve(lines.size());
   for (const LineSegment& line : lines) {
-    segments.push_back(ToLattice(line, grid.width(), grid.height()));
+    AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
   return JoinSegments(segments);
 }

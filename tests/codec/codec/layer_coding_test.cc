@@ -1,0 +1,181 @@
+// WALL, ROOM and FURN bodies: round trips of random layers, the orders the
+// encoder picks, and damaged bodies that must fail without crashing.
+#include "codec/codec/layer_coding.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "codec/codec/layer_order.h"
+
+namespace linemap {
+namespace {
+
+constexpr int kW = 300, kH = 200;
+
+std::vector<WallPolyline> RandomWalls(std::mt19937* rng, int count) {
+  std::vector<WallPolyline> walls;
+  for (int i = 0; i < count; ++i) {
+    WallPolyline wall;
+    CellIndex p{static_cast<int>((*rng)() % kW), static_cast<int>((*rng)() % kH)};
+    wall.points.push_back(p);
+    const int steps = 1 + static_cast<int>((*rng)() % 5);
+    while (static_cast<int>(wall.points.size()) <= steps) {
+      CellIndex q = p;
+      if ((*rng)() % 3 == 0) {  // diagonal
+        q.col += static_cast<int>((*rng)() % 41) - 20;
+        q.row += static_cast<int>((*rng)() % 41) - 20;
+      } else if ((*rng)() % 2) {
+        q.col += static_cast<int>((*rng)() % 81) - 40;
+      } else {
+        q.row += static_cast<int>((*rng)() % 81) - 40;
+      }
+      q.col = std::clamp(q.col, 0, kW - 1);
+      q.row = std::clamp(q.row, 0, kH - 1);
+      if (q == p) continue;
+      wall.points.push_back(q);
+      p = q;
+    }
+    walls.push_back(std::move(wall));
+  }
+  return walls;
+}
+
+// A closed 8-connected chain: the border of a random rectangle, walked
+// counter-clockwise.
+std::vector<CellIndex> RectangleChain(std::mt19937* rng) {
+  const int c0 = static_cast<int>((*rng)() % (kW - 20)), r0 = static_cast<int>((*rng)() % (kH - 20));
+  const int c1 = c0 + 1 + static_cast<int>((*rng)() % 18), r1 = r0 + 1 + static_cast<int>((*rng)() % 18);
+  std::vector<CellIndex> chain;
+  for (int c = c0; c < c1; ++c) chain.push_back({c, r0});
+  for (int r = r0; r < r1; ++r) chain.push_back({c1, r});
+  for (int c = c1; c > c0; --c) chain.push_back({c, r1});
+  for (int r = r1; r > r0; --r) chain.push_back({c0, r});
+  return chain;
+}
+
+TEST(LayerCodingTest, WallsRoundTrip) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<WallPolyline> walls = RandomWalls(&rng, trial * 3);
+    CanonicalizeWalls(&walls);
+    auto decoded = DecodeWalls(EncodeWalls(walls), kW, kH, DecodeLimits{});
+    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+    EXPECT_EQ(*decoded, walls);
+  }
+}
+
+TEST(LayerCodingTest, OrderKeepsEveryWallAndItsSegments) {
+  std::mt19937 rng(8);
+  std::vector<WallPolyline> walls = RandomWalls(&rng, 200);
+  std::vector<WallPolyline> ordered = walls;
+  OrderWallsForCoding(&ordered);
+  ASSERT_EQ(ordered.size(), walls.size());
+  // The same polylines, each either as it was or reversed.
+  auto key = [](std::vector<CellIndex> p) {
+    std::vector<CellIndex> r(p.rbegin(), p.rend());
+    const auto less = [](const std::vector<CellIndex>& a, const std::vector<CellIndex>& b) {
+      return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                          [](CellIndex x, CellIndex y) {
+                                            return std::tie(x.row, x.col) < std::tie(y.row, y.col);
+                                          });
+    };
+    return less(r, p) ? r : p;
+  };
+  std::vector<std::vector<CellIndex>> a, b;
+  for (const auto& w : walls) a.push_back(key(w.points));
+  for (const auto& w : ordered) b.push_back(key(w.points));
+  const auto cmp = [](const std::vector<CellIndex>& x, const std::vector<CellIndex>& y) {
+    return std::lexicographical_compare(
+        x.begin(), x.end(), y.begin(), y.end(),
+        [](CellIndex p, CellIndex q) { return std::tie(p.row, p.col) < std::tie(q.row, q.col); });
+  };
+  std::sort(a.begin(), a.end(), cmp);
+  std::sort(b.begin(), b.end(), cmp);
+  EXPECT_EQ(a, b);
+  // Greedy: each next start is the nearest remaining end (checked by brute
+  // force for the first wall).
+  long best = 1L << 40;
+  for (const auto& w : walls) {
+    for (CellIndex p : {w.points.front(), w.points.back()}) best = std::min(best, long{p.col} + p.row);
+  }
+  EXPECT_EQ(long{ordered[0].points[0].col} + ordered[0].points[0].row, best);
+}
+
+TEST(LayerCodingTest, RoomsAndFurnitureRoundTrip) {
+  std::mt19937 rng(9);
+  std::vector<RoomOutline> rooms;
+  std::vector<FurnitureObject> furniture;
+  for (int i = 0; i < 30; ++i) {
+    rooms.push_back({static_cast<std::uint32_t>(i * 3 + (i % 2)),
+                     static_cast<RoomKind>(i % 3), RectangleChain(&rng)});
+    furniture.push_back({static_cast<std::uint32_t>(i), i % 4 == 0 ? -1 : i, RectangleChain(&rng)});
+  }
+  furniture.push_back({30, 5, {{4, 4}}});  // a one-cell object
+  auto r = DecodeRooms(EncodeRooms(rooms), kW, kH, DecodeLimits{});
+  ASSERT_TRUE(r.ok()) << r.status().ToString();
+  EXPECT_EQ(*r, rooms);
+  auto f = DecodeFurniture(EncodeFurniture(furniture), kW, kH, DecodeLimits{});
+  ASSERT_TRUE(f.ok()) << f.status().ToString();
+  EXPECT_EQ(*f, furniture);
+}
+
+TEST(LayerCodingTest, LayersOutsideASmallerGridAreCorrupt) {
+  std::mt19937 rng(10);
+  std::vector<WallPolyline> walls = RandomWalls(&rng, 20);
+  CanonicalizeWalls(&walls);
+  auto w = DecodeWalls(EncodeWalls(walls), 10, 10, DecodeLimits{});
+  ASSERT_FALSE(w.ok());
+  EXPECT_EQ(w.status().code(), StatusCode::kCorrupt);
+  std::vector<RoomOutline> rooms = {{0, RoomKind::kRoom, RectangleChain(&rng)}};
+  auto r = DecodeRooms(EncodeRooms(rooms), 10, 10, DecodeLimits{});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), StatusCode::kCorrupt);
+}
+
+TEST(LayerCodingTest, LimitsAreResourceExhausted) {
+  std::mt19937 rng(11);
+  std::vector<WallPolyline> walls = RandomWalls(&rng, 20);
+  CanonicalizeWalls(&walls);
+  DecodeLimits limits;
+  limits.max_segments = 5;
+  auto w = DecodeWalls(EncodeWalls(walls), kW, kH, limits);
+  ASSERT_FALSE(w.ok());
+  EXPECT_EQ(w.status().code(), StatusCode::kResourceExhausted);
+  limits = DecodeLimits{};
+  limits.max_chain_length = 10;
+  auto r = DecodeRooms(EncodeRooms({{0, RoomKind::kRoom, RectangleChain(&rng)}}), kW, kH, limits);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().code(), StatusCode::kResourceExhausted);
+}
+
+TEST(LayerCodingTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
+  std::mt19937 rng(12);
+  std::vector<WallPolyline> walls = RandomWalls(&rng, 30);
+  CanonicalizeWalls(&walls);
+  const std::vector<std::uint8_t> wall_body = EncodeWalls(walls);
+  std::vector<RoomOutline> rooms = {{0, RoomKind::kRoom, RectangleChain(&rng)},
+                                    {4, RoomKind::kCorridor, RectangleChain(&rng)}};
+  const std::vector<std::uint8_t> room_body = EncodeRooms(rooms);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<std::uint8_t> w = wall_body, r = room_body;
+    w[rng() % w.size()] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
+    r[rng() % r.size()] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
+    if (trial % 3 == 0) w.resize(rng() % w.size());
+    auto dw = DecodeWalls(w, kW, kH, DecodeLimits{});
+    if (dw.ok()) {
+      for (const auto& wall : *dw) {
+        for (CellIndex p : wall.points) ASSERT_TRUE(p.col >= 0 && p.col < kW && p.row >= 0 && p.row < kH);
+      }
+    }
+    auto dr = DecodeRooms(r, kW, kH, DecodeLimits{});
+    if (dr.ok()) {
+      for (const auto& room : *dr) EXPECT_TRUE(IsStorableChain(room.chain, kW, kH));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace linemap
