@@ -1,7 +1,10 @@
 // `linemap bench` end to end on a one-map corpus (fast: no scaling table, no
 // memory forks, one timed run).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 #include "tests/testing/test_support.h"
@@ -45,6 +48,48 @@ TEST(BenchCliTest, ScalingTableHasARowPerSizeAndTheSpread) {
   // The 1-Mcell row has its 9 interleaved runs, then the spread row.
   EXPECT_NE(r.out.find("\n1            9 ", table), std::string::npos) << r.out.substr(table);
   EXPECT_NE(r.out.find("\nspread %", table), std::string::npos);
+}
+
+// Finds `tool` in the test's own PATH, or "".
+std::string Which(const std::string& tool) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const std::string candidate = dirs.substr(start, end - start) + "/" + tool;
+    if (end > start && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    start = end + 1;
+  }
+  return "";
+}
+
+// With a PATH that has every comparator but cjxl, the bench still runs, says
+// which program is missing and leaves the JPEG XL column out.
+TEST(BenchCliTest, AMissingAnchorProgramIsNamedAndItsColumnLeftOut) {
+  const std::string bin = MakeTempDir("bench-cli-path");
+  for (const char* tool : {"sh", "pnmtopng", "pbmtojbg", "cwebp", "dwebp"}) {
+    const std::string found = Which(tool);
+    if (!found.empty()) std::filesystem::create_symlink(found, bin + "/" + tool);
+  }
+  const char* old_path = std::getenv("PATH");
+  const std::string saved = old_path ? old_path : "";
+  ::setenv("PATH", bin.c_str(), 1);
+  const std::string out = MakeTempDir("bench-cli-out");
+  const CliResult r = RunCli({"bench", OneMapCorpus(), "--scaling-max", "0", "--no-memory",
+                              "--repeats", "1", "--csv", out + "/b.csv"});
+  ::setenv("PATH", saved.c_str(), 1);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("JPEG XL: cjxl not found in PATH (Debian package libjxl-tools)"),
+            std::string::npos)
+      << r.out;
+  // The header row of the sizes table (its caption names every codec).
+  const std::size_t header = r.out.find("\nmap ", r.out.find("== Sizes (bytes) =="));
+  ASSERT_NE(header, std::string::npos);
+  const std::string columns = r.out.substr(header, r.out.find('\n', header + 1) - header);
+  EXPECT_NE(columns.find("PNG-9"), std::string::npos) << columns;
+  EXPECT_EQ(columns.find("JPEG XL"), std::string::npos) << columns;
+  EXPECT_EQ(ReadFile(out + "/b.csv").find("jxl_bytes"), std::string::npos);
 }
 
 TEST(BenchCliTest, BadUsageExitsTwo) {

@@ -18,12 +18,15 @@ StatusOr<std::string> ZstdCompress(std::span<const std::uint8_t> data, int level
   return out;
 }
 
-StatusOr<std::string> XzCompress(std::span<const std::uint8_t> data, int preset) {
+StatusOr<std::string> XzCompress(std::span<const std::uint8_t> data, int preset, bool extreme) {
+  if (preset < 0 || preset > 9) return InvalidArgumentError("xz: preset must be in 0..9");
   std::string out(lzma_stream_buffer_bound(data.size()), '\0');
   std::size_t written = 0;
-  const lzma_ret ret = lzma_easy_buffer_encode(
-      static_cast<std::uint32_t>(preset), LZMA_CHECK_CRC64, nullptr, data.data(), data.size(),
-      reinterpret_cast<std::uint8_t*>(out.data()), &written, out.size());
+  const std::uint32_t flags =
+      static_cast<std::uint32_t>(preset) | (extreme ? LZMA_PRESET_EXTREME : 0);
+  const lzma_ret ret =
+      lzma_easy_buffer_encode(flags, LZMA_CHECK_CRC64, nullptr, data.data(), data.size(),
+                              reinterpret_cast<std::uint8_t*>(out.data()), &written, out.size());
   if (ret != LZMA_OK) return InternalError("xz: liblzma error " + std::to_string(ret));
   out.resize(written);
   return out;

@@ -4,12 +4,23 @@
 #include <cstdio>
 #include <set>
 
+#include "tools/bench/image_anchors.h"
 #include "tools/bench/opencv_lines.h"
 
 namespace linemap::bench {
 namespace {
 
-Table ColumnsTable(const std::vector<MapResult>& results, const std::vector<Column>& columns) {
+bool AnyMapHas(const std::vector<MapResult>& results, const Column& column) {
+  for (const MapResult& result : results) {
+    if (ColumnValue(result, column)) return true;
+  }
+  return false;
+}
+
+// Columns no map has (a comparator skipped or not installed: the notes say
+// why) are left out rather than printed as a column of n/a.
+Table ColumnsTable(const std::vector<MapResult>& results, std::vector<Column> columns) {
+  std::erase_if(columns, [&](const Column& column) { return !AnyMapHas(results, column); });
   std::vector<std::string> headers = {"map"};
   for (const Column& column : columns) headers.push_back(column.header);
   Table table(headers);
@@ -36,6 +47,19 @@ struct SizeMethod {
   std::string displ_cm;  // empty: lossless (DisPL 0 by construction)
 };
 
+// The encoder's command line as a user would type it, without the paths.
+std::string CommandText(const std::vector<std::string>& argv) {
+  std::string text;
+  for (const std::string& arg : argv) {
+    if (arg == "{in}" || arg == "{out}" || arg == "-o" || arg == "-quiet") continue;
+    text += (text.empty() ? "" : " ") + arg;
+  }
+  return text;
+}
+
+std::string JxlLabel() { return "JPEG XL lossless (" + CommandText(JpegXlCodec().encode) + ")"; }
+std::string WebpLabel() { return "WebP lossless (" + CommandText(WebpCodec().encode) + ")"; }
+
 std::vector<SizeMethod> SizeMethods() {
   return {
       {"source image (as stored)", key::kSourceBytes, "", "", ""},
@@ -45,8 +69,10 @@ std::vector<SizeMethod> SizeMethods() {
       {"PNG 2-bit palette (libpng z9)", key::kPng2Bytes, "", "", ""},
       {"pnmtopng -compression 9", key::kPnmtopngBytes, "", "", ""},
       {"zstd -19 (raw cells)", key::kZstdBytes, "", "", ""},
-      {"xz -9 (raw cells)", key::kXzBytes, "", "", ""},
+      {"xz -9e (raw cells)", key::kXzBytes, "", "", ""},
       {"JBIG1 two planes (pbmtojbg -q)", key::kJbigBytes, "", "", ""},
+      {WebpLabel(), key::kWebpBytes, key::kWebpEncodeMs, key::kWebpDecodeMs, ""},
+      {JxlLabel(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs, ""},
       {".lmap lossless", key::kLmapLosslessBytes, "", "", ""},
       {".lmap lossy", key::kLmapLossyBytes, key::kLmapEncodeMs, key::kLmapDecodeMs,
        key::kEvalDisplCm},
@@ -68,8 +94,10 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
        "PNG-9 = the smallest of libpng's 8-bit grey, 8-bit palette and 2-bit palette at zlib "
        "level 9 and netpbm's pnmtopng -compression 9 (the ratio base; encode / decode times "
        "are libpng's on its smallest layout); zstd and xz compress the raw cells (1 byte per "
-       "cell); JBIG1 "
-       "is the sum of the free and occupied bit-planes.",
+       "cell; xz -9e = preset 9 | LZMA_PRESET_EXTREME); JBIG1 is the sum of the free and "
+       "occupied bit-planes; WebP and JPEG XL encode map_saver's 8-bit grey PGM (" +
+           CommandText(WebpCodec().encode) + "; " + CommandText(JpegXlCodec().encode) +
+           "), each file decoded back (dwebp, djxl) and checked pixel for pixel.",
        ColumnsTable(results, {{key::kCells, "cells"},
                               {key::kSourceBytes, "source"},
                               {key::kPng9Bytes, "PNG-9"},
@@ -77,8 +105,10 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kPng2Bytes, "PNG 2b"},
                               {key::kPnmtopngBytes, "pnmtopng"},
                               {key::kZstdBytes, "zstd-19"},
-                              {key::kXzBytes, "xz-9"},
+                              {key::kXzBytes, "xz-9e"},
                               {key::kJbigBytes, "JBIG1"},
+                              {key::kWebpBytes, "WebP"},
+                              {key::kJxlBytes, "JPEG XL"},
                               {key::kLmapLosslessBytes, "lmap LL"},
                               {key::kLmapLossyBytes, "lmap"}})});
   tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
@@ -87,8 +117,10 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                                            {key::kPnmtopngBytes, "pnmtopng", 3, true},
                                            {key::kPng2Bytes, "PNG 2b", 3, true},
                                            {key::kZstdBytes, "zstd-19", 3, true},
-                                           {key::kXzBytes, "xz-9", 3, true},
+                                           {key::kXzBytes, "xz-9e", 3, true},
                                            {key::kJbigBytes, "JBIG1", 3, true},
+                                           {key::kWebpBytes, "WebP", 3, true},
+                                           {key::kJxlBytes, "JPEG XL", 3, true},
                                            {key::kLmapLosslessBytes, "lmap LL", 3, true},
                                            {key::kLmapLossyBytes, "lmap", 3, true}})});
   tables.push_back(
@@ -172,7 +204,8 @@ NamedTable MediansTable(const std::vector<MapResult>& results) {
   return {"Medians over the corpus",
           "Ratio = size / PNG-9 per map, then the median (not the ratio of the medians). "
           "Lossless methods reproduce every cell, so their DisPL is 0. n/a = not measured in "
-          "this build (see the notes).",
+          "this build (see the notes). WebP and JPEG XL times are the CPU time of the "
+          "cwebp / dwebp / cjxl / djxl process, one run, start-up and file I/O included.",
           table};
 }
 

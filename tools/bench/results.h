@@ -24,8 +24,10 @@ inline constexpr const char* kPng2Bytes = "png2_bytes";          // 2-bit packed
 inline constexpr const char* kPng9Bytes = "png9_bytes";          // smallest PNG: the ratio base
 inline constexpr const char* kPnmtopngBytes = "pnmtopng_bytes";  // netpbm, as a cross-check
 inline constexpr const char* kZstdBytes = "zstd19_bytes";
-inline constexpr const char* kXzBytes = "xz9_bytes";
+inline constexpr const char* kXzBytes = "xz9e_bytes";  // xz -9e (preset 9, extreme)
 inline constexpr const char* kJbigBytes = "jbig_bytes";
+inline constexpr const char* kJxlBytes = "jxl_bytes";    // cjxl lossless, effort 9
+inline constexpr const char* kWebpBytes = "webp_bytes";  // cwebp -lossless -z 9
 inline constexpr const char* kLmapLossyBytes = "lmap_lossy_bytes";
 inline constexpr const char* kLmapLosslessBytes = "lmap_lossless_bytes";
 inline constexpr const char* kPngEncodeMs = "png_encode_ms";
@@ -34,6 +36,12 @@ inline constexpr const char* kPngEncodePeakMb = "png_encode_peak_mb";
 inline constexpr const char* kPngDecodePeakMb = "png_decode_peak_mb";
 inline constexpr const char* kLmapEncodeMs = "lmap_encode_ms";
 inline constexpr const char* kLmapDecodeMs = "lmap_decode_ms";
+// CPU time of the cjxl / djxl / cwebp / dwebp process, one run (start-up and
+// file reads and writes included).
+inline constexpr const char* kJxlEncodeMs = "jxl_encode_ms";
+inline constexpr const char* kJxlDecodeMs = "jxl_decode_ms";
+inline constexpr const char* kWebpEncodeMs = "webp_encode_ms";
+inline constexpr const char* kWebpDecodeMs = "webp_decode_ms";
 // Throughput, Mcells per CPU second, from the times above.
 inline constexpr const char* kPngEncodeMcellsPerS = "png_encode_mcells_per_s";
 inline constexpr const char* kPngDecodeMcellsPerS = "png_decode_mcells_per_s";

@@ -8,11 +8,11 @@
 #include <utility>
 
 #include "format/file_io.h"
-#include "format/image.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
+#include "tools/bench/image_anchors.h"
 #include "tools/bench/jbig.h"
 #include "tools/bench/lmap_figures.h"
 #include "tools/bench/measure.h"
@@ -68,17 +68,7 @@ SmallestPng AddPngSizes(const Grid& grid, MapResult* result) {
 void AddPnmtopngSize(const Grid& grid, MapResult* result) {
   StatusOr<ScratchDir> dir = ScratchDir::Create("pnmtopng");
   if (!dir.ok()) return Note(result, "pnmtopng", dir.status());
-  std::vector<std::uint8_t> grey(grid.size());
-  for (int r = 0; r < grid.height(); ++r) {
-    for (int c = 0; c < grid.width(); ++c) {
-      const Cell cell = grid.at(c, r);
-      grey[grid.Index(c, grid.height() - 1 - r)] = cell == Cell::kFree       ? kPgmFree
-                                                   : cell == Cell::kOccupied ? kPgmOccupied
-                                                                             : kPgmUnknown;
-    }
-  }
-  StatusOr<std::string> pgm =
-      dir->WriteScratchFile("map.pgm", EncodePgm(grid.width(), grid.height(), grey));
+  StatusOr<std::string> pgm = dir->WriteScratchFile("map.pgm", MapSaverPgm(grid));
   if (!pgm.ok()) return Note(result, "pnmtopng", pgm.status());
   const std::string png = dir->path() + "/map.png";
   // pnmtopng writes to stdout: run it through sh only for the redirection,
@@ -99,11 +89,11 @@ void AddGeneralCodecSizes(const Grid& grid, MapResult* result) {
   } else {
     Note(result, "zstd", zstd.status());
   }
-  StatusOr<std::string> xz = XzCompress(RawCells(grid), 9);
+  StatusOr<std::string> xz = XzCompress(RawCells(grid), 9, /*extreme=*/true);
   if (xz.ok()) {
     result->figures[key::kXzBytes] = static_cast<double>(xz->size());
   } else {
-    Note(result, "xz", xz.status());
+    Note(result, "xz -9e", xz.status());
   }
 }
 
@@ -114,6 +104,25 @@ void AddJbigSize(const Grid& grid, MapResult* result) {
   } else {
     Note(result, "JBIG1", jbig.status());
   }
+}
+
+// An image codec's file of the map, kept only when its decoder gives every
+// pixel back; the codec's own messages name it.
+void AddImageAnchor(const Grid& grid, const ImageCodec& codec, const char* bytes_key,
+                    const char* encode_key, const char* decode_key, MapResult* result) {
+  StatusOr<AnchorFile> file = EncodeImageAnchor(grid, codec);
+  if (!file.ok()) {
+    result->notes.push_back(file.status().message());
+    return;
+  }
+  StatusOr<double> decode_ms = DecodeAndCheckImageAnchor(grid, codec, file->bytes);
+  if (!decode_ms.ok()) {
+    result->notes.push_back(decode_ms.status().message());
+    return;
+  }
+  result->figures[bytes_key] = static_cast<double>(file->bytes.size());
+  result->figures[encode_key] = file->encode_cpu_ms;
+  result->figures[decode_key] = *decode_ms;
 }
 
 // libpng encode and decode of the layout that gave the smallest file, as a
@@ -208,6 +217,14 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
   }
   AddGeneralCodecSizes(grid, &result);
   if (options.jbig) AddJbigSize(grid, &result);
+  if (options.webp) {
+    AddImageAnchor(grid, WebpCodec(), key::kWebpBytes, key::kWebpEncodeMs, key::kWebpDecodeMs,
+                   &result);
+  }
+  if (options.jxl) {
+    AddImageAnchor(grid, JpegXlCodec(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs,
+                   &result);
+  }
   if (!png.bytes.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
   AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
                  &result);

@@ -16,6 +16,8 @@ struct BenchOptions {
   int repeats = 5;  // timed runs per map up to 1 Mcell (fewer above; see RepeatsFor)
   bool measure_memory = true;
   bool jbig = true;      // needs pbmtojbg in PATH
+  bool jxl = true;       // needs cjxl and djxl in PATH (libjxl-tools); ~1.3 s CPU per Mcell
+  bool webp = true;      // needs cwebp and dwebp in PATH (webp)
   bool pnmtopng = true;  // cross-check size with netpbm's pnmtopng -compression 9
 };
 

@@ -2,7 +2,9 @@
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,6 +21,11 @@ namespace linemap::bench {
 namespace fs = std::filesystem;
 
 StatusOr<int> RunSubprocess(const std::vector<std::string>& argv) {
+  LINEMAP_ASSIGN_OR_RETURN(const SubprocessRun run, RunSubprocessTimed(argv));
+  return run.exit_code;
+}
+
+StatusOr<SubprocessRun> RunSubprocessTimed(const std::vector<std::string>& argv) {
   if (argv.empty()) return InvalidArgumentError("no command to run");
   std::vector<std::string> copy = argv;
   std::vector<char*> args;
@@ -34,13 +41,15 @@ StatusOr<int> RunSubprocess(const std::vector<std::string>& argv) {
   posix_spawn_file_actions_destroy(&actions);
   if (err != 0) return NotFoundError(argv[0] + ": cannot run: " + std::strerror(err));
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return IoError(argv[0] + ": waitpid failed");
+  struct rusage usage {};
+  while (::wait4(pid, &status, 0, &usage) < 0) {
+    if (errno != EINTR) return IoError(argv[0] + ": wait4 failed");
   }
   if (WIFEXITED(status)) {
     // posix_spawnp reports a missing program as exit code 127 from the child.
     if (WEXITSTATUS(status) == 127) return NotFoundError(argv[0] + ": not found");
-    return WEXITSTATUS(status);
+    const auto ms = [](const timeval& t) { return t.tv_sec * 1e3 + t.tv_usec / 1e3; };
+    return SubprocessRun{WEXITSTATUS(status), ms(usage.ru_utime) + ms(usage.ru_stime)};
   }
   return IoError(argv[0] + ": killed by signal " + std::to_string(WTERMSIG(status)));
 }

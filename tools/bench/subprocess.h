@@ -16,6 +16,17 @@ namespace linemap::bench {
 // kIoError when it dies from a signal.
 StatusOr<int> RunSubprocess(const std::vector<std::string>& argv);
 
+struct SubprocessRun {
+  int exit_code = 0;
+  // User + system CPU time of the process and its threads, in ms (from
+  // wait4's rusage): comparable with the in-process CPU times of the bench,
+  // but it includes the program's start-up and its file reads and writes.
+  double cpu_ms = 0;
+};
+
+// RunSubprocess, also reporting the CPU time the process used.
+StatusOr<SubprocessRun> RunSubprocessTimed(const std::vector<std::string>& argv);
+
 // True when `tool` can be found in PATH (or is an executable path).
 bool ToolAvailable(const std::string& tool);
 

@@ -63,8 +63,10 @@ const std::vector<PlotMethod>& PlotMethods() {
   static const std::vector<PlotMethod> methods = {
       {"PNG 2-bit", key::kPng2Bytes, nullptr, "#7f7f7f"},
       {"zstd -19", key::kZstdBytes, nullptr, "#1f77b4"},
-      {"xz -9", key::kXzBytes, nullptr, "#9467bd"},
+      {"xz -9e", key::kXzBytes, nullptr, "#9467bd"},
       {"JBIG1", key::kJbigBytes, nullptr, "#8c564b"},
+      {"WebP", key::kWebpBytes, nullptr, "#e377c2"},
+      {"JPEG XL", key::kJxlBytes, nullptr, "#17becf"},
       {".lmap lossless", key::kLmapLosslessBytes, nullptr, "#2ca02c"},
       {".lmap lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
   };

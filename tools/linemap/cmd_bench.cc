@@ -1,5 +1,5 @@
 // linemap bench [CORPUS_DIR ...]: size, fidelity and speed of linemap beside
-// PNG, zstd, xz, JBIG1 and RM-Line on every map of a corpus (issue 7).
+// PNG, zstd, xz, JBIG1, WebP, JPEG XL and RM-Line on every map of a corpus.
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -7,6 +7,7 @@
 
 #include "format/file_io.h"
 #include "linemap/map_io.h"
+#include "tools/bench/anchors.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/machine.h"
 #include "tools/bench/progress.h"
@@ -27,7 +28,10 @@ const CommandSpec kBenchSpec = {
     "Maps whose cells and metadata equal an earlier map's are measured once.\n"
     "Prints per-map tables, the medians by method and a scaling table; a progress\n"
     "bar is drawn on stderr when it is a terminal. JBIG1 needs `pbmtojbg`\n"
-    "(jbigkit-bin) in PATH; it is run as a subprocess, never linked.",
+    "(jbigkit-bin), WebP `cwebp` and `dwebp` (webp), JPEG XL `cjxl` and `djxl`\n"
+    "(libjxl-tools) in PATH; they are run as subprocesses, never linked, and a\n"
+    "missing one is named in the notes and its column left out. The anchors table\n"
+    "checks the lossless .lmap against each of them on maps of >= 100,000 cells.",
     {
         {"--md", "OUT.md", "also write the tables as Markdown"},
         {"--csv", "OUT.csv", "also write every figure of every map as CSV"},
@@ -38,6 +42,8 @@ const CommandSpec kBenchSpec = {
          "largest map of the scaling table: 0 (skip), 1, 4, 16 or 64 (default 64)"},
         {"--no-memory", "", "skip the peak-memory measurements (they fork per operation)"},
         {"--no-jbig", "", "skip the JBIG1 comparator"},
+        {"--no-webp", "", "skip the WebP lossless comparator"},
+        {"--no-jxl", "", "skip the JPEG XL comparator (cjxl -e 9: about 1.3 s CPU per Mcell)"},
     },
     0,
     1000,
@@ -67,6 +73,8 @@ StatusOr<BenchArgs> BenchArgsFrom(const ParsedArgs& parsed) {
   if (args.scaling_max < 0) return InvalidArgumentError("--scaling-max must be >= 0");
   args.options.measure_memory = !parsed.Has("--no-memory");
   args.options.jbig = !parsed.Has("--no-jbig");
+  args.options.webp = !parsed.Has("--no-webp");
+  args.options.jxl = !parsed.Has("--no-jxl");
   return args;
 }
 
@@ -189,6 +197,7 @@ int RunBench(const std::vector<std::string>& argv) {
 
   std::vector<bench::NamedTable> tables = bench::PerMapTables(results);
   tables.push_back(bench::MediansTable(results));
+  for (bench::NamedTable& table : bench::AnchorTables(results)) tables.push_back(std::move(table));
   tables.push_back(bench::LineMediansTable(results));
   if (!scaling.empty()) tables.push_back(bench::ScalingTable(scaling));
   const std::string notes = NotesText(results, skipped);
