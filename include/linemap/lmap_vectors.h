@@ -33,6 +33,25 @@ struct LmapVectors {
   void ToWorld(const CellIndex& p, double* x, double* y) const;
 };
 
+// How well the layers hold the original map's walls, the RM-Line paper's
+// way: over the edge cells of `original` (occupied cells with a free
+// 4-neighbour), DisPL_ave is the mean distance (cells) from the cell centre
+// to the nearest wall segment; `covered` counts the edge cells within one
+// cell of a wall segment or inside a furniture outline (fill rule of
+// spec/format.md section 8.2).
+struct LayerFidelity {
+  std::size_t edge_cells = 0;
+  double displ_ave_cells = 0;
+  double displ_max_cells = 0;
+  std::size_t within_1 = 0;  // edge cells within one cell of a wall segment
+  std::size_t covered = 0;   // ... or inside a furniture outline
+  double covered_share() const {
+    return edge_cells == 0 ? 1.0 : static_cast<double>(covered) / static_cast<double>(edge_cells);
+  }
+};
+// `original` must have the vectors' width and height (else invalid argument).
+StatusOr<LayerFidelity> MeasureLayerFidelity(const Grid& original, const LmapVectors& vectors);
+
 StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
                                         const DecodeLimits& limits = {});
 StatusOr<LmapVectors> LoadLmapVectors(const std::string& path, const DecodeLimits& limits = {});
