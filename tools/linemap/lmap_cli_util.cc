@@ -10,7 +10,7 @@ namespace linemap::cli {
 
 std::vector<OptionSpec> DecodeLimitOptionSpecs() {
   return {
-      {"--max-cells", "N", "refuse maps with more cells than N (default 268435456 = 2^28)"},
+      {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
   };
 }
