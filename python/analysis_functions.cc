@@ -82,7 +82,7 @@ py::dict Lines(const Map& map, const std::string& method, double epsilon, bool s
   const LineExtraction lines = ValueOrRaise(std::move(extraction));
   py::dict out;
   out["lines"] = lines.segments.size();
-  out["displ_cm"] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  out["displ_cm"] = fidelity.displ_ave_cells * (grid.meta.resolution * 100.0);
   out["displ_cells"] = fidelity.displ_ave_cells;
   out["displ_max_cells"] = fidelity.displ_max_cells;
   out["ms"] = ms;

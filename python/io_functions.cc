@@ -56,7 +56,12 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg) {
   return MapFromGrid(ValueOrRaise(std::move(grid)));
 }
 
+void CheckTolerance(int tolerance) {
+  if (tolerance < 0) throw py::value_error("tolerance must be at least 0 cells");
+}
+
 void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors) {
+  CheckTolerance(tolerance);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
   if (!yaml && !EndsWith(path, ".lmap")) {
@@ -73,6 +78,7 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
 }
 
 py::bytes Encode(const Map& map, int tolerance, bool vectors) {
+  CheckTolerance(tolerance);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
