@@ -193,8 +193,8 @@ Options the library refuses raise ValueError with its message.
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
              "ValueError, more than ``max_cells`` cells MemoryError.");
   module.def("vectors", &Vectors, py::arg("source"), py::arg("max_cells") = py::none(), R"doc(
-The vector layers of an .lmap file (a path) or of .lmap bytes, without the
-raster. A dict, geometry in map-frame metres through cell centres:
+The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
+files are read whole: their layers sit between raster chunks). A dict, geometry in map-frame metres through cell centres:
 ``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
 consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays,
 ``rooms`` a list of {id, kind, outline: (K, 2) closed chain},

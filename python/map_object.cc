@@ -191,12 +191,17 @@ Map MapFromGrid(Grid grid) {
 Grid GridFromMap(const Map& map) {
   CheckCellsArray(map.cells);
   CheckCellValues(map.cells);
-  const auto view = py::reinterpret_borrow<py::array_t<std::uint8_t>>(map.cells).unchecked<2>();
+  const auto cells = py::reinterpret_borrow<py::array_t<std::uint8_t>>(map.cells);
+  const auto view = cells.unchecked<2>();
   Grid grid(static_cast<int>(view.shape(1)), static_cast<int>(view.shape(0)));
   std::vector<Cell>& out = grid.mutable_cells();
-  for (py::ssize_t r = 0; r < view.shape(0); ++r) {
-    for (py::ssize_t c = 0; c < view.shape(1); ++c) {
-      out[grid.Index(static_cast<int>(c), static_cast<int>(r))] = static_cast<Cell>(view(r, c));
+  if (cells.flags() & py::array::c_style) {
+    if (!out.empty()) std::memcpy(out.data(), cells.data(), out.size());
+  } else {  // a strided view, e.g. a slice: element by element
+    for (py::ssize_t r = 0; r < view.shape(0); ++r) {
+      for (py::ssize_t c = 0; c < view.shape(1); ++c) {
+        out[grid.Index(static_cast<int>(c), static_cast<int>(r))] = static_cast<Cell>(view(r, c));
+      }
     }
   }
   grid.meta = map.meta;
