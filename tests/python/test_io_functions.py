@@ -98,7 +98,7 @@ def test_lmap_signature_is_recognised_without_the_suffix(tmp_path):
     assert_same_map(linemap.load(renamed), m)
 
 
-def test_issue_command_works_from_the_repository_root(repo):
+def test_import_and_load_from_the_repository_root(repo):
     env = dict(os.environ)
     done = subprocess.run(
         [sys.executable, "-c",
