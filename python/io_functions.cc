@@ -131,7 +131,6 @@ py::dict VectorsDict(const LmapVectors& v) {
     f["id"] = object.id;
     f["room_id"] = object.room_id < 0 ? py::object(py::none()) : py::int_(object.room_id);
     f["outline"] = WorldPoints(frame, object.outline);
-    f["cells"] = WorldPoints(frame, object.cells);
     furniture.append(f);
   }
   py::dict out;

@@ -11,11 +11,11 @@ linemap = pytest.importorskip("linemap")
 
 def test_two_threads_encode_the_same_bytes_as_one():
     maps = [linemap.load(BUNDLED["willow"]), linemap.load(BUNDLED["kth"])]
-    alone = [linemap.encode(m, tolerance=t) for m in maps for t in (0, 1)]
+    alone = [linemap.encode(m, vectors=v) for m in maps for v in (True, False)]
     results = {}
 
     def work(name, m):
-        results[name] = [linemap.encode(m, tolerance=t) for t in (0, 1)]
+        results[name] = [linemap.encode(m, vectors=v) for v in (True, False)]
 
     threads = [threading.Thread(target=work, args=(i, m)) for i, m in enumerate(maps)]
     threads.append(threading.Thread(target=work, args=(2, maps[0])))  # the same map twice

@@ -216,7 +216,7 @@ def csv_layer(layers, names):
 def test_vectors_equal_the_cli_export(name, tmp_path, cli):
     lmap = tmp_path / "map.lmap"
     # Lossy with wall segments and room chains: a file with vector layers.
-    linemap_cli.run(cli, "encode", BUNDLED[name], "-o", lmap, "--rooms", "--no-sync")
+    linemap_cli.run(cli, "encode", BUNDLED[name], "-o", lmap, "--no-sync")
     linemap_cli.run(cli, "export", lmap, "-o", tmp_path / "layers.csv")
     layers = linemap_cli.read_csv_rows(tmp_path / "layers.csv")
     assert set(layers) <= WALL_LAYERS | ROOM_LAYERS | FURNITURE_LAYERS
@@ -244,7 +244,7 @@ def test_vectors_equal_the_cli_export(name, tmp_path, cli):
 def test_vectors_have_geometry_on_some_bundled_map(tmp_path, cli):
     """The comparison above is not empty: depot has walls and rooms."""
     lmap = tmp_path / "depot.lmap"
-    linemap_cli.run(cli, "encode", BUNDLED["depot"], "-o", lmap, "--rooms", "--no-sync")
+    linemap_cli.run(cli, "encode", BUNDLED["depot"], "-o", lmap, "--no-sync")
     v = linemap.vectors(lmap)
     assert len(v["walls"]) > 10 and len(v["rooms"]) > 0
 
