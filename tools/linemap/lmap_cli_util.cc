@@ -34,7 +34,7 @@ bool IsLmapFile(const std::string& path) {
   return in.gcount() == 8 && LooksLikeLmap(head);
 }
 
-StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+StatusOr<std::vector<std::uint8_t>> TrinaryPng(const Grid& grid) {
   // The 2-bit palette PNG: for three-level maps it is within a few bytes of
   // netpbm's `pnmtopng -compression 9` and four times cheaper to make than
   // the 8-bit grey one.
@@ -47,9 +47,12 @@ StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
       index[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(grid.at(x, row));
     }
   }
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> p,
-                           EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown}));
-  return p.size();
+  return EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown});
+}
+
+StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> png, TrinaryPng(grid));
+  return png.size();
 }
 
 double NowSeconds() {
