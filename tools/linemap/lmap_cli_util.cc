@@ -12,6 +12,9 @@ std::vector<OptionSpec> DecodeLimitOptionSpecs() {
   return {
       {"--max-cells", "N", "refuse maps with more cells than N (default 268435456 = 2^28)"},
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
+      {"--threads", "N",
+       "threads decoding the tiles of a 2.0 file (default 0: one per core); the result does not "
+       "depend on it"},
   };
 }
 
@@ -21,6 +24,9 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
                            args.GetUint64("--max-cells", limits.max_cells, /*min=*/1));
   LINEMAP_ASSIGN_OR_RETURN(limits.max_file_bytes,
                            args.GetUint64("--max-file-bytes", limits.max_file_bytes, /*min=*/1));
+  LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t threads, args.GetUint64("--threads", 0));
+  if (threads > 4096) return InvalidArgumentError("--threads must be 0..4096");
+  limits.max_threads = static_cast<int>(threads);
   return limits;
 }
 
