@@ -93,43 +93,66 @@ std::string MapImage(const Grid& grid, const Frame& f, const std::vector<std::ui
          " fill=\"none\" stroke=\"#999\" stroke-width=\"1\"/>\n";
 }
 
+// Text width estimate: about 7.5 px per character of 13 px sans-serif.
+double TextWidth(const std::string& text, double u) {
+  return 7.5 * u * static_cast<double>(text.size());
+}
+
 // The footer's sizes scale with `u` (1 for a map drawn 1000 px long), so
 // that its text keeps its size against the map when a viewer fits the
-// picture to the screen.
-std::string ScaleBar(const Frame& f, double map_width_px, double top, double u) {
-  const double metres = RoundMetres(map_width_px / 5 / f.scale);
-  const double len = metres * f.scale;
-  const double x0 = kMarginPx, y = top + 24 * u;
+// picture to the screen. The scale bar is about a fifth of the map's width.
+struct ScaleBarSize {
+  double metres = 0;
+  std::string label;
+  double width_px = 0;  // bar and label
+};
+
+ScaleBarSize ScaleBarFor(const Frame& f, double map_width_px, double u) {
+  ScaleBarSize s;
+  s.metres = RoundMetres(map_width_px / 5 / f.scale);
   char label[32];
-  std::snprintf(label, sizeof(label), "%g m", metres);
+  std::snprintf(label, sizeof(label), "%g m", s.metres);
+  s.label = label;
+  s.width_px = s.metres * f.scale + 8 * u + TextWidth(s.label, u);
+  return s;
+}
+
+std::string ScaleBar(const Frame& f, const ScaleBarSize& bar, double top, double u) {
+  const double len = bar.metres * f.scale;
+  const double x0 = kMarginPx, y = top + 24 * u;
+  const std::string& label = bar.label;
   return "<g id=\"scale_bar\" stroke=\"#000\" stroke-width=\"" + Px(2 * u) + "\">\n<path d=\"M" +
          Px(x0) + "," + Px(y - 6 * u) + " V" + Px(y) + " H" + Px(x0 + len) + " V" + Px(y - 6 * u) +
          "\" fill=\"none\"/>\n<text x=\"" + Px(x0 + len + 8 * u) + "\" y=\"" + Px(y + 4 * u) +
          "\" stroke=\"none\" fill=\"#000\">" + label + "</text>\n</g>\n";
 }
 
-std::string Legend(const std::vector<ExportLayer>& layers, double canvas_width, double top,
-                   double u) {
-  // Each entry: a 22 px swatch, its label (about 7.5 px per character of
-  // 13 px text) and a gap.
-  std::vector<std::string> labels;
-  std::vector<double> widths;
-  double total = 40 * u;  // the north arrow
-  for (const ExportLayer& layer : layers) {
-    labels.push_back(std::string(StyleOf(layer.name).label) + " (" +
-                     std::to_string(layer.features.size()) + ")");
-    widths.push_back((48 + 7.5 * static_cast<double>(labels.back().size())) * u);
-    total += widths.back();
-  }
-  double x = canvas_width - kMarginPx - total;
+std::string LegendLabel(const ExportLayer& layer) {
+  return std::string(StyleOf(layer.name).label) + " (" + std::to_string(layer.features.size()) +
+         ")";
+}
+
+// Each entry: a 22 px swatch, its label and a gap; then the north arrow.
+double LegendEntryWidth(const ExportLayer& layer, double u) {
+  return 48 * u + TextWidth(LegendLabel(layer), u);
+}
+
+double LegendWidth(const std::vector<ExportLayer>& layers, double u) {
+  double total = 40 * u;
+  for (const ExportLayer& layer : layers) total += LegendEntryWidth(layer, u);
+  return total;
+}
+
+std::string Legend(const std::vector<ExportLayer>& layers, double left, double top, double u) {
+  double x = left;
   const double y = top + 24 * u;
   std::string out = "<g id=\"legend\">\n";
   for (std::size_t i = 0; i < layers.size(); ++i) {
     out += "<line x1=\"" + Px(x) + "\" y1=\"" + Px(y) + "\" x2=\"" + Px(x + 22 * u) + "\" y2=\"" +
            Px(y) + "\" stroke=\"" + StyleOf(layers[i].name).colour + "\" stroke-width=\"" +
            Px(3 * u) + "\"/>\n<text x=\"" + Px(x + 28 * u) + "\" y=\"" + Px(y + 4 * u) + "\">" +
-           labels[i] + "</text>\n";
-    x += widths[i];
+           LegendLabel(layers[i]) + "</text>\n";
+    x += LegendEntryWidth(layers[i], u);
   }
   // North: the map frame's +y axis points up the page.
   out += "<path d=\"M" + Px(x + 10 * u) + "," + Px(y + 8 * u) + " V" + Px(y - 10 * u) + " M" +
@@ -186,7 +209,11 @@ StatusOr<std::string> LayersToSvg(const std::vector<ExportLayer>& layers, const 
   const double map_h = (max_y - min_y) * f.scale;
   const double u = std::clamp(long_px / 1000, 1.0, 2.0);
   const double canvas_w = std::max(map_w + 2 * kMarginPx, kMinCanvasWidthPx * u);
-  const double canvas_h = map_h + 2 * kMarginPx + kFooterPx * u;
+  // The legend goes right of the scale bar, or below it on narrow maps.
+  const ScaleBarSize bar = ScaleBarFor(f, map_w, u);
+  const double legend_w = LegendWidth(layers, u);
+  const bool two_rows = kMarginPx + bar.width_px + 24 * u > canvas_w - kMarginPx - legend_w;
+  const double canvas_h = map_h + 2 * kMarginPx + (kFooterPx + (two_rows ? 28 : 0)) * u;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> png, TrinaryPng(grid));
 
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Px(canvas_w) +
@@ -203,8 +230,9 @@ StatusOr<std::string> LayersToSvg(const std::vector<ExportLayer>& layers, const 
     }
   }
   const double footer_top = map_h + 2 * kMarginPx;
-  out += ScaleBar(f, map_w, footer_top, u);
-  out += Legend(layers, canvas_w, footer_top, u);
+  out += ScaleBar(f, bar, footer_top, u);
+  out += two_rows ? Legend(layers, kMarginPx, footer_top + 28 * u, u)
+                  : Legend(layers, canvas_w - kMarginPx - legend_w, footer_top, u);
   return out + "</svg>\n";
 }
 
