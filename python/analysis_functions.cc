@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/lines.h"
 #include "linemap/plan.h"
 #include "linemap/segmentation.h"
@@ -234,25 +235,20 @@ Grid GridArgument(const py::object& value, std::uint64_t max_cells) {
   return ValueOrRaise(std::move(grid));
 }
 
-// The wall segments of an .lmap file as LineSegments (cell units); empty
-// unless `decoded` is a path to an .lmap file.
-std::vector<LineSegment> StoredSegments(const py::object& decoded, std::uint64_t max_cells) {
-  if (py::isinstance<Map>(decoded)) return {};
+// The vector layers of an .lmap file; nullopt unless `decoded` is a path to
+// an .lmap file.
+std::optional<LmapVectors> StoredLayers(const py::object& decoded, std::uint64_t max_cells) {
+  if (py::isinstance<Map>(decoded)) return std::nullopt;
   const std::string path = PathArgument(decoded);
-  if (!IsLmapPath(path)) return {};
+  if (!IsLmapPath(path)) return std::nullopt;
   DecodeLimits limits;
   limits.max_cells = max_cells;
-  StatusOr<LmapContents> contents = InternalError("not read");
+  StatusOr<LmapVectors> vectors = InternalError("not read");
   {
     py::gil_scoped_release release;
-    contents = LoadLmapContents(path, limits);
+    vectors = LoadLmapVectors(path, limits);
   }
-  std::vector<LineSegment> lines;
-  for (const LatticeSegment& s : ValueOrRaise(std::move(contents)).segments) {
-    lines.push_back(LineSegment{static_cast<double>(s.a.col), static_cast<double>(s.a.row),
-                                static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
-  }
-  return lines;
+  return ValueOrRaise(std::move(vectors));
 }
 
 py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
@@ -267,15 +263,13 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
                           std::to_string(decoded.height()) +
                           ": eval compares maps of the same size");
   }
-  const std::vector<LineSegment> lines = StoredSegments(decoded_arg, max_cells);
+  const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, max_cells);
   GridComparison m;
-  std::optional<LineFidelity> fidelity;
+  StatusOr<LayerFidelity> fidelity = InternalError("not measured");
   {
     py::gil_scoped_release release;
     m = CompareGrids(original, decoded);
-    if (!lines.empty() && m.same_geometry) {
-      fidelity = MeasureLineFidelity(ComputeEdgeMap(original), lines);
-    }
+    if (layers) fidelity = MeasureLayerFidelity(original, *layers);
   }
   py::dict out;
   out["same_geometry"] = m.same_geometry;
@@ -287,10 +281,25 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   out["leaks"] = m.leaks;
   out["unknown_turned_free"] = m.unknown_turned_free;
   out["unknown_turned_free_share"] = m.unknown_turned_free_share;
-  if (fidelity) {
-    out["displ_ave_cells"] = fidelity->displ_ave_cells;
-    out["displ_ave_m"] = fidelity->displ_ave_cells * original.meta.resolution;
-    out["edge_share_within_1"] = fidelity->share_within_1;
+  if (layers) {
+    // The same keys as `linemap eval --json`.
+    const LayerFidelity& f = ValueOrRaise(std::move(fidelity));
+    const auto share = [&](std::size_t n) {
+      return f.edge_cells > 0 ? static_cast<double>(n) / static_cast<double>(f.edge_cells) : 1.0;
+    };
+    out["edge_cells"] = f.edge_cells;
+    if (f.displ_ave_cells) {
+      out["displ_ave_cells"] = *f.displ_ave_cells;
+      out["displ_ave_cm"] = *f.displ_ave_cells * original.meta.resolution * 100.0;
+      out["displ_max_cells"] = *f.displ_max_cells;
+    } else {
+      out["displ_ave_cells"] = py::none();
+      out["displ_ave_cm"] = py::none();
+      out["displ_max_cells"] = py::none();
+    }
+    out["edge_share_within_1"] = share(f.within_1_of_wall);
+    out["edge_share_in_furniture"] = share(f.in_furniture);
+    out["edge_share_within_1_or_furniture"] = share(f.covered);
   }
   return out;
 }

@@ -203,9 +203,10 @@ def rounded(rows):
 
 
 def ring_edges(points):
-    """Edges of a closed chain (the last point joins the first)."""
+    """Edges of a closed chain (the last point joins the first); a one-cell
+    chain is one zero-length edge, as `linemap export` writes it."""
     n = len(points)
-    return [(*points[i], *points[(i + 1) % n]) for i in range(n)] if n > 1 else []
+    return [(*points[i], *points[(i + 1) % n]) for i in range(n)]
 
 
 def csv_layer(layers, names):

@@ -6,7 +6,6 @@
 #include "linemap/lmap_vectors.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
-#include "tools/linemap/layer_fidelity.h"
 #include "tools/linemap/lmap_cli_util.h"
 #include "tools/linemap/map_input.h"
 
@@ -65,7 +64,9 @@ int RunEval(const std::vector<std::string>& args) {
     limits.max_cells = decoded_options.max_cells;
     StatusOr<LmapVectors> vectors = LoadLmapVectors(decoded_path, limits);
     if (!vectors.ok()) return ReportError("eval", vectors.status());
-    fidelity = MeasureLayerFidelity(*original, *vectors);
+    StatusOr<LayerFidelity> measured = MeasureLayerFidelity(*original, *vectors);
+    if (!measured.ok()) return ReportError("eval", measured.status());
+    fidelity = *measured;
   }
   const double cm_per_cell = original->meta.resolution * 100;
   auto share = [](std::size_t n, std::size_t of) {
