@@ -1,0 +1,280 @@
+// bench_tiles: sizes and speed of the .lmap 2.0 tile cell coder
+// (codec/codec/tile_coder.h) on the maps of ../shared/maps, against the 1.0
+// lossless planes (OCCP + FREE over an empty canvas, as `--lossless`
+// without segments codes them) and libpng level 9.
+//
+//   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
+//
+// Per map: cells; PNG-9 bytes (smaller of libpng's 2-bit palette and 8-bit
+// grey at level 9) and libpng's decode ns/cell; the 1.0 planes' bytes; the
+// tile coder's bytes without hints, with hints (BuildLayerHints) and their
+// ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds
+// the bytes at 256 and 512 tiles. Tuning maps and held-out maps are listed
+// and summarised (medians) separately: the coder's parameters were chosen on
+// the tuning maps only.
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "codec/codec/plane_coder.h"
+#include "codec/codec/tile_coder.h"
+#include "codec/codec/tile_hints.h"
+#include "linemap/map_io.h"
+#include "tools/bench/png_codec.h"
+
+namespace linemap {
+namespace {
+
+struct MapEntry {
+  const char* path;  // relative to the maps folder (the YAML where there is one)
+  bool tuning;
+};
+
+// The tuning maps; every other map of the corpus is held out.
+const MapEntry kMaps[] = {
+    {"aws_bookstore/map.yaml", true},
+    {"aws_warehouse/002/map.yaml", true},
+    {"f1tenth/columbia.yaml", true},
+    {"f1tenth/levinelobby.yaml", true},
+    {"fetch/3_1_16_localization.yaml", true},
+    {"fetch/4_26_15.yaml", true},
+    {"mrpt/map1.png", true},
+    {"nav2/depot.yaml", true},
+    {"nav2/map.pgm", true},
+    {"nav2/tb3_sandbox.yaml", true},
+    {"navtut/lse_arena.yaml", true},
+    {"rosnav1/willow-full-0.05.pgm", true},
+    {"strands/bham/cs_lg.yaml", true},
+    {"strands/tsc/tsc.yaml", true},
+    {"turtlebot_apps/willow-2010-02-18-0.10.yaml", true},
+    {"uos/avz.yaml", true},
+    {"f1tenth/mtl.yaml", false},
+    {"fetch/9_16_15.yaml", false},
+    {"nav2/warehouse.yaml", false},
+    {"strands/kth/map.yaml", false},
+    {"uos/avz5floor_plan.yaml", false},
+    {"turtlebot_apps/ctrl_room.yaml", false},
+    {"aws_warehouse/005/map.yaml", false},
+    {"stage_ros/willow-full.pgm", false},
+    {"nav2/empty_room.pgm", false},
+};
+
+double CpuNow() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Median CPU seconds of `fn` over 5 runs (3 above 1 Mcell).
+template <typename Fn>
+double MedianSeconds(std::size_t cells, Fn&& fn) {
+  const int runs = cells > 1000000 ? 3 : 5;
+  std::vector<double> t;
+  for (int i = 0; i < runs; ++i) {
+    const double start = CpuNow();
+    fn();
+    t.push_back(CpuNow() - start);
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+std::vector<CellRect> Tiles(int width, int height, int tile) {
+  std::vector<CellRect> out;
+  for (int y = 0; y < height; y += tile) {
+    for (int x = 0; x < width; x += tile) {
+      out.push_back(CellRect{x, y, std::min(x + tile, width), std::min(y + tile, height)});
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints,
+                                                 int tile) {
+  std::vector<std::vector<std::uint8_t>> out;
+  for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
+    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t));
+  }
+  return out;
+}
+
+std::size_t TotalBytes(const std::vector<std::vector<std::uint8_t>>& tiles) {
+  std::size_t n = 0;
+  for (const auto& t : tiles) n += t.size();
+  return n;
+}
+
+// Decodes every tile into `out`; false on any error.
+bool DecodeAll(const std::vector<std::vector<std::uint8_t>>& data, const std::uint8_t* hints,
+               int width, int height, int tile, std::vector<Cell>* out) {
+  const std::vector<CellRect> tiles = Tiles(width, height, tile);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    if (!DecodeTileCells(data[i].data(), data[i].size(), hints, width, height, tiles[i],
+                         out->data())
+             .ok()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::size_t PlanesBytes(const Grid& g) {
+  std::vector<Cell> canvas(g.size(), Cell::kUnknown);
+  std::vector<std::uint8_t> occ(g.size()), free(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    occ[i] = g.cells()[i] == Cell::kOccupied;
+    free[i] = g.cells()[i] == Cell::kFree;
+  }
+  std::size_t n = EncodeOccupiedPlane(occ, canvas, g.width(), g.height()).size();
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (occ[i]) canvas[i] = Cell::kOccupied;
+  }
+  return n + EncodeFreePlane(free, canvas, g.width(), g.height()).size();
+}
+
+struct Row {
+  std::string name;
+  bool tuning = false;
+  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, plain = 0, hinted = 0, enc_ns = 0,
+         dec_ns = 0, t256 = 0, t512 = 0;
+};
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes) {
+  std::printf("\n%s maps\n", tuning ? "TUNING" : "HELD-OUT");
+  std::printf("%-44s %9s %7s %6s %7s %7s %7s %6s %6s %6s %6s", "map", "cells", "png9", "pngdec",
+              "v1pl", "tile", "hinted", "t/png", "h/png", "enc", "dec");
+  if (sizes) std::printf(" %7s %7s", "t256", "t512");
+  std::printf("\n");
+  std::vector<std::vector<double>> cols(12);
+  for (const Row& r : rows) {
+    if (r.tuning != tuning) continue;
+    const double v[] = {r.cells,  r.png,    r.png_dec_ns,    r.planes,
+                        r.plain,  r.hinted, r.plain / r.png, r.hinted / r.png,
+                        r.enc_ns, r.dec_ns, r.t256,          r.t512};
+    for (int i = 0; i < 12; ++i) cols[i].push_back(v[i]);
+    std::printf("%-44s %9.0f %7.0f %6.2f %7.0f %7.0f %7.0f %6.3f %6.3f %6.2f %6.2f", r.name.c_str(),
+                v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
+    if (sizes) std::printf(" %7.0f %7.0f", v[10], v[11]);
+    std::printf("\n");
+  }
+  std::printf("%-44s %9.0f %7.0f %6.2f %7.0f %7.0f %7.0f %6.3f %6.3f %6.2f %6.2f", "median",
+              Median(cols[0]), Median(cols[1]), Median(cols[2]), Median(cols[3]), Median(cols[4]),
+              Median(cols[5]), Median(cols[6]), Median(cols[7]), Median(cols[8]), Median(cols[9]));
+  if (sizes) std::printf(" %7.0f %7.0f", Median(cols[10]), Median(cols[11]));
+  std::printf("\n");
+}
+
+int Run(int argc, char** argv) {
+  std::string dir = "/work/shared/maps";
+  int tile = 1024;
+  bool sizes = false, hints_on = true;
+  std::string only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--maps" && i + 1 < argc) {
+      dir = argv[++i];
+    } else if (a == "--tile" && i + 1 < argc) {
+      tile = std::atoi(argv[++i]);
+    } else if (a == "--sizes") {
+      sizes = true;
+    } else if (a == "--no-hints") {
+      hints_on = false;
+    } else if (a == "--only" && i + 1 < argc) {
+      only = argv[++i];
+    } else {
+      std::fprintf(stderr,
+                   "usage: bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] "
+                   "[--only SUBSTR]\n");
+      return 2;
+    }
+  }
+  if (tile < 1) {
+    std::fprintf(stderr, "bench_tiles: --tile must be >= 1\n");
+    return 2;
+  }
+  std::vector<Row> rows;
+  for (const MapEntry& m : kMaps) {
+    if (!only.empty() && std::string(m.path).find(only) == std::string::npos) continue;
+    const std::string path = dir + "/" + m.path;
+    StatusOr<Grid> loaded = LoadRosMap(path);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "bench_tiles: %s: %s\n", path.c_str(),
+                   loaded.status().ToString().c_str());
+      return 1;
+    }
+    const Grid& g = *loaded;
+    Row r;
+    r.name = m.path;
+    r.tuning = m.tuning;
+    r.cells = static_cast<double>(g.size());
+    std::string best_png;
+    for (bench::PngLayout layout : {bench::PngLayout::kPalette2, bench::PngLayout::kGrey8}) {
+      StatusOr<std::string> png = bench::EncodeTrinaryPng(g, layout, 9);
+      if (png.ok() && (best_png.empty() || png->size() < best_png.size())) best_png = *png;
+    }
+    r.png = static_cast<double>(best_png.size());
+    const std::span<const std::uint8_t> png_bytes(
+        reinterpret_cast<const std::uint8_t*>(best_png.data()), best_png.size());
+    r.png_dec_ns =
+        1e9 / r.cells * MedianSeconds(g.size(), [&] { (void)bench::DecodeTrinaryPng(png_bytes); });
+    r.planes = static_cast<double>(PlanesBytes(g));
+
+    std::vector<std::vector<std::uint8_t>> data;
+    r.enc_ns = 1e9 / r.cells * MedianSeconds(g.size(), [&] { data = EncodeAll(g, nullptr, tile); });
+    r.plain = static_cast<double>(TotalBytes(data));
+    std::vector<Cell> out(g.size(), Cell::kFree);
+    bool ok = true;
+    r.dec_ns = 1e9 / r.cells * MedianSeconds(g.size(), [&] {
+                 ok = ok && DecodeAll(data, nullptr, g.width(), g.height(), tile, &out);
+               });
+    if (!ok || out != g.cells()) {
+      std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
+      return 1;
+    }
+    if (hints_on) {
+      StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+      if (!hints.ok()) {
+        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
+                     hints.status().ToString().c_str());
+        return 1;
+      }
+      const auto hinted = EncodeAll(g, hints->data(), tile);
+      r.hinted = static_cast<double>(TotalBytes(hinted));
+      std::fill(out.begin(), out.end(), Cell::kFree);
+      if (!DecodeAll(hinted, hints->data(), g.width(), g.height(), tile, &out) ||
+          out != g.cells()) {
+        std::fprintf(stderr, "bench_tiles: %s: hinted round trip FAILED\n", m.path);
+        return 1;
+      }
+    }
+    if (sizes) {
+      r.t256 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 256)));
+      r.t512 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 512)));
+    }
+    rows.push_back(r);
+    std::fprintf(stderr, "%s done\n", m.path);
+  }
+  std::printf(
+      "tile %d; bytes; ns = CPU ns per cell (median of 5 runs, 3 above 1 Mcell); "
+      "enc/dec without hints\n",
+      tile);
+  PrintRows(rows, true, sizes);
+  PrintRows(rows, false, sizes);
+  return 0;
+}
+
+}  // namespace
+}  // namespace linemap
+
+int main(int argc, char** argv) { return linemap::Run(argc, argv); }
