@@ -4,6 +4,7 @@
 // without segments codes them) and libpng level 9.
 //
 //   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
+//               [--dump-pgm DIR]  (also writes each map as a trinary PGM there)
 //
 // Per map: cells; PNG-9 bytes (smaller of libpng's 2-bit palette and 8-bit
 // grey at level 9) and libpng's decode ns/cell; the 1.0 planes' bytes; the
@@ -175,11 +176,34 @@ void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes) {
   std::printf("\n");
 }
 
+// "nav2/depot.yaml" -> "nav2__depot".
+std::string FlatName(std::string path) {
+  path = path.substr(0, path.rfind('.'));
+  std::string out;
+  for (char c : path) out += c == '/' ? std::string("__") : std::string(1, c);
+  return out;
+}
+
+// The trinary map as map_saver writes it (254 free, 0 occupied, 205
+// unknown; top image row first), for running other codecs on it.
+void DumpPgm(const Grid& g, const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) return;
+  std::fprintf(f, "P5\n%d %d\n255\n", g.width(), g.height());
+  static const unsigned char kGrey[3] = {254, 0, 205};
+  std::vector<unsigned char> row(static_cast<std::size_t>(g.width()));
+  for (int y = g.height() - 1; y >= 0; --y) {
+    for (int x = 0; x < g.width(); ++x) row[x] = kGrey[static_cast<int>(g.at(x, y))];
+    std::fwrite(row.data(), 1, row.size(), f);
+  }
+  std::fclose(f);
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
   bool sizes = false, hints_on = true;
-  std::string only;
+  std::string only, dump;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--maps" && i + 1 < argc) {
@@ -192,10 +216,12 @@ int Run(int argc, char** argv) {
       hints_on = false;
     } else if (a == "--only" && i + 1 < argc) {
       only = argv[++i];
+    } else if (a == "--dump-pgm" && i + 1 < argc) {
+      dump = argv[++i];
     } else {
       std::fprintf(stderr,
                    "usage: bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] "
-                   "[--only SUBSTR]\n");
+                   "[--only SUBSTR] [--dump-pgm DIR]\n");
       return 2;
     }
   }
@@ -214,6 +240,7 @@ int Run(int argc, char** argv) {
       return 1;
     }
     const Grid& g = *loaded;
+    if (!dump.empty()) DumpPgm(g, dump + "/" + FlatName(m.path) + ".pgm");
     Row r;
     r.name = m.path;
     r.tuning = m.tuning;
