@@ -27,7 +27,7 @@ constexpr int kDroppedShift = 5;
 
 // Context counts (spec/tile_coding.md "Contexts").
 constexpr unsigned kRowContexts = 3 * 2;
-constexpr unsigned kBlockContexts = 3 * 3 * 2;
+constexpr unsigned kBlockContexts = 3 * 3 * 3 * 2 * 4;
 constexpr unsigned kHintClasses = 5;
 constexpr unsigned kTemplateValues = 6561;  // 3^8 neighbour patterns
 constexpr unsigned kCellContexts = kTemplateValues * kHintClasses;
@@ -169,8 +169,18 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
         const int end = std::min(begin + kBlockCells, tw);
         const std::size_t len = static_cast<std::size_t>(end - begin);
         const bool block_hints_same =
-            r > 0 && std::memcmp(hint_row + begin, hint_below + begin, len) == 0;
-        const unsigned ctx = (above_state[b] * 3 + left) * 2 + (block_hints_same ? 1 : 0);
+            r > 0 &&
+            (hints == nullptr || std::memcmp(hint_row + begin, hint_below + begin, len) == 0);
+        const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
+        // Whether the row below is one value over the block and its two
+        // neighbours (and which): a uniform area rarely starts a structure.
+        // (n1[begin - 1 .. end] all equal each their right neighbour.)
+        const unsigned uniform =
+            std::memcmp(n1 + begin - 1, n1 + begin, len + 1) == 0 ? 1u + n1[begin] : 0u;
+        const unsigned ctx =
+            ((((above_state[b] * 3 + left) * 3 + above_right) * 2 + (block_hints_same ? 1 : 0)) *
+                 4 +
+             uniform);
         const int copy = io.Code(&models[kBlockModel + ctx],
                                  Io::kEncoding && std::memcmp(cur + begin, n1 + begin, len) == 0);
         if (copy) {
