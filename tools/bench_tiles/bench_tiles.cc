@@ -4,15 +4,18 @@
 // without segments codes them) and libpng level 9.
 //
 //   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
-//               [--dump-pgm DIR]  (also writes each map as a trinary PGM there)
+//               [--dump-pgm DIR] [--jxl FILE]
 //
-// Per map: cells; PNG-9 bytes (smaller of libpng's 2-bit palette and 8-bit
-// grey at level 9) and libpng's decode ns/cell; the 1.0 planes' bytes; the
-// tile coder's bytes without hints, with hints (BuildLayerHints) and their
-// ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds
-// the bytes at 256 and 512 tiles. Tuning maps and held-out maps are listed
-// and summarised (medians) separately: the coder's parameters were chosen on
-// the tuning maps only.
+// --dump-pgm writes each map as a trinary PGM (map_saver's grey levels) for
+// running other codecs on it; --jxl reads "flat_name bytes" lines (e.g.
+// `cjxl -d 0 -e 9 -E 3 -I 100 -g 3` sizes of those PGMs) and adds columns.
+//
+// Per map: cells; PNG-9 bytes (the smallest of libpng's 8-bit grey, 8-bit
+// palette and 2-bit palette at level 9, as `linemap bench` takes it) and libpng's decode ns/cell;
+// the 1.0 planes' bytes; the tile coder's bytes without hints, with hints (BuildLayerHints) and
+// their ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds the bytes at 256
+// and 512 tiles. Tuning maps and held-out maps are listed and summarised (medians) separately: the
+// coder's parameters were chosen on the tuning maps only.
 #include <time.h>
 
 #include <algorithm>
@@ -142,7 +145,7 @@ struct Row {
   std::string name;
   bool tuning = false;
   double cells = 0, png = 0, png_dec_ns = 0, planes = 0, plain = 0, hinted = 0, enc_ns = 0,
-         dec_ns = 0, t256 = 0, t512 = 0;
+         dec_ns = 0, t256 = 0, t512 = 0, jxl = 0;
 };
 
 double Median(std::vector<double> v) {
@@ -152,28 +155,58 @@ double Median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes) {
-  std::printf("\n%s maps\n", tuning ? "TUNING" : "HELD-OUT");
-  std::printf("%-44s %9s %7s %6s %7s %7s %7s %6s %6s %6s %6s", "map", "cells", "png9", "pngdec",
-              "v1pl", "tile", "hinted", "t/png", "h/png", "enc", "dec");
-  if (sizes) std::printf(" %7s %7s", "t256", "t512");
+struct Column {
+  const char* title;
+  const char* format;  // printf format of one value, width included
+  double (*value)(const Row&);
+};
+
+// The printed columns: sizes in bytes, times in CPU ns per cell.
+const Column kColumns[] = {
+    {"cells", " %9.0f", [](const Row& r) { return r.cells; }},
+    {"png9", " %7.0f", [](const Row& r) { return r.png; }},
+    {"v1pl", " %7.0f", [](const Row& r) { return r.planes; }},
+    {"tile", " %7.0f", [](const Row& r) { return r.plain; }},
+    {"hinted", " %7.0f", [](const Row& r) { return r.hinted; }},
+    {"t/png", " %6.3f", [](const Row& r) { return r.plain / r.png; }},
+    {"h/png", " %6.3f", [](const Row& r) { return r.hinted / r.png; }},
+    {"pngdec", " %6.2f", [](const Row& r) { return r.png_dec_ns; }},
+    {"enc", " %6.2f", [](const Row& r) { return r.enc_ns; }},
+    {"dec", " %6.2f", [](const Row& r) { return r.dec_ns; }},
+    {"d/png", " %6.3f", [](const Row& r) { return r.dec_ns / r.png_dec_ns; }},
+};
+const Column kSizeColumns[] = {
+    {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
+    {"t512", " %7.0f", [](const Row& r) { return r.t512; }},
+};
+const Column kJxlColumns[] = {
+    {"jxl", " %7.0f", [](const Row& r) { return r.jxl; }},
+    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain / r.jxl; }},
+    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted / r.jxl; }},
+};
+
+void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) {
+  std::vector<Column> cols(std::begin(kColumns), std::end(kColumns));
+  if (sizes) cols.insert(cols.end(), std::begin(kSizeColumns), std::end(kSizeColumns));
+  if (jxl) cols.insert(cols.end(), std::begin(kJxlColumns), std::end(kJxlColumns));
+  std::printf("\n%s maps\n%-44s", tuning ? "TUNING" : "HELD-OUT", "map");
+  for (const Column& c : cols) {
+    const int width = std::atoi(c.format + 2);
+    std::printf(" %*s", width, c.title);
+  }
   std::printf("\n");
-  std::vector<std::vector<double>> cols(12);
+  std::vector<std::vector<double>> values(cols.size());
   for (const Row& r : rows) {
     if (r.tuning != tuning) continue;
-    const double v[] = {r.cells,  r.png,    r.png_dec_ns,    r.planes,
-                        r.plain,  r.hinted, r.plain / r.png, r.hinted / r.png,
-                        r.enc_ns, r.dec_ns, r.t256,          r.t512};
-    for (int i = 0; i < 12; ++i) cols[i].push_back(v[i]);
-    std::printf("%-44s %9.0f %7.0f %6.2f %7.0f %7.0f %7.0f %6.3f %6.3f %6.2f %6.2f", r.name.c_str(),
-                v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8], v[9]);
-    if (sizes) std::printf(" %7.0f %7.0f", v[10], v[11]);
+    std::printf("%-44s", r.name.c_str());
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      values[k].push_back(cols[k].value(r));
+      std::printf(cols[k].format, values[k].back());
+    }
     std::printf("\n");
   }
-  std::printf("%-44s %9.0f %7.0f %6.2f %7.0f %7.0f %7.0f %6.3f %6.3f %6.2f %6.2f", "median",
-              Median(cols[0]), Median(cols[1]), Median(cols[2]), Median(cols[3]), Median(cols[4]),
-              Median(cols[5]), Median(cols[6]), Median(cols[7]), Median(cols[8]), Median(cols[9]));
-  if (sizes) std::printf(" %7.0f %7.0f", Median(cols[10]), Median(cols[11]));
+  std::printf("%-44s", "median");
+  for (std::size_t k = 0; k < cols.size(); ++k) std::printf(cols[k].format, Median(values[k]));
   std::printf("\n");
 }
 
@@ -200,11 +233,25 @@ void DumpPgm(const Grid& g, const std::string& path) {
   std::fclose(f);
 }
 
+// The JPEG XL size of `name` from a file of "name bytes" lines (made by
+// running cjxl on the --dump-pgm files), 0 when absent.
+double JxlBytes(const std::string& file, const std::string& name) {
+  std::FILE* f = std::fopen(file.c_str(), "r");
+  if (f == nullptr) return 0;
+  char key[512];
+  double bytes = 0, found = 0;
+  while (std::fscanf(f, "%511s %lf%*[^\n]", key, &bytes) == 2) {
+    if (name == key) found = bytes;
+  }
+  std::fclose(f);
+  return found;
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
   bool sizes = false, hints_on = true;
-  std::string only, dump;
+  std::string only, dump, jxl_file;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--maps" && i + 1 < argc) {
@@ -217,12 +264,14 @@ int Run(int argc, char** argv) {
       hints_on = false;
     } else if (a == "--only" && i + 1 < argc) {
       only = argv[++i];
+    } else if (a == "--jxl" && i + 1 < argc) {
+      jxl_file = argv[++i];
     } else if (a == "--dump-pgm" && i + 1 < argc) {
       dump = argv[++i];
     } else {
       std::fprintf(stderr,
                    "usage: bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] "
-                   "[--only SUBSTR] [--dump-pgm DIR]\n");
+                   "[--only SUBSTR] [--dump-pgm DIR] [--jxl FILE]\n");
       return 2;
     }
   }
@@ -247,7 +296,8 @@ int Run(int argc, char** argv) {
     r.tuning = m.tuning;
     r.cells = static_cast<double>(g.size());
     std::string best_png;
-    for (bench::PngLayout layout : {bench::PngLayout::kPalette2, bench::PngLayout::kGrey8}) {
+    for (bench::PngLayout layout :
+         {bench::PngLayout::kGrey8, bench::PngLayout::kPalette8, bench::PngLayout::kPalette2}) {
       StatusOr<std::string> png = bench::EncodeTrinaryPng(g, layout, 9);
       if (png.ok() && (best_png.empty() || png->size() < best_png.size())) best_png = *png;
     }
@@ -290,6 +340,7 @@ int Run(int argc, char** argv) {
       r.t256 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 256)));
       r.t512 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 512)));
     }
+    if (!jxl_file.empty()) r.jxl = JxlBytes(jxl_file, FlatName(m.path));
     rows.push_back(r);
     std::fprintf(stderr, "%s done\n", m.path);
   }
@@ -297,8 +348,8 @@ int Run(int argc, char** argv) {
       "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell); "
       "enc/dec without hints\n",
       tile);
-  PrintRows(rows, true, sizes);
-  PrintRows(rows, false, sizes);
+  PrintRows(rows, true, sizes, !jxl_file.empty());
+  PrintRows(rows, false, sizes, !jxl_file.empty());
   return 0;
 }
 
