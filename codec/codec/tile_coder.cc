@@ -18,6 +18,11 @@ constexpr std::uint8_t kUnknownValue = 2;
 // the cells of a changed block are cheap given their neighbours) at the same
 // decode speed; 64 is 2 % smaller again but 25 % slower to decode.
 constexpr int kBlockCells = 32;
+// Blocks per super-block: a super-block (256 cells) that equals the row
+// below is one decision, which saves the decode time of eight block flags
+// in the quiet parts of a changing row (tuning maps: decode 7 % faster,
+// 0.7 % larger; 4 and 16 measure the same within the noise).
+constexpr int kSuperBlocks = 8;
 
 // The first byte of a tile's data: bits 0-4 name the model the cells were
 // coded with, bits 5-7 count the zero bytes dropped from the stream's end.
@@ -28,12 +33,14 @@ constexpr int kDroppedShift = 5;
 // Context counts (spec/tile_coding.md "Contexts").
 constexpr unsigned kRowContexts = 3 * 2;
 constexpr unsigned kBlockContexts = 3 * 3 * 3 * 2 * 4;
+constexpr unsigned kSuperContexts = 3 * 3 * 2 * 4;
 constexpr unsigned kHintClasses = 5;
 constexpr unsigned kTemplateValues = 6561;  // 3^8 neighbour patterns
 constexpr unsigned kCellContexts = kTemplateValues * kHintClasses;
 constexpr unsigned kRowModel = 0;
 constexpr unsigned kBlockModel = kRowModel + kRowContexts;
-constexpr unsigned kEqualModel = kBlockModel + kBlockContexts;
+constexpr unsigned kSuperModel = kBlockModel + kBlockContexts;
+constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
 constexpr unsigned kModelCount = kOtherModel + 81 * kHintClasses;
 
@@ -144,6 +151,8 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
   TileModelTable models(kModelCount);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
+  std::vector<std::uint8_t> above_super(
+      static_cast<std::size_t>((blocks + kSuperBlocks - 1) / kSuperBlocks), kStateNone);
   // Without layers every hint is zero: both rows read this one.
   const std::vector<std::uint8_t> zero_hints(hints == nullptr ? static_cast<std::size_t>(tw) : 0,
                                              0);
@@ -165,35 +174,70 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
     if (row_copy) {
       if constexpr (!Io::kEncoding) std::memcpy(cur, n1, static_cast<std::size_t>(tw));
       std::fill(above_state.begin(), above_state.end(), kStateCopy);
+      std::fill(above_super.begin(), above_super.end(), kStateCopy);
       row_state = kStateCopy;
     } else {
       unsigned left = kStateNone;
-      for (int b = 0; b < blocks; ++b) {
-        const int begin = b * kBlockCells;
-        const int end = std::min(begin + kBlockCells, tw);
-        const std::size_t len = static_cast<std::size_t>(end - begin);
-        const bool block_hints_same =
+      unsigned super_left = kStateNone;
+      for (int sb = 0; sb < blocks; sb += kSuperBlocks) {
+        const int sb_end = std::min(sb + kSuperBlocks, blocks);
+        const int s_begin = sb * kBlockCells;
+        const int s_end = std::min(sb_end * kBlockCells, tw);
+        const std::size_t s_len = static_cast<std::size_t>(s_end - s_begin);
+        const std::size_t si = static_cast<std::size_t>(sb / kSuperBlocks);
+        const bool super_hints_same =
             r > 0 &&
-            (hints == nullptr || std::memcmp(hint_row + begin, hint_below + begin, len) == 0);
-        const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
-        // Whether the row below is one value over the block and its two
-        // neighbours (and which): a uniform area rarely starts a structure.
-        // (n1[begin - 1 .. end] all equal each their right neighbour.)
-        const unsigned uniform =
-            std::memcmp(n1 + begin - 1, n1 + begin, len + 1) == 0 ? 1u + n1[begin] : 0u;
-        const unsigned ctx =
-            ((((above_state[b] * 3 + left) * 3 + above_right) * 2 + (block_hints_same ? 1 : 0)) *
-                 4 +
-             uniform);
-        const int copy = io.Code(&models[kBlockModel + ctx],
-                                 Io::kEncoding && std::memcmp(cur + begin, n1 + begin, len) == 0);
-        if (copy) {
-          if constexpr (!Io::kEncoding) std::memcpy(cur + begin, n1 + begin, len);
-        } else {
-          CodeCells(io, models, cur, n1, n2, hint_row, begin, end);
+            (hints == nullptr || std::memcmp(hint_row + s_begin, hint_below + s_begin, s_len) == 0);
+        const unsigned super_uniform =
+            std::memcmp(n1 + s_begin - 1, n1 + s_begin, s_len + 1) == 0 ? 1u + n1[s_begin] : 0u;
+        const unsigned super_ctx =
+            ((above_super[si] * 3 + super_left) * 2 + (super_hints_same ? 1 : 0)) * 4 +
+            super_uniform;
+        const int super_copy =
+            io.Code(&models[kSuperModel + super_ctx],
+                    Io::kEncoding && std::memcmp(cur + s_begin, n1 + s_begin, s_len) == 0);
+        super_left = super_copy ? kStateCopy : kStateCoded;
+        above_super[si] = static_cast<std::uint8_t>(super_left);
+        if (super_copy) {
+          if constexpr (!Io::kEncoding) std::memcpy(cur + s_begin, n1 + s_begin, s_len);
+          for (int b = sb; b < sb_end; ++b) above_state[b] = kStateCopy;
+          left = kStateCopy;
+          continue;
         }
-        left = copy ? kStateCopy : kStateCoded;
-        above_state[b] = static_cast<std::uint8_t>(left);
+        bool changed = false;
+        for (int b = sb; b < sb_end; ++b) {
+          const int begin = b * kBlockCells;
+          const int end = std::min(begin + kBlockCells, tw);
+          const std::size_t len = static_cast<std::size_t>(end - begin);
+          const bool block_hints_same =
+              r > 0 &&
+              (hints == nullptr || std::memcmp(hint_row + begin, hint_below + begin, len) == 0);
+          const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
+          // Whether the row below is one value over the block and its two
+          // neighbours (and which): a uniform area rarely starts a structure.
+          // (n1[begin - 1 .. end] all equal each their right neighbour.)
+          const unsigned uniform =
+              std::memcmp(n1 + begin - 1, n1 + begin, len + 1) == 0 ? 1u + n1[begin] : 0u;
+          const unsigned ctx =
+              ((((above_state[b] * 3 + left) * 3 + above_right) * 2 + (block_hints_same ? 1 : 0)) *
+                   4 +
+               uniform);
+          // The super-block differs, so when every block before the last was
+          // equal, the last one differs: no decision.
+          const int copy =
+              b + 1 == sb_end && !changed
+                  ? 0
+                  : io.Code(&models[kBlockModel + ctx],
+                            Io::kEncoding && std::memcmp(cur + begin, n1 + begin, len) == 0);
+          if (copy) {
+            if constexpr (!Io::kEncoding) std::memcpy(cur + begin, n1 + begin, len);
+          } else {
+            CodeCells(io, models, cur, n1, n2, hint_row, begin, end);
+            changed = true;
+          }
+          left = copy ? kStateCopy : kStateCoded;
+          above_state[b] = static_cast<std::uint8_t>(left);
+        }
       }
       row_state = kStateCoded;
     }
