@@ -234,5 +234,213 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
   }
 }
 
+
+// An independent encoder written from spec/tile_coding.md's words, plainly
+// (no row buffers, no padding, bounds tested per cell): the library's bytes
+// must equal it, so the spec and the code say the same thing.
+class SpecEncoder {
+ public:
+  SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
+              CellRect tile)
+      : cells_(cells), hints_(hints), width_(width), t_(tile) {}
+
+  Bytes Encode() {
+    const int tw = t_.x1 - t_.x0;
+    const int th = t_.y1 - t_.y0;
+    if (tw == 0 || th == 0) return {};
+    const int blocks = (tw + 31) / 32;
+    std::vector<int> above_block(blocks, 2), above_super((blocks + 7) / 8, 2);
+    int row_state = 2;
+    for (int r = 0; r < th; ++r) {
+      const bool row_copy = RangeEqualsBelow(0, tw, r);
+      Bit(0 + row_state * 2 + HintsSame(0, tw, r), row_copy);
+      if (row_copy) {
+        row_state = 1;
+        std::fill(above_block.begin(), above_block.end(), 1);
+        std::fill(above_super.begin(), above_super.end(), 1);
+        continue;
+      }
+      row_state = 0;
+      const std::vector<int> below_block = above_block;  // states after the row below
+      int left = 2, left_super = 2;
+      for (int k = 0; k * 8 < blocks; ++k) {
+        const int b_end = std::min(8 * k + 8, blocks);
+        const int a = 256 * k, e = std::min(256 * k + 256, tw);
+        const bool super_copy = RangeEqualsBelow(a, e, r);
+        Bit(kSuper + ((above_super[k] * 3 + left_super) * 2 + HintsSame(a, e, r)) * 4 +
+                Uniform(a, e, r),
+            super_copy);
+        above_super[k] = left_super = super_copy ? 1 : 0;
+        if (super_copy) {
+          for (int b = 8 * k; b < b_end; ++b) above_block[b] = 1;
+          left = 1;
+          continue;
+        }
+        bool changed = false;
+        for (int b = 8 * k; b < b_end; ++b) {
+          const int ba = 32 * b, be = std::min(32 * b + 32, tw);
+          const int above_right = b + 1 < blocks ? below_block[b + 1] : 2;
+          bool copy = RangeEqualsBelow(ba, be, r);
+          if (b + 1 == b_end && !changed) {
+            copy = false;  // implied
+          } else {
+            Bit(kBlock +
+                    (((below_block[b] * 3 + left) * 3 + above_right) * 2 + HintsSame(ba, be, r)) *
+                        4 +
+                    Uniform(ba, be, r),
+                copy);
+          }
+          if (!copy) {
+            changed = true;
+            for (int c = ba; c < be; ++c) CodeCell(c, r);
+          }
+          above_block[b] = left = copy ? 1 : 0;
+        }
+      }
+    }
+    return Finish();
+  }
+
+ private:
+  static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
+                       kOther = kEqual + 32805;
+  struct Model {
+    std::uint32_t fast = 32768, slow = 32768, n = 0;
+  };
+
+  int V(int c, int r) const {
+    if (c < 0 || r < 0 || c >= t_.x1 - t_.x0) return 2;
+    return static_cast<int>(cells_[static_cast<std::size_t>(t_.y0 + r) * width_ + t_.x0 + c]);
+  }
+  int H(int c, int r) const {
+    return hints_.empty() ? 0 : hints_[static_cast<std::size_t>(t_.y0 + r) * width_ + t_.x0 + c];
+  }
+  bool RangeEqualsBelow(int a, int e, int r) const {
+    for (int c = a; c < e; ++c) {
+      if (V(c, r) != V(c, r - 1)) return false;
+    }
+    return true;
+  }
+  int HintsSame(int a, int e, int r) const {
+    if (r == 0) return 0;
+    for (int c = a; c < e; ++c) {
+      if (H(c, r) != H(c, r - 1)) return 0;
+    }
+    return 1;
+  }
+  int Uniform(int a, int e, int r) const {
+    for (int c = a - 1; c <= e; ++c) {
+      if (V(c, r - 1) != V(a, r - 1)) return 0;
+    }
+    return 1 + V(a, r - 1);
+  }
+  void CodeCell(int c, int r) {
+    const int h = H(c, r);
+    const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
+    const int w = V(c - 1, r), v = V(c, r);
+    const int t =
+        w + 3 * (V(c - 2, r) +
+                 3 * (V(c - 2, r - 1) +
+                      3 * (V(c - 1, r - 1) +
+                           3 * (V(c, r - 1) +
+                                3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+    Bit(kEqual + t * 5 + hc, v == w);
+    if (v == w) return;
+    const int hi = w == 2 ? 1 : 2;
+    Bit(kOther + (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc,
+        v == hi);
+  }
+  void Bit(int context, bool one) {
+    Model& m = models_[context];
+    const std::uint32_t bound = (range_ >> 16) * ((m.fast + m.slow) >> 1);
+    if (!one) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    if (!one) {
+      m.fast += (65536 - m.fast) >> fs;
+      m.slow += (65536 - m.slow) >> ss;
+    } else {
+      m.fast -= m.fast >> fs;
+      m.slow -= m.slow >> ss;
+    }
+    m.n = std::min(m.n + 1, 5u);
+    while (range_ < (1u << 24)) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
+  void ShiftLow() {
+    if (low_ < 0xFF000000u || low_ >= (std::uint64_t{1} << 32)) {
+      const int carry = static_cast<int>(low_ >> 32);
+      out_.push_back(static_cast<std::uint8_t>(cache_ + carry));
+      for (; pending_ff_ > 0; --pending_ff_)
+        out_.push_back(static_cast<std::uint8_t>(0xFF + carry));
+      cache_ = static_cast<std::uint8_t>(low_ >> 24);
+    } else {
+      ++pending_ff_;
+    }
+    low_ = (low_ & 0x00FFFFFFu) << 8;
+  }
+  Bytes Finish() {
+    for (int k = 32; k >= 0; --k) {
+      const std::uint64_t v = (low_ + range_ - 1) & ~((std::uint64_t{1} << k) - 1);
+      if (v >= low_) {
+        low_ = v;
+        break;
+      }
+    }
+    for (int i = 0; i < 5; ++i) ShiftLow();
+    out_.erase(out_.begin());
+    int dropped = 0;
+    while (!out_.empty() && out_.back() == 0 && dropped < 7) {
+      out_.pop_back();
+      ++dropped;
+    }
+    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5));
+    return out_;
+  }
+
+  const std::vector<Cell>& cells_;
+  const std::vector<std::uint8_t>& hints_;
+  int width_;
+  CellRect t_;
+  std::vector<Model> models_ = std::vector<Model>(kOther + 405);
+  std::uint64_t low_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint8_t cache_ = 0;
+  int pending_ff_ = 0;
+  Bytes out_;
+};
+
+TEST(TileCoderTest, BytesFollowTheSpec) {
+  std::mt19937 rng(31337);
+  for (int iter = 0; iter < 200; ++iter) {
+    // Up to 600 columns, so rows hold several super-blocks.
+    const int width = static_cast<int>(rng() % 600);
+    const int height = static_cast<int>(rng() % 12);
+    const std::vector<Cell> cells = RandomGrid(rng, width, height);
+    std::vector<std::uint8_t> hints;
+    if (iter % 2) {
+      hints.resize(cells.size());
+      for (auto& h : hints) h = rng() % 4 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    }
+    const CellRect tile = iter % 3 ? RandomTile(rng, width, height) : CellRect{0, 0, width, height};
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    EXPECT_EQ(
+        EncodeTileCells(cells.data(), hints.empty() ? nullptr : hints.data(), width, height, tile),
+        SpecEncoder(cells, hints, width, tile).Encode());
+  }
+  for (const Grid& g : BundledMaps()) {
+    const std::vector<std::uint8_t> none;
+    const CellRect all{0, 0, g.width(), g.height()};
+    EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
+              SpecEncoder(g.cells(), none, g.width(), all).Encode());
+  }
+}
+
 }  // namespace
 }  // namespace linemap
