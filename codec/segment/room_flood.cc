@@ -118,8 +118,9 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
   DoorRule rule;
   rule.max_door = clearance_of_width(options.max_door_width_m, 1.0);
   rule.min_door = clearance_of_width(options.min_door_width_m, -1.0);
+  // Never under two cells: a single wall speck narrows a passage by one.
   rule.constriction =
-      std::max(1, static_cast<int>(std::lround(kSide * options.door_constriction_m / res)));
+      std::max(2 * kSide, static_cast<int>(std::lround(kSide * options.door_constriction_m / res)));
   return rule;
 }
 

@@ -137,12 +137,15 @@ struct SegmentationOptions {
   // Passages of width in [min_door_width_m, max_door_width_m] between two
   // wider spaces split rooms. Widths are measured on cells (2 * clearance -
   // 1 cell), so both ends are taken with a tolerance of one cell. Narrower
-  // gaps (behind a cabinet, under a half-open door) and wider openings join.
-  double min_door_width_m = 0.7;
+  // gaps (behind a cabinet) and wider openings join. The lower end is below
+  // the narrowest door (0.7 m) because scan noise along the jambs and
+  // half-open doors narrow a doorway by 0.1 to 0.2 m in the map.
+  double min_door_width_m = 0.5;
   double max_door_width_m = 1.2;
   // A doorway is a narrowing: the clearance on each side must exceed the
   // passage's by this much, which keeps a corridor of steady width (with
-  // wall noise of a cell or two) in one piece. Suggested 0.05 to 0.2.
+  // wall noise of a cell or two) in one piece. At least two cells are
+  // used whatever the value. Suggested 0.05 to 0.2.
   double door_constriction_m = 0.1;
   // Pieces smaller than this join the neighbour they share the widest
   // passage with; free components smaller than this are no rooms (their

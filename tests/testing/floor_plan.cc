@@ -51,7 +51,7 @@ class Builder {
   void AddSide(int first_col, int length, int corridor_row, bool above, int depth);
   void AddFurniture(int room);
   bool Clear(int room, const Rect& rect, int margin) const;
-  void Occupy(const Rect& rect);
+  void Occupy(const Rect& rect, std::uint8_t kind = FloorPlan::kStandAlone);
   void AddNoise();
 
   FloorPlanOptions options_;
@@ -137,11 +137,11 @@ bool Builder::Clear(int room, const Rect& rect, int margin) const {
   return true;
 }
 
-void Builder::Occupy(const Rect& rect) {
+void Builder::Occupy(const Rect& rect, std::uint8_t kind) {
   for (int r = rect.r0; r <= rect.r1; ++r) {
     for (int c = rect.c0; c <= rect.c1; ++c) {
       const std::size_t i = plan_.grid.Index(c, r);
-      if (plan_.grid.cells()[i] == Cell::kFree) plan_.furniture[i] = 1;
+      if (plan_.grid.cells()[i] == Cell::kFree) plan_.furniture[i] = kind;
       plan_.grid.mutable_cells()[i] = Cell::kOccupied;
     }
   }
@@ -196,7 +196,7 @@ void Builder::AddFurniture(int room) {
       const Rect cabinet{c0, top ? area.r1 - h + 1 : area.r0, c0 + w - 1,
                          top ? area.r1 : area.r0 + h - 1};
       if (Clear(room, cabinet, 0)) {
-        Occupy(cabinet);
+        Occupy(cabinet, FloorPlan::kAgainstWall);
         ++plan_.furniture_objects;
         break;
       }

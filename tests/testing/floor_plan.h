@@ -41,7 +41,10 @@ struct FloorPlan {
   int room_count = 0;
   int corridor = 0;  // id of the corridor
   std::vector<FloorPlanDoor> doors;
-  // 1 where furniture occupies a cell that is free without it.
+  // Non-zero where furniture occupies a cell that is free without it:
+  // kStandAlone for tables, chairs and bins, kAgainstWall for cabinets.
+  static constexpr std::uint8_t kStandAlone = 1;
+  static constexpr std::uint8_t kAgainstWall = 2;
   std::vector<std::uint8_t> furniture;
   int furniture_objects = 0;  // tables, chairs, bins and cabinets placed
   std::string name;           // e.g. "seed3-thick-furnished-noisy"

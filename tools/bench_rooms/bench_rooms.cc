@@ -38,6 +38,7 @@ struct Totals {
   double recall = 0, precision = 0;
   int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
   std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
+  std::size_t standalone = 0, standalone_covered = 0;
   std::size_t blobs = 0, objects = 0;
   double ms = 0, mcells = 0;
 };
@@ -82,12 +83,15 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
     }
   }
   std::size_t furniture = 0, hit = 0, blocked = 0, blocked_furniture = 0;
+  std::size_t standalone = 0, standalone_hit = 0;
   for (std::size_t i = 0; i < grid.size(); ++i) {
-    furniture += plan.furniture[i];
+    furniture += plan.furniture[i] != 0;
     hit += plan.furniture[i] && covered[i];
+    standalone += plan.furniture[i] == testing::FloorPlan::kStandAlone;
+    standalone_hit += plan.furniture[i] == testing::FloorPlan::kStandAlone && covered[i];
     if (covered[i] && grid.cells()[i] != Cell::kFree) {
       ++blocked;
-      blocked_furniture += plan.furniture[i];
+      blocked_furniture += plan.furniture[i] != 0;
     }
   }
   t->recall += scores.recall;
@@ -99,6 +103,8 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
   t->rooms_found += static_cast<int>(seg.rooms.size());
   t->furniture += furniture;
   t->furniture_covered += hit;
+  t->standalone += standalone;
+  t->standalone_covered += standalone_hit;
   t->blob_blocked += blocked;
   t->blob_furniture += blocked_furniture;
   t->blobs += seg.blobs.size();
@@ -154,8 +160,8 @@ double Share(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) /
 int RunGenerated(int seeds, bool verbose, const std::string& dump) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
-      " furniture precision | blobs/objects | ms per Mcell |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+      " stand-alone furniture recall | furniture precision | blobs/objects | ms per Mcell |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
   for (int variant = 0; variant < 8; ++variant) {
     Totals t;
@@ -173,23 +179,28 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
         return 1;
       }
       Evaluate(plan, *seg, &t, verbose);
-      if (!dump.empty()) WritePpm(dump + "/" + plan.name + ".ppm", plan.grid, *seg);
       Evaluate(plan, *seg, &all, false);
+      if (!dump.empty()) WritePpm(dump + "/" + plan.name + ".ppm", plan.grid, *seg);
     }
+    const auto figure = [&](std::size_t a, std::size_t b) {
+      char text[32] = "-";
+      if (options.furniture) std::snprintf(text, sizeof(text), "%.3f", Share(a, b));
+      return std::string(text);
+    };
     std::printf(
-        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %zu/%zu | %.1f |\n",
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %zu/%zu | %.1f |\n",
         options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
         options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
-        t.doors, t.rooms_found, t.rooms_true,
-        options.furniture ? std::to_string(Share(t.furniture_covered, t.furniture)).c_str() : "-",
-        options.furniture ? std::to_string(Share(t.blob_furniture, t.blob_blocked)).c_str() : "-",
-        t.blobs, t.objects, t.ms / t.mcells);
+        t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
+        figure(t.standalone_covered, t.standalone).c_str(),
+        figure(t.blob_furniture, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
   }
   std::printf(
-      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %zu/%zu | %.1f |\n", all.plans,
-      all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
+      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %zu/%zu | %.1f |\n",
+      all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
       all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
-      Share(all.blob_furniture, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells);
+      Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
+      all.blobs, all.objects, all.ms / all.mcells);
   return 0;
 }
 
@@ -200,8 +211,9 @@ int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
   for (const std::string& path : paths) {
     StatusOr<Grid> grid = LoadRosMap(path);
     if (!grid.ok()) {
-      std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(), grid.status().message().c_str());
-      return 1;
+      std::fprintf(stderr, "bench_rooms: skipping %s: %s\n", path.c_str(),
+                   grid.status().message().c_str());
+      continue;
     }
     double best = 1e300;
     Segmentation seg;
@@ -256,6 +268,8 @@ int main(int argc, char** argv) {
     }
   }
   if (seeds < 0) seeds = 0;
-  if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
+  if (seeds > 0) {
+    if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
+  }
   return linemap::RunMaps(maps, dump);
 }

@@ -9,24 +9,27 @@ namespace {
 std::string Arena() { return testing::BundledMapsDir() + "/navtut/lse_arena.yaml"; }
 
 // The arena: a small room (bottom left in the picture) opens onto the rest
-// through a gap of about 1.2 m, so the default method finds two rooms.
+// through a gap of about 1.2 m, a pocket behind a wall stub through one of
+// 0.55 m, so the default method finds three rooms.
 TEST(CmdSegmentTest, WritesRoomsJsonAndPrintsCounts) {
   const std::string out = testing::MakeTempDir("cmd_segment_rooms") + "/arena.json";
   const testing::CliResult result = testing::RunCli({"segment", Arena(), "-o", out});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_NE(result.out.find("rooms: 2 (2 rooms, 0 corridors)  doors: 1  blobs: 0"),
+  EXPECT_NE(result.out.find("rooms: 3 (3 rooms, 0 corridors)  doors: 2  blobs: 0"),
             std::string::npos)
       << result.out;
   const std::string json = testing::ReadFile(out);
   EXPECT_EQ(json.rfind("{\"resolution\":0.05,\"method\":\"rooms\",\"timings_ms\":{", 0), 0u)
       << json.substr(0, 80);
-  // 4455 = the map's free cells (`linemap info`), 3672 + 783 of them.
-  EXPECT_NE(json.find("\"rooms\":[{\"id\":1,\"kind\":\"room\",\"area_m2\":9.18"), std::string::npos)
+  // 4455 = the map's free cells (`linemap info`) = 2874 + 783 + 798.
+  EXPECT_NE(json.find("\"rooms\":[{\"id\":1,\"kind\":\"room\",\"area_m2\":7.18"), std::string::npos)
       << json.substr(0, 300);
-  EXPECT_NE(json.find("\"cells\":3672,\"free_cells\":3672,"), std::string::npos);
+  EXPECT_NE(json.find("\"cells\":2874,\"free_cells\":2874,"), std::string::npos);
   EXPECT_NE(json.find("{\"id\":2,\"kind\":\"room\",\"area_m2\":1.9575"), std::string::npos);
   EXPECT_NE(json.find("\"cells\":783,\"free_cells\":783,"), std::string::npos);
+  EXPECT_NE(json.find("\"cells\":798,\"free_cells\":798,"), std::string::npos);
   EXPECT_NE(json.find("\"doors\":[{\"rooms\":[1,2],"), std::string::npos);
+  EXPECT_NE(json.find("{\"rooms\":[1,3],\"width_m\":0.55"), std::string::npos);
 }
 
 TEST(CmdSegmentTest, WritesPaperJsonAndPrintsCounts) {
@@ -50,7 +53,7 @@ TEST(CmdSegmentTest, WritesRoomsGeoJson) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const std::string json = testing::ReadFile(out);
   EXPECT_EQ(json.rfind("{\"type\":\"FeatureCollection\",\"features\":[", 0), 0u);
-  EXPECT_NE(json.find("\"properties\":{\"layer\":\"room\",\"id\":1,\"area_m2\":9.18"),
+  EXPECT_NE(json.find("\"properties\":{\"layer\":\"room\",\"id\":1,\"area_m2\":7.18"),
             std::string::npos)
       << json.substr(0, 200);
   EXPECT_NE(json.find("\"kind\":\"room\"}"), std::string::npos);

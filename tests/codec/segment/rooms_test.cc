@@ -186,10 +186,10 @@ Grid TwoRooms(int gap_cells) {
 }
 
 TEST(RoomsTest, SplitsOnlyAtDoorWidths) {
-  for (const int gap : {10, 16, 20, 24}) {  // 0.5 .. 1.2 m
+  for (const int gap : {6, 10, 16, 20, 24}) {  // 0.3 .. 1.2 m
     StatusOr<Segmentation> seg = SegmentMap(TwoRooms(gap));
     ASSERT_TRUE(seg.ok());
-    const std::size_t expected = gap >= 14 ? 2 : 1;  // 0.7 m and up is a door
+    const std::size_t expected = gap >= 10 ? 2 : 1;  // 0.5 m and up is a door
     EXPECT_EQ(seg->rooms.size(), expected) << "opening of " << gap << " cells";
     ExpectRoomInvariants(TwoRooms(gap), *seg, {}, "two rooms");
     if (expected == 2) {
@@ -214,11 +214,15 @@ TEST(RoomsTest, DoorRangeIsAnOption) {
   StatusOr<Segmentation> seg = SegmentMap(TwoRooms(20), options);  // 1.0 m
   ASSERT_TRUE(seg.ok());
   EXPECT_EQ(seg->rooms.size(), 1u);
-  options.min_door_width_m = 0.3;
+  options.min_door_width_m = 0.2;
   options.max_door_width_m = 1.2;
-  seg = SegmentMap(TwoRooms(10), options);  // 0.5 m
+  seg = SegmentMap(TwoRooms(6), options);  // 0.3 m
   ASSERT_TRUE(seg.ok());
   EXPECT_EQ(seg->rooms.size(), 2u);
+  options.min_door_width_m = 0.7;
+  seg = SegmentMap(TwoRooms(10), options);  // 0.5 m
+  ASSERT_TRUE(seg.ok());
+  EXPECT_EQ(seg->rooms.size(), 1u);
 }
 
 // A 1.0 m corridor 12 m long with ragged walls (cells bitten out on both
