@@ -95,29 +95,57 @@ std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
   return kept;
 }
 
+// True when every cell of `box` belongs to `room` (room space includes the
+// furniture candidates, so only walls, unknown cells and other rooms fail).
+bool BoxInRoom(const BoundingBox& box, std::int32_t room, const std::vector<std::int32_t>& room_of,
+               int width) {
+  for (int r = box.min_row; r <= box.max_row; ++r) {
+    const std::int32_t* row = room_of.data() + static_cast<std::size_t>(r) * width;
+    for (int c = box.min_col; c <= box.max_col; ++c) {
+      if (row[c] != room) return false;
+    }
+  }
+  return true;
+}
+
 // Union of pieces of one room whose boxes come within `gap` cells, found
-// through square buckets of the map.
-std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap) {
+// through square buckets of the map, as long as the group's box stays in
+// the room (its rim is the blob's outline, which must not run through a
+// wall, e.g. around the inner corner of an L-shaped room).
+std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
+                                      const std::vector<std::int32_t>& room_of, int width) {
   const std::int32_t n = static_cast<std::int32_t>(pieces.size());
   std::vector<std::int32_t> parent(n);
-  for (std::int32_t k = 0; k < n; ++k) parent[k] = k;
-  const int bucket = std::max(32, gap + 1);
+  std::vector<BoundingBox> group_box(n);
+  for (std::int32_t k = 0; k < n; ++k) {
+    parent[k] = k;
+    group_box[k] = pieces[k].box;
+  }
+  const int bucket = std::max(32, gap + 2);
   std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
   auto key = [](int bc, int br) {
     return (static_cast<std::int64_t>(br) << 32) ^ (bc & 0xffffffff);
   };
   for (std::int32_t k = 0; k < n; ++k) {
     const BoundingBox& b = pieces[k].box;
-    for (int br = b.min_row / bucket; br <= (b.max_row + gap) / bucket; ++br) {
-      for (int bc = b.min_col / bucket; bc <= (b.max_col + gap) / bucket; ++bc) {
+    // Boxes `gap` cells apart share a bucket when each reaches gap + 1
+    // cells past its far side.
+    for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
+      for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
         std::vector<std::int32_t>& list = buckets[key(bc, br)];
         for (const std::int32_t other : list) {
           const BoundingBox& o = pieces[other].box;
           const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
           const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
-          if (pieces[other].room == pieces[k].room && std::max(gap_c, gap_r) <= gap) {
-            parent[FindGroup(parent, k)] = FindGroup(parent, other);
-          }
+          if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
+          const std::int32_t a = FindGroup(parent, k);
+          const std::int32_t z = FindGroup(parent, other);
+          if (a == z) continue;
+          BoundingBox joined = group_box[a];
+          Extend(&joined, group_box[z]);
+          if (!BoxInRoom(joined, pieces[k].room, room_of, width)) continue;
+          parent[a] = z;
+          group_box[z] = joined;
         }
         list.push_back(k);
       }
@@ -133,7 +161,8 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
   const std::vector<Piece> pieces = FurniturePieces(grid, flood, on_chain);
   const int gap =
       std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
-  const std::vector<std::int32_t> group = GroupPieces(pieces, gap);
+  const std::vector<std::int32_t> group =
+      GroupPieces(pieces, gap, flood.room_of_cell, grid.width());
   std::vector<std::vector<std::int32_t>> members(pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) members[group[k]].push_back(k);
   std::vector<FurnitureBlob> blobs;

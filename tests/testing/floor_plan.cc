@@ -44,6 +44,7 @@ class Builder {
     FillRect(rect, Cell::kFree);
     LabelRect(rect, ++plan_.room_count);
     rooms_.push_back(rect);
+    alias_.push_back(plan_.room_count);
     return plan_.room_count;
   }
   void AddDoor(const Rect& opening, int a, int b, double width_m);
@@ -53,12 +54,16 @@ class Builder {
   bool Clear(int room, const Rect& rect, int margin) const;
   void Occupy(const Rect& rect, std::uint8_t kind = FloorPlan::kStandAlone);
   void AddNoise();
+  void AddNotch(int room, bool above);
+  void JoinOpenRooms();
 
   FloorPlanOptions options_;
   std::mt19937 rng_;
   FloorPlan plan_;
-  std::vector<Rect> rooms_;  // by id - 1
-  int wall_ = 1;             // wall thickness, cells
+  std::vector<Rect> rooms_;    // by id - 1
+  std::vector<int> alias_{0};  // by id: the room it is one with (wide openings)
+  int wall_ = 1;               // wall thickness, cells
+  double corridor_m_ = 2.0;    // corridor width
 };
 
 // A door across a wall: `opening` spans the wall's thickness; its cells are
@@ -99,13 +104,23 @@ void Builder::AddSide(int first_col, int length, int corridor_row, bool above, i
     room.r0 = above ? corridor.r1 + wall_ + 1 : corridor_row - wall_ - depth;
     room.r1 = room.r0 + depth - 1;
     const int id = AddRoom(room);
-    const double door_m = Uniform(0.7, 1.2);
+    // A door narrower than the corridor by 0.3 m at least: a door as wide
+    // as the corridor is no narrowing that anybody could see in the map.
+    const double door_m = Uniform(0.7, std::min(1.2, corridor_m_ - 0.3));
     const int door = Cells(door_m);
     const int dc = UniformInt(room.c0 + Cells(0.3), room.c1 - Cells(0.3) - door + 1);
     const Rect opening = above ? Rect{dc, corridor.r1 + 1, dc + door - 1, room.r0 - 1}
                                : Rect{dc, room.r1 + 1, dc + door - 1, corridor.r0 - 1};
     AddDoor(opening, id, plan_.corridor, door_m);
-    if (previous && Chance(0.35)) {
+    if (previous && Chance(0.15)) {
+      // A wide opening: the two rooms are one.
+      const int height = std::min(room.height(), rooms_[previous - 1].height());
+      const Rect opening{room.c0 - wall_, room.r0 + Cells(0.3), room.c0 - 1,
+                         room.r0 + height - Cells(0.3) - 1};
+      FillRect(opening, Cell::kFree);
+      LabelRect(opening, previous);
+      alias_[id] = alias_[previous];
+    } else if (previous && Chance(0.35)) {
       const double side_m = Uniform(0.7, 1.2);
       const int side = Cells(side_m);
       const int height = std::min(room.height(), rooms_[previous - 1].height());
@@ -224,11 +239,59 @@ void Builder::AddNoise() {
   }
 }
 
+// Makes the room an L: a block of wall in one of its back corners (away
+// from the corridor), unless a doorway is near.
+void Builder::AddNotch(int room, bool above) {
+  const Rect area = rooms_[room - 1];
+  const int w = static_cast<int>(area.width() * Uniform(0.3, 0.45));
+  const int h = static_cast<int>(area.height() * Uniform(0.3, 0.45));
+  const bool left = Chance(0.5);
+  Rect notch;
+  notch.c0 = left ? area.c0 : area.c1 - w + 1;
+  notch.c1 = notch.c0 + w - 1;
+  notch.r0 = above ? area.r1 - h + 1 : area.r0;
+  notch.r1 = notch.r0 + h - 1;
+  const int keep_off = Cells(0.6);
+  for (int r = notch.r0 - keep_off; r <= notch.r1 + keep_off; ++r) {
+    for (int c = notch.c0 - keep_off; c <= notch.c1 + keep_off; ++c) {
+      if (!plan_.grid.Contains(c, r)) continue;
+      const std::size_t i = plan_.grid.Index(c, r);
+      const bool doorway = plan_.grid.cells()[i] == Cell::kFree && plan_.room_of_cell[i] == 0;
+      const bool opening = plan_.grid.cells()[i] == Cell::kFree && plan_.room_of_cell[i] != room &&
+                           plan_.room_of_cell[i] != 0 && (c < area.c0 || c > area.c1);
+      if (doorway || opening) return;
+    }
+  }
+  FillRect(notch, Cell::kOccupied);
+  LabelRect(notch, 0);
+}
+
+// Rooms joined by wide openings get one id; ids are renumbered 1..n in
+// order, the doors follow.
+void Builder::JoinOpenRooms() {
+  std::vector<int> id_of(alias_.size(), 0);
+  int next = 0;
+  for (std::size_t k = 1; k < alias_.size(); ++k) {
+    int root = static_cast<int>(k);
+    while (alias_[root] != root) root = alias_[root];
+    if (!id_of[root]) id_of[root] = ++next;
+    id_of[k] = id_of[root];
+  }
+  for (std::int32_t& id : plan_.room_of_cell) id = id_of[id];
+  for (FloorPlanDoor& door : plan_.doors) {
+    door.room_a = id_of[door.room_a];
+    door.room_b = id_of[door.room_b];
+  }
+  plan_.corridor = id_of[plan_.corridor];
+  plan_.room_count = next;
+}
+
 FloorPlan Builder::Build() {
   const double res = options_.resolution;
   wall_ = options_.thick_walls ? Cells(Uniform(0.15, 0.30)) : Cells(Uniform(0.05, 0.10));
   const int margin = Cells(1.0);
-  const int corridor_w = Cells(Uniform(1.6, 2.4));
+  corridor_m_ = Uniform(1.4, 2.4);
+  const int corridor_w = Cells(corridor_m_);
   const int depth_below = Cells(Uniform(3.0, 5.0));
   const int depth_above = Cells(Uniform(3.0, 5.0));
   const int length = Cells(options_.rooms_per_side * 3.75);
@@ -245,12 +308,16 @@ FloorPlan Builder::Build() {
       AddRoom({first_col, corridor_row, first_col + length - 1, corridor_row + corridor_w - 1});
   AddSide(first_col, length, corridor_row, false, depth_below);
   AddSide(first_col, length, corridor_row, true, depth_above);
+  for (int id = 1; id <= plan_.room_count; ++id) {
+    if (id != plan_.corridor && Chance(0.3)) AddNotch(id, rooms_[id - 1].r0 > corridor_row);
+  }
   if (options_.furniture) {
     for (int id = 1; id <= plan_.room_count; ++id) {
       if (id != plan_.corridor) AddFurniture(id);
     }
   }
   if (options_.noise) AddNoise();
+  JoinOpenRooms();
   plan_.name = "seed" + std::to_string(options_.seed) +
                (options_.thick_walls ? "-thick" : "-thin") +
                (options_.furniture ? "-furnished" : "") + (options_.noise ? "-noisy" : "");

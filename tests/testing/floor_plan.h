@@ -1,7 +1,10 @@
 // Generated floor plans with ground truth, for the room segmentation's tests
-// and its bench (tools/bench_rooms): a corridor with rectangular rooms on
-// both sides, walls thin or thick, one open door of 0.7 to 1.2 m from each
-// room to the corridor and some between neighbouring rooms, optional
+// and its bench (tools/bench_rooms): a corridor 1.4 to 2.4 m wide with
+// rectangular rooms on both sides (some made L-shaped by a block of wall in
+// a back corner), walls thin or thick, one open door of 0.7 to 1.2 m (and at
+// least 0.3 m narrower than the corridor) from each room to the corridor,
+// doors between some neighbouring rooms and wide openings (over 2 m, which
+// make the two one room) between others, optional
 // furniture (table and chair legs, bins, cabinets against walls) and
 // optional scan noise (specks in the rooms, cells lost along the walls).
 // Everything outside the building is unknown.

@@ -11,7 +11,8 @@
 // the best match of its room), rooms found / true, and on furnished plans the
 // furniture figures cell by cell: recall = furniture cells inside a blob (its
 // cells or its outline's interior), precision = of the non-free cells blobs
-// cover, the share that is furniture. Then, per MAP, segmentation CPU time
+// cover, the share that is furniture (and the share that is no wall:
+// furniture or scan specks). Then, per MAP, segmentation CPU time
 // (best of 5) and ms per Mcell, rooms, corridors, doors and blobs.
 #include <algorithm>
 #include <cstdio>
@@ -38,7 +39,7 @@ struct Totals {
   double recall = 0, precision = 0;
   int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
   std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
-  std::size_t standalone = 0, standalone_covered = 0;
+  std::size_t standalone = 0, standalone_covered = 0, blob_not_wall = 0;
   std::size_t blobs = 0, objects = 0;
   double ms = 0, mcells = 0;
 };
@@ -83,7 +84,7 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
     }
   }
   std::size_t furniture = 0, hit = 0, blocked = 0, blocked_furniture = 0;
-  std::size_t standalone = 0, standalone_hit = 0;
+  std::size_t standalone = 0, standalone_hit = 0, not_wall = 0;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     furniture += plan.furniture[i] != 0;
     hit += plan.furniture[i] && covered[i];
@@ -92,6 +93,7 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
     if (covered[i] && grid.cells()[i] != Cell::kFree) {
       ++blocked;
       blocked_furniture += plan.furniture[i] != 0;
+      not_wall += plan.room_of_cell[i] != 0;  // furniture or a speck in a room
     }
   }
   t->recall += scores.recall;
@@ -105,6 +107,7 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
   t->furniture_covered += hit;
   t->standalone += standalone;
   t->standalone_covered += standalone_hit;
+  t->blob_not_wall += not_wall;
   t->blob_blocked += blocked;
   t->blob_furniture += blocked_furniture;
   t->blobs += seg.blobs.size();
@@ -160,8 +163,9 @@ double Share(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) /
 int RunGenerated(int seeds, bool verbose, const std::string& dump) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
-      " stand-alone furniture recall | furniture precision | blobs/objects | ms per Mcell |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+      " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
+      " ms per Mcell |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
   for (int variant = 0; variant < 8; ++variant) {
     Totals t;
@@ -188,19 +192,21 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
       return std::string(text);
     };
     std::printf(
-        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %zu/%zu | %.1f |\n",
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f |\n",
         options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
         options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
         t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
         figure(t.standalone_covered, t.standalone).c_str(),
-        figure(t.blob_furniture, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
+        figure(t.blob_furniture, t.blob_blocked).c_str(),
+        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
   }
   std::printf(
-      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %zu/%zu | %.1f |\n",
+      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %zu/%zu | %.1f "
+      "|\n",
       all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
       all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
       Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
-      all.blobs, all.objects, all.ms / all.mcells);
+      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells);
   return 0;
 }
 
