@@ -67,6 +67,33 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
 // component, left to right. Two or more = a room border for the paper.
 int MidLineEntries(const Labeling& labels, std::int32_t label);
 
+// --- SegmentationMethod::kRooms ---
+
+// Rooms from flooding the clearance (room_flood.cc).
+struct RoomFlood {
+  int width = 0;
+  int height = 0;
+  // 8-connected components of the non-free cells, and which of them are
+  // furniture candidates (enclosed, small, not a wall piece), by label.
+  Labeling enclosed;
+  std::vector<std::uint8_t> furniture_candidate;
+  // Chamfer 3-4 clearance on the grid padded by one cell on every side
+  // ((width + 2) x (height + 2)); 0 outside room space.
+  std::vector<std::uint16_t> clearance;
+  std::vector<std::int32_t> room_of_cell;  // grid cells, 0 = no room
+  std::int32_t room_count = 0;
+  std::vector<std::uint16_t> peak;  // by room id: largest clearance (chamfer units)
+  std::vector<Doorway> doors;
+};
+RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
+                     SegmentationTimings* timings);
+// Chamfer units to cells.
+double ClearanceCells(std::uint16_t chamfer);
+
+// Room chains, kinds and furniture blobs from the flood (room_chains.cc).
+void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood flood,
+                Segmentation* result);
+
 // CPU time of the calling thread in milliseconds, for the stage timers: on
 // an idle machine it equals wall time, on a shared one it is not inflated by
 // waiting for a core.

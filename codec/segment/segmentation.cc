@@ -16,7 +16,26 @@ namespace {
 
 double MsSince(double start) { return segment_internal::ThreadCpuMs() - start; }
 
+Status ValidateRoomOptions(const SegmentationOptions& options) {
+  const auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (!positive(options.min_door_width_m) || !positive(options.max_door_width_m) ||
+      options.min_door_width_m > options.max_door_width_m) {
+    return InvalidArgumentError(
+        "door widths must be positive, min_door_width_m <= max_door_width_m");
+  }
+  for (const double v :
+       {options.door_constriction_m, options.min_room_area_m2, options.max_furniture_area_m2,
+        options.wall_min_length_m, options.wall_max_thickness_m, options.furniture_group_m,
+        options.corridor_min_elongation}) {
+    if (!std::isfinite(v) || v < 0) {
+      return InvalidArgumentError("segmentation lengths and areas must be finite and >= 0");
+    }
+  }
+  return Status::Ok();
+}
+
 Status ValidateOptions(const SegmentationOptions& options) {
+  if (options.method == SegmentationMethod::kRooms) return ValidateRoomOptions(options);
   for (const auto* list : {&options.border_dilate, &options.border_erode}) {
     for (const StructuringElement& element : *list) {
       if (!element.Valid()) {
@@ -144,9 +163,23 @@ BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int 
   return fill;
 }
 
+const char* RoomKindName(RoomKind kind) {
+  return kind == RoomKind::kCorridor ? "corridor" : "room";
+}
+
 StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& options) {
   LINEMAP_RETURN_IF_ERROR(ValidateOptions(options));
   Segmentation result;
+  if (options.method == SegmentationMethod::kRooms) {
+    if (!(grid.meta.resolution > 0) || !std::isfinite(grid.meta.resolution)) {
+      return InvalidArgumentError("map resolution must be positive to segment rooms");
+    }
+    const double start = segment_internal::ThreadCpuMs();
+    segment_internal::BuildRooms(
+        grid, options, segment_internal::FloodRooms(grid, options, &result.timings), &result);
+    result.timings.total_ms = MsSince(start);
+    return result;
+  }
   const auto total_start = segment_internal::ThreadCpuMs();
   auto start = segment_internal::ThreadCpuMs();
   BinaryMask free(grid.width(), grid.height());

@@ -1,9 +1,33 @@
-// Room-border chains and furniture blobs (Kosteley et al., "Local navigation
-// map processing algorithm...", sections 3.2 B and C): binary morphology,
-// two-pass union-find labelling, and Lee-algorithm closure of room borders.
+// Room segmentation and furniture blobs.
 //
 // CONTRACT (fixed by the lead; extend, do not rename): the codec calls
 // SegmentMap() and stores rooms[i].chain and blobs[i].cells.
+//
+// Two methods (SegmentationOptions::method):
+//
+// kRooms (default): the free space is split into rooms and corridors at
+// doorways. Small obstacles the free space encloses (furniture, table legs,
+// scan specks) are first counted as room space, then the clearance of every
+// room cell (chamfer 3-4 distance to the nearest wall or unknown cell) is
+// flooded from the highest clearance down, merging the pieces that meet
+// (a merge tree, as the distance-transform method of Bormann et al.,
+// "Room Segmentation: Survey, Implementation, and Analysis", ICRA 2016, but
+// with every threshold at once instead of one global one). Two pieces that
+// meet at clearance s stay apart only when the passage there is a doorway:
+// its width (2 s - 1 cells) lies in [min_door_width_m, max_door_width_m] and
+// both pieces are wider than the passage by door_constriction_m on each side
+// (so the steady width of a corridor is no door, whatever its wall noise).
+// Pieces smaller than min_room_area_m2 are then merged into the neighbour
+// they share the widest passage with. Each room's chain is the outer
+// boundary of its own cells (Moore tracing), so two rooms' chains never
+// share a cell and the doorway is closed by the line where the two rooms'
+// cells meet. Furniture is the enclosed obstacles that are not wall pieces
+// (long and thin) and stay off every room chain.
+//
+// kPaperBorder: one chain per free component by Kosteley et al., "Local
+// navigation map processing algorithm...", sections 3.2 B and C: binary
+// morphology, two-pass union-find labelling, and Lee-algorithm closure of
+// room borders, read from a ROS grid as follows.
 //
 // How a ROS occupancy grid is read as the paper's room layout M_r:
 //   free space (3)  the room's free component (4-connected free cells holding
@@ -51,15 +75,45 @@
 
 namespace linemap {
 
+enum class SegmentationMethod {
+  kRooms,        // rooms and corridors split at doorways (default)
+  kPaperBorder,  // one Lee-closed chain per free component (Kosteley et al.)
+};
+
+enum class RoomKind { kRoom, kCorridor };
+// "room" or "corridor".
+const char* RoomKindName(RoomKind kind);
+
 struct RoomBorder {
   // Closed chain of border cells in traversal order: each cell is 8-adjacent
-  // to the next, and the last to the first.
+  // to the next, and the last to the first (a room of one cell: one cell).
+  // kRooms: the outer boundary of the room's own cells.
   std::vector<CellIndex> chain;
-  std::size_t free_cells = 0;           // cells of the room's free component
-  std::size_t enclosed_free_cells = 0;  // of those, inside the chain or on it
-  bool closed_by_lee = true;            // false: fallback outer contour of D
-  int border_components = 0;            // 8-connected components of the heavy border
-  int ring_components = 0;              // of those, room borders by the mid-line rule
+  std::size_t free_cells = 0;  // free cells of the room
+  // kPaperBorder: of those, inside the chain or on it.
+  std::size_t enclosed_free_cells = 0;
+  bool closed_by_lee = true;  // false: fallback outer contour of D
+  int border_components = 0;  // kPaperBorder: components of the heavy border
+  int ring_components = 0;    // of those, room borders by the mid-line rule
+  // kRooms only (kPaperBorder leaves the defaults):
+  int id = 0;  // 1..n, rooms numbered in raster order of their first cells
+  // Cells of the room: its free cells plus the furniture and specks it
+  // encloses. area_m2 = cells * resolution^2.
+  std::size_t cells = 0;
+  double area_m2 = 0;
+  RoomKind kind = RoomKind::kRoom;
+  CellIndex first_cell{};  // first cell in raster order (row 0 first)
+  BoundingBox box{};
+  // Widest free spot: 2 * largest clearance - 1 cell, in metres.
+  double width_m = 0;
+};
+
+// Where two rooms meet (kRooms): the passage between them, at its widest.
+struct Doorway {
+  int room_a = 0;  // room ids, room_a < room_b
+  int room_b = 0;
+  CellIndex cell;      // the passage's middle cell (largest clearance)
+  double width_m = 0;  // measured as 2 * clearance - 1 cell
 };
 
 struct FurnitureBlob {
@@ -71,10 +125,53 @@ struct FurnitureBlob {
   // steps). Where furniture_closing joined several pieces, it runs around
   // the joined shape, so it may pass over the closing's bridge cells.
   std::vector<CellIndex> outline;
+  // kRooms: the id of the room the blob stands in.
+  int room = 0;
 };
 
 struct SegmentationOptions {
-  std::optional<CellPoint> robot;  // cell units
+  SegmentationMethod method = SegmentationMethod::kRooms;
+
+  // --- kRooms (lengths in metres, areas in square metres; converted to
+  // cells with the map's resolution) ---
+  // Passages of width in [min_door_width_m, max_door_width_m] between two
+  // wider spaces split rooms. Widths are measured on cells (2 * clearance -
+  // 1 cell), so both ends are taken with a tolerance of one cell. Narrower
+  // gaps (behind a cabinet) and wider openings join. The lower end is below
+  // the narrowest door (0.7 m) because scan noise along the jambs and
+  // half-open doors narrow a doorway by 0.1 to 0.2 m in the map.
+  double min_door_width_m = 0.5;
+  double max_door_width_m = 1.2;
+  // A doorway is a narrowing: the clearance on each side must exceed the
+  // passage's by this much, which keeps a corridor of steady width (with
+  // wall noise of a cell or two) in one piece. At least two cells are
+  // used whatever the value. Suggested 0.05 to 0.2.
+  double door_constriction_m = 0.1;
+  // Pieces smaller than this join the neighbour they share the widest
+  // passage with; free components smaller than this are no rooms (their
+  // cells are left out). Suggested 0.5 to 2.
+  double min_room_area_m2 = 1.0;
+  // Enclosed obstacles (of the free space) up to this area are furniture
+  // candidates and count as room space when measuring clearance; larger
+  // ones (pillars of a hall, blocks of unscanned rooms) stay obstacles.
+  double max_furniture_area_m2 = 4.0;
+  // An enclosed obstacle at least this long whose mean thickness is at most
+  // wall_max_thickness_m is a piece of wall (between two doors), no
+  // furniture.
+  double wall_min_length_m = 1.5;
+  double wall_max_thickness_m = 0.35;
+  // Furniture pieces whose boxes come this close are one blob (the legs of
+  // a table or chair). Suggested 0.3 to 1.
+  double furniture_group_m = 0.8;
+  // Blobs with fewer occupied cells are scan specks, not furniture.
+  std::size_t min_furniture_cells = 3;
+  // A room is a corridor when area / width^2 is at least this (width: twice
+  // its largest clearance).
+  double corridor_min_elongation = 4.0;
+
+  // --- kPaperBorder (kRooms segments the whole map and ignores them) ---
+  // The robot's position selects its room (cell units).
+  std::optional<CellPoint> robot;
   // Without a robot, free components smaller than this are not rooms
   // (cells; default 400 = 1 m^2 at 0.05 m).
   std::size_t min_room_cells = 400;
@@ -105,6 +202,11 @@ struct SegmentationOptions {
 // (numbered as the paper's Table 1); on an idle machine this is the wall
 // time, on a busy one it leaves out the waiting for a core.
 struct SegmentationTimings {
+  // kRooms:
+  double clearance_ms = 0;  // enclosed obstacles, chamfer distance
+  double flooding_ms = 0;   // merge tree, small-piece merging, room labels
+  double chains_ms = 0;     // room chains, kinds, furniture blobs
+  // kPaperBorder:
   double room_layout_ms = 0;  // free components, enclosure (our pre-processing)
   double morphology_ms = 0;   // stage 1: dilations, erosions, subtraction
   double furniture_ms = 0;    // stage 2: furniture components (closing, labelling, outlines)
@@ -114,8 +216,15 @@ struct SegmentationTimings {
 };
 
 struct Segmentation {
-  std::vector<RoomBorder> rooms;  // largest free component first
+  // kRooms: in id order (rooms[i].id == i + 1); kPaperBorder: largest free
+  // component first.
+  std::vector<RoomBorder> rooms;
   std::vector<FurnitureBlob> blobs;
+  // kRooms: the room id of every grid cell (grid.Index order), 0 for cells
+  // in no room: walls, unknown, and free specks smaller than
+  // min_room_area_m2. Empty for kPaperBorder.
+  std::vector<std::int32_t> room_of_cell;
+  std::vector<Doorway> doors;  // kRooms
   SegmentationTimings timings;
 };
 

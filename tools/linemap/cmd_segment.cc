@@ -1,6 +1,7 @@
-// linemap segment MAP [--pose X,Y] -o OUT.json [--geojson]: room-border
-// chains and furniture blobs (Kosteley et al., section 3.2 B and C), written
-// in map-frame metres through cell centres.
+// linemap segment MAP -o OUT.json [--geojson] [--method rooms|paper]
+// [--pose X,Y] [--paper-border]: rooms split at doorways (default) or the
+// paper's room-border chains (Kosteley et al., section 3.2 B and C), and
+// furniture blobs, written in map-frame metres through cell centres.
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -15,21 +16,26 @@ namespace linemap::cli {
 
 const CommandSpec kSegmentSpec = {
     "segment",
-    "MAP [--pose X,Y] -o OUT.json [--geojson] [--paper-border]",
-    "find room-border chains and furniture blobs",
-    "Each room is the free space around the robot (--pose) or, without it, every\n"
-    "free component of at least 400 cells; its border is a closed chain of cells\n"
-    "(paper: morphology + Lee algorithm). Blobs are the obstacles the free space\n"
-    "encloses. Coordinates are map-frame metres of cell centres.",
+    "MAP -o OUT.json [--geojson] [--method rooms|paper] [--pose X,Y] [--paper-border]",
+    "split the free space into rooms at doorways; find furniture blobs",
+    "rooms (default): the free space is split into rooms and corridors at doorways\n"
+    "(passages 0.7-1.2 m wide narrower than both sides); each room is the closed\n"
+    "chain of its boundary cells, with an id, its area and its kind (room or\n"
+    "corridor). Blobs are stand-alone obstacles inside rooms (furniture).\n"
+    "paper: each room is the free space around the robot (--pose) or every free\n"
+    "component of at least 400 cells, its border closed by morphology and the Lee\n"
+    "algorithm. Coordinates are map-frame metres of cell centres.",
     WithMapLoadOptions({
-        {"--pose", "X,Y", "robot position in map-frame metres (default: all large rooms)"},
         {"-o", "OUT.json", "output file (required)"},
         {"--geojson", "",
-         "write GeoJSON (Polygon per room chain and blob outline, "
-         "property layer: room_border | furniture)"},
+         "write GeoJSON (Polygon per room with id, area_m2, kind and per blob "
+         "outline; Point per door; property layer: room | door | furniture, "
+         "room_border with --method paper)"},
+        {"--method", "rooms|paper", "segmentation method (default: rooms)"},
+        {"--pose", "X,Y", "robot position in map-frame metres (implies --method paper)"},
         {"--paper-border", "",
          "heavy border exactly as the paper: the shortest path may "
-         "also cut across narrow parts of the room (default: off)"},
+         "also cut across narrow parts of the room (implies --method paper)"},
     }),
     1,
     1,
@@ -126,6 +132,133 @@ std::string Feature(const std::string& layer, const std::string& ring, std::size
   return feature.str();
 }
 
+std::string GeoFeature(const JsonObject& props, const std::string& type,
+                       const std::string& coordinates) {
+  JsonObject geometry;
+  geometry.Add("type", type).AddRaw("coordinates", coordinates);
+  JsonObject feature;
+  feature.Add("type", "Feature")
+      .AddRaw("properties", props.str())
+      .AddRaw("geometry", geometry.str());
+  return feature.str();
+}
+
+// A blob's ring: its outline, or its box when the outline has fewer than
+// the 3 distinct points a GeoJSON ring needs.
+std::string BlobRing(const Grid& grid, const FurnitureBlob& blob) {
+  return blob.outline.size() >= 3 ? ChainJson(grid, blob.outline, true)
+                                  : BoxRingJson(grid, blob.box);
+}
+
+std::string DoorJson(const Grid& grid, const Doorway& door) {
+  JsonObject json;
+  json.AddRaw("rooms", "[" + std::to_string(door.room_a) + "," + std::to_string(door.room_b) + "]")
+      .Add("width_m", door.width_m)
+      .AddRaw("at", PointJson(grid, door.cell));
+  return json.str();
+}
+
+std::string RoomsPlainJson(const Grid& grid, const Segmentation& seg) {
+  std::string rooms = "[";
+  for (std::size_t i = 0; i < seg.rooms.size(); ++i) {
+    const RoomBorder& room = seg.rooms[i];
+    JsonObject json;
+    json.Add("id", room.id)
+        .Add("kind", RoomKindName(room.kind))
+        .Add("area_m2", room.area_m2)
+        .Add("cells", std::uint64_t{room.cells})
+        .Add("free_cells", std::uint64_t{room.free_cells})
+        .Add("width_m", room.width_m)
+        .Add("chain_cells", std::uint64_t{room.chain.size()})
+        .AddRaw("chain", ChainJson(grid, room.chain, false));
+    rooms += (i ? "," : "") + json.str();
+  }
+  std::string doors = "[";
+  for (std::size_t i = 0; i < seg.doors.size(); ++i) {
+    doors += (i ? "," : "") + DoorJson(grid, seg.doors[i]);
+  }
+  std::string blobs = "[";
+  for (std::size_t i = 0; i < seg.blobs.size(); ++i) {
+    const FurnitureBlob& blob = seg.blobs[i];
+    JsonObject json;
+    json.Add("room", blob.room)
+        .Add("cell_count", std::uint64_t{blob.cell_count})
+        .AddRaw("first_cell", PointJson(grid, blob.first_cell))
+        .AddRaw("bbox", BoxJson(grid, blob.box))
+        .AddRaw("outline", ChainJson(grid, blob.outline, false));
+    blobs += (i ? "," : "") + json.str();
+  }
+  const SegmentationTimings& t = seg.timings;
+  JsonObject timings;
+  timings.Add("clearance", t.clearance_ms)
+      .Add("flooding", t.flooding_ms)
+      .Add("chains", t.chains_ms)
+      .Add("total", t.total_ms);
+  JsonObject top;
+  top.Add("resolution", grid.meta.resolution)
+      .Add("method", "rooms")
+      .AddRaw("timings_ms", timings.str())
+      .AddRaw("rooms", rooms + "]")
+      .AddRaw("doors", doors + "]")
+      .AddRaw("blobs", blobs + "]");
+  return top.str() + "\n";
+}
+
+std::string RoomsGeoJson(const Grid& grid, const Segmentation& seg) {
+  std::string features;
+  auto add = [&](const std::string& feature) {
+    features += (features.empty() ? "" : ",") + feature;
+  };
+  for (const RoomBorder& room : seg.rooms) {
+    JsonObject props;
+    props.Add("layer", "room")
+        .Add("id", room.id)
+        .Add("area_m2", room.area_m2)
+        .Add("kind", RoomKindName(room.kind));
+    // A ring needs 3 distinct points; a room that thin gets its box.
+    const std::string ring =
+        room.chain.size() >= 3 ? ChainJson(grid, room.chain, true) : BoxRingJson(grid, room.box);
+    add(GeoFeature(props, "Polygon", "[" + ring + "]"));
+  }
+  for (const Doorway& door : seg.doors) {
+    JsonObject props;
+    props.Add("layer", "door")
+        .AddRaw("rooms",
+                "[" + std::to_string(door.room_a) + "," + std::to_string(door.room_b) + "]")
+        .Add("width_m", door.width_m);
+    add(GeoFeature(props, "Point", PointJson(grid, door.cell)));
+  }
+  for (std::size_t i = 0; i < seg.blobs.size(); ++i) {
+    const FurnitureBlob& blob = seg.blobs[i];
+    JsonObject props;
+    props.Add("layer", "furniture")
+        .Add("index", std::uint64_t{i})
+        .Add("room", blob.room)
+        .Add("cells", std::uint64_t{blob.cell_count})
+        .AddRaw("bbox", BoxJson(grid, blob.box));
+    add(GeoFeature(props, "Polygon", "[" + BlobRing(grid, blob) + "]"));
+  }
+  JsonObject top;
+  top.Add("type", "FeatureCollection").AddRaw("features", "[" + features + "]");
+  return top.str() + "\n";
+}
+
+void PrintRooms(const Segmentation& seg, double wall_ms) {
+  std::size_t corridors = 0;
+  for (const RoomBorder& room : seg.rooms) corridors += room.kind == RoomKind::kCorridor;
+  std::printf(
+      "rooms: %zu (%zu rooms, %zu corridors)  doors: %zu  blobs: %zu  time: %.2f ms (wall)\n",
+      seg.rooms.size(), seg.rooms.size() - corridors, corridors, seg.doors.size(), seg.blobs.size(),
+      wall_ms);
+  for (const RoomBorder& room : seg.rooms) {
+    std::printf("room %d: %-8s %8.2f m^2  width %.2f m  chain %zu cells\n", room.id,
+                RoomKindName(room.kind), room.area_m2, room.width_m, room.chain.size());
+  }
+  const SegmentationTimings& t = seg.timings;
+  std::printf("stages (CPU ms): clearance %.2f  flooding %.2f  chains and furniture %.2f\n",
+              t.clearance_ms, t.flooding_ms, t.chains_ms);
+}
+
 std::string GeoJson(const Grid& grid, const Segmentation& seg) {
   std::string features;
   for (std::size_t i = 0; i < seg.rooms.size(); ++i) {
@@ -159,6 +292,18 @@ int RunSegment(const std::vector<std::string>& args) {
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("segment", grid.status());
   SegmentationOptions options;
+  const std::optional<std::string> method = parsed->Get("--method");
+  if (method && *method != "rooms" && *method != "paper") {
+    return ReportError(
+        "segment", InvalidArgumentError("--method must be rooms or paper, not '" + *method + "'"));
+  }
+  const bool paper =
+      (method && *method == "paper") || parsed->Has("--pose") || parsed->Has("--paper-border");
+  if (method && *method == "rooms" && (parsed->Has("--pose") || parsed->Has("--paper-border"))) {
+    return ReportError("segment",
+                       InvalidArgumentError("--pose and --paper-border need --method paper"));
+  }
+  options.method = paper ? SegmentationMethod::kPaperBorder : SegmentationMethod::kRooms;
   if (parsed->Has("--pose")) {
     StatusOr<std::vector<double>> pose = parsed->GetDoubleList("--pose", 2);
     if (!pose.ok()) return ReportError("segment", pose.status());
@@ -172,9 +317,16 @@ int RunSegment(const std::vector<std::string>& args) {
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!seg.ok()) return ReportError("segment", seg.status().WithContext(map_path));
-  const std::string text = parsed->Has("--geojson") ? GeoJson(*grid, *seg) : PlainJson(*grid, *seg);
+  const bool geojson = parsed->Has("--geojson");
+  const std::string text =
+      paper ? (geojson ? GeoJson(*grid, *seg) : PlainJson(*grid, *seg))
+            : (geojson ? RoomsGeoJson(*grid, *seg) : RoomsPlainJson(*grid, *seg));
   const Status written = WriteFileAtomic(*out_path, text);
   if (!written.ok()) return ReportError("segment", written.WithContext(*out_path));
+  if (!paper) {
+    PrintRooms(*seg, ms);
+    return kExitOk;
+  }
   const SegmentationTimings& t = seg->timings;
   std::printf("rooms: %zu  blobs: %zu  time: %.2f ms (wall)\n", seg->rooms.size(),
               seg->blobs.size(), ms);

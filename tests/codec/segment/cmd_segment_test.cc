@@ -8,9 +8,34 @@ namespace {
 
 std::string Arena() { return testing::BundledMapsDir() + "/navtut/lse_arena.yaml"; }
 
-TEST(CmdSegmentTest, WritesJsonAndPrintsCounts) {
-  const std::string out = testing::MakeTempDir("cmd_segment") + "/arena.json";
+// The arena: a small room (bottom left in the picture) opens onto the rest
+// through a gap of about 1.2 m, a pocket behind a wall stub through one of
+// 0.55 m, so the default method finds three rooms.
+TEST(CmdSegmentTest, WritesRoomsJsonAndPrintsCounts) {
+  const std::string out = testing::MakeTempDir("cmd_segment_rooms") + "/arena.json";
   const testing::CliResult result = testing::RunCli({"segment", Arena(), "-o", out});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("rooms: 3 (3 rooms, 0 corridors)  doors: 2  blobs: 0"),
+            std::string::npos)
+      << result.out;
+  const std::string json = testing::ReadFile(out);
+  EXPECT_EQ(json.rfind("{\"resolution\":0.05,\"method\":\"rooms\",\"timings_ms\":{", 0), 0u)
+      << json.substr(0, 80);
+  // 4455 = the map's free cells (`linemap info`) = 2874 + 783 + 798.
+  EXPECT_NE(json.find("\"rooms\":[{\"id\":1,\"kind\":\"room\",\"area_m2\":7.18"), std::string::npos)
+      << json.substr(0, 300);
+  EXPECT_NE(json.find("\"cells\":2874,\"free_cells\":2874,"), std::string::npos);
+  EXPECT_NE(json.find("{\"id\":2,\"kind\":\"room\",\"area_m2\":1.9575"), std::string::npos);
+  EXPECT_NE(json.find("\"cells\":783,\"free_cells\":783,"), std::string::npos);
+  EXPECT_NE(json.find("\"cells\":798,\"free_cells\":798,"), std::string::npos);
+  EXPECT_NE(json.find("\"doors\":[{\"rooms\":[1,2],"), std::string::npos);
+  EXPECT_NE(json.find("{\"rooms\":[1,3],\"width_m\":0.55"), std::string::npos);
+}
+
+TEST(CmdSegmentTest, WritesPaperJsonAndPrintsCounts) {
+  const std::string out = testing::MakeTempDir("cmd_segment") + "/arena.json";
+  const testing::CliResult result =
+      testing::RunCli({"segment", Arena(), "--method", "paper", "-o", out});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("rooms: 1"), std::string::npos) << result.out;
   const std::string json = testing::ReadFile(out);
@@ -20,6 +45,24 @@ TEST(CmdSegmentTest, WritesJsonAndPrintsCounts) {
   EXPECT_NE(json.find("\"rooms\":[{\"free_cells\":4455,"), std::string::npos);
   EXPECT_NE(json.find("\"closed_by_lee\":true"), std::string::npos);
   EXPECT_NE(json.find("\"blobs\":["), std::string::npos);
+}
+
+TEST(CmdSegmentTest, WritesRoomsGeoJson) {
+  const std::string out = testing::MakeTempDir("cmd_segment_rooms_geo") + "/arena.geojson";
+  const testing::CliResult result = testing::RunCli({"segment", Arena(), "--geojson", "-o", out});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string json = testing::ReadFile(out);
+  EXPECT_EQ(json.rfind("{\"type\":\"FeatureCollection\",\"features\":[", 0), 0u);
+  EXPECT_NE(json.find("\"properties\":{\"layer\":\"room\",\"id\":1,\"area_m2\":7.18"),
+            std::string::npos)
+      << json.substr(0, 200);
+  EXPECT_NE(json.find("\"kind\":\"room\"}"), std::string::npos);
+  EXPECT_NE(json.find("\"layer\":\"door\",\"rooms\":[1,2]"), std::string::npos);
+  EXPECT_NE(json.find("\"type\":\"Point\""), std::string::npos);
+  EXPECT_EQ(testing::RunCli({"segment", Arena(), "--method", "voronoi", "-o", out}).exit_code, 2);
+  EXPECT_EQ(testing::RunCli({"segment", Arena(), "--method", "rooms", "--pose", "1,1", "-o", out})
+                .exit_code,
+            2);
 }
 
 TEST(CmdSegmentTest, WritesGeoJson) {

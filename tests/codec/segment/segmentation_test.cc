@@ -37,6 +37,14 @@ Grid SyntheticRoom() {
   return grid;
 }
 
+// These tests cover the paper's method; the default (rooms split at
+// doorways) is tested in rooms_test.cc.
+SegmentationOptions Paper() {
+  SegmentationOptions options;
+  options.method = SegmentationMethod::kPaperBorder;
+  return options;
+}
+
 void ExpectClosedChain(const std::vector<CellIndex>& chain, const std::string& what) {
   ASSERT_GE(chain.size(), 1u) << what;
   for (std::size_t i = 0; i < chain.size() && chain.size() > 1; ++i) {
@@ -90,7 +98,7 @@ TEST(FillChainPolygonTest, MatchesRayTestOnHandShapes) {
 
 TEST(SegmentationTest, SyntheticRoomWithFurniturePillarAndSurge) {
   const Grid grid = SyntheticRoom();
-  StatusOr<Segmentation> seg = SegmentMap(grid);
+  StatusOr<Segmentation> seg = SegmentMap(grid, Paper());
   ASSERT_TRUE(seg.ok()) << seg.status().message();
   ASSERT_EQ(seg->rooms.size(), 1u);
   const RoomBorder& room = seg->rooms[0];
@@ -137,7 +145,7 @@ TEST(SegmentationTest, SyntheticRoomWithFurniturePillarAndSurge) {
 }
 
 TEST(SegmentationTest, PaperBorderAlsoCutsTheSurge) {
-  SegmentationOptions options;
+  SegmentationOptions options = Paper();
   options.protect_room_interior = false;
   options.robot = CellPoint{30, 20};
   StatusOr<Segmentation> seg = SegmentMap(SyntheticRoom(), options);
@@ -155,10 +163,10 @@ TEST(SegmentationTest, RobotPicksItsRoom) {
   Fill(&grid, 3, 3, 29, 26, Cell::kFree);
   Fill(&grid, 38, 2, 67, 27, Cell::kOccupied);
   Fill(&grid, 39, 3, 66, 26, Cell::kFree);
-  StatusOr<Segmentation> both = SegmentMap(grid);
+  StatusOr<Segmentation> both = SegmentMap(grid, Paper());
   ASSERT_TRUE(both.ok());
   EXPECT_EQ(both->rooms.size(), 2u);
-  SegmentationOptions options;
+  SegmentationOptions options = Paper();
   options.robot = CellPoint{50.2, 10.0};
   StatusOr<Segmentation> one = SegmentMap(grid, options);
   ASSERT_TRUE(one.ok());
@@ -183,7 +191,7 @@ TEST(SegmentationTest, RobotOnTheLowerEdgeIsOnTheMap) {
   Grid grid(30, 20, Cell::kFree);
   grid.meta.resolution = 0.1;
   grid.meta.origin = {2.0, -1.0, 0.0};
-  SegmentationOptions options;
+  SegmentationOptions options = Paper();
   options.robot = CellPoint{-0.5, -0.5};
   StatusOr<Segmentation> seg = SegmentMap(grid, options);
   ASSERT_TRUE(seg.ok()) << seg.status().message();
@@ -198,7 +206,7 @@ TEST(SegmentationTest, RobotOnTheLowerEdgeIsOnTheMap) {
 
 TEST(SegmentationTest, EmptyAndUnknownGridsHaveNoRooms) {
   for (const Grid& grid : {Grid(), Grid(20, 10, Cell::kUnknown), Grid(20, 10, Cell::kOccupied)}) {
-    StatusOr<Segmentation> seg = SegmentMap(grid);
+    StatusOr<Segmentation> seg = SegmentMap(grid, Paper());
     ASSERT_TRUE(seg.ok());
     EXPECT_TRUE(seg->rooms.empty());
     EXPECT_TRUE(seg->blobs.empty());
@@ -208,7 +216,7 @@ TEST(SegmentationTest, EmptyAndUnknownGridsHaveNoRooms) {
 TEST(SegmentationTest, RoomFillingTheWholeMapFollowsTheMapEdge) {
   Grid grid(40, 30, Cell::kFree);
   Fill(&grid, 10, 10, 12, 12, Cell::kOccupied);  // one 3 x 3 blob
-  StatusOr<Segmentation> seg = SegmentMap(grid);
+  StatusOr<Segmentation> seg = SegmentMap(grid, Paper());
   ASSERT_TRUE(seg.ok());
   ASSERT_EQ(seg->rooms.size(), 1u);
   const RoomBorder& room = seg->rooms[0];
@@ -233,7 +241,7 @@ TEST(SegmentationTest, BorderWithoutInsideFallsBackToTheOuterContour) {
   // outer contour of D (here rows 7..13 around the streak on row 10).
   Grid grid(40, 21, Cell::kUnknown);
   Fill(&grid, 10, 10, 29, 10, Cell::kFree);
-  StatusOr<Segmentation> seg = SegmentMap(grid);
+  StatusOr<Segmentation> seg = SegmentMap(grid, Paper());
   ASSERT_TRUE(seg.ok());
   ASSERT_EQ(seg->rooms.size(), 1u);
   const RoomBorder& room = seg->rooms[0];
@@ -250,7 +258,7 @@ TEST(SegmentationTest, BorderWithoutInsideFallsBackToTheOuterContour) {
 }
 
 TEST(SegmentationTest, RejectsEvenStructuringElements) {
-  SegmentationOptions options;
+  SegmentationOptions options = Paper();
   StructuringElement even;
   even.width = 2;
   even.height = 2;
@@ -300,7 +308,7 @@ TEST(SegmentationTest, EveryRoomChainClosedOnSharedMaps) {
   for (const std::string& path : maps) {
     StatusOr<Grid> grid = LoadRosMap(path);
     if (!grid.ok()) continue;  // e.g. a YAML naming an image that is not there
-    StatusOr<Segmentation> seg = SegmentMap(*grid);
+    StatusOr<Segmentation> seg = SegmentMap(*grid, Paper());
     ASSERT_TRUE(seg.ok()) << path << ": " << seg.status().message();
     ASSERT_FALSE(seg->rooms.empty()) << path;
     for (const RoomBorder& room : seg->rooms) {

@@ -1,0 +1,253 @@
+// Rooms split at doorways (SegmentationMethod::kRooms), steps 4 and 5:
+//   4. each room's chain is the outer boundary of its own cells (Moore
+//      tracing), so chains of two rooms never share a cell; its kind comes
+//      from its elongation (area over the square of its width);
+//   5. furniture: the furniture candidates of step 1 that keep off every
+//      room chain (an obstacle within a cell of a chain hugs a wall or sits
+//      in a doorway), grouped by nearness within their room (the legs of a
+//      table or a chair), and kept when they have enough occupied cells to
+//      be more than a scan speck.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "codec/segment/segment_internal.h"
+
+namespace linemap::segment_internal {
+namespace {
+
+struct Piece {
+  std::int32_t label = 0;  // in flood.enclosed
+  std::int32_t room = 0;
+  BoundingBox box;
+  std::vector<CellIndex> occupied;
+};
+
+std::int32_t FindGroup(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+// The cells on the rim of a box as a closed chain of 8-adjacent cells.
+std::vector<CellIndex> BoxRing(const BoundingBox& box) {
+  std::vector<CellIndex> ring;
+  for (int c = box.min_col; c <= box.max_col; ++c) ring.push_back({c, box.min_row});
+  for (int r = box.min_row + 1; r <= box.max_row; ++r) ring.push_back({box.max_col, r});
+  if (box.max_row > box.min_row) {
+    for (int c = box.max_col - 1; c >= box.min_col; --c) ring.push_back({c, box.max_row});
+  } else {
+    for (int c = box.max_col - 1; c > box.min_col; --c) ring.push_back({c, box.min_row});
+  }
+  for (int r = box.max_row - 1; r > box.min_row; --r) ring.push_back({box.min_col, r});
+  return ring;
+}
+
+void Extend(BoundingBox* box, const BoundingBox& other) {
+  box->min_col = std::min(box->min_col, other.min_col);
+  box->min_row = std::min(box->min_row, other.min_row);
+  box->max_col = std::max(box->max_col, other.max_col);
+  box->max_row = std::max(box->max_row, other.max_row);
+}
+
+// Furniture candidates that stand in a room and keep off every chain.
+std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
+                                   const std::vector<std::uint8_t>& on_chain) {
+  const std::size_t labels = flood.enclosed.components.size();
+  std::vector<std::int32_t> piece_of(labels + 1, -1);
+  std::vector<std::uint8_t> rejected(labels + 1, 0);
+  std::vector<Piece> pieces;
+  const int w = grid.width();
+  const int h = grid.height();
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = grid.Index(c, r);
+      const std::int32_t label = flood.enclosed.labels[i];
+      if (!label || !flood.furniture_candidate[label] || rejected[label]) continue;
+      bool touches = false;
+      for (int dr = -1; dr <= 1 && !touches; ++dr) {
+        for (int dc = -1; dc <= 1 && !touches; ++dc) {
+          const int nc = c + dc, nr = r + dr;
+          touches = nc >= 0 && nr >= 0 && nc < w && nr < h && on_chain[grid.Index(nc, nr)];
+        }
+      }
+      if (touches || flood.room_of_cell[i] == 0) {
+        rejected[label] = 1;
+        continue;
+      }
+      if (piece_of[label] < 0) {
+        piece_of[label] = static_cast<std::int32_t>(pieces.size());
+        Piece piece;
+        piece.label = label;
+        piece.room = flood.room_of_cell[i];
+        piece.box = flood.enclosed.components[label - 1].box;
+        pieces.push_back(std::move(piece));
+      }
+      if (grid.cells()[i] == Cell::kOccupied) pieces[piece_of[label]].occupied.push_back({c, r});
+    }
+  }
+  std::vector<Piece> kept;
+  for (Piece& piece : pieces) {
+    if (!rejected[piece.label] && !piece.occupied.empty()) kept.push_back(std::move(piece));
+  }
+  return kept;
+}
+
+// True when every cell of `box` belongs to `room` (room space includes the
+// furniture candidates, so only walls, unknown cells and other rooms fail).
+bool BoxInRoom(const BoundingBox& box, std::int32_t room, const std::vector<std::int32_t>& room_of,
+               int width) {
+  for (int r = box.min_row; r <= box.max_row; ++r) {
+    const std::int32_t* row = room_of.data() + static_cast<std::size_t>(r) * width;
+    for (int c = box.min_col; c <= box.max_col; ++c) {
+      if (row[c] != room) return false;
+    }
+  }
+  return true;
+}
+
+// Union of pieces of one room whose boxes come within `gap` cells, found
+// through square buckets of the map, as long as the group's box stays in
+// the room (its rim is the blob's outline, which must not run through a
+// wall, e.g. around the inner corner of an L-shaped room).
+std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
+                                      const std::vector<std::int32_t>& room_of, int width) {
+  const std::int32_t n = static_cast<std::int32_t>(pieces.size());
+  std::vector<std::int32_t> parent(n);
+  std::vector<BoundingBox> group_box(n);
+  for (std::int32_t k = 0; k < n; ++k) {
+    parent[k] = k;
+    group_box[k] = pieces[k].box;
+  }
+  const int bucket = std::max(32, gap + 2);
+  std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
+  auto key = [](int bc, int br) {
+    return (static_cast<std::int64_t>(br) << 32) ^ (bc & 0xffffffff);
+  };
+  for (std::int32_t k = 0; k < n; ++k) {
+    const BoundingBox& b = pieces[k].box;
+    // Boxes `gap` cells apart share a bucket when each reaches gap + 1
+    // cells past its far side.
+    for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
+      for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
+        std::vector<std::int32_t>& list = buckets[key(bc, br)];
+        for (const std::int32_t other : list) {
+          const BoundingBox& o = pieces[other].box;
+          const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
+          const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
+          if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
+          const std::int32_t a = FindGroup(parent, k);
+          const std::int32_t z = FindGroup(parent, other);
+          if (a == z) continue;
+          BoundingBox joined = group_box[a];
+          Extend(&joined, group_box[z]);
+          if (!BoxInRoom(joined, pieces[k].room, room_of, width)) continue;
+          parent[a] = z;
+          group_box[z] = joined;
+        }
+        list.push_back(k);
+      }
+    }
+  }
+  for (std::int32_t k = 0; k < n; ++k) parent[k] = FindGroup(parent, k);
+  return parent;
+}
+
+std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
+                                      const SegmentationOptions& options,
+                                      const std::vector<std::uint8_t>& on_chain) {
+  const std::vector<Piece> pieces = FurniturePieces(grid, flood, on_chain);
+  const int gap =
+      std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
+  const std::vector<std::int32_t> group =
+      GroupPieces(pieces, gap, flood.room_of_cell, grid.width());
+  std::vector<std::vector<std::int32_t>> members(pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) members[group[k]].push_back(k);
+  std::vector<FurnitureBlob> blobs;
+  for (const std::vector<std::int32_t>& list : members) {
+    if (list.empty()) continue;
+    FurnitureBlob blob;
+    blob.room = pieces[list[0]].room;
+    blob.box = pieces[list[0]].box;
+    for (const std::int32_t k : list) {
+      blob.cells.insert(blob.cells.end(), pieces[k].occupied.begin(), pieces[k].occupied.end());
+      Extend(&blob.box, pieces[k].box);
+    }
+    if (blob.cells.size() < options.min_furniture_cells) continue;
+    std::sort(blob.cells.begin(), blob.cells.end(), [](const CellIndex& a, const CellIndex& b) {
+      return a.row != b.row ? a.row < b.row : a.col < b.col;
+    });
+    blob.cell_count = blob.cells.size();
+    blob.first_cell = blob.cells.front();
+    // One piece: its own outline (around its unknown core too); several:
+    // the rim of their common box.
+    blob.outline = list.size() == 1 ? TraceOuterContour(flood.enclosed, pieces[list[0]].label)
+                                    : BoxRing(blob.box);
+    blobs.push_back(std::move(blob));
+  }
+  std::sort(blobs.begin(), blobs.end(), [](const FurnitureBlob& a, const FurnitureBlob& b) {
+    return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row
+                                                : a.first_cell.col < b.first_cell.col;
+  });
+  return blobs;
+}
+
+}  // namespace
+
+void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood flood,
+                Segmentation* result) {
+  const double start = ThreadCpuMs();
+  const double res = grid.meta.resolution;
+  const int w = grid.width();
+  const int h = grid.height();
+  Labeling rooms;
+  rooms.width = w;
+  rooms.height = h;
+  rooms.components.resize(flood.room_count);
+  std::vector<std::size_t> free_cells(flood.room_count, 0);
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = grid.Index(c, r);
+      const std::int32_t id = flood.room_of_cell[i];
+      if (!id) continue;
+      ComponentStats& stats = rooms.components[id - 1];
+      if (stats.cell_count++ == 0) {
+        stats.first_cell = {c, r};
+        stats.box = {c, r, c, r};
+      }
+      stats.box.min_col = std::min(stats.box.min_col, c);
+      stats.box.max_col = std::max(stats.box.max_col, c);
+      stats.box.max_row = r;
+      free_cells[id - 1] += grid.cells()[i] == Cell::kFree;
+    }
+  }
+  rooms.labels = std::move(flood.room_of_cell);
+  std::vector<std::uint8_t> on_chain(grid.size(), 0);
+  for (std::int32_t id = 1; id <= flood.room_count; ++id) {
+    const ComponentStats& stats = rooms.components[id - 1];
+    RoomBorder room;
+    room.chain = TraceOuterContour(rooms, id);
+    for (const CellIndex& cell : room.chain) on_chain[grid.Index(cell.col, cell.row)] = 1;
+    room.id = id;
+    room.cells = stats.cell_count;
+    room.free_cells = free_cells[id - 1];
+    room.area_m2 = static_cast<double>(stats.cell_count) * res * res;
+    room.first_cell = stats.first_cell;
+    room.box = stats.box;
+    const double width_cells = std::max(1.0, 2.0 * ClearanceCells(flood.peak[id]) - 1.0);
+    room.width_m = width_cells * res;
+    const double elongation = static_cast<double>(stats.cell_count) / (width_cells * width_cells);
+    room.kind =
+        elongation >= options.corridor_min_elongation ? RoomKind::kCorridor : RoomKind::kRoom;
+    result->rooms.push_back(std::move(room));
+  }
+  flood.room_of_cell = std::move(rooms.labels);
+  result->blobs = BuildBlobs(grid, flood, options, on_chain);
+  result->room_of_cell = std::move(flood.room_of_cell);
+  result->doors = std::move(flood.doors);
+  result->timings.chains_ms += ThreadCpuMs() - start;
+}
+
+}  // namespace linemap::segment_internal

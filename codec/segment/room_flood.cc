@@ -1,0 +1,391 @@
+// Rooms split at doorways (SegmentationMethod::kRooms), steps 1 to 3:
+//   1. enclosed obstacles: furniture candidates count as room space;
+//   2. clearance: chamfer 3-4 distance of every room-space cell to the
+//      nearest wall or unknown cell (the map edge counts as wall);
+//   3. flooding from the highest clearance down with a union-find (a merge
+//      tree): pieces that meet at a doorway stay apart, all others join;
+//      then pieces joined only through passages narrower than a door, and
+//      pieces smaller than a room, are merged into their neighbours.
+// The work is done on a copy of the grid padded by one wall cell on every
+// side, so that neighbours are index offsets without bounds checks.
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <unordered_map>
+
+#include "codec/segment/segment_internal.h"
+
+namespace linemap::segment_internal {
+namespace {
+
+// Chamfer 3-4 steps: 3 per side step, 4 per diagonal step (error < 8 %).
+constexpr int kSide = 3;
+constexpr int kDiagonal = 4;
+constexpr std::uint16_t kFar = 0xffff;
+
+// A thin shape of area A and perimeter P (cell edges) is about P / 2 long
+// and 2 A / P thick, whatever its bends (an L or a T of wall between doors).
+bool IsWallPiece(std::size_t cells, std::size_t perimeter, const SegmentationOptions& options,
+                 double res) {
+  if (perimeter == 0) return false;
+  const double length = perimeter / 2.0;
+  const double thickness = 2.0 * static_cast<double>(cells) / static_cast<double>(perimeter);
+  return length * res >= options.wall_min_length_m &&
+         thickness * res <= options.wall_max_thickness_m;
+}
+
+// Cell edges between each enclosed component and the cells around it.
+std::vector<std::size_t> Perimeters(const Labeling& labels,
+                                    const std::vector<std::uint8_t>& enclosed) {
+  std::vector<std::size_t> perimeter(labels.components.size() + 1, 0);
+  for (int r = 0; r < labels.height; ++r) {
+    for (int c = 0; c < labels.width; ++c) {
+      const std::int32_t k = labels.at(c, r);
+      if (!k || !enclosed[k]) continue;
+      perimeter[k] += (labels.get(c - 1, r) != k) + (labels.get(c + 1, r) != k) +
+                      (labels.get(c, r - 1) != k) + (labels.get(c, r + 1) != k);
+    }
+  }
+  return perimeter;
+}
+
+bool TouchesEdge(const BoundingBox& box, int width, int height) {
+  return box.min_col == 0 || box.min_row == 0 || box.max_col == width - 1 ||
+         box.max_row == height - 1;
+}
+
+// Two-pass chamfer transform on the padded grid (its frame is wall, so
+// every room-space cell ends finite).
+void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph) {
+  std::uint16_t* d = dist->data();
+  auto relax = [](std::uint16_t cur, int a) {
+    return static_cast<std::uint16_t>(std::min<int>(cur, std::min(a, 0xfffe)));
+  };
+  for (int r = 1; r < ph - 1; ++r) {
+    std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
+    const std::uint16_t* up = row - pw;
+    for (int c = 1; c < pw - 1; ++c) {
+      if (!row[c]) continue;
+      int best = row[c - 1] + kSide;
+      best = std::min(best, up[c] + kSide);
+      best = std::min(best, up[c - 1] + kDiagonal);
+      best = std::min(best, up[c + 1] + kDiagonal);
+      row[c] = relax(row[c], best);
+    }
+  }
+  for (int r = ph - 2; r >= 1; --r) {
+    std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
+    const std::uint16_t* down = row + pw;
+    for (int c = pw - 2; c >= 1; --c) {
+      if (!row[c]) continue;
+      int best = row[c + 1] + kSide;
+      best = std::min(best, down[c] + kSide);
+      best = std::min(best, down[c - 1] + kDiagonal);
+      best = std::min(best, down[c + 1] + kDiagonal);
+      row[c] = relax(row[c], best);
+    }
+  }
+}
+
+std::int32_t Find(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];  // path halving
+    x = parent[x];
+  }
+  return x;
+}
+
+// A contact between two pieces kept apart: the cell where they met, one
+// cell of the other piece, and the clearance there.
+struct Contact {
+  std::int32_t cell;
+  std::int32_t other;
+  std::uint16_t clearance;
+};
+
+// Thresholds of the flooding in chamfer units.
+struct DoorRule {
+  int max_door = 0;      // largest clearance of a doorway
+  int min_door = 0;      // smallest clearance of a doorway
+  int constriction = 0;  // margin both pieces' peaks need over the passage
+};
+
+DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
+  // width = 2 * clearance - 1 cell, with one cell of tolerance at each end.
+  auto clearance_of_width = [&](double width_m, double slack_cells) {
+    return static_cast<int>(std::lround(kSide * (width_m / res + 1.0 + slack_cells) / 2.0));
+  };
+  DoorRule rule;
+  rule.max_door = clearance_of_width(options.max_door_width_m, 1.0);
+  rule.min_door = clearance_of_width(options.min_door_width_m, -1.0);
+  // Never under two cells: a single wall speck narrows a passage by one.
+  rule.constriction =
+      std::max(2 * kSide, static_cast<int>(std::lround(kSide * options.door_constriction_m / res)));
+  return rule;
+}
+
+// Step 3a: the merge tree. Returns the contacts of pieces kept apart;
+// `parent` ends as a union-find forest over padded cells (-1: no room space).
+std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const DoorRule& rule,
+                           std::vector<std::int32_t>* parent_out) {
+  std::uint16_t top = 0;
+  for (const std::uint16_t d : dist) top = std::max(top, d);
+  std::vector<std::int32_t> start(static_cast<std::size_t>(top) + 2, 0);
+  for (const std::uint16_t d : dist) {
+    if (d) ++start[d];
+  }
+  // Cells in descending clearance: bucket `top` first.
+  std::int32_t acc = 0;
+  for (int d = top; d >= 1; --d) {
+    const std::int32_t n = start[d];
+    start[d] = acc;
+    acc += n;
+  }
+  std::vector<std::int32_t> order(static_cast<std::size_t>(acc));
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (dist[i]) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
+  }
+  std::vector<std::int32_t>& parent = *parent_out;
+  parent.assign(dist.size(), -1);
+  std::vector<Contact> contacts;
+  const std::int32_t offsets[4] = {-1, 1, -pw, pw};
+  for (const std::int32_t cell : order) {
+    std::int32_t roots[4];
+    int n = 0;
+    for (const std::int32_t off : offsets) {
+      const std::int32_t nb = cell + off;
+      if (parent[nb] < 0) continue;
+      const std::int32_t root = Find(parent, nb);
+      if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
+    }
+    if (n == 0) {
+      parent[cell] = cell;  // a new piece; its root is its highest cell
+      continue;
+    }
+    // The root of a piece is its first (highest) cell, so dist[root] is
+    // the piece's peak clearance.
+    std::int32_t primary = roots[0];
+    for (int k = 1; k < n; ++k) {
+      if (dist[roots[k]] > dist[primary]) primary = roots[k];
+    }
+    parent[cell] = primary;
+    const int s = dist[cell];
+    for (int k = 0; k < n; ++k) {
+      const std::int32_t other = roots[k];
+      if (other == primary) continue;
+      const bool doorway = s <= rule.max_door && dist[other] >= s + rule.constriction &&
+                           dist[primary] >= s + rule.constriction;
+      if (doorway) {
+        contacts.push_back({cell, other, static_cast<std::uint16_t>(s)});
+      } else {
+        parent[other] = primary;
+      }
+    }
+  }
+  return contacts;
+}
+
+struct PieceEdge {
+  std::uint16_t clearance = 0;
+  std::int32_t cell = 0;  // padded cell of the widest contact
+};
+
+using Adjacency = std::unordered_map<std::int32_t, PieceEdge>;
+
+void Connect(std::vector<Adjacency>* adjacency, std::int32_t a, std::int32_t b,
+             const PieceEdge& edge) {
+  PieceEdge& ab = (*adjacency)[a][b];
+  if (edge.clearance > ab.clearance) ab = edge;
+  PieceEdge& ba = (*adjacency)[b][a];
+  if (edge.clearance > ba.clearance) ba = edge;
+}
+
+// Step 3b: merges `from` into `into` (both union-find roots of pieces).
+void MergePieces(std::int32_t from, std::int32_t into, std::vector<std::int32_t>* piece_parent,
+                 std::vector<std::size_t>* area, std::vector<Adjacency>* adjacency) {
+  (*piece_parent)[from] = into;
+  (*area)[into] += (*area)[from];
+  Adjacency moved = std::move((*adjacency)[from]);
+  (*adjacency)[from].clear();
+  (*adjacency)[into].erase(from);
+  for (const auto& [other, edge] : moved) {
+    (*adjacency)[other].erase(from);
+    if (other != into) Connect(adjacency, into, other, edge);
+  }
+}
+
+}  // namespace
+
+RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
+                     SegmentationTimings* timings) {
+  const int w = grid.width();
+  const int h = grid.height();
+  const int pw = w + 2;
+  const int ph = h + 2;
+  const double res = grid.meta.resolution;
+  const double cell_area = res * res;
+  auto padded = [pw](int c, int r) { return static_cast<std::size_t>(r + 1) * pw + (c + 1); };
+  RoomFlood flood;
+  double start = ThreadCpuMs();
+
+  // Step 1: the obstacles the free space encloses (8-connected components of
+  // the non-free cells that stay off the map edge).
+  BinaryMask free(w, h);
+  BinaryMask blocked(w, h);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    free.bits[i] = grid.cells()[i] == Cell::kFree;
+    blocked.bits[i] = !free.bits[i];
+  }
+  flood.enclosed = LabelComponents(blocked, Connectivity::kEight);
+  flood.furniture_candidate.assign(flood.enclosed.components.size() + 1, 0);
+  const double max_furniture_cells = options.max_furniture_area_m2 / cell_area;
+  for (std::size_t k = 0; k < flood.enclosed.components.size(); ++k) {
+    const ComponentStats& stats = flood.enclosed.components[k];
+    flood.furniture_candidate[k + 1] = !TouchesEdge(stats.box, w, h) &&
+                                       static_cast<double>(stats.cell_count) <= max_furniture_cells;
+  }
+  const std::vector<std::size_t> perimeter = Perimeters(flood.enclosed, flood.furniture_candidate);
+  for (std::size_t k = 1; k < flood.furniture_candidate.size(); ++k) {
+    if (flood.furniture_candidate[k] &&
+        IsWallPiece(flood.enclosed.components[k - 1].cell_count, perimeter[k], options, res)) {
+      flood.furniture_candidate[k] = 0;
+    }
+  }
+
+  // Step 2: clearance over room space (free cells and furniture candidates).
+  flood.width = w;
+  flood.height = h;
+  flood.clearance.assign(static_cast<std::size_t>(pw) * ph, 0);
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = grid.Index(c, r);
+      if (free.bits[i] || flood.furniture_candidate[flood.enclosed.labels[i]]) {
+        flood.clearance[padded(c, r)] = kFar;
+      }
+    }
+  }
+  ChamferInPlace(&flood.clearance, pw, ph);
+  timings->clearance_ms += ThreadCpuMs() - start;
+  start = ThreadCpuMs();
+
+  // Step 3a: the merge tree.
+  const DoorRule rule = MakeDoorRule(options, res);
+  std::vector<std::int32_t> parent;
+  const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
+
+  // Pieces: compact numbers for the roots, their areas and peaks.
+  std::vector<std::int32_t> piece_of(parent.size(), -1);
+  std::vector<std::size_t> area;
+  std::vector<std::uint16_t> peak;
+  for (std::size_t i = 0; i < parent.size(); ++i) {
+    if (parent[i] < 0) continue;
+    const std::int32_t root = Find(parent, static_cast<std::int32_t>(i));
+    if (piece_of[root] < 0) {
+      piece_of[root] = static_cast<std::int32_t>(area.size());
+      area.push_back(0);
+      peak.push_back(flood.clearance[root]);
+    }
+    piece_of[i] = piece_of[root];
+    ++area[piece_of[i]];
+  }
+  const std::int32_t pieces = static_cast<std::int32_t>(area.size());
+  std::vector<std::int32_t> piece_parent(pieces);
+  for (std::int32_t k = 0; k < pieces; ++k) piece_parent[k] = k;
+
+  // Step 3b: pieces joined by passages narrower than a door are one room.
+  std::vector<Adjacency> adjacency(pieces);
+  for (const Contact& contact : contacts) {
+    const std::int32_t a = piece_of[contact.cell];
+    const std::int32_t b = piece_of[contact.other];
+    if (a != b) Connect(&adjacency, a, b, {contact.clearance, contact.cell});
+  }
+  std::vector<std::pair<std::int32_t, std::int32_t>> narrow;
+  for (std::int32_t a = 0; a < pieces; ++a) {
+    for (const auto& [b, edge] : adjacency[a]) {
+      if (a < b && edge.clearance < rule.min_door) narrow.push_back({a, b});
+    }
+  }
+  for (const auto& [a0, b0] : narrow) {
+    const std::int32_t a = Find(piece_parent, a0);
+    const std::int32_t b = Find(piece_parent, b0);
+    if (a == b) continue;
+    if (area[a] >= area[b]) {
+      MergePieces(b, a, &piece_parent, &area, &adjacency);
+    } else {
+      MergePieces(a, b, &piece_parent, &area, &adjacency);
+    }
+  }
+
+  // Step 3c: pieces below the minimum room area join the neighbour they
+  // share the widest passage with, smallest first.
+  const std::size_t min_cells =
+      static_cast<std::size_t>(std::ceil(options.min_room_area_m2 / cell_area));
+  using Item = std::pair<std::size_t, std::int32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  for (std::int32_t k = 0; k < pieces; ++k) {
+    if (piece_parent[k] == k && area[k] < min_cells) queue.push({area[k], k});
+  }
+  while (!queue.empty()) {
+    const auto [size, k] = queue.top();
+    queue.pop();
+    if (piece_parent[k] != k || area[k] != size || adjacency[k].empty()) continue;
+    std::int32_t best = -1;
+    std::uint16_t best_clearance = 0;
+    for (const auto& [other, edge] : adjacency[k]) {
+      const bool wider = edge.clearance > best_clearance || (edge.clearance == best_clearance &&
+                                                             best >= 0 && area[other] > area[best]);
+      if (best < 0 || wider) {
+        best = other;
+        best_clearance = edge.clearance;
+      }
+    }
+    MergePieces(k, best, &piece_parent, &area, &adjacency);
+    if (area[best] < min_cells) queue.push({area[best], best});
+  }
+
+  // Room ids in raster order of the rooms' first cells; pieces still below
+  // the minimum area (free specks with no neighbour) are no rooms.
+  std::vector<std::int32_t> room_of_piece(pieces, -1);
+  flood.room_of_cell.assign(grid.size(), 0);
+  std::int32_t rooms = 0;
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::int32_t piece = piece_of[padded(c, r)];
+      if (piece < 0) continue;
+      const std::int32_t root = Find(piece_parent, piece);
+      if (area[root] < min_cells) continue;
+      if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
+      flood.room_of_cell[grid.Index(c, r)] = room_of_piece[root];
+    }
+  }
+  flood.room_count = rooms;
+  flood.peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
+  for (std::int32_t k = 0; k < pieces; ++k) {
+    const std::int32_t root = Find(piece_parent, k);
+    if (room_of_piece[root] > 0) {
+      std::uint16_t& p = flood.peak[room_of_piece[root]];
+      p = std::max(p, peak[k]);
+    }
+  }
+  for (std::int32_t a = 0; a < pieces; ++a) {
+    if (piece_parent[a] != a || room_of_piece[a] < 0) continue;
+    for (const auto& [b, edge] : adjacency[a]) {
+      if (room_of_piece[b] < 0 || room_of_piece[a] >= room_of_piece[b]) continue;
+      Doorway door;
+      door.room_a = room_of_piece[a];
+      door.room_b = room_of_piece[b];
+      door.cell = {edge.cell % pw - 1, edge.cell / pw - 1};
+      door.width_m = (2.0 * edge.clearance / kSide - 1.0) * res;
+      flood.doors.push_back(door);
+    }
+  }
+  std::sort(flood.doors.begin(), flood.doors.end(), [](const Doorway& x, const Doorway& y) {
+    return std::tie(x.room_a, x.room_b) < std::tie(y.room_a, y.room_b);
+  });
+  timings->flooding_ms += ThreadCpuMs() - start;
+  return flood;
+}
+
+double ClearanceCells(std::uint16_t chamfer) { return static_cast<double>(chamfer) / kSide; }
+
+}  // namespace linemap::segment_internal

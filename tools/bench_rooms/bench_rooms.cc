@@ -1,0 +1,281 @@
+// bench_rooms: room segmentation (SegmentMap, method kRooms) against ground
+// truth on generated floor plans (tests/testing/floor_plan.h), and its speed
+// on real maps.
+//
+// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]
+// --dump writes a PPM picture of every segmentation into DIR.
+// Generated set: seeds 1..N (default 10) x {thin, thick walls} x {plain,
+// furnished} x {clean, noisy}. Per variant it prints the survey's
+// area-weighted recall and precision (Bormann et al., ICRA 2016), the share
+// of doors found (the two rooms a door joins fall in different segments, each
+// the best match of its room), rooms found / true, and on furnished plans the
+// furniture figures cell by cell: recall = furniture cells inside a blob (its
+// cells or its outline's interior), precision = of the non-free cells blobs
+// cover, the share that is furniture (and the share that is no wall:
+// furniture or scan specks). Then, per MAP, segmentation CPU time
+// (best of 5) and ms per Mcell, rooms, corridors, doors and blobs.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "linemap/map_io.h"
+#include "linemap/segmentation.h"
+#include "tests/testing/floor_plan.h"
+
+namespace linemap {
+namespace {
+
+double ThreadCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+struct Totals {
+  double recall = 0, precision = 0;
+  int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
+  std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
+  std::size_t standalone = 0, standalone_covered = 0, blob_not_wall = 0;
+  std::size_t blobs = 0, objects = 0;
+  double ms = 0, mcells = 0;
+};
+
+// For each true room, the segment holding most of its cells.
+std::map<int, int> BestSegment(const testing::FloorPlan& plan,
+                               const std::vector<std::int32_t>& segment_of) {
+  std::map<std::pair<int, int>, int> overlap;
+  for (std::size_t i = 0; i < plan.room_of_cell.size(); ++i) {
+    if (plan.room_of_cell[i] && segment_of[i]) ++overlap[{plan.room_of_cell[i], segment_of[i]}];
+  }
+  std::map<int, int> best, best_n;
+  for (const auto& [key, n] : overlap) {
+    if (n > best_n[key.first]) {
+      best_n[key.first] = n;
+      best[key.first] = key.second;
+    }
+  }
+  return best;
+}
+
+void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t, bool verbose) {
+  const Grid& grid = plan.grid;
+  const testing::RoomScores scores = testing::ScoreRooms(plan.room_of_cell, seg.room_of_cell);
+  const std::map<int, int> best = BestSegment(plan, seg.room_of_cell);
+  int found = 0;
+  for (const testing::FloorPlanDoor& door : plan.doors) {
+    const auto a = best.find(door.room_a), b = best.find(door.room_b);
+    found += a != best.end() && b != best.end() && a->second != b->second;
+  }
+  // Furniture, cell by cell.
+  std::vector<std::uint8_t> covered(grid.size(), 0);
+  for (const FurnitureBlob& blob : seg.blobs) {
+    for (const CellIndex& cell : blob.cells) covered[grid.Index(cell.col, cell.row)] = 1;
+    if (blob.outline.size() >= 3) {
+      const BinaryMask fill = FillChainPolygon(blob.outline, grid.width(), grid.height());
+      for (int r = blob.box.min_row; r <= blob.box.max_row; ++r) {
+        for (int c = blob.box.min_col; c <= blob.box.max_col; ++c) {
+          if (fill.at(c, r)) covered[grid.Index(c, r)] = 1;
+        }
+      }
+    }
+  }
+  std::size_t furniture = 0, hit = 0, blocked = 0, blocked_furniture = 0;
+  std::size_t standalone = 0, standalone_hit = 0, not_wall = 0;
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    furniture += plan.furniture[i] != 0;
+    hit += plan.furniture[i] && covered[i];
+    standalone += plan.furniture[i] == testing::FloorPlan::kStandAlone;
+    standalone_hit += plan.furniture[i] == testing::FloorPlan::kStandAlone && covered[i];
+    if (covered[i] && grid.cells()[i] != Cell::kFree) {
+      ++blocked;
+      blocked_furniture += plan.furniture[i] != 0;
+      not_wall += plan.room_of_cell[i] != 0;  // furniture or a speck in a room
+    }
+  }
+  t->recall += scores.recall;
+  t->precision += scores.precision;
+  ++t->plans;
+  t->doors += static_cast<int>(plan.doors.size());
+  t->doors_found += found;
+  t->rooms_true += plan.room_count;
+  t->rooms_found += static_cast<int>(seg.rooms.size());
+  t->furniture += furniture;
+  t->furniture_covered += hit;
+  t->standalone += standalone;
+  t->standalone_covered += standalone_hit;
+  t->blob_not_wall += not_wall;
+  t->blob_blocked += blocked;
+  t->blob_furniture += blocked_furniture;
+  t->blobs += seg.blobs.size();
+  t->objects += plan.furniture_objects;
+  t->ms += seg.timings.total_ms;
+  t->mcells += grid.size() / 1e6;
+  if (verbose) {
+    std::printf("  %-32s recall %.3f precision %.3f doors %d/%zu rooms %zu/%d blobs %zu/%d\n",
+                plan.name.c_str(), scores.recall, scores.precision, found, plan.doors.size(),
+                seg.rooms.size(), plan.room_count, seg.blobs.size(), plan.furniture_objects);
+  }
+}
+
+// A picture of the segmentation (top row = last grid row): rooms in
+// colours by id, walls black, unknown grey, blob cells red.
+void WritePpm(const std::string& path, const Grid& grid, const Segmentation& seg) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return;
+  std::fprintf(f, "P6\n%d %d\n255\n", grid.width(), grid.height());
+  std::vector<std::uint8_t> blob(grid.size(), 0);
+  for (const FurnitureBlob& b : seg.blobs) {
+    for (const CellIndex& cell : b.cells) blob[grid.Index(cell.col, cell.row)] = 1;
+  }
+  std::vector<std::uint8_t> chain(grid.size(), 0);
+  for (const RoomBorder& room : seg.rooms) {
+    for (const CellIndex& cell : room.chain) chain[grid.Index(cell.col, cell.row)] = 1;
+  }
+  for (int r = grid.height() - 1; r >= 0; --r) {
+    for (int c = 0; c < grid.width(); ++c) {
+      const std::size_t i = grid.Index(c, r);
+      std::uint8_t rgb[3] = {128, 128, 128};
+      const int id = seg.room_of_cell.empty() ? 0 : seg.room_of_cell[i];
+      if (blob[i]) {
+        rgb[0] = 255, rgb[1] = 0, rgb[2] = 0;
+      } else if (grid.cells()[i] == Cell::kOccupied) {
+        rgb[0] = rgb[1] = rgb[2] = 0;
+      } else if (id) {
+        const unsigned h = static_cast<unsigned>(id) * 2654435761u;
+        rgb[0] = 100 + (h >> 8) % 156, rgb[1] = 100 + (h >> 16) % 156,
+        rgb[2] = 100 + (h >> 24) % 156;
+        if (chain[i]) rgb[0] /= 2, rgb[1] /= 2, rgb[2] /= 2;
+      } else if (grid.cells()[i] == Cell::kFree) {
+        rgb[0] = rgb[1] = rgb[2] = 255;
+      }
+      std::fwrite(rgb, 1, 3, f);
+    }
+  }
+  std::fclose(f);
+}
+
+double Share(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) / b : 1.0; }
+
+int RunGenerated(int seeds, bool verbose, const std::string& dump) {
+  std::printf(
+      "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
+      " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
+      " ms per Mcell |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  Totals all;
+  for (int variant = 0; variant < 8; ++variant) {
+    Totals t;
+    testing::FloorPlanOptions options;
+    options.thick_walls = variant & 1;
+    options.furniture = variant & 2;
+    options.noise = variant & 4;
+    for (int seed = 1; seed <= seeds; ++seed) {
+      options.seed = static_cast<std::uint32_t>(seed);
+      const testing::FloorPlan plan = testing::GenerateFloorPlan(options);
+      StatusOr<Segmentation> seg = SegmentMap(plan.grid);
+      if (!seg.ok()) {
+        std::fprintf(stderr, "bench_rooms: %s: %s\n", plan.name.c_str(),
+                     seg.status().message().c_str());
+        return 1;
+      }
+      Evaluate(plan, *seg, &t, verbose);
+      Evaluate(plan, *seg, &all, false);
+      if (!dump.empty()) WritePpm(dump + "/" + plan.name + ".ppm", plan.grid, *seg);
+    }
+    const auto figure = [&](std::size_t a, std::size_t b) {
+      char text[32] = "-";
+      if (options.furniture) std::snprintf(text, sizeof(text), "%.3f", Share(a, b));
+      return std::string(text);
+    };
+    std::printf(
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f |\n",
+        options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
+        options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
+        t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
+        figure(t.standalone_covered, t.standalone).c_str(),
+        figure(t.blob_furniture, t.blob_blocked).c_str(),
+        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
+  }
+  std::printf(
+      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %zu/%zu | %.1f "
+      "|\n",
+      all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
+      all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
+      Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
+      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells);
+  return 0;
+}
+
+int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
+  std::printf(
+      "\n| map | cells | ms (CPU, best of 5) | ms per Mcell | rooms | corridors | doors |"
+      " blobs |\n|---|---|---|---|---|---|---|---|\n");
+  for (const std::string& path : paths) {
+    StatusOr<Grid> grid = LoadRosMap(path);
+    if (!grid.ok()) {
+      std::fprintf(stderr, "bench_rooms: skipping %s: %s\n", path.c_str(),
+                   grid.status().message().c_str());
+      continue;
+    }
+    double best = 1e300;
+    Segmentation seg;
+    for (int run = 0; run < 5; ++run) {
+      const double start = ThreadCpuMs();
+      StatusOr<Segmentation> result = SegmentMap(*grid);
+      best = std::min(best, ThreadCpuMs() - start);
+      if (!result.ok()) {
+        std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(),
+                     result.status().message().c_str());
+        return 1;
+      }
+      seg = std::move(*result);
+    }
+    if (!dump.empty()) {
+      std::string name = path;
+      std::replace(name.begin(), name.end(), '/', '_');
+      WritePpm(dump + "/" + name + ".ppm", *grid, seg);
+    }
+    const int corridors = static_cast<int>(
+        std::count_if(seg.rooms.begin(), seg.rooms.end(),
+                      [](const RoomBorder& room) { return room.kind == RoomKind::kCorridor; }));
+    std::printf("| %s | %zu | %.2f | %.1f | %zu | %d | %zu | %zu |\n", path.c_str(), grid->size(),
+                best, best / (grid->size() / 1e6), seg.rooms.size(), corridors, seg.doors.size(),
+                seg.blobs.size());
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace linemap
+
+int main(int argc, char** argv) {
+  int seeds = 10;
+  bool verbose = false;
+  std::string dump;
+  std::vector<std::string> maps;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--seeds" && i + 1 < argc) {
+      seeds = std::atoi(argv[++i]);
+    } else if (arg == "--dump" && i + 1 < argc) {
+      dump = argv[++i];
+    } else if (arg == "--verbose") {
+      verbose = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      std::fprintf(stderr,
+                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]\n");
+      return 2;
+    } else {
+      maps.push_back(arg);
+    }
+  }
+  if (seeds < 0) seeds = 0;
+  if (seeds > 0) {
+    if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
+  }
+  return linemap::RunMaps(maps, dump);
+}
