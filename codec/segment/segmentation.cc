@@ -163,9 +163,6 @@ BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int 
   return fill;
 }
 
-const char* RoomKindName(RoomKind kind) {
-  return kind == RoomKind::kCorridor ? "corridor" : "room";
-}
 
 StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& options) {
   LINEMAP_RETURN_IF_ERROR(ValidateOptions(options));

@@ -72,6 +72,7 @@
 #include "linemap/lines.h"
 #include "linemap/morphology.h"
 #include "linemap/status.h"
+#include "linemap/vector_layers.h"
 
 namespace linemap {
 
@@ -79,10 +80,6 @@ enum class SegmentationMethod {
   kRooms,        // rooms and corridors split at doorways (default)
   kPaperBorder,  // one Lee-closed chain per free component (Kosteley et al.)
 };
-
-enum class RoomKind { kRoom, kCorridor };
-// "room" or "corridor".
-const char* RoomKindName(RoomKind kind);
 
 struct RoomBorder {
   // Closed chain of border cells in traversal order: each cell is 8-adjacent

@@ -20,6 +20,7 @@ struct WallPolyline {
 };
 
 enum class RoomKind : std::uint8_t { kUnspecified = 0, kRoom = 1, kCorridor = 2 };
+// "unspecified", "room" or "corridor".
 const char* RoomKindName(RoomKind kind);
 
 // One room: a closed 8-connected chain of border cells (each cell 8-adjacent
