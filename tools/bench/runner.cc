@@ -12,6 +12,7 @@
 #include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
+#include "tools/bench/goals.h"
 #include "tools/bench/image_anchors.h"
 #include "tools/bench/jbig.h"
 #include "tools/bench/lmap_figures.h"
@@ -141,8 +142,10 @@ void AddPngSpeed(const Grid& grid, const SmallestPng& png, int repeats, bool mem
     result->figures[key::kPngDecodePeakMb] = *peak / kMb;
 }
 
+// `displ_cells_key` may be nullptr (DisPL in cm only).
 void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
-                    const char* displ_key, const char* ms_key, MapResult* result) {
+                    const char* displ_key, const char* displ_cells_key, const char* ms_key,
+                    MapResult* result) {
   LineExtractionOptions options;
   options.method = method;
   StatusOr<LineExtraction> lines = InternalError("not run");
@@ -154,6 +157,7 @@ void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
   const LineFidelity fidelity = MeasureLineFidelity(lines->edges, lines->segments);
   result->figures[lines_key] = static_cast<double>(lines->segments.size());
   result->figures[displ_key] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  if (displ_cells_key) result->figures[displ_cells_key] = fidelity.displ_ave_cells;
   result->figures[ms_key] = ms;
   if (method == LineMethod::kRmLine) result->rmline_segments = std::move(lines->segments);
 }
@@ -226,14 +230,16 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
                    &result);
   }
   if (!png.bytes.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
-  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
-                 &result);
-  AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
+  // RM-Line's DisPL_ave is also the bar the 2.0 file's walls must meet.
+  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm,
+                 key::kRmLineDisplCells, key::kRmLineMs, &result);
+  AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm, nullptr,
                  key::kLinemapMs, &result);
   AddOpenCvFigures(grid, &result);
-  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
-  if (!lmap.ok()) Note(&result, ".lmap", lmap);
+  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory}, &result);
+  if (!lmap.ok()) Note(&result, ".lmap 2.0", lmap);
   AddThroughput(&result);
+  AddGoalFigures(&result);
   return result;
 }
 

@@ -67,8 +67,9 @@ const std::vector<PlotMethod>& PlotMethods() {
       {"JBIG1", key::kJbigBytes, nullptr, "#8c564b"},
       {"WebP", key::kWebpBytes, nullptr, "#e377c2"},
       {"JPEG XL", key::kJxlBytes, nullptr, "#17becf"},
-      {".lmap lossless", key::kLmapLosslessBytes, nullptr, "#2ca02c"},
-      {".lmap lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
+      {".lmap 2.0 (default)", key::kLmapBytes, nullptr, "#2ca02c"},
+      {".lmap 2.0 --raster-only", key::kLmapRasterBytes, nullptr, "#bcbd22"},
+      {".lmap 1.0 --lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
   };
   return methods;
 }
@@ -143,8 +144,8 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
   for (std::size_t at = file.find('/'); at != std::string::npos; at = file.find('/', at + 2)) {
     file.replace(at, 1, "__");
   }
-  // The .lmap's own geometry when the codec is in; else RM-Line's segments
-  // and the segmentation's room borders and furniture.
+  // The default .lmap 2.0 file's own layers; when they could not be read,
+  // RM-Line's segments and the segmentation's room borders and furniture.
   Segmentation segmentation;
   std::vector<LineSegment> segments;
   std::string source;
@@ -159,7 +160,7 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
       blob.outline = outline;
       segmentation.blobs.push_back(std::move(blob));
     }
-    source = "lossy .lmap";
+    source = ".lmap 2.0 layers";
   } else {
     segments = result.rmline_segments;
     StatusOr<Segmentation> segmented = SegmentMap(grid);
@@ -171,7 +172,7 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
     source = "RM-Line + SegmentMap";
   }
   const std::string title =
-      result.name + " (" + source + "): segments red, room borders blue, furniture green";
+      result.name + " (" + source + "): walls red, room borders blue, furniture green";
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(dir + "/" + file + ".svg",
                                           MapOverlaySvg(grid, segments, &segmentation, title)));
   return status;
@@ -218,11 +219,15 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
     }
     return lossy_left + (lossy_right - lossy_left) * p.displ / x_max;
   };
-  std::string svg =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 980 440\" width=\"980\" "
-      "height=\"440\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      "<title>Size ratio to PNG-9 vs DisPL_ave, per map and method</title>\n"
-      "<rect x=\"0\" y=\"0\" width=\"980\" height=\"440\" fill=\"white\"/>\n<g stroke=\"#ddd\">\n";
+  // Room right of the panels for the legend's longest line ("<method>:
+  // median 0.123", about 40 characters at 6.5 px).
+  const std::string width = Num(lossy_right + 300);
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + width +
+                    " 440\" width=\"" + width +
+                    "\" height=\"440\" font-family=\"sans-serif\" font-size=\"12\">\n"
+                    "<title>Size ratio to PNG-9 vs DisPL_ave, per map and method</title>\n"
+                    "<rect x=\"0\" y=\"0\" width=\"" +
+                    width + "\" height=\"440\" fill=\"white\"/>\n<g stroke=\"#ddd\">\n";
   for (double e = log_lo; e <= log_hi + 1e-9; e += 0.25) {
     const double r = std::pow(10.0, e);
     const std::string y = Num(py(r));
