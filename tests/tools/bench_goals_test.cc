@@ -222,6 +222,21 @@ TEST(BenchGoalsTest, TablesEndWithTheVerdictsAndListTheMisses) {
   EXPECT_NE(summary.find("PASS"), std::string::npos);
 }
 
+TEST(BenchGoalsTest, MissesTableListsTwelveMapsPerGoalAndCountsTheRest) {
+  std::vector<MapResult> results;
+  for (int i = 0; i < 14; ++i) {
+    results.push_back(GoodMap("m" + std::to_string(i)));
+    results.back().figures[key::kLmapCoveredShare] = 0.5;
+  }
+  const std::vector<NamedTable> tables = GoalTables(results);
+  ASSERT_EQ(tables.size(), 3u);
+  const std::vector<std::string>& row = tables[2].table.rows().at(0);
+  EXPECT_EQ(row[0], Goal(results, "inside furniture").goal);
+  EXPECT_EQ(row[2].rfind("m0 (0.5000), m1 (0.5000), ", 0), 0u) << row[2];
+  EXPECT_TRUE(row[2].ends_with("m11 (0.5000) and 2 more")) << row[2];
+  EXPECT_EQ(Goal(results, "inside furniture").failing.size(), 14u);  // all kept for the tests
+}
+
 TEST(BenchLmapFiguresTest, CellsWrongCountsEachDifferingCell) {
   Grid a(4, 3, Cell::kFree);
   Grid b = a;

@@ -26,7 +26,12 @@ void AddRoundTrip(const Grid& grid, const std::vector<std::uint8_t>& file, const
     result->figures[cells_key] = static_cast<double>(grid.size());
     return Note(result, label + " decode", decoded.status());
   }
-  result->figures[cells_key] = static_cast<double>(CellsWrong(grid, *decoded));
+  const std::size_t wrong = CellsWrong(grid, *decoded);
+  result->figures[cells_key] = static_cast<double>(wrong);
+  if (wrong > 0) {
+    result->notes.push_back(label + ": the decode differs from the map in " +
+                            std::to_string(wrong) + " cells");
+  }
   if (!(decoded->meta == grid.meta)) {
     result->notes.push_back(label + ": the decoded resolution or origin differs from the map's");
   }

@@ -58,6 +58,7 @@ inline constexpr const char* kLmapDecodePeakMb = "lmap2_decode_peak_mb";
 inline constexpr const char* kRepeats = "timing_repeats";
 inline constexpr const char* kRmLineLines = "rmline_lines";
 inline constexpr const char* kRmLineDisplCells = "rmline_displ_cells";
+inline constexpr const char* kRmLineEdgeCells = "rmline_edge_cells";  // DisPL's denominator
 inline constexpr const char* kRmLineDisplCm = "rmline_displ_cm";
 inline constexpr const char* kRmLineMs = "rmline_ms";
 inline constexpr const char* kLinemapLines = "linemap_lines";
