@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(build-essential cmake pkg-config libeigen3-dev zlib1g-dev libpng-dev libdraco-dev
           libyaml-cpp-dev libgtest-dev googletest libzstd-dev liblzma-dev netpbm jbigkit-bin)
 PACKAGES+=(libjxl-tools webp)  # bench anchors
+PACKAGES+=(pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -1,4 +1,4 @@
-// The 1.0 .lmap encoder (spec/format.md section 10, "Encoding 1.0 files"):
+// The 1.0 .lmap encoder (spec/format.md section 11.7, "Encoding 1.0 files"):
 // the lossy mode, kept behind EncodeOptions::format_v1 until the tolerance
 // mode replaces it.
 //

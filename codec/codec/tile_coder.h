@@ -1,4 +1,12 @@
-// TEMPORARY stand-in for the tile coder (replaced by the coder branch).
+// The cell coder of .lmap 2.0: codes the cells of one rectangular tile of a
+// trinary grid exactly, in the context of what the file's vector layers drew
+// (the layer hints), so that every tile decodes on its own (region decoding,
+// one thread per tile). Normative description: spec/tile_coding.md.
+//
+// Speed comes from skipping settled cells: a row equal to the row below it,
+// or a 16-cell block equal to the block below it, costs one binary decision;
+// only the remaining cells are coded one by one with a context model over
+// their trinary neighbours and their layer hint.
 #ifndef LINEMAP_CODEC_CODEC_TILE_CODER_H_
 #define LINEMAP_CODEC_CODEC_TILE_CODER_H_
 
@@ -11,19 +19,34 @@
 
 namespace linemap {
 
+// A half-open rectangle of cells [x0, x1) x [y0, y1) (columns, grid rows;
+// row 0 at the origin).
 struct CellRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
+// What the vector layers drew, one byte per cell of the WHOLE grid
+// (width*height, grid-row order), known to the decoder before any tile is
+// decoded. Bits may combine.
 enum LayerHintBits : std::uint8_t {
-  kHintWall = 1,
-  kHintRoomInside = 2,
-  kHintRoomBorder = 4,
-  kHintFurniture = 8,
+  kHintWall = 1,        // on the rasterisation of a wall polyline segment: mostly occupied
+  kHintRoomInside = 2,  // strictly inside a room-border chain's fill: mostly free
+  kHintRoomBorder = 4,  // a cell of a room-border chain: mostly occupied, sometimes a doorway
+  kHintFurniture = 8,   // inside a furniture outline's fill: occupied, or free between legs
 };
 
+// Codes the cells of `cells` (width*height Cell values, grid-row order)
+// inside `tile` exactly. Reads cells only inside `tile` (hints may be read
+// anywhere: they are global), so every tile decodes on its own.
+// Deterministic. `tile` must lie inside the grid (an empty tile gives no
+// bytes); `hints` may be null (= all zero).
 std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
                                           int height, CellRect tile);
+
+// Writes the tile's cells into canvas (width*height). Reads only `hints`
+// (null = all zero) and the tile's own `size` bytes. Malformed or truncated
+// data, or a tile outside the grid, gives a kCorrupt / kInvalidArgument
+// error; cells of the tile may then hold partial results.
 Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
                        int width, int height, CellRect tile, Cell* canvas);
 

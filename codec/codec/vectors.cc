@@ -92,23 +92,25 @@ StatusOr<LayerFidelity> MeasureLayerFidelity(const Grid& original, const LmapVec
   const EdgeMap edges = ComputeEdgeMap(original);
   lines_internal::SegmentIndex index(&segments, original.width(), original.height());
   LayerFidelity f;
-  double sum = 0;
+  double sum = 0, max = 0;
   for (int r = 0; r < original.height(); ++r) {
     for (int c = 0; c < original.width(); ++c) {
       const std::size_t i = original.Index(c, r);
       if (!edges.is_edge[i]) continue;
       ++f.edge_cells;
-      // No wall at all: every edge cell is infinitely far (reported as the
-      // map's diagonal, the farthest a segment could be).
-      const double d = segments.empty() ? std::hypot(original.width(), original.height())
-                                        : index.NearestDistance(c, r);
+      const double d = segments.empty() ? 0.0 : index.NearestDistance(c, r);
+      const bool near = !segments.empty() && d <= 1.0;
       sum += d;
-      f.displ_max_cells = std::max(f.displ_max_cells, d);
-      f.within_1 += d <= 1.0;
-      f.covered += d <= 1.0 || in_furniture[i];
+      max = std::max(max, d);
+      f.within_1_of_wall += near;
+      f.in_furniture += in_furniture[i];
+      f.covered += near || in_furniture[i];
     }
   }
-  if (f.edge_cells > 0) f.displ_ave_cells = sum / static_cast<double>(f.edge_cells);
+  if (!segments.empty()) {
+    f.displ_ave_cells = f.edge_cells > 0 ? sum / static_cast<double>(f.edge_cells) : 0.0;
+    f.displ_max_cells = max;
+  }
   return f;
 }
 

@@ -91,7 +91,7 @@ struct EncodeOptions {
 // Caller-set bounds on what a file may make the decoder allocate or do.
 struct DecodeLimits {
   std::uint64_t max_file_bytes = std::uint64_t{1} << 31;      // load() only
-  std::uint64_t max_cells = std::uint64_t{1} << 28;           // width * height
+  std::uint64_t max_cells = std::uint64_t{1} << 30;           // width * height
   std::uint64_t max_chunk_bytes = std::uint64_t{1} << 30;     // one chunk's payload
   std::uint64_t max_inflated_bytes = std::uint64_t{1} << 28;  // one inflated payload
   std::uint64_t max_segments = std::uint64_t{1} << 24;        // per chunk

@@ -7,7 +7,9 @@
 #ifndef LINEMAP_LMAP_VECTORS_H_
 #define LINEMAP_LMAP_VECTORS_H_
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,10 +43,12 @@ struct LmapVectors {
 // spec/format.md section 8.2).
 struct LayerFidelity {
   std::size_t edge_cells = 0;
-  double displ_ave_cells = 0;
-  double displ_max_cells = 0;
-  std::size_t within_1 = 0;  // edge cells within one cell of a wall segment
-  std::size_t covered = 0;   // ... or inside a furniture outline
+  // Mean and largest distance (cells); nullopt when the file has no walls.
+  std::optional<double> displ_ave_cells;
+  std::optional<double> displ_max_cells;
+  std::size_t within_1_of_wall = 0;  // edge cells within one cell of a wall segment
+  std::size_t in_furniture = 0;      // edge cells inside a furniture outline's fill
+  std::size_t covered = 0;           // edge cells in either
   double covered_share() const {
     return edge_cells == 0 ? 1.0 : static_cast<double>(covered) / static_cast<double>(edge_cells);
   }

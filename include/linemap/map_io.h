@@ -42,7 +42,7 @@ enum class Durability {
 
 struct MapLoadOptions {
   // Refuse images with more cells than this before allocating them.
-  std::uint64_t max_cells = std::uint64_t{1} << 28;
+  std::uint64_t max_cells = std::uint64_t{1} << 30;
   // Used when the map is a bare image without YAML, and to override the
   // YAML's values when set.
   std::optional<double> resolution;
@@ -65,7 +65,7 @@ StatusOr<std::string> RosMapImagePath(const std::string& path);
 
 // Classifies an image file with the given metadata (no YAML involved).
 StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
-                            std::uint64_t max_cells = std::uint64_t{1} << 28);
+                            std::uint64_t max_cells = std::uint64_t{1} << 30);
 
 // Writes `yaml_path` and an image next to it (same stem, .pgm), as nav2's
 // map_saver does in trinary mode: 0 occupied, 254 free, 205 unknown, and a

@@ -62,7 +62,7 @@ Quaternion QuaternionFromYaw(double yaw);
 // positive and finite, or the origin is not finite.
 StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
                                      const OccupancyThresholds& thresholds = {},
-                                     std::uint64_t max_cells = std::uint64_t{1} << 32);
+                                     std::uint64_t max_cells = std::uint64_t{1} << 30);
 
 // The grid as a message: free 0, occupied 100, unknown -1; the origin's yaw
 // as a quaternion about +z; `frame_id` as given.

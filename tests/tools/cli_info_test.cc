@@ -1,6 +1,9 @@
 // The built `linemap` binary: info, --help, --version, and bad input.
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "linemap/lmap_vectors.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -26,6 +29,42 @@ TEST(CliInfoTest, JsonHasTheDocumentedKeys) {
                        "\"free\":3,\"occupied\":2,\"unknown\":1"),
             std::string::npos)
       << r.out;
+}
+
+// A 2.0 file: the counts of its layers (read here through LoadLmapVectors,
+// the raster-free reader) in text and JSON, and its chunks.
+TEST(CliInfoTest, LmapCountsTheVectorLayers) {
+  const std::string dir = MakeTempDir("cli_info_layers");
+  ASSERT_EQ(
+      RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", dir + "/d.lmap"})
+          .exit_code,
+      0);
+  StatusOr<LmapVectors> v = LoadLmapVectors(dir + "/d.lmap");
+  ASSERT_TRUE(v.ok());
+  std::size_t segments = 0;
+  for (const WallPolyline& w : v->walls) segments += w.points.size() - 1;
+  ASSERT_GT(v->walls.size(), 0u);
+  ASSERT_GT(v->rooms.size(), 0u);
+  ASSERT_GT(v->furniture.size(), 0u);
+  ASSERT_GT(segments, v->walls.size());  // some walls are polylines of several segments
+  const std::string counts = "\"walls\":" + std::to_string(v->walls.size()) +
+                             ",\"wall_segments\":" + std::to_string(segments) +
+                             ",\"rooms\":" + std::to_string(v->rooms.size()) +
+                             ",\"furniture\":" + std::to_string(v->furniture.size()) + ",";
+  const CliResult json = RunCli({"info", dir + "/d.lmap", "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NE(json.out.find(counts), std::string::npos) << counts << "\n" << json.out;
+  EXPECT_NE(json.out.find("\"version\":\"2."), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("{\"type\":\"WALL\","), std::string::npos) << json.out;
+  EXPECT_EQ(json.out.find("\"segments\""), std::string::npos) << json.out;  // 1.0 keys only
+  const CliResult text = RunCli({"info", dir + "/d.lmap"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  const std::string line = "layers:     " + std::to_string(v->walls.size()) + " walls (" +
+                           std::to_string(segments) + " segments), " +
+                           std::to_string(v->rooms.size()) + " rooms, " +
+                           std::to_string(v->furniture.size()) + " furniture\n";
+  EXPECT_NE(text.out.find(line), std::string::npos) << line << text.out;
+  EXPECT_NE(text.out.find("chunk:      CELL"), std::string::npos) << text.out;
 }
 
 TEST(CliInfoTest, TextOutputOnABundledMap) {

@@ -103,12 +103,21 @@ TEST(CmdEncodeTest, WritesThroughACurrentMapSymlinkAndRefusesReadOnlyFiles) {
   ::chmod((dir + "/ro.lmap").c_str(), 0644);
 }
 
-TEST(CmdEncodeTest, LosslessAndSimplifyFreeAreExclusive) {
+// The exact 2.0 file is the default; the former lossy encoder is reached
+// only through --lossy, and its options are refused without it.
+TEST(CmdEncodeTest, LossyOptionsNeedLossy) {
   const std::string dir = MakeTempDir("encode_modes");
   const std::string yaml = CopyDepot(dir);
-  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossless", "--simplify-free"}, dir,
-                {"--simplify-free", "--lossless"});
-  EXPECT_EQ(RunCli({"encode", yaml, "-o", dir + "/y.lmap", "--simplify-free"}).exit_code, 0);
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--simplify-free"}, dir,
+                {"--simplify-free", "--lossy"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--rooms"}, dir, {"--rooms", "--lossy"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossy", "--lossless"}, dir,
+                {"--lossy", "--lossless"});
+  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/y.lmap", "--lossy", "--simplify-free"}).exit_code,
+            0);
+  EXPECT_NE(RunCli({"info", dir + "/y.lmap"}).out.find("version 1.0"), std::string::npos);
+  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/z.lmap"}).exit_code, 0);
+  EXPECT_NE(RunCli({"info", dir + "/z.lmap"}).out.find("version 2."), std::string::npos);
 }
 
 // --pose must fall on the map; its lower edge (0,0 with origin 0,0) is on it.
@@ -136,7 +145,7 @@ TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
   ASSERT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("--origin X,Y[,YAW]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("[--pose X,Y[,YAW]]"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("[--lossless | --simplify-free]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[--lossy [--simplify-free]]"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("X,Y,YAW"), std::string::npos) << r.out;
 }
 

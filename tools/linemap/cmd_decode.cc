@@ -1,11 +1,13 @@
-// linemap decode IN.lmap -o OUT.yaml: writes OUT.yaml and OUT.pgm as nav2's
-// map_saver does (trinary).
+// linemap decode IN.lmap -o OUT.yaml [--window X0,Y0,X1,Y1 | --window-cells
+// C0,R0,C1,R1] [--threads N]: writes OUT.yaml and OUT.pgm as nav2's
+// map_saver does (trinary), of the whole map or of one window of it.
 #include <cstdio>
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/linemap/commands.h"
+#include "tools/linemap/decode_window.h"
 #include "tools/linemap/lmap_cli_util.h"
 
 namespace linemap::cli {
@@ -28,6 +30,11 @@ Status CheckOutput(const std::string& out, const std::string& in) {
 std::vector<OptionSpec> DecodeOptions() {
   std::vector<OptionSpec> options = {
       {"-o", "OUT.yaml", "output YAML; the PGM goes beside it"},
+      {"--window", "X0,Y0,X1,Y1",
+       "decode only the cells whose centres lie in the box [X0, X1] x [Y0, Y1] (map-frame metres, "
+       "edges included)"},
+      {"--window-cells", "C0,R0,C1,R1",
+       "decode only columns C0..C1-1 and rows R0..R1-1 (grid rows, row 0 at the origin)"},
       {"--no-sync", "",
        "skip flushing the files to disk (fsync); they are still replaced atomically, but a "
        "power cut right after may lose them"}};
@@ -38,10 +45,20 @@ std::vector<OptionSpec> DecodeOptions() {
 
 const CommandSpec kDecodeSpec = {
     "decode",
-    "IN.lmap -o OUT.yaml",
+    "IN.lmap -o OUT.yaml [--window X0,Y0,X1,Y1 | --window-cells C0,R0,C1,R1] [--threads N]",
     "decode an .lmap file into a ROS map (YAML + PGM)",
     "Writes OUT.yaml and OUT.pgm (0 occupied, 254 free, 205 unknown) as nav2's\n"
-    "map_saver does, so nav2's map_server loads the result.",
+    "map_saver does, so nav2's map_server loads the result.\n"
+    "With --window or --window-cells only that rectangle of cells is decoded\n"
+    "(a 2.0 file decodes only the tiles it meets) and written, with the YAML\n"
+    "origin at the window's lower-left corner, so it lies where it lay in the\n"
+    "whole map. --window X0,Y0,X1,Y1 takes the cells whose centres lie in the\n"
+    "box, on its edges too; the centre of cell (col, row) is the origin plus\n"
+    "((col + 0.5) x resolution, (row + 0.5) x resolution) turned by the\n"
+    "origin's yaw. When the yaw is not 0, the box's corners are taken into the\n"
+    "grid and the window is the cell rectangle around them. --window-cells is\n"
+    "half-open: C0 <= col < C1, R0 <= row < R1. A window that is empty or\n"
+    "reaches past the map's border is refused (exit 2).",
     DecodeOptions(),
     1,
     1,
@@ -57,15 +74,24 @@ int RunDecode(const std::vector<std::string>& args) {
   if (!output_ok.ok()) return ReportError("decode", output_ok);
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
   if (!limits.ok()) return ReportError("decode", limits.status());
-  StatusOr<Grid> grid = LoadLmap(parsed->positional[0], *limits);
+  const std::string& in = parsed->positional[0];
+  StatusOr<std::optional<CellWindow>> window = WindowFromArgs(*parsed, in, *limits);
+  if (!window.ok()) return ReportError("decode", window.status());
+  StatusOr<Grid> grid = *window ? LoadLmapRegion(in, **window, *limits) : LoadLmap(in, *limits);
   if (!grid.ok()) return ReportError("decode", grid.status());
   Status saved = SaveRosMap(*out, *grid,
                             parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
   if (!saved.ok()) return ReportError("decode", saved);
   const CellCounts counts = grid->Count();
-  std::printf("wrote %s and its .pgm: %d x %d cells, %zu free, %zu occupied, %zu unknown\n",
-              out->c_str(), grid->width(), grid->height(), counts.free, counts.occupied,
-              counts.unknown);
+  std::string where;
+  if (*window) {
+    const CellWindow& w = **window;
+    where = " (columns " + std::to_string(w.col0) + ".." + std::to_string(w.col1 - 1) + ", rows " +
+            std::to_string(w.row0) + ".." + std::to_string(w.row1 - 1) + ")";
+  }
+  std::printf("wrote %s and its .pgm: %d x %d cells%s, %zu free, %zu occupied, %zu unknown\n",
+              out->c_str(), grid->width(), grid->height(), where.c_str(), counts.free,
+              counts.occupied, counts.unknown);
   return kExitOk;
 }
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "linemap/codec.h"
-#include "linemap/lines.h"
+#include "linemap/lmap_vectors.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
 #include "tools/linemap/lmap_cli_util.h"
@@ -18,9 +18,14 @@ const CommandSpec kEvalSpec = {
     "DECODED_OR_LMAP is a map (YAML or image) or an .lmap file, which is decoded.\n"
     "Prints: cells equal, obstacle recall and precision within 1 cell, free-space\n"
     "IoU, free regions (50+ cells) merged by the decode (leaks), and unknown cells\n"
-    "turned free; for an .lmap file with wall segments also DisPL_ave (mean\n"
-    "distance from the original's edge cells to the nearest segment, RM-Line's\n"
-    "measure) and the share of edge cells within one cell of a segment.\n"
+    "turned free.\n"
+    "For an .lmap file also the fidelity of its vector layers, the RM-Line\n"
+    "paper's way: over the original's edge cells (occupied cells with a free\n"
+    "4-neighbour), DisPL_ave, the mean Euclidean distance from the cell centre\n"
+    "to the nearest wall segment (cells and cm; n/a when the file has no\n"
+    "walls), the largest such distance, the share within 1 cell of a wall, and\n"
+    "the share within 1 cell of a wall or inside a furniture outline (the\n"
+    "outline's cells and the cells whose centres it encloses).\n"
     "The map-reading options (--negate, --mode, the thresholds, --resolution,\n"
     "--origin) apply to ORIGINAL only: a decoded map's YAML carries its own\n"
     "values. --max-cells limits both. Maps of different sizes are refused.",
@@ -52,22 +57,21 @@ int RunEval(const std::vector<std::string>& args) {
                     ": eval compares maps of the same size"));
   }
   const GridComparison m = CompareGrids(*original, *decoded);
-  // Line fidelity when the second file is an .lmap with segments.
-  std::optional<LineFidelity> fidelity;
+  // The layers' fidelity when the second file is an .lmap.
+  std::optional<LayerFidelity> fidelity;
   if (IsLmapFile(decoded_path)) {
     DecodeLimits limits;
     limits.max_cells = decoded_options.max_cells;
-    StatusOr<LmapContents> contents = LoadLmapContents(decoded_path, limits);
-    if (!contents.ok()) return ReportError("eval", contents.status());
-    if (!contents->segments.empty() && m.same_geometry) {
-      std::vector<LineSegment> lines;
-      for (const LatticeSegment& s : contents->segments) {
-        lines.push_back(LineSegment{static_cast<double>(s.a.col), static_cast<double>(s.a.row),
-                                    static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
-      }
-      fidelity = MeasureLineFidelity(ComputeEdgeMap(*original), lines);
-    }
+    StatusOr<LmapVectors> vectors = LoadLmapVectors(decoded_path, limits);
+    if (!vectors.ok()) return ReportError("eval", vectors.status());
+    StatusOr<LayerFidelity> measured = MeasureLayerFidelity(*original, *vectors);
+    if (!measured.ok()) return ReportError("eval", measured.status());
+    fidelity = *measured;
   }
+  const double cm_per_cell = original->meta.resolution * 100;
+  auto share = [](std::size_t n, std::size_t of) {
+    return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 1.0;
+  };
   if (parsed->Has("--json")) {
     JsonObject json;
     json.Add("same_geometry", m.same_geometry)
@@ -80,9 +84,19 @@ int RunEval(const std::vector<std::string>& args) {
         .Add("unknown_turned_free", std::uint64_t{m.unknown_turned_free})
         .Add("unknown_turned_free_share", m.unknown_turned_free_share);
     if (fidelity) {
-      json.Add("displ_ave_cells", fidelity->displ_ave_cells)
-          .Add("displ_ave_m", fidelity->displ_ave_cells * original->meta.resolution)
-          .Add("edge_share_within_1", fidelity->share_within_1);
+      json.Add("edge_cells", std::uint64_t{fidelity->edge_cells});
+      if (fidelity->displ_ave_cells) {
+        json.Add("displ_ave_cells", *fidelity->displ_ave_cells)
+            .Add("displ_ave_cm", *fidelity->displ_ave_cells * cm_per_cell)
+            .Add("displ_max_cells", *fidelity->displ_max_cells);
+      } else {
+        json.AddRaw("displ_ave_cells", "null")
+            .AddRaw("displ_ave_cm", "null")
+            .AddRaw("displ_max_cells", "null");
+      }
+      json.Add("edge_share_within_1", share(fidelity->within_1_of_wall, fidelity->edge_cells))
+          .Add("edge_share_in_furniture", share(fidelity->in_furniture, fidelity->edge_cells))
+          .Add("edge_share_within_1_or_furniture", share(fidelity->covered, fidelity->edge_cells));
     }
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
@@ -97,9 +111,18 @@ int RunEval(const std::vector<std::string>& args) {
   std::printf("unknown turned free:  %zu (%.4f of free)\n", m.unknown_turned_free,
               m.unknown_turned_free_share);
   if (fidelity) {
-    std::printf("DisPL_ave:            %.4f cells (%.4f m)\n", fidelity->displ_ave_cells,
-                fidelity->displ_ave_cells * original->meta.resolution);
-    std::printf("edge cells within 1:  %.4f\n", fidelity->share_within_1);
+    std::printf("edge cells:           %zu (occupied, with a free 4-neighbour)\n",
+                fidelity->edge_cells);
+    if (fidelity->displ_ave_cells) {
+      std::printf("DisPL_ave:            %.4f cells (%.2f cm), largest %.2f cells\n",
+                  *fidelity->displ_ave_cells, *fidelity->displ_ave_cells * cm_per_cell,
+                  *fidelity->displ_max_cells);
+    } else {
+      std::printf("DisPL_ave:            n/a (the file has no walls)\n");
+    }
+    std::printf("within 1 of a wall:   %.4f\n",
+                share(fidelity->within_1_of_wall, fidelity->edge_cells));
+    std::printf("  or in furniture:    %.4f\n", share(fidelity->covered, fidelity->edge_cells));
   }
   return kExitOk;
 }

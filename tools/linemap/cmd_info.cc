@@ -15,19 +15,49 @@ const CommandSpec kInfoSpec = {
     "print a map's size, resolution, origin and free / occupied / unknown cell counts",
     "MAP is a ROS map YAML (its image: PGM or PNG), a bare PGM/PNG image, which\n"
     "gets the defaults 0.05 m/cell, origin 0,0,0 and thresholds 0.65 / 0.196,\n"
-    "or an .lmap file: then its header, chunks (size, coder) and the counts of\n"
-    "segments, room chains and blobs are printed.",
+    "or an .lmap file: then its version, header, chunks (size, coder), the\n"
+    "decoded cell counts and its vector layers are printed: walls (polylines\n"
+    "and the straight segments they are made of), rooms and furniture objects\n"
+    "(for a version 1.0 file: segments, room chains and blobs).",
     WithMapLoadOptions({{"--json", "",
                          "print one JSON object with keys width, height, "
-                         "resolution, origin, free, occupied, unknown"}}),
+                         "resolution, origin, free, occupied, unknown (an .lmap file "
+                         "also: version, lossless, walls, wall_segments, rooms, furniture, "
+                         "chunks; a 1.0 file segments, room_chains, blobs)"}}),
     1,
     1,
 };
 
 namespace {
 
+// Counts of a file's vector layers; a 1.0 file's segments are two-point
+// walls, its room chains rooms and its blobs furniture, as LoadLmapVectors
+// reads them.
+struct LayerCounts {
+  std::size_t walls = 0;
+  std::size_t wall_segments = 0;  // straight pieces: points - 1 per polyline
+  std::size_t rooms = 0;
+  std::size_t furniture = 0;
+};
+
+LayerCounts CountLayers(const LmapContents& c) {
+  LayerCounts n;
+  if (c.major >= 2) {
+    n.walls = c.walls.size();
+    for (const WallPolyline& w : c.walls)
+      n.wall_segments += w.points.empty() ? 0 : w.points.size() - 1;
+    n.rooms = c.rooms.size();
+    n.furniture = c.furniture.size();
+  } else {
+    n.walls = n.wall_segments = c.segments.size();
+    n.rooms = c.room_chains.size();
+    n.furniture = c.blob_outlines.size();
+  }
+  return n;
+}
+
 // `linemap info X.lmap`: the header fields, each chunk with its size and
-// coder, and the counts of segments, chains and blobs.
+// coder, and the counts of the vector layers.
 int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   StatusOr<MapLoadOptions> options = MapLoadOptionsFrom(args);
   if (!options.ok()) return ReportError("info", options.status());
@@ -37,6 +67,8 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   if (!contents.ok()) return ReportError("info", contents.status());
   const Grid& grid = contents->grid;
   const CellCounts counts = grid.Count();
+  const LayerCounts layers = CountLayers(*contents);
+  const bool v1 = contents->major < 2;
   if (args.Has("--json")) {
     std::string chunks = "[";
     for (const LmapChunkInfo& c : contents->chunks) {
@@ -53,10 +85,16 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
         .Add("origin",
              std::vector<double>{grid.meta.origin.x, grid.meta.origin.y, grid.meta.origin.yaw})
         .Add("lossless", contents->lossless)
-        .Add("segments", std::uint64_t{contents->segments.size()})
-        .Add("room_chains", std::uint64_t{contents->room_chains.size()})
-        .Add("blobs", std::uint64_t{contents->blob_outlines.size()})
-        .Add("free", std::uint64_t{counts.free})
+        .Add("walls", std::uint64_t{layers.walls})
+        .Add("wall_segments", std::uint64_t{layers.wall_segments})
+        .Add("rooms", std::uint64_t{layers.rooms})
+        .Add("furniture", std::uint64_t{layers.furniture});
+    if (v1) {
+      json.Add("segments", std::uint64_t{contents->segments.size()})
+          .Add("room_chains", std::uint64_t{contents->room_chains.size()})
+          .Add("blobs", std::uint64_t{contents->blob_outlines.size()});
+    }
+    json.Add("free", std::uint64_t{counts.free})
         .Add("occupied", std::uint64_t{counts.occupied})
         .Add("unknown", std::uint64_t{counts.unknown})
         .AddRaw("chunks", chunks);
@@ -72,8 +110,13 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   std::printf("pixels:     mode %s, negate %d, occupied_thresh %g, free_thresh %g\n",
               MapModeName(grid.meta.mode), grid.meta.negate ? 1 : 0, grid.meta.occupied_thresh,
               grid.meta.free_thresh);
-  std::printf("geometry:   %zu segments, %zu room chains, %zu blobs\n", contents->segments.size(),
-              contents->room_chains.size(), contents->blob_outlines.size());
+  if (v1) {
+    std::printf("geometry:   %zu segments, %zu room chains, %zu blobs\n", contents->segments.size(),
+                contents->room_chains.size(), contents->blob_outlines.size());
+  } else {
+    std::printf("layers:     %zu walls (%zu segments), %zu rooms, %zu furniture\n", layers.walls,
+                layers.wall_segments, layers.rooms, layers.furniture);
+  }
   std::printf("decoded:    %zu free, %zu occupied, %zu unknown\n", counts.free, counts.occupied,
               counts.unknown);
   for (const auto& [key, value] : contents->metadata) {

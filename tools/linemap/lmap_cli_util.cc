@@ -10,8 +10,11 @@ namespace linemap::cli {
 
 std::vector<OptionSpec> DecodeLimitOptionSpecs() {
   return {
-      {"--max-cells", "N", "refuse maps with more cells than N (default 268435456 = 2^28)"},
+      {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
+      {"--threads", "N",
+       "threads decoding the tiles of a 2.0 file (default 0: one per core); the result does not "
+       "depend on it"},
   };
 }
 
@@ -21,6 +24,9 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
                            args.GetUint64("--max-cells", limits.max_cells, /*min=*/1));
   LINEMAP_ASSIGN_OR_RETURN(limits.max_file_bytes,
                            args.GetUint64("--max-file-bytes", limits.max_file_bytes, /*min=*/1));
+  LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t threads, args.GetUint64("--threads", 0));
+  if (threads > 4096) return InvalidArgumentError("--threads must be 0..4096");
+  limits.max_threads = static_cast<int>(threads);
   return limits;
 }
 
@@ -34,7 +40,7 @@ bool IsLmapFile(const std::string& path) {
   return in.gcount() == 8 && LooksLikeLmap(head);
 }
 
-StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+StatusOr<std::vector<std::uint8_t>> TrinaryPng(const Grid& grid) {
   // The 2-bit palette PNG: for three-level maps it is within a few bytes of
   // netpbm's `pnmtopng -compression 9` and four times cheaper to make than
   // the 8-bit grey one.
@@ -47,9 +53,12 @@ StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
       index[static_cast<std::size_t>(y) * w + x] = static_cast<std::uint8_t>(grid.at(x, row));
     }
   }
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> p,
-                           EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown}));
-  return p.size();
+  return EncodePalettePng(w, h, index, {kPgmFree, kPgmOccupied, kPgmUnknown});
+}
+
+StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> png, TrinaryPng(grid));
+  return png.size();
 }
 
 double NowSeconds() {

@@ -20,7 +20,11 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 // True when `path` ends in .lmap or the file starts with the .lmap signature.
 bool IsLmapFile(const std::string& path);
 
-// Bytes of the 2-bit palette PNG (zlib level 9) of the grid's trinary image.
+// The 2-bit palette PNG (zlib level 9) of the grid's trinary image, in
+// map_saver's grey levels (free 254, occupied 0, unknown 205), north up.
+StatusOr<std::vector<std::uint8_t>> TrinaryPng(const Grid& grid);
+
+// Bytes of TrinaryPng(grid).
 StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid);
 
 // Seconds on a monotonic clock.

@@ -14,7 +14,7 @@ std::vector<OptionSpec> MapLoadOptionSpecs() {
       {"--occupied-thresh", "P", "occupancy above which a pixel is occupied (default 0.65)"},
       {"--free-thresh", "P", "occupancy below which a pixel is free (default 0.196)"},
       {"--mode", "MODE", "pixel mode: trinary (default), scale or raw"},
-      {"--max-cells", "N", "refuse maps with more cells than N (default 268435456 = 2^28)"},
+      {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
   };
 }
 

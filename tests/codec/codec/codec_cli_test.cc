@@ -53,7 +53,8 @@ TEST(CodecCliTest, InfoListsChunksAndEvalReportsExactness) {
   auto info = RunCli({"info", dir + "/a.lmap"});
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("LMHD"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("OCCP"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("CELL"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("WALL"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("lossless"), std::string::npos) << info.out;
   auto eval = RunCli({"eval", kArena, dir + "/a.lmap", "--json"});
   ASSERT_EQ(eval.exit_code, 0) << eval.err;
@@ -70,7 +71,9 @@ TEST(CodecCliTest, ExportWritesTheThreeFormats) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   const std::string csv = testing::ReadFile(dir + "/d.csv");
-  EXPECT_EQ(csv.rfind("layer,x1,y1,x2,y2\nsegment,", 0), 0u) << csv.substr(0, 80);
+  EXPECT_EQ(csv.rfind("layer,x1,y1,x2,y2\nwall,", 0), 0u) << csv.substr(0, 80);
+  EXPECT_NE(csv.find("\nroom_border,"), std::string::npos);
+  EXPECT_NE(csv.find("\nfurniture,"), std::string::npos);
   EXPECT_NE(testing::ReadFile(dir + "/d.geojson").find("\"LineString\""), std::string::npos);
   EXPECT_NE(testing::ReadFile(dir + "/d.svg").find("<polyline"), std::string::npos);
   auto bad = RunCli({"export", dir + "/d.lmap", "-o", dir + "/d.txt"});

@@ -1,0 +1,350 @@
+// linemap.lines / segment / plan / eval: the figures the CLI prints as JSON
+// (`linemap lines --json`, `segment -o OUT.json`, `plan --json`,
+// `eval --json`), as Python dicts, lists and numpy arrays in map-frame metres.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/lines.h"
+#include "linemap/plan.h"
+#include "linemap/segmentation.h"
+#include "python/arrays.h"
+#include "python/bindings.h"
+#include "python/errors.h"
+#include "python/map_files.h"
+#include "python/map_object.h"
+
+namespace linemap::python {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double MillisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A position (x, y) in map-frame metres as cell units of `grid`.
+std::optional<CellPoint> PoseArgument(const Grid& grid, const py::object& pose) {
+  if (pose.is_none()) return std::nullopt;
+  const std::vector<double> xy = FiniteFloats(pose, "pose (x, y)", 2, 2);
+  CellPoint cell;
+  grid.WorldToCell(xy[0], xy[1], &cell.col, &cell.row);
+  return cell;
+}
+
+// ---------------------------------------------------------------------------
+// lines
+
+py::array_t<double> SegmentRows(const Grid& grid, const std::vector<LineSegment>& segments) {
+  std::vector<double> rows(segments.size() * 4);
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const LineSegment& s = segments[i];
+    grid.CellToWorld(s.x1, s.y1, &rows[4 * i], &rows[4 * i + 1]);
+    grid.CellToWorld(s.x2, s.y2, &rows[4 * i + 2], &rows[4 * i + 3]);
+  }
+  return ArrayOwning(std::move(rows), {static_cast<py::ssize_t>(segments.size()), 4});
+}
+
+py::dict Lines(const Map& map, const std::string& method, double epsilon, bool straight_walls,
+               const py::object& pose) {
+  const Grid grid = GridFromMap(map);
+  LineExtractionOptions options;
+  if (straight_walls) options = StraightWalls(options);
+  if (method == "linemap") {
+    options.method = LineMethod::kLinemap;
+  } else if (method == "rmline") {
+    options.method = LineMethod::kRmLine;
+  } else {
+    throw py::value_error("method must be 'linemap' or 'rmline', not '" + method + "'");
+  }
+  if (!(epsilon >= 0.5)) throw py::value_error("epsilon must be at least 0.5 cells");
+  options.epsilon_cells = epsilon;
+  options.robot = PoseArgument(grid, pose);
+
+  StatusOr<LineExtraction> extraction = InternalError("not extracted");
+  LineFidelity fidelity;
+  double ms = 0;
+  {
+    py::gil_scoped_release release;
+    const Clock::time_point start = Clock::now();
+    extraction = ExtractLines(grid, options);
+    ms = MillisecondsSince(start);
+    if (extraction.ok()) fidelity = MeasureLineFidelity(extraction->edges, extraction->segments);
+  }
+  const LineExtraction lines = ValueOrRaise(std::move(extraction));
+  py::dict out;
+  out["lines"] = lines.segments.size();
+  out["displ_cm"] = fidelity.displ_ave_cells * (grid.meta.resolution * 100.0);
+  out["displ_cells"] = fidelity.displ_ave_cells;
+  out["displ_max_cells"] = fidelity.displ_max_cells;
+  out["ms"] = ms;
+  out["edge_cells"] = fidelity.edge_cells;
+  out["share_within_1"] = fidelity.share_within_1;
+  out["cells_left_to_blobs"] = lines.cells_left_to_blobs;
+  out["segments"] = SegmentRows(grid, lines.segments);
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// segment
+
+// The box's outer cell edges: (x0, y0, x1, y1) in metres, as the CLI's bbox.
+py::tuple BoxTuple(const Grid& grid, const BoundingBox& box) {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  grid.CellToWorld(box.min_col - 0.5, box.min_row - 0.5, &x0, &y0);
+  grid.CellToWorld(box.max_col + 0.5, box.max_row + 0.5, &x1, &y1);
+  return py::make_tuple(x0, y0, x1, y1);
+}
+
+py::dict Segment(const Map& map, const py::object& pose) {
+  const Grid grid = GridFromMap(map);
+  SegmentationOptions options;
+  options.robot = PoseArgument(grid, pose);
+  StatusOr<Segmentation> segmentation = InternalError("not segmented");
+  {
+    py::gil_scoped_release release;
+    segmentation = SegmentMap(grid, options);
+  }
+  const Segmentation seg = ValueOrRaise(std::move(segmentation));
+  py::list rooms;
+  for (const RoomBorder& room : seg.rooms) {
+    py::dict r;
+    r["chain_cells"] = room.chain.size();
+    r["chain"] = WorldPoints(grid, room.chain);
+    rooms.append(r);
+  }
+  py::list blobs;
+  for (const FurnitureBlob& blob : seg.blobs) {
+    py::dict b;
+    b["cell_count"] = blob.cells.size();
+    // Cells are in raster order, so the first is the CLI's first_cell.
+    b["first_cell"] = blob.cells.empty() ? py::object(py::none()) : WorldPoint(grid, blob.cells[0]);
+    b["bbox"] = BoxTuple(grid, blob.box);
+    b["outline"] = WorldPoints(grid, blob.outline);
+    b["cells"] = WorldPoints(grid, blob.cells);
+    blobs.append(b);
+  }
+  py::dict out;
+  out["resolution"] = grid.meta.resolution;
+  out["rooms"] = rooms;
+  out["blobs"] = blobs;
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// plan
+
+py::list CommandList(const PlannedTrajectory& t) {
+  py::list commands;
+  for (const PlanCommand& c : t.commands) {
+    py::dict command;
+    command[c.kind == PlanCommand::Kind::kTurn ? "turn_deg" : "move_m"] = c.value;
+    commands.append(command);
+  }
+  return commands;
+}
+
+py::array_t<double> WaypointArray(const PlannedTrajectory& t) {
+  std::vector<double> xy;
+  for (const Pose2D& p : t.waypoints) xy.insert(xy.end(), {p.x, p.y});
+  return ArrayOwning(std::move(xy), {static_cast<py::ssize_t>(t.waypoints.size()), 2});
+}
+
+py::dict Plan(const Map& map, const py::object& start, const py::object& goal, double robot_width,
+              double robot_length, double margin, double d_min, double d_max) {
+  const std::vector<double> from = FiniteFloats(start, "start (x, y[, heading])", 2, 3);
+  const std::vector<double> to = FiniteFloats(goal, "goal (x, y)", 2, 2);
+  PlanRequest request;
+  request.start_x = from[0];
+  request.start_y = from[1];
+  request.start_heading_rad = from.size() > 2 ? from[2] : 0.0;
+  request.goal_x = to[0];
+  request.goal_y = to[1];
+  PlanOptions options;
+  options.robot.width_m = robot_width;
+  options.robot.length_m = robot_length;
+  options.robot.margin_m = margin;
+  options.d_min_m = d_min;
+  options.d_max_m = d_max;
+  const Grid grid = GridFromMap(map);
+
+  StatusOr<PlanResult> planned = InternalError("not planned");
+  double ms = 0;
+  {
+    py::gil_scoped_release release;
+    const Clock::time_point t0 = Clock::now();
+    StatusOr<Planner> planner = Planner::Create(options, grid.meta.resolution);
+    planned = planner.ok() ? planner->Plan(grid, request) : StatusOr<PlanResult>(planner.status());
+    ms = MillisecondsSince(t0);
+  }
+  const PlanResult result = ValueOrRaise(std::move(planned));
+  py::dict out;
+  out["found"] = result.found();
+  if (!result.found()) {
+    out["error"] = result.message;
+    out["alternatives"] = 0;
+    out["ms"] = ms;
+    return out;
+  }
+  py::list all;
+  for (const PlannedTrajectory& t : result.trajectories) {
+    py::dict one;
+    one["length_m"] = t.length_m;
+    one["commands"] = CommandList(t);
+    one["waypoints"] = WaypointArray(t);
+    one["straightened"] = t.straightened;
+    all.append(one);
+  }
+  const PlannedTrajectory& best = result.trajectories.front();
+  py::dict stages;
+  stages["safe_zone"] = result.times.safe_zone_ms;
+  stages["wave"] = result.times.wave_ms;
+  stages["regions"] = result.times.regions_ms;
+  stages["generation"] = result.times.generation_ms;
+  out["length_m"] = best.length_m;
+  out["commands"] = CommandList(best);
+  out["waypoints"] = WaypointArray(best);
+  out["alternatives"] = result.trajectories.size();
+  out["ms"] = ms;
+  out["stages_ms"] = stages;
+  out["trajectories"] = all;
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// eval
+
+// A Map, or a path loaded as linemap.load() does.
+Grid GridArgument(const py::object& value, std::uint64_t max_cells) {
+  if (py::isinstance<Map>(value)) return GridFromMap(value.cast<const Map&>());
+  const std::string path = PathArgument(value);
+  StatusOr<Grid> grid = InternalError("not loaded");
+  {
+    py::gil_scoped_release release;
+    grid = LoadMapFile(path, max_cells);
+  }
+  return ValueOrRaise(std::move(grid));
+}
+
+// The vector layers of an .lmap file; nullopt unless `decoded` is a path to
+// an .lmap file.
+std::optional<LmapVectors> StoredLayers(const py::object& decoded, std::uint64_t max_cells) {
+  if (py::isinstance<Map>(decoded)) return std::nullopt;
+  const std::string path = PathArgument(decoded);
+  if (!IsLmapPath(path)) return std::nullopt;
+  DecodeLimits limits;
+  limits.max_cells = max_cells;
+  StatusOr<LmapVectors> vectors = InternalError("not read");
+  {
+    py::gil_scoped_release release;
+    vectors = LoadLmapVectors(path, limits);
+  }
+  return ValueOrRaise(std::move(vectors));
+}
+
+py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
+              const py::object& max_cells_arg) {
+  const std::uint64_t max_cells = MaxCellsArgument(max_cells_arg, DecodeLimits{}.max_cells);
+  const Grid original = GridArgument(original_arg, max_cells);
+  const Grid decoded = GridArgument(decoded_arg, max_cells);
+  if (original.width() != decoded.width() || original.height() != decoded.height()) {
+    throw py::value_error("the original is " + std::to_string(original.width()) + " x " +
+                          std::to_string(original.height()) + " cells but the decoded map is " +
+                          std::to_string(decoded.width()) + " x " +
+                          std::to_string(decoded.height()) +
+                          ": eval compares maps of the same size");
+  }
+  const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, max_cells);
+  GridComparison m;
+  StatusOr<LayerFidelity> fidelity = InternalError("not measured");
+  {
+    py::gil_scoped_release release;
+    m = CompareGrids(original, decoded);
+    if (layers) fidelity = MeasureLayerFidelity(original, *layers);
+  }
+  py::dict out;
+  out["same_geometry"] = m.same_geometry;
+  out["cells"] = m.cells;
+  out["cells_equal"] = m.cells_equal;
+  out["obstacle_recall_1"] = m.obstacle_recall_1;
+  out["obstacle_precision_1"] = m.obstacle_precision_1;
+  out["free_iou"] = m.free_iou;
+  out["leaks"] = m.leaks;
+  out["unknown_turned_free"] = m.unknown_turned_free;
+  out["unknown_turned_free_share"] = m.unknown_turned_free_share;
+  if (layers) {
+    // The same keys as `linemap eval --json`.
+    const LayerFidelity& f = ValueOrRaise(std::move(fidelity));
+    const auto share = [&](std::size_t n) {
+      return f.edge_cells > 0 ? static_cast<double>(n) / static_cast<double>(f.edge_cells) : 1.0;
+    };
+    out["edge_cells"] = f.edge_cells;
+    if (f.displ_ave_cells) {
+      out["displ_ave_cells"] = *f.displ_ave_cells;
+      out["displ_ave_cm"] = *f.displ_ave_cells * original.meta.resolution * 100.0;
+      out["displ_max_cells"] = *f.displ_max_cells;
+    } else {
+      out["displ_ave_cells"] = py::none();
+      out["displ_ave_cm"] = py::none();
+      out["displ_max_cells"] = py::none();
+    }
+    out["edge_share_within_1"] = share(f.within_1_of_wall);
+    out["edge_share_in_furniture"] = share(f.in_furniture);
+    out["edge_share_within_1_or_furniture"] = share(f.covered);
+  }
+  return out;
+}
+
+}  // namespace
+
+void BindAnalysis(py::module_& module) {
+  module.def("lines", &Lines, py::arg("map"), py::arg("method") = "linemap", py::kw_only(),
+             py::arg("epsilon") = 1.0, py::arg("straight_walls") = false,
+             py::arg("pose") = py::none(), R"doc(
+Wall line segments of ``map`` and the RM-Line paper's measures, as
+``linemap lines --json``: lines, displ_cm, displ_cells, displ_max_cells, ms,
+edge_cells, share_within_1, cells_left_to_blobs, plus ``segments``, an (N, 4)
+float64 array x1, y1, x2, y2 in map-frame metres. ``method`` is "linemap"
+(default) or "rmline"; ``epsilon`` (cells, >= 0.5) the linemap extractor's
+tolerance; ``straight_walls`` one segment per straight wall; ``pose`` (x, y)
+in metres floods only the robot's free space.
+)doc");
+  module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("pose") = py::none(),
+             R"doc(
+Room-border chains and furniture blobs, as ``linemap segment`` writes them:
+{resolution, rooms: [{chain: (K, 2) closed chain of cell centres, chain_cells}],
+blobs: [{cell_count, first_cell, bbox (x0, y0, x1, y1 cell edges),
+outline: (K, 2), cells: (M, 2)}]}, map-frame metres. ``pose`` (x, y) picks
+the robot's room; without it every free component of 400+ cells is a room.
+)doc");
+  module.def("plan", &Plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::kw_only(),
+             py::arg("robot_width") = 0.4, py::arg("robot_length") = 0.4, py::arg("margin") = 0.05,
+             py::arg("d_min") = 0.1, py::arg("d_max") = 5.0, R"doc(
+A turn-and-move trajectory from ``start`` (x, y[, heading]) to ``goal``
+(x, y), metres and radians, as ``linemap plan --json``: found, length_m,
+commands ([{"turn_deg": d} | {"move_m": m}]), waypoints ((K, 2) array),
+alternatives, ms, stages_ms and every trajectory, best first. A goal that
+cannot be reached is no exception: found is False and error says why.
+Robot size, margin and the shortest / longest move are in metres;
+options the planner refuses raise ValueError.
+)doc");
+  module.def("eval", &Eval, py::arg("original"), py::arg("decoded"), py::kw_only(),
+             py::arg("max_cells") = py::none(), R"doc(
+The quality figures of ``decoded`` against ``original``, as
+``linemap eval --json``. Each is a Map or a path (loaded as load() does);
+when ``decoded`` is the path of an .lmap file with wall segments, also
+displ_ave_cells, displ_ave_m and edge_share_within_1. Maps of different
+sizes raise ValueError.
+)doc");
+}
+
+}  // namespace linemap::python

@@ -1,0 +1,40 @@
+// linemap::Status codes as Python exceptions. The library reports errors as
+// values; the module raises them once it holds the GIL again, with the
+// library's message (which names the file and the problem).
+//
+//   kInvalidArgument, kCorrupt, kUnsupported  -> ValueError
+//   kNotFound                                 -> FileNotFoundError (an OSError)
+//   kIoError                                  -> OSError
+//   kResourceExhausted                        -> MemoryError (a caller-set limit such
+//                                                as max_cells, not the machine's memory)
+//   kInternal                                 -> RuntimeError
+#ifndef LINEMAP_PYTHON_ERRORS_H_
+#define LINEMAP_PYTHON_ERRORS_H_
+
+#include <pybind11/pybind11.h>
+
+#include <utility>
+
+#include "linemap/status.h"
+
+namespace linemap::python {
+
+// The Python exception class for a library error code (see above).
+PyObject* ExceptionTypeFor(StatusCode code);
+
+// Raises `status` (not OK) as its Python exception. Needs the GIL.
+[[noreturn]] void RaiseStatus(const Status& status);
+
+inline void RaiseIfError(const Status& status) {
+  if (!status.ok()) RaiseStatus(status);
+}
+
+template <typename T>
+T ValueOrRaise(StatusOr<T>&& result) {
+  if (!result.ok()) RaiseStatus(result.status());
+  return std::move(result).value();
+}
+
+}  // namespace linemap::python
+
+#endif  // LINEMAP_PYTHON_ERRORS_H_

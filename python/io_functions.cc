@@ -1,0 +1,201 @@
+// linemap.load / save / encode / decode / vectors: maps and .lmap files.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
+#include "python/arrays.h"
+#include "python/bindings.h"
+#include "python/errors.h"
+#include "python/map_files.h"
+#include "python/map_object.h"
+
+namespace linemap::python {
+
+namespace {
+
+std::vector<std::uint8_t> BytesArgument(const py::handle& data) {
+  if (!PyObject_CheckBuffer(data.ptr()) || py::isinstance<py::str>(data)) {
+    throw py::type_error("expected bytes, bytearray or memoryview");
+  }
+  const py::buffer_info info = py::reinterpret_borrow<py::buffer>(data).request();
+  if (info.itemsize != 1 || info.ndim != 1 || info.strides[0] != 1) {
+    throw py::type_error("expected a contiguous buffer of bytes");
+  }
+  const auto* begin = static_cast<const std::uint8_t*>(info.ptr);
+  return std::vector<std::uint8_t>(begin, begin + info.size);
+}
+
+// tolerance 0 asks for an exact file. The encoder of format 1.x keys
+// exactness on `lossless` (its default is lossy), so it is set here too;
+// other tolerances go to the library as they are.
+EncodeOptions EncodeOptionsFor(int tolerance, bool vectors) {
+  EncodeOptions options;
+  options.tolerance_cells = tolerance;
+  options.vector_layers = vectors;
+  return options;
+}
+
+Map Load(const py::object& path_arg, const py::object& max_cells_arg) {
+  const std::string path = PathArgument(path_arg);
+  const std::uint64_t max_cells = MaxCellsArgument(max_cells_arg, DecodeLimits{}.max_cells);
+  StatusOr<Grid> grid = InvalidArgumentError("not loaded");
+  {
+    py::gil_scoped_release release;
+    grid = LoadMapFile(path, max_cells);
+  }
+  return MapFromGrid(ValueOrRaise(std::move(grid)));
+}
+
+void CheckTolerance(int tolerance) {
+  if (tolerance < 0) throw py::value_error("tolerance must be at least 0 cells");
+}
+
+void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors) {
+  CheckTolerance(tolerance);
+  const std::string path = PathArgument(path_arg);
+  const bool yaml = IsYamlPath(path);
+  if (!yaml && !EndsWith(path, ".lmap")) {
+    throw py::value_error("'" + path + "': linemap.save writes .lmap or map .yaml files");
+  }
+  const Grid grid = GridFromMap(map);
+  Status saved;
+  {
+    py::gil_scoped_release release;
+    saved =
+        yaml ? SaveRosMap(path, grid) : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors));
+  }
+  RaiseIfError(saved);
+}
+
+py::bytes Encode(const Map& map, int tolerance, bool vectors) {
+  CheckTolerance(tolerance);
+  const Grid grid = GridFromMap(map);
+  StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
+  {
+    py::gil_scoped_release release;
+    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors));
+  }
+  const std::vector<std::uint8_t> out = ValueOrRaise(std::move(bytes));
+  return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
+}
+
+Map Decode(const py::object& data, const py::object& max_cells_arg) {
+  DecodeLimits limits;
+  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+  const std::vector<std::uint8_t> bytes = BytesArgument(data);
+  StatusOr<Grid> grid = InvalidArgumentError("not decoded");
+  {
+    py::gil_scoped_release release;
+    grid = DecodeLmap(bytes, limits);
+  }
+  return MapFromGrid(ValueOrRaise(std::move(grid)));
+}
+
+// The walls' consecutive point pairs as (N, 4) rows x1, y1, x2, y2 (metres).
+py::array_t<double> WallSegments(const Grid& frame, const std::vector<WallPolyline>& walls) {
+  std::vector<double> rows;
+  for (const WallPolyline& wall : walls) {
+    for (std::size_t i = 0; i + 1 < wall.points.size(); ++i) {
+      double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+      frame.CellToWorld(wall.points[i].col, wall.points[i].row, &x1, &y1);
+      frame.CellToWorld(wall.points[i + 1].col, wall.points[i + 1].row, &x2, &y2);
+      rows.insert(rows.end(), {x1, y1, x2, y2});
+    }
+  }
+  const auto n = static_cast<py::ssize_t>(rows.size() / 4);
+  return ArrayOwning(std::move(rows), {n, 4});
+}
+
+py::dict VectorsDict(const LmapVectors& v) {
+  Grid frame;  // carries the metadata for CellToWorld
+  frame.meta = v.meta;
+  py::list polylines;
+  for (const WallPolyline& wall : v.walls) polylines.append(WorldPoints(frame, wall.points));
+  py::list rooms;
+  for (const RoomOutline& room : v.rooms) {
+    py::dict r;
+    r["id"] = room.id;
+    r["kind"] = RoomKindName(room.kind);
+    r["outline"] = WorldPoints(frame, room.chain);
+    rooms.append(r);
+  }
+  py::list furniture;
+  for (const FurnitureObject& object : v.furniture) {
+    py::dict f;
+    f["id"] = object.id;
+    f["room_id"] = object.room_id < 0 ? py::object(py::none()) : py::int_(object.room_id);
+    f["outline"] = WorldPoints(frame, object.outline);
+    furniture.append(f);
+  }
+  py::dict out;
+  out["version"] = py::make_tuple(v.major, v.minor);
+  out["width"] = v.width;
+  out["height"] = v.height;
+  out["resolution"] = v.meta.resolution;
+  out["origin"] = py::make_tuple(v.meta.origin.x, v.meta.origin.y, v.meta.origin.yaw);
+  out["walls"] = WallSegments(frame, v.walls);
+  out["wall_polylines"] = polylines;
+  out["rooms"] = rooms;
+  out["furniture"] = furniture;
+  return out;
+}
+
+py::dict Vectors(const py::object& source, const py::object& max_cells_arg) {
+  DecodeLimits limits;
+  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+  StatusOr<LmapVectors> vectors = InvalidArgumentError("not read");
+  if (PyObject_CheckBuffer(source.ptr())) {
+    const std::vector<std::uint8_t> bytes = BytesArgument(source);
+    py::gil_scoped_release release;
+    vectors = DecodeLmapVectors(bytes, limits);
+  } else {
+    const std::string path = PathArgument(source);
+    py::gil_scoped_release release;
+    vectors = LoadLmapVectors(path, limits);
+  }
+  return VectorsDict(ValueOrRaise(std::move(vectors)));
+}
+
+}  // namespace
+
+void BindIo(py::module_& module) {
+  module.def("load", &Load, py::arg("path"), py::arg("max_cells") = py::none(), R"doc(
+Loads a map: an .lmap file (by its name or its signature), a ROS map YAML
+naming its image, or a bare PGM / PNG image (0.05 m/cell, origin 0, map_server's
+thresholds). ``max_cells`` (default 2^28) refuses larger maps before they are
+allocated (MemoryError). A missing file raises FileNotFoundError, an
+unreadable one OSError, a corrupt or malformed one ValueError; the message
+names the file.
+)doc");
+  module.def("save", &Save, py::arg("path"), py::arg("map"), py::arg("tolerance") = 0,
+             py::arg("vectors") = true, R"doc(
+Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
+``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
+ends in .yaml or .yml; other names raise ValueError. ``tolerance`` (cells) is
+how far the decoded map may differ from ``map``; 0 is exact. ``vectors``
+stores the vector layers (walls, rooms, furniture) besides the cells.
+Options the library refuses raise ValueError with its message.
+)doc");
+  module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
+             "The .lmap bytes of ``map`` (``tolerance`` and ``vectors`` as for save()).");
+  module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
+             "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
+             "ValueError, more than ``max_cells`` cells MemoryError.");
+  module.def("vectors", &Vectors, py::arg("source"), py::arg("max_cells") = py::none(), R"doc(
+The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
+files are read whole: their layers sit between raster chunks). A dict, geometry in map-frame metres through cell centres:
+``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
+consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays,
+``rooms`` a list of {id, kind, outline: (K, 2) closed chain},
+``furniture`` a list of {id, room_id or None, outline: (K, 2), cells: (M, 2)},
+and the file's ``version``, ``width``, ``height``, ``resolution``, ``origin``.
+)doc");
+}
+
+}  // namespace linemap::python

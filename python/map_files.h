@@ -1,0 +1,30 @@
+// How the module tells map files apart, as the CLI does
+// (tools/linemap/map_input.cc): .lmap files by name or signature, map YAML
+// by name, anything else as a bare image.
+#ifndef LINEMAP_PYTHON_MAP_FILES_H_
+#define LINEMAP_PYTHON_MAP_FILES_H_
+
+#include <cstdint>
+#include <string>
+
+#include "linemap/grid.h"
+#include "linemap/status.h"
+
+namespace linemap::python {
+
+bool EndsWith(const std::string& text, const std::string& suffix);
+
+// A file named .lmap is one (so a renamed image is refused as a bad .lmap
+// instead of being read as an image), and so is any file that starts with
+// the .lmap signature.
+bool IsLmapPath(const std::string& path);
+
+bool IsYamlPath(const std::string& path);
+
+// An .lmap file, a map YAML or a bare image, refused beyond `max_cells`
+// cells. Runs without the GIL.
+StatusOr<Grid> LoadMapFile(const std::string& path, std::uint64_t max_cells);
+
+}  // namespace linemap::python
+
+#endif  // LINEMAP_PYTHON_MAP_FILES_H_

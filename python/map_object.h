@@ -1,0 +1,42 @@
+// linemap.Map: a trinary occupancy grid as a numpy array plus the metadata
+// that places it in the map frame (and writes it back as ROS map YAML).
+#ifndef LINEMAP_PYTHON_MAP_OBJECT_H_
+#define LINEMAP_PYTHON_MAP_OBJECT_H_
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+
+#include "linemap/grid.h"
+
+namespace linemap::python {
+
+namespace py = pybind11;
+
+struct Map {
+  // (height, width) uint8 array, row 0 at the origin, values Cell (0 free,
+  // 1 occupied, 2 unknown). Python code may write into it, so its values are
+  // checked again whenever a grid is made from it (GridFromMap).
+  py::array cells;
+  // Resolution, origin and the YAML fields (mode, negate, thresholds) the
+  // map was loaded with, so that saving it as YAML keeps them.
+  MapMetadata meta;
+};
+
+// The grid's cells become the array without a copy.
+Map MapFromGrid(Grid grid);
+
+// A grid with copies of the map's cells (so the library can run on it with
+// the GIL released while Python changes the array). Raises ValueError when a
+// cell holds something other than 0, 1 or 2. Needs the GIL.
+Grid GridFromMap(const Map& map);
+
+// Checks that `cells` is a 2-D uint8 numpy array (TypeError, ValueError).
+void CheckCellsArray(const py::handle& cells);
+
+void BindMap(py::module_& module);
+
+}  // namespace linemap::python
+
+#endif  // LINEMAP_PYTHON_MAP_OBJECT_H_

@@ -1,0 +1,446 @@
+// The tile cell coder: exact round trips on random and real grids, tiles
+// decoding on their own, and malformed data refused without crashing.
+#include "codec/codec/tile_coder.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "codec/codec/tile_hints.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using Bytes = std::vector<std::uint8_t>;
+
+Cell RandomCell(std::mt19937& rng) { return static_cast<Cell>(rng() % 3); }
+
+// A width x height grid of one of three kinds: independent random cells
+// (nothing to predict), rectangles of one value over a background (rows and
+// blocks equal to the row below, the copy paths), or rectangles with a
+// sprinkle of noise.
+std::vector<Cell> RandomGrid(std::mt19937& rng, int width, int height) {
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  std::vector<Cell> cells(n, RandomCell(rng));
+  const int kind = static_cast<int>(rng() % 3);
+  if (kind == 0) {
+    for (Cell& c : cells) c = RandomCell(rng);
+    return cells;
+  }
+  const int rects = static_cast<int>(rng() % 6);
+  for (int k = 0; k < rects && width > 0 && height > 0; ++k) {
+    const int x0 = static_cast<int>(rng() % width);
+    const int y0 = static_cast<int>(rng() % height);
+    const int x1 = x0 + 1 + static_cast<int>(rng() % (width - x0));
+    const int y1 = y0 + 1 + static_cast<int>(rng() % (height - y0));
+    const Cell v = RandomCell(rng);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) cells[static_cast<std::size_t>(y) * width + x] = v;
+    }
+  }
+  if (kind == 2) {
+    for (Cell& c : cells) {
+      if (rng() % 20 == 0) c = RandomCell(rng);
+    }
+  }
+  return cells;
+}
+
+CellRect RandomTile(std::mt19937& rng, int width, int height) {
+  CellRect t;
+  t.x0 = static_cast<int>(rng() % (width + 1));
+  t.x1 = t.x0 + static_cast<int>(rng() % (width - t.x0 + 1));
+  t.y0 = static_cast<int>(rng() % (height + 1));
+  t.y1 = t.y0 + static_cast<int>(rng() % (height - t.y0 + 1));
+  return t;
+}
+
+bool Inside(CellRect t, int x, int y) { return x >= t.x0 && x < t.x1 && y >= t.y0 && y < t.y1; }
+
+// Decodes `data` for `tile` onto a canvas holding `background` and checks
+// that the tile's cells equal `cells` and every other cell is untouched.
+void ExpectDecodes(const Bytes& data, const std::vector<Cell>& cells,
+                   const std::vector<Cell>& background, const std::uint8_t* hints, int width,
+                   int height, CellRect tile) {
+  std::vector<Cell> canvas = background;
+  const Status s =
+      DecodeTileCells(data.data(), data.size(), hints, width, height, tile, canvas.data());
+  ASSERT_TRUE(s.ok()) << s.ToString();
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width + x;
+      ASSERT_EQ(canvas[i], Inside(tile, x, y) ? cells[i] : background[i])
+          << "cell (" << x << ", " << y << ") of tile [" << tile.x0 << ", " << tile.x1 << ") x ["
+          << tile.y0 << ", " << tile.y1 << ")";
+    }
+  }
+}
+
+TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
+  std::mt19937 rng(20261125);
+  for (int iter = 0; iter < 400; ++iter) {
+    const int width = static_cast<int>(rng() % 41);
+    const int height = static_cast<int>(rng() % 41);
+    const std::vector<Cell> cells = RandomGrid(rng, width, height);
+    const std::vector<Cell> background = RandomGrid(rng, width, height);
+    std::vector<std::uint8_t> hints(cells.size());
+    for (auto& h : hints) h = static_cast<std::uint8_t>(rng() % 16);
+    const std::uint8_t* hint_ptr = iter % 2 ? hints.data() : nullptr;
+    CellRect tile = RandomTile(rng, width, height);
+    if (iter % 5 == 0) tile = CellRect{0, 0, width, height};
+    if (iter % 7 == 0 && width > 0 && height > 0) {
+      tile = CellRect{width - 1, height - 1, width, height};  // the corner cell
+    }
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile);
+    ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
+  }
+}
+
+TEST(TileCoderTest, EmptyTileHasNoBytes) {
+  const std::vector<Cell> cells(12, Cell::kOccupied);
+  for (const CellRect t : {CellRect{0, 0, 0, 3}, CellRect{2, 1, 4, 1}, CellRect{4, 3, 4, 3}}) {
+    EXPECT_TRUE(EncodeTileCells(cells.data(), nullptr, 4, 3, t).empty());
+    std::vector<Cell> canvas(12, Cell::kFree);
+    EXPECT_TRUE(DecodeTileCells(nullptr, 0, nullptr, 4, 3, t, canvas.data()).ok());
+    const std::uint8_t extra = 0;
+    EXPECT_FALSE(DecodeTileCells(&extra, 1, nullptr, 4, 3, t, canvas.data()).ok());
+    EXPECT_EQ(canvas, std::vector<Cell>(12, Cell::kFree));
+  }
+}
+
+TEST(TileCoderTest, TileOutsideTheGridIsRefused) {
+  std::vector<Cell> canvas(12, Cell::kFree);
+  const std::uint8_t byte = 0;
+  for (const CellRect t :
+       {CellRect{-1, 0, 2, 2}, CellRect{0, 0, 5, 3}, CellRect{0, 2, 4, 4}, CellRect{3, 0, 2, 3}}) {
+    const Status s = DecodeTileCells(&byte, 1, nullptr, 4, 3, t, canvas.data());
+    EXPECT_EQ(s.code(), StatusCode::kInvalidArgument) << s.ToString();
+  }
+}
+
+// The encoder reads only the tile's own cells: changing every cell outside
+// it leaves the bytes as they were.
+TEST(TileCoderTest, BytesDependOnlyOnTheTilesCells) {
+  std::mt19937 rng(7);
+  for (int iter = 0; iter < 50; ++iter) {
+    const int width = 1 + static_cast<int>(rng() % 30);
+    const int height = 1 + static_cast<int>(rng() % 30);
+    std::vector<Cell> cells = RandomGrid(rng, width, height);
+    const CellRect tile = RandomTile(rng, width, height);
+    const Bytes before = EncodeTileCells(cells.data(), nullptr, width, height, tile);
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        if (!Inside(tile, x, y)) cells[static_cast<std::size_t>(y) * width + x] = RandomCell(rng);
+      }
+    }
+    EXPECT_EQ(EncodeTileCells(cells.data(), nullptr, width, height, tile), before);
+  }
+}
+
+std::vector<CellRect> Tiles(int width, int height, int size) {
+  std::vector<CellRect> out;
+  for (int y = 0; y < height; y += size) {
+    for (int x = 0; x < width; x += size) {
+      out.push_back(CellRect{x, y, std::min(x + size, width), std::min(y + size, height)});
+    }
+  }
+  return out;
+}
+
+std::vector<Grid> BundledMaps() {
+  std::vector<Grid> maps;
+  for (const std::string& yaml : testing::FindYamlFiles(testing::BundledMapsDir())) {
+    StatusOr<Grid> g = LoadRosMap(yaml);
+    EXPECT_TRUE(g.ok()) << yaml << ": " << g.status().ToString();
+    if (g.ok()) maps.push_back(std::move(*g));
+  }
+  EXPECT_GE(maps.size(), 4u);
+  return maps;
+}
+
+// Every bundled map, in tiles of several sizes (the whole map, 1024, 256,
+// and 97, whose tiles end mid-block), with and without the layers' hints,
+// decodes to its cells; decoding a single tile gives the full decode's crop.
+TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
+  for (const Grid& g : BundledMaps()) {
+    const int w = g.width();
+    const int h = g.height();
+    StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+    ASSERT_TRUE(hints.ok()) << hints.status().ToString();
+    for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
+                                         static_cast<const std::uint8_t*>(hints->data())}) {
+      for (int size : {std::max(w, h), 1024, 256, 97}) {
+        const std::vector<CellRect> tiles = Tiles(w, h, size);
+        std::vector<Bytes> data;
+        for (const CellRect& t : tiles) {
+          data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t));
+        }
+        std::vector<Cell> full(g.size(), Cell::kUnknown);
+        for (std::size_t k = tiles.size(); k-- > 0;) {
+          const Status s = DecodeTileCells(data[k].data(), data[k].size(), hint_ptr, w, h, tiles[k],
+                                           full.data());
+          ASSERT_TRUE(s.ok()) << s.ToString();
+        }
+        ASSERT_EQ(full, g.cells())
+            << "tile size " << size << (hint_ptr ? " with" : " without") << " hints";
+        const std::size_t k = tiles.size() / 2;
+        ExpectDecodes(data[k], full, std::vector<Cell>(g.size(), Cell::kFree), hint_ptr, w, h,
+                      tiles[k]);
+      }
+    }
+  }
+}
+
+// Every truncation and every appended byte is an error; random byte flips
+// never crash (they may decode to other cells: the container's checksum
+// catches those).
+TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
+  const std::vector<Grid> maps = BundledMaps();
+  ASSERT_FALSE(maps.empty());
+  const Grid& g = maps.front();
+  const CellRect all{0, 0, g.width(), g.height()};
+  const Bytes data = EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all);
+  ASSERT_GT(data.size(), 10u);
+  std::vector<Cell> canvas(g.size());
+  for (std::size_t n = 0; n < data.size(); ++n) {
+    EXPECT_FALSE(
+        DecodeTileCells(data.data(), n, nullptr, g.width(), g.height(), all, canvas.data()).ok())
+        << "truncated to " << n << " of " << data.size() << " bytes";
+  }
+  for (std::uint8_t extra : {0, 1, 255}) {
+    Bytes longer = data;
+    longer.push_back(extra);
+    EXPECT_FALSE(DecodeTileCells(longer.data(), longer.size(), nullptr, g.width(), g.height(), all,
+                                 canvas.data())
+                     .ok());
+  }
+  Bytes bad_model = data;
+  bad_model[0] ^= 1;
+  EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
+                               all, canvas.data())
+                   .ok());
+  std::mt19937 rng(99);
+  for (int iter = 0; iter < 200; ++iter) {
+    Bytes flipped = data;
+    flipped[1 + rng() % (flipped.size() - 1)] ^= static_cast<std::uint8_t>(1 + rng() % 255);
+    (void)DecodeTileCells(flipped.data(), flipped.size(), nullptr, g.width(), g.height(), all,
+                          canvas.data());
+    for (Cell c : canvas) ASSERT_LE(static_cast<int>(c), 2);
+  }
+}
+
+
+// An independent encoder written from spec/tile_coding.md's words, plainly
+// (no row buffers, no padding, bounds tested per cell): the library's bytes
+// must equal it, so the spec and the code say the same thing.
+class SpecEncoder {
+ public:
+  SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
+              CellRect tile)
+      : cells_(cells), hints_(hints), width_(width), t_(tile) {}
+
+  Bytes Encode() {
+    const int tw = t_.x1 - t_.x0;
+    const int th = t_.y1 - t_.y0;
+    if (tw == 0 || th == 0) return {};
+    const int blocks = (tw + 31) / 32;
+    std::vector<int> above_block(blocks, 2), above_super((blocks + 7) / 8, 2);
+    int row_state = 2;
+    for (int r = 0; r < th; ++r) {
+      const bool row_copy = RangeEqualsBelow(0, tw, r);
+      Bit(0 + row_state * 2 + HintsSame(0, tw, r), row_copy);
+      if (row_copy) {
+        row_state = 1;
+        std::fill(above_block.begin(), above_block.end(), 1);
+        std::fill(above_super.begin(), above_super.end(), 1);
+        continue;
+      }
+      row_state = 0;
+      const std::vector<int> below_block = above_block;  // states after the row below
+      int left = 2, left_super = 2;
+      for (int k = 0; k * 8 < blocks; ++k) {
+        const int b_end = std::min(8 * k + 8, blocks);
+        const int a = 256 * k, e = std::min(256 * k + 256, tw);
+        const bool super_copy = RangeEqualsBelow(a, e, r);
+        Bit(kSuper + ((above_super[k] * 3 + left_super) * 2 + HintsSame(a, e, r)) * 4 +
+                Uniform(a, e, r),
+            super_copy);
+        above_super[k] = left_super = super_copy ? 1 : 0;
+        if (super_copy) {
+          for (int b = 8 * k; b < b_end; ++b) above_block[b] = 1;
+          left = 1;
+          continue;
+        }
+        bool changed = false;
+        for (int b = 8 * k; b < b_end; ++b) {
+          const int ba = 32 * b, be = std::min(32 * b + 32, tw);
+          const int above_right = b + 1 < blocks ? below_block[b + 1] : 2;
+          bool copy = RangeEqualsBelow(ba, be, r);
+          if (b + 1 == b_end && !changed) {
+            copy = false;  // implied
+          } else {
+            Bit(kBlock +
+                    (((below_block[b] * 3 + left) * 3 + above_right) * 2 + HintsSame(ba, be, r)) *
+                        4 +
+                    Uniform(ba, be, r),
+                copy);
+          }
+          if (!copy) {
+            changed = true;
+            for (int c = ba; c < be; ++c) CodeCell(c, r);
+          }
+          above_block[b] = left = copy ? 1 : 0;
+        }
+      }
+    }
+    return Finish();
+  }
+
+ private:
+  static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
+                       kOther = kEqual + 32805;
+  struct Model {
+    std::uint32_t fast = 32768, slow = 32768, n = 0;
+  };
+
+  int V(int c, int r) const {
+    if (c < 0 || r < 0 || c >= t_.x1 - t_.x0) return 2;
+    return static_cast<int>(cells_[static_cast<std::size_t>(t_.y0 + r) * width_ + t_.x0 + c]);
+  }
+  int H(int c, int r) const {
+    return hints_.empty() ? 0 : hints_[static_cast<std::size_t>(t_.y0 + r) * width_ + t_.x0 + c];
+  }
+  bool RangeEqualsBelow(int a, int e, int r) const {
+    for (int c = a; c < e; ++c) {
+      if (V(c, r) != V(c, r - 1)) return false;
+    }
+    return true;
+  }
+  int HintsSame(int a, int e, int r) const {
+    if (r == 0) return 0;
+    for (int c = a; c < e; ++c) {
+      if (H(c, r) != H(c, r - 1)) return 0;
+    }
+    return 1;
+  }
+  int Uniform(int a, int e, int r) const {
+    for (int c = a - 1; c <= e; ++c) {
+      if (V(c, r - 1) != V(a, r - 1)) return 0;
+    }
+    return 1 + V(a, r - 1);
+  }
+  void CodeCell(int c, int r) {
+    const int h = H(c, r);
+    const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
+    const int w = V(c - 1, r), v = V(c, r);
+    const int t =
+        w + 3 * (V(c - 2, r) +
+                 3 * (V(c - 2, r - 1) +
+                      3 * (V(c - 1, r - 1) +
+                           3 * (V(c, r - 1) +
+                                3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+    Bit(kEqual + t * 5 + hc, v == w);
+    if (v == w) return;
+    const int hi = w == 2 ? 1 : 2;
+    Bit(kOther + (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc,
+        v == hi);
+  }
+  void Bit(int context, bool one) {
+    Model& m = models_[context];
+    const std::uint32_t bound = (range_ >> 16) * ((m.fast + m.slow) >> 1);
+    if (!one) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    if (!one) {
+      m.fast += (65536 - m.fast) >> fs;
+      m.slow += (65536 - m.slow) >> ss;
+    } else {
+      m.fast -= m.fast >> fs;
+      m.slow -= m.slow >> ss;
+    }
+    m.n = std::min(m.n + 1, 5u);
+    while (range_ < (1u << 24)) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
+  void ShiftLow() {
+    if (low_ < 0xFF000000u || low_ >= (std::uint64_t{1} << 32)) {
+      const int carry = static_cast<int>(low_ >> 32);
+      out_.push_back(static_cast<std::uint8_t>(cache_ + carry));
+      for (; pending_ff_ > 0; --pending_ff_)
+        out_.push_back(static_cast<std::uint8_t>(0xFF + carry));
+      cache_ = static_cast<std::uint8_t>(low_ >> 24);
+    } else {
+      ++pending_ff_;
+    }
+    low_ = (low_ & 0x00FFFFFFu) << 8;
+  }
+  Bytes Finish() {
+    for (int k = 32; k >= 0; --k) {
+      const std::uint64_t v = (low_ + range_ - 1) & ~((std::uint64_t{1} << k) - 1);
+      if (v >= low_) {
+        low_ = v;
+        break;
+      }
+    }
+    for (int i = 0; i < 5; ++i) ShiftLow();
+    out_.erase(out_.begin());
+    int dropped = 0;
+    while (!out_.empty() && out_.back() == 0 && dropped < 7) {
+      out_.pop_back();
+      ++dropped;
+    }
+    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5));
+    return out_;
+  }
+
+  const std::vector<Cell>& cells_;
+  const std::vector<std::uint8_t>& hints_;
+  int width_;
+  CellRect t_;
+  std::vector<Model> models_ = std::vector<Model>(kOther + 405);
+  std::uint64_t low_ = 0;
+  std::uint32_t range_ = 0xFFFFFFFFu;
+  std::uint8_t cache_ = 0;
+  int pending_ff_ = 0;
+  Bytes out_;
+};
+
+TEST(TileCoderTest, BytesFollowTheSpec) {
+  std::mt19937 rng(31337);
+  for (int iter = 0; iter < 200; ++iter) {
+    // Up to 600 columns, so rows hold several super-blocks.
+    const int width = static_cast<int>(rng() % 600);
+    const int height = static_cast<int>(rng() % 12);
+    const std::vector<Cell> cells = RandomGrid(rng, width, height);
+    std::vector<std::uint8_t> hints;
+    if (iter % 2) {
+      hints.resize(cells.size());
+      for (auto& h : hints) h = rng() % 4 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    }
+    const CellRect tile = iter % 3 ? RandomTile(rng, width, height) : CellRect{0, 0, width, height};
+    SCOPED_TRACE("iteration " + std::to_string(iter));
+    EXPECT_EQ(
+        EncodeTileCells(cells.data(), hints.empty() ? nullptr : hints.data(), width, height, tile),
+        SpecEncoder(cells, hints, width, tile).Encode());
+  }
+  for (const Grid& g : BundledMaps()) {
+    const std::vector<std::uint8_t> none;
+    const CellRect all{0, 0, g.width(), g.height()};
+    EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
+              SpecEncoder(g.cells(), none, g.width(), all).Encode());
+  }
+}
+
+}  // namespace
+}  // namespace linemap

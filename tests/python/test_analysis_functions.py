@@ -1,0 +1,151 @@
+"""linemap.lines / segment / plan / eval give the figures the `linemap`
+program prints as JSON for the same map."""
+import numpy as np
+import pytest
+
+import linemap_cli
+from conftest import BUNDLED
+
+linemap = pytest.importorskip("linemap")
+
+# Keys whose values are timings, which differ from run to run.
+TIMINGS = {"ms", "stages_ms", "timings_ms"}
+
+
+def without_timings(d):
+    return {k: v for k, v in d.items() if k not in TIMINGS}
+
+
+@pytest.mark.parametrize("name", sorted(BUNDLED))
+@pytest.mark.parametrize("method", ["linemap", "rmline"])
+def test_lines_equal_the_cli(name, method, tmp_path, cli):
+    csv = tmp_path / "lines.csv"
+    expected = linemap_cli.run_json(cli, "lines", BUNDLED[name], "--method", method, "-o", csv,
+                                    "--json")
+    got = linemap.lines(linemap.load(BUNDLED[name]), method=method)
+    assert set(got) == set(expected) | {"segments"}
+    for key, value in without_timings(expected).items():
+        assert got[key] == value, key
+    rows = linemap_cli.read_csv_rows(csv).get("segment", [])
+    assert got["segments"].shape == (len(rows), 4)
+    assert np.allclose(got["segments"], np.array(rows).reshape(-1, 4), atol=5e-7, rtol=0)
+
+
+def test_lines_options_are_checked():
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match="method"):
+        linemap.lines(m, method="hough")
+    with pytest.raises(ValueError, match="epsilon"):
+        linemap.lines(m, epsilon=0.2)
+    with pytest.raises(ValueError, match="pose"):
+        linemap.lines(m, pose=(1.0,))
+
+
+def test_straight_walls_and_pose_are_passed_on(cli):
+    path = BUNDLED["depot"]
+    expected = linemap_cli.run_json(cli, "lines", path, "--straight-walls", "--pose", "1,1",
+                                    "--json")
+    got = linemap.lines(linemap.load(path), straight_walls=True, pose=(1, 1))
+    assert (got["lines"], got["displ_cells"]) == (expected["lines"], expected["displ_cells"])
+
+
+@pytest.mark.parametrize("name", sorted(BUNDLED))
+def test_segment_equals_the_cli(name, tmp_path, cli):
+    out = tmp_path / "seg.json"
+    linemap_cli.run(cli, "segment", BUNDLED[name], "-o", out)
+    import json
+    expected = json.loads(out.read_text())
+    got = linemap.segment(linemap.load(BUNDLED[name]))
+    assert got["resolution"] == expected["resolution"]
+    assert len(got["rooms"]) == len(expected["rooms"])
+    for g, e in zip(got["rooms"], expected["rooms"]):
+        assert g["chain"].tolist() == e["chain"]
+        assert g["chain_cells"] == e["chain_cells"]
+    assert len(got["blobs"]) == len(expected["blobs"])
+    for g, e in zip(got["blobs"], expected["blobs"]):
+        assert g["cell_count"] == e["cell_count"] == len(g["cells"])
+        assert list(g["first_cell"]) == e["first_cell"]
+        assert list(g["bbox"]) == e["bbox"]
+        assert g["outline"].tolist() == e["outline"]
+
+
+def test_segment_with_a_pose_equals_the_cli(tmp_path, cli):
+    out = tmp_path / "seg.json"
+    linemap_cli.run(cli, "segment", BUNDLED["depot"], "--pose", "1,1", "-o", out)
+    import json
+    expected = json.loads(out.read_text())
+    got = linemap.segment(linemap.load(BUNDLED["depot"]), pose=(1, 1))
+    assert [r["chain"].tolist() for r in got["rooms"]] == [r["chain"] for r in expected["rooms"]]
+
+
+def compare_plans(got, expected):
+    assert set(got) == set(expected)
+    for key, value in without_timings(expected).items():
+        if key == "waypoints":
+            assert got[key].tolist() == value
+        elif key == "trajectories":
+            assert len(got[key]) == len(value)
+            for g, e in zip(got[key], value):
+                assert g["waypoints"].tolist() == e["waypoints"]
+                assert {k: v for k, v in g.items() if k != "waypoints"} == \
+                    {k: v for k, v in e.items() if k != "waypoints"}
+        else:
+            assert got[key] == value, key
+
+
+@pytest.mark.parametrize("name,start,goal", [
+    ("depot", (1, 1), (20, 10)),
+    ("lse_arena", (1, 1, 0.5), (3, 2)),
+])
+def test_plan_equals_the_cli(name, start, goal, cli):
+    expected = linemap_cli.run_json(cli, "plan", BUNDLED[name],
+                                    "--from", ",".join(map(str, start)),
+                                    "--to", ",".join(map(str, goal)), "--json")
+    got = linemap.plan(linemap.load(BUNDLED[name]), start, goal)
+    assert got["found"] is True
+    compare_plans(got, expected)
+
+
+def test_plan_not_found_is_a_result_not_an_exception(cli):
+    expected = linemap_cli.run_json(cli, "plan", BUNDLED["kth"], "--from", "0,0", "--to", "3,10",
+                                    "--json", expect_exit=1)
+    got = linemap.plan(linemap.load(BUNDLED["kth"]), start=(0, 0), goal=(3, 10))
+    assert got["found"] is False and "safe distance" in got["error"]
+    compare_plans(got, expected)
+
+
+def test_plan_robot_options_are_passed_on(cli):
+    expected = linemap_cli.run_json(cli, "plan", BUNDLED["depot"], "--from", "1,1", "--to",
+                                    "20,10", "--robot-width", "0.6", "--margin", "0.1",
+                                    "--dmax", "3", "--json")
+    got = linemap.plan(linemap.load(BUNDLED["depot"]), (1, 1), (20, 10), robot_width=0.6,
+                       margin=0.1, d_max=3.0)
+    compare_plans(got, expected)
+
+
+def test_plan_options_the_planner_refuses_raise_value_error():
+    m = linemap.load(BUNDLED["depot"])
+    with pytest.raises(ValueError, match="D_max"):
+        linemap.plan(m, (1, 1), (20, 10), d_max=-1)
+    with pytest.raises(ValueError, match="goal"):
+        linemap.plan(m, (1, 1), (20,))
+
+
+@pytest.mark.parametrize("name", sorted(BUNDLED))
+def test_eval_equals_the_cli(name, tmp_path, cli):
+    lmap = tmp_path / "map.lmap"
+    linemap_cli.run(cli, "encode", BUNDLED[name], "-o", lmap, "--no-sync")
+    expected = linemap_cli.run_json(cli, "eval", BUNDLED[name], lmap, "--json")
+    assert linemap.eval(BUNDLED[name], lmap) == expected
+    # Maps in memory: the same figures, without the layers' fidelity.
+    original, decoded = linemap.load(BUNDLED[name]), linemap.load(lmap)
+    layer_keys = ("edge_cells", "displ_ave_cells", "displ_ave_cm", "displ_max_cells",
+                  "edge_share_within_1", "edge_share_in_furniture",
+                  "edge_share_within_1_or_furniture")
+    cells_only = {k: v for k, v in expected.items() if k not in layer_keys}
+    assert linemap.eval(original, decoded) == cells_only
+
+
+def test_eval_refuses_maps_of_different_sizes():
+    with pytest.raises(ValueError, match="same size"):
+        linemap.eval(BUNDLED["depot"], BUNDLED["kth"])

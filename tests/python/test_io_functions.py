@@ -1,0 +1,258 @@
+"""linemap.load / save / encode / decode: exact round trips on the bundled
+maps, the cells the `linemap` program writes, and errors that name the file."""
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import linemap_cli
+from conftest import BUNDLED, MAPS
+from pgm_reader import cells_of_map_saver_pgm
+
+linemap = pytest.importorskip("linemap")
+
+
+@pytest.fixture(params=sorted(BUNDLED))
+def bundled(request):
+    return BUNDLED[request.param]
+
+
+def assert_same_map(a, b):
+    assert a.cells.dtype == np.uint8 and b.cells.dtype == np.uint8
+    assert np.array_equal(a.cells, b.cells)
+    assert a.resolution == b.resolution
+    assert a.origin == b.origin
+
+
+def test_lmap_save_load_is_exact(bundled, tmp_path):
+    m = linemap.load(bundled)
+    out = tmp_path / "map.lmap"
+    linemap.save(out, m)
+    assert_same_map(linemap.load(out), m)
+    assert_same_map(linemap.load(str(out)), m)
+
+
+def test_lmap_cells_only_is_exact(bundled, tmp_path):
+    m = linemap.load(bundled)
+    out = tmp_path / "map.lmap"
+    linemap.save(out, m, vectors=False)
+    assert_same_map(linemap.load(out), m)
+    assert linemap.vectors(out)["walls"].shape == (0, 4)
+
+
+def test_yaml_save_load_is_exact_and_writes_map_saver_pgm(bundled, tmp_path):
+    m = linemap.load(bundled)
+    out = tmp_path / "copy.yaml"
+    linemap.save(out, m)
+    assert_same_map(linemap.load(out), m)
+    assert np.array_equal(cells_of_map_saver_pgm(tmp_path / "copy.pgm"), m.cells)
+
+
+def test_encode_decode_is_exact(bundled):
+    m = linemap.load(bundled)
+    data = linemap.encode(m)
+    assert isinstance(data, bytes) and data[:1] != b""
+    assert_same_map(linemap.decode(data), m)
+    assert_same_map(linemap.decode(bytearray(data)), m)
+    assert_same_map(linemap.decode(memoryview(data)), m)
+
+
+def test_cells_equal_what_the_cli_decode_writes(bundled, tmp_path, cli):
+    """The program encodes (lossy, its default) and decodes; the module
+    loads the same .lmap: the cells must be those of the program's PGM."""
+    lmap = tmp_path / "map.lmap"
+    linemap_cli.run(cli, "encode", bundled, "-o", lmap, "--no-sync")
+    linemap_cli.run(cli, "decode", lmap, "-o", tmp_path / "decoded.yaml", "--no-sync")
+    expected = cells_of_map_saver_pgm(tmp_path / "decoded.pgm")
+    loaded = linemap.load(lmap)
+    assert np.array_equal(loaded.cells, expected)
+    assert np.array_equal(linemap.decode(lmap.read_bytes()).cells, expected)
+    info = linemap_cli.run_json(cli, "info", lmap, "--json")
+    assert (loaded.width, loaded.height) == (info["width"], info["height"])
+    assert loaded.resolution == info["resolution"]
+    assert list(loaded.origin) == info["origin"]
+
+
+def test_yaml_cells_equal_the_cli_decode_of_a_lossless_file(bundled, tmp_path, cli):
+    lmap = tmp_path / "map.lmap"
+    linemap_cli.run(cli, "encode", bundled, "-o", lmap, "--lossless", "--no-sync")
+    linemap_cli.run(cli, "decode", lmap, "-o", tmp_path / "decoded.yaml", "--no-sync")
+    assert np.array_equal(linemap.load(bundled).cells,
+                          cells_of_map_saver_pgm(tmp_path / "decoded.pgm"))
+
+
+def test_bare_image_gets_map_server_defaults(tmp_path):
+    image = MAPS / "nav2" / "depot.pgm"
+    m = linemap.load(image)
+    assert m.resolution == 0.05 and m.origin == (0.0, 0.0, 0.0)
+    assert m.cells.shape == (307, 604)
+
+
+def test_lmap_signature_is_recognised_without_the_suffix(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    renamed = tmp_path / "map.bin"
+    renamed.write_bytes(linemap.encode(m))
+    assert_same_map(linemap.load(renamed), m)
+
+
+def test_import_and_load_from_the_repository_root(repo):
+    env = dict(os.environ)
+    done = subprocess.run(
+        [sys.executable, "-c",
+         "import linemap; m = linemap.load('tests/data/maps/nav2/depot.yaml'); "
+         "print(m.cells.shape)"], cwd=repo, env=env, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "(307, 604)\n"
+
+
+# ---------------------------------------------------------------------------
+# Errors: the documented exception, with the library's message naming the file.
+
+def test_missing_files_raise_file_not_found(tmp_path):
+    for name in ("none.yaml", "none.lmap", "none.pgm"):
+        path = tmp_path / name
+        with pytest.raises(FileNotFoundError, match=str(path)):
+            linemap.load(path)
+    with pytest.raises(FileNotFoundError, match="none.lmap"):
+        linemap.vectors(tmp_path / "none.lmap")
+
+
+def test_yaml_naming_a_missing_image_raises_file_not_found(tmp_path):
+    (tmp_path / "map.yaml").write_text("image: gone.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n"
+                                       "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n")
+    with pytest.raises(FileNotFoundError, match="gone.pgm"):
+        linemap.load(tmp_path / "map.yaml")
+
+
+def test_corrupt_lmap_raises_value_error_naming_the_file(tmp_path):
+    good = linemap.encode(linemap.load(BUNDLED["depot"]))
+    bad = tmp_path / "garbage.lmap"
+    bad.write_bytes(b"not an lmap file at all")
+    with pytest.raises(ValueError, match="garbage.lmap"):
+        linemap.load(bad)
+    truncated = tmp_path / "truncated.lmap"
+    truncated.write_bytes(good[: len(good) // 2])
+    with pytest.raises(ValueError, match="truncated.lmap"):
+        linemap.load(truncated)
+    flipped = bytearray(good)
+    flipped[len(flipped) // 2] ^= 0xFF
+    with pytest.raises(ValueError):
+        linemap.decode(bytes(flipped))
+    with pytest.raises(ValueError):
+        linemap.vectors(bytes(flipped))
+
+
+def test_malformed_yaml_raises_value_error_naming_the_file(tmp_path):
+    bad = tmp_path / "broken.yaml"
+    bad.write_text("image: [unclosed\n")
+    with pytest.raises(ValueError, match="broken.yaml"):
+        linemap.load(bad)
+
+
+def test_limits_raise_memory_error_naming_the_file(tmp_path):
+    with pytest.raises(MemoryError, match="depot"):
+        linemap.load(BUNDLED["depot"], max_cells=1000)
+    lmap = tmp_path / "depot.lmap"
+    linemap.save(lmap, linemap.load(BUNDLED["depot"]))
+    with pytest.raises(MemoryError, match="depot.lmap"):
+        linemap.load(lmap, max_cells=1000)
+    with pytest.raises(MemoryError):
+        linemap.decode(lmap.read_bytes(), max_cells=1000)
+    with pytest.raises(ValueError, match="max_cells"):
+        linemap.load(lmap, max_cells=0)
+
+
+def test_unwritable_destination_raises_os_error_naming_it(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    target = tmp_path / "no" / "such" / "dir" / "map.lmap"
+    with pytest.raises(OSError, match=str(target.parent)):
+        linemap.save(target, m)
+    assert not target.parent.exists()
+
+
+def test_save_refuses_other_suffixes_and_negative_tolerance(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match="map.png"):
+        linemap.save(tmp_path / "map.png", m)
+    with pytest.raises(ValueError, match="tolerance"):
+        linemap.save(tmp_path / "map.lmap", m, tolerance=-1)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_decode_refuses_text():
+    with pytest.raises(TypeError, match="bytes"):
+        linemap.decode("LMAP")
+
+
+# ---------------------------------------------------------------------------
+# Vector layers against `linemap export`'s CSV.
+
+# Layer names in the CSV, current and announced (the geometry is compared).
+WALL_LAYERS = {"segment", "wall"}
+ROOM_LAYERS = {"room_border", "room"}
+FURNITURE_LAYERS = {"furniture"}
+
+
+def rounded(rows):
+    """Rows as the CSV prints them (%.6f), sorted, so that the order of the
+    layers' pieces does not matter."""
+    return sorted(tuple(round(float(v), 6) + 0.0 for v in row) for row in rows)
+
+
+def ring_edges(points):
+    """Edges of a closed chain (the last point joins the first); a one-cell
+    chain is one zero-length edge, as `linemap export` writes it."""
+    n = len(points)
+    return [(*points[i], *points[(i + 1) % n]) for i in range(n)]
+
+
+def csv_layer(layers, names):
+    return [row for name, rows in layers.items() if name in names for row in rows]
+
+
+@pytest.mark.parametrize("name", sorted(BUNDLED))
+def test_vectors_equal_the_cli_export(name, tmp_path, cli):
+    lmap = tmp_path / "map.lmap"
+    # Lossy with wall segments and room chains: a file with vector layers.
+    linemap_cli.run(cli, "encode", BUNDLED[name], "-o", lmap, "--no-sync")
+    linemap_cli.run(cli, "export", lmap, "-o", tmp_path / "layers.csv")
+    layers = linemap_cli.read_csv_rows(tmp_path / "layers.csv")
+    assert set(layers) <= WALL_LAYERS | ROOM_LAYERS | FURNITURE_LAYERS
+
+    v = linemap.vectors(lmap)
+    assert v["walls"].dtype == np.float64 and v["walls"].shape[1] == 4
+    assert rounded(v["walls"]) == rounded(csv_layer(layers, WALL_LAYERS))
+    room_edges = [e for room in v["rooms"] for e in ring_edges(room["outline"].tolist())]
+    assert rounded(room_edges) == rounded(csv_layer(layers, ROOM_LAYERS))
+    furniture_edges = [e for f in v["furniture"] for e in ring_edges(f["outline"].tolist())]
+    assert rounded(furniture_edges) == rounded(csv_layer(layers, FURNITURE_LAYERS))
+    for room in v["rooms"]:
+        assert room["outline"].shape[1] == 2 and isinstance(room["kind"], str)
+
+    # From the bytes, the same.
+    from_bytes = linemap.vectors(lmap.read_bytes())
+    assert np.array_equal(from_bytes["walls"], v["walls"])
+    assert len(from_bytes["rooms"]) == len(v["rooms"])
+
+    m = linemap.load(lmap)
+    assert (v["width"], v["height"]) == (m.width, m.height)
+    assert v["resolution"] == m.resolution and v["origin"] == m.origin
+
+
+def test_vectors_have_geometry_on_some_bundled_map(tmp_path, cli):
+    """The comparison above is not empty: depot has walls and rooms."""
+    lmap = tmp_path / "depot.lmap"
+    linemap_cli.run(cli, "encode", BUNDLED["depot"], "-o", lmap, "--no-sync")
+    v = linemap.vectors(lmap)
+    assert len(v["walls"]) > 10 and len(v["rooms"]) > 0
+
+
+def test_wall_segments_are_the_polylines_point_pairs(tmp_path, cli):
+    lmap = tmp_path / "kth.lmap"
+    linemap_cli.run(cli, "encode", BUNDLED["kth"], "-o", lmap, "--no-sync")
+    v = linemap.vectors(lmap)
+    pairs = [(*p[i], *p[i + 1]) for p in v["wall_polylines"] for i in range(len(p) - 1)]
+    assert np.array_equal(v["walls"], np.array(pairs).reshape(-1, 4))

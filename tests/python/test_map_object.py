@@ -1,0 +1,152 @@
+"""linemap.Map: cells as numpy arrays, checked; nav_msgs/OccupancyGrid
+fields both ways, against hand-made arrays."""
+import array
+
+import numpy as np
+import pytest
+
+linemap = pytest.importorskip("linemap")
+
+F, O, U = 0, 1, 2  # the library's Cell values, written out
+
+
+def test_cell_constants_are_the_library_values():
+    assert (linemap.FREE, linemap.OCCUPIED, linemap.UNKNOWN) == (F, O, U)
+
+
+def test_map_keeps_cells_resolution_and_origin():
+    cells = np.array([[F, O, U], [O, O, F]], dtype=np.uint8)
+    m = linemap.Map(cells, resolution=0.1, origin=(1.5, -2.0, 0.25))
+    assert m.cells is cells  # kept, not copied
+    assert (m.width, m.height) == (3, 2)
+    assert m.resolution == 0.1
+    assert m.origin == (1.5, -2.0, 0.25)
+    m.origin = (3, 4)  # yaw defaults to 0
+    assert m.origin == (3.0, 4.0, 0.0)
+
+
+@pytest.mark.parametrize("dtype", [np.int8, np.int64, np.uint16, np.float64, np.bool_])
+def test_cells_of_another_dtype_are_refused(dtype):
+    with pytest.raises(TypeError, match="uint8"):
+        linemap.Map(np.zeros((2, 2), dtype=dtype))
+
+
+def test_cells_that_are_not_an_array_are_refused():
+    with pytest.raises(TypeError, match="numpy array"):
+        linemap.Map([[0, 1], [1, 0]])
+
+
+@pytest.mark.parametrize("shape", [(4,), (2, 2, 2), ()])
+def test_cells_of_another_shape_are_refused(shape):
+    with pytest.raises(ValueError, match="2-D"):
+        linemap.Map(np.zeros(shape, dtype=np.uint8))
+
+
+def test_cell_values_other_than_the_three_states_are_refused():
+    cells = np.zeros((3, 4), dtype=np.uint8)
+    cells[2, 1] = 3
+    with pytest.raises(ValueError, match=r"Map.cells\[2, 1\] is 3"):
+        linemap.Map(cells)
+    m = linemap.Map(np.zeros((3, 4), dtype=np.uint8))
+    with pytest.raises(ValueError, match=r"\[2, 1\] is 3"):
+        m.cells = cells
+
+
+def test_values_written_into_the_array_later_are_refused_on_use():
+    m = linemap.Map(np.zeros((3, 4), dtype=np.uint8))
+    m.cells[1, 3] = 200
+    with pytest.raises(ValueError, match=r"\[1, 3\] is 200"):
+        linemap.encode(m)
+    with pytest.raises(ValueError, match=r"\[1, 3\] is 200"):
+        m.to_occupancy_grid()
+
+
+@pytest.mark.parametrize("resolution", [0.0, -0.05, float("nan"), float("inf")])
+def test_bad_resolution_is_refused(resolution):
+    with pytest.raises(ValueError, match="resolution"):
+        linemap.Map(np.zeros((1, 1), dtype=np.uint8), resolution=resolution)
+
+
+@pytest.mark.parametrize("origin", [(1,), (1, 2, 3, 4), (0, float("nan")), "xy", ("a", "b")])
+def test_bad_origin_is_refused(origin):
+    with pytest.raises(ValueError, match="origin"):
+        linemap.Map(np.zeros((1, 1), dtype=np.uint8), origin=origin)
+
+
+def test_strided_cells_are_read_as_viewed():
+    base = np.array([[F, O, U, O], [U, F, F, O]], dtype=np.uint8)
+    view = base[:, ::2]  # columns 0 and 2: not contiguous
+    m = linemap.Map(view, resolution=0.05)
+    back = linemap.decode(linemap.encode(m))
+    assert np.array_equal(back.cells, [[F, U], [U, F]])
+
+
+def test_to_occupancy_grid_uses_ros_int8_convention():
+    cells = np.array([[F, O, U], [U, F, O]], dtype=np.uint8)  # row 0 at the origin
+    m = linemap.Map(cells, resolution=0.05, origin=(1.0, 2.0, np.pi / 2))
+    g = m.to_occupancy_grid()
+    assert g["data"].dtype == np.int8
+    assert g["data"].tolist() == [0, 100, -1, -1, 0, 100]  # row-major, row 0 first
+    assert (g["width"], g["height"]) == (3, 2)
+    assert g["resolution"] == float(np.float32(0.05))  # the message's float32
+    assert g["origin"] == (1.0, 2.0, np.pi / 2)
+    qx, qy, qz, qw = g["orientation"]
+    assert (qx, qy) == (0.0, 0.0)
+    assert qz == pytest.approx(np.sqrt(0.5)) and qw == pytest.approx(np.sqrt(0.5))
+    assert g["frame_id"] == "map"
+
+
+def test_from_occupancy_grid_reads_like_map_saver():
+    # map_saver's defaults: free when v <= 25, occupied when v >= 65, else
+    # unknown; -1 and values outside 0..100 unknown.
+    data = np.array([0, 25, 26, 64, 65, 100, -1, 101, -128, 127, 50, 10], dtype=np.int8)
+    expected = np.array([[F, F, U, U], [O, O, U, U], [U, U, U, F]], dtype=np.uint8)
+    m = linemap.Map.from_occupancy_grid(data, 4, 3, 0.05, (1.0, 2.0, 0.5))
+    assert m.cells.dtype == np.uint8
+    assert np.array_equal(m.cells, expected)
+    assert m.resolution == float(np.float32(0.05))
+    assert m.origin[:2] == (1.0, 2.0) and m.origin[2] == pytest.approx(0.5, abs=1e-15)
+    # The same as (height, width), as a list (rospy) or an array.array (rclpy).
+    for same in (data.reshape(3, 4), data.tolist(), array.array("b", data.tolist())):
+        assert np.array_equal(linemap.Map.from_occupancy_grid(same, 4, 3, 0.05).cells, expected)
+
+
+def test_from_occupancy_grid_thresholds_are_options():
+    data = np.array([30, 60], dtype=np.int8)
+    m = linemap.Map.from_occupancy_grid(data, 2, 1, 0.05, occupied_thresh=0.6, free_thresh=0.3)
+    assert m.cells.tolist() == [[F, O]]
+
+
+def test_occupancy_grid_round_trip_keeps_cells():
+    rng = np.random.default_rng(7)
+    cells = rng.integers(0, 3, size=(37, 53), dtype=np.uint8)
+    m = linemap.Map(cells, resolution=0.05, origin=(-3.0, 4.5, 0.0))
+    g = m.to_occupancy_grid()
+    back = linemap.Map.from_occupancy_grid(g["data"], g["width"], g["height"],
+                                           g["resolution"], g["origin"])
+    assert np.array_equal(back.cells, cells)
+    assert back.origin == (-3.0, 4.5, 0.0)
+
+
+def test_from_occupancy_grid_refuses_bad_data():
+    with pytest.raises(TypeError, match="int8"):
+        linemap.Map.from_occupancy_grid(np.zeros(4, dtype=np.int16), 2, 2, 0.05)
+    with pytest.raises(TypeError, match="int8"):
+        linemap.Map.from_occupancy_grid(np.zeros(4, dtype=np.uint8), 2, 2, 0.05)
+    with pytest.raises(ValueError, match="shape"):
+        linemap.Map.from_occupancy_grid(np.zeros(5, dtype=np.int8), 2, 2, 0.05)
+    with pytest.raises(ValueError, match="shape"):
+        linemap.Map.from_occupancy_grid(np.zeros((2, 2), dtype=np.int8), 4, 1, 0.05)
+    with pytest.raises(ValueError, match="-128..127"):
+        linemap.Map.from_occupancy_grid([0, 1, 2, 300], 2, 2, 0.05)
+    with pytest.raises(TypeError, match="int8"):
+        linemap.Map.from_occupancy_grid([0.0, 0.5, 1.0, 1.5], 2, 2, 0.05)
+    with pytest.raises(ValueError, match="resolution"):
+        linemap.Map.from_occupancy_grid(np.zeros(4, dtype=np.int8), 2, 2, 0.0)
+    with pytest.raises(ValueError, match="width"):
+        linemap.Map.from_occupancy_grid(np.zeros(4, dtype=np.int8), -2, -2, 0.05)
+
+
+def test_from_occupancy_grid_limit_raises_memory_error():
+    with pytest.raises(MemoryError, match="limit of 5"):
+        linemap.Map.from_occupancy_grid(np.zeros(6, dtype=np.int8), 3, 2, 0.05, max_cells=5)

@@ -1,0 +1,250 @@
+// `linemap decode --window / --window-cells / --threads` through the built
+// CLI: a window's PGM equals the same cells of the whole decode, its YAML
+// origin puts it where it lay in the map, and windows that are empty or
+// reach past the border are refused with exit 2 and nothing written.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::CliResult;
+using testing::RunCli;
+
+struct Window {
+  int c0, r0, c1, r1;
+};
+
+std::string CellsArg(const Window& w) {
+  return std::to_string(w.c0) + "," + std::to_string(w.r0) + "," + std::to_string(w.c1) + "," +
+         std::to_string(w.r1);
+}
+
+// The whole map's decode (through the CLI, read back by the map reader).
+Grid DecodeWhole(const std::string& lmap, const std::string& dir) {
+  const CliResult r = RunCli({"decode", lmap, "-o", dir + "/whole.yaml"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  StatusOr<Grid> g = LoadRosMap(dir + "/whole.yaml");
+  EXPECT_TRUE(g.ok());
+  return g.ok() ? *g : Grid();
+}
+
+// Decodes `window_args` to dir/w.yaml and checks it against the crop `w` of
+// `whole`, and its origin against the whole map's cell corner (c0, r0).
+void ExpectWindow(const std::string& lmap, const std::string& dir, const Grid& whole,
+                  const std::vector<std::string>& window_args, const Window& w) {
+  SCOPED_TRACE(lmap + " window " + CellsArg(w));
+  std::vector<std::string> argv = {"decode", lmap, "-o", dir + "/w.yaml", "--no-sync"};
+  argv.insert(argv.end(), window_args.begin(), window_args.end());
+  const CliResult r = RunCli(argv);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  StatusOr<Grid> got = LoadRosMap(dir + "/w.yaml");
+  ASSERT_TRUE(got.ok()) << got.status().message();
+  ASSERT_EQ(got->width(), w.c1 - w.c0);
+  ASSERT_EQ(got->height(), w.r1 - w.r0);
+  std::size_t differ = 0;
+  for (int r = w.r0; r < w.r1; ++r) {
+    for (int c = w.c0; c < w.c1; ++c) differ += got->at(c - w.c0, r - w.r0) != whole.at(c, r);
+  }
+  EXPECT_EQ(differ, 0u);
+  // map_server's origin: the lower-left corner of cell (0, 0), turned by the
+  // yaw; the window's is the corner of cell (c0, r0) of the map.
+  const MapMetadata& m = whole.meta;
+  const double u = w.c0 * m.resolution, v = w.r0 * m.resolution;
+  const double cs = std::cos(m.origin.yaw), sn = std::sin(m.origin.yaw);
+  EXPECT_NEAR(got->meta.origin.x, m.origin.x + cs * u - sn * v, 1e-9);
+  EXPECT_NEAR(got->meta.origin.y, m.origin.y + sn * u + cs * v, 1e-9);
+  EXPECT_NEAR(got->meta.origin.yaw, m.origin.yaw, 1e-12);
+  EXPECT_EQ(got->meta.resolution, m.resolution);
+}
+
+// Corners, single cells, whole rows and columns, the whole map, and random
+// windows.
+std::vector<Window> WindowsFor(int w, int h, unsigned seed) {
+  std::vector<Window> out = {
+      {0, 0, 1, 1}, {w - 1, h - 1, w, h},     {w - 1, 0, w, 1},        {0, h - 1, 1, h},
+      {0, 0, w, h}, {0, h / 2, w, h / 2 + 1}, {w / 2, 0, w / 2 + 1, h}};
+  std::mt19937 rng(seed);
+  for (int k = 0; k < 8; ++k) {
+    int a = std::uniform_int_distribution<int>(0, w - 1)(rng);
+    int b = std::uniform_int_distribution<int>(0, w - 1)(rng);
+    int c = std::uniform_int_distribution<int>(0, h - 1)(rng);
+    int d = std::uniform_int_distribution<int>(0, h - 1)(rng);
+    out.push_back({std::min(a, b), std::min(c, d), std::max(a, b) + 1, std::max(c, d) + 1});
+  }
+  return out;
+}
+
+TEST(CmdDecodeWindowTest, WindowCellsEqualTheCropOfTheWholeDecode) {
+  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
+  ASSERT_GE(maps.size(), 4u);
+  unsigned seed = 1;
+  for (const std::string& map : maps) {
+    const std::string dir = testing::MakeTempDir("decode_window");
+    // Small tiles, so that windows start, end and cross inside tiles; the
+    // turned origin checks the YAML origin's rotation.
+    const std::string lmap = dir + "/m.lmap";
+    const CliResult enc = RunCli({"encode", map, "--tile-size", seed % 2 ? "16" : "64", "--origin",
+                                  seed % 2 ? "-3.5,2.25,0.3" : "1,-2", "-o", lmap});
+    ASSERT_EQ(enc.exit_code, 0) << enc.err;
+    const Grid whole = DecodeWhole(lmap, dir);
+    ASSERT_GT(whole.size(), 0u);
+    for (const Window& w : WindowsFor(whole.width(), whole.height(), seed++)) {
+      ExpectWindow(lmap, dir, whole, {"--window-cells", CellsArg(w)}, w);
+    }
+  }
+}
+
+// The cells whose centres lie in the box, found here by testing every
+// column and row centre of the map.
+Window CentresIn(const Grid& g, double x0, double y0, double x1, double y1) {
+  Window w{g.width(), g.height(), -1, -1};
+  for (int c = 0; c < g.width(); ++c) {
+    const double x = g.meta.origin.x + (c + 0.5) * g.meta.resolution;
+    if (x >= x0 - 1e-9 && x <= x1 + 1e-9) w.c0 = std::min(w.c0, c), w.c1 = std::max(w.c1, c + 1);
+  }
+  for (int r = 0; r < g.height(); ++r) {
+    const double y = g.meta.origin.y + (r + 0.5) * g.meta.resolution;
+    if (y >= y0 - 1e-9 && y <= y1 + 1e-9) w.r0 = std::min(w.r0, r), w.r1 = std::max(w.r1, r + 1);
+  }
+  return w;
+}
+
+std::string Metres(double x0, double y0, double x1, double y1) {
+  char text[128];
+  std::snprintf(text, sizeof(text), "%.4f,%.4f,%.4f,%.4f", x0, y0, x1, y1);
+  return text;
+}
+
+TEST(CmdDecodeWindowTest, WindowInMetresTakesTheCellsWhoseCentresLieInTheBox) {
+  const std::string dir = testing::MakeTempDir("decode_window_m");
+  const std::string lmap = dir + "/d.lmap";
+  ASSERT_EQ(RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "--origin",
+                    "-10.3,4.7", "--tile-size", "32", "-o", lmap})
+                .exit_code,
+            0);
+  const Grid whole = DecodeWhole(lmap, dir);
+  const double ox = whole.meta.origin.x, oy = whole.meta.origin.y, res = whole.meta.resolution;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> fx(ox, ox + whole.width() * res);
+  std::uniform_real_distribution<double> fy(oy, oy + whole.height() * res);
+  std::vector<std::array<double, 4>> boxes = {
+      // Edges exactly on cell centres are inside: cells 0..19 x 0..9.
+      {ox + 0.5 * res, oy + 0.5 * res, ox + 19.5 * res, oy + 9.5 * res},
+      // One cell, by a box around its centre, and by a zero-size box on it.
+      {ox + 100.4 * res, oy + 50.4 * res, ox + 100.6 * res, oy + 50.6 * res},
+      {ox + 7.5 * res, oy + 3.5 * res, ox + 7.5 * res, oy + 3.5 * res},
+      // The whole map's extent.
+      {ox, oy, ox + whole.width() * res, oy + whole.height() * res}};
+  for (int k = 0; k < 8; ++k) {
+    double a = fx(rng), b = fx(rng), c = fy(rng), d = fy(rng);
+    boxes.push_back({std::min(a, b), std::min(c, d), std::max(a, b), std::max(c, d)});
+  }
+  for (const auto& b : boxes) {
+    // The box is passed as printed, so the reference uses the printed values.
+    const std::string arg = Metres(b[0], b[1], b[2], b[3]);
+    double x0, y0, x1, y1;
+    ASSERT_EQ(std::sscanf(arg.c_str(), "%lf,%lf,%lf,%lf", &x0, &y0, &x1, &y1), 4);
+    const Window w = CentresIn(whole, x0, y0, x1, y1);
+    if (w.c1 < 0 || w.r1 < 0) continue;  // a random box between centres
+    ExpectWindow(lmap, dir, whole, {"--window", arg}, w);
+  }
+  const Window first = CentresIn(whole, boxes[0][0], boxes[0][1], boxes[0][2], boxes[0][3]);
+  EXPECT_EQ(first.c1 - first.c0, 20);
+  EXPECT_EQ(first.r1 - first.r0, 10);
+}
+
+// A map turned a quarter turn: map-frame x runs along -rows, y along
+// columns, so the box x in [-1, -0.5], y in [0.5, 1] m holds the centres of
+// rows 10..19 and columns 10..19 (0.05 m cells).
+TEST(CmdDecodeWindowTest, WindowInMetresOnATurnedMap) {
+  const std::string dir = testing::MakeTempDir("decode_window_yaw");
+  const std::string lmap = dir + "/a.lmap";
+  ASSERT_EQ(RunCli({"encode", testing::BundledMapsDir() + "/navtut/lse_arena.yaml", "--origin",
+                    "0,0,1.5707963267948966", "-o", lmap})
+                .exit_code,
+            0);
+  const Grid whole = DecodeWhole(lmap, dir);
+  ExpectWindow(lmap, dir, whole, {"--window", "-1,0.5,-0.5,1"}, {10, 10, 20, 20});
+}
+
+// Refused with exit 2, one line naming the problem, nothing written.
+void ExpectRefused(const std::string& lmap, const std::string& dir,
+                   const std::vector<std::string>& window_args, const std::string& says) {
+  std::vector<std::string> argv = {"decode", lmap, "-o", dir + "/out/w.yaml"};
+  argv.insert(argv.end(), window_args.begin(), window_args.end());
+  const CliResult r = RunCli(argv);
+  SCOPED_TRACE(window_args.back() + ": " + r.err);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  EXPECT_NE(r.err.find(says), std::string::npos);
+  EXPECT_TRUE(testing::ListDir(dir + "/out").empty());
+}
+
+TEST(CmdDecodeWindowTest, EmptyOrOutOfMapWindowsAreRefused) {
+  const std::string dir = testing::MakeTempDir("decode_window_bad");
+  std::filesystem::create_directories(dir + "/out");
+  const std::string lmap = dir + "/a.lmap";
+  // The arena: 80 x 60 cells of 0.05 m, origin 0,0.
+  ASSERT_EQ(RunCli({"encode", testing::BundledMapsDir() + "/navtut/lse_arena.yaml", "-o", lmap})
+                .exit_code,
+            0);
+  for (const char* cells : {"0,0,81,60", "0,0,80,61", "-1,0,10,10", "0,-1,10,10", "80,0,81,1",
+                            "5,5,5,6", "5,5,6,5", "6,5,5,6", "100,100,200,200"}) {
+    ExpectRefused(lmap, dir, {"--window-cells", cells}, "not inside the map's 80 x 60 cells");
+  }
+  ExpectRefused(lmap, dir, {"--window-cells", "0,0,1.5,2"}, "whole cell indices");
+  ExpectRefused(lmap, dir, {"--window-cells", "0,0,1"}, "4 comma-separated numbers");
+  // Centres run from 0.025 to 3.975 m (x) and 2.975 m (y).
+  ExpectRefused(lmap, dir, {"--window", "3.9,0,4.03,1"}, "past the map's border");
+  ExpectRefused(lmap, dir, {"--window", "-0.03,0,1,1"}, "past the map's border");
+  ExpectRefused(lmap, dir, {"--window", "0,2,1,3.1"}, "past the map's border");
+  ExpectRefused(lmap, dir, {"--window", "50,50,60,60"}, "past the map's border");
+  ExpectRefused(lmap, dir, {"--window", "1.01,1,1.02,2"}, "holds no cell centre");
+  ExpectRefused(lmap, dir, {"--window", "2,1,1,2"}, "X0 must not exceed X1");
+  ExpectRefused(lmap, dir, {"--window", "0,0,nan,1"}, "--window");
+  ExpectRefused(lmap, dir, {"--window", "0,0,1,1", "--window-cells", "0,0,1,1"}, "not both");
+  // Past the map by less than half a cell holds no outside centre: accepted.
+  const CliResult edge =
+      RunCli({"decode", lmap, "-o", dir + "/e.yaml", "--window", "-0.02,-0.02,4.02,3.02"});
+  EXPECT_EQ(edge.exit_code, 0) << edge.err;
+  EXPECT_NE(edge.out.find("80 x 60 cells"), std::string::npos) << edge.out;
+}
+
+// The tiles decode on any number of threads to the same files; a 1.0 file
+// (decoded whole, then cropped) gives its window too.
+TEST(CmdDecodeWindowTest, ThreadsAndVersion1Files) {
+  const std::string dir = testing::MakeTempDir("decode_window_threads");
+  const std::string lmap = dir + "/w.lmap";
+  const std::string willow =
+      testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml";
+  ASSERT_EQ(RunCli({"encode", willow, "--tile-size", "64", "-o", lmap}).exit_code, 0);
+  std::string first;
+  for (const char* threads : {"1", "2", "3", "0"}) {
+    ASSERT_EQ(RunCli({"decode", lmap, "-o", dir + "/t.yaml", "--threads", threads}).exit_code, 0);
+    const std::string pgm = testing::ReadFile(dir + "/t.pgm");
+    if (first.empty()) first = pgm;
+    EXPECT_EQ(pgm, first) << threads;
+  }
+  EXPECT_EQ(RunCli({"decode", lmap, "-o", dir + "/t.yaml", "--threads", "-1"}).exit_code, 2);
+  EXPECT_EQ(RunCli({"decode", lmap, "-o", dir + "/t.yaml", "--threads", "x"}).exit_code, 2);
+
+  const std::string v1 = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  const Grid whole = DecodeWhole(v1, dir);
+  ExpectWindow(v1, dir, whole, {"--window-cells", "3,7,50,44"}, {3, 7, 50, 44});
+  ExpectWindow(v1, dir, whole, {"--window", "0.5,0.5,1,2"}, {10, 10, 20, 40});
+}
+
+}  // namespace
+}  // namespace linemap

@@ -1,0 +1,276 @@
+// `linemap export` through the built CLI: every feature of the three layers
+// reaches CSV, GeoJSON and SVG at the map-frame position computed here from
+// the file's cells and the YAML origin, and the SVG embeds the decoded map.
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+using testing::CliResult;
+using testing::RunCli;
+
+struct Xy {
+  double x, y;
+};
+
+// Map-frame metres of a lattice point, straight from map_server's origin
+// definition: the origin is the lower-left corner of cell (0, 0), turned by
+// the yaw.
+Xy Expected(const MapMetadata& meta, CellIndex c) {
+  const double u = (c.col + 0.5) * meta.resolution, v = (c.row + 0.5) * meta.resolution;
+  const double cs = std::cos(meta.origin.yaw), sn = std::sin(meta.origin.yaw);
+  return {meta.origin.x + cs * u - sn * v, meta.origin.y + sn * u + cs * v};
+}
+
+// Depot with a turned, shifted origin, so that a wrong transform shows.
+std::string EncodedDepot(const std::string& dir) {
+  const std::string out = dir + "/depot.lmap";
+  const CliResult r = RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "--origin",
+                              "1.5,-2,0.5", "-o", out});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return out;
+}
+
+// The rows CSV must hold, in order: wall segments, then every edge of each
+// closed chain (one zero-length row for a one-point chain).
+std::vector<std::pair<std::string, std::pair<Xy, Xy>>> ExpectedRows(const LmapVectors& v) {
+  std::vector<std::pair<std::string, std::pair<Xy, Xy>>> rows;
+  for (const WallPolyline& w : v.walls) {
+    for (std::size_t i = 0; i + 1 < w.points.size(); ++i)
+      rows.push_back({"wall", {Expected(v.meta, w.points[i]), Expected(v.meta, w.points[i + 1])}});
+  }
+  auto closed = [&](const std::string& layer, const std::vector<CellIndex>& chain) {
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      rows.push_back(
+          {layer, {Expected(v.meta, chain[i]), Expected(v.meta, chain[(i + 1) % chain.size()])}});
+    }
+  };
+  for (const RoomOutline& r : v.rooms) closed("room_border", r.chain);
+  for (const FurnitureObject& f : v.furniture) closed("furniture", f.outline);
+  return rows;
+}
+
+TEST(CmdExportTest, CsvHasEveryWallSegmentAndChainEdgeInMetres) {
+  const std::string dir = testing::MakeTempDir("export_csv");
+  const std::string lmap = EncodedDepot(dir);
+  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
+  ASSERT_TRUE(v.ok()) << v.status().message();
+  ASSERT_GT(v->walls.size(), 10u);
+  ASSERT_GT(v->rooms.size(), 0u);
+  ASSERT_GT(v->furniture.size(), 10u);
+  const CliResult r = RunCli({"export", lmap, "-o", dir + "/d.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream csv(testing::ReadFile(dir + "/d.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "layer,x1,y1,x2,y2");
+  const auto rows = ExpectedRows(*v);
+  std::size_t n = 0;
+  for (; std::getline(csv, line); ++n) {
+    ASSERT_LT(n, rows.size()) << line;
+    std::string layer = line.substr(0, line.find(','));
+    double x1, y1, x2, y2;
+    ASSERT_EQ(std::sscanf(line.c_str() + layer.size(), ",%lf,%lf,%lf,%lf", &x1, &y1, &x2, &y2), 4)
+        << line;
+    const auto& [want_layer, ends] = rows[n];
+    EXPECT_EQ(layer, want_layer) << n;
+    EXPECT_NEAR(x1, ends.first.x, 1e-6) << line;
+    EXPECT_NEAR(y1, ends.first.y, 1e-6) << line;
+    EXPECT_NEAR(x2, ends.second.x, 1e-6) << line;
+    EXPECT_NEAR(y2, ends.second.y, 1e-6) << line;
+  }
+  EXPECT_EQ(n, rows.size());
+}
+
+void ExpectPosition(const YAML::Node& pos, Xy want) {
+  ASSERT_TRUE(pos.IsSequence());
+  EXPECT_NEAR(pos[0].as<double>(), want.x, 1e-6);
+  EXPECT_NEAR(pos[1].as<double>(), want.y, 1e-6);
+}
+
+// A closed chain as a GeoJSON ring: the points, padded with the last to at
+// least three, then the first again.
+void ExpectRing(const YAML::Node& ring, const MapMetadata& meta,
+                const std::vector<CellIndex>& chain) {
+  std::vector<CellIndex> want = chain;
+  while (want.size() < 3) want.push_back(chain.back());
+  want.push_back(chain.front());
+  ASSERT_EQ(ring.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) ExpectPosition(ring[i], Expected(meta, want[i]));
+}
+
+TEST(CmdExportTest, GeoJsonFeaturesCarryLayerIdKindAndRoom) {
+  const std::string dir = testing::MakeTempDir("export_geojson");
+  const std::string lmap = EncodedDepot(dir);
+  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
+  ASSERT_TRUE(v.ok()) << v.status().message();
+  const CliResult r = RunCli({"export", lmap, "-o", dir + "/d.geojson"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // JSON is YAML's flow style: yaml-cpp parses it independently of the CLI.
+  const YAML::Node doc = YAML::LoadFile(dir + "/d.geojson");
+  EXPECT_EQ(doc["type"].as<std::string>(), "FeatureCollection");
+  const YAML::Node features = doc["features"];
+  ASSERT_EQ(features.size(), v->walls.size() + v->rooms.size() + v->furniture.size());
+  std::size_t i = 0;
+  for (std::size_t w = 0; w < v->walls.size(); ++w, ++i) {
+    const YAML::Node f = features[i];
+    EXPECT_EQ(f["properties"]["layer"].as<std::string>(), "wall");
+    EXPECT_EQ(f["properties"]["id"].as<std::size_t>(), w);
+    EXPECT_EQ(f["geometry"]["type"].as<std::string>(), "LineString");
+    const YAML::Node coords = f["geometry"]["coordinates"];
+    ASSERT_EQ(coords.size(), v->walls[w].points.size());
+    for (std::size_t k = 0; k < coords.size(); ++k)
+      ExpectPosition(coords[k], Expected(v->meta, v->walls[w].points[k]));
+  }
+  for (const RoomOutline& room : v->rooms) {
+    const YAML::Node f = features[i++];
+    EXPECT_EQ(f["properties"]["layer"].as<std::string>(), "room_border");
+    EXPECT_EQ(f["properties"]["id"].as<std::uint32_t>(), room.id);
+    EXPECT_EQ(f["properties"]["kind"].as<std::string>(), RoomKindName(room.kind));
+    EXPECT_EQ(f["geometry"]["type"].as<std::string>(), "Polygon");
+    ExpectRing(f["geometry"]["coordinates"][0], v->meta, room.chain);
+  }
+  for (const FurnitureObject& object : v->furniture) {
+    const YAML::Node f = features[i++];
+    EXPECT_EQ(f["properties"]["layer"].as<std::string>(), "furniture");
+    EXPECT_EQ(f["properties"]["id"].as<std::uint32_t>(), object.id);
+    const YAML::Node room = f["properties"]["room_id"];
+    if (object.room_id < 0) {
+      EXPECT_TRUE(room.IsNull() || room.as<std::string>() == "null");
+    } else {
+      EXPECT_EQ(room.as<std::int32_t>(), object.room_id);
+    }
+    EXPECT_EQ(f["geometry"]["type"].as<std::string>(), "Polygon");
+    ExpectRing(f["geometry"]["coordinates"][0], v->meta, object.outline);
+  }
+}
+
+std::string Base64Decode(const std::string& text) {
+  std::string out;
+  int bits = 0, value = 0;
+  for (char ch : text) {
+    int d;
+    if (ch >= 'A' && ch <= 'Z')
+      d = ch - 'A';
+    else if (ch >= 'a' && ch <= 'z')
+      d = ch - 'a' + 26;
+    else if (ch >= '0' && ch <= '9')
+      d = ch - '0' + 52;
+    else if (ch == '+')
+      d = 62;
+    else if (ch == '/')
+      d = 63;
+    else
+      break;  // '=' padding
+    value = (value << 6) | d;
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out += static_cast<char>((value >> bits) & 0xff);
+    }
+  }
+  return out;
+}
+
+std::size_t Count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The text of <g id="NAME"> ... </g>.
+std::string Group(const std::string& svg, const std::string& name) {
+  const std::size_t start = svg.find("<g id=\"" + name + "\"");
+  if (start == std::string::npos) return "";
+  return svg.substr(start, svg.find("</g>", start) - start);
+}
+
+TEST(CmdExportTest, SvgDrawsTheLayersOverTheDecodedMap) {
+  const std::string dir = testing::MakeTempDir("export_svg");
+  const std::string lmap = EncodedDepot(dir);
+  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
+  ASSERT_TRUE(v.ok()) << v.status().message();
+  const CliResult r = RunCli({"export", lmap, "-o", dir + "/d.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = testing::ReadFile(dir + "/d.svg");
+  EXPECT_EQ(Count(Group(svg, "wall"), "<polyline "), v->walls.size());
+  EXPECT_EQ(Count(Group(svg, "room_border"), "<polygon "), v->rooms.size());
+  EXPECT_EQ(Count(Group(svg, "furniture"), "<polygon "), v->furniture.size());
+  // The embedded image, read back as a bare map image, is the decoded map
+  // (north up: image row 0 is the top grid row).
+  const std::string key = "href=\"data:image/png;base64,";
+  const std::size_t at = svg.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = svg.find('"', at + key.size());
+  testing::WriteFile(dir + "/embedded.png",
+                     Base64Decode(svg.substr(at + key.size(), end - at - key.size())));
+  StatusOr<Grid> decoded = LoadLmap(lmap);
+  ASSERT_TRUE(decoded.ok());
+  StatusOr<Grid> image = LoadMapImage(dir + "/embedded.png", MapMetadata{});
+  ASSERT_TRUE(image.ok()) << image.status().message();
+  EXPECT_EQ(image->cells(), decoded->cells());
+  // The yaw of 0.5 rad turns the image (clockwise on screen, y down).
+  EXPECT_NE(svg.find("transform=\"rotate(-28.65 "), std::string::npos);
+  // A scale bar of a round length, labelled.
+  std::smatch m;
+  const std::string scale = Group(svg, "scale_bar");
+  ASSERT_TRUE(std::regex_search(scale, m, std::regex(">([0-9.]+) m</text>"))) << scale;
+  const double metres = std::stod(m[1]);
+  const double mantissa = metres / std::pow(10.0, std::floor(std::log10(metres) + 1e-9));
+  EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 ||
+              std::abs(mantissa - 5) < 1e-9)
+      << metres;
+  const std::string legend = Group(svg, "legend");
+  for (const std::string label : {"walls (" + std::to_string(v->walls.size()) + ")",
+                                  "room borders (" + std::to_string(v->rooms.size()) + ")",
+                                  "furniture (" + std::to_string(v->furniture.size()) + ")"}) {
+    EXPECT_NE(legend.find(label), std::string::npos) << label;
+  }
+}
+
+// A --raster-only file has no layers: CSV is the header, the SVG still shows
+// the map. A 1.0 file's segments are two-point walls.
+TEST(CmdExportTest, RasterOnlyAndVersion1Files) {
+  const std::string dir = testing::MakeTempDir("export_kinds");
+  const std::string arena = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  ASSERT_EQ(RunCli({"encode", arena, "--raster-only", "-o", dir + "/r.lmap"}).exit_code, 0);
+  ASSERT_EQ(RunCli({"export", dir + "/r.lmap", "-o", dir + "/r.csv"}).exit_code, 0);
+  EXPECT_EQ(testing::ReadFile(dir + "/r.csv"), "layer,x1,y1,x2,y2\n");
+  ASSERT_EQ(RunCli({"export", dir + "/r.lmap", "-o", dir + "/r.svg"}).exit_code, 0);
+  EXPECT_NE(testing::ReadFile(dir + "/r.svg").find("data:image/png;base64,"), std::string::npos);
+
+  const std::string v1 = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  StatusOr<LmapContents> contents = LoadLmapContents(v1);
+  ASSERT_TRUE(contents.ok());
+  ASSERT_EQ(contents->major, 1);
+  ASSERT_GT(contents->segments.size(), 0u);
+  ASSERT_EQ(RunCli({"export", v1, "-o", dir + "/v1.csv"}).exit_code, 0);
+  std::istringstream csv(testing::ReadFile(dir + "/v1.csv"));
+  std::string line;
+  std::getline(csv, line);
+  for (const LatticeSegment& s : contents->segments) {
+    ASSERT_TRUE(std::getline(csv, line));
+    double x1, y1, x2, y2;
+    ASSERT_EQ(std::sscanf(line.c_str(), "wall,%lf,%lf,%lf,%lf", &x1, &y1, &x2, &y2), 4) << line;
+    const Xy a = Expected(contents->grid.meta, s.a), b = Expected(contents->grid.meta, s.b);
+    EXPECT_NEAR(x1, a.x, 1e-6);
+    EXPECT_NEAR(y1, a.y, 1e-6);
+    EXPECT_NEAR(x2, b.x, 1e-6);
+    EXPECT_NEAR(y2, b.y, 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace linemap

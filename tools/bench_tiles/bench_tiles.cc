@@ -1,0 +1,359 @@
+// bench_tiles: sizes and speed of the .lmap 2.0 tile cell coder
+// (codec/codec/tile_coder.h) on the maps of ../shared/maps, against the 1.0
+// lossless planes (OCCP + FREE over an empty canvas, as `--lossless`
+// without segments codes them) and libpng level 9.
+//
+//   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
+//               [--dump-pgm DIR] [--jxl FILE]
+//
+// --dump-pgm writes each map as a trinary PGM (map_saver's grey levels) for
+// running other codecs on it; --jxl reads "flat_name bytes" lines (e.g.
+// `cjxl -d 0 -e 9 -E 3 -I 100 -g 3` sizes of those PGMs) and adds columns.
+//
+// Per map: cells; PNG-9 bytes (the smallest of libpng's 8-bit grey, 8-bit
+// palette and 2-bit palette at level 9, as `linemap bench` takes it) and libpng's decode ns/cell;
+// the 1.0 planes' bytes; the tile coder's bytes without hints, with hints (BuildLayerHints) and
+// their ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds the bytes at 256
+// and 512 tiles. Tuning maps and held-out maps are listed and summarised (medians) separately: the
+// coder's parameters were chosen on the tuning maps only.
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "codec/codec/plane_coder.h"
+#include "codec/codec/tile_coder.h"
+#include "codec/codec/tile_hints.h"
+#include "linemap/map_io.h"
+#include "tools/bench/png_codec.h"
+
+namespace linemap {
+namespace {
+
+struct MapEntry {
+  const char* path;  // relative to the maps folder (the YAML where there is one)
+  bool tuning;
+};
+
+// The tuning maps; every other map of the corpus is held out.
+const MapEntry kMaps[] = {
+    {"aws_bookstore/map.yaml", true},
+    {"aws_warehouse/002/map.yaml", true},
+    {"f1tenth/columbia.yaml", true},
+    {"f1tenth/levinelobby.yaml", true},
+    {"fetch/3_1_16_localization.yaml", true},
+    {"fetch/4_26_15.yaml", true},
+    {"mrpt/map1.png", true},
+    {"nav2/depot.yaml", true},
+    {"nav2/map.pgm", true},
+    {"nav2/tb3_sandbox.yaml", true},
+    {"navtut/lse_arena.yaml", true},
+    {"rosnav1/willow-full-0.05.pgm", true},
+    {"strands/bham/cs_lg.yaml", true},
+    {"strands/tsc/tsc.yaml", true},
+    {"turtlebot_apps/willow-2010-02-18-0.10.yaml", true},
+    {"uos/avz.yaml", true},
+    {"f1tenth/mtl.yaml", false},
+    {"fetch/9_16_15.yaml", false},
+    {"nav2/warehouse.yaml", false},
+    {"strands/kth/map.yaml", false},
+    {"uos/avz5floor_plan.yaml", false},
+    {"turtlebot_apps/ctrl_room.yaml", false},
+    {"aws_warehouse/005/map.yaml", false},
+    {"stage_ros/willow-full.pgm", false},
+    {"nav2/empty_room.pgm", false},
+};
+
+double CpuNow() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Least CPU seconds of `fn` over 5 runs (3 above 1 Mcell): the machine is
+// shared, and the least time is the one least disturbed by other programs.
+template <typename Fn>
+double MinSeconds(std::size_t cells, Fn&& fn) {
+  const int runs = cells > 1000000 ? 3 : 5;
+  std::vector<double> t;
+  for (int i = 0; i < runs; ++i) {
+    const double start = CpuNow();
+    fn();
+    t.push_back(CpuNow() - start);
+  }
+  std::sort(t.begin(), t.end());
+  return t.front();
+}
+
+std::vector<CellRect> Tiles(int width, int height, int tile) {
+  std::vector<CellRect> out;
+  for (int y = 0; y < height; y += tile) {
+    for (int x = 0; x < width; x += tile) {
+      out.push_back(CellRect{x, y, std::min(x + tile, width), std::min(y + tile, height)});
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints,
+                                                 int tile) {
+  std::vector<std::vector<std::uint8_t>> out;
+  for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
+    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t));
+  }
+  return out;
+}
+
+std::size_t TotalBytes(const std::vector<std::vector<std::uint8_t>>& tiles) {
+  std::size_t n = 0;
+  for (const auto& t : tiles) n += t.size();
+  return n;
+}
+
+// Decodes every tile into `out`; false on any error.
+bool DecodeAll(const std::vector<std::vector<std::uint8_t>>& data, const std::uint8_t* hints,
+               int width, int height, int tile, std::vector<Cell>* out) {
+  const std::vector<CellRect> tiles = Tiles(width, height, tile);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    if (!DecodeTileCells(data[i].data(), data[i].size(), hints, width, height, tiles[i],
+                         out->data())
+             .ok()) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::size_t PlanesBytes(const Grid& g) {
+  std::vector<Cell> canvas(g.size(), Cell::kUnknown);
+  std::vector<std::uint8_t> occ(g.size()), free(g.size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    occ[i] = g.cells()[i] == Cell::kOccupied;
+    free[i] = g.cells()[i] == Cell::kFree;
+  }
+  std::size_t n = EncodeOccupiedPlane(occ, canvas, g.width(), g.height()).size();
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (occ[i]) canvas[i] = Cell::kOccupied;
+  }
+  return n + EncodeFreePlane(free, canvas, g.width(), g.height()).size();
+}
+
+struct Row {
+  std::string name;
+  bool tuning = false;
+  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, plain = 0, hinted = 0, enc_ns = 0,
+         dec_ns = 0, t256 = 0, t512 = 0, jxl = 0;
+};
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Column {
+  const char* title;
+  const char* format;  // printf format of one value, width included
+  double (*value)(const Row&);
+};
+
+// The printed columns: sizes in bytes, times in CPU ns per cell.
+const Column kColumns[] = {
+    {"cells", " %9.0f", [](const Row& r) { return r.cells; }},
+    {"png9", " %7.0f", [](const Row& r) { return r.png; }},
+    {"v1pl", " %7.0f", [](const Row& r) { return r.planes; }},
+    {"tile", " %7.0f", [](const Row& r) { return r.plain; }},
+    {"hinted", " %7.0f", [](const Row& r) { return r.hinted; }},
+    {"t/png", " %6.3f", [](const Row& r) { return r.plain / r.png; }},
+    {"h/png", " %6.3f", [](const Row& r) { return r.hinted / r.png; }},
+    {"pngdec", " %6.2f", [](const Row& r) { return r.png_dec_ns; }},
+    {"enc", " %6.2f", [](const Row& r) { return r.enc_ns; }},
+    {"dec", " %6.2f", [](const Row& r) { return r.dec_ns; }},
+    {"d/png", " %6.3f", [](const Row& r) { return r.dec_ns / r.png_dec_ns; }},
+};
+const Column kSizeColumns[] = {
+    {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
+    {"t512", " %7.0f", [](const Row& r) { return r.t512; }},
+};
+const Column kJxlColumns[] = {
+    {"jxl", " %7.0f", [](const Row& r) { return r.jxl; }},
+    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain / r.jxl; }},
+    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted / r.jxl; }},
+};
+
+void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) {
+  std::vector<Column> cols(std::begin(kColumns), std::end(kColumns));
+  if (sizes) cols.insert(cols.end(), std::begin(kSizeColumns), std::end(kSizeColumns));
+  if (jxl) cols.insert(cols.end(), std::begin(kJxlColumns), std::end(kJxlColumns));
+  std::printf("\n%s maps\n%-44s", tuning ? "TUNING" : "HELD-OUT", "map");
+  for (const Column& c : cols) {
+    const int width = std::atoi(c.format + 2);
+    std::printf(" %*s", width, c.title);
+  }
+  std::printf("\n");
+  std::vector<std::vector<double>> values(cols.size());
+  for (const Row& r : rows) {
+    if (r.tuning != tuning) continue;
+    std::printf("%-44s", r.name.c_str());
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      values[k].push_back(cols[k].value(r));
+      std::printf(cols[k].format, values[k].back());
+    }
+    std::printf("\n");
+  }
+  std::printf("%-44s", "median");
+  for (std::size_t k = 0; k < cols.size(); ++k) std::printf(cols[k].format, Median(values[k]));
+  std::printf("\n");
+}
+
+// "nav2/depot.yaml" -> "nav2__depot".
+std::string FlatName(std::string path) {
+  path = path.substr(0, path.rfind('.'));
+  std::string out;
+  for (char c : path) out += c == '/' ? std::string("__") : std::string(1, c);
+  return out;
+}
+
+// The trinary map as map_saver writes it (254 free, 0 occupied, 205
+// unknown; top image row first), for running other codecs on it.
+void DumpPgm(const Grid& g, const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f == nullptr) return;
+  std::fprintf(f, "P5\n%d %d\n255\n", g.width(), g.height());
+  static const unsigned char kGrey[3] = {254, 0, 205};
+  std::vector<unsigned char> row(static_cast<std::size_t>(g.width()));
+  for (int y = g.height() - 1; y >= 0; --y) {
+    for (int x = 0; x < g.width(); ++x) row[x] = kGrey[static_cast<int>(g.at(x, y))];
+    std::fwrite(row.data(), 1, row.size(), f);
+  }
+  std::fclose(f);
+}
+
+// The JPEG XL size of `name` from a file of "name bytes" lines (made by
+// running cjxl on the --dump-pgm files), 0 when absent.
+double JxlBytes(const std::string& file, const std::string& name) {
+  std::FILE* f = std::fopen(file.c_str(), "r");
+  if (f == nullptr) return 0;
+  char key[512];
+  double bytes = 0, found = 0;
+  while (std::fscanf(f, "%511s %lf%*[^\n]", key, &bytes) == 2) {
+    if (name == key) found = bytes;
+  }
+  std::fclose(f);
+  return found;
+}
+
+int Run(int argc, char** argv) {
+  std::string dir = "/work/shared/maps";
+  int tile = 1024;
+  bool sizes = false, hints_on = true;
+  std::string only, dump, jxl_file;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--maps" && i + 1 < argc) {
+      dir = argv[++i];
+    } else if (a == "--tile" && i + 1 < argc) {
+      tile = std::atoi(argv[++i]);
+    } else if (a == "--sizes") {
+      sizes = true;
+    } else if (a == "--no-hints") {
+      hints_on = false;
+    } else if (a == "--only" && i + 1 < argc) {
+      only = argv[++i];
+    } else if (a == "--jxl" && i + 1 < argc) {
+      jxl_file = argv[++i];
+    } else if (a == "--dump-pgm" && i + 1 < argc) {
+      dump = argv[++i];
+    } else {
+      std::fprintf(stderr,
+                   "usage: bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] "
+                   "[--only SUBSTR] [--dump-pgm DIR] [--jxl FILE]\n");
+      return 2;
+    }
+  }
+  if (tile < 1) {
+    std::fprintf(stderr, "bench_tiles: --tile must be >= 1\n");
+    return 2;
+  }
+  std::vector<Row> rows;
+  for (const MapEntry& m : kMaps) {
+    if (!only.empty() && std::string(m.path).find(only) == std::string::npos) continue;
+    const std::string path = dir + "/" + m.path;
+    StatusOr<Grid> loaded = LoadRosMap(path);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "bench_tiles: %s: %s\n", path.c_str(),
+                   loaded.status().ToString().c_str());
+      return 1;
+    }
+    const Grid& g = *loaded;
+    if (!dump.empty()) DumpPgm(g, dump + "/" + FlatName(m.path) + ".pgm");
+    Row r;
+    r.name = m.path;
+    r.tuning = m.tuning;
+    r.cells = static_cast<double>(g.size());
+    std::string best_png;
+    for (bench::PngLayout layout :
+         {bench::PngLayout::kGrey8, bench::PngLayout::kPalette8, bench::PngLayout::kPalette2}) {
+      StatusOr<std::string> png = bench::EncodeTrinaryPng(g, layout, 9);
+      if (png.ok() && (best_png.empty() || png->size() < best_png.size())) best_png = *png;
+    }
+    r.png = static_cast<double>(best_png.size());
+    const std::span<const std::uint8_t> png_bytes(
+        reinterpret_cast<const std::uint8_t*>(best_png.data()), best_png.size());
+    r.png_dec_ns =
+        1e9 / r.cells * MinSeconds(g.size(), [&] { (void)bench::DecodeTrinaryPng(png_bytes); });
+    r.planes = static_cast<double>(PlanesBytes(g));
+
+    std::vector<std::vector<std::uint8_t>> data;
+    r.enc_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, nullptr, tile); });
+    r.plain = static_cast<double>(TotalBytes(data));
+    std::vector<Cell> out(g.size(), Cell::kFree);
+    bool ok = true;
+    r.dec_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] {
+                 ok = ok && DecodeAll(data, nullptr, g.width(), g.height(), tile, &out);
+               });
+    if (!ok || out != g.cells()) {
+      std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
+      return 1;
+    }
+    if (hints_on) {
+      StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+      if (!hints.ok()) {
+        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
+                     hints.status().ToString().c_str());
+        return 1;
+      }
+      const auto hinted = EncodeAll(g, hints->data(), tile);
+      r.hinted = static_cast<double>(TotalBytes(hinted));
+      std::fill(out.begin(), out.end(), Cell::kFree);
+      if (!DecodeAll(hinted, hints->data(), g.width(), g.height(), tile, &out) ||
+          out != g.cells()) {
+        std::fprintf(stderr, "bench_tiles: %s: hinted round trip FAILED\n", m.path);
+        return 1;
+      }
+    }
+    if (sizes) {
+      r.t256 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 256)));
+      r.t512 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 512)));
+    }
+    if (!jxl_file.empty()) r.jxl = JxlBytes(jxl_file, FlatName(m.path));
+    rows.push_back(r);
+    std::fprintf(stderr, "%s done\n", m.path);
+  }
+  std::printf(
+      "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell); "
+      "enc/dec without hints\n",
+      tile);
+  PrintRows(rows, true, sizes, !jxl_file.empty());
+  PrintRows(rows, false, sizes, !jxl_file.empty());
+  return 0;
+}
+
+}  // namespace
+}  // namespace linemap
+
+int main(int argc, char** argv) { return linemap::Run(argc, argv); }

@@ -1,0 +1,113 @@
+#include "tools/linemap/decode_window.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+#include "linemap/lmap_vectors.h"
+
+namespace linemap::cli {
+
+namespace {
+
+// Cell-unit slack for box edges that fall on a cell centre: 0.025 m at
+// 0.05 m/cell is 0.49999999999999994 cells in doubles.
+constexpr double kEdgeSlackCells = 1e-9;
+
+std::string WindowText(const CellWindow& w) {
+  return "cells [" + std::to_string(w.col0) + ", " + std::to_string(w.col1) + ") x [" +
+         std::to_string(w.row0) + ", " + std::to_string(w.row1) + ")";
+}
+
+std::string BoxText(const MetreBox& b) {
+  char text[128];
+  std::snprintf(text, sizeof(text), "%g,%g,%g,%g m", b.x0, b.y0, b.x1, b.y1);
+  return text;
+}
+
+StatusOr<CellWindow> WindowFromCellList(const std::vector<double>& v) {
+  for (double x : v) {
+    if (x != std::floor(x) || std::abs(x) > std::numeric_limits<int>::max()) {
+      return InvalidArgumentError("--window-cells takes whole cell indices C0,R0,C1,R1");
+    }
+  }
+  return CellWindow{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]),
+                    static_cast<int>(v[3])};
+}
+
+}  // namespace
+
+StatusOr<CellWindow> WindowFromMetres(const MetreBox& box, const MapMetadata& meta, int width,
+                                      int height) {
+  if (!(box.x0 <= box.x1 && box.y0 <= box.y1)) {
+    return InvalidArgumentError("--window " + BoxText(box) + ": X0 must not exceed X1, nor Y0 Y1");
+  }
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = meta;
+  double min_col = 0, max_col = 0, min_row = 0, max_row = 0;
+  bool first = true;
+  for (double x : {box.x0, box.x1}) {
+    for (double y : {box.y0, box.y1}) {
+      double col, row;
+      frame.WorldToCell(x, y, &col, &row);
+      min_col = first ? col : std::min(min_col, col);
+      max_col = first ? col : std::max(max_col, col);
+      min_row = first ? row : std::min(min_row, row);
+      max_row = first ? row : std::max(max_row, row);
+      first = false;
+    }
+  }
+  // Far outside the map the indices would overflow an int: such a box is
+  // past the border anyway.
+  const double limit = 4.0 * std::max(width, height) + 4;
+  auto clamp = [&](double v) { return std::clamp(v, -limit, limit); };
+  CellWindow w;
+  w.col0 = static_cast<int>(std::ceil(clamp(min_col - kEdgeSlackCells)));
+  w.col1 = static_cast<int>(std::floor(clamp(max_col + kEdgeSlackCells))) + 1;
+  w.row0 = static_cast<int>(std::ceil(clamp(min_row - kEdgeSlackCells)));
+  w.row1 = static_cast<int>(std::floor(clamp(max_row + kEdgeSlackCells))) + 1;
+  if (w.col0 >= w.col1 || w.row0 >= w.row1) {
+    return InvalidArgumentError("--window " + BoxText(box) + " holds no cell centre");
+  }
+  if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height) {
+    Grid corners;
+    corners.meta = meta;
+    double ax, ay, bx, by;
+    corners.CellToWorld(0, 0, &ax, &ay);
+    corners.CellToWorld(width - 1, height - 1, &bx, &by);
+    char extent[160];
+    std::snprintf(extent, sizeof(extent),
+                  "the map's %d x %d cells have centres from %g,%g to %g,%g m", width, height, ax,
+                  ay, bx, by);
+    return InvalidArgumentError("--window " + BoxText(box) + " covers " + WindowText(w) +
+                                ", past the map's border: " + extent);
+  }
+  return w;
+}
+
+StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,
+                                                   const std::string& lmap_path,
+                                                   const DecodeLimits& limits) {
+  const bool metres = args.Get("--window").has_value();
+  const bool cells = args.Get("--window-cells").has_value();
+  if (metres && cells) return InvalidArgumentError("give --window or --window-cells, not both");
+  if (cells) {
+    LINEMAP_ASSIGN_OR_RETURN(std::vector<double> v, args.GetDoubleList("--window-cells", 4));
+    LINEMAP_ASSIGN_OR_RETURN(CellWindow w, WindowFromCellList(v));
+    return std::optional<CellWindow>(w);
+  }
+  if (!metres) return std::optional<CellWindow>();
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<double> v, args.GetDoubleList("--window", 4));
+  for (double x : v) {
+    if (!std::isfinite(x)) return InvalidArgumentError("--window takes finite metres X0,Y0,X1,Y1");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(LmapVectors file, LoadLmapVectors(lmap_path, limits));
+  StatusOr<CellWindow> w =
+      WindowFromMetres(MetreBox{v[0], v[1], v[2], v[3]}, file.meta, file.width, file.height);
+  if (!w.ok()) return w.status().WithContext("'" + lmap_path + "'");
+  return std::optional<CellWindow>(*w);
+}
+
+}  // namespace linemap::cli
