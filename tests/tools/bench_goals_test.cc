@@ -159,6 +159,15 @@ TEST(BenchGoalsTest, DisplMustNotExceedRmLinesOnAnyMap) {
   EXPECT_EQ(g.verdict, Verdict::kFail);
   EXPECT_EQ(g.failing, std::vector<std::string>{"b (+0.200 cells, +1.00 cm)"});
 
+  // A file without walls on a map with edge cells has no DisPL_ave: missed.
+  results = ThreeGoodMaps();
+  results[0].figures.erase(key::kLmapDisplCells);
+  results[0].figures[key::kLmapWalls] = 0;
+  results[0].figures[key::kLmapEdgeCells] = 40;
+  g = Goal(results, "RM-Line");
+  EXPECT_EQ(g.verdict, Verdict::kFail);
+  EXPECT_EQ(g.failing, std::vector<std::string>{"a (no walls)"});
+
   results = ThreeGoodMaps();
   results[2].figures.erase(key::kRmLineDisplCells);  // RM-Line failed on that map
   g = Goal(results, "RM-Line");

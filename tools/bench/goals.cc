@@ -1,6 +1,7 @@
 #include "tools/bench/goals.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 
@@ -80,10 +81,20 @@ bool MissesCoverage(const MapResult& r) {
   const std::optional<double> share = r.Get(key::kLmapCoveredShare);
   return share && *share < kGoalMinCoveredShare;
 }
-bool MissesDispl(const MapResult& r) {
-  const std::optional<double> mine = r.Get(key::kLmapDisplCells);
+// DisPL_ave of the file's walls minus RM-Line's, in cells (<= 0 meets the
+// goal); +infinity when the file has no wall but the map has edge cells.
+std::optional<double> DisplExcess(const MapResult& r) {
   const std::optional<double> rmline = r.Get(key::kRmLineDisplCells);
-  return mine && rmline && *mine > *rmline;
+  if (!rmline) return std::nullopt;
+  if (const std::optional<double> mine = r.Get(key::kLmapDisplCells)) return *mine - *rmline;
+  const std::optional<double> walls = r.Get(key::kLmapWalls);
+  const std::optional<double> edges = r.Get(key::kLmapEdgeCells);
+  if (walls && *walls == 0 && edges && *edges > 0) return HUGE_VAL;
+  return std::nullopt;
+}
+bool MissesDispl(const MapResult& r) {
+  const std::optional<double> excess = DisplExcess(r);
+  return excess && *excess > 0;
 }
 // The anchors a map of at least kAnchorMinCells cells loses to.
 std::vector<std::string> AnchorsLost(const MapResult& r) {
@@ -205,18 +216,11 @@ GoalOutcome CoverageGoal(const std::vector<MapResult>& results) {
                       [](const MapValue& v) { return Fixed(v.value, 4); });
 }
 
-// DisPL_ave of the file's walls minus RM-Line's, in cells (<= 0 meets it).
-std::optional<double> DisplExcess(const MapResult& r) {
-  const std::optional<double> mine = r.Get(key::kLmapDisplCells);
-  const std::optional<double> rmline = r.Get(key::kRmLineDisplCells);
-  if (!mine || !rmline) return std::nullopt;
-  return *mine - *rmline;
-}
-
 GoalOutcome DisplGoal(const std::vector<MapResult>& results) {
   return EveryMapGoal(
       results, "DisPL_ave of the walls no larger than RM-Line's", "file - RM-Line <= 0, every map",
       DisplExcess, MissesDispl, true, [](const MapValue& v) {
+        if (!std::isfinite(v.value)) return std::string("no walls");
         const double cm_per_cell = v.map->Get(key::kLmapDisplCm).value_or(0) /
                                    std::max(1e-12, v.map->Get(key::kLmapDisplCells).value_or(1));
         char text[96];

@@ -1,5 +1,6 @@
 #include "tools/bench/lmap_figures.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,13 +62,23 @@ Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapRes
   f[key::kLmapFurniture] = static_cast<double>(vectors.furniture.size());
   f[key::kLmapEdgeCells] = static_cast<double>(fidelity.edge_cells);
   // No edge cell: nothing to miss (as LayerFidelity::covered_share() says).
-  f[key::kLmapWithin1Share] =
-      fidelity.edge_cells == 0
-          ? 1.0
-          : static_cast<double>(fidelity.within_1) / static_cast<double>(fidelity.edge_cells);
+  f[key::kLmapWithin1Share] = fidelity.edge_cells == 0
+                                  ? 1.0
+                                  : static_cast<double>(fidelity.within_1_of_wall) /
+                                        static_cast<double>(fidelity.edge_cells);
   f[key::kLmapCoveredShare] = fidelity.covered_share();
-  f[key::kLmapDisplCells] = fidelity.displ_ave_cells;
-  f[key::kLmapDisplCm] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  // A file without walls has no DisPL_ave. With no edge cell either there is
+  // nothing to be far from (0, as RM-Line's mean over no cell); with edge
+  // cells the figure stays out and the DisPL goal counts the map as missed.
+  std::optional<double> displ = fidelity.displ_ave_cells;
+  if (!displ && fidelity.edge_cells == 0) displ = 0.0;
+  if (displ) {
+    f[key::kLmapDisplCells] = *displ;
+    f[key::kLmapDisplCm] = *displ * grid.meta.resolution * 100.0;
+  } else {
+    result->notes.push_back(".lmap 2.0: no walls for " + std::to_string(fidelity.edge_cells) +
+                            " edge cells");
+  }
   result->lmap_geometry = std::move(geometry);
   return Status::Ok();
 }
