@@ -38,11 +38,8 @@ void AddRoundTrip(const Grid& grid, const std::vector<std::uint8_t>& file, const
   }
 }
 
-// The layers as a viewer reads them (no raster decode), scored against the
-// map; kept for the overlay SVG.
-Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapResult* result) {
-  LINEMAP_ASSIGN_OR_RETURN(LmapVectors vectors, DecodeLmapVectors(file));
-  LINEMAP_ASSIGN_OR_RETURN(LayerFidelity fidelity, MeasureLayerFidelity(grid, vectors));
+// The file's layers for the overlay SVG: walls cut into their segments.
+MapResult::LmapGeometry Geometry(const LmapVectors& vectors) {
   MapResult::LmapGeometry geometry;
   for (const WallPolyline& wall : vectors.walls) {
     for (std::size_t i = 1; i < wall.points.size(); ++i) {
@@ -55,11 +52,11 @@ Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapRes
   for (const FurnitureObject& object : vectors.furniture) {
     geometry.blob_outlines.push_back(object.outline);
   }
+  return geometry;
+}
+
+void AddFidelity(const Grid& grid, const LayerFidelity& fidelity, MapResult* result) {
   auto& f = result->figures;
-  f[key::kLmapWalls] = static_cast<double>(vectors.walls.size());
-  f[key::kLmapWallSegments] = static_cast<double>(geometry.segments.size());
-  f[key::kLmapRooms] = static_cast<double>(vectors.rooms.size());
-  f[key::kLmapFurniture] = static_cast<double>(vectors.furniture.size());
   f[key::kLmapEdgeCells] = static_cast<double>(fidelity.edge_cells);
   // No edge cell: nothing to miss (as LayerFidelity::covered_share() says).
   f[key::kLmapWithin1Share] = fidelity.edge_cells == 0
@@ -79,6 +76,20 @@ Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapRes
     result->notes.push_back(".lmap 2.0: no walls for " + std::to_string(fidelity.edge_cells) +
                             " edge cells");
   }
+}
+
+// The layers as a viewer reads them (no raster decode), counted and scored
+// against the map.
+Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapResult* result) {
+  LINEMAP_ASSIGN_OR_RETURN(LmapVectors vectors, DecodeLmapVectors(file));
+  LINEMAP_ASSIGN_OR_RETURN(LayerFidelity fidelity, MeasureLayerFidelity(grid, vectors));
+  MapResult::LmapGeometry geometry = Geometry(vectors);
+  auto& f = result->figures;
+  f[key::kLmapWalls] = static_cast<double>(vectors.walls.size());
+  f[key::kLmapWallSegments] = static_cast<double>(geometry.segments.size());
+  f[key::kLmapRooms] = static_cast<double>(vectors.rooms.size());
+  f[key::kLmapFurniture] = static_cast<double>(vectors.furniture.size());
+  AddFidelity(grid, fidelity, result);
   result->lmap_geometry = std::move(geometry);
   return Status::Ok();
 }
