@@ -1,5 +1,5 @@
-// The anchors check of linemap bench: which maps the lossless .lmap wins and
-// loses against each codec, and how the report prints it.
+// The anchors check of linemap bench: which maps the default .lmap 2.0 file
+// wins and loses against each codec, and how the report prints it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@ MapResult Map(const std::string& name, double cells, double lmap, double png9, d
   MapResult r;
   r.name = name;
   r.figures[key::kCells] = cells;
-  r.figures[key::kLmapLosslessBytes] = lmap;
+  r.figures[key::kLmapBytes] = lmap;
   r.figures[key::kPng9Bytes] = png9;
   if (jxl > 0) r.figures[key::kJxlBytes] = jxl;
   return r;
@@ -34,8 +34,10 @@ std::vector<std::string> Names(const std::vector<const MapResult*>& maps) {
   return names;
 }
 
-TEST(BenchAnchorsTest, SubjectIsTheLosslessLmapAndAllSixAnchorsAreChecked) {
-  EXPECT_EQ(AnchorSubject().figure, key::kLmapLosslessBytes);
+TEST(BenchAnchorsTest, SubjectIsTheDefault2FileAndAllSixAnchorsAreChecked) {
+  // The default file, layers included: not --raster-only, not the 1.0 lossy.
+  EXPECT_EQ(AnchorSubject().figure, std::string(key::kLmapBytes));
+  EXPECT_EQ(std::string(key::kLmapBytes), "lmap2_bytes");
   std::vector<std::string> figures;
   for (const Anchor& a : SizeAnchors()) figures.push_back(a.figure);
   EXPECT_EQ(figures, (std::vector<std::string>{key::kPng9Bytes, key::kWebpBytes, key::kJbigBytes,
@@ -65,13 +67,13 @@ TEST(BenchAnchorsTest, TablesCountWinsAndListLossesWithBothSizes) {
   const std::vector<NamedTable> tables = AnchorTables(results);
   ASSERT_EQ(tables.size(), 2u);
   const std::string summary = tables[0].table.Text();
-  EXPECT_NE(summary.find("PNG-9                2                     2/2     0"), std::string::npos)
+  EXPECT_NE(summary.find("PNG-9                2                2/2     0"), std::string::npos)
       << summary;
   // JPEG XL: lab won (800 < 900), office lost (1679 > 1022).
-  EXPECT_NE(summary.find("JPEG XL lossless     2                     1/2     1"), std::string::npos)
+  EXPECT_NE(summary.find("JPEG XL lossless     2                1/2     1"), std::string::npos)
       << summary;
   const std::string losses = tables[1].table.Text();
-  EXPECT_NE(losses.find("JPEG XL lossless  office  3400000                  1679          1022"),
+  EXPECT_NE(losses.find("JPEG XL lossless  office  3400000             1679          1022"),
             std::string::npos)
       << losses;
   EXPECT_EQ(losses.find("lab"), std::string::npos);

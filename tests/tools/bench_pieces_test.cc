@@ -32,6 +32,21 @@ TEST(BenchTableTest, TextMarkdownCsv) {
   EXPECT_EQ(CsvField("say \"hi\""), "\"say \"\"hi\"\"\"");
 }
 
+TEST(BenchTableTest, LeftAlignedColumnsOfWords) {
+  Table table({"goal", "verdict", "ms"});
+  table.LeftAlign(1);
+  table.AddRow({"a", "PASS", "1.5"});
+  table.AddRow({"bb", "INCOMPLETE", "12.25"});
+  EXPECT_EQ(table.Text(),
+            "goal  verdict        ms\n"
+            "----  ----------  -----\n"
+            "a     PASS          1.5\n"
+            "bb    INCOMPLETE  12.25\n");
+  EXPECT_EQ(table.Markdown(),
+            "| goal | verdict | ms |\n| --- | --- | ---: |\n| a | PASS | 1.5 |\n"
+            "| bb | INCOMPLETE | 12.25 |\n");
+}
+
 TEST(BenchTableTest, Formatting) {
   EXPECT_EQ(FormatFixed(1.23456, 2), "1.23");
   EXPECT_EQ(FormatFixed(std::nullopt, 2), "n/a");

@@ -57,7 +57,7 @@ std::vector<Anchor> SizeAnchors() {
           {"xz -9e", key::kXzBytes},  {"JPEG XL lossless", key::kJxlBytes}};
 }
 
-Anchor AnchorSubject() { return {".lmap lossless", key::kLmapLosslessBytes}; }
+Anchor AnchorSubject() { return {".lmap 2.0", key::kLmapBytes}; }
 
 std::vector<AnchorOutcome> CheckAnchors(const std::vector<MapResult>& results) {
   const Anchor subject = AnchorSubject();

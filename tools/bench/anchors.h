@@ -1,6 +1,7 @@
 // The size goal of .lmap against the codecs a user could pick instead: on
-// every map of at least 100,000 cells the lossless .lmap file must be smaller
-// than each anchor (PNG-9, WebP, JBIG1, zstd -19, xz -9e, JPEG XL).
+// every map of at least 100,000 cells the default .lmap 2.0 file (exact, with
+// its wall, room and furniture layers) must be smaller than each anchor
+// (PNG-9, WebP, JBIG1, zstd -19, xz -9e, JPEG XL).
 #ifndef LINEMAP_TOOLS_BENCH_ANCHORS_H_
 #define LINEMAP_TOOLS_BENCH_ANCHORS_H_
 
@@ -24,9 +25,8 @@ struct Anchor {
 // The anchors, in the order the table lists them.
 std::vector<Anchor> SizeAnchors();
 
-// The file checked against the anchors: whatever the bench measures as the
-// lossless .lmap (the figure is named, so the check follows the codec's
-// default without a change here).
+// The file checked against the anchors: the default .lmap 2.0 file, layers
+// included (not --raster-only, which would flatter the layers' cost away).
 Anchor AnchorSubject();
 
 struct AnchorOutcome {

@@ -1,90 +1,181 @@
 #include "tools/bench/lmap_figures.h"
 
-// The codec (issue 6) lands on its own branch; these columns switch on by
-// themselves once its public header is in the tree.
-#if __has_include("linemap/codec.h")
-#include "linemap/codec.h"
-#define LINEMAP_BENCH_HAVE_CODEC 1
-#endif
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "tools/bench/measure.h"
 
 namespace linemap::bench {
-
-#ifdef LINEMAP_BENCH_HAVE_CODEC
 namespace {
 
 constexpr double kMb = 1024.0 * 1024.0;
 
-std::vector<LineSegment> ToLineSegments(const std::vector<LatticeSegment>& stored) {
-  std::vector<LineSegment> segments;
-  segments.reserve(stored.size());
-  for (const LatticeSegment& s : stored) {
-    segments.push_back({static_cast<double>(s.a.col), static_cast<double>(s.a.row),
-                        static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
-  }
-  return segments;
+void Note(MapResult* result, const std::string& what, const Status& status) {
+  result->notes.push_back(what + ": " + status.message());
 }
 
-// Eval figures of the lossy decode, and the geometry for the SVG overlay.
-Status AddLossyEval(const Grid& grid, const std::vector<std::uint8_t>& lossy, MapResult* result) {
-  LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(lossy));
-  const GridComparison eval = CompareGrids(grid, contents.grid);
-  result->figures[key::kEvalRecall] = eval.obstacle_recall_1;
-  result->figures[key::kEvalPrecision] = eval.obstacle_precision_1;
-  result->figures[key::kEvalFreeIou] = eval.free_iou;
-  result->figures[key::kEvalLeaks] = static_cast<double>(eval.leaks);
-  result->figures[key::kEvalUnknownFreed] = eval.unknown_turned_free_share;
-  MapResult::LmapGeometry geometry;
-  geometry.segments = ToLineSegments(contents.segments);
-  geometry.room_chains = contents.room_chains;
-  geometry.blob_outlines = contents.blob_outlines;
-  result->figures[key::kEvalLines] = static_cast<double>(geometry.segments.size());
-  if (!geometry.segments.empty()) {
-    const LineFidelity fidelity = MeasureLineFidelity(ComputeEdgeMap(grid), geometry.segments);
-    result->figures[key::kEvalDisplCm] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+// Decodes `file` and counts the cells that differ from `grid` under
+// `cells_key`; a decode that fails gets every cell counted.
+void AddRoundTrip(const Grid& grid, const std::vector<std::uint8_t>& file, const char* cells_key,
+                  const std::string& label, MapResult* result) {
+  StatusOr<Grid> decoded = DecodeLmap(file);
+  if (!decoded.ok()) {
+    result->figures[cells_key] = static_cast<double>(grid.size());
+    return Note(result, label + " decode", decoded.status());
   }
+  const std::size_t wrong = CellsWrong(grid, *decoded);
+  result->figures[cells_key] = static_cast<double>(wrong);
+  if (wrong > 0) {
+    result->notes.push_back(label + ": the decode differs from the map in " +
+                            std::to_string(wrong) + " cells");
+  }
+  if (!(decoded->meta == grid.meta)) {
+    result->notes.push_back(label + ": the decoded resolution or origin differs from the map's");
+  }
+}
+
+// The file's layers for the overlay SVG: walls cut into their segments.
+MapResult::LmapGeometry Geometry(const LmapVectors& vectors) {
+  MapResult::LmapGeometry geometry;
+  for (const WallPolyline& wall : vectors.walls) {
+    for (std::size_t i = 1; i < wall.points.size(); ++i) {
+      const CellIndex a = wall.points[i - 1], b = wall.points[i];
+      geometry.segments.push_back({static_cast<double>(a.col), static_cast<double>(a.row),
+                                   static_cast<double>(b.col), static_cast<double>(b.row)});
+    }
+  }
+  for (const RoomOutline& room : vectors.rooms) geometry.room_chains.push_back(room.chain);
+  for (const FurnitureObject& object : vectors.furniture) {
+    geometry.blob_outlines.push_back(object.outline);
+  }
+  return geometry;
+}
+
+void AddFidelity(const Grid& grid, const LayerFidelity& fidelity, MapResult* result) {
+  auto& f = result->figures;
+  f[key::kLmapEdgeCells] = static_cast<double>(fidelity.edge_cells);
+  // No edge cell: nothing to miss (as LayerFidelity::covered_share() says).
+  f[key::kLmapWithin1Share] = fidelity.edge_cells == 0
+                                  ? 1.0
+                                  : static_cast<double>(fidelity.within_1_of_wall) /
+                                        static_cast<double>(fidelity.edge_cells);
+  f[key::kLmapCoveredShare] = fidelity.covered_share();
+  // A file without walls has no DisPL_ave. With no edge cell either there is
+  // nothing to be far from (0, as RM-Line's mean over no cell); with edge
+  // cells the figure stays out and the DisPL goal counts the map as missed.
+  std::optional<double> displ = fidelity.displ_ave_cells;
+  if (!displ && fidelity.edge_cells == 0) displ = 0.0;
+  if (displ) {
+    f[key::kLmapDisplCells] = *displ;
+    f[key::kLmapDisplCm] = *displ * grid.meta.resolution * 100.0;
+  } else {
+    result->notes.push_back(".lmap 2.0: no walls for " + std::to_string(fidelity.edge_cells) +
+                            " edge cells");
+  }
+}
+
+// The layers as a viewer reads them (no raster decode), counted and scored
+// against the map.
+Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapResult* result) {
+  LINEMAP_ASSIGN_OR_RETURN(LmapVectors vectors, DecodeLmapVectors(file));
+  LINEMAP_ASSIGN_OR_RETURN(LayerFidelity fidelity, MeasureLayerFidelity(grid, vectors));
+  MapResult::LmapGeometry geometry = Geometry(vectors);
+  auto& f = result->figures;
+  f[key::kLmapWalls] = static_cast<double>(vectors.walls.size());
+  f[key::kLmapWallSegments] = static_cast<double>(geometry.segments.size());
+  f[key::kLmapRooms] = static_cast<double>(vectors.rooms.size());
+  f[key::kLmapFurniture] = static_cast<double>(vectors.furniture.size());
+  AddFidelity(grid, fidelity, result);
   result->lmap_geometry = std::move(geometry);
+  return Status::Ok();
+}
+
+// Encode and decode CPU time (median of `what.repeats`) and peak memory of
+// the default file, as `linemap encode` / `decode` do it.
+void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const LmapMeasure& what,
+              MapResult* result) {
+  auto encode = [&] { (void)EncodeLmap(grid, EncodeOptions{}); };
+  auto decode = [&] { (void)DecodeLmap(file); };
+  result->figures[key::kLmapEncodeMs] = Median(TimeRuns(encode, what.repeats));
+  result->figures[key::kLmapDecodeMs] = Median(TimeRuns(decode, what.repeats));
+  if (!what.memory) return;
+  if (auto peak = PeakExtraMemoryBytes(encode)) {
+    result->figures[key::kLmapEncodePeakMb] = *peak / kMb;
+  }
+  if (auto peak = PeakExtraMemoryBytes(decode)) {
+    result->figures[key::kLmapDecodePeakMb] = *peak / kMb;
+  }
+}
+
+void AddRasterOnly(const Grid& grid, MapResult* result) {
+  EncodeOptions options;
+  options.vector_layers = false;
+  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
+  if (!file.ok()) return Note(result, ".lmap 2.0 --raster-only", file.status());
+  result->figures[key::kLmapRasterBytes] = static_cast<double>(file->size());
+  AddRoundTrip(grid, *file, key::kLmapRasterCellsWrong, ".lmap 2.0 --raster-only", result);
+}
+
+// The former lossy mode (`linemap encode --lossy`): its size and linemap
+// eval's figures of its decode.
+Status AddLossy(const Grid& grid, MapResult* result) {
+  EncodeOptions options;
+  options.format_v1 = true;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> file, EncodeLmap(grid, options));
+  result->figures[key::kLmapLossyBytes] = static_cast<double>(file.size());
+  LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(file));
+  const GridComparison eval = CompareGrids(grid, contents.grid);
+  auto& f = result->figures;
+  f[key::kEvalRecall] = eval.obstacle_recall_1;
+  f[key::kEvalPrecision] = eval.obstacle_precision_1;
+  f[key::kEvalFreeIou] = eval.free_iou;
+  f[key::kEvalLeaks] = static_cast<double>(eval.leaks);
+  f[key::kEvalUnknownFreed] = eval.unknown_turned_free_share;
+  f[key::kEvalLines] = static_cast<double>(contents.segments.size());
+  if (!contents.segments.empty()) {
+    std::vector<LineSegment> segments;
+    for (const LatticeSegment& s : contents.segments) {
+      segments.push_back({static_cast<double>(s.a.col), static_cast<double>(s.a.row),
+                          static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
+    }
+    const LineFidelity fidelity = MeasureLineFidelity(ComputeEdgeMap(grid), segments);
+    f[key::kEvalDisplCm] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  }
   return Status::Ok();
 }
 
 }  // namespace
 
+std::size_t CellsWrong(const Grid& original, const Grid& decoded) {
+  if (original.width() != decoded.width() || original.height() != decoded.height()) {
+    return original.size();
+  }
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    wrong += original.cells()[i] != decoded.cells()[i] ? 1 : 0;
+  }
+  return wrong;
+}
+
 Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* result) {
-  const EncodeOptions lossy_options;  // the codec's defaults: what `linemap encode` does
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> lossy, EncodeLmap(grid, lossy_options));
-  result->figures[key::kLmapLossyBytes] = static_cast<double>(lossy.size());
-  auto encode = [&] { (void)EncodeLmap(grid, lossy_options); };
-  auto decode = [&] { (void)DecodeLmap(lossy); };
-  result->figures[key::kLmapEncodeMs] = Median(TimeRuns(encode, what.repeats));
-  result->figures[key::kLmapDecodeMs] = Median(TimeRuns(decode, what.repeats));
-  if (what.memory) {
-    if (auto peak = PeakExtraMemoryBytes(encode)) {
-      result->figures[key::kLmapEncodePeakMb] = *peak / kMb;
-    }
-    if (auto peak = PeakExtraMemoryBytes(decode)) {
-      result->figures[key::kLmapDecodePeakMb] = *peak / kMb;
-    }
+  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, EncodeOptions{});
+  if (!file.ok()) {
+    result->figures[key::kLmapCellsWrong] = static_cast<double>(grid.size());
+    return file.status();
   }
-  if (!what.everything) return Status::Ok();
-  EncodeOptions lossless_options;
-  lossless_options.lossless = true;
-  StatusOr<std::vector<std::uint8_t>> lossless = EncodeLmap(grid, lossless_options);
-  if (lossless.ok()) {
-    result->figures[key::kLmapLosslessBytes] = static_cast<double>(lossless->size());
-  } else {
-    result->notes.push_back(".lmap lossless: " + lossless.status().message());
-  }
-  return AddLossyEval(grid, lossy, result);
+  result->figures[key::kLmapBytes] = static_cast<double>(file->size());
+  AddRoundTrip(grid, *file, key::kLmapCellsWrong, ".lmap 2.0", result);
+  Status layers = AddLayers(grid, *file, result);
+  if (!layers.ok()) Note(result, ".lmap 2.0 layers", layers);
+  AddSpeed(grid, *file, what, result);
+  AddRasterOnly(grid, result);
+  Status lossy = AddLossy(grid, result);
+  if (!lossy.ok()) Note(result, ".lmap 1.0 --lossy", lossy);
+  return Status::Ok();
 }
-
-#else
-
-Status AddLmapFigures(const Grid& /*grid*/, const LmapMeasure& /*what*/, MapResult* /*result*/) {
-  return UnsupportedError(
-      "the .lmap codec (issue 6) is not merged into this tree yet: no .lmap columns");
-}
-
-#endif
 
 }  // namespace linemap::bench

@@ -1,9 +1,11 @@
-// The .lmap columns of `linemap bench` (issue 6's codec): lossy and lossless
-// sizes, encode / decode time and peak memory, and the eval figures of the
-// lossy decode. Kept apart so the rest of the bench does not depend on the
-// codec's API.
+// The .lmap columns of `linemap bench`: the default 2.0 file (exact, with
+// walls, rooms and furniture) with its speed, memory, round-trip check and
+// layer fidelity; the --raster-only 2.0 file; the former 1.0 lossy file with
+// the eval figures of its decode.
 #ifndef LINEMAP_TOOLS_BENCH_LMAP_FIGURES_H_
 #define LINEMAP_TOOLS_BENCH_LMAP_FIGURES_H_
+
+#include <cstddef>
 
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -12,15 +14,19 @@
 namespace linemap::bench {
 
 struct LmapMeasure {
-  int repeats = 5;         // timed encode and decode runs
-  bool memory = true;      // peak memory of encode and decode (forks)
-  bool everything = true;  // also lossless size, eval figures and geometry
+  int repeats = 5;     // timed encode and decode runs of the default file
+  bool memory = true;  // peak memory of its encode and decode (forks)
 };
 
-// Adds the kLmap* and kEval* figures of `grid` to `result` (lossy = the
-// codec's default options, as `linemap encode` writes). Fails with
-// kUnsupported (and adds nothing) while the codec is not in this tree.
+// Adds the kLmap* and kEval* figures of `grid` to `result`. A file that
+// cannot be written or read back adds a note; a default file that cannot be
+// written or decoded counts every cell as wrong (kLmapCellsWrong), so the
+// round-trip goal fails rather than skips the map.
 Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* result);
+
+// Cells of `decoded` that differ from `original`, compared one by one; every
+// cell of `original` when the two differ in width or height.
+std::size_t CellsWrong(const Grid& original, const Grid& decoded);
 
 }  // namespace linemap::bench
 

@@ -73,9 +73,10 @@ std::vector<SizeMethod> SizeMethods() {
       {"JBIG1 two planes (pbmtojbg -q)", key::kJbigBytes, "", "", ""},
       {WebpLabel(), key::kWebpBytes, key::kWebpEncodeMs, key::kWebpDecodeMs, ""},
       {JxlLabel(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs, ""},
-      {".lmap lossless", key::kLmapLosslessBytes, "", "", ""},
-      {".lmap lossy", key::kLmapLossyBytes, key::kLmapEncodeMs, key::kLmapDecodeMs,
-       key::kEvalDisplCm},
+      {".lmap 2.0 (default: exact, walls + rooms + furniture)", key::kLmapBytes, key::kLmapEncodeMs,
+       key::kLmapDecodeMs, ""},
+      {".lmap 2.0 --raster-only", key::kLmapRasterBytes, "", "", ""},
+      {".lmap 1.0 --lossy", key::kLmapLossyBytes, "", "", key::kEvalDisplCm},
   };
 }
 
@@ -97,7 +98,10 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
        "cell; xz -9e = preset 9 | LZMA_PRESET_EXTREME); JBIG1 is the sum of the free and "
        "occupied bit-planes; WebP and JPEG XL encode map_saver's 8-bit grey PGM (" +
            CommandText(WebpCodec().encode) + "; " + CommandText(JpegXlCodec().encode) +
-           "), each file decoded back (dwebp, djxl) and checked pixel for pixel.",
+           "), each file decoded back (dwebp, djxl) and checked pixel for pixel. lmap 2.0 = "
+           "`linemap encode` with no option (exact, walls + rooms + furniture); lmap raster = "
+           "--raster-only (exact, cells only); lmap 1.0 lossy = --lossy (the former lossy "
+           "encoder).",
        ColumnsTable(results, {{key::kCells, "cells"},
                               {key::kSourceBytes, "source"},
                               {key::kPng9Bytes, "PNG-9"},
@@ -109,8 +113,9 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kJbigBytes, "JBIG1"},
                               {key::kWebpBytes, "WebP"},
                               {key::kJxlBytes, "JPEG XL"},
-                              {key::kLmapLosslessBytes, "lmap LL"},
-                              {key::kLmapLossyBytes, "lmap"}})});
+                              {key::kLmapBytes, "lmap 2.0"},
+                              {key::kLmapRasterBytes, "lmap raster"},
+                              {key::kLmapLossyBytes, "lmap 1.0 lossy"}})});
   tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
                     ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
                                            {key::kPng8Bytes, "PNG 8b", 3, true},
@@ -121,8 +126,9 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                                            {key::kJbigBytes, "JBIG1", 3, true},
                                            {key::kWebpBytes, "WebP", 3, true},
                                            {key::kJxlBytes, "JPEG XL", 3, true},
-                                           {key::kLmapLosslessBytes, "lmap LL", 3, true},
-                                           {key::kLmapLossyBytes, "lmap", 3, true}})});
+                                           {key::kLmapBytes, "lmap 2.0", 3, true},
+                                           {key::kLmapRasterBytes, "lmap raster", 3, true},
+                                           {key::kLmapLossyBytes, "lmap 1.0 lossy", 3, true}})});
   tables.push_back(
       {"Line extraction",
        "Lines and DisPL_ave (RM-Line Eq. 5: mean distance from an edge cell to the nearest "
@@ -151,23 +157,24 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
       {"Speed and memory",
        "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above); peak = "
        "resident memory the operation adds, in MB, measured once in a forked child; "
-       "Mcells/s = cells / CPU time.",
+       "Mcells/s = cells / CPU time. lmap2 = the default .lmap 2.0 file (encode with its "
+       "layers; decode of the whole grid).",
        ColumnsTable(results, {{key::kRepeats, "runs"},
                               {key::kPngEncodeMs, "PNG enc ms", 1},
                               {key::kPngDecodeMs, "PNG dec ms", 1},
                               {key::kPngEncodePeakMb, "PNG enc MB", 1},
                               {key::kPngDecodePeakMb, "PNG dec MB", 1},
-                              {key::kLmapEncodeMs, "lmap enc ms", 1},
-                              {key::kLmapDecodeMs, "lmap dec ms", 1},
-                              {key::kLmapEncodePeakMb, "lmap enc MB", 1},
-                              {key::kLmapDecodePeakMb, "lmap dec MB", 1},
+                              {key::kLmapEncodeMs, "lmap2 enc ms", 1},
+                              {key::kLmapDecodeMs, "lmap2 dec ms", 1},
+                              {key::kLmapEncodePeakMb, "lmap2 enc MB", 1},
+                              {key::kLmapDecodePeakMb, "lmap2 dec MB", 1},
                               {key::kPngEncodeMcellsPerS, "PNG enc Mcells/s", 1},
                               {key::kPngDecodeMcellsPerS, "PNG dec Mcells/s", 1},
-                              {key::kLmapEncodeMcellsPerS, "lmap enc Mcells/s", 1},
-                              {key::kLmapDecodeMcellsPerS, "lmap dec Mcells/s", 1}})});
+                              {key::kLmapEncodeMcellsPerS, "lmap2 enc Mcells/s", 1},
+                              {key::kLmapDecodeMcellsPerS, "lmap2 dec Mcells/s", 1}})});
   tables.push_back(
-      {"Fidelity of lossy .lmap",
-       "linemap eval of the lossy decode against the map: obstacle recall and precision "
+      {"Fidelity of .lmap 1.0 --lossy",
+       "linemap eval of the 1.0 lossy decode against the map: obstacle recall and precision "
        "within 1 cell, free-space IoU, leaks, unknown cells turned free (share of free), "
        "DisPL_ave of the stored segments.",
        ColumnsTable(results, {{key::kEvalRecall, "recall", 4},
@@ -203,7 +210,9 @@ NamedTable MediansTable(const std::vector<MapResult>& results) {
   }
   return {"Medians over the corpus",
           "Ratio = size / PNG-9 per map, then the median (not the ratio of the medians). "
-          "Lossless methods reproduce every cell, so their DisPL is 0. n/a = not measured in "
+          "Exact methods reproduce every cell, so their DisPL is 0; the lossy row's DisPL is "
+          "that of the segments it stores (the 2.0 file's own walls: see the goals tables). "
+          "n/a = not measured in "
           "this build (see the notes). WebP and JPEG XL times are the CPU time of the "
           "cwebp / dwebp / cjxl / djxl process, one run, start-up and file I/O included.",
           table};
@@ -242,7 +251,7 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results) {
 
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
-               "linemap lines ms/Mcell", "lmap enc ms/Mcell", "lmap dec ms/Mcell"});
+               "linemap lines ms/Mcell", "lmap2 enc ms/Mcell", "lmap2 dec ms/Mcell"});
   for (const ScalingRow& row : rows) {
     table.AddRow(
         {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
@@ -286,7 +295,7 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
-          "repeated tiles and speed up); CPU time per Mcell "
+          "repeated tiles and speed up); lmap2 = the default .lmap 2.0 file; CPU time per Mcell "
           "(median of `runs`: at least 9 up to 16 Mcells, 5 at 64; RM-Line and linemap lines one "
           "run). spread = "
           "largest / "

@@ -28,14 +28,20 @@ inline constexpr const char* kXzBytes = "xz9e_bytes";  // xz -9e (preset 9, extr
 inline constexpr const char* kJbigBytes = "jbig_bytes";
 inline constexpr const char* kJxlBytes = "jxl_bytes";    // cjxl lossless, effort 9
 inline constexpr const char* kWebpBytes = "webp_bytes";  // cwebp -lossless -z 9
-inline constexpr const char* kLmapLossyBytes = "lmap_lossy_bytes";
-inline constexpr const char* kLmapLosslessBytes = "lmap_lossless_bytes";
+// .lmap 2.0 as `linemap encode` writes it by default: exact, with the wall,
+// room and furniture layers. Its encode / decode times and memory are the
+// kLmap* speed figures below.
+inline constexpr const char* kLmapBytes = "lmap2_bytes";
+// .lmap 2.0 --raster-only: exact, cells only (the smallest exact file).
+inline constexpr const char* kLmapRasterBytes = "lmap2_raster_bytes";
+// .lmap 1.0 --lossy: the former lossy encoder (EncodeOptions::format_v1).
+inline constexpr const char* kLmapLossyBytes = "lmap1_lossy_bytes";
 inline constexpr const char* kPngEncodeMs = "png_encode_ms";
 inline constexpr const char* kPngDecodeMs = "png_decode_ms";
 inline constexpr const char* kPngEncodePeakMb = "png_encode_peak_mb";
 inline constexpr const char* kPngDecodePeakMb = "png_decode_peak_mb";
-inline constexpr const char* kLmapEncodeMs = "lmap_encode_ms";
-inline constexpr const char* kLmapDecodeMs = "lmap_decode_ms";
+inline constexpr const char* kLmapEncodeMs = "lmap2_encode_ms";
+inline constexpr const char* kLmapDecodeMs = "lmap2_decode_ms";
 // CPU time of the cjxl / djxl / cwebp / dwebp process, one run (start-up and
 // file reads and writes included).
 inline constexpr const char* kJxlEncodeMs = "jxl_encode_ms";
@@ -45,24 +51,47 @@ inline constexpr const char* kWebpDecodeMs = "webp_decode_ms";
 // Throughput, Mcells per CPU second, from the times above.
 inline constexpr const char* kPngEncodeMcellsPerS = "png_encode_mcells_per_s";
 inline constexpr const char* kPngDecodeMcellsPerS = "png_decode_mcells_per_s";
-inline constexpr const char* kLmapEncodeMcellsPerS = "lmap_encode_mcells_per_s";
-inline constexpr const char* kLmapDecodeMcellsPerS = "lmap_decode_mcells_per_s";
-inline constexpr const char* kLmapEncodePeakMb = "lmap_encode_peak_mb";
-inline constexpr const char* kLmapDecodePeakMb = "lmap_decode_peak_mb";
+inline constexpr const char* kLmapEncodeMcellsPerS = "lmap2_encode_mcells_per_s";
+inline constexpr const char* kLmapDecodeMcellsPerS = "lmap2_decode_mcells_per_s";
+inline constexpr const char* kLmapEncodePeakMb = "lmap2_encode_peak_mb";
+inline constexpr const char* kLmapDecodePeakMb = "lmap2_decode_peak_mb";
 inline constexpr const char* kRepeats = "timing_repeats";
 inline constexpr const char* kRmLineLines = "rmline_lines";
+inline constexpr const char* kRmLineDisplCells = "rmline_displ_cells";
+inline constexpr const char* kRmLineEdgeCells = "rmline_edge_cells";  // DisPL's denominator
 inline constexpr const char* kRmLineDisplCm = "rmline_displ_cm";
 inline constexpr const char* kRmLineMs = "rmline_ms";
 inline constexpr const char* kLinemapLines = "linemap_lines";
 inline constexpr const char* kLinemapDisplCm = "linemap_displ_cm";
 inline constexpr const char* kLinemapMs = "linemap_ms";
-inline constexpr const char* kEvalRecall = "eval_recall_1";
-inline constexpr const char* kEvalPrecision = "eval_precision_1";
-inline constexpr const char* kEvalFreeIou = "eval_free_iou";
-inline constexpr const char* kEvalLeaks = "eval_leaks";
-inline constexpr const char* kEvalUnknownFreed = "eval_unknown_to_free_share";
-inline constexpr const char* kEvalDisplCm = "eval_displ_cm";
-inline constexpr const char* kEvalLines = "eval_lines";
+// The default 2.0 file checked against the map: cells its decode gets wrong
+// (0 = exact; every cell when the decode fails or has another size), and the
+// same for the --raster-only file.
+inline constexpr const char* kLmapCellsWrong = "lmap2_cells_wrong";
+inline constexpr const char* kLmapRasterCellsWrong = "lmap2_raster_cells_wrong";
+// The default file's layers (read with DecodeLmapVectors, no raster decode):
+// how many, and MeasureLayerFidelity() of them against the map.
+inline constexpr const char* kLmapWalls = "lmap2_walls";                 // polylines
+inline constexpr const char* kLmapWallSegments = "lmap2_wall_segments";  // their segments
+inline constexpr const char* kLmapRooms = "lmap2_rooms";
+inline constexpr const char* kLmapFurniture = "lmap2_furniture";
+inline constexpr const char* kLmapEdgeCells = "lmap2_edge_cells";
+inline constexpr const char* kLmapWithin1Share = "lmap2_within1_share";  // of edge cells
+inline constexpr const char* kLmapCoveredShare = "lmap2_covered_share";  // ... or in furniture
+inline constexpr const char* kLmapDisplCells = "lmap2_displ_cells";      // DisPL_ave of the walls
+inline constexpr const char* kLmapDisplCm = "lmap2_displ_cm";
+// Derived per map for the 2.0 goals (see goals.h).
+inline constexpr const char* kLmapLayerCost = "lmap2_layer_cost";  // default / raster-only - 1
+inline constexpr const char* kLmapDecodeSpeedupVsPng = "lmap2_decode_speedup_vs_png";
+inline constexpr const char* kLmapEncodeTimeVsPng = "lmap2_encode_time_vs_png";
+// linemap eval of the 1.0 --lossy decode against the map.
+inline constexpr const char* kEvalRecall = "lmap1_lossy_recall_1";
+inline constexpr const char* kEvalPrecision = "lmap1_lossy_precision_1";
+inline constexpr const char* kEvalFreeIou = "lmap1_lossy_free_iou";
+inline constexpr const char* kEvalLeaks = "lmap1_lossy_leaks";
+inline constexpr const char* kEvalUnknownFreed = "lmap1_lossy_unknown_to_free_share";
+inline constexpr const char* kEvalDisplCm = "lmap1_lossy_displ_cm";
+inline constexpr const char* kEvalLines = "lmap1_lossy_lines";
 }  // namespace key
 
 struct MapResult {
@@ -72,7 +101,8 @@ struct MapResult {
   std::vector<std::string> notes;  // comparators that failed on this map, and why
   // Kept for the SVG overlay (cell units).
   std::vector<LineSegment> rmline_segments;
-  // The geometry stored in the lossy .lmap, when the codec is in the tree.
+  // The layers of the default .lmap 2.0 file: its walls cut into their
+  // segments, the room border chains, the furniture outlines.
   struct LmapGeometry {
     std::vector<LineSegment> segments;
     std::vector<std::vector<CellIndex>> room_chains;

@@ -12,6 +12,7 @@
 #include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
+#include "tools/bench/goals.h"
 #include "tools/bench/image_anchors.h"
 #include "tools/bench/jbig.h"
 #include "tools/bench/lmap_figures.h"
@@ -20,6 +21,7 @@
 #include "tools/bench/png_codec.h"
 #include "tools/bench/subprocess.h"
 #include "tools/bench/synthetic.h"
+#include "tools/bench/table.h"
 
 namespace linemap::bench {
 namespace {
@@ -141,8 +143,11 @@ void AddPngSpeed(const Grid& grid, const SmallestPng& png, int repeats, bool mem
     result->figures[key::kPngDecodePeakMb] = *peak / kMb;
 }
 
+// `displ_cells_key` may be nullptr (DisPL in cm only); when given, the edge
+// cells DisPL was averaged over are kept too (kRmLineEdgeCells).
 void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
-                    const char* displ_key, const char* ms_key, MapResult* result) {
+                    const char* displ_key, const char* displ_cells_key, const char* ms_key,
+                    MapResult* result) {
   LineExtractionOptions options;
   options.method = method;
   StatusOr<LineExtraction> lines = InternalError("not run");
@@ -154,6 +159,10 @@ void AddLineFigures(const Grid& grid, LineMethod method, const char* lines_key,
   const LineFidelity fidelity = MeasureLineFidelity(lines->edges, lines->segments);
   result->figures[lines_key] = static_cast<double>(lines->segments.size());
   result->figures[displ_key] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
+  if (displ_cells_key) {
+    result->figures[displ_cells_key] = fidelity.displ_ave_cells;
+    result->figures[key::kRmLineEdgeCells] = static_cast<double>(fidelity.edge_cells);
+  }
   result->figures[ms_key] = ms;
   if (method == LineMethod::kRmLine) result->rmline_segments = std::move(lines->segments);
 }
@@ -170,6 +179,17 @@ void AddOpenCvFigures(const Grid& grid, MapResult* result) {
     result->figures[run.key + "_displ_cm"] =
         fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
     result->figures[run.key + "_ms"] = run.ms;
+  }
+}
+
+// The 2.0 goal compares the file's DisPL_ave with RM-Line's: say so when
+// the two were averaged over different edge cells (then they do not compare).
+void CheckSameEdgeCells(MapResult* result) {
+  const std::optional<double> rmline = result->Get(key::kRmLineEdgeCells);
+  const std::optional<double> file = result->Get(key::kLmapEdgeCells);
+  if (rmline && file && *rmline != *file) {
+    result->notes.push_back("DisPL_ave: RM-Line's is over " + FormatCount(rmline) +
+                            " edge cells, the .lmap 2.0 walls' over " + FormatCount(file));
   }
 }
 
@@ -226,14 +246,17 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
                    &result);
   }
   if (!png.bytes.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
-  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm, key::kRmLineMs,
-                 &result);
-  AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm,
+  // RM-Line's DisPL_ave is also the bar the 2.0 file's walls must meet.
+  AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm,
+                 key::kRmLineDisplCells, key::kRmLineMs, &result);
+  AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm, nullptr,
                  key::kLinemapMs, &result);
   AddOpenCvFigures(grid, &result);
-  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory, true}, &result);
-  if (!lmap.ok()) Note(&result, ".lmap", lmap);
+  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory}, &result);
+  if (!lmap.ok()) Note(&result, ".lmap 2.0", lmap);
   AddThroughput(&result);
+  AddGoalFigures(&result);
+  CheckSameEdgeCells(&result);
   return result;
 }
 

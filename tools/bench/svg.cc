@@ -52,6 +52,23 @@ std::string ChainPoints(const Grid& grid, const std::vector<CellIndex>& chain) {
   return points;
 }
 
+// The smallest of 1, 2, 5 x 10^k (k >= 0) that splits [0, `span`] into at
+// most `ticks` steps.
+double TickStep(double span, int ticks) {
+  if (!std::isfinite(span) || span <= 0) return 1.0;
+  for (double scale = 1;; scale *= 10) {
+    for (double step : {1.0, 2.0, 5.0}) {
+      if (span / (step * scale) <= ticks) return step * scale;
+    }
+  }
+}
+
+std::string TickLabel(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 struct PlotMethod {
   const char* label;
   const char* size_figure;
@@ -67,8 +84,9 @@ const std::vector<PlotMethod>& PlotMethods() {
       {"JBIG1", key::kJbigBytes, nullptr, "#8c564b"},
       {"WebP", key::kWebpBytes, nullptr, "#e377c2"},
       {"JPEG XL", key::kJxlBytes, nullptr, "#17becf"},
-      {".lmap lossless", key::kLmapLosslessBytes, nullptr, "#2ca02c"},
-      {".lmap lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
+      {".lmap 2.0 (default)", key::kLmapBytes, nullptr, "#2ca02c"},
+      {".lmap 2.0 --raster-only", key::kLmapRasterBytes, nullptr, "#bcbd22"},
+      {".lmap 1.0 --lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
   };
   return methods;
 }
@@ -143,8 +161,8 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
   for (std::size_t at = file.find('/'); at != std::string::npos; at = file.find('/', at + 2)) {
     file.replace(at, 1, "__");
   }
-  // The .lmap's own geometry when the codec is in; else RM-Line's segments
-  // and the segmentation's room borders and furniture.
+  // The default .lmap 2.0 file's own layers; when they could not be read,
+  // RM-Line's segments and the segmentation's room borders and furniture.
   Segmentation segmentation;
   std::vector<LineSegment> segments;
   std::string source;
@@ -159,7 +177,7 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
       blob.outline = outline;
       segmentation.blobs.push_back(std::move(blob));
     }
-    source = "lossy .lmap";
+    source = ".lmap 2.0 layers";
   } else {
     segments = result.rmline_segments;
     StatusOr<Segmentation> segmented = SegmentMap(grid);
@@ -171,7 +189,7 @@ Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapRes
     source = "RM-Line + SegmentMap";
   }
   const std::string title =
-      result.name + " (" + source + "): segments red, room borders blue, furniture green";
+      result.name + " (" + source + "): walls red, room borders blue, furniture green";
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(dir + "/" + file + ".svg",
                                           MapOverlaySvg(grid, segments, &segmentation, title)));
   return status;
@@ -202,11 +220,16 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
   std::size_t lossless = 0;
   for (const PlotMethod& method : methods) lossless += method.displ_figure ? 0 : 1;
   const double top = 30, bottom = 380, left = 70, column = 60;
+  // Below `bottom`: the DisPL axis and the lossless columns' rotated labels.
+  const std::string height = "500";
   const double lossless_right = left + column * static_cast<double>(lossless);
   const double lossy_left = lossless_right + 40, lossy_right = lossy_left + 330;
   const double log_lo = std::floor(std::log10(lo) * 4) / 4;
   const double log_hi = std::max(log_lo + 0.5, std::ceil(std::log10(hi) * 4) / 4);
-  const double x_max = std::ceil(max_displ);
+  // DisPL ticks 1, 2 or 5 x 10^k cm apart, at most 10 of them: a lossy file
+  // far off on one map (hundreds of cm) must not draw a tick per cm.
+  const double x_step = TickStep(max_displ, 10);
+  const double x_max = std::ceil(max_displ / x_step) * x_step;
   auto py = [&](double r) {
     return bottom - (bottom - top) * (std::log10(r) - log_lo) / (log_hi - log_lo);
   };
@@ -218,11 +241,15 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
     }
     return lossy_left + (lossy_right - lossy_left) * p.displ / x_max;
   };
-  std::string svg =
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 980 440\" width=\"980\" "
-      "height=\"440\" font-family=\"sans-serif\" font-size=\"12\">\n"
-      "<title>Size ratio to PNG-9 vs DisPL_ave, per map and method</title>\n"
-      "<rect x=\"0\" y=\"0\" width=\"980\" height=\"440\" fill=\"white\"/>\n<g stroke=\"#ddd\">\n";
+  // Room right of the panels for the legend's longest line ("<method>:
+  // median 0.123", about 40 characters at 6.5 px).
+  const std::string width = Num(lossy_right + 300);
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + width + " " +
+                    height + "\" width=\"" + width + "\" height=\"" + height +
+                    "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+                    "<title>Size ratio to PNG-9 vs DisPL_ave, per map and method</title>\n"
+                    "<rect x=\"0\" y=\"0\" width=\"" +
+                    width + "\" height=\"" + height + "\" fill=\"white\"/>\n<g stroke=\"#ddd\">\n";
   for (double e = log_lo; e <= log_hi + 1e-9; e += 0.25) {
     const double r = std::pow(10.0, e);
     const std::string y = Num(py(r));
@@ -234,12 +261,13 @@ std::string SummaryPlotSvg(const std::vector<MapResult>& results) {
     svg += "<text x=\"" + Num(left - 6) + "\" y=\"" + Num(py(r) + 4) +
            "\" text-anchor=\"end\" stroke=\"none\" fill=\"#333\">" + label + "</text>\n";
   }
-  for (int d = 0; d <= static_cast<int>(x_max); ++d) {
+  const int x_ticks = static_cast<int>(std::lround(x_max / x_step));
+  for (int tick = 0; tick <= x_ticks; ++tick) {
+    const double d = tick * x_step;
     const double x = lossy_left + (lossy_right - lossy_left) * d / x_max;
     svg += "<line y1=\"" + Num(top) + "\" y2=\"" + Num(bottom) + "\" x1=\"" + Num(x) + "\" x2=\"" +
            Num(x) + "\"/>\n<text x=\"" + Num(x) + "\" y=\"" + Num(bottom + 16) +
-           "\" text-anchor=\"middle\" stroke=\"none\" fill=\"#333\">" + std::to_string(d) +
-           "</text>\n";
+           "\" text-anchor=\"middle\" stroke=\"none\" fill=\"#333\">" + TickLabel(d) + "</text>\n";
   }
   svg += "</g>\n";
   std::size_t column_index = 0;

@@ -18,9 +18,10 @@ namespace linemap::bench {
 std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segments,
                           const Segmentation* segmentation, const std::string& title);
 
-// Writes DIR/<map name with '/' -> '__'>.svg: the geometry stored in the
-// lossy .lmap when the codec is in the tree, else RM-Line's segments with
-// the segmentation's room borders and furniture outlines.
+// Writes DIR/<map name with '/' -> '__'>.svg: the layers of the default
+// .lmap 2.0 file (walls, room chains, furniture outlines), else (when they
+// could not be read) RM-Line's segments with the segmentation's room borders
+// and furniture outlines.
 Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapResult& result);
 
 // Size ratio to PNG-9 (log scale) against DisPL_ave (cm), one point per map

@@ -11,6 +11,11 @@ void Table::AddRow(std::vector<std::string> cells) {
   rows_.push_back(std::move(cells));
 }
 
+void Table::LeftAlign(std::size_t column) {
+  if (left_.size() <= column) left_.resize(column + 1, false);
+  left_[column] = true;
+}
+
 std::string Table::Text() const {
   std::vector<std::size_t> widths(headers_.size());
   for (std::size_t c = 0; c < headers_.size(); ++c) widths[c] = headers_[c].size();
@@ -22,7 +27,7 @@ std::string Table::Text() const {
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const std::string pad(widths[c] - cells[c].size(), ' ');
       if (c > 0) out += "  ";
-      out += c == 0 ? cells[c] + pad : pad + cells[c];
+      out += IsLeft(c) ? cells[c] + pad : pad + cells[c];
     }
     while (!out.empty() && out.back() == ' ') out.pop_back();
     return out + "\n";
@@ -47,7 +52,7 @@ std::string Table::Markdown() const {
   };
   std::string out = line(headers_);
   out += "|";
-  for (std::size_t c = 0; c < headers_.size(); ++c) out += c == 0 ? " --- |" : " ---: |";
+  for (std::size_t c = 0; c < headers_.size(); ++c) out += IsLeft(c) ? " --- |" : " ---: |";
   out += "\n";
   for (const auto& row : rows_) out += line(row);
   return out;

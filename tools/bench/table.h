@@ -16,11 +16,15 @@ class Table {
   // A row with as many cells as headers (missing cells are left empty).
   void AddRow(std::vector<std::string> cells);
 
+  // Columns of words rather than numbers (the first always is): aligned left
+  // in Text() and Markdown().
+  void LeftAlign(std::size_t column);
+
   const std::vector<std::string>& headers() const { return headers_; }
   const std::vector<std::vector<std::string>>& rows() const { return rows_; }
 
-  // Columns padded to their widest cell; the first column left-aligned,
-  // the others right-aligned (numbers).
+  // Columns padded to their widest cell; the first column and those given to
+  // LeftAlign() left-aligned, the others right-aligned (numbers).
   std::string Text() const;
   std::string Markdown() const;
   std::string Csv() const;
@@ -28,6 +32,11 @@ class Table {
  private:
   std::vector<std::string> headers_;
   std::vector<std::vector<std::string>> rows_;
+  std::vector<bool> left_;  // per column; empty = only the first
+
+  bool IsLeft(std::size_t column) const {
+    return column == 0 || (column < left_.size() && left_[column]);
+  }
 };
 
 // Number formatting for table cells: "n/a" for a missing value.

@@ -9,6 +9,7 @@
 #include "linemap/map_io.h"
 #include "tools/bench/anchors.h"
 #include "tools/bench/corpus.h"
+#include "tools/bench/goals.h"
 #include "tools/bench/machine.h"
 #include "tools/bench/progress.h"
 #include "tools/bench/report.h"
@@ -31,12 +32,17 @@ const CommandSpec kBenchSpec = {
     "(jbigkit-bin), WebP `cwebp` and `dwebp` (webp), JPEG XL `cjxl` and `djxl`\n"
     "(libjxl-tools) in PATH; they are run as subprocesses, never linked, and a\n"
     "missing one is named in the notes and its column left out. The anchors table\n"
-    "checks the lossless .lmap against each of them on maps of >= 100,000 cells.",
+    "checks the default .lmap 2.0 file (exact, walls + rooms + furniture) against\n"
+    "each of them and PNG-9, zstd -19, xz -9e on maps of >= 100,000 cells. The\n"
+    "goals tables end the output: each default file decoded and compared cell for\n"
+    "cell, size and layer cost at the median, how well the walls and furniture\n"
+    "hold the map's edge cells (and DisPL_ave against RM-Line's), and encode and\n"
+    "decode CPU time against libpng, each with PASS / FAIL.",
     {
         {"--md", "OUT.md", "also write the tables as Markdown"},
         {"--csv", "OUT.csv", "also write every figure of every map as CSV"},
         {"--svg-dir", "DIR",
-         "write per-map overlay SVGs (segments, room chains, furniture) and summary.svg"},
+         "write per-map overlay SVGs (the 2.0 file's walls, rooms, furniture) and summary.svg"},
         {"--repeats", "N", "timed runs per map up to 1 Mcell (default 5; 3 to 4 Mcells, 1 above)"},
         {"--scaling-max", "MCELLS",
          "largest map of the scaling table: 0 (skip), 1, 4, 16 or 64 (default 64)"},
@@ -200,6 +206,7 @@ int RunBench(const std::vector<std::string>& argv) {
   for (bench::NamedTable& table : bench::AnchorTables(results)) tables.push_back(std::move(table));
   tables.push_back(bench::LineMediansTable(results));
   if (!scaling.empty()) tables.push_back(bench::ScalingTable(scaling));
+  for (bench::NamedTable& table : bench::GoalTables(results)) tables.push_back(std::move(table));
   const std::string notes = NotesText(results, skipped);
   std::printf("%s%s", bench::TablesText(tables).c_str(), notes.c_str());
   Status written = WriteOutputs(*args, header, tables, notes, results);
