@@ -109,6 +109,9 @@ py::dict Segment(const Map& map, const py::object& pose) {
   const Grid grid = GridFromMap(map);
   SegmentationOptions options;
   options.robot = PoseArgument(grid, pose);
+  // As `linemap segment`: rooms split at doorways, or with a pose the
+  // paper's border of the robot's free component.
+  if (options.robot) options.method = SegmentationMethod::kPaperBorder;
   StatusOr<Segmentation> segmentation = InternalError("not segmented");
   {
     py::gil_scoped_release release;
