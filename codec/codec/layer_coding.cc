@@ -9,6 +9,7 @@
 
 #include "codec/codec/int_coding.h"
 #include "codec/codec/layer_order.h"
+#include "codec/codec/raster.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
 
@@ -18,15 +19,9 @@ namespace {
 // Axis directions of a wall step: +col, +row, -col, -row.
 constexpr int kAxisCol[4] = {1, 0, -1, 0};
 constexpr int kAxisRow[4] = {0, 1, 0, -1};
-// Chain directions (spec section 4.4's table), 0 = +col, counter-clockwise.
-constexpr int kChainCol[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-constexpr int kChainRow[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-
-int ChainDirection(CellIndex p, CellIndex q) {
-  for (int d = 0; d < 8; ++d) {
-    if (q.col - p.col == kChainCol[d] && q.row - p.row == kChainRow[d]) return d;
-  }
-  return -1;
+bool EightAdjacent(CellIndex p, CellIndex q) {
+  const int dc = std::abs(p.col - q.col), dr = std::abs(p.row - q.row);
+  return dc <= 1 && dr <= 1 && dc + dr > 0;
 }
 
 bool Inside(CellIndex p, int width, int height) {
@@ -49,20 +44,23 @@ std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc
   return std::move(out.mutable_bytes());
 }
 
-// ---- walls ----
+// ---- paths: walls and polygons ----
 
-struct WallModels {
-  UIntModel points;    // K - 2
-  UIntModel start[2];  // start - the previous wall's last point: dcol, drow
-  BitModel axis[3];      // by the previous step: first, axis, diagonal
+// A path of lattice points: its number of points (less `min_points`), its
+// start as an offset from the previous path's last point, then each step
+// (spec/format.md section 5.2).
+struct PathModels {
+  UIntModel points;
+  UIntModel start[2];     // dcol, drow
+  BitModel axis[3];       // by the previous step: first, axis, diagonal
   SymbolModel<2> dir[5];  // by the previous axis direction, 4 = none
   UIntModel axis_len[2];  // length - 1; first step, later steps
   UIntModel diag[2];      // dcol, drow of a diagonal step
 };
 
-void EncodeWall(RangeEncoder* enc, WallModels* m, const WallPolyline& wall, CellIndex* prev) {
-  const std::vector<CellIndex>& p = wall.points;
-  EncodeUInt(enc, &m->points, p.size() - 2);
+void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& p,
+                std::size_t min_points, CellIndex* prev) {
+  EncodeUInt(enc, &m->points, p.size() - min_points);
   EncodeSInt(enc, &m->start[0], p[0].col - prev->col);
   EncodeSInt(enc, &m->start[1], p[0].row - prev->row);
   *prev = p.back();
@@ -89,6 +87,60 @@ void EncodeWall(RangeEncoder* enc, WallModels* m, const WallPolyline& wall, Cell
   }
 }
 
+// Decodes one path; `points` counts its points against `max_points`.
+StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m, int width,
+                                            int height, std::size_t min_points,
+                                            std::uint64_t max_points, std::uint64_t* points,
+                                            CellIndex* prev) {
+  const Status corrupt = CorruptError("point out of the grid or malformed");
+  std::uint64_t k = 0;
+  std::int64_t dcol = 0, drow = 0;
+  if (!DecodeUInt(dec, &m->points, &k)) return corrupt;
+  *points += k + min_points;
+  if (k + min_points > max_points || *points > max_points) {
+    return ResourceExhaustedError("points exceed the limit");
+  }
+  if (!DecodeSInt(dec, &m->start[0], &dcol) || !DecodeSInt(dec, &m->start[1], &drow) ||
+      std::llabs(dcol) >= width || std::llabs(drow) >= height) {
+    return corrupt;
+  }
+  CellIndex p{prev->col + static_cast<int>(dcol), prev->row + static_cast<int>(drow)};
+  if (!Inside(p, width, height)) return corrupt;
+  std::vector<CellIndex> path = {p};
+  int kind = 0, last_dir = 4;
+  for (std::uint64_t i = 1; i < k + min_points; ++i) {
+    std::int64_t dc = 0, dr = 0;
+    if (dec->Decode(&m->axis[kind]) == 1) {
+      const unsigned symbol = DecodeSymbol<2>(dec, &m->dir[last_dir]);
+      const int dir =
+          last_dir == 4 ? static_cast<int>(symbol) : static_cast<int>((symbol + last_dir) & 3);
+      std::uint64_t len = 0;
+      if (!DecodeUInt(dec, &m->axis_len[kind == 0 ? 0 : 1], &len) ||
+          len >= static_cast<std::uint64_t>(std::max(width, height))) {
+        return corrupt;
+      }
+      dc = kAxisCol[dir] * static_cast<std::int64_t>(len + 1);
+      dr = kAxisRow[dir] * static_cast<std::int64_t>(len + 1);
+      last_dir = dir;
+      kind = 1;
+    } else {
+      if (!DecodeSInt(dec, &m->diag[0], &dc) || !DecodeSInt(dec, &m->diag[1], &dr) || dc == 0 ||
+          dr == 0 || std::llabs(dc) >= width || std::llabs(dr) >= height) {
+        return corrupt;
+      }
+      last_dir = 4;
+      kind = 2;
+    }
+    const std::int64_t c = p.col + dc;
+    const std::int64_t r = p.row + dr;
+    if (c < 0 || r < 0 || c >= width || r >= height) return corrupt;
+    p = {static_cast<int>(c), static_cast<int>(r)};
+    path.push_back(p);
+  }
+  *prev = p;
+  return path;
+}
+
 }  // namespace
 
 void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
@@ -106,9 +158,9 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
 
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
   RangeEncoder enc;
-  auto m = std::make_unique<WallModels>();
+  auto m = std::make_unique<PathModels>();
   CellIndex prev{0, 0};
-  for (const WallPolyline& wall : walls) EncodeWall(&enc, m.get(), wall, &prev);
+  for (const WallPolyline& wall : walls) EncodePath(&enc, m.get(), wall.points, 2, &prev);
   enc.Finish();
   return WithCount(walls.size(), enc);
 }
@@ -120,62 +172,24 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
   if (count > limits.max_segments) {
     return ResourceExhaustedError(std::to_string(count) + " walls exceed the segment limit");
   }
-  const std::uint8_t* data = body.data() + cursor.position();
   const std::size_t size = cursor.remaining();
-  RangeDecoder dec(data, size);
-  auto m = std::make_unique<WallModels>();
+  RangeDecoder dec(body.data() + cursor.position(), size);
+  auto m = std::make_unique<PathModels>();
   std::vector<WallPolyline> walls;
-  std::uint64_t segments = 0;
+  // Points, against the segment limit plus one point per wall (a wall of
+  // k + 1 segments has k + 2 points).
+  std::uint64_t points = 0;
+  const std::uint64_t max_points = limits.max_segments + count;
   CellIndex prev{0, 0};
-  const Status corrupt = CorruptError("wall out of the grid or malformed");
   for (std::uint64_t w = 0; w < count; ++w) {
-    std::uint64_t k = 0;
-    std::int64_t dcol = 0, drow = 0;
-    if (!DecodeUInt(&dec, &m->points, &k)) return corrupt;
-    segments += k + 1;
-    if (k + 1 > limits.max_segments || segments > limits.max_segments) {
-      return ResourceExhaustedError("wall segments exceed the segment limit");
+    StatusOr<std::vector<CellIndex>> path =
+        DecodePath(&dec, m.get(), width, height, 2, max_points, &points, &prev);
+    if (!path.ok()) {
+      return path.status().code() == StatusCode::kResourceExhausted
+                 ? ResourceExhaustedError("wall segments exceed the segment limit")
+                 : path.status();
     }
-    if (!DecodeSInt(&dec, &m->start[0], &dcol) || !DecodeSInt(&dec, &m->start[1], &drow) ||
-        std::llabs(dcol) >= width || std::llabs(drow) >= height) {
-      return corrupt;
-    }
-    CellIndex p{prev.col + static_cast<int>(dcol), prev.row + static_cast<int>(drow)};
-    if (!Inside(p, width, height)) return corrupt;
-    WallPolyline wall;
-    wall.points.push_back(p);
-    int kind = 0, last_dir = 4;
-    for (std::uint64_t i = 0; i <= k; ++i) {
-      std::int64_t dc = 0, dr = 0;
-      if (dec.Decode(&m->axis[kind]) == 1) {
-        const unsigned symbol = DecodeSymbol<2>(&dec, &m->dir[last_dir]);
-        const int dir = last_dir == 4 ? static_cast<int>(symbol)
-                                      : static_cast<int>((symbol + last_dir) & 3);
-        std::uint64_t len = 0;
-        if (!DecodeUInt(&dec, &m->axis_len[kind == 0 ? 0 : 1], &len) ||
-            len >= static_cast<std::uint64_t>(std::max(width, height))) {
-          return corrupt;
-        }
-        dc = kAxisCol[dir] * static_cast<std::int64_t>(len + 1);
-        dr = kAxisRow[dir] * static_cast<std::int64_t>(len + 1);
-        last_dir = dir;
-        kind = 1;
-      } else {
-        if (!DecodeSInt(&dec, &m->diag[0], &dc) || !DecodeSInt(&dec, &m->diag[1], &dr) ||
-            dc == 0 || dr == 0 || std::llabs(dc) >= width || std::llabs(dr) >= height) {
-          return corrupt;
-        }
-        last_dir = 4;
-        kind = 2;
-      }
-      const std::int64_t c = p.col + dc;
-      const std::int64_t r = p.row + dr;
-      if (c < 0 || r < 0 || c >= width || r >= height) return corrupt;
-      p = {static_cast<int>(c), static_cast<int>(r)};
-      wall.points.push_back(p);
-    }
-    prev = p;
-    walls.push_back(std::move(wall));
+    walls.push_back({std::move(*path)});
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "WALL"));
   return walls;
@@ -187,7 +201,7 @@ bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height)
   if (chain.empty()) return false;
   for (std::size_t i = 0; i < chain.size(); ++i) {
     if (!Inside(chain[i], width, height)) return false;
-    if (i + 1 < chain.size() && ChainDirection(chain[i], chain[i + 1]) < 0) return false;
+    if (i + 1 < chain.size() && !EightAdjacent(chain[i], chain[i + 1])) return false;
   }
   const int dc = std::abs(chain.back().col - chain.front().col);
   const int dr = std::abs(chain.back().row - chain.front().row);
@@ -196,82 +210,42 @@ bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height)
 
 namespace {
 
-struct ChainModels {
-  UIntModel length;    // L - 1
-  UIntModel start[2];  // start - the previous chain's start: dcol, drow
-  SymbolModel<3> first_dir;
-  SymbolModel<3> turn[8];  // by the previous turn
-};
-
-void EncodeChain(RangeEncoder* enc, ChainModels* m, const std::vector<CellIndex>& chain,
-                 CellIndex* prev_start) {
-  EncodeUInt(enc, &m->length, chain.size() - 1);
-  EncodeSInt(enc, &m->start[0], chain[0].col - prev_start->col);
-  EncodeSInt(enc, &m->start[1], chain[0].row - prev_start->row);
-  *prev_start = chain[0];
-  int prev_dir = -1, prev_turn = 0;
-  for (std::size_t i = 1; i < chain.size(); ++i) {
-    const int d = ChainDirection(chain[i - 1], chain[i]);
-    if (prev_dir < 0) {
-      EncodeSymbol<3>(enc, &m->first_dir, static_cast<unsigned>(d));
-    } else {
-      const int turn = (d - prev_dir) & 7;
-      EncodeSymbol<3>(enc, &m->turn[prev_turn], static_cast<unsigned>(turn));
-      prev_turn = turn;
-    }
-    prev_dir = d;
+// A closed polygon's vertices; the chain is expanded from them, its cells
+// counted against the chain limit before it is allocated.
+StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m, int width,
+                                               int height, const DecodeLimits& limits,
+                                               std::uint64_t* vertices, std::uint64_t* cells,
+                                               CellIndex* prev) {
+  StatusOr<std::vector<CellIndex>> polygon =
+      DecodePath(dec, m, width, height, 1, limits.max_chain_length, vertices, prev);
+  if (!polygon.ok()) {
+    return polygon.status().code() == StatusCode::kResourceExhausted
+               ? ResourceExhaustedError("polygon vertices exceed the chain limit")
+               : polygon.status();
   }
-}
-
-// Decodes one chain; `cells` counts chain cells against the chain limit.
-StatusOr<std::vector<CellIndex>> DecodeChain(RangeDecoder* dec, ChainModels* m, int width,
-                                             int height, const DecodeLimits& limits,
-                                             std::uint64_t* cells, CellIndex* prev_start) {
-  const Status corrupt = CorruptError("chain out of the grid, not closed, or malformed");
-  std::uint64_t len = 0;
-  std::int64_t dcol = 0, drow = 0;
-  if (!DecodeUInt(dec, &m->length, &len)) return corrupt;
-  *cells += len + 1;
-  if (len + 1 > limits.max_chain_length || *cells > limits.max_chain_length) {
+  // The chain has one cell per step of each edge (max(|dcol|, |drow|)), and
+  // one for a single vertex.
+  std::uint64_t length = polygon->size() == 1 ? 1 : 0;
+  for (std::size_t i = 0; i < polygon->size() && polygon->size() > 1; ++i) {
+    const CellIndex a = (*polygon)[i], b = (*polygon)[(i + 1) % polygon->size()];
+    length += static_cast<std::uint64_t>(std::max(std::abs(b.col - a.col), std::abs(b.row - a.row)));
+  }
+  *cells += length;
+  if (length > limits.max_chain_length || *cells > limits.max_chain_length) {
     return ResourceExhaustedError("chain cells exceed the chain limit");
   }
-  if (!DecodeSInt(dec, &m->start[0], &dcol) || !DecodeSInt(dec, &m->start[1], &drow) ||
-      std::llabs(dcol) >= width || std::llabs(drow) >= height) {
-    return corrupt;
-  }
-  CellIndex p{prev_start->col + static_cast<int>(dcol), prev_start->row + static_cast<int>(drow)};
-  if (!Inside(p, width, height)) return corrupt;
-  *prev_start = p;
-  std::vector<CellIndex> chain;
-  chain.push_back(p);
-  int prev_dir = -1, prev_turn = 0;
-  for (std::uint64_t i = 0; i < len; ++i) {
-    int d = 0;
-    if (prev_dir < 0) {
-      d = static_cast<int>(DecodeSymbol<3>(dec, &m->first_dir));
-    } else {
-      const int turn = static_cast<int>(DecodeSymbol<3>(dec, &m->turn[prev_turn]));
-      d = (prev_dir + turn) & 7;
-      prev_turn = turn;
-    }
-    prev_dir = d;
-    p = {p.col + kChainCol[d], p.row + kChainRow[d]};
-    if (!Inside(p, width, height)) return corrupt;
-    chain.push_back(p);
-  }
-  if (std::abs(p.col - chain[0].col) > 1 || std::abs(p.row - chain[0].row) > 1) return corrupt;
-  return chain;
+  return polygon;
 }
 
 struct RoomModels {
   UIntModel id_gap;  // id - previous id - 1 (previous -1 before the first)
   SymbolModel<2> kind;
-  ChainModels chain;
+  PathModels polygon;
 };
 
 struct FurnitureModels {
   UIntModel room;  // room id + 1 (0: none)
-  ChainModels chain;
+  PathModels polygon;
 };
 
 }  // namespace
@@ -285,7 +259,7 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
     EncodeUInt(&enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
     prev_id = room.id;
     EncodeSymbol<2>(&enc, &m->kind, static_cast<unsigned>(room.kind));
-    EncodeChain(&enc, &m->chain, room.chain, &prev_start);
+    EncodePath(&enc, &m->polygon, room.polygon, 1, &prev_start);
   }
   enc.Finish();
   return WithCount(rooms.size(), enc);
@@ -302,7 +276,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
   RangeDecoder dec(body.data() + cursor.position(), size);
   auto m = std::make_unique<RoomModels>();
   std::vector<RoomOutline> rooms;
-  std::uint64_t cells = 0;
+  std::uint64_t cells = 0, vertices = 0;
   std::int64_t prev_id = -1;
   CellIndex prev_start{0, 0};
   for (std::uint64_t i = 0; i < count; ++i) {
@@ -317,9 +291,9 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
     const unsigned kind = DecodeSymbol<2>(&dec, &m->kind);
     if (kind > 2) return CorruptError("room kind 3 is reserved");
     room.kind = static_cast<RoomKind>(kind);
-    LINEMAP_ASSIGN_OR_RETURN(room.chain,
-                             DecodeChain(&dec, &m->chain, width, height, limits, &cells,
-                                         &prev_start));
+    LINEMAP_ASSIGN_OR_RETURN(room.polygon, DecodePolygon(&dec, &m->polygon, width, height,
+                                                         limits, &vertices, &cells, &prev_start));
+    room.chain = ChainOfPolygon(room.polygon);
     rooms.push_back(std::move(room));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "ROOM"));
@@ -332,7 +306,7 @@ std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& fu
   CellIndex prev_start{0, 0};
   for (const FurnitureObject& object : furniture) {
     EncodeUInt(&enc, &m->room, static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1));
-    EncodeChain(&enc, &m->chain, object.outline, &prev_start);
+    EncodePath(&enc, &m->polygon, object.polygon, 1, &prev_start);
   }
   enc.Finish();
   return WithCount(furniture.size(), enc);
@@ -350,7 +324,7 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
   RangeDecoder dec(body.data() + cursor.position(), size);
   auto m = std::make_unique<FurnitureModels>();
   std::vector<FurnitureObject> furniture;
-  std::uint64_t cells = 0;
+  std::uint64_t cells = 0, vertices = 0;
   CellIndex prev_start{0, 0};
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t room = 0;
@@ -360,13 +334,30 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
     FurnitureObject object;
     object.id = static_cast<std::uint32_t>(i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
-    LINEMAP_ASSIGN_OR_RETURN(object.outline,
-                             DecodeChain(&dec, &m->chain, width, height, limits, &cells,
-                                         &prev_start));
+    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(&dec, &m->polygon, width, height,
+                                                           limits, &vertices, &cells, &prev_start));
+    object.outline = ChainOfPolygon(object.polygon);
     furniture.push_back(std::move(object));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "FURN"));
   return furniture;
+}
+
+std::vector<CellIndex> ChainOfPolygon(const std::vector<CellIndex>& polygon) {
+  std::vector<CellIndex> chain;
+  if (polygon.size() == 1) return polygon;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const CellIndex a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    if (a == b) continue;
+    bool first = true;
+    CellIndex last{};
+    RasterizeSegment(a, b, [&](int c, int r) {
+      if (!first) chain.push_back(last);
+      last = {c, r};
+      first = false;
+    });
+  }
+  return chain;
 }
 
 }  // namespace linemap

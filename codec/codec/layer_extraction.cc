@@ -80,6 +80,97 @@ StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOpti
   return JoinSegments(segments);
 }
 
+double PointSegmentDistance(CellIndex p, CellIndex a, CellIndex b) {
+  const double dx = b.col - a.col, dy = b.row - a.row;
+  const double px = p.col - a.col, py = p.row - a.row;
+  const double len2 = dx * dx + dy * dy;
+  const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(px - t * dx, py - t * dy);
+}
+
+// Room and furniture borders are stored as polygons (spec/format.md 5.3):
+// a room's traced border follows every cell step of its walls, and coded
+// step by step it costs more than the cells it would spare the tile coder;
+// its Douglas-Peucker polygon (vertices on the chain, every chain cell
+// within kPolygonTolerance of it) keeps the border within about a cell at
+// a few vertices per wall.
+constexpr double kPolygonTolerance = 1.0;  // cells
+
+std::vector<CellIndex> SimplifyClosedChain(const std::vector<CellIndex>& chain,
+                                           double tolerance = kPolygonTolerance) {
+  const std::size_t n = chain.size();
+  if (n <= 3) return chain;
+  std::size_t far = 0;
+  double far_d = -1;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double d = std::hypot(chain[i].col - chain[0].col, chain[i].row - chain[0].row);
+    if (d > far_d) {
+      far_d = d;
+      far = i;
+    }
+  }
+  std::vector<bool> keep(n, false);
+  keep[0] = keep[far] = true;
+  // Spans (a, b) of chain indices, b == n meaning index 0 again.
+  std::vector<std::pair<std::size_t, std::size_t>> spans = {{0, far}, {far, n}};
+  while (!spans.empty()) {
+    const auto [a, b] = spans.back();
+    spans.pop_back();
+    std::size_t worst = 0;
+    double worst_d = tolerance;
+    for (std::size_t i = a + 1; i < b; ++i) {
+      const double d = PointSegmentDistance(chain[i], chain[a], chain[b % n]);
+      if (d > worst_d) {
+        worst_d = d;
+        worst = i;
+      }
+    }
+    if (worst == 0) continue;
+    keep[worst] = true;
+    spans.push_back({a, worst});
+    spans.push_back({worst, b});
+  }
+  std::vector<CellIndex> polygon;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (keep[i]) polygon.push_back(chain[i]);
+  }
+  return polygon;
+}
+
+// True when the fill of `chain` (FillChain, spec 8.2) holds every cell.
+bool FillHolds(const std::vector<CellIndex>& chain, const std::vector<CellIndex>& cells) {
+  BoundingBox box{chain[0].col, chain[0].row, chain[0].col, chain[0].row};
+  for (const CellIndex& c : chain) {
+    box.min_col = std::min(box.min_col, c.col);
+    box.max_col = std::max(box.max_col, c.col);
+    box.min_row = std::min(box.min_row, c.row);
+    box.max_row = std::max(box.max_row, c.row);
+  }
+  const int w = box.max_col - box.min_col + 1;
+  std::vector<std::uint8_t> in(static_cast<std::size_t>(w) * (box.max_row - box.min_row + 1), 0);
+  FillChain(chain, [&](int c, int r) {
+    in[static_cast<std::size_t>(r - box.min_row) * w + (c - box.min_col)] = 1;
+  });
+  for (const CellIndex& c : cells) {
+    if (c.col < box.min_col || c.col > box.max_col || c.row < box.min_row || c.row > box.max_row ||
+        !in[static_cast<std::size_t>(c.row - box.min_row) * w + (c.col - box.min_col)]) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// A furniture outline's polygon: the simplest (tolerance 1, then 1/2, then
+// every cell) whose outline still encloses all the object's cells, so a
+// thin object (a shelf two cells deep) keeps its area.
+std::vector<CellIndex> FurniturePolygon(const FurnitureBlob& blob) {
+  for (const double tolerance : {kPolygonTolerance, 0.5}) {
+    std::vector<CellIndex> polygon = SimplifyClosedChain(blob.outline, tolerance);
+    if (FillHolds(ChainOfPolygon(polygon), blob.cells)) return polygon;
+  }
+  return blob.outline;
+}
+
 // Rooms and furniture from SegmentMap(); chains the file cannot store (an
 // open or broken chain) are left out rather than failing the save.
 Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
@@ -90,12 +181,30 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
   std::uint32_t id = 0;
   for (RoomBorder& room : seg.rooms) {
     if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;
-    layers->rooms.push_back({id++, RoomKind::kUnspecified, std::move(room.chain)});
+    std::vector<CellIndex> polygon = SimplifyClosedChain(room.chain);
+    std::vector<CellIndex> chain = ChainOfPolygon(polygon);
+    layers->rooms.push_back({static_cast<std::uint32_t>(room.id), room.kind, std::move(polygon),
+                             std::move(chain)});
   }
   for (FurnitureBlob& blob : seg.blobs) {
     if (!IsStorableChain(blob.outline, grid.width(), grid.height())) continue;
-    layers->furniture.push_back(
-        {static_cast<std::uint32_t>(layers->furniture.size()), -1, std::move(blob.outline)});
+    std::vector<CellIndex> polygon = FurniturePolygon(blob);
+    std::vector<CellIndex> outline = ChainOfPolygon(polygon);
+    // Room ids start at 1; 0 is no room.
+    layers->furniture.push_back({static_cast<std::uint32_t>(layers->furniture.size()),
+                                 blob.room > 0 ? blob.room : -1, std::move(polygon),
+                                 std::move(outline)});
+  }
+  // The file lists rooms by increasing id (the paper's method numbers none).
+  std::stable_sort(layers->rooms.begin(), layers->rooms.end(),
+                   [](const RoomOutline& a, const RoomOutline& b) { return a.id < b.id; });
+  for (std::size_t i = 1; i < layers->rooms.size(); ++i) {
+    if (layers->rooms[i].id <= layers->rooms[i - 1].id) {
+      for (std::size_t k = 0; k < layers->rooms.size(); ++k) {
+        layers->rooms[k].id = static_cast<std::uint32_t>(k + 1);
+      }
+      break;
+    }
   }
   OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();

@@ -17,7 +17,8 @@ constexpr int kMaxRings = 48;
 struct Candidate {
   CellIndex p;
   int item;
-  bool is_last;  // the item's last point (a reversal makes it the start)
+  bool is_last;  // walls: the item's last point (a reversal makes it the start)
+  int vertex;    // polygons: the vertex index (a rotation makes it the start)
 };
 
 class NearestIndex {
@@ -83,7 +84,8 @@ class NearestIndex {
   bool Before(std::size_t a, std::size_t b) const {
     const Candidate& x = points_[a];
     const Candidate& y = points_[b];
-    return x.item != y.item ? x.item < y.item : !x.is_last && y.is_last;
+    if (x.item != y.item) return x.item < y.item;
+    return x.is_last != y.is_last ? !x.is_last : x.vertex < y.vertex;
   }
   std::vector<Candidate> points_;
   std::vector<std::size_t> order_;  // point indices grouped by bucket
@@ -97,8 +99,8 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls) {
   std::vector<Candidate> points;
   for (std::size_t i = 0; i < walls->size(); ++i) {
     const std::vector<CellIndex>& p = (*walls)[i].points;
-    points.push_back({p.front(), static_cast<int>(i), false});
-    points.push_back({p.back(), static_cast<int>(i), true});
+    points.push_back({p.front(), static_cast<int>(i), false, 0});
+    points.push_back({p.back(), static_cast<int>(i), true, 0});
   }
   const NearestIndex index(std::move(points));
   std::vector<bool> taken(walls->size(), false);
@@ -119,7 +121,10 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls) {
 void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
   std::vector<Candidate> points;
   for (std::size_t i = 0; i < furniture->size(); ++i) {
-    points.push_back({(*furniture)[i].outline.front(), static_cast<int>(i), false});
+    const std::vector<CellIndex>& polygon = (*furniture)[i].polygon;
+    for (std::size_t v = 0; v < polygon.size(); ++v) {
+      points.push_back({polygon[v], static_cast<int>(i), false, static_cast<int>(v)});
+    }
   }
   const NearestIndex index(std::move(points));
   std::vector<bool> taken(furniture->size(), false);
@@ -130,8 +135,11 @@ void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
     const Candidate& c = index.at(k);
     taken[c.item] = true;
     FurnitureObject object = std::move((*furniture)[c.item]);
+    // Start the polygon at the nearest vertex; it ends next to it.
+    std::rotate(object.polygon.begin(), object.polygon.begin() + c.vertex, object.polygon.end());
+    object.outline = ChainOfPolygon(object.polygon);
     object.id = static_cast<std::uint32_t>(ordered.size());
-    at = object.outline.front();
+    at = object.polygon.back();
     ordered.push_back(std::move(object));
   }
   *furniture = std::move(ordered);

@@ -19,9 +19,9 @@ namespace linemap {
 // deterministic.
 void OrderWallsForCoding(std::vector<WallPolyline>* walls);
 
-// Reorders the objects from (0, 0) on by the nearest outline start to the
-// previous outline's start (outlines are closed, so they end where they
-// start); ids follow the new order.
+// Reorders the objects from (0, 0) on: next the object with the polygon
+// vertex nearest the previous polygon's last vertex, its polygon rotated to
+// start there (its outline recomputed); ids follow the new order.
 void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture);
 
 }  // namespace linemap

@@ -61,11 +61,13 @@ StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
   v.meta = contents.grid.meta;
   for (const LatticeSegment& s : contents.segments) v.walls.push_back({{s.a, s.b}});
   for (std::size_t i = 0; i < contents.room_chains.size(); ++i) {
+    // A 1.0 chain is its own polygon: every cell a vertex.
     v.rooms.push_back({static_cast<std::uint32_t>(i), RoomKind::kUnspecified,
-                       contents.room_chains[i]});
+                       contents.room_chains[i], contents.room_chains[i]});
   }
   for (std::size_t i = 0; i < contents.blob_outlines.size(); ++i) {
-    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i]});
+    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i],
+                           contents.blob_outlines[i]});
   }
   return v;
 }

@@ -43,17 +43,37 @@ std::vector<WallPolyline> RandomWalls(std::mt19937* rng, int count) {
   return walls;
 }
 
-// A closed 8-connected chain: the border of a random rectangle, walked
-// counter-clockwise.
-std::vector<CellIndex> RectangleChain(std::mt19937* rng) {
+// A random closed polygon: a rectangle with one corner cut diagonally, or
+// (sometimes) a single vertex.
+std::vector<CellIndex> RandomPolygon(std::mt19937* rng) {
   const int c0 = static_cast<int>((*rng)() % (kW - 20)), r0 = static_cast<int>((*rng)() % (kH - 20));
-  const int c1 = c0 + 1 + static_cast<int>((*rng)() % 18), r1 = r0 + 1 + static_cast<int>((*rng)() % 18);
-  std::vector<CellIndex> chain;
-  for (int c = c0; c < c1; ++c) chain.push_back({c, r0});
-  for (int r = r0; r < r1; ++r) chain.push_back({c1, r});
-  for (int c = c1; c > c0; --c) chain.push_back({c, r1});
-  for (int r = r1; r > r0; --r) chain.push_back({c0, r});
-  return chain;
+  if ((*rng)() % 8 == 0) return {{c0, r0}};
+  const int c1 = c0 + 2 + static_cast<int>((*rng)() % 17), r1 = r0 + 2 + static_cast<int>((*rng)() % 17);
+  return {{c0, r0}, {c1, r0}, {c1, r1 - 1}, {c1 - 1, r1}, {c0, r1}};
+}
+
+RoomOutline Room(std::uint32_t id, RoomKind kind, std::vector<CellIndex> polygon) {
+  std::vector<CellIndex> chain = ChainOfPolygon(polygon);
+  return {id, kind, std::move(polygon), std::move(chain)};
+}
+
+FurnitureObject Object(std::uint32_t id, std::int32_t room, std::vector<CellIndex> polygon) {
+  std::vector<CellIndex> outline = ChainOfPolygon(polygon);
+  return {id, room, std::move(polygon), std::move(outline)};
+}
+
+TEST(LayerCodingTest, ChainOfPolygonIsTheClosedChainOfItsEdges) {
+  // A 3 x 2 rectangle's corners: its ten border cells, counter-clockwise.
+  const std::vector<CellIndex> chain = ChainOfPolygon({{0, 0}, {3, 0}, {3, 2}, {0, 2}});
+  const std::vector<CellIndex> expected = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1},
+                                           {3, 2}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  EXPECT_EQ(chain, expected);
+  EXPECT_EQ(ChainOfPolygon({{5, 5}}), (std::vector<CellIndex>{{5, 5}}));
+  // A diagonal edge steps diagonally.
+  EXPECT_EQ(ChainOfPolygon({{0, 0}, {2, 2}}),
+            (std::vector<CellIndex>{{0, 0}, {1, 1}, {2, 2}, {1, 1}}));
+  std::mt19937 rng(3);
+  for (int i = 0; i < 100; ++i) EXPECT_TRUE(IsStorableChain(ChainOfPolygon(RandomPolygon(&rng)), kW, kH));
 }
 
 TEST(LayerCodingTest, WallsRoundTrip) {
@@ -109,11 +129,11 @@ TEST(LayerCodingTest, RoomsAndFurnitureRoundTrip) {
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
   for (int i = 0; i < 30; ++i) {
-    rooms.push_back({static_cast<std::uint32_t>(i * 3 + (i % 2)),
-                     static_cast<RoomKind>(i % 3), RectangleChain(&rng)});
-    furniture.push_back({static_cast<std::uint32_t>(i), i % 4 == 0 ? -1 : i, RectangleChain(&rng)});
+    rooms.push_back(Room(static_cast<std::uint32_t>(i * 3 + (i % 2)),
+                         static_cast<RoomKind>(i % 3), RandomPolygon(&rng)));
+    furniture.push_back(Object(static_cast<std::uint32_t>(i), i % 4 == 0 ? -1 : i, RandomPolygon(&rng)));
   }
-  furniture.push_back({30, 5, {{4, 4}}});  // a one-cell object
+  furniture.push_back(Object(30, 5, {{4, 4}}));  // a one-cell object
   auto r = DecodeRooms(EncodeRooms(rooms), kW, kH, DecodeLimits{});
   ASSERT_TRUE(r.ok()) << r.status().ToString();
   EXPECT_EQ(*r, rooms);
@@ -129,7 +149,7 @@ TEST(LayerCodingTest, LayersOutsideASmallerGridAreCorrupt) {
   auto w = DecodeWalls(EncodeWalls(walls), 10, 10, DecodeLimits{});
   ASSERT_FALSE(w.ok());
   EXPECT_EQ(w.status().code(), StatusCode::kCorrupt);
-  std::vector<RoomOutline> rooms = {{0, RoomKind::kRoom, RectangleChain(&rng)}};
+  std::vector<RoomOutline> rooms = {Room(0, RoomKind::kRoom, {{2, 2}, {40, 2}, {40, 30}})};
   auto r = DecodeRooms(EncodeRooms(rooms), 10, 10, DecodeLimits{});
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), StatusCode::kCorrupt);
@@ -146,7 +166,8 @@ TEST(LayerCodingTest, LimitsAreResourceExhausted) {
   EXPECT_EQ(w.status().code(), StatusCode::kResourceExhausted);
   limits = DecodeLimits{};
   limits.max_chain_length = 10;
-  auto r = DecodeRooms(EncodeRooms({{0, RoomKind::kRoom, RectangleChain(&rng)}}), kW, kH, limits);
+  auto r = DecodeRooms(EncodeRooms({Room(0, RoomKind::kRoom, {{0, 0}, {20, 0}, {20, 20}})}), kW,
+                       kH, limits);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), StatusCode::kResourceExhausted);
 }
@@ -156,8 +177,8 @@ TEST(LayerCodingTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
   std::vector<WallPolyline> walls = RandomWalls(&rng, 30);
   CanonicalizeWalls(&walls);
   const std::vector<std::uint8_t> wall_body = EncodeWalls(walls);
-  std::vector<RoomOutline> rooms = {{0, RoomKind::kRoom, RectangleChain(&rng)},
-                                    {4, RoomKind::kCorridor, RectangleChain(&rng)}};
+  std::vector<RoomOutline> rooms = {Room(0, RoomKind::kRoom, RandomPolygon(&rng)),
+                                    Room(4, RoomKind::kCorridor, RandomPolygon(&rng))};
   const std::vector<std::uint8_t> room_body = EncodeRooms(rooms);
   for (int trial = 0; trial < 2000; ++trial) {
     std::vector<std::uint8_t> w = wall_body, r = room_body;
