@@ -292,9 +292,10 @@ std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segmen
   return walls;
 }
 
-StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options) {
+namespace {
+
+StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options) {
   VectorLayers layers;
-  if (grid.empty()) return layers;
   auto walls_task =
       StartTask(options.max_threads != 1, [&] { return WallLayer(grid, options); });
   const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
@@ -303,6 +304,66 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
   if (!walls.ok()) return walls.status();
   layers.walls = std::move(*walls);
   return layers;
+}
+
+void Shift(std::vector<CellIndex>* points, int dc, int dr) {
+  for (CellIndex& p : *points) p = {p.col + dc, p.row + dr};
+}
+
+// The block's layers moved into map cells and appended to `all`, room ids
+// following the rooms already there.
+void AppendBlockLayers(VectorLayers block, int x0, int y0, VectorLayers* all) {
+  std::uint32_t first_id = all->rooms.empty() ? 1 : all->rooms.back().id + 1;
+  std::uint32_t base = first_id;
+  for (RoomOutline& room : block.rooms) {
+    Shift(&room.polygon, x0, y0);
+    Shift(&room.chain, x0, y0);
+    room.id += base;
+    first_id = room.id + 1;
+    all->rooms.push_back(std::move(room));
+  }
+  for (FurnitureObject& object : block.furniture) {
+    Shift(&object.polygon, x0, y0);
+    Shift(&object.outline, x0, y0);
+    if (object.room_id >= 0) object.room_id += static_cast<std::int32_t>(base);
+    all->furniture.push_back(std::move(object));
+  }
+  for (WallPolyline& wall : block.walls) {
+    Shift(&wall.points, x0, y0);
+    all->walls.push_back(std::move(wall));
+  }
+}
+
+}  // namespace
+
+StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options) {
+  if (grid.empty()) return VectorLayers{};
+  if (grid.width() <= kLayerBlockCells && grid.height() <= kLayerBlockCells) {
+    return ExtractWholeMapLayers(grid, options);
+  }
+  // A map larger than a block: the line extractor and the segmentation need
+  // tens of bytes per cell, so they run block by block, and walls, rooms and
+  // furniture end at the block borders.
+  EncodeOptions block_options = options;
+  block_options.robot_pose.reset();  // it names one block's free space only
+  VectorLayers all;
+  for (int y0 = 0; y0 < grid.height(); y0 += kLayerBlockCells) {
+    for (int x0 = 0; x0 < grid.width(); x0 += kLayerBlockCells) {
+      const int w = std::min(kLayerBlockCells, grid.width() - x0);
+      const int h = std::min(kLayerBlockCells, grid.height() - y0);
+      Grid block(w, h);
+      block.meta = grid.meta;
+      for (int r = 0; r < h; ++r) {
+        std::copy_n(grid.cells().begin() + static_cast<std::ptrdiff_t>(grid.Index(x0, y0 + r)), w,
+                    block.mutable_cells().begin() + static_cast<std::ptrdiff_t>(r) * w);
+      }
+      LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractWholeMapLayers(block, block_options));
+      AppendBlockLayers(std::move(layers), x0, y0, &all);
+    }
+  }
+  OrderWallsForCoding(&all.walls);
+  OrderFurnitureForCoding(&all.furniture);
+  return all;
 }
 
 std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions& options) {

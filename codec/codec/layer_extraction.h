@@ -19,8 +19,15 @@ struct VectorLayers {
   std::vector<FurnitureObject> furniture;
 };
 
+// Maps wider or taller than this are given their layers block by block
+// (cells): the extractor and the segmentation need tens of bytes per cell,
+// a 4096 x 4096 block some 300 MB; a 20,768 x 13,612 map at once, 6.8 GB.
+inline constexpr int kLayerBlockCells = 4096;
+
 // Walls, rooms and furniture of `grid`; the line extraction and the
-// segmentation run on two threads when options.max_threads >= 2.
+// segmentation run on two threads unless options.max_threads is 1. On maps
+// larger than a block the layers are extracted block by block and end at
+// the block borders (a room across a border is two rooms).
 StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options);
 
 // The extractor's lines for the grid (StraightWalls(): one segment per

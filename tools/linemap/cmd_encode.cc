@@ -57,6 +57,9 @@ const CommandSpec kEncodeSpec = {
         {"--simplify-free", "",
          "with --lossy: also fill small unknown holes and smooth the free/unknown boundary "
          "(smaller files; plans through narrow passages may change)"},
+        {"--no-png-ratio", "",
+         "skip making the PNG-9 the ratio is printed against (on a huge map it costs as "
+         "much time and memory as the save)"},
         {"--no-sync", "",
          "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
          "power cut right after may lose it"},
@@ -185,11 +188,16 @@ int RunEncode(const std::vector<std::string>& args) {
     if (!pose_ok.ok()) return ReportError("encode", pose_ok);
   }
   // The PNG the ratio is reported against is made beside the encoding (it
-  // is only a report; the .lmap does not depend on it).
-  const auto make_png = [&grid] { return SmallestTrinaryPngBytes(*grid); };
+  // is only a report; the .lmap does not depend on it). On a robot saving a
+  // huge map it doubles the work and the memory: --no-png-ratio skips it.
+  const bool with_png = !parsed->Has("--no-png-ratio");
+  const auto make_png = [&grid, with_png]() -> StatusOr<std::size_t> {
+    if (!with_png) return std::size_t{0};
+    return SmallestTrinaryPngBytes(*grid);
+  };
   std::future<StatusOr<std::size_t>> png_task;
   try {
-    png_task = std::async(std::launch::async, make_png);
+    png_task = std::async(with_png ? std::launch::async : std::launch::deferred, make_png);
   } catch (const std::system_error&) {
     png_task = std::async(std::launch::deferred, make_png);
   }
@@ -205,11 +213,9 @@ int RunEncode(const std::vector<std::string>& args) {
   const double ratio = *png > 0 ? static_cast<double>(bytes->size()) / *png : 0.0;
   if (parsed->Has("--json")) {
     JsonObject json;
-    json.Add("cells", std::uint64_t{grid->size()})
-        .Add("bytes", std::uint64_t{bytes->size()})
-        .Add("png_bytes", std::uint64_t{*png})
-        .Add("ratio_to_png", ratio)
-        .Add("exact", !options->format_v1)
+    json.Add("cells", std::uint64_t{grid->size()}).Add("bytes", std::uint64_t{bytes->size()});
+    if (with_png) json.Add("png_bytes", std::uint64_t{*png}).Add("ratio_to_png", ratio);
+    json.Add("exact", !options->format_v1)
         .Add("vector_layers", !options->format_v1 && options->vector_layers)
         .Add("seconds", seconds);
     std::printf("%s\n", json.str().c_str());
@@ -220,8 +226,10 @@ int RunEncode(const std::vector<std::string>& args) {
               options->format_v1 ? "version 1.0, lossy"
               : options->vector_layers ? "exact, with walls, rooms and furniture"
                                        : "exact, cells only");
-  std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
-              ratio > 0 ? 1.0 / ratio : 0.0);
+  if (with_png) {
+    std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
+                ratio > 0 ? 1.0 / ratio : 0.0);
+  }
   std::printf("time:    %.3f s\n", seconds);
   return kExitOk;
 }
