@@ -1,5 +1,7 @@
-// Fuzz target: the .lmap decoder with its default limits. Any input must give
-// a grid or an error, never a crash, a hang or a huge allocation.
+// Fuzz target: the .lmap decoder (versions 1.0 and 2.0). Any input must give
+// a grid or an error, never a crash, a hang or a huge allocation. The cell
+// limit is lowered from the default 2^30 so that a header claiming a huge
+// map is refused instead of allocating a gigabyte per execution.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -8,6 +10,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::vector<std::uint8_t> bytes(data, data + size);
-  (void)linemap::DecodeLmapContents(bytes);
+  linemap::DecodeLimits limits;
+  limits.max_cells = std::uint64_t{1} << 24;
+  (void)linemap::DecodeLmapContents(bytes, limits);
   return 0;
 }
