@@ -1,4 +1,4 @@
-// Files written by format version 1.0 decode to the same grids forever:
+// Files written by format versions 1.0 and 2.0 decode to the same grids forever:
 // the lossless fixtures to their source maps, the lossy ones to the grids
 // recorded when they were written (CRC-32 of the cell values 0/1/2 in
 // grid-row order, computed from the decoded PGM by a separate script).
@@ -37,6 +37,27 @@ TEST(FixturesTest, LosslessFixturesDecodeToTheirMaps) {
     auto original = LoadRosMap(testing::BundledMapsDir() + map);
     ASSERT_TRUE(original.ok());
     EXPECT_EQ(*decoded, *original) << file;
+  }
+}
+
+// Version 2.0 files decode to their maps (exact), with or without layers,
+// in any tile size, and their layers read without the cells.
+TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"lse_arena_v2.lmap", "/navtut/lse_arena.yaml"},
+      {"depot_v2.lmap", "/nav2/depot.yaml"},
+      {"depot_v2_raster_only.lmap", "/nav2/depot.yaml"},
+      {"depot_v2_tiles_64.lmap", "/nav2/depot.yaml"},
+  };
+  for (const auto& [file, map] : cases) {
+    auto contents = LoadLmapContents(Fixture(file));
+    ASSERT_TRUE(contents.ok()) << file << ": " << contents.status().ToString();
+    EXPECT_EQ(contents->major, 2) << file;
+    auto original = LoadRosMap(testing::BundledMapsDir() + map);
+    ASSERT_TRUE(original.ok());
+    EXPECT_EQ(contents->grid, *original) << file;
+    const bool layers = std::string(file).find("raster_only") == std::string::npos;
+    EXPECT_EQ(!contents->walls.empty(), layers) << file;
   }
 }
 

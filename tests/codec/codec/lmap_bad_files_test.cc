@@ -44,6 +44,13 @@ const BadFile kBadFiles[] = {
     {"unknown_payload_coder.lmap", "chunk FREE: unknown payload coder 7"},
     {"unsupported_version.lmap", "format version 3"},
     {"zero_resolution.lmap", "chunk LMHD: resolution is not a positive number"},
+    // Version 2.0 (written by tests/data/make_v2_test_files.sh).
+    {"v2_segs_chunk_in_version_2.lmap", "chunk SEGS: unknown critical chunk"},
+    {"v2_tile_lengths_do_not_add_up.lmap", "chunk CELL: tile lengths do not add up"},
+    {"v2_tile_size_below_16.lmap", "chunk CELL: tile size 8 outside 16..65536"},
+    {"v2_wall_after_cell.lmap", "chunk WALL: chunk out of order or repeated"},
+    {"v2_wall_count_over_limit.lmap", "chunk WALL: 1099511627776 walls exceed the segment limit"},
+    {"v2_wall_stream_truncated.lmap", "chunk WALL: "},
 };
 
 std::string BadDir() { return testing::SourceDir() + "/tests/data/bad/lmap_decode/"; }

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Writes the version 2.0 fixtures (tests/data/lmap/*_v2*.lmap) with the
+# linemap built in BUILD (default build/), and the 2.0 must-fail files
+# (tests/data/bad/lmap_decode/v2_*.lmap) by editing one chunk of a valid
+# 2.0 file and recomputing its CRC. Run from the repository root; the tests
+# check the fixtures against the source maps, not against this script.
+set -euo pipefail
+BUILD=${1:-build}
+L=$BUILD/linemap
+M=tests/data/maps
+$L encode $M/navtut/lse_arena.yaml -o tests/data/lmap/lse_arena_v2.lmap --no-sync >/dev/null
+$L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2.lmap --no-sync >/dev/null
+$L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_raster_only.lmap --raster-only \
+  --no-sync >/dev/null
+$L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_tiles_64.lmap --tile-size 64 \
+  --no-sync >/dev/null
+for f in lse_arena_v2 depot_v2; do
+  mkdir -p tests/fuzz/corpus/lmap_vectors
+  cp tests/data/lmap/$f.lmap tests/fuzz/corpus/lmap_decode/$f.lmap
+  cp tests/data/lmap/$f.lmap tests/fuzz/corpus/lmap_vectors/$f.lmap
+done
+python3 - <<'PY'
+import struct, zlib
+
+def varint(v):
+    out = bytearray()
+    while True:
+        b = v & 0x7F
+        v >>= 7
+        if v:
+            out.append(b | 0x80)
+        else:
+            out.append(b)
+            return bytes(out)
+
+def read_varint(data, pos):
+    v = shift = 0
+    while True:
+        b = data[pos]; pos += 1
+        v |= (b & 0x7F) << shift; shift += 7
+        if not b & 0x80:
+            return v, pos
+
+def parse(data):
+    pos, chunks = 10, []
+    while pos < len(data):
+        t = data[pos:pos + 4]; n, p = read_varint(data, pos + 4)
+        chunks.append([t, data[p:p + n]]); pos = p + n + 4
+    return data[:10], chunks
+
+def build(head, chunks):
+    out = bytearray(head)
+    for t, payload in chunks:
+        out += t + varint(len(payload)) + payload
+        out += struct.pack('<I', zlib.crc32(t + payload) & 0xFFFFFFFF)
+    return bytes(out)
+
+head, chunks = parse(open('tests/data/lmap/depot_v2.lmap', 'rb').read())
+types = [c[0] for c in chunks]
+bad = 'tests/data/bad/lmap_decode/'
+
+def chunk(name):
+    return chunks[types.index(name)]
+
+def write(name, cs):
+    open(bad + name, 'wb').write(build(head, cs))
+
+# CELL payload: coder byte 0, then the tile side varint.
+cell = chunk(b'CELL')
+write('v2_tile_size_below_16.lmap',
+      [c if c[0] != b'CELL' else [b'CELL', b'\x00' + varint(8) + cell[1][1 + len(varint(1024)):]]
+       for c in chunks])
+# One more byte after the tiles: the lengths no longer add up.
+write('v2_tile_lengths_do_not_add_up.lmap',
+      [c if c[0] != b'CELL' else [b'CELL', cell[1] + b'\x00'] for c in chunks])
+# WALL after CELL.
+order = [c for c in chunks if c[0] not in (b'WALL', b'LEND')]
+order.insert(len(order), chunk(b'WALL'))
+write('v2_wall_after_cell.lmap', [c for c in order if c[0] != b'LEND'] + [chunk(b'LEND')])
+# A 1.0 chunk in a 2.0 file.
+write('v2_segs_chunk_in_version_2.lmap',
+      chunks[:1] + [[b'SEGS', b'\x00\x00']] + chunks[1:])
+# A wall count of 2^40: more than the segment limit.
+wall = chunk(b'WALL')
+_, p = read_varint(wall[1], 1)
+write('v2_wall_count_over_limit.lmap',
+      [c if c[0] != b'WALL' else [b'WALL', b'\x00' + varint(1 << 40) + wall[1][p:]] for c in chunks])
+# The WALL stream cut short.
+write('v2_wall_stream_truncated.lmap',
+      [c if c[0] != b'WALL' else [b'WALL', wall[1][:len(wall[1]) // 2]] for c in chunks])
+PY
