@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start: install what is missing, build, then map-save and map-load a
-# map bundled with the project, with size and fidelity figures.
+# map bundled with the project, and show what the saved file holds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
@@ -10,14 +10,20 @@ mkdir -p "$OUT"
 echo "== linemap info $MAP"
 build/linemap info "$MAP"
 echo
-echo "== linemap encode (map-save, lossy) -> $OUT/depot.lmap"
+echo "== linemap encode (map-save: exact, with walls, rooms and furniture) -> $OUT/depot.lmap"
 build/linemap encode "$MAP" -o "$OUT/depot.lmap"
+echo
+echo "== linemap info: the file's layers and chunks"
+build/linemap info "$OUT/depot.lmap"
 echo
 echo "== linemap decode (map-load) -> $OUT/depot_decoded.yaml + .pgm"
 build/linemap decode "$OUT/depot.lmap" -o "$OUT/depot_decoded.yaml"
 echo
-echo "== linemap eval: the original against the decoded map"
+echo "== linemap eval: cell for cell, and the walls the RM-Line paper's way"
 build/linemap eval "$MAP" "$OUT/depot.lmap"
 echo
-echo "== linemap encode --lossless: exact round trip"
-build/linemap encode "$MAP" --lossless -o "$OUT/depot_lossless.lmap"
+echo "== linemap export: the layers over the map -> $OUT/depot.svg (open it in a browser)"
+build/linemap export "$OUT/depot.lmap" -o "$OUT/depot.svg"
+echo
+echo "== linemap encode --raster-only: the smallest exact file, cells only"
+build/linemap encode "$MAP" --raster-only -o "$OUT/depot_cells.lmap"
