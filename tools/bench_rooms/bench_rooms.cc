@@ -2,7 +2,12 @@
 // truth on generated floor plans (tests/testing/floor_plan.h), and its speed
 // on real maps.
 //
-// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]
+// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]...
+//                    [--maps-dir DIR] [MAP.yaml...]
+// --truth scores a hand-labelled map (tests/data/rooms/*.truth; its map is
+// found under --maps-dir, default ../shared/maps) with the same recall and
+// precision; rooms found = true rooms whose best segment is the best one of
+// no other true room.
 // --dump writes a PPM picture of every segmentation into DIR.
 // Generated set: seeds 1..N (default 10) x {thin, thick walls} x {plain,
 // furnished} x {clean, noisy}. Per variant it prints the survey's
@@ -15,10 +20,14 @@
 // furniture or scan specks). Then, per MAP, segmentation CPU time
 // (best of 5) and ms per Mcell, rooms, corridors, doors and blobs.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -210,6 +219,52 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
   return 0;
 }
 
+int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_dir,
+                 const std::string& dump) {
+  if (paths.empty()) return 0;
+  std::printf(
+      "\n| hand-labelled map | recall | precision | rooms found/true |\n|---|---|---|---|\n");
+  for (const std::string& path : paths) {
+    StatusOr<testing::HandTruth> truth = testing::LoadHandTruth(path, maps_dir);
+    if (!truth.ok()) {
+      std::fprintf(stderr, "bench_rooms: skipping %s: %s\n", path.c_str(),
+                   truth.status().message().c_str());
+      continue;
+    }
+    StatusOr<Segmentation> seg = SegmentMap(truth->grid);
+    if (!seg.ok()) {
+      std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(), seg.status().message().c_str());
+      return 1;
+    }
+    const testing::RoomScores scores = testing::ScoreRooms(truth->room_of_cell, seg->room_of_cell);
+    // Rooms found: segments that are the best match of some true room.
+    std::map<std::pair<int, int>, std::size_t> overlap;
+    for (std::size_t i = 0; i < truth->room_of_cell.size(); ++i) {
+      if (truth->room_of_cell[i] && seg->room_of_cell[i]) {
+        ++overlap[{truth->room_of_cell[i], seg->room_of_cell[i]}];
+      }
+    }
+    std::map<int, std::pair<std::size_t, int>> best;
+    for (const auto& [key, n] : overlap) {
+      if (n > best[key.first].first) best[key.first] = {n, key.second};
+    }
+    std::map<int, int> times_best;
+    for (const auto& [room, match] : best) ++times_best[match.second];
+    int found = 0;
+    for (const auto& [room, match] : best) found += times_best[match.second] == 1;
+    std::printf("| %s | %.3f | %.3f | %d/%d |\n", path.c_str(), scores.recall, scores.precision,
+                found, truth->rooms);
+    if (!dump.empty()) {
+      std::string name = path;
+      std::replace(name.begin(), name.end(), '/', '_');
+      Segmentation shown;
+      shown.room_of_cell = truth->room_of_cell;
+      WritePpm(dump + "/" + name + ".truth.ppm", truth->grid, shown);
+    }
+  }
+  return 0;
+}
+
 int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
   std::printf(
       "\n| map | cells | ms (CPU, best of 5) | ms per Mcell | rooms | corridors | doors |"
@@ -256,18 +311,25 @@ int main(int argc, char** argv) {
   int seeds = 10;
   bool verbose = false;
   std::string dump;
+  std::string maps_dir = "../shared/maps";
+  std::vector<std::string> truths;
   std::vector<std::string> maps;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--seeds" && i + 1 < argc) {
       seeds = std::atoi(argv[++i]);
+    } else if (arg == "--truth" && i + 1 < argc) {
+      truths.push_back(argv[++i]);
+    } else if (arg == "--maps-dir" && i + 1 < argc) {
+      maps_dir = argv[++i];
     } else if (arg == "--dump" && i + 1 < argc) {
       dump = argv[++i];
     } else if (arg == "--verbose") {
       verbose = true;
     } else if (!arg.empty() && arg[0] == '-') {
       std::fprintf(stderr,
-                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]\n");
+                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]..."
+                   " [--maps-dir DIR] [MAP.yaml...]\n");
       return 2;
     } else {
       maps.push_back(arg);
@@ -277,5 +339,6 @@ int main(int argc, char** argv) {
   if (seeds > 0) {
     if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
   }
+  if (const int rc = linemap::RunHandTruth(truths, maps_dir, dump)) return rc;
   return linemap::RunMaps(maps, dump);
 }

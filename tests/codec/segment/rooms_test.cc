@@ -290,6 +290,31 @@ TEST(RoomsTest, RejectsBadOptionsAndResolution) {
   EXPECT_TRUE(empty->rooms.empty());
 }
 
+// Shared maps with rooms labelled by hand (tests/data/rooms/*.truth): the
+// issue's goal, area-weighted recall and precision of at least 0.9.
+TEST(RoomsTest, HandLabelledSharedMaps) {
+  const std::string dir = testing::SharedMapsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  int checked = 0;
+  const std::string truths = testing::SourceDir() + "/tests/data/rooms";
+  for (const std::string& name : testing::ListDir(truths)) {
+    if (name.size() < 6 || name.substr(name.size() - 6) != ".truth") continue;
+    const std::string path = truths + "/" + name;
+    StatusOr<testing::HandTruth> truth = testing::LoadHandTruth(path, dir);
+    ASSERT_TRUE(truth.ok()) << path << ": " << truth.status().message();
+    ASSERT_GT(truth->rooms, 1) << path;
+    StatusOr<Segmentation> seg = SegmentMap(truth->grid);
+    ASSERT_TRUE(seg.ok()) << path;
+    const testing::RoomScores scores = testing::ScoreRooms(truth->room_of_cell, seg->room_of_cell);
+    std::printf("[ hand truth] %s: recall %.3f precision %.3f\n", path.c_str(), scores.recall,
+                scores.precision);
+    EXPECT_GE(scores.recall, 0.9) << path;
+    EXPECT_GE(scores.precision, 0.9) << path;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
 TEST(RoomsTest, InvariantsOnSharedMaps) {
   const std::string dir = testing::SharedMapsDir();
   if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
