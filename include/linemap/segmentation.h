@@ -154,6 +154,7 @@ struct SegmentationOptions {
   // Enclosed obstacles (of the free space) up to this area are furniture
   // candidates and count as room space when measuring clearance; larger
   // ones (pillars of a hall, blocks of unscanned rooms) stay obstacles.
+  // Also the largest box of one blob of grouped pieces.
   double max_furniture_area_m2 = 4.0;
   // An enclosed obstacle at least this long whose mean thickness is at most
   // wall_max_thickness_m is a piece of wall (between two doors), no
@@ -161,7 +162,8 @@ struct SegmentationOptions {
   double wall_min_length_m = 1.5;
   double wall_max_thickness_m = 0.35;
   // Furniture pieces whose boxes come this close are one blob (the legs of
-  // a table or chair). Suggested 0.3 to 1.
+  // a table or chair), as long as the blob's box holds no wall or unknown
+  // cell. Suggested 0.3 to 1.
   double furniture_group_m = 0.8;
   // Blobs with fewer occupied cells are scan specks, not furniture.
   std::size_t min_furniture_cells = 3;
