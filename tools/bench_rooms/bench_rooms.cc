@@ -18,7 +18,9 @@
 // cells or its outline's interior), precision = of the non-free cells blobs
 // cover, the share that is furniture (and the share that is no wall:
 // furniture or scan specks). Then, per MAP, segmentation CPU time
-// (best of 5) and ms per Mcell, rooms, corridors, doors and blobs.
+// (best of 5) and ms per Mcell, rooms, corridors, doors and blobs. The
+// recall and precision of the distance-transform method of the survey
+// (distance_baseline.h) are printed beside ours.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,6 +36,7 @@
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "tests/testing/floor_plan.h"
+#include "tools/bench_rooms/distance_baseline.h"
 
 namespace linemap {
 namespace {
@@ -46,11 +49,24 @@ double ThreadCpuMs() {
 
 struct Totals {
   double recall = 0, precision = 0;
+  double base_recall = 0, base_precision = 0;  // the distance-transform baseline
   int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
   std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
   std::size_t standalone = 0, standalone_covered = 0, blob_not_wall = 0;
   std::size_t blobs = 0, objects = 0;
   double ms = 0, mcells = 0;
+
+  void Add(const Totals& o) {
+    recall += o.recall, precision += o.precision;
+    base_recall += o.base_recall, base_precision += o.base_precision;
+    plans += o.plans, doors += o.doors, doors_found += o.doors_found;
+    rooms_true += o.rooms_true, rooms_found += o.rooms_found;
+    furniture += o.furniture, furniture_covered += o.furniture_covered;
+    blob_blocked += o.blob_blocked, blob_furniture += o.blob_furniture;
+    standalone += o.standalone, standalone_covered += o.standalone_covered;
+    blob_not_wall += o.blob_not_wall, blobs += o.blobs, objects += o.objects;
+    ms += o.ms, mcells += o.mcells;
+  }
 };
 
 // For each true room, the segment holding most of its cells.
@@ -107,6 +123,10 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
   }
   t->recall += scores.recall;
   t->precision += scores.precision;
+  const testing::RoomScores base =
+      testing::ScoreRooms(plan.room_of_cell, bench_rooms::DistanceBaseline(grid));
+  t->base_recall += base.recall;
+  t->base_precision += base.precision;
   ++t->plans;
   t->doors += static_cast<int>(plan.doors.size());
   t->doors_found += found;
@@ -173,8 +193,8 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
       " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
-      " ms per Mcell |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+      " ms per Mcell | DT baseline recall | DT baseline precision |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
   for (int variant = 0; variant < 8; ++variant) {
     Totals t;
@@ -191,8 +211,10 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
                      seg.status().message().c_str());
         return 1;
       }
-      Evaluate(plan, *seg, &t, verbose);
-      Evaluate(plan, *seg, &all, false);
+      Totals one;
+      Evaluate(plan, *seg, &one, verbose);
+      t.Add(one);
+      all.Add(one);
       if (!dump.empty()) WritePpm(dump + "/" + plan.name + ".ppm", plan.grid, *seg);
     }
     const auto figure = [&](std::size_t a, std::size_t b) {
@@ -201,21 +223,24 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
       return std::string(text);
     };
     std::printf(
-        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f |\n",
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f | %.3f | "
+        "%.3f |\n",
         options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
         options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
         t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
         figure(t.standalone_covered, t.standalone).c_str(),
         figure(t.blob_furniture, t.blob_blocked).c_str(),
-        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
+        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells,
+        t.base_recall / t.plans, t.base_precision / t.plans);
   }
   std::printf(
       "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %zu/%zu | %.1f "
-      "|\n",
+      "| %.3f | %.3f |\n",
       all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
       all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
       Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
-      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells);
+      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells,
+      all.base_recall / all.plans, all.base_precision / all.plans);
   return 0;
 }
 
@@ -223,7 +248,8 @@ int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_
                  const std::string& dump) {
   if (paths.empty()) return 0;
   std::printf(
-      "\n| hand-labelled map | recall | precision | rooms found/true |\n|---|---|---|---|\n");
+      "\n| hand-labelled map | recall | precision | rooms found/true | DT baseline recall |"
+      " DT baseline precision |\n|---|---|---|---|---|---|\n");
   for (const std::string& path : paths) {
     StatusOr<testing::HandTruth> truth = testing::LoadHandTruth(path, maps_dir);
     if (!truth.ok()) {
@@ -252,8 +278,10 @@ int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_
     for (const auto& [room, match] : best) ++times_best[match.second];
     int found = 0;
     for (const auto& [room, match] : best) found += times_best[match.second] == 1;
-    std::printf("| %s | %.3f | %.3f | %d/%d |\n", path.c_str(), scores.recall, scores.precision,
-                found, truth->rooms);
+    const testing::RoomScores base =
+        testing::ScoreRooms(truth->room_of_cell, bench_rooms::DistanceBaseline(truth->grid));
+    std::printf("| %s | %.3f | %.3f | %d/%d | %.3f | %.3f |\n", path.c_str(), scores.recall,
+                scores.precision, found, truth->rooms, base.recall, base.precision);
     if (!dump.empty()) {
       std::string name = path;
       std::replace(name.begin(), name.end(), '/', '_');
