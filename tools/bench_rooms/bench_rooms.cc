@@ -3,7 +3,9 @@
 // on real maps.
 //
 // Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]...
-//                    [--maps-dir DIR] [MAP.yaml...]
+//                    [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]
+// --min-door / --max-door M set the door width range (metres) to try
+// other values than SegmentationOptions' defaults.
 // --truth scores a hand-labelled map (tests/data/rooms/*.truth; its map is
 // found under --maps-dir, default ../shared/maps) with the same recall and
 // precision; rooms found = true rooms whose best segment is the best one of
@@ -189,7 +191,8 @@ void WritePpm(const std::string& path, const Grid& grid, const Segmentation& seg
 
 double Share(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) / b : 1.0; }
 
-int RunGenerated(int seeds, bool verbose, const std::string& dump) {
+int RunGenerated(int seeds, bool verbose, const std::string& dump,
+                 const SegmentationOptions& seg_options) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
       " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
@@ -205,7 +208,7 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
     for (int seed = 1; seed <= seeds; ++seed) {
       options.seed = static_cast<std::uint32_t>(seed);
       const testing::FloorPlan plan = testing::GenerateFloorPlan(options);
-      StatusOr<Segmentation> seg = SegmentMap(plan.grid);
+      StatusOr<Segmentation> seg = SegmentMap(plan.grid, seg_options);
       if (!seg.ok()) {
         std::fprintf(stderr, "bench_rooms: %s: %s\n", plan.name.c_str(),
                      seg.status().message().c_str());
@@ -245,7 +248,7 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
 }
 
 int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_dir,
-                 const std::string& dump) {
+                 const std::string& dump, const SegmentationOptions& seg_options) {
   if (paths.empty()) return 0;
   std::printf(
       "\n| hand-labelled map | recall | precision | rooms found/true | DT baseline recall |"
@@ -257,7 +260,7 @@ int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_
                    truth.status().message().c_str());
       continue;
     }
-    StatusOr<Segmentation> seg = SegmentMap(truth->grid);
+    StatusOr<Segmentation> seg = SegmentMap(truth->grid, seg_options);
     if (!seg.ok()) {
       std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(), seg.status().message().c_str());
       return 1;
@@ -293,7 +296,8 @@ int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_
   return 0;
 }
 
-int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
+int RunMaps(const std::vector<std::string>& paths, const std::string& dump,
+            const SegmentationOptions& seg_options) {
   std::printf(
       "\n| map | cells | ms (CPU, best of 5) | ms per Mcell | rooms | corridors | doors |"
       " blobs |\n|---|---|---|---|---|---|---|---|\n");
@@ -308,7 +312,7 @@ int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
     Segmentation seg;
     for (int run = 0; run < 5; ++run) {
       const double start = ThreadCpuMs();
-      StatusOr<Segmentation> result = SegmentMap(*grid);
+      StatusOr<Segmentation> result = SegmentMap(*grid, seg_options);
       best = std::min(best, ThreadCpuMs() - start);
       if (!result.ok()) {
         std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(),
@@ -341,11 +345,16 @@ int main(int argc, char** argv) {
   std::string dump;
   std::string maps_dir = "../shared/maps";
   std::vector<std::string> truths;
+  linemap::SegmentationOptions seg_options;
   std::vector<std::string> maps;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--seeds" && i + 1 < argc) {
       seeds = std::atoi(argv[++i]);
+    } else if (arg == "--min-door" && i + 1 < argc) {
+      seg_options.min_door_width_m = std::atof(argv[++i]);
+    } else if (arg == "--max-door" && i + 1 < argc) {
+      seg_options.max_door_width_m = std::atof(argv[++i]);
     } else if (arg == "--truth" && i + 1 < argc) {
       truths.push_back(argv[++i]);
     } else if (arg == "--maps-dir" && i + 1 < argc) {
@@ -357,7 +366,7 @@ int main(int argc, char** argv) {
     } else if (!arg.empty() && arg[0] == '-') {
       std::fprintf(stderr,
                    "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]..."
-                   " [--maps-dir DIR] [MAP.yaml...]\n");
+                   " [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]\n");
       return 2;
     } else {
       maps.push_back(arg);
@@ -365,8 +374,8 @@ int main(int argc, char** argv) {
   }
   if (seeds < 0) seeds = 0;
   if (seeds > 0) {
-    if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
+    if (const int rc = linemap::RunGenerated(seeds, verbose, dump, seg_options)) return rc;
   }
-  if (const int rc = linemap::RunHandTruth(truths, maps_dir, dump)) return rc;
-  return linemap::RunMaps(maps, dump);
+  if (const int rc = linemap::RunHandTruth(truths, maps_dir, dump, seg_options)) return rc;
+  return linemap::RunMaps(maps, dump, seg_options);
 }
