@@ -166,6 +166,14 @@ TEST(RoomsTest, GeneratedPlansEveryDoorFoundNoSplitWithoutDoor) {
             << door.width_m << " m) missed";
       }
       EXPECT_EQ(used.size(), static_cast<std::size_t>(plan.room_count)) << plan.name;
+      // The corridor (at least 15 m long, 1.4 to 2.4 m wide) is a corridor,
+      // the rooms (2.5 to 5 m by 3 to 5 m, alone or joined by wide openings) are
+      // rooms.
+      for (int id = 1; id <= plan.room_count; ++id) {
+        const RoomKind kind = seg->rooms[best.at(id).first - 1].kind;
+        EXPECT_EQ(kind, id == plan.corridor ? RoomKind::kCorridor : RoomKind::kRoom)
+            << plan.name << ": room " << id;
+      }
       // One doorway listed per pair of true rooms with a door between them
       // (rooms joined by a wide opening have two doors to the corridor).
       std::set<std::pair<int, int>> pairs;
