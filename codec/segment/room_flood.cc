@@ -107,9 +107,10 @@ struct Contact {
 
 // Thresholds of the flooding in chamfer units.
 struct DoorRule {
-  int max_door = 0;      // largest clearance of a doorway
-  int min_door = 0;      // smallest clearance of a doorway
-  int constriction = 0;  // margin both pieces' peaks need over the passage
+  int max_door = 0;                 // largest clearance of a doorway
+  int min_door = 0;                 // smallest clearance of a doorway
+  int constriction = 0;             // margin both pieces' peaks need over the passage
+  std::int64_t max_room_cells = 0;  // 0: no limit
 };
 
 DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
@@ -123,6 +124,10 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
   // Never under two cells: a single wall speck narrows a passage by one.
   rule.constriction =
       std::max(2 * kSide, static_cast<int>(std::lround(kSide * options.door_constriction_m / res)));
+  rule.max_room_cells =
+      options.max_room_area_m2 > 0
+          ? static_cast<std::int64_t>(std::ceil(options.max_room_area_m2 / (res * res)))
+          : 0;
   return rule;
 }
 
@@ -149,6 +154,9 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
   }
   std::vector<std::int32_t>& parent = *parent_out;
   parent.assign(dist.size(), -1);
+  // With a maximum room area, spaces joined by a wide narrowing are also
+  // kept apart here, to be joined afterwards while their full areas allow.
+  const bool keep_wide_narrowings = rule.max_room_cells > 0;
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
   for (const std::int32_t cell : order) {
@@ -175,9 +183,9 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
     for (int k = 0; k < n; ++k) {
       const std::int32_t other = roots[k];
       if (other == primary) continue;
-      const bool doorway = s <= rule.max_door && dist[other] >= s + rule.constriction &&
-                           dist[primary] >= s + rule.constriction;
-      if (doorway) {
+      const bool narrowing =
+          dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
+      if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
         contacts.push_back({cell, other, static_cast<std::uint16_t>(s)});
       } else {
         parent[other] = primary;
@@ -199,7 +207,10 @@ class PieceGraph {
   PieceGraph(std::vector<std::int32_t>* parent, const std::vector<std::uint16_t>& clearance,
              const std::vector<Contact>& contacts);
 
-  // Step 3b: pieces joined by passages narrower than a door are one room.
+  // Step 3b: pieces joined by passages wider than a door are one room, as
+  // long as it stays within `max_cells` (widest passage first); then pieces
+  // joined by passages narrower than a door are one room.
+  void MergeWidePassages(int max_door, std::int64_t max_cells);
   void MergeNarrowPassages(int min_door);
   // Step 3c: pieces below `min_cells` join the neighbour they share the
   // widest passage with, smallest first.
@@ -268,6 +279,26 @@ void PieceGraph::Merge(std::int32_t from, std::int32_t into) {
   for (const auto& [other, edge] : moved) {
     adjacency_[other].erase(from);
     if (other != into) Connect(into, other, edge);
+  }
+}
+
+void PieceGraph::MergeWidePassages(int max_door, std::int64_t max_cells) {
+  std::vector<std::tuple<std::uint16_t, std::int32_t, std::int32_t>> wide;
+  for (std::int32_t a = 0; a < size(); ++a) {
+    for (const auto& [b, edge] : adjacency_[a]) {
+      if (a < b && edge.clearance > max_door) wide.push_back({edge.clearance, a, b});
+    }
+  }
+  std::sort(wide.begin(), wide.end(), [](const auto& x, const auto& y) { return x > y; });
+  for (const auto& [clearance, a0, b0] : wide) {
+    const std::int32_t a = Root(a0);
+    const std::int32_t b = Root(b0);
+    if (a == b || static_cast<std::int64_t>(area_[a] + area_[b]) > max_cells) continue;
+    if (area_[a] >= area_[b]) {
+      Merge(b, a);
+    } else {
+      Merge(a, b);
+    }
   }
 }
 
@@ -433,6 +464,7 @@ RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
   std::vector<std::int32_t> parent;
   const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
   PieceGraph graph(&parent, flood.clearance, contacts);
+  if (rule.max_room_cells > 0) graph.MergeWidePassages(rule.max_door, rule.max_room_cells);
   graph.MergeNarrowPassages(rule.min_door);
   const std::size_t min_cells =
       static_cast<std::size_t>(std::ceil(options.min_room_area_m2 / (res * res)));

@@ -151,6 +151,10 @@ struct SegmentationOptions {
   // passage with; free components smaller than this are no rooms (their
   // cells are left out). Suggested 0.5 to 2.
   double min_room_area_m2 = 1.0;
+  // Two spaces joined through a narrowing wider than a door (a wide opening
+  // between two halls) stay apart when together they would be larger than
+  // this; 0 = no limit (default: a wide opening joins, whatever the area).
+  double max_room_area_m2 = 0;
   // Enclosed obstacles (of the free space) up to this area are furniture
   // candidates and count as room space when measuring clearance; larger
   // ones (pillars of a hall, blocks of unscanned rooms) stay obstacles.

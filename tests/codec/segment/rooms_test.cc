@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -238,6 +239,28 @@ TEST(RoomsTest, DoorRangeIsAnOption) {
   EXPECT_EQ(seg->rooms.size(), 1u);
 }
 
+// Two 10 x 10 m halls joined by a 3 m opening are one room unless
+// max_room_area_m2 is smaller than the two together.
+TEST(RoomsTest, MaxRoomAreaSplitsHallsAtWideOpenings) {
+  Grid grid(420, 210, Cell::kUnknown);
+  Fill(&grid, 4, 4, 415, 205, Cell::kOccupied);
+  Fill(&grid, 5, 5, 204, 204, Cell::kFree);     // hall A, 200 x 200 cells
+  Fill(&grid, 209, 5, 408, 204, Cell::kFree);   // hall B, wall of 4 cells between
+  Fill(&grid, 205, 70, 208, 129, Cell::kFree);  // opening, 60 cells = 3 m
+  StatusOr<Segmentation> one = SegmentMap(grid);
+  ASSERT_TRUE(one.ok());
+  EXPECT_EQ(one->rooms.size(), 1u);
+  SegmentationOptions options;
+  options.max_room_area_m2 = 150;
+  StatusOr<Segmentation> two = SegmentMap(grid, options);
+  ASSERT_TRUE(two.ok());
+  ASSERT_EQ(two->rooms.size(), 2u);
+  ExpectRoomInvariants(grid, *two, options, "halls");
+  EXPECT_NE(two->room_of_cell[grid.Index(10, 100)], two->room_of_cell[grid.Index(400, 100)]);
+  ASSERT_EQ(two->doors.size(), 1u);
+  EXPECT_GT(two->doors[0].width_m, 2.5);
+}
+
 // A 1.0 m corridor 12 m long with ragged walls (cells bitten out on both
 // sides) and a 3 x 3 m room at its end through a 0.8 m door: the corridor
 // stays one room, however the wall noise narrows it.
@@ -289,6 +312,9 @@ TEST(RoomsTest, RejectsBadOptionsAndResolution) {
   EXPECT_FALSE(SegmentMap(TwoRooms(20), options).ok());
   options = {};
   options.min_room_area_m2 = -1;
+  EXPECT_FALSE(SegmentMap(TwoRooms(20), options).ok());
+  options = {};
+  options.max_room_area_m2 = std::nan("");
   EXPECT_FALSE(SegmentMap(TwoRooms(20), options).ok());
   Grid grid = TwoRooms(20);
   grid.meta.resolution = 0;
