@@ -21,8 +21,10 @@
 // they share the widest passage with. Each room's chain is the outer
 // boundary of its own cells (Moore tracing), so two rooms' chains never
 // share a cell and the doorway is closed by the line where the two rooms'
-// cells meet. Furniture is the enclosed obstacles that are not wall pieces
-// (long and thin) and stay off every room chain.
+// cells meet. A room's cells are free cells plus the small obstacles it
+// encloses, so a chain runs over free cells but where such an obstacle
+// stands right at a doorway. Furniture is the enclosed obstacles that are
+// not wall pieces (long and thin) and stay off every room chain.
 //
 // kPaperBorder: one chain per free component by Kosteley et al., "Local
 // navigation map processing algorithm...", sections 3.2 B and C: binary
