@@ -95,25 +95,39 @@ std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
   return kept;
 }
 
-// True when every cell of `box` belongs to `room` (room space includes the
-// furniture candidates, so only walls, unknown cells and other rooms fail).
-bool BoxInRoom(const BoundingBox& box, std::int32_t room, const std::vector<std::int32_t>& room_of,
-               int width) {
-  for (int r = box.min_row; r <= box.max_row; ++r) {
-    const std::int32_t* row = room_of.data() + static_cast<std::size_t>(r) * width;
-    for (int c = box.min_col; c <= box.max_col; ++c) {
-      if (row[c] != room) return false;
+// Counts of cells in no room (walls, unknown, obstacles too large for
+// furniture) over any box in O(1), from a summed-area table.
+class NoRoomCounter {
+ public:
+  NoRoomCounter(const std::vector<std::int32_t>& room_of, int width, int height)
+      : width_(width + 1), sums_(static_cast<std::size_t>(width + 1) * (height + 1), 0) {
+    for (int r = 0; r < height; ++r) {
+      std::int32_t row_sum = 0;
+      for (int c = 0; c < width; ++c) {
+        row_sum += room_of[static_cast<std::size_t>(r) * width + c] == 0;
+        At(c + 1, r + 1) = At(c + 1, r) + row_sum;
+      }
     }
   }
-  return true;
-}
+  std::int32_t Count(const BoundingBox& b) const {
+    return Get(b.max_col + 1, b.max_row + 1) - Get(b.min_col, b.max_row + 1) -
+           Get(b.max_col + 1, b.min_row) + Get(b.min_col, b.min_row);
+  }
+
+ private:
+  std::int32_t& At(int c, int r) { return sums_[static_cast<std::size_t>(r) * width_ + c]; }
+  std::int32_t Get(int c, int r) const { return sums_[static_cast<std::size_t>(r) * width_ + c]; }
+  int width_;
+  std::vector<std::int32_t> sums_;
+};
 
 // Union of pieces of one room whose boxes come within `gap` cells, found
 // through square buckets of the map, as long as the group's box stays in
-// the room (its rim is the blob's outline, which must not run through a
-// wall, e.g. around the inner corner of an L-shaped room).
+// room space (its rim is the blob's outline, which must not run through a
+// wall, e.g. around the inner corner of an L-shaped room) and holds at
+// most `max_box_cells` cells (one piece of furniture, not a field of specks).
 std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
-                                      const std::vector<std::int32_t>& room_of, int width) {
+                                      const NoRoomCounter& no_room, double max_box_cells) {
   const std::int32_t n = static_cast<std::int32_t>(pieces.size());
   std::vector<std::int32_t> parent(n);
   std::vector<BoundingBox> group_box(n);
@@ -143,7 +157,9 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
           if (a == z) continue;
           BoundingBox joined = group_box[a];
           Extend(&joined, group_box[z]);
-          if (!BoxInRoom(joined, pieces[k].room, room_of, width)) continue;
+          const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
+                                   (joined.max_row - joined.min_row + 1);
+          if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
           parent[a] = z;
           group_box[z] = joined;
         }
@@ -161,8 +177,14 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
   const std::vector<Piece> pieces = FurniturePieces(grid, flood, on_chain);
   const int gap =
       std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
-  const std::vector<std::int32_t> group =
-      GroupPieces(pieces, gap, flood.room_of_cell, grid.width());
+  std::vector<std::int32_t> group;
+  if (pieces.size() > 1) {
+    const NoRoomCounter no_room(flood.room_of_cell, grid.width(), grid.height());
+    const double res = grid.meta.resolution;
+    group = GroupPieces(pieces, gap, no_room, options.max_furniture_area_m2 / (res * res));
+  } else {
+    group.assign(pieces.size(), 0);
+  }
   std::vector<std::vector<std::int32_t>> members(pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) members[group[k]].push_back(k);
   std::vector<FurnitureBlob> blobs;

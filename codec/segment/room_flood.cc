@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "codec/segment/segment_internal.h"
 
@@ -105,9 +107,10 @@ struct Contact {
 
 // Thresholds of the flooding in chamfer units.
 struct DoorRule {
-  int max_door = 0;      // largest clearance of a doorway
-  int min_door = 0;      // smallest clearance of a doorway
-  int constriction = 0;  // margin both pieces' peaks need over the passage
+  int max_door = 0;                 // largest clearance of a doorway
+  int min_door = 0;                 // smallest clearance of a doorway
+  int constriction = 0;             // margin both pieces' peaks need over the passage
+  std::int64_t max_room_cells = 0;  // 0: no limit
 };
 
 DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
@@ -121,6 +124,10 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
   // Never under two cells: a single wall speck narrows a passage by one.
   rule.constriction =
       std::max(2 * kSide, static_cast<int>(std::lround(kSide * options.door_constriction_m / res)));
+  rule.max_room_cells =
+      options.max_room_area_m2 > 0
+          ? static_cast<std::int64_t>(std::ceil(options.max_room_area_m2 / (res * res)))
+          : 0;
   return rule;
 }
 
@@ -147,6 +154,9 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
   }
   std::vector<std::int32_t>& parent = *parent_out;
   parent.assign(dist.size(), -1);
+  // With a maximum room area, spaces joined by a wide narrowing are also
+  // kept apart here, to be joined afterwards while their full areas allow.
+  const bool keep_wide_narrowings = rule.max_room_cells > 0;
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
   for (const std::int32_t cell : order) {
@@ -173,9 +183,9 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
     for (int k = 0; k < n; ++k) {
       const std::int32_t other = roots[k];
       if (other == primary) continue;
-      const bool doorway = s <= rule.max_door && dist[other] >= s + rule.constriction &&
-                           dist[primary] >= s + rule.constriction;
-      if (doorway) {
+      const bool narrowing =
+          dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
+      if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
         contacts.push_back({cell, other, static_cast<std::uint16_t>(s)});
       } else {
         parent[other] = primary;
@@ -190,198 +200,277 @@ struct PieceEdge {
   std::int32_t cell = 0;  // padded cell of the widest contact
 };
 
-using Adjacency = std::unordered_map<std::int32_t, PieceEdge>;
+// The pieces of the merge tree, their areas, peaks and the passages between
+// them (widest contact per pair), and their merging (steps 3b and 3c).
+class PieceGraph {
+ public:
+  PieceGraph(std::vector<std::int32_t>* parent, const std::vector<std::uint16_t>& clearance,
+             const std::vector<Contact>& contacts);
 
-void Connect(std::vector<Adjacency>* adjacency, std::int32_t a, std::int32_t b,
-             const PieceEdge& edge) {
-  PieceEdge& ab = (*adjacency)[a][b];
+  // Step 3b: pieces joined by passages wider than a door are one room, as
+  // long as it stays within `max_cells` (widest passage first); then pieces
+  // joined by passages narrower than a door are one room.
+  void MergeWidePassages(int max_door, std::int64_t max_cells);
+  void MergeNarrowPassages(int min_door);
+  // Step 3c: pieces below `min_cells` join the neighbour they share the
+  // widest passage with, smallest first.
+  void MergeSmallPieces(std::size_t min_cells);
+
+  // The piece of a padded cell (-1: no room space), and its final root.
+  std::int32_t PieceOf(std::size_t padded_cell) const { return piece_of_[padded_cell]; }
+  std::int32_t Root(std::int32_t piece) { return Find(parent_, piece); }
+  std::int32_t size() const { return static_cast<std::int32_t>(area_.size()); }
+  std::size_t Area(std::int32_t root) const { return area_[root]; }
+  std::uint16_t Peak(std::int32_t piece) const { return peak_[piece]; }
+  bool IsRoot(std::int32_t piece) const { return parent_[piece] == piece; }
+  const std::unordered_map<std::int32_t, PieceEdge>& Neighbours(std::int32_t root) const {
+    return adjacency_[root];
+  }
+
+ private:
+  void Connect(std::int32_t a, std::int32_t b, const PieceEdge& edge);
+  void Merge(std::int32_t from, std::int32_t into);
+
+  std::vector<std::int32_t> piece_of_;                                  // by padded cell
+  std::vector<std::int32_t> parent_;                                    // union-find over pieces
+  std::vector<std::size_t> area_;                                       // by root
+  std::vector<std::uint16_t> peak_;                                     // by piece
+  std::vector<std::unordered_map<std::int32_t, PieceEdge>> adjacency_;  // between roots
+};
+
+PieceGraph::PieceGraph(std::vector<std::int32_t>* parent,
+                       const std::vector<std::uint16_t>& clearance,
+                       const std::vector<Contact>& contacts)
+    : piece_of_(parent->size(), -1) {
+  for (std::size_t i = 0; i < parent->size(); ++i) {
+    if ((*parent)[i] < 0) continue;
+    const std::int32_t root = Find(*parent, static_cast<std::int32_t>(i));
+    if (piece_of_[root] < 0) {
+      piece_of_[root] = static_cast<std::int32_t>(area_.size());
+      area_.push_back(0);
+      peak_.push_back(clearance[root]);  // a root is its piece's highest cell
+    }
+    piece_of_[i] = piece_of_[root];
+    ++area_[piece_of_[i]];
+  }
+  parent_.resize(area_.size());
+  for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
+  adjacency_.resize(area_.size());
+  for (const Contact& contact : contacts) {
+    const std::int32_t a = piece_of_[contact.cell];
+    const std::int32_t b = piece_of_[contact.other];
+    if (a != b) Connect(a, b, {contact.clearance, contact.cell});
+  }
+}
+
+void PieceGraph::Connect(std::int32_t a, std::int32_t b, const PieceEdge& edge) {
+  PieceEdge& ab = adjacency_[a][b];
   if (edge.clearance > ab.clearance) ab = edge;
-  PieceEdge& ba = (*adjacency)[b][a];
+  PieceEdge& ba = adjacency_[b][a];
   if (edge.clearance > ba.clearance) ba = edge;
 }
 
-// Step 3b: merges `from` into `into` (both union-find roots of pieces).
-void MergePieces(std::int32_t from, std::int32_t into, std::vector<std::int32_t>* piece_parent,
-                 std::vector<std::size_t>* area, std::vector<Adjacency>* adjacency) {
-  (*piece_parent)[from] = into;
-  (*area)[into] += (*area)[from];
-  Adjacency moved = std::move((*adjacency)[from]);
-  (*adjacency)[from].clear();
-  (*adjacency)[into].erase(from);
+void PieceGraph::Merge(std::int32_t from, std::int32_t into) {
+  parent_[from] = into;
+  area_[into] += area_[from];
+  std::unordered_map<std::int32_t, PieceEdge> moved = std::move(adjacency_[from]);
+  adjacency_[from].clear();
+  adjacency_[into].erase(from);
   for (const auto& [other, edge] : moved) {
-    (*adjacency)[other].erase(from);
-    if (other != into) Connect(adjacency, into, other, edge);
+    adjacency_[other].erase(from);
+    if (other != into) Connect(into, other, edge);
   }
 }
 
-}  // namespace
-
-RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
-                     SegmentationTimings* timings) {
-  const int w = grid.width();
-  const int h = grid.height();
-  const int pw = w + 2;
-  const int ph = h + 2;
-  const double res = grid.meta.resolution;
-  const double cell_area = res * res;
-  auto padded = [pw](int c, int r) { return static_cast<std::size_t>(r + 1) * pw + (c + 1); };
-  RoomFlood flood;
-  double start = ThreadCpuMs();
-
-  // Step 1: the obstacles the free space encloses (8-connected components of
-  // the non-free cells that stay off the map edge).
-  BinaryMask free(w, h);
-  BinaryMask blocked(w, h);
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    free.bits[i] = grid.cells()[i] == Cell::kFree;
-    blocked.bits[i] = !free.bits[i];
-  }
-  flood.enclosed = LabelComponents(blocked, Connectivity::kEight);
-  flood.furniture_candidate.assign(flood.enclosed.components.size() + 1, 0);
-  const double max_furniture_cells = options.max_furniture_area_m2 / cell_area;
-  for (std::size_t k = 0; k < flood.enclosed.components.size(); ++k) {
-    const ComponentStats& stats = flood.enclosed.components[k];
-    flood.furniture_candidate[k + 1] = !TouchesEdge(stats.box, w, h) &&
-                                       static_cast<double>(stats.cell_count) <= max_furniture_cells;
-  }
-  const std::vector<std::size_t> perimeter = Perimeters(flood.enclosed, flood.furniture_candidate);
-  for (std::size_t k = 1; k < flood.furniture_candidate.size(); ++k) {
-    if (flood.furniture_candidate[k] &&
-        IsWallPiece(flood.enclosed.components[k - 1].cell_count, perimeter[k], options, res)) {
-      flood.furniture_candidate[k] = 0;
+void PieceGraph::MergeWidePassages(int max_door, std::int64_t max_cells) {
+  std::vector<std::tuple<std::uint16_t, std::int32_t, std::int32_t>> wide;
+  for (std::int32_t a = 0; a < size(); ++a) {
+    for (const auto& [b, edge] : adjacency_[a]) {
+      if (a < b && edge.clearance > max_door) wide.push_back({edge.clearance, a, b});
     }
   }
-
-  // Step 2: clearance over room space (free cells and furniture candidates).
-  flood.width = w;
-  flood.height = h;
-  flood.clearance.assign(static_cast<std::size_t>(pw) * ph, 0);
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      if (free.bits[i] || flood.furniture_candidate[flood.enclosed.labels[i]]) {
-        flood.clearance[padded(c, r)] = kFar;
-      }
+  std::sort(wide.begin(), wide.end(), [](const auto& x, const auto& y) { return x > y; });
+  for (const auto& [clearance, a0, b0] : wide) {
+    const std::int32_t a = Root(a0);
+    const std::int32_t b = Root(b0);
+    if (a == b || static_cast<std::int64_t>(area_[a] + area_[b]) > max_cells) continue;
+    if (area_[a] >= area_[b]) {
+      Merge(b, a);
+    } else {
+      Merge(a, b);
     }
   }
-  ChamferInPlace(&flood.clearance, pw, ph);
-  timings->clearance_ms += ThreadCpuMs() - start;
-  start = ThreadCpuMs();
+}
 
-  // Step 3a: the merge tree.
-  const DoorRule rule = MakeDoorRule(options, res);
-  std::vector<std::int32_t> parent;
-  const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
-
-  // Pieces: compact numbers for the roots, their areas and peaks.
-  std::vector<std::int32_t> piece_of(parent.size(), -1);
-  std::vector<std::size_t> area;
-  std::vector<std::uint16_t> peak;
-  for (std::size_t i = 0; i < parent.size(); ++i) {
-    if (parent[i] < 0) continue;
-    const std::int32_t root = Find(parent, static_cast<std::int32_t>(i));
-    if (piece_of[root] < 0) {
-      piece_of[root] = static_cast<std::int32_t>(area.size());
-      area.push_back(0);
-      peak.push_back(flood.clearance[root]);
-    }
-    piece_of[i] = piece_of[root];
-    ++area[piece_of[i]];
-  }
-  const std::int32_t pieces = static_cast<std::int32_t>(area.size());
-  std::vector<std::int32_t> piece_parent(pieces);
-  for (std::int32_t k = 0; k < pieces; ++k) piece_parent[k] = k;
-
-  // Step 3b: pieces joined by passages narrower than a door are one room.
-  std::vector<Adjacency> adjacency(pieces);
-  for (const Contact& contact : contacts) {
-    const std::int32_t a = piece_of[contact.cell];
-    const std::int32_t b = piece_of[contact.other];
-    if (a != b) Connect(&adjacency, a, b, {contact.clearance, contact.cell});
-  }
+void PieceGraph::MergeNarrowPassages(int min_door) {
   std::vector<std::pair<std::int32_t, std::int32_t>> narrow;
-  for (std::int32_t a = 0; a < pieces; ++a) {
-    for (const auto& [b, edge] : adjacency[a]) {
-      if (a < b && edge.clearance < rule.min_door) narrow.push_back({a, b});
+  for (std::int32_t a = 0; a < size(); ++a) {
+    for (const auto& [b, edge] : adjacency_[a]) {
+      if (a < b && edge.clearance < min_door) narrow.push_back({a, b});
     }
   }
   for (const auto& [a0, b0] : narrow) {
-    const std::int32_t a = Find(piece_parent, a0);
-    const std::int32_t b = Find(piece_parent, b0);
+    const std::int32_t a = Root(a0);
+    const std::int32_t b = Root(b0);
     if (a == b) continue;
-    if (area[a] >= area[b]) {
-      MergePieces(b, a, &piece_parent, &area, &adjacency);
+    if (area_[a] >= area_[b]) {
+      Merge(b, a);
     } else {
-      MergePieces(a, b, &piece_parent, &area, &adjacency);
+      Merge(a, b);
     }
   }
+}
 
-  // Step 3c: pieces below the minimum room area join the neighbour they
-  // share the widest passage with, smallest first.
-  const std::size_t min_cells =
-      static_cast<std::size_t>(std::ceil(options.min_room_area_m2 / cell_area));
+void PieceGraph::MergeSmallPieces(std::size_t min_cells) {
   using Item = std::pair<std::size_t, std::int32_t>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (std::int32_t k = 0; k < pieces; ++k) {
-    if (piece_parent[k] == k && area[k] < min_cells) queue.push({area[k], k});
+  for (std::int32_t k = 0; k < size(); ++k) {
+    if (IsRoot(k) && area_[k] < min_cells) queue.push({area_[k], k});
   }
   while (!queue.empty()) {
-    const auto [size, k] = queue.top();
+    const auto [area, k] = queue.top();
     queue.pop();
-    if (piece_parent[k] != k || area[k] != size || adjacency[k].empty()) continue;
+    // Stale entries (merged since, or grown) and pieces alone are skipped.
+    if (!IsRoot(k) || area_[k] != area || adjacency_[k].empty()) continue;
     std::int32_t best = -1;
     std::uint16_t best_clearance = 0;
-    for (const auto& [other, edge] : adjacency[k]) {
-      const bool wider = edge.clearance > best_clearance || (edge.clearance == best_clearance &&
-                                                             best >= 0 && area[other] > area[best]);
-      if (best < 0 || wider) {
+    for (const auto& [other, edge] : adjacency_[k]) {
+      // Widest passage, then the larger neighbour, then the lower number
+      // (so that the hash map's order never decides).
+      const bool wider =
+          best < 0 || edge.clearance > best_clearance ||
+          (edge.clearance == best_clearance &&
+           (area_[other] > area_[best] || (area_[other] == area_[best] && other < best)));
+      if (wider) {
         best = other;
         best_clearance = edge.clearance;
       }
     }
-    MergePieces(k, best, &piece_parent, &area, &adjacency);
-    if (area[best] < min_cells) queue.push({area[best], best});
+    Merge(k, best);
+    if (area_[best] < min_cells) queue.push({area_[best], best});
   }
+}
 
-  // Room ids in raster order of the rooms' first cells; pieces still below
-  // the minimum area (free specks with no neighbour) are no rooms.
-  std::vector<std::int32_t> room_of_piece(pieces, -1);
-  flood.room_of_cell.assign(grid.size(), 0);
+// Step 1: the obstacles the free space encloses (8-connected components of
+// the non-free cells that stay off the map edge), and which of them are
+// furniture candidates.
+void FindFurnitureCandidates(const Grid& grid, const SegmentationOptions& options,
+                             RoomFlood* flood) {
+  const int w = grid.width(), h = grid.height();
+  const double res = grid.meta.resolution;
+  BinaryMask blocked(w, h);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    blocked.bits[i] = grid.cells()[i] != Cell::kFree;
+  }
+  flood->enclosed = LabelComponents(blocked, Connectivity::kEight);
+  std::vector<std::uint8_t>& candidate = flood->furniture_candidate;
+  candidate.assign(flood->enclosed.components.size() + 1, 0);
+  const double max_cells = options.max_furniture_area_m2 / (res * res);
+  for (std::size_t k = 0; k < flood->enclosed.components.size(); ++k) {
+    const ComponentStats& stats = flood->enclosed.components[k];
+    candidate[k + 1] = !TouchesEdge(stats.box, w, h) && stats.cell_count <= max_cells;
+  }
+  const std::vector<std::size_t> perimeter = Perimeters(flood->enclosed, candidate);
+  for (std::size_t k = 1; k < candidate.size(); ++k) {
+    if (candidate[k] &&
+        IsWallPiece(flood->enclosed.components[k - 1].cell_count, perimeter[k], options, res)) {
+      candidate[k] = 0;
+    }
+  }
+}
+
+// Step 2: clearance over room space (free cells and furniture candidates).
+void ComputeClearance(const Grid& grid, RoomFlood* flood) {
+  const int w = grid.width(), h = grid.height();
+  const int pw = w + 2, ph = h + 2;
+  flood->width = w;
+  flood->height = h;
+  flood->clearance.assign(static_cast<std::size_t>(pw) * ph, 0);
+  for (int r = 0; r < h; ++r) {
+    std::uint16_t* out = flood->clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = grid.Index(c, r);
+      if (grid.cells()[i] == Cell::kFree || flood->furniture_candidate[flood->enclosed.labels[i]]) {
+        out[c] = kFar;
+      }
+    }
+  }
+  ChamferInPlace(&flood->clearance, pw, ph);
+}
+
+// Room ids in raster order of the rooms' first cells; pieces still below
+// `min_cells` (free specks with no neighbour) are no rooms. Returns the room
+// of each root piece (-1: none).
+std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::size_t min_cells,
+                                      RoomFlood* flood) {
+  const int w = grid.width(), h = grid.height();
+  const std::size_t pw = static_cast<std::size_t>(w) + 2;
+  std::vector<std::int32_t> room_of_piece(graph->size(), -1);
+  flood->room_of_cell.assign(grid.size(), 0);
   std::int32_t rooms = 0;
   for (int r = 0; r < h; ++r) {
     for (int c = 0; c < w; ++c) {
-      const std::int32_t piece = piece_of[padded(c, r)];
+      const std::int32_t piece = graph->PieceOf((r + 1) * pw + (c + 1));
       if (piece < 0) continue;
-      const std::int32_t root = Find(piece_parent, piece);
-      if (area[root] < min_cells) continue;
+      const std::int32_t root = graph->Root(piece);
+      if (graph->Area(root) < min_cells) continue;
       if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
-      flood.room_of_cell[grid.Index(c, r)] = room_of_piece[root];
+      flood->room_of_cell[grid.Index(c, r)] = room_of_piece[root];
     }
   }
-  flood.room_count = rooms;
-  flood.peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
-  for (std::int32_t k = 0; k < pieces; ++k) {
-    const std::int32_t root = Find(piece_parent, k);
-    if (room_of_piece[root] > 0) {
-      std::uint16_t& p = flood.peak[room_of_piece[root]];
-      p = std::max(p, peak[k]);
-    }
+  flood->room_count = rooms;
+  flood->peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
+  for (std::int32_t k = 0; k < graph->size(); ++k) {
+    const std::int32_t room = room_of_piece[graph->Root(k)];
+    if (room > 0) flood->peak[room] = std::max(flood->peak[room], graph->Peak(k));
   }
-  for (std::int32_t a = 0; a < pieces; ++a) {
-    if (piece_parent[a] != a || room_of_piece[a] < 0) continue;
-    for (const auto& [b, edge] : adjacency[a]) {
+  return room_of_piece;
+}
+
+// The passage between each pair of neighbouring rooms, at its widest.
+void ListDoors(PieceGraph* graph, const std::vector<std::int32_t>& room_of_piece, int pw,
+               double res, RoomFlood* flood) {
+  for (std::int32_t a = 0; a < graph->size(); ++a) {
+    if (!graph->IsRoot(a) || room_of_piece[a] < 0) continue;
+    for (const auto& [b, edge] : graph->Neighbours(a)) {
       if (room_of_piece[b] < 0 || room_of_piece[a] >= room_of_piece[b]) continue;
       Doorway door;
       door.room_a = room_of_piece[a];
       door.room_b = room_of_piece[b];
       door.cell = {edge.cell % pw - 1, edge.cell / pw - 1};
       door.width_m = (2.0 * edge.clearance / kSide - 1.0) * res;
-      flood.doors.push_back(door);
+      flood->doors.push_back(door);
     }
   }
-  std::sort(flood.doors.begin(), flood.doors.end(), [](const Doorway& x, const Doorway& y) {
+  std::sort(flood->doors.begin(), flood->doors.end(), [](const Doorway& x, const Doorway& y) {
     return std::tie(x.room_a, x.room_b) < std::tie(y.room_a, y.room_b);
   });
+}
+
+}  // namespace
+
+RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
+                     SegmentationTimings* timings) {
+  const double res = grid.meta.resolution;
+  RoomFlood flood;
+  double start = ThreadCpuMs();
+  FindFurnitureCandidates(grid, options, &flood);
+  ComputeClearance(grid, &flood);
+  timings->clearance_ms += ThreadCpuMs() - start;
+
+  start = ThreadCpuMs();
+  const int pw = grid.width() + 2;
+  const DoorRule rule = MakeDoorRule(options, res);
+  std::vector<std::int32_t> parent;
+  const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
+  PieceGraph graph(&parent, flood.clearance, contacts);
+  if (rule.max_room_cells > 0) graph.MergeWidePassages(rule.max_door, rule.max_room_cells);
+  graph.MergeNarrowPassages(rule.min_door);
+  const std::size_t min_cells =
+      static_cast<std::size_t>(std::ceil(options.min_room_area_m2 / (res * res)));
+  graph.MergeSmallPieces(min_cells);
+  const std::vector<std::int32_t> room_of_piece = NumberRooms(grid, &graph, min_cells, &flood);
+  ListDoors(&graph, room_of_piece, pw, res, &flood);
   timings->flooding_ms += ThreadCpuMs() - start;
   return flood;
 }

@@ -24,9 +24,9 @@ Status ValidateRoomOptions(const SegmentationOptions& options) {
         "door widths must be positive, min_door_width_m <= max_door_width_m");
   }
   for (const double v :
-       {options.door_constriction_m, options.min_room_area_m2, options.max_furniture_area_m2,
-        options.wall_min_length_m, options.wall_max_thickness_m, options.furniture_group_m,
-        options.corridor_min_elongation}) {
+       {options.door_constriction_m, options.min_room_area_m2, options.max_room_area_m2,
+        options.max_furniture_area_m2, options.wall_min_length_m, options.wall_max_thickness_m,
+        options.furniture_group_m, options.corridor_min_elongation}) {
     if (!std::isfinite(v) || v < 0) {
       return InvalidArgumentError("segmentation lengths and areas must be finite and >= 0");
     }

@@ -21,8 +21,10 @@
 // they share the widest passage with. Each room's chain is the outer
 // boundary of its own cells (Moore tracing), so two rooms' chains never
 // share a cell and the doorway is closed by the line where the two rooms'
-// cells meet. Furniture is the enclosed obstacles that are not wall pieces
-// (long and thin) and stay off every room chain.
+// cells meet. A room's cells are free cells plus the small obstacles it
+// encloses, so a chain runs over free cells but where such an obstacle
+// stands right at a doorway. Furniture is the enclosed obstacles that are
+// not wall pieces (long and thin) and stay off every room chain.
 //
 // kPaperBorder: one chain per free component by Kosteley et al., "Local
 // navigation map processing algorithm...", sections 3.2 B and C: binary
@@ -148,9 +150,14 @@ struct SegmentationOptions {
   // passage with; free components smaller than this are no rooms (their
   // cells are left out). Suggested 0.5 to 2.
   double min_room_area_m2 = 1.0;
+  // Two spaces joined through a narrowing wider than a door (a wide opening
+  // between two halls) stay apart when together they would be larger than
+  // this; 0 = no limit (default: a wide opening joins, whatever the area).
+  double max_room_area_m2 = 0;
   // Enclosed obstacles (of the free space) up to this area are furniture
   // candidates and count as room space when measuring clearance; larger
   // ones (pillars of a hall, blocks of unscanned rooms) stay obstacles.
+  // Also the largest box of one blob of grouped pieces.
   double max_furniture_area_m2 = 4.0;
   // An enclosed obstacle at least this long whose mean thickness is at most
   // wall_max_thickness_m is a piece of wall (between two doors), no
@@ -158,7 +165,8 @@ struct SegmentationOptions {
   double wall_min_length_m = 1.5;
   double wall_max_thickness_m = 0.35;
   // Furniture pieces whose boxes come this close are one blob (the legs of
-  // a table or chair). Suggested 0.3 to 1.
+  // a table or chair), as long as the blob's box holds no wall or unknown
+  // cell. Suggested 0.3 to 1.
   double furniture_group_m = 0.8;
   // Blobs with fewer occupied cells are scan specks, not furniture.
   std::size_t min_furniture_cells = 3;

@@ -1,10 +1,15 @@
 #include "tests/testing/floor_plan.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <random>
+#include <sstream>
 #include <utility>
+
+#include "linemap/map_io.h"
 
 namespace linemap::testing {
 namespace {
@@ -356,6 +361,93 @@ RoomScores ScoreRooms(const std::vector<std::int32_t>& truth,
   scores.recall = truth_total ? static_cast<double>(recall_hits) / truth_total : 1.0;
   scores.precision = segment_total ? static_cast<double>(precision_hits) / segment_total : 1.0;
   return scores;
+}
+
+StatusOr<HandTruth> LoadHandTruth(const std::string& path, const std::string& maps_dir) {
+  std::ifstream in(path);
+  if (!in) return NotFoundError(path + ": cannot open");
+  std::string map;
+  std::vector<std::array<int, 4>> cuts;
+  std::vector<std::array<int, 2>> outside;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string key;
+    if (!(words >> key) || key[0] == '#') continue;
+    if (key == "map") {
+      words >> map;
+    } else if (key == "cut") {
+      std::array<int, 4> cut{};
+      if (!(words >> cut[0] >> cut[1] >> cut[2] >> cut[3])) {
+        return InvalidArgumentError(path + ": bad line '" + line + "'");
+      }
+      cuts.push_back(cut);
+    } else if (key == "outside") {
+      std::array<int, 2> at{};
+      if (!(words >> at[0] >> at[1]))
+        return InvalidArgumentError(path + ": bad line '" + line + "'");
+      outside.push_back(at);
+    } else {
+      return InvalidArgumentError(path + ": unknown key '" + key + "'");
+    }
+  }
+  HandTruth truth;
+  LINEMAP_ASSIGN_OR_RETURN(truth.grid, LoadRosMap(maps_dir + "/" + map));
+  const Grid& grid = truth.grid;
+  const int w = grid.width(), h = grid.height();
+  // Image pixel (col, image row) to grid cell.
+  auto cell = [&](int col, int image_row) { return CellIndex{col, h - 1 - image_row}; };
+  std::vector<std::uint8_t> blocked(grid.size(), 0);
+  for (std::size_t i = 0; i < grid.size(); ++i) blocked[i] = grid.cells()[i] != Cell::kFree;
+  for (const auto& cut : cuts) {
+    const int n = std::max(std::abs(cut[2] - cut[0]), std::abs(cut[3] - cut[1]));
+    for (int k = 0; k <= n; ++k) {
+      const double t = n ? static_cast<double>(k) / n : 0.0;
+      const CellIndex c = cell(static_cast<int>(std::lround(cut[0] + t * (cut[2] - cut[0]))),
+                               static_cast<int>(std::lround(cut[1] + t * (cut[3] - cut[1]))));
+      if (grid.Contains(c.col, c.row)) blocked[grid.Index(c.col, c.row)] = 1;
+    }
+  }
+  // Paint bucket: 4-connected components of the unblocked free cells.
+  std::vector<std::int32_t> component(grid.size(), 0);
+  std::vector<std::size_t> size{0};
+  for (std::size_t seed = 0; seed < grid.size(); ++seed) {
+    if (blocked[seed] || component[seed]) continue;
+    const std::int32_t id = static_cast<std::int32_t>(size.size());
+    size.push_back(0);
+    std::vector<std::size_t> stack{seed};
+    component[seed] = id;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      ++size[id];
+      const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+      for (int d = 0; d < 4; ++d) {
+        const int nc = c + dc[d], nr = r + dr[d];
+        if (nc < 0 || nr < 0 || nc >= w || nr >= h) continue;
+        const std::size_t j = grid.Index(nc, nr);
+        if (blocked[j] || component[j]) continue;
+        component[j] = id;
+        stack.push_back(j);
+      }
+    }
+  }
+  std::vector<std::uint8_t> skip(size.size(), 0);
+  for (const auto& at : outside) {
+    const CellIndex c = cell(at[0], at[1]);
+    if (grid.Contains(c.col, c.row)) skip[component[grid.Index(c.col, c.row)]] = 1;
+  }
+  const double cell_area = grid.meta.resolution * grid.meta.resolution;
+  std::vector<std::int32_t> room_of(size.size(), 0);
+  truth.room_of_cell.assign(grid.size(), 0);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    const std::int32_t k = component[i];
+    if (!k || skip[k] || size[k] * cell_area < 1.0) continue;
+    if (!room_of[k]) room_of[k] = ++truth.rooms;
+    truth.room_of_cell[i] = room_of[k];
+  }
+  return truth;
 }
 
 }  // namespace linemap::testing

@@ -17,6 +17,7 @@
 
 #include "linemap/cells.h"
 #include "linemap/grid.h"
+#include "linemap/status.h"
 
 namespace linemap::testing {
 
@@ -66,6 +67,20 @@ struct RoomScores {
 };
 RoomScores ScoreRooms(const std::vector<std::int32_t>& truth,
                       const std::vector<std::int32_t>& segment_of);
+
+// A hand-drawn ground truth (tests/data/rooms/*.truth): the map it labels
+// (`map PATH`, under `maps_dir`), straight lines drawn by hand across the
+// doorways (`cut COL0 ROW0 COL1 ROW1`, image pixels, row 0 at the top) and
+// pixels of components that are not scored (`outside COL ROW`). The rooms
+// are what a paint bucket gives: the 4-connected components of the free
+// cells off the cut lines, those of at least 1 m^2; cut cells, outside
+// components and smaller ones have room 0.
+struct HandTruth {
+  Grid grid;
+  std::vector<std::int32_t> room_of_cell;
+  int rooms = 0;
+};
+StatusOr<HandTruth> LoadHandTruth(const std::string& path, const std::string& maps_dir);
 
 }  // namespace linemap::testing
 

@@ -2,7 +2,14 @@
 // truth on generated floor plans (tests/testing/floor_plan.h), and its speed
 // on real maps.
 //
-// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]
+// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]...
+//                    [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]
+// --min-door / --max-door M set the door width range (metres) to try
+// other values than SegmentationOptions' defaults.
+// --truth scores a hand-labelled map (tests/data/rooms/*.truth; its map is
+// found under --maps-dir, default ../shared/maps) with the same recall and
+// precision; rooms found = true rooms whose best segment is the best one of
+// no other true room.
 // --dump writes a PPM picture of every segmentation into DIR.
 // Generated set: seeds 1..N (default 10) x {thin, thick walls} x {plain,
 // furnished} x {clean, noisy}. Per variant it prints the survey's
@@ -13,18 +20,25 @@
 // cells or its outline's interior), precision = of the non-free cells blobs
 // cover, the share that is furniture (and the share that is no wall:
 // furniture or scan specks). Then, per MAP, segmentation CPU time
-// (best of 5) and ms per Mcell, rooms, corridors, doors and blobs.
+// (best of 5) and ms per Mcell, rooms, corridors, doors and blobs. The
+// recall and precision of the distance-transform method of the survey
+// (distance_baseline.h) are printed beside ours.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "tests/testing/floor_plan.h"
+#include "tools/bench_rooms/distance_baseline.h"
 
 namespace linemap {
 namespace {
@@ -37,11 +51,24 @@ double ThreadCpuMs() {
 
 struct Totals {
   double recall = 0, precision = 0;
+  double base_recall = 0, base_precision = 0;  // the distance-transform baseline
   int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
   std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
   std::size_t standalone = 0, standalone_covered = 0, blob_not_wall = 0;
   std::size_t blobs = 0, objects = 0;
   double ms = 0, mcells = 0;
+
+  void Add(const Totals& o) {
+    recall += o.recall, precision += o.precision;
+    base_recall += o.base_recall, base_precision += o.base_precision;
+    plans += o.plans, doors += o.doors, doors_found += o.doors_found;
+    rooms_true += o.rooms_true, rooms_found += o.rooms_found;
+    furniture += o.furniture, furniture_covered += o.furniture_covered;
+    blob_blocked += o.blob_blocked, blob_furniture += o.blob_furniture;
+    standalone += o.standalone, standalone_covered += o.standalone_covered;
+    blob_not_wall += o.blob_not_wall, blobs += o.blobs, objects += o.objects;
+    ms += o.ms, mcells += o.mcells;
+  }
 };
 
 // For each true room, the segment holding most of its cells.
@@ -98,6 +125,10 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
   }
   t->recall += scores.recall;
   t->precision += scores.precision;
+  const testing::RoomScores base =
+      testing::ScoreRooms(plan.room_of_cell, bench_rooms::DistanceBaseline(grid));
+  t->base_recall += base.recall;
+  t->base_precision += base.precision;
   ++t->plans;
   t->doors += static_cast<int>(plan.doors.size());
   t->doors_found += found;
@@ -160,12 +191,13 @@ void WritePpm(const std::string& path, const Grid& grid, const Segmentation& seg
 
 double Share(std::size_t a, std::size_t b) { return b ? static_cast<double>(a) / b : 1.0; }
 
-int RunGenerated(int seeds, bool verbose, const std::string& dump) {
+int RunGenerated(int seeds, bool verbose, const std::string& dump,
+                 const SegmentationOptions& seg_options) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
       " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
-      " ms per Mcell |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+      " ms per Mcell | DT baseline recall | DT baseline precision |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
   for (int variant = 0; variant < 8; ++variant) {
     Totals t;
@@ -176,14 +208,16 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
     for (int seed = 1; seed <= seeds; ++seed) {
       options.seed = static_cast<std::uint32_t>(seed);
       const testing::FloorPlan plan = testing::GenerateFloorPlan(options);
-      StatusOr<Segmentation> seg = SegmentMap(plan.grid);
+      StatusOr<Segmentation> seg = SegmentMap(plan.grid, seg_options);
       if (!seg.ok()) {
         std::fprintf(stderr, "bench_rooms: %s: %s\n", plan.name.c_str(),
                      seg.status().message().c_str());
         return 1;
       }
-      Evaluate(plan, *seg, &t, verbose);
-      Evaluate(plan, *seg, &all, false);
+      Totals one;
+      Evaluate(plan, *seg, &one, verbose);
+      t.Add(one);
+      all.Add(one);
       if (!dump.empty()) WritePpm(dump + "/" + plan.name + ".ppm", plan.grid, *seg);
     }
     const auto figure = [&](std::size_t a, std::size_t b) {
@@ -192,25 +226,78 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump) {
       return std::string(text);
     };
     std::printf(
-        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f |\n",
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f | %.3f | "
+        "%.3f |\n",
         options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
         options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
         t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
         figure(t.standalone_covered, t.standalone).c_str(),
         figure(t.blob_furniture, t.blob_blocked).c_str(),
-        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells);
+        figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells,
+        t.base_recall / t.plans, t.base_precision / t.plans);
   }
   std::printf(
       "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %zu/%zu | %.1f "
-      "|\n",
+      "| %.3f | %.3f |\n",
       all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
       all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
       Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
-      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells);
+      Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells,
+      all.base_recall / all.plans, all.base_precision / all.plans);
   return 0;
 }
 
-int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
+int RunHandTruth(const std::vector<std::string>& paths, const std::string& maps_dir,
+                 const std::string& dump, const SegmentationOptions& seg_options) {
+  if (paths.empty()) return 0;
+  std::printf(
+      "\n| hand-labelled map | recall | precision | rooms found/true | DT baseline recall |"
+      " DT baseline precision |\n|---|---|---|---|---|---|\n");
+  for (const std::string& path : paths) {
+    StatusOr<testing::HandTruth> truth = testing::LoadHandTruth(path, maps_dir);
+    if (!truth.ok()) {
+      std::fprintf(stderr, "bench_rooms: skipping %s: %s\n", path.c_str(),
+                   truth.status().message().c_str());
+      continue;
+    }
+    StatusOr<Segmentation> seg = SegmentMap(truth->grid, seg_options);
+    if (!seg.ok()) {
+      std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(), seg.status().message().c_str());
+      return 1;
+    }
+    const testing::RoomScores scores = testing::ScoreRooms(truth->room_of_cell, seg->room_of_cell);
+    // Rooms found: segments that are the best match of some true room.
+    std::map<std::pair<int, int>, std::size_t> overlap;
+    for (std::size_t i = 0; i < truth->room_of_cell.size(); ++i) {
+      if (truth->room_of_cell[i] && seg->room_of_cell[i]) {
+        ++overlap[{truth->room_of_cell[i], seg->room_of_cell[i]}];
+      }
+    }
+    std::map<int, std::pair<std::size_t, int>> best;
+    for (const auto& [key, n] : overlap) {
+      if (n > best[key.first].first) best[key.first] = {n, key.second};
+    }
+    std::map<int, int> times_best;
+    for (const auto& [room, match] : best) ++times_best[match.second];
+    int found = 0;
+    for (const auto& [room, match] : best) found += times_best[match.second] == 1;
+    const testing::RoomScores base =
+        testing::ScoreRooms(truth->room_of_cell, bench_rooms::DistanceBaseline(truth->grid));
+    std::printf("| %s | %.3f | %.3f | %d/%d | %.3f | %.3f |\n", path.c_str(), scores.recall,
+                scores.precision, found, truth->rooms, base.recall, base.precision);
+    if (!dump.empty()) {
+      std::string name = path;
+      std::replace(name.begin(), name.end(), '/', '_');
+      Segmentation shown;
+      shown.room_of_cell = truth->room_of_cell;
+      WritePpm(dump + "/" + name + ".truth.ppm", truth->grid, shown);
+    }
+  }
+  return 0;
+}
+
+int RunMaps(const std::vector<std::string>& paths, const std::string& dump,
+            const SegmentationOptions& seg_options) {
   std::printf(
       "\n| map | cells | ms (CPU, best of 5) | ms per Mcell | rooms | corridors | doors |"
       " blobs |\n|---|---|---|---|---|---|---|---|\n");
@@ -225,7 +312,7 @@ int RunMaps(const std::vector<std::string>& paths, const std::string& dump) {
     Segmentation seg;
     for (int run = 0; run < 5; ++run) {
       const double start = ThreadCpuMs();
-      StatusOr<Segmentation> result = SegmentMap(*grid);
+      StatusOr<Segmentation> result = SegmentMap(*grid, seg_options);
       best = std::min(best, ThreadCpuMs() - start);
       if (!result.ok()) {
         std::fprintf(stderr, "bench_rooms: %s: %s\n", path.c_str(),
@@ -256,18 +343,30 @@ int main(int argc, char** argv) {
   int seeds = 10;
   bool verbose = false;
   std::string dump;
+  std::string maps_dir = "../shared/maps";
+  std::vector<std::string> truths;
+  linemap::SegmentationOptions seg_options;
   std::vector<std::string> maps;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--seeds" && i + 1 < argc) {
       seeds = std::atoi(argv[++i]);
+    } else if (arg == "--min-door" && i + 1 < argc) {
+      seg_options.min_door_width_m = std::atof(argv[++i]);
+    } else if (arg == "--max-door" && i + 1 < argc) {
+      seg_options.max_door_width_m = std::atof(argv[++i]);
+    } else if (arg == "--truth" && i + 1 < argc) {
+      truths.push_back(argv[++i]);
+    } else if (arg == "--maps-dir" && i + 1 < argc) {
+      maps_dir = argv[++i];
     } else if (arg == "--dump" && i + 1 < argc) {
       dump = argv[++i];
     } else if (arg == "--verbose") {
       verbose = true;
     } else if (!arg.empty() && arg[0] == '-') {
       std::fprintf(stderr,
-                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [MAP.yaml...]\n");
+                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]..."
+                   " [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]\n");
       return 2;
     } else {
       maps.push_back(arg);
@@ -275,7 +374,8 @@ int main(int argc, char** argv) {
   }
   if (seeds < 0) seeds = 0;
   if (seeds > 0) {
-    if (const int rc = linemap::RunGenerated(seeds, verbose, dump)) return rc;
+    if (const int rc = linemap::RunGenerated(seeds, verbose, dump, seg_options)) return rc;
   }
-  return linemap::RunMaps(maps, dump);
+  if (const int rc = linemap::RunHandTruth(truths, maps_dir, dump, seg_options)) return rc;
+  return linemap::RunMaps(maps, dump, seg_options);
 }

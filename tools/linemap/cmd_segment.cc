@@ -16,10 +16,11 @@ namespace linemap::cli {
 
 const CommandSpec kSegmentSpec = {
     "segment",
-    "MAP -o OUT.json [--geojson] [--method rooms|paper] [--pose X,Y] [--paper-border]",
+    "MAP -o OUT.json [--geojson] [--method rooms|paper] [--doors MIN,MAX] [--max-room-area M2] "
+    "[--pose X,Y] [--paper-border]",
     "split the free space into rooms at doorways; find furniture blobs",
     "rooms (default): the free space is split into rooms and corridors at doorways\n"
-    "(passages 0.7-1.2 m wide narrower than both sides); each room is the closed\n"
+    "(passages 0.5-1.2 m wide narrower than both sides); each room is the closed\n"
     "chain of its boundary cells, with an id, its area and its kind (room or\n"
     "corridor). Blobs are stand-alone obstacles inside rooms (furniture).\n"
     "paper: each room is the free space around the robot (--pose) or every free\n"
@@ -32,6 +33,12 @@ const CommandSpec kSegmentSpec = {
          "outline; Point per door; property layer: room | door | furniture, "
          "room_border with --method paper)"},
         {"--method", "rooms|paper", "segmentation method (default: rooms)"},
+        {"--doors", "MIN,MAX",
+         "rooms: width range of doorways in metres (default 0.5,1.2; passages in it "
+         "split rooms when narrower than both sides)"},
+        {"--max-room-area", "M2",
+         "rooms: spaces joined by an opening wider than a door stay apart when "
+         "together larger than this (square metres; default 0 = no limit)"},
         {"--pose", "X,Y", "robot position in map-frame metres (implies --method paper)"},
         {"--paper-border", "",
          "heavy border exactly as the paper: the shortest path may "
@@ -304,6 +311,15 @@ int RunSegment(const std::vector<std::string>& args) {
                        InvalidArgumentError("--pose and --paper-border need --method paper"));
   }
   options.method = paper ? SegmentationMethod::kPaperBorder : SegmentationMethod::kRooms;
+  if (parsed->Has("--doors")) {
+    StatusOr<std::vector<double>> doors = parsed->GetDoubleList("--doors", 2);
+    if (!doors.ok()) return ReportError("segment", doors.status());
+    options.min_door_width_m = (*doors)[0];
+    options.max_door_width_m = (*doors)[1];
+  }
+  StatusOr<double> max_area = parsed->GetDouble("--max-room-area", 0.0);
+  if (!max_area.ok()) return ReportError("segment", max_area.status());
+  options.max_room_area_m2 = *max_area;
   if (parsed->Has("--pose")) {
     StatusOr<std::vector<double>> pose = parsed->GetDoubleList("--pose", 2);
     if (!pose.ok()) return ReportError("segment", pose.status());

@@ -32,6 +32,27 @@ TEST(CmdSegmentTest, WritesRoomsJsonAndPrintsCounts) {
   EXPECT_NE(json.find("{\"rooms\":[1,3],\"width_m\":0.55"), std::string::npos);
 }
 
+// --doors from 0.7 m: the 0.55 m gap to the pocket is no doorway any more.
+TEST(CmdSegmentTest, DoorRangeAndMaxRoomArea) {
+  const std::string dir = testing::MakeTempDir("cmd_segment_doors");
+  const testing::CliResult narrow =
+      testing::RunCli({"segment", Arena(), "--doors", "0.7,1.2", "-o", dir + "/a.json"});
+  ASSERT_EQ(narrow.exit_code, 0) << narrow.err;
+  EXPECT_NE(narrow.out.find("rooms: 2 (2 rooms, 0 corridors)  doors: 1"), std::string::npos)
+      << narrow.out;
+  const testing::CliResult reversed =
+      testing::RunCli({"segment", Arena(), "--doors", "1.2,0.7", "-o", dir + "/b.json"});
+  EXPECT_EQ(reversed.exit_code, 2);
+  EXPECT_NE(reversed.err.find("min_door_width_m <= max_door_width_m"), std::string::npos)
+      << reversed.err;
+  EXPECT_FALSE(testing::FileExists(dir + "/b.json"));
+  EXPECT_EQ(testing::RunCli({"segment", Arena(), "--max-room-area", "-1", "-o", dir + "/c.json"})
+                .exit_code,
+            2);
+  EXPECT_EQ(
+      testing::RunCli({"segment", Arena(), "--doors", "0.7", "-o", dir + "/d.json"}).exit_code, 2);
+}
+
 TEST(CmdSegmentTest, WritesPaperJsonAndPrintsCounts) {
   const std::string out = testing::MakeTempDir("cmd_segment") + "/arena.json";
   const testing::CliResult result =
