@@ -183,7 +183,6 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
   SegmentationOptions seg_options;
   seg_options.robot = RobotCell(grid, options);
   LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
-  std::uint32_t id = 0;
   for (RoomBorder& room : seg.rooms) {
     if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;
     std::vector<CellIndex> polygon = SimplifyClosedChain(room.chain, kRoomTolerance);

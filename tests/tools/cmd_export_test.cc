@@ -233,7 +233,7 @@ TEST(CmdExportTest, SvgDrawsTheLayersOverTheDecodedMap) {
               std::abs(mantissa - 5) < 1e-9)
       << metres;
   const std::string legend = Group(svg, "legend");
-  for (const std::string label : {"walls (" + std::to_string(v->walls.size()) + ")",
+  for (const std::string& label : {"walls (" + std::to_string(v->walls.size()) + ")",
                                   "room borders (" + std::to_string(v->rooms.size()) + ")",
                                   "furniture (" + std::to_string(v->furniture.size()) + ")"}) {
     EXPECT_NE(legend.find(label), std::string::npos) << label;
