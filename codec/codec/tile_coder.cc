@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "codec/codec/tile_mixer.h"
 #include "codec/codec/tile_range_coder.h"
 
 namespace linemap {
@@ -26,7 +27,6 @@ constexpr int kSuperBlocks = 8;
 
 // The first byte of a tile's data: bits 0-4 name the model the cells were
 // coded with, bits 5-7 count the zero bytes dropped from the stream's end.
-constexpr std::uint8_t kModelTemplate8 = 0;
 constexpr std::uint8_t kModelMask = 31;
 constexpr int kDroppedShift = 5;
 
@@ -42,7 +42,8 @@ constexpr unsigned kBlockModel = kRowModel + kRowContexts;
 constexpr unsigned kSuperModel = kBlockModel + kBlockContexts;
 constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
-constexpr unsigned kModelCount = kOtherModel + 81 * kHintClasses;
+constexpr unsigned kNearModel = kOtherModel + 81 * kHintClasses;  // model 1 only
+constexpr unsigned kModelCount = kNearModel + 81 * kHintClasses;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -74,6 +75,10 @@ class EncodeIo {
     enc_.Encode(m, bit);
     return bit;
   }
+  int CodeP(std::uint32_t p0, int bit) {
+    enc_.EncodeP(p0, bit);
+    return bit;
+  }
   TileRangeEncoder& encoder() { return enc_; }
 
  private:
@@ -85,6 +90,7 @@ class DecodeIo {
   static constexpr bool kEncoding = false;
   DecodeIo(const std::uint8_t* data, std::size_t size) : dec_(data, size) {}
   int Code(TileBitModel* m, int /*bit*/) { return dec_.Decode(m); }
+  int CodeP(std::uint32_t p0, int /*bit*/) { return dec_.DecodeP(p0); }
   const TileRangeDecoder& decoder() const { return dec_; }
 
  private:
@@ -118,14 +124,46 @@ inline unsigned TemplateOf(const std::uint8_t* cur, const std::uint8_t* n1, cons
 
 // Codes cells [begin, end) of the row `cur` one by one. Each is coded as
 // "equals W" and, if not, as which of the two other values it is.
-template <typename Io>
-void CodeCells(Io& io, TileModelTable& models, std::uint8_t* cur, const std::uint8_t* n1,
-               const std::uint8_t* n2, const std::uint8_t* hint_row, int begin, int end) {
+// Model 1 mixes where the template's estimate of "equals W" lies between
+// 1/32 and 31/32; where it is surer, mixing would not change the cost but
+// would cost decode time (most coded cells are sure).
+constexpr std::uint32_t kSureLow = 65536 / 32;
+constexpr std::uint32_t kSureHigh = 65536 - 65536 / 32;
+// Mixer weight sets: hint class x (W == N).
+constexpr int kMixerSets = static_cast<int>(kHintClasses) * 2;
+
+// The nearest-cells context of a cell (W, N, NW, NE and the hint class).
+inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsigned hint_class) {
+  return (((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1]) * kHintClasses + hint_class;
+}
+
+// Codes cells [begin, end) of the row `cur` one by one. Each is coded as
+// "equals W" and, if not, as which of the two other values it is. With
+// kMix (model 1), an unsure "equals W" is coded with the logistic mix of
+// the template's model and the nearest cells' model.
+template <bool kMix, typename Io>
+void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
+               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
+               int begin, int end) {
   for (int i = begin; i < end; ++i) {
-    const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + kHintClass[hint_row[i] & 15];
+    const unsigned hc = kHintClass[hint_row[i] & 15];
+    const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + hc;
     const unsigned west = cur[i - 1];
     const unsigned v = Io::kEncoding ? cur[i] : 0;
-    if (io.Code(&models[kEqualModel + ctx], v == west)) {
+    TileBitModel& equal = models[kEqualModel + ctx];
+    int eq;
+    if (!kMix || equal.p0() < kSureLow || equal.p0() > kSureHigh) {
+      eq = io.Code(&equal, v == west);
+    } else {
+      TileBitModel& near = models[kNearModel + NearContext(west, n1, i, hc)];
+      const std::uint32_t inputs[2] = {equal.p0(), near.p0()};
+      const std::uint32_t p0 = mixer.Mix(inputs, static_cast<int>(hc * 2 + (west == n1[i])));
+      eq = io.CodeP(p0, v == west);
+      mixer.Update(eq);
+      equal.Update(eq);
+      near.Update(eq);
+    }
+    if (eq) {
       cur[i] = static_cast<std::uint8_t>(west);
       continue;
     }
@@ -134,21 +172,21 @@ void CodeCells(Io& io, TileModelTable& models, std::uint8_t* cur, const std::uin
     const unsigned hi = west == 2 ? 1 : 2;
     // Which of the two is decided by the nearest neighbours alone (W, N,
     // NW, NE and the hint): a smaller table, learned faster.
-    const unsigned small = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
-    const unsigned octx = small * kHintClasses + kHintClass[hint_row[i] & 15];
+    const unsigned octx = NearContext(west, n1, i, hc);
     cur[i] = static_cast<std::uint8_t>(io.Code(&models[kOtherModel + octx], v == hi) ? hi : lo);
   }
 }
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
-template <typename Io>
+template <bool kMix, typename Io>
 void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints, int width,
               CellRect tile) {
   const int tw = tile.x1 - tile.x0;
   const int th = tile.y1 - tile.y0;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
   TileModelTable models(kModelCount);
+  TileMixer<2> mixer(kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
@@ -232,7 +270,7 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
           if (copy) {
             if constexpr (!Io::kEncoding) std::memcpy(cur + begin, n1 + begin, len);
           } else {
-            CodeCells(io, models, cur, n1, n2, hint_row, begin, end);
+            CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
             changed = true;
           }
           left = copy ? kStateCopy : kStateCoded;
@@ -256,13 +294,22 @@ bool TileInside(CellRect t, int width, int height) {
 
 std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
                                           int height, CellRect tile) {
+  return EncodeTileCells(cells, hints, width, height, tile, TileModel::kTemplate);
+}
+
+std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
+                                          int height, CellRect tile, TileModel model) {
   if (!TileInside(tile, width, height) || tile.x0 == tile.x1 || tile.y0 == tile.y1) return {};
   EncodeIo io;
-  CodeTile(io, cells, nullptr, hints, width, tile);
+  if (model == TileModel::kMixed) {
+    CodeTile<true>(io, cells, nullptr, hints, width, tile);
+  } else {
+    CodeTile<false>(io, cells, nullptr, hints, width, tile);
+  }
   const int dropped = io.encoder().Finish();
   std::vector<std::uint8_t> out;
   out.reserve(io.encoder().bytes().size() + 1);
-  out.push_back(static_cast<std::uint8_t>(kModelTemplate8 | dropped << kDroppedShift));
+  out.push_back(static_cast<std::uint8_t>(static_cast<unsigned>(model) | dropped << kDroppedShift));
   out.insert(out.end(), io.encoder().bytes().begin(), io.encoder().bytes().end());
   return out;
 }
@@ -280,11 +327,16 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
     return Status::Ok();
   }
   if (size == 0) return CorruptError("tile cells: no data");
-  if ((data[0] & kModelMask) != kModelTemplate8) {
-    return CorruptError("tile cells: unknown model " + std::to_string(data[0] & kModelMask));
+  const unsigned model = data[0] & kModelMask;
+  if (model > static_cast<unsigned>(TileModel::kMixed)) {
+    return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);
-  CodeTile(io, nullptr, canvas, hints, width, tile);
+  if (model == static_cast<unsigned>(TileModel::kMixed)) {
+    CodeTile<true>(io, nullptr, canvas, hints, width, tile);
+  } else {
+    CodeTile<false>(io, nullptr, canvas, hints, width, tile);
+  }
   // Decoding must read every stored byte and imply exactly the zero bytes
   // the encoder dropped, so extra or missing bytes mean the data is corrupt.
   if (!io.decoder().EndsCleanly(data[0] >> kDroppedShift)) {

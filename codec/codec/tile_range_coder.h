@@ -90,6 +90,21 @@ class TileRangeEncoder {
       ShiftLow();
     }
   }
+  // Codes `bit` with a probability of 0 of p0 / 2^16 (1 <= p0 <= 65535)
+  // given by the caller (a mixer), no model update.
+  void EncodeP(std::uint32_t p0, int bit) {
+    const std::uint32_t bound = (range_ >> 16) * p0;
+    if (bit == 0) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    while (range_ < kTop) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
   // Writes the final bytes, dropping up to kMaxDropped zero bytes of the
   // tail (the decoder implies them); returns how many were dropped.
   static constexpr int kMaxDropped = 7;
@@ -125,6 +140,24 @@ class TileRangeDecoder {
       bit = 1;
     }
     m->Update(bit);
+    while (range_ < kTop) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | NextByte();
+    }
+    return bit;
+  }
+  // Decodes a bit coded with EncodeP(p0, bit).
+  int DecodeP(std::uint32_t p0) {
+    const std::uint32_t bound = (range_ >> 16) * p0;
+    int bit;
+    if (code_ < bound) {
+      range_ = bound;
+      bit = 0;
+    } else {
+      range_ -= bound;
+      code_ -= bound;
+      bit = 1;
+    }
     while (range_ < kTop) {
       range_ <<= 8;
       code_ = (code_ << 8) | NextByte();

@@ -98,11 +98,11 @@ std::vector<CellRect> Tiles(int width, int height, int tile) {
   return out;
 }
 
-std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints,
-                                                 int tile) {
+std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints, int tile,
+                                                 TileModel model = TileModel::kTemplate) {
   std::vector<std::vector<std::uint8_t>> out;
   for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
-    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t));
+    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t, model));
   }
   return out;
 }
@@ -141,11 +141,16 @@ std::size_t PlanesBytes(const Grid& g) {
   return n + EncodeFreePlane(free, canvas, g.width(), g.height()).size();
 }
 
+// Bytes and CPU ns per cell of one way of coding a map.
+struct Coded {
+  double bytes = 0, enc_ns = 0, dec_ns = 0;
+};
+
 struct Row {
   std::string name;
   bool tuning = false;
-  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, plain = 0, hinted = 0, enc_ns = 0,
-         dec_ns = 0, t256 = 0, t512 = 0, jxl = 0;
+  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, t256 = 0, t512 = 0, jxl = 0;
+  Coded plain, hinted, mixed, mixed_hinted;  // template / mixed model, without / with hints
 };
 
 double Median(std::vector<double> v) {
@@ -166,14 +171,21 @@ const Column kColumns[] = {
     {"cells", " %9.0f", [](const Row& r) { return r.cells; }},
     {"png9", " %7.0f", [](const Row& r) { return r.png; }},
     {"v1pl", " %7.0f", [](const Row& r) { return r.planes; }},
-    {"tile", " %7.0f", [](const Row& r) { return r.plain; }},
-    {"hinted", " %7.0f", [](const Row& r) { return r.hinted; }},
-    {"t/png", " %6.3f", [](const Row& r) { return r.plain / r.png; }},
-    {"h/png", " %6.3f", [](const Row& r) { return r.hinted / r.png; }},
+    {"tile", " %7.0f", [](const Row& r) { return r.plain.bytes; }},
+    {"hinted", " %7.0f", [](const Row& r) { return r.hinted.bytes; }},
+    {"mix", " %7.0f", [](const Row& r) { return r.mixed.bytes; }},
+    {"hmix", " %7.0f", [](const Row& r) { return r.mixed_hinted.bytes; }},
+    {"t/png", " %6.3f", [](const Row& r) { return r.plain.bytes / r.png; }},
+    {"h/png", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.png; }},
+    {"hm/png", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.png; }},
     {"pngdec", " %6.2f", [](const Row& r) { return r.png_dec_ns; }},
-    {"enc", " %6.2f", [](const Row& r) { return r.enc_ns; }},
-    {"dec", " %6.2f", [](const Row& r) { return r.dec_ns; }},
-    {"d/png", " %6.3f", [](const Row& r) { return r.dec_ns / r.png_dec_ns; }},
+    {"enc", " %6.2f", [](const Row& r) { return r.plain.enc_ns; }},
+    {"dec", " %6.2f", [](const Row& r) { return r.plain.dec_ns; }},
+    {"hdec", " %6.2f", [](const Row& r) { return r.hinted.dec_ns; }},
+    {"hmdec", " %6.2f", [](const Row& r) { return r.mixed_hinted.dec_ns; }},
+    {"d/png", " %6.3f", [](const Row& r) { return r.plain.dec_ns / r.png_dec_ns; }},
+    {"hd/png", " %6.3f", [](const Row& r) { return r.hinted.dec_ns / r.png_dec_ns; }},
+    {"hmd/png", " %7.3f", [](const Row& r) { return r.mixed_hinted.dec_ns / r.png_dec_ns; }},
 };
 const Column kSizeColumns[] = {
     {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
@@ -181,8 +193,10 @@ const Column kSizeColumns[] = {
 };
 const Column kJxlColumns[] = {
     {"jxl", " %7.0f", [](const Row& r) { return r.jxl; }},
-    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain / r.jxl; }},
-    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted / r.jxl; }},
+    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain.bytes / r.jxl; }},
+    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.jxl; }},
+    {"m/jxl", " %6.3f", [](const Row& r) { return r.mixed.bytes / r.jxl; }},
+    {"hm/jxl", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.jxl; }},
 };
 
 void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) {
@@ -247,6 +261,22 @@ double JxlBytes(const std::string& file, const std::string& name) {
   return found;
 }
 
+// Encodes and decodes `g` in tiles, timing both; false when the decode
+// fails or differs from `g`.
+bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out) {
+  const double cells = static_cast<double>(g.size());
+  std::vector<std::vector<std::uint8_t>> data;
+  out->enc_ns =
+      1e9 / cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, hints, tile, model); });
+  out->bytes = static_cast<double>(TotalBytes(data));
+  std::vector<Cell> decoded(g.size(), Cell::kFree);
+  bool ok = true;
+  out->dec_ns = 1e9 / cells * MinSeconds(g.size(), [&] {
+                  ok = ok && DecodeAll(data, hints, g.width(), g.height(), tile, &decoded);
+                });
+  return ok && decoded == g.cells();
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
@@ -308,33 +338,26 @@ int Run(int argc, char** argv) {
         1e9 / r.cells * MinSeconds(g.size(), [&] { (void)bench::DecodeTrinaryPng(png_bytes); });
     r.planes = static_cast<double>(PlanesBytes(g));
 
-    std::vector<std::vector<std::uint8_t>> data;
-    r.enc_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, nullptr, tile); });
-    r.plain = static_cast<double>(TotalBytes(data));
-    std::vector<Cell> out(g.size(), Cell::kFree);
-    bool ok = true;
-    r.dec_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] {
-                 ok = ok && DecodeAll(data, nullptr, g.width(), g.height(), tile, &out);
-               });
-    if (!ok || out != g.cells()) {
+    std::vector<std::uint8_t> hints;
+    if (hints_on) {
+      StatusOr<std::vector<std::uint8_t>> built = BuildLayerHints(g);
+      if (!built.ok()) {
+        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
+                     built.status().ToString().c_str());
+        return 1;
+      }
+      hints = std::move(*built);
+    }
+    const std::uint8_t* hint_ptr = hints_on ? hints.data() : nullptr;
+    bool ok = Measure(g, nullptr, tile, TileModel::kTemplate, &r.plain) &&
+              Measure(g, nullptr, tile, TileModel::kMixed, &r.mixed);
+    if (hints_on) {
+      ok = ok && Measure(g, hint_ptr, tile, TileModel::kTemplate, &r.hinted) &&
+           Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted);
+    }
+    if (!ok) {
       std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
       return 1;
-    }
-    if (hints_on) {
-      StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
-      if (!hints.ok()) {
-        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
-                     hints.status().ToString().c_str());
-        return 1;
-      }
-      const auto hinted = EncodeAll(g, hints->data(), tile);
-      r.hinted = static_cast<double>(TotalBytes(hinted));
-      std::fill(out.begin(), out.end(), Cell::kFree);
-      if (!DecodeAll(hinted, hints->data(), g.width(), g.height(), tile, &out) ||
-          out != g.cells()) {
-        std::fprintf(stderr, "bench_tiles: %s: hinted round trip FAILED\n", m.path);
-        return 1;
-      }
     }
     if (sizes) {
       r.t256 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 256)));
@@ -345,8 +368,8 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "%s done\n", m.path);
   }
   std::printf(
-      "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell); "
-      "enc/dec without hints\n",
+      "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell)\n"
+      "tile/hinted: TileModel::kTemplate without/with hints; mix/hmix: TileModel::kMixed\n",
       tile);
   PrintRows(rows, true, sizes, !jxl_file.empty());
   PrintRows(rows, false, sizes, !jxl_file.empty());

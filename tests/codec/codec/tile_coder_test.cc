@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -96,8 +98,10 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
       tile = CellRect{width - 1, height - 1, width, height};  // the corner cell
     }
     SCOPED_TRACE("iteration " + std::to_string(iter));
-    const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile);
-    ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed}) {
+      const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
+      ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
+    }
   }
 }
 
@@ -175,10 +179,12 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
+        // The mixed model on every other tile: the decoder reads either.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t));
+          const TileModel model = data.size() % 2 ? TileModel::kMixed : TileModel::kTemplate;
+          data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
         for (std::size_t k = tiles.size(); k-- > 0;) {
@@ -207,10 +213,14 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
   const Bytes data = EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all);
   ASSERT_GT(data.size(), 10u);
   std::vector<Cell> canvas(g.size());
-  for (std::size_t n = 0; n < data.size(); ++n) {
-    EXPECT_FALSE(
-        DecodeTileCells(data.data(), n, nullptr, g.width(), g.height(), all, canvas.data()).ok())
-        << "truncated to " << n << " of " << data.size() << " bytes";
+  const Bytes mixed =
+      EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all, TileModel::kMixed);
+  for (const Bytes* d : {&data, &mixed}) {
+    for (std::size_t n = 0; n < d->size(); ++n) {
+      EXPECT_FALSE(
+          DecodeTileCells(d->data(), n, nullptr, g.width(), g.height(), all, canvas.data()).ok())
+          << "truncated to " << n << " of " << d->size() << " bytes";
+    }
   }
   for (std::uint8_t extra : {0, 1, 255}) {
     Bytes longer = data;
@@ -220,7 +230,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                      .ok());
   }
   Bytes bad_model = data;
-  bad_model[0] ^= 1;
+  bad_model[0] |= 2;  // model 2 and up do not exist
   EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
                                all, canvas.data())
                    .ok());
@@ -234,15 +244,14 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
   }
 }
 
-
 // An independent encoder written from spec/tile_coding.md's words, plainly
 // (no row buffers, no padding, bounds tested per cell): the library's bytes
 // must equal it, so the spec and the code say the same thing.
 class SpecEncoder {
  public:
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
-              CellRect tile)
-      : cells_(cells), hints_(hints), width_(width), t_(tile) {}
+              CellRect tile, bool mixed)
+      : cells_(cells), hints_(hints), width_(width), t_(tile), mixed_(mixed) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
@@ -303,7 +312,7 @@ class SpecEncoder {
 
  private:
   static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
-                       kOther = kEqual + 32805;
+                       kOther = kEqual + 32805, kNear = kOther + 405;
   struct Model {
     std::uint32_t fast = 32768, slow = 32768, n = 0;
   };
@@ -344,11 +353,81 @@ class SpecEncoder {
                       3 * (V(c - 1, r - 1) +
                            3 * (V(c, r - 1) +
                                 3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
-    Bit(kEqual + t * 5 + hc, v == w);
+    const int near = (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc;
+    const std::uint32_t p_equal = P0(models_[kEqual + t * 5 + hc]);
+    if (mixed_ && p_equal >= 2048 && p_equal <= 63488) {
+      MixedBit(kEqual + t * 5 + hc, kNear + near, hc * 2 + (w == V(c, r - 1) ? 1 : 0), v == w);
+    } else {
+      Bit(kEqual + t * 5 + hc, v == w);
+    }
     if (v == w) return;
     const int hi = w == 2 ? 1 : 2;
-    Bit(kOther + (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc,
-        v == hi);
+    Bit(kOther + near, v == hi);
+  }
+  static std::uint32_t P0(const Model& m) { return (m.fast + m.slow) >> 1; }
+  static int Squash(int d) {
+    static const int kT[33] = {1,    2,    3,    6,    10,   16,   27,   45,   73,   120,  194,
+                               310,  488,  747,  1101, 1546, 2047, 2549, 2994, 3348, 3607, 3785,
+                               3901, 3975, 4022, 4050, 4068, 4079, 4085, 4089, 4092, 4093, 4094};
+    const int k = static_cast<int>(std::floor(d / 128.0)) + 16;
+    const int w = d - (k - 16) * 128;
+    return (kT[k] * (128 - w) + kT[k + 1] * w + 64) / 128;
+  }
+  // The least d in [-2047, 2047] with Squash(d) >= p, else 2047 (found by
+  // search, once per p).
+  int Stretch(int p) {
+    std::vector<int>& memo = stretch_memo_;
+    if (memo[p] == 4096) {
+      memo[p] = 2047;
+      for (int d = -2047; d <= 2047; ++d) {
+        if (Squash(d) >= p) {
+          memo[p] = d;
+          break;
+        }
+      }
+    }
+    return memo[p];
+  }
+  void MixedBit(int equal, int near, int set, bool one) {
+    std::int64_t* w = weights_[set];
+    const int st[2] = {Stretch(static_cast<int>((65535 - P0(models_[equal])) / 16)),
+                       Stretch(static_cast<int>((65535 - P0(models_[near])) / 16))};
+    const std::int64_t dot = w[0] * st[0] + w[1] * st[1];
+    const std::int64_t d = std::clamp<std::int64_t>(
+        static_cast<std::int64_t>(std::floor(static_cast<double>(dot) / 65536.0)), -2047, 2047);
+    const int p1 = std::clamp(Squash(static_cast<int>(d)), 1, 4095);
+    Code(static_cast<std::uint32_t>(4096 - p1) * 16, one);
+    const int err = ((one ? 4096 : 0) - p1) * 2;
+    for (int k = 0; k < 2; ++k) {
+      w[k] = std::clamp<std::int64_t>(
+          w[k] + static_cast<std::int64_t>(std::floor(st[k] * err / 1024.0)), -(1 << 24), 1 << 24);
+    }
+    Update(models_[equal], one);
+    Update(models_[near], one);
+  }
+  void Code(std::uint32_t p0, bool one) {
+    const std::uint32_t bound = (range_ >> 16) * p0;
+    if (!one) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    while (range_ < (1u << 24)) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
+  static void Update(Model& m, bool one) {
+    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    if (!one) {
+      m.fast += (65536 - m.fast) >> fs;
+      m.slow += (65536 - m.slow) >> ss;
+    } else {
+      m.fast -= m.fast >> fs;
+      m.slow -= m.slow >> ss;
+    }
+    m.n = std::min(m.n + 1, 5u);
   }
   void Bit(int context, bool one) {
     Model& m = models_[context];
@@ -400,7 +479,7 @@ class SpecEncoder {
       out_.pop_back();
       ++dropped;
     }
-    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5));
+    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5 | (mixed_ ? 1 : 0)));
     return out_;
   }
 
@@ -408,7 +487,12 @@ class SpecEncoder {
   const std::vector<std::uint8_t>& hints_;
   int width_;
   CellRect t_;
-  std::vector<Model> models_ = std::vector<Model>(kOther + 405);
+  bool mixed_;
+  std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
+  std::vector<Model> models_ = std::vector<Model>(kNear + 405);
+  std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
+                                  {19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
+                                  {19661, 19661}, {19661, 19661}};
   std::uint64_t low_ = 0;
   std::uint32_t range_ = 0xFFFFFFFFu;
   std::uint8_t cache_ = 0;
@@ -430,15 +514,22 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     }
     const CellRect tile = iter % 3 ? RandomTile(rng, width, height) : CellRect{0, 0, width, height};
     SCOPED_TRACE("iteration " + std::to_string(iter));
-    EXPECT_EQ(
-        EncodeTileCells(cells.data(), hints.empty() ? nullptr : hints.data(), width, height, tile),
-        SpecEncoder(cells, hints, width, tile).Encode());
+    const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
+    EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
+              SpecEncoder(cells, hints, width, tile, false).Encode());
+    EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile, TileModel::kMixed),
+              SpecEncoder(cells, hints, width, tile, true).Encode());
   }
   for (const Grid& g : BundledMaps()) {
+    StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+    ASSERT_TRUE(hints.ok()) << hints.status().ToString();
     const std::vector<std::uint8_t> none;
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
-              SpecEncoder(g.cells(), none, g.width(), all).Encode());
+              SpecEncoder(g.cells(), none, g.width(), all, false).Encode());
+    EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
+                              TileModel::kMixed),
+              SpecEncoder(g.cells(), *hints, g.width(), all, true).Encode());
   }
 }
 
