@@ -257,8 +257,8 @@ class SpecEncoder {
     const int tw = t_.x1 - t_.x0;
     const int th = t_.y1 - t_.y0;
     if (tw == 0 || th == 0) return {};
-    const int blocks = (tw + 31) / 32;
-    std::vector<int> above_block(blocks, 2), above_super((blocks + 7) / 8, 2);
+    const int blocks = (tw + 15) / 16;
+    std::vector<int> above_block(blocks, 2), above_super((blocks + 15) / 16, 2);
     int row_state = 2;
     for (int r = 0; r < th; ++r) {
       const bool row_copy = RangeEqualsBelow(0, tw, r);
@@ -272,8 +272,8 @@ class SpecEncoder {
       row_state = 0;
       const std::vector<int> below_block = above_block;  // states after the row below
       int left = 2, left_super = 2;
-      for (int k = 0; k * 8 < blocks; ++k) {
-        const int b_end = std::min(8 * k + 8, blocks);
+      for (int k = 0; k * 16 < blocks; ++k) {
+        const int b_end = std::min(16 * k + 16, blocks);
         const int a = 256 * k, e = std::min(256 * k + 256, tw);
         const bool super_copy = RangeEqualsBelow(a, e, r);
         Bit(kSuper + ((above_super[k] * 3 + left_super) * 2 + HintsSame(a, e, r)) * 4 +
@@ -281,13 +281,13 @@ class SpecEncoder {
             super_copy);
         above_super[k] = left_super = super_copy ? 1 : 0;
         if (super_copy) {
-          for (int b = 8 * k; b < b_end; ++b) above_block[b] = 1;
+          for (int b = 16 * k; b < b_end; ++b) above_block[b] = 1;
           left = 1;
           continue;
         }
         bool changed = false;
-        for (int b = 8 * k; b < b_end; ++b) {
-          const int ba = 32 * b, be = std::min(32 * b + 32, tw);
+        for (int b = 16 * k; b < b_end; ++b) {
+          const int ba = 16 * b, be = std::min(16 * b + 16, tw);
           const int above_right = b + 1 < blocks ? below_block[b + 1] : 2;
           bool copy = RangeEqualsBelow(ba, be, r);
           if (b + 1 == b_end && !changed) {
