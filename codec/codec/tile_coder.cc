@@ -288,6 +288,21 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
   }
 }
 
+// After the cells, 16 bits of a fixed value at probability 1/2 each: data
+// cut short or altered decodes other cells, and then, but for a chance of
+// 2^-16, another value here; the end check on the bytes read alone misses
+// the truncations that happen to read as many bytes as the stream holds.
+constexpr unsigned kEndMarker = 0xA55A;
+
+template <typename Io>
+unsigned CodeEndMarker(Io& io) {
+  unsigned value = 0;
+  for (int b = 15; b >= 0; --b) {
+    value = value << 1 | static_cast<unsigned>(io.CodeP(1u << 15, (kEndMarker >> b) & 1));
+  }
+  return value;
+}
+
 bool TileInside(CellRect t, int width, int height) {
   return width >= 0 && height >= 0 && t.x0 >= 0 && t.y0 >= 0 && t.x0 <= t.x1 && t.y0 <= t.y1 &&
          t.x1 <= width && t.y1 <= height;
@@ -309,6 +324,7 @@ std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t*
   } else {
     CodeTile<false>(io, cells, nullptr, hints, width, tile);
   }
+  CodeEndMarker(io);
   const int dropped = io.encoder().Finish();
   std::vector<std::uint8_t> out;
   out.reserve(io.encoder().bytes().size() + 1);
@@ -339,6 +355,9 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
     CodeTile<true>(io, nullptr, canvas, hints, width, tile);
   } else {
     CodeTile<false>(io, nullptr, canvas, hints, width, tile);
+  }
+  if (CodeEndMarker(io) != kEndMarker) {
+    return CorruptError("tile cells: range-coded data is malformed or truncated");
   }
   // Decoding must read every stored byte and imply exactly the zero bytes
   // the encoder dropped, so extra or missing bytes mean the data is corrupt.

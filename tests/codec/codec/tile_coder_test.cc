@@ -307,6 +307,7 @@ class SpecEncoder {
         }
       }
     }
+    for (int b = 15; b >= 0; --b) Code(32768, (0xA55A >> b) & 1);  // end marker
     return Finish();
   }
 
