@@ -208,7 +208,8 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
     // the tile but never outside the grid).
     const std::uint8_t* hint_below = hints && r > 0 ? hint_row - width : zero_hints.data();
     if constexpr (Io::kEncoding) std::memcpy(cur, cells + offset, static_cast<std::size_t>(tw));
-    const bool hints_same = r > 0 && std::memcmp(hint_row, hint_below, tw) == 0;
+    const bool hints_same =
+        r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
     const int row_copy =
         io.Code(&models[kRowModel + row_ctx], Io::kEncoding && std::memcmp(cur, n1, tw) == 0);
