@@ -180,13 +180,25 @@ void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t
   }
 }
 
+// A tile's rows as the scan reads and writes them (the encoder reads
+// `cells`, the decoder writes `canvas`; `hints` null = all zero).
+struct TileRows {
+  int width = 0, height = 0;
+  const Cell* cells = nullptr;
+  std::ptrdiff_t cell_stride = 0;
+  Cell* canvas = nullptr;
+  std::ptrdiff_t canvas_stride = 0;
+  const std::uint8_t* hints = nullptr;
+  std::ptrdiff_t hint_stride = 0;
+};
+
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
 template <bool kMix, typename Io>
-void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints, int width,
-              CellRect tile) {
-  const int tw = tile.x1 - tile.x0;
-  const int th = tile.y1 - tile.y0;
+void CodeTile(Io& io, const TileRows& t) {
+  const int tw = t.width;
+  const int th = t.height;
+  const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
   TileModelTable models(kModelCount);
   TileMixer<2> mixer(kMix ? kMixerSets : 0);
@@ -202,12 +214,12 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
     std::uint8_t* cur = ring.Row(r + 2);
     const std::uint8_t* n1 = ring.Row(r + 1);
     const std::uint8_t* n2 = ring.Row(r);
-    const std::size_t offset = static_cast<std::size_t>(tile.y0 + r) * width + tile.x0;
-    const std::uint8_t* hint_row = hints ? hints + offset : zero_hints.data();
-    // The hints one row below (read only for r > 0: they may lie outside
-    // the tile but never outside the grid).
-    const std::uint8_t* hint_below = hints && r > 0 ? hint_row - width : zero_hints.data();
-    if constexpr (Io::kEncoding) std::memcpy(cur, cells + offset, static_cast<std::size_t>(tw));
+    const std::uint8_t* hint_row = hints ? hints + r * t.hint_stride : zero_hints.data();
+    // The hints one row below (read only for r > 0: inside the tile).
+    const std::uint8_t* hint_below = hints && r > 0 ? hint_row - t.hint_stride : zero_hints.data();
+    if constexpr (Io::kEncoding) {
+      std::memcpy(cur, t.cells + r * t.cell_stride, static_cast<std::size_t>(tw));
+    }
     const bool hints_same =
         r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
@@ -284,7 +296,7 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
       row_state = kStateCoded;
     }
     if constexpr (!Io::kEncoding) {
-      std::memcpy(canvas + offset, cur, static_cast<std::size_t>(tw));
+      std::memcpy(t.canvas + r * t.canvas_stride, cur, static_cast<std::size_t>(tw));
     }
   }
 }
@@ -309,22 +321,11 @@ bool TileInside(CellRect t, int width, int height) {
          t.x1 <= width && t.y1 <= height;
 }
 
-}  // namespace
-
-std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
-                                          int height, CellRect tile) {
-  return EncodeTileCells(cells, hints, width, height, tile, TileModel::kTemplate);
-}
-
-std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
-                                          int height, CellRect tile, TileModel model) {
-  if (!TileInside(tile, width, height) || tile.x0 == tile.x1 || tile.y0 == tile.y1) return {};
+// Codes the tile's cells and the end marker; returns the tile's bytes.
+template <bool kMix>
+std::vector<std::uint8_t> EncodeRows(const TileRows& rows, TileModel model) {
   EncodeIo io;
-  if (model == TileModel::kMixed) {
-    CodeTile<true>(io, cells, nullptr, hints, width, tile);
-  } else {
-    CodeTile<false>(io, cells, nullptr, hints, width, tile);
-  }
+  CodeTile<kMix>(io, rows);
   CodeEndMarker(io);
   const int dropped = io.encoder().Finish();
   std::vector<std::uint8_t> out;
@@ -334,15 +335,14 @@ std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t*
   return out;
 }
 
-Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
-                       int width, int height, CellRect tile, Cell* canvas) {
-  if (!TileInside(tile, width, height)) {
-    return InvalidArgumentError("tile [" + std::to_string(tile.x0) + ", " +
-                                std::to_string(tile.x1) + ") x [" + std::to_string(tile.y0) + ", " +
-                                std::to_string(tile.y1) + ") lies outside the " +
-                                std::to_string(width) + " x " + std::to_string(height) + " grid");
-  }
-  if (tile.x0 == tile.x1 || tile.y0 == tile.y1) {
+std::vector<std::uint8_t> EncodeTile(const TileRows& rows, TileModel model) {
+  if (rows.width <= 0 || rows.height <= 0) return {};
+  return model == TileModel::kMixed ? EncodeRows<true>(rows, model)
+                                    : EncodeRows<false>(rows, model);
+}
+
+Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& rows) {
+  if (rows.width == 0 || rows.height == 0) {
     if (size != 0) return CorruptError("tile cells: an empty tile has data");
     return Status::Ok();
   }
@@ -353,9 +353,9 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
   }
   DecodeIo io(data + 1, size - 1);
   if (model == static_cast<unsigned>(TileModel::kMixed)) {
-    CodeTile<true>(io, nullptr, canvas, hints, width, tile);
+    CodeTile<true>(io, rows);
   } else {
-    CodeTile<false>(io, nullptr, canvas, hints, width, tile);
+    CodeTile<false>(io, rows);
   }
   if (CodeEndMarker(io) != kEndMarker) {
     return CorruptError("tile cells: range-coded data is malformed or truncated");
@@ -366,6 +366,75 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
     return CorruptError("tile cells: range-coded data is malformed or truncated");
   }
   return Status::Ok();
+}
+
+// The rows of `tile` inside a width-wide grid.
+TileRows GridTile(int width, CellRect tile, const std::uint8_t* hints) {
+  TileRows rows;
+  rows.width = tile.x1 - tile.x0;
+  rows.height = tile.y1 - tile.y0;
+  const std::size_t origin = static_cast<std::size_t>(tile.y0) * width + tile.x0;
+  if (hints != nullptr) rows.hints = hints + origin;
+  rows.hint_stride = rows.cell_stride = rows.canvas_stride = width;
+  return rows;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
+                                          int height, CellRect tile) {
+  return EncodeTileCells(cells, hints, width, height, tile, TileModel::kTemplate);
+}
+
+std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
+                                          int height, CellRect tile, TileModel model) {
+  if (!TileInside(tile, width, height) || tile.x0 == tile.x1 || tile.y0 == tile.y1) return {};
+  TileRows rows = GridTile(width, tile, hints);
+  rows.cells = cells + (static_cast<std::size_t>(tile.y0) * width + tile.x0);
+  return EncodeTile(rows, model);
+}
+
+Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
+                       int width, int height, CellRect tile, Cell* canvas) {
+  if (!TileInside(tile, width, height)) {
+    return InvalidArgumentError("tile [" + std::to_string(tile.x0) + ", " +
+                                std::to_string(tile.x1) + ") x [" + std::to_string(tile.y0) + ", " +
+                                std::to_string(tile.y1) + ") lies outside the " +
+                                std::to_string(width) + " x " + std::to_string(height) + " grid");
+  }
+  TileRows rows = GridTile(width, tile, hints);
+  rows.canvas = canvas + (static_cast<std::size_t>(tile.y0) * width + tile.x0);
+  return DecodeTile(data, size, rows);
+}
+
+std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_stride,
+                                         const std::uint8_t* hints, std::ptrdiff_t hint_stride,
+                                         int tile_width, int tile_height, TileModel model) {
+  TileRows rows;
+  rows.width = tile_width;
+  rows.height = tile_height;
+  rows.cells = cells;
+  rows.cell_stride = cell_stride;
+  rows.hints = hints;
+  rows.hint_stride = hint_stride;
+  return EncodeTile(rows, model);
+}
+
+Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
+                      std::ptrdiff_t canvas_stride) {
+  if (tile_width < 0 || tile_height < 0) {
+    return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
+                                std::to_string(tile_height) + " cells");
+  }
+  TileRows rows;
+  rows.width = tile_width;
+  rows.height = tile_height;
+  rows.canvas = canvas;
+  rows.canvas_stride = canvas_stride;
+  rows.hints = hints;
+  rows.hint_stride = hint_stride;
+  return DecodeTile(data, size, rows);
 }
 
 }  // namespace linemap

@@ -64,6 +64,19 @@ std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t*
 Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
                        int width, int height, CellRect tile, Cell* canvas);
 
+// The same for a tile held in buffers of its own, e.g. a band of rows of a
+// map too large to hold whole: row r of the tile (grid row y0 + r) starts at
+// cells + r * cell_stride, hints + r * hint_stride (hints null = all zero)
+// and canvas + r * canvas_stride. Gives and reads the same bytes as the
+// whole-grid calls for the same tile.
+std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_stride,
+                                         const std::uint8_t* hints, std::ptrdiff_t hint_stride,
+                                         int tile_width, int tile_height,
+                                         TileModel model = TileModel::kTemplate);
+Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
+                      std::ptrdiff_t canvas_stride);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_TILE_CODER_H_
