@@ -17,18 +17,22 @@
 namespace linemap {
 
 // An adaptive bit model: the probability that the next bit is 0, in units
-// of 2^-16, is the mean of a fast estimate (moves 1/8 of the gap per bit
-// once learned) and a slow one (1/64): the fast one follows a local change
-// of the map (a region of noise), the slow one keeps a steady estimate of a
-// context that is nearly certain. For the first bits both move faster (1/2,
-// 1/4, ...), so a fresh context learns within a few uses. On the tuning maps
-// (tools/bench_tiles) 1/8 + 1/64 codes 3 % smaller than 1/16 + 1/128 and
-// 1.5 % smaller than 1/16 + 1/64.
+// of 2^-16, is the mean of a fast estimate (moves 1/4 of the gap per bit
+// once learned) and a slow one (1/64): the fast one follows the last few
+// cells of its context (a context of the tile's few thousand coded cells is
+// used rarely and in runs: a wall's edge, a patch of scan noise), the slow
+// one keeps a steady estimate of a context that is nearly certain. The
+// first update of each moves 1/2 of the gap (and the slow one 1/4, 1/8, ...
+// up to its rate), so a fresh context learns within a few uses. On the
+// tuning maps (tools/bench_tiles) 1/4 + 1/64 codes 1.5 % smaller than
+// 1/8 + 1/64, 3 % smaller than 1/16 + 1/64 and 6 % smaller than
+// 1/16 + 1/128; 1/2 and 1/32 or 1/128 for the slow one measure the same or
+// larger.
 //
 // All-zero bytes are the initial state (both estimates at one half are
 // stored XOR 2^15), so a table of models comes zeroed from calloc.
 struct TileBitModel {
-  static constexpr int kFastShift = 3;
+  static constexpr int kFastShift = 2;
   static constexpr int kSlowShift = 6;
   static constexpr std::uint32_t kHalf = 1u << 15;
 

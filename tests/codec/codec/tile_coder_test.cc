@@ -460,7 +460,7 @@ class SpecEncoder {
     }
   }
   static void Update(Model& m, bool one) {
-    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    const std::uint32_t s = m.n + 1, fs = std::min(s, 2u), ss = std::min(s, 6u);
     if (!one) {
       m.fast += (65536 - m.fast) >> fs;
       m.slow += (65536 - m.slow) >> ss;
@@ -479,7 +479,7 @@ class SpecEncoder {
       low_ += bound;
       range_ -= bound;
     }
-    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    const std::uint32_t s = m.n + 1, fs = std::min(s, 2u), ss = std::min(s, 6u);
     if (!one) {
       m.fast += (65536 - m.fast) >> fs;
       m.slow += (65536 - m.slow) >> ss;
