@@ -460,7 +460,9 @@ class SpecEncoder {
     }
   }
   static void Update(Model& m, bool one) {
-    const std::uint32_t s = m.n + 1, fs = std::min(s, 2u), ss = std::min(s, 6u);
+    const std::uint32_t ss =
+        std::min(static_cast<std::uint32_t>(std::floor(std::log2(m.n + 2.0))), 7u);
+    const std::uint32_t fs = std::min(ss, 2u);
     if (!one) {
       m.fast += (65536 - m.fast) >> fs;
       m.slow += (65536 - m.slow) >> ss;
@@ -468,7 +470,7 @@ class SpecEncoder {
       m.fast -= m.fast >> fs;
       m.slow -= m.slow >> ss;
     }
-    m.n = std::min(m.n + 1, 5u);
+    m.n = std::min(m.n + 1, 126u);
   }
   void Bit(int context, bool one) {
     Model& m = models_[context];
@@ -479,7 +481,9 @@ class SpecEncoder {
       low_ += bound;
       range_ -= bound;
     }
-    const std::uint32_t s = m.n + 1, fs = std::min(s, 2u), ss = std::min(s, 6u);
+    const std::uint32_t ss =
+        std::min(static_cast<std::uint32_t>(std::floor(std::log2(m.n + 2.0))), 7u);
+    const std::uint32_t fs = std::min(ss, 2u);
     if (!one) {
       m.fast += (65536 - m.fast) >> fs;
       m.slow += (65536 - m.slow) >> ss;
@@ -487,7 +491,7 @@ class SpecEncoder {
       m.fast -= m.fast >> fs;
       m.slow -= m.slow >> ss;
     }
-    m.n = std::min(m.n + 1, 5u);
+    m.n = std::min(m.n + 1, 126u);
     while (range_ < (1u << 24)) {
       range_ <<= 8;
       ShiftLow();
