@@ -194,7 +194,7 @@ struct TileRows {
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
-template <bool kMix, typename Io>
+template <bool kMix, bool kFlags, typename Io>
 void CodeTile(Io& io, const TileRows& t) {
   const int tw = t.width;
   const int th = t.height;
@@ -230,6 +230,9 @@ void CodeTile(Io& io, const TileRows& t) {
       std::fill(above_state.begin(), above_state.end(), kStateCopy);
       std::fill(above_super.begin(), above_super.end(), kStateCopy);
       row_state = kStateCopy;
+    } else if (!kFlags) {
+      CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, 0, tw);
+      row_state = kStateCoded;
     } else {
       unsigned left = kStateNone;
       unsigned super_left = kStateNone;
@@ -321,11 +324,27 @@ bool TileInside(CellRect t, int width, int height) {
          t.x1 <= width && t.y1 <= height;
 }
 
+// Runs the scan of `model` (bit 0: mixed; bit 1: every cell of a changed
+// row, no block flags).
+template <typename Io>
+void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
+  switch (model) {
+    case 0:
+      return CodeTile<false, true>(io, rows);
+    case 1:
+      return CodeTile<true, true>(io, rows);
+    case 2:
+      return CodeTile<false, false>(io, rows);
+    default:
+      return CodeTile<true, false>(io, rows);
+  }
+}
+
 // Codes the tile's cells and the end marker; returns the tile's bytes.
-template <bool kMix>
-std::vector<std::uint8_t> EncodeRows(const TileRows& rows, TileModel model) {
+std::vector<std::uint8_t> EncodeTile(const TileRows& rows, TileModel model) {
+  if (rows.width <= 0 || rows.height <= 0) return {};
   EncodeIo io;
-  CodeTile<kMix>(io, rows);
+  CodeTileAs(io, rows, static_cast<unsigned>(model));
   CodeEndMarker(io);
   const int dropped = io.encoder().Finish();
   std::vector<std::uint8_t> out;
@@ -335,12 +354,6 @@ std::vector<std::uint8_t> EncodeRows(const TileRows& rows, TileModel model) {
   return out;
 }
 
-std::vector<std::uint8_t> EncodeTile(const TileRows& rows, TileModel model) {
-  if (rows.width <= 0 || rows.height <= 0) return {};
-  return model == TileModel::kMixed ? EncodeRows<true>(rows, model)
-                                    : EncodeRows<false>(rows, model);
-}
-
 Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& rows) {
   if (rows.width == 0 || rows.height == 0) {
     if (size != 0) return CorruptError("tile cells: an empty tile has data");
@@ -348,15 +361,11 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
-  if (model > static_cast<unsigned>(TileModel::kMixed)) {
+  if (model > static_cast<unsigned>(TileModel::kMixedAllCells)) {
     return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);
-  if (model == static_cast<unsigned>(TileModel::kMixed)) {
-    CodeTile<true>(io, rows);
-  } else {
-    CodeTile<false>(io, rows);
-  }
+  CodeTileAs(io, rows, model);
   if (CodeEndMarker(io) != kEndMarker) {
     return CorruptError("tile cells: range-coded data is malformed or truncated");
   }

@@ -11,11 +11,17 @@
 // `cjxl -d 0 -e 9 -E 3 -I 100 -g 3` sizes of those PGMs) and adds columns.
 //
 // Per map: cells; PNG-9 bytes (the smallest of libpng's 8-bit grey, 8-bit
-// palette and 2-bit palette at level 9, as `linemap bench` takes it) and libpng's decode ns/cell;
-// the 1.0 planes' bytes; the tile coder's bytes without hints, with hints (BuildLayerHints) and
-// their ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds the bytes at 256
-// and 512 tiles. Tuning maps and held-out maps are listed and summarised (medians) separately: the
-// coder's parameters were chosen on the tuning maps only.
+// palette and 2-bit palette at level 9, as `linemap bench` takes it) and
+// libpng's decode CPU ns per cell; the 1.0 planes' bytes; the tile coder's
+// bytes for TileModel kTemplate (tile, hinted), kMixed (mix, hmix) and
+// kMixedAllCells (mall, hmall), without and with hints (BuildLayerHints),
+// and their ratios to PNG-9; encode and decode CPU ns per cell (dec: no
+// hints, hdec: hints, hmdec: kMixed with hints, madec: kMixedAllCells
+// without hints) and decode time over libpng's. --sizes adds the kTemplate
+// bytes with 256 x 256 and 512 x 512 tiles. Tuning maps and held-out maps
+// are listed and summarised (medians) separately: the coder's parameters
+// were chosen on the tuning maps only. Every coding is decoded and compared
+// with the map (exit 1 if one differs).
 #include <time.h>
 
 #include <algorithm>
@@ -151,6 +157,7 @@ struct Row {
   bool tuning = false;
   double cells = 0, png = 0, png_dec_ns = 0, planes = 0, t256 = 0, t512 = 0, jxl = 0;
   Coded plain, hinted, mixed, mixed_hinted;  // template / mixed model, without / with hints
+  Coded smallest, smallest_hinted;           // kMixedAllCells without / with hints
 };
 
 double Median(std::vector<double> v) {
@@ -175,14 +182,19 @@ const Column kColumns[] = {
     {"hinted", " %7.0f", [](const Row& r) { return r.hinted.bytes; }},
     {"mix", " %7.0f", [](const Row& r) { return r.mixed.bytes; }},
     {"hmix", " %7.0f", [](const Row& r) { return r.mixed_hinted.bytes; }},
+    {"mall", " %7.0f", [](const Row& r) { return r.smallest.bytes; }},
+    {"hmall", " %7.0f", [](const Row& r) { return r.smallest_hinted.bytes; }},
     {"t/png", " %6.3f", [](const Row& r) { return r.plain.bytes / r.png; }},
+    {"ma/png", " %6.3f", [](const Row& r) { return r.smallest.bytes / r.png; }},
     {"h/png", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.png; }},
     {"hm/png", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.png; }},
+    {"hma/png", " %7.3f", [](const Row& r) { return r.smallest_hinted.bytes / r.png; }},
     {"pngdec", " %6.2f", [](const Row& r) { return r.png_dec_ns; }},
     {"enc", " %6.2f", [](const Row& r) { return r.plain.enc_ns; }},
     {"dec", " %6.2f", [](const Row& r) { return r.plain.dec_ns; }},
     {"hdec", " %6.2f", [](const Row& r) { return r.hinted.dec_ns; }},
     {"hmdec", " %6.2f", [](const Row& r) { return r.mixed_hinted.dec_ns; }},
+    {"madec", " %6.2f", [](const Row& r) { return r.smallest.dec_ns; }},
     {"d/png", " %6.3f", [](const Row& r) { return r.plain.dec_ns / r.png_dec_ns; }},
     {"hd/png", " %6.3f", [](const Row& r) { return r.hinted.dec_ns / r.png_dec_ns; }},
     {"hmd/png", " %7.3f", [](const Row& r) { return r.mixed_hinted.dec_ns / r.png_dec_ns; }},
@@ -197,6 +209,7 @@ const Column kJxlColumns[] = {
     {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.jxl; }},
     {"m/jxl", " %6.3f", [](const Row& r) { return r.mixed.bytes / r.jxl; }},
     {"hm/jxl", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.jxl; }},
+    {"ma/jxl", " %6.3f", [](const Row& r) { return r.smallest.bytes / r.jxl; }},
 };
 
 void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) {
@@ -350,10 +363,12 @@ int Run(int argc, char** argv) {
     }
     const std::uint8_t* hint_ptr = hints_on ? hints.data() : nullptr;
     bool ok = Measure(g, nullptr, tile, TileModel::kTemplate, &r.plain) &&
-              Measure(g, nullptr, tile, TileModel::kMixed, &r.mixed);
+              Measure(g, nullptr, tile, TileModel::kMixed, &r.mixed) &&
+              Measure(g, nullptr, tile, TileModel::kMixedAllCells, &r.smallest);
     if (hints_on) {
       ok = ok && Measure(g, hint_ptr, tile, TileModel::kTemplate, &r.hinted) &&
-           Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted);
+           Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted) &&
+           Measure(g, hint_ptr, tile, TileModel::kMixedAllCells, &r.smallest_hinted);
     }
     if (!ok) {
       std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
@@ -369,7 +384,8 @@ int Run(int argc, char** argv) {
   }
   std::printf(
       "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell)\n"
-      "tile/hinted: TileModel::kTemplate without/with hints; mix/hmix: TileModel::kMixed\n",
+      "tile/hinted: TileModel::kTemplate without/with hints; mix/hmix: TileModel::kMixed; "
+      "mall/hmall: TileModel::kMixedAllCells\n",
       tile);
   PrintRows(rows, true, sizes, !jxl_file.empty());
   PrintRows(rows, false, sizes, !jxl_file.empty());

@@ -98,7 +98,8 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
       tile = CellRect{width - 1, height - 1, width, height};  // the corner cell
     }
     SCOPED_TRACE("iteration " + std::to_string(iter));
-    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed}) {
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kTemplateAllCells,
+                            TileModel::kMixedAllCells}) {
       const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
       ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
     }
@@ -219,11 +220,11 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
-        // The mixed model on every other tile: the decoder reads either.
+        // The four models in turn over the tiles: the decoder reads each.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          const TileModel model = data.size() % 2 ? TileModel::kMixed : TileModel::kTemplate;
+          const TileModel model = static_cast<TileModel>(data.size() % 4);
           data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
@@ -270,7 +271,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                      .ok());
   }
   Bytes bad_model = data;
-  bad_model[0] |= 2;  // model 2 and up do not exist
+  bad_model[0] |= 4;  // model 4 and up do not exist
   EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
                                all, canvas.data())
                    .ok());
@@ -289,9 +290,16 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
 // must equal it, so the spec and the code say the same thing.
 class SpecEncoder {
  public:
+  // `model` as the tile's model id: bit 0 mixed, bit 1 every cell.
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
-              CellRect tile, bool mixed)
-      : cells_(cells), hints_(hints), width_(width), t_(tile), mixed_(mixed) {}
+              CellRect tile, int model)
+      : cells_(cells),
+        hints_(hints),
+        width_(width),
+        t_(tile),
+        model_(model),
+        mixed_((model & 1) != 0),
+        all_cells_((model & 2) != 0) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
@@ -310,6 +318,10 @@ class SpecEncoder {
         continue;
       }
       row_state = 0;
+      if (all_cells_) {
+        for (int c = 0; c < tw; ++c) CodeCell(c, r);
+        continue;
+      }
       const std::vector<int> below_block = above_block;  // states after the row below
       int left = 2, left_super = 2;
       for (int k = 0; k * 16 < blocks; ++k) {
@@ -524,7 +536,7 @@ class SpecEncoder {
       out_.pop_back();
       ++dropped;
     }
-    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5 | (mixed_ ? 1 : 0)));
+    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5 | model_));
     return out_;
   }
 
@@ -532,7 +544,9 @@ class SpecEncoder {
   const std::vector<std::uint8_t>& hints_;
   int width_;
   CellRect t_;
+  int model_;
   bool mixed_;
+  bool all_cells_;
   std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
   std::vector<Model> models_ = std::vector<Model>(kNear + 405);
   std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
@@ -561,9 +575,13 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     SCOPED_TRACE("iteration " + std::to_string(iter));
     const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
     EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
-              SpecEncoder(cells, hints, width, tile, false).Encode());
-    EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile, TileModel::kMixed),
-              SpecEncoder(cells, hints, width, tile, true).Encode());
+              SpecEncoder(cells, hints, width, tile, 0).Encode());
+    for (int model = 0; model < 4; ++model) {
+      EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile,
+                                static_cast<TileModel>(model)),
+                SpecEncoder(cells, hints, width, tile, model).Encode())
+          << "model " << model;
+    }
   }
   for (const Grid& g : BundledMaps()) {
     StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
@@ -571,10 +589,13 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const std::vector<std::uint8_t> none;
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
-              SpecEncoder(g.cells(), none, g.width(), all, false).Encode());
-    EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
-                              TileModel::kMixed),
-              SpecEncoder(g.cells(), *hints, g.width(), all, true).Encode());
+              SpecEncoder(g.cells(), none, g.width(), all, 0).Encode());
+    for (int model = 1; model < 4; ++model) {
+      EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
+                                static_cast<TileModel>(model)),
+                SpecEncoder(g.cells(), *hints, g.width(), all, model).Encode())
+          << "model " << model;
+    }
   }
 }
 
