@@ -180,6 +180,18 @@ void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t
   }
 }
 
+// Whether `len` bytes at a and b are equal; `full` says len ==
+// kBlockCells, which is compared inline (a library call per 16-cell block
+// costs as much as coding a cell).
+inline bool SameCells(const std::uint8_t* a, const std::uint8_t* b, std::size_t len, bool full) {
+  if (!full) return std::memcmp(a, b, len) == 0;
+  std::uint64_t x[2], y[2];
+  static_assert(sizeof(x) == kBlockCells);
+  std::memcpy(x, a, sizeof(x));
+  std::memcpy(y, b, sizeof(y));
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+}
+
 // A tile's rows as the scan reads and writes them (the encoder reads
 // `cells`, the decoder writes `canvas`; `hints` null = all zero).
 struct TileRows {
@@ -266,15 +278,18 @@ void CodeTile(Io& io, const TileRows& t) {
           const int begin = b * kBlockCells;
           const int end = std::min(begin + kBlockCells, tw);
           const std::size_t len = static_cast<std::size_t>(end - begin);
+          const bool full = len == kBlockCells;
           const bool block_hints_same =
               r > 0 &&
-              (hints == nullptr || std::memcmp(hint_row + begin, hint_below + begin, len) == 0);
+              (hints == nullptr || SameCells(hint_row + begin, hint_below + begin, len, full));
           const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
           // Whether the row below is one value over the block and its two
           // neighbours (and which): a uniform area rarely starts a structure.
           // (n1[begin - 1 .. end] all equal each their right neighbour.)
           const unsigned uniform =
-              std::memcmp(n1 + begin - 1, n1 + begin, len + 1) == 0 ? 1u + n1[begin] : 0u;
+              SameCells(n1 + begin - 1, n1 + begin, len, full) && n1[end - 1] == n1[end]
+                  ? 1u + n1[begin]
+                  : 0u;
           const unsigned ctx =
               ((((above_state[b] * 3 + left) * 3 + above_right) * 2 + (block_hints_same ? 1 : 0)) *
                    4 +
@@ -285,9 +300,15 @@ void CodeTile(Io& io, const TileRows& t) {
               b + 1 == sb_end && !changed
                   ? 0
                   : io.Code(&models[kBlockModel + ctx],
-                            Io::kEncoding && std::memcmp(cur + begin, n1 + begin, len) == 0);
+                            Io::kEncoding && SameCells(cur + begin, n1 + begin, len, full));
           if (copy) {
-            if constexpr (!Io::kEncoding) std::memcpy(cur + begin, n1 + begin, len);
+            if constexpr (!Io::kEncoding) {
+              if (full) {
+                std::memcpy(cur + begin, n1 + begin, kBlockCells);
+              } else {
+                std::memcpy(cur + begin, n1 + begin, len);
+              }
+            }
           } else {
             CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
             changed = true;
