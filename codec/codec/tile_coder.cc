@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "codec/codec/tile_mixer.h"
 #include "codec/codec/tile_range_coder.h"
 
 namespace linemap {
@@ -14,19 +15,21 @@ namespace {
 constexpr std::uint8_t kUnknownValue = 2;
 
 // Cells per block: a block of a row that equals the block below it is one
-// decision. On the tuning maps 32 codes 4 % smaller than 16 (fewer flags;
-// the cells of a changed block are cheap given their neighbours) at the same
-// decode speed; 64 is 2 % smaller again but 25 % slower to decode.
-constexpr int kBlockCells = 32;
+// decision; the cells of the other blocks are coded one by one, which is
+// where decoding spends its time. On the tuning maps 16-cell blocks decode
+// 11 % faster than 32-cell blocks for 1.7 % more bytes (32 against 16 before
+// the flags had their present contexts: 4 % smaller); 8-cell blocks are
+// both larger and slower (the flags cost more than the cells they skip).
+constexpr int kBlockCells = 16;
 // Blocks per super-block: a super-block (256 cells) that equals the row
-// below is one decision, which saves the decode time of eight block flags
-// in the quiet parts of a changing row (tuning maps: decode 7 % faster,
-// 0.7 % larger; 4 and 16 measure the same within the noise).
-constexpr int kSuperBlocks = 8;
+// below is one decision, which saves the decode time of sixteen block flags
+// in the quiet parts of a changing row (with 32-cell blocks: decode 7 %
+// faster, 0.7 % larger; 128-cell super-blocks measure the same within the
+// noise).
+constexpr int kSuperBlocks = 16;
 
 // The first byte of a tile's data: bits 0-4 name the model the cells were
 // coded with, bits 5-7 count the zero bytes dropped from the stream's end.
-constexpr std::uint8_t kModelTemplate8 = 0;
 constexpr std::uint8_t kModelMask = 31;
 constexpr int kDroppedShift = 5;
 
@@ -42,7 +45,8 @@ constexpr unsigned kBlockModel = kRowModel + kRowContexts;
 constexpr unsigned kSuperModel = kBlockModel + kBlockContexts;
 constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
-constexpr unsigned kModelCount = kOtherModel + 81 * kHintClasses;
+constexpr unsigned kNearModel = kOtherModel + 81 * kHintClasses;  // model 1 only
+constexpr unsigned kModelCount = kNearModel + 81 * kHintClasses;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -74,6 +78,10 @@ class EncodeIo {
     enc_.Encode(m, bit);
     return bit;
   }
+  int CodeP(std::uint32_t p0, int bit) {
+    enc_.EncodeP(p0, bit);
+    return bit;
+  }
   TileRangeEncoder& encoder() { return enc_; }
 
  private:
@@ -85,6 +93,7 @@ class DecodeIo {
   static constexpr bool kEncoding = false;
   DecodeIo(const std::uint8_t* data, std::size_t size) : dec_(data, size) {}
   int Code(TileBitModel* m, int /*bit*/) { return dec_.Decode(m); }
+  int CodeP(std::uint32_t p0, int /*bit*/) { return dec_.DecodeP(p0); }
   const TileRangeDecoder& decoder() const { return dec_; }
 
  private:
@@ -118,14 +127,46 @@ inline unsigned TemplateOf(const std::uint8_t* cur, const std::uint8_t* n1, cons
 
 // Codes cells [begin, end) of the row `cur` one by one. Each is coded as
 // "equals W" and, if not, as which of the two other values it is.
-template <typename Io>
-void CodeCells(Io& io, TileModelTable& models, std::uint8_t* cur, const std::uint8_t* n1,
-               const std::uint8_t* n2, const std::uint8_t* hint_row, int begin, int end) {
+// Model 1 mixes where the template's estimate of "equals W" lies between
+// 1/32 and 31/32; where it is surer, mixing would not change the cost but
+// would cost decode time (most coded cells are sure).
+constexpr std::uint32_t kSureLow = 65536 / 32;
+constexpr std::uint32_t kSureHigh = 65536 - 65536 / 32;
+// Mixer weight sets: hint class x (W == N).
+constexpr int kMixerSets = static_cast<int>(kHintClasses) * 2;
+
+// The nearest-cells context of a cell (W, N, NW, NE and the hint class).
+inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsigned hint_class) {
+  return (((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1]) * kHintClasses + hint_class;
+}
+
+// Codes cells [begin, end) of the row `cur` one by one. Each is coded as
+// "equals W" and, if not, as which of the two other values it is. With
+// kMix (model 1), an unsure "equals W" is coded with the logistic mix of
+// the template's model and the nearest cells' model.
+template <bool kMix, typename Io>
+void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
+               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
+               int begin, int end) {
   for (int i = begin; i < end; ++i) {
-    const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + kHintClass[hint_row[i] & 15];
+    const unsigned hc = kHintClass[hint_row[i] & 15];
+    const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + hc;
     const unsigned west = cur[i - 1];
     const unsigned v = Io::kEncoding ? cur[i] : 0;
-    if (io.Code(&models[kEqualModel + ctx], v == west)) {
+    TileBitModel& equal = models[kEqualModel + ctx];
+    int eq;
+    if (!kMix || equal.p0() < kSureLow || equal.p0() > kSureHigh) {
+      eq = io.Code(&equal, v == west);
+    } else {
+      TileBitModel& near = models[kNearModel + NearContext(west, n1, i, hc)];
+      const std::uint32_t inputs[2] = {equal.p0(), near.p0()};
+      const std::uint32_t p0 = mixer.Mix(inputs, static_cast<int>(hc * 2 + (west == n1[i])));
+      eq = io.CodeP(p0, v == west);
+      mixer.Update(eq);
+      equal.Update(eq);
+      near.Update(eq);
+    }
+    if (eq) {
       cur[i] = static_cast<std::uint8_t>(west);
       continue;
     }
@@ -134,21 +175,45 @@ void CodeCells(Io& io, TileModelTable& models, std::uint8_t* cur, const std::uin
     const unsigned hi = west == 2 ? 1 : 2;
     // Which of the two is decided by the nearest neighbours alone (W, N,
     // NW, NE and the hint): a smaller table, learned faster.
-    const unsigned small = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
-    const unsigned octx = small * kHintClasses + kHintClass[hint_row[i] & 15];
+    const unsigned octx = NearContext(west, n1, i, hc);
     cur[i] = static_cast<std::uint8_t>(io.Code(&models[kOtherModel + octx], v == hi) ? hi : lo);
   }
 }
 
+// Whether `len` bytes at a and b are equal; `full` says len ==
+// kBlockCells, which is compared inline (a library call per 16-cell block
+// costs as much as coding a cell).
+inline bool SameCells(const std::uint8_t* a, const std::uint8_t* b, std::size_t len, bool full) {
+  if (!full) return std::memcmp(a, b, len) == 0;
+  std::uint64_t x[2], y[2];
+  static_assert(sizeof(x) == kBlockCells);
+  std::memcpy(x, a, sizeof(x));
+  std::memcpy(y, b, sizeof(y));
+  return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+}
+
+// A tile's rows as the scan reads and writes them (the encoder reads
+// `cells`, the decoder writes `canvas`; `hints` null = all zero).
+struct TileRows {
+  int width = 0, height = 0;
+  const Cell* cells = nullptr;
+  std::ptrdiff_t cell_stride = 0;
+  Cell* canvas = nullptr;
+  std::ptrdiff_t canvas_stride = 0;
+  const std::uint8_t* hints = nullptr;
+  std::ptrdiff_t hint_stride = 0;
+};
+
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
-template <typename Io>
-void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints, int width,
-              CellRect tile) {
-  const int tw = tile.x1 - tile.x0;
-  const int th = tile.y1 - tile.y0;
+template <bool kMix, bool kFlags, typename Io>
+void CodeTile(Io& io, const TileRows& t) {
+  const int tw = t.width;
+  const int th = t.height;
+  const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
   TileModelTable models(kModelCount);
+  TileMixer<2> mixer(kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
@@ -161,13 +226,14 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
     std::uint8_t* cur = ring.Row(r + 2);
     const std::uint8_t* n1 = ring.Row(r + 1);
     const std::uint8_t* n2 = ring.Row(r);
-    const std::size_t offset = static_cast<std::size_t>(tile.y0 + r) * width + tile.x0;
-    const std::uint8_t* hint_row = hints ? hints + offset : zero_hints.data();
-    // The hints one row below (read only for r > 0: they may lie outside
-    // the tile but never outside the grid).
-    const std::uint8_t* hint_below = hints && r > 0 ? hint_row - width : zero_hints.data();
-    if constexpr (Io::kEncoding) std::memcpy(cur, cells + offset, static_cast<std::size_t>(tw));
-    const bool hints_same = r > 0 && std::memcmp(hint_row, hint_below, tw) == 0;
+    const std::uint8_t* hint_row = hints ? hints + r * t.hint_stride : zero_hints.data();
+    // The hints one row below (read only for r > 0: inside the tile).
+    const std::uint8_t* hint_below = hints && r > 0 ? hint_row - t.hint_stride : zero_hints.data();
+    if constexpr (Io::kEncoding) {
+      std::memcpy(cur, t.cells + r * t.cell_stride, static_cast<std::size_t>(tw));
+    }
+    const bool hints_same =
+        r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
     const int row_copy =
         io.Code(&models[kRowModel + row_ctx], Io::kEncoding && std::memcmp(cur, n1, tw) == 0);
@@ -176,6 +242,9 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
       std::fill(above_state.begin(), above_state.end(), kStateCopy);
       std::fill(above_super.begin(), above_super.end(), kStateCopy);
       row_state = kStateCopy;
+    } else if (!kFlags) {
+      CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, 0, tw);
+      row_state = kStateCoded;
     } else {
       unsigned left = kStateNone;
       unsigned super_left = kStateNone;
@@ -209,15 +278,18 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
           const int begin = b * kBlockCells;
           const int end = std::min(begin + kBlockCells, tw);
           const std::size_t len = static_cast<std::size_t>(end - begin);
+          const bool full = len == kBlockCells;
           const bool block_hints_same =
               r > 0 &&
-              (hints == nullptr || std::memcmp(hint_row + begin, hint_below + begin, len) == 0);
+              (hints == nullptr || SameCells(hint_row + begin, hint_below + begin, len, full));
           const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
           // Whether the row below is one value over the block and its two
           // neighbours (and which): a uniform area rarely starts a structure.
           // (n1[begin - 1 .. end] all equal each their right neighbour.)
           const unsigned uniform =
-              std::memcmp(n1 + begin - 1, n1 + begin, len + 1) == 0 ? 1u + n1[begin] : 0u;
+              SameCells(n1 + begin - 1, n1 + begin, len, full) && n1[end - 1] == n1[end]
+                  ? 1u + n1[begin]
+                  : 0u;
           const unsigned ctx =
               ((((above_state[b] * 3 + left) * 3 + above_right) * 2 + (block_hints_same ? 1 : 0)) *
                    4 +
@@ -228,11 +300,17 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
               b + 1 == sb_end && !changed
                   ? 0
                   : io.Code(&models[kBlockModel + ctx],
-                            Io::kEncoding && std::memcmp(cur + begin, n1 + begin, len) == 0);
+                            Io::kEncoding && SameCells(cur + begin, n1 + begin, len, full));
           if (copy) {
-            if constexpr (!Io::kEncoding) std::memcpy(cur + begin, n1 + begin, len);
+            if constexpr (!Io::kEncoding) {
+              if (full) {
+                std::memcpy(cur + begin, n1 + begin, kBlockCells);
+              } else {
+                std::memcpy(cur + begin, n1 + begin, len);
+              }
+            }
           } else {
-            CodeCells(io, models, cur, n1, n2, hint_row, begin, end);
+            CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
             changed = true;
           }
           left = copy ? kStateCopy : kStateCoded;
@@ -242,9 +320,24 @@ void CodeTile(Io& io, const Cell* cells, Cell* canvas, const std::uint8_t* hints
       row_state = kStateCoded;
     }
     if constexpr (!Io::kEncoding) {
-      std::memcpy(canvas + offset, cur, static_cast<std::size_t>(tw));
+      std::memcpy(t.canvas + r * t.canvas_stride, cur, static_cast<std::size_t>(tw));
     }
   }
+}
+
+// After the cells, 16 bits of a fixed value at probability 1/2 each: data
+// cut short or altered decodes other cells, and then, but for a chance of
+// 2^-16, another value here; the end check on the bytes read alone misses
+// the truncations that happen to read as many bytes as the stream holds.
+constexpr unsigned kEndMarker = 0xA55A;
+
+template <typename Io>
+unsigned CodeEndMarker(Io& io) {
+  unsigned value = 0;
+  for (int b = 15; b >= 0; --b) {
+    value = value << 1 | static_cast<unsigned>(io.CodeP(1u << 15, (kEndMarker >> b) & 1));
+  }
+  return value;
 }
 
 bool TileInside(CellRect t, int width, int height) {
@@ -252,19 +345,83 @@ bool TileInside(CellRect t, int width, int height) {
          t.x1 <= width && t.y1 <= height;
 }
 
+// Runs the scan of `model` (bit 0: mixed; bit 1: every cell of a changed
+// row, no block flags).
+template <typename Io>
+void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
+  switch (model) {
+    case 0:
+      return CodeTile<false, true>(io, rows);
+    case 1:
+      return CodeTile<true, true>(io, rows);
+    case 2:
+      return CodeTile<false, false>(io, rows);
+    default:
+      return CodeTile<true, false>(io, rows);
+  }
+}
+
+// Codes the tile's cells and the end marker; returns the tile's bytes.
+std::vector<std::uint8_t> EncodeTile(const TileRows& rows, TileModel model) {
+  if (rows.width <= 0 || rows.height <= 0) return {};
+  EncodeIo io;
+  CodeTileAs(io, rows, static_cast<unsigned>(model));
+  CodeEndMarker(io);
+  const int dropped = io.encoder().Finish();
+  std::vector<std::uint8_t> out;
+  out.reserve(io.encoder().bytes().size() + 1);
+  out.push_back(static_cast<std::uint8_t>(static_cast<unsigned>(model) | dropped << kDroppedShift));
+  out.insert(out.end(), io.encoder().bytes().begin(), io.encoder().bytes().end());
+  return out;
+}
+
+Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& rows) {
+  if (rows.width == 0 || rows.height == 0) {
+    if (size != 0) return CorruptError("tile cells: an empty tile has data");
+    return Status::Ok();
+  }
+  if (size == 0) return CorruptError("tile cells: no data");
+  const unsigned model = data[0] & kModelMask;
+  if (model > static_cast<unsigned>(TileModel::kMixedAllCells)) {
+    return CorruptError("tile cells: unknown model " + std::to_string(model));
+  }
+  DecodeIo io(data + 1, size - 1);
+  CodeTileAs(io, rows, model);
+  if (CodeEndMarker(io) != kEndMarker) {
+    return CorruptError("tile cells: range-coded data is malformed or truncated");
+  }
+  // Decoding must read every stored byte and imply exactly the zero bytes
+  // the encoder dropped, so extra or missing bytes mean the data is corrupt.
+  if (!io.decoder().EndsCleanly(data[0] >> kDroppedShift)) {
+    return CorruptError("tile cells: range-coded data is malformed or truncated");
+  }
+  return Status::Ok();
+}
+
+// The rows of `tile` inside a width-wide grid.
+TileRows GridTile(int width, CellRect tile, const std::uint8_t* hints) {
+  TileRows rows;
+  rows.width = tile.x1 - tile.x0;
+  rows.height = tile.y1 - tile.y0;
+  const std::size_t origin = static_cast<std::size_t>(tile.y0) * width + tile.x0;
+  if (hints != nullptr) rows.hints = hints + origin;
+  rows.hint_stride = rows.cell_stride = rows.canvas_stride = width;
+  return rows;
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
                                           int height, CellRect tile) {
+  return EncodeTileCells(cells, hints, width, height, tile, TileModel::kTemplate);
+}
+
+std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,
+                                          int height, CellRect tile, TileModel model) {
   if (!TileInside(tile, width, height) || tile.x0 == tile.x1 || tile.y0 == tile.y1) return {};
-  EncodeIo io;
-  CodeTile(io, cells, nullptr, hints, width, tile);
-  const int dropped = io.encoder().Finish();
-  std::vector<std::uint8_t> out;
-  out.reserve(io.encoder().bytes().size() + 1);
-  out.push_back(static_cast<std::uint8_t>(kModelTemplate8 | dropped << kDroppedShift));
-  out.insert(out.end(), io.encoder().bytes().begin(), io.encoder().bytes().end());
-  return out;
+  TileRows rows = GridTile(width, tile, hints);
+  rows.cells = cells + (static_cast<std::size_t>(tile.y0) * width + tile.x0);
+  return EncodeTile(rows, model);
 }
 
 Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
@@ -275,22 +432,39 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
                                 std::to_string(tile.y1) + ") lies outside the " +
                                 std::to_string(width) + " x " + std::to_string(height) + " grid");
   }
-  if (tile.x0 == tile.x1 || tile.y0 == tile.y1) {
-    if (size != 0) return CorruptError("tile cells: an empty tile has data");
-    return Status::Ok();
+  TileRows rows = GridTile(width, tile, hints);
+  rows.canvas = canvas + (static_cast<std::size_t>(tile.y0) * width + tile.x0);
+  return DecodeTile(data, size, rows);
+}
+
+std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_stride,
+                                         const std::uint8_t* hints, std::ptrdiff_t hint_stride,
+                                         int tile_width, int tile_height, TileModel model) {
+  TileRows rows;
+  rows.width = tile_width;
+  rows.height = tile_height;
+  rows.cells = cells;
+  rows.cell_stride = cell_stride;
+  rows.hints = hints;
+  rows.hint_stride = hint_stride;
+  return EncodeTile(rows, model);
+}
+
+Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
+                      std::ptrdiff_t canvas_stride) {
+  if (tile_width < 0 || tile_height < 0) {
+    return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
+                                std::to_string(tile_height) + " cells");
   }
-  if (size == 0) return CorruptError("tile cells: no data");
-  if ((data[0] & kModelMask) != kModelTemplate8) {
-    return CorruptError("tile cells: unknown model " + std::to_string(data[0] & kModelMask));
-  }
-  DecodeIo io(data + 1, size - 1);
-  CodeTile(io, nullptr, canvas, hints, width, tile);
-  // Decoding must read every stored byte and imply exactly the zero bytes
-  // the encoder dropped, so extra or missing bytes mean the data is corrupt.
-  if (!io.decoder().EndsCleanly(data[0] >> kDroppedShift)) {
-    return CorruptError("tile cells: range-coded data is malformed or truncated");
-  }
-  return Status::Ok();
+  TileRows rows;
+  rows.width = tile_width;
+  rows.height = tile_height;
+  rows.canvas = canvas;
+  rows.canvas_stride = canvas_stride;
+  rows.hints = hints;
+  rows.hint_stride = hint_stride;
+  return DecodeTile(data, size, rows);
 }
 
 }  // namespace linemap

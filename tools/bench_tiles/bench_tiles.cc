@@ -11,11 +11,17 @@
 // `cjxl -d 0 -e 9 -E 3 -I 100 -g 3` sizes of those PGMs) and adds columns.
 //
 // Per map: cells; PNG-9 bytes (the smallest of libpng's 8-bit grey, 8-bit
-// palette and 2-bit palette at level 9, as `linemap bench` takes it) and libpng's decode ns/cell;
-// the 1.0 planes' bytes; the tile coder's bytes without hints, with hints (BuildLayerHints) and
-// their ratio to PNG-9; encode and decode CPU ns/cell without hints. --sizes adds the bytes at 256
-// and 512 tiles. Tuning maps and held-out maps are listed and summarised (medians) separately: the
-// coder's parameters were chosen on the tuning maps only.
+// palette and 2-bit palette at level 9, as `linemap bench` takes it) and
+// libpng's decode CPU ns per cell; the 1.0 planes' bytes; the tile coder's
+// bytes for TileModel kTemplate (tile, hinted), kMixed (mix, hmix) and
+// kMixedAllCells (mall, hmall), without and with hints (BuildLayerHints),
+// and their ratios to PNG-9; encode and decode CPU ns per cell (dec: no
+// hints, hdec: hints, hmdec: kMixed with hints, madec: kMixedAllCells
+// without hints) and decode time over libpng's. --sizes adds the kTemplate
+// bytes with 256 x 256 and 512 x 512 tiles. Tuning maps and held-out maps
+// are listed and summarised (medians) separately: the coder's parameters
+// were chosen on the tuning maps only. Every coding is decoded and compared
+// with the map (exit 1 if one differs).
 #include <time.h>
 
 #include <algorithm>
@@ -98,11 +104,11 @@ std::vector<CellRect> Tiles(int width, int height, int tile) {
   return out;
 }
 
-std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints,
-                                                 int tile) {
+std::vector<std::vector<std::uint8_t>> EncodeAll(const Grid& g, const std::uint8_t* hints, int tile,
+                                                 TileModel model = TileModel::kTemplate) {
   std::vector<std::vector<std::uint8_t>> out;
   for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
-    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t));
+    out.push_back(EncodeTileCells(g.cells().data(), hints, g.width(), g.height(), t, model));
   }
   return out;
 }
@@ -141,11 +147,17 @@ std::size_t PlanesBytes(const Grid& g) {
   return n + EncodeFreePlane(free, canvas, g.width(), g.height()).size();
 }
 
+// Bytes and CPU ns per cell of one way of coding a map.
+struct Coded {
+  double bytes = 0, enc_ns = 0, dec_ns = 0;
+};
+
 struct Row {
   std::string name;
   bool tuning = false;
-  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, plain = 0, hinted = 0, enc_ns = 0,
-         dec_ns = 0, t256 = 0, t512 = 0, jxl = 0;
+  double cells = 0, png = 0, png_dec_ns = 0, planes = 0, t256 = 0, t512 = 0, jxl = 0;
+  Coded plain, hinted, mixed, mixed_hinted;  // template / mixed model, without / with hints
+  Coded smallest, smallest_hinted;           // kMixedAllCells without / with hints
 };
 
 double Median(std::vector<double> v) {
@@ -166,14 +178,26 @@ const Column kColumns[] = {
     {"cells", " %9.0f", [](const Row& r) { return r.cells; }},
     {"png9", " %7.0f", [](const Row& r) { return r.png; }},
     {"v1pl", " %7.0f", [](const Row& r) { return r.planes; }},
-    {"tile", " %7.0f", [](const Row& r) { return r.plain; }},
-    {"hinted", " %7.0f", [](const Row& r) { return r.hinted; }},
-    {"t/png", " %6.3f", [](const Row& r) { return r.plain / r.png; }},
-    {"h/png", " %6.3f", [](const Row& r) { return r.hinted / r.png; }},
+    {"tile", " %7.0f", [](const Row& r) { return r.plain.bytes; }},
+    {"hinted", " %7.0f", [](const Row& r) { return r.hinted.bytes; }},
+    {"mix", " %7.0f", [](const Row& r) { return r.mixed.bytes; }},
+    {"hmix", " %7.0f", [](const Row& r) { return r.mixed_hinted.bytes; }},
+    {"mall", " %7.0f", [](const Row& r) { return r.smallest.bytes; }},
+    {"hmall", " %7.0f", [](const Row& r) { return r.smallest_hinted.bytes; }},
+    {"t/png", " %6.3f", [](const Row& r) { return r.plain.bytes / r.png; }},
+    {"ma/png", " %6.3f", [](const Row& r) { return r.smallest.bytes / r.png; }},
+    {"h/png", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.png; }},
+    {"hm/png", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.png; }},
+    {"hma/png", " %7.3f", [](const Row& r) { return r.smallest_hinted.bytes / r.png; }},
     {"pngdec", " %6.2f", [](const Row& r) { return r.png_dec_ns; }},
-    {"enc", " %6.2f", [](const Row& r) { return r.enc_ns; }},
-    {"dec", " %6.2f", [](const Row& r) { return r.dec_ns; }},
-    {"d/png", " %6.3f", [](const Row& r) { return r.dec_ns / r.png_dec_ns; }},
+    {"enc", " %6.2f", [](const Row& r) { return r.plain.enc_ns; }},
+    {"dec", " %6.2f", [](const Row& r) { return r.plain.dec_ns; }},
+    {"hdec", " %6.2f", [](const Row& r) { return r.hinted.dec_ns; }},
+    {"hmdec", " %6.2f", [](const Row& r) { return r.mixed_hinted.dec_ns; }},
+    {"madec", " %6.2f", [](const Row& r) { return r.smallest.dec_ns; }},
+    {"d/png", " %6.3f", [](const Row& r) { return r.plain.dec_ns / r.png_dec_ns; }},
+    {"hd/png", " %6.3f", [](const Row& r) { return r.hinted.dec_ns / r.png_dec_ns; }},
+    {"hmd/png", " %7.3f", [](const Row& r) { return r.mixed_hinted.dec_ns / r.png_dec_ns; }},
 };
 const Column kSizeColumns[] = {
     {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
@@ -181,8 +205,11 @@ const Column kSizeColumns[] = {
 };
 const Column kJxlColumns[] = {
     {"jxl", " %7.0f", [](const Row& r) { return r.jxl; }},
-    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain / r.jxl; }},
-    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted / r.jxl; }},
+    {"t/jxl", " %6.3f", [](const Row& r) { return r.plain.bytes / r.jxl; }},
+    {"h/jxl", " %6.3f", [](const Row& r) { return r.hinted.bytes / r.jxl; }},
+    {"m/jxl", " %6.3f", [](const Row& r) { return r.mixed.bytes / r.jxl; }},
+    {"hm/jxl", " %6.3f", [](const Row& r) { return r.mixed_hinted.bytes / r.jxl; }},
+    {"ma/jxl", " %6.3f", [](const Row& r) { return r.smallest.bytes / r.jxl; }},
 };
 
 void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) {
@@ -247,6 +274,22 @@ double JxlBytes(const std::string& file, const std::string& name) {
   return found;
 }
 
+// Encodes and decodes `g` in tiles, timing both; false when the decode
+// fails or differs from `g`.
+bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out) {
+  const double cells = static_cast<double>(g.size());
+  std::vector<std::vector<std::uint8_t>> data;
+  out->enc_ns =
+      1e9 / cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, hints, tile, model); });
+  out->bytes = static_cast<double>(TotalBytes(data));
+  std::vector<Cell> decoded(g.size(), Cell::kFree);
+  bool ok = true;
+  out->dec_ns = 1e9 / cells * MinSeconds(g.size(), [&] {
+                  ok = ok && DecodeAll(data, hints, g.width(), g.height(), tile, &decoded);
+                });
+  return ok && decoded == g.cells();
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
@@ -308,33 +351,28 @@ int Run(int argc, char** argv) {
         1e9 / r.cells * MinSeconds(g.size(), [&] { (void)bench::DecodeTrinaryPng(png_bytes); });
     r.planes = static_cast<double>(PlanesBytes(g));
 
-    std::vector<std::vector<std::uint8_t>> data;
-    r.enc_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, nullptr, tile); });
-    r.plain = static_cast<double>(TotalBytes(data));
-    std::vector<Cell> out(g.size(), Cell::kFree);
-    bool ok = true;
-    r.dec_ns = 1e9 / r.cells * MinSeconds(g.size(), [&] {
-                 ok = ok && DecodeAll(data, nullptr, g.width(), g.height(), tile, &out);
-               });
-    if (!ok || out != g.cells()) {
+    std::vector<std::uint8_t> hints;
+    if (hints_on) {
+      StatusOr<std::vector<std::uint8_t>> built = BuildLayerHints(g);
+      if (!built.ok()) {
+        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
+                     built.status().ToString().c_str());
+        return 1;
+      }
+      hints = std::move(*built);
+    }
+    const std::uint8_t* hint_ptr = hints_on ? hints.data() : nullptr;
+    bool ok = Measure(g, nullptr, tile, TileModel::kTemplate, &r.plain) &&
+              Measure(g, nullptr, tile, TileModel::kMixed, &r.mixed) &&
+              Measure(g, nullptr, tile, TileModel::kMixedAllCells, &r.smallest);
+    if (hints_on) {
+      ok = ok && Measure(g, hint_ptr, tile, TileModel::kTemplate, &r.hinted) &&
+           Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted) &&
+           Measure(g, hint_ptr, tile, TileModel::kMixedAllCells, &r.smallest_hinted);
+    }
+    if (!ok) {
       std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
       return 1;
-    }
-    if (hints_on) {
-      StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
-      if (!hints.ok()) {
-        std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
-                     hints.status().ToString().c_str());
-        return 1;
-      }
-      const auto hinted = EncodeAll(g, hints->data(), tile);
-      r.hinted = static_cast<double>(TotalBytes(hinted));
-      std::fill(out.begin(), out.end(), Cell::kFree);
-      if (!DecodeAll(hinted, hints->data(), g.width(), g.height(), tile, &out) ||
-          out != g.cells()) {
-        std::fprintf(stderr, "bench_tiles: %s: hinted round trip FAILED\n", m.path);
-        return 1;
-      }
     }
     if (sizes) {
       r.t256 = static_cast<double>(TotalBytes(EncodeAll(g, nullptr, 256)));
@@ -345,8 +383,9 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "%s done\n", m.path);
   }
   std::printf(
-      "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell); "
-      "enc/dec without hints\n",
+      "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell)\n"
+      "tile/hinted: TileModel::kTemplate without/with hints; mix/hmix: TileModel::kMixed; "
+      "mall/hmall: TileModel::kMixedAllCells\n",
       tile);
   PrintRows(rows, true, sizes, !jxl_file.empty());
   PrintRows(rows, false, sizes, !jxl_file.empty());

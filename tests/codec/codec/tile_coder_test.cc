@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -96,8 +98,11 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
       tile = CellRect{width - 1, height - 1, width, height};  // the corner cell
     }
     SCOPED_TRACE("iteration " + std::to_string(iter));
-    const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile);
-    ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kTemplateAllCells,
+                            TileModel::kMixedAllCells}) {
+      const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
+      ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
+    }
   }
 }
 
@@ -142,6 +147,46 @@ TEST(TileCoderTest, BytesDependOnlyOnTheTilesCells) {
   }
 }
 
+// A tile copied into buffers of its own (with a wider stride than the
+// tile, as a band buffer would have) codes to the same bytes, and decodes
+// into such a buffer.
+TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
+  std::mt19937 rng(5);
+  for (int iter = 0; iter < 60; ++iter) {
+    const int width = 1 + static_cast<int>(rng() % 300);
+    const int height = 1 + static_cast<int>(rng() % 30);
+    const std::vector<Cell> cells = RandomGrid(rng, width, height);
+    std::vector<std::uint8_t> hints(cells.size());
+    for (auto& h : hints) h = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    const CellRect t = RandomTile(rng, width, height);
+    const int tw = t.x1 - t.x0, th = t.y1 - t.y0, stride = tw + 3;
+    std::vector<Cell> local_cells(static_cast<std::size_t>(stride) * th + 1, Cell::kFree);
+    std::vector<std::uint8_t> local_hints(local_cells.size(), 0);
+    for (int y = 0; y < th; ++y) {
+      for (int x = 0; x < tw; ++x) {
+        const std::size_t from = static_cast<std::size_t>(t.y0 + y) * width + t.x0 + x;
+        local_cells[static_cast<std::size_t>(y) * stride + x] = cells[from];
+        local_hints[static_cast<std::size_t>(y) * stride + x] = hints[from];
+      }
+    }
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed}) {
+      const Bytes data =
+          EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
+      ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
+      std::vector<Cell> out(local_cells.size(), Cell::kUnknown);
+      ASSERT_TRUE(DecodeTileRows(data.data(), data.size(), local_hints.data(), stride, tw, th,
+                                 out.data(), stride)
+                      .ok());
+      for (int y = 0; y < th; ++y) {
+        for (int x = 0; x < stride; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * stride + x;
+          ASSERT_EQ(out[i], x < tw ? local_cells[i] : Cell::kUnknown) << x << ", " << y;
+        }
+      }
+    }
+  }
+}
+
 std::vector<CellRect> Tiles(int width, int height, int size) {
   std::vector<CellRect> out;
   for (int y = 0; y < height; y += size) {
@@ -175,10 +220,12 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
+        // The four models in turn over the tiles: the decoder reads each.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t));
+          const TileModel model = static_cast<TileModel>(data.size() % 4);
+          data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
         for (std::size_t k = tiles.size(); k-- > 0;) {
@@ -207,10 +254,14 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
   const Bytes data = EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all);
   ASSERT_GT(data.size(), 10u);
   std::vector<Cell> canvas(g.size());
-  for (std::size_t n = 0; n < data.size(); ++n) {
-    EXPECT_FALSE(
-        DecodeTileCells(data.data(), n, nullptr, g.width(), g.height(), all, canvas.data()).ok())
-        << "truncated to " << n << " of " << data.size() << " bytes";
+  const Bytes mixed =
+      EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all, TileModel::kMixed);
+  for (const Bytes* d : {&data, &mixed}) {
+    for (std::size_t n = 0; n < d->size(); ++n) {
+      EXPECT_FALSE(
+          DecodeTileCells(d->data(), n, nullptr, g.width(), g.height(), all, canvas.data()).ok())
+          << "truncated to " << n << " of " << d->size() << " bytes";
+    }
   }
   for (std::uint8_t extra : {0, 1, 255}) {
     Bytes longer = data;
@@ -220,7 +271,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                      .ok());
   }
   Bytes bad_model = data;
-  bad_model[0] ^= 1;
+  bad_model[0] |= 4;  // model 4 and up do not exist
   EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
                                all, canvas.data())
                    .ok());
@@ -234,22 +285,28 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
   }
 }
 
-
 // An independent encoder written from spec/tile_coding.md's words, plainly
 // (no row buffers, no padding, bounds tested per cell): the library's bytes
 // must equal it, so the spec and the code say the same thing.
 class SpecEncoder {
  public:
+  // `model` as the tile's model id: bit 0 mixed, bit 1 every cell.
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
-              CellRect tile)
-      : cells_(cells), hints_(hints), width_(width), t_(tile) {}
+              CellRect tile, int model)
+      : cells_(cells),
+        hints_(hints),
+        width_(width),
+        t_(tile),
+        model_(model),
+        mixed_((model & 1) != 0),
+        all_cells_((model & 2) != 0) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
     const int th = t_.y1 - t_.y0;
     if (tw == 0 || th == 0) return {};
-    const int blocks = (tw + 31) / 32;
-    std::vector<int> above_block(blocks, 2), above_super((blocks + 7) / 8, 2);
+    const int blocks = (tw + 15) / 16;
+    std::vector<int> above_block(blocks, 2), above_super((blocks + 15) / 16, 2);
     int row_state = 2;
     for (int r = 0; r < th; ++r) {
       const bool row_copy = RangeEqualsBelow(0, tw, r);
@@ -261,10 +318,14 @@ class SpecEncoder {
         continue;
       }
       row_state = 0;
+      if (all_cells_) {
+        for (int c = 0; c < tw; ++c) CodeCell(c, r);
+        continue;
+      }
       const std::vector<int> below_block = above_block;  // states after the row below
       int left = 2, left_super = 2;
-      for (int k = 0; k * 8 < blocks; ++k) {
-        const int b_end = std::min(8 * k + 8, blocks);
+      for (int k = 0; k * 16 < blocks; ++k) {
+        const int b_end = std::min(16 * k + 16, blocks);
         const int a = 256 * k, e = std::min(256 * k + 256, tw);
         const bool super_copy = RangeEqualsBelow(a, e, r);
         Bit(kSuper + ((above_super[k] * 3 + left_super) * 2 + HintsSame(a, e, r)) * 4 +
@@ -272,13 +333,13 @@ class SpecEncoder {
             super_copy);
         above_super[k] = left_super = super_copy ? 1 : 0;
         if (super_copy) {
-          for (int b = 8 * k; b < b_end; ++b) above_block[b] = 1;
+          for (int b = 16 * k; b < b_end; ++b) above_block[b] = 1;
           left = 1;
           continue;
         }
         bool changed = false;
-        for (int b = 8 * k; b < b_end; ++b) {
-          const int ba = 32 * b, be = std::min(32 * b + 32, tw);
+        for (int b = 16 * k; b < b_end; ++b) {
+          const int ba = 16 * b, be = std::min(16 * b + 16, tw);
           const int above_right = b + 1 < blocks ? below_block[b + 1] : 2;
           bool copy = RangeEqualsBelow(ba, be, r);
           if (b + 1 == b_end && !changed) {
@@ -298,12 +359,13 @@ class SpecEncoder {
         }
       }
     }
+    for (int b = 15; b >= 0; --b) Code(32768, (0xA55A >> b) & 1);  // end marker
     return Finish();
   }
 
  private:
   static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
-                       kOther = kEqual + 32805;
+                       kOther = kEqual + 32805, kNear = kOther + 405;
   struct Model {
     std::uint32_t fast = 32768, slow = 32768, n = 0;
   };
@@ -344,11 +406,83 @@ class SpecEncoder {
                       3 * (V(c - 1, r - 1) +
                            3 * (V(c, r - 1) +
                                 3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
-    Bit(kEqual + t * 5 + hc, v == w);
+    const int near = (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc;
+    const std::uint32_t p_equal = P0(models_[kEqual + t * 5 + hc]);
+    if (mixed_ && p_equal >= 2048 && p_equal <= 63488) {
+      MixedBit(kEqual + t * 5 + hc, kNear + near, hc * 2 + (w == V(c, r - 1) ? 1 : 0), v == w);
+    } else {
+      Bit(kEqual + t * 5 + hc, v == w);
+    }
     if (v == w) return;
     const int hi = w == 2 ? 1 : 2;
-    Bit(kOther + (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc,
-        v == hi);
+    Bit(kOther + near, v == hi);
+  }
+  static std::uint32_t P0(const Model& m) { return (m.fast + m.slow) >> 1; }
+  static int Squash(int d) {
+    static const int kT[33] = {1,    2,    3,    6,    10,   16,   27,   45,   73,   120,  194,
+                               310,  488,  747,  1101, 1546, 2047, 2549, 2994, 3348, 3607, 3785,
+                               3901, 3975, 4022, 4050, 4068, 4079, 4085, 4089, 4092, 4093, 4094};
+    const int k = static_cast<int>(std::floor(d / 128.0)) + 16;
+    const int w = d - (k - 16) * 128;
+    return (kT[k] * (128 - w) + kT[k + 1] * w + 64) / 128;
+  }
+  // The least d in [-2047, 2047] with Squash(d) >= p, else 2047 (found by
+  // search, once per p).
+  int Stretch(int p) {
+    std::vector<int>& memo = stretch_memo_;
+    if (memo[p] == 4096) {
+      memo[p] = 2047;
+      for (int d = -2047; d <= 2047; ++d) {
+        if (Squash(d) >= p) {
+          memo[p] = d;
+          break;
+        }
+      }
+    }
+    return memo[p];
+  }
+  void MixedBit(int equal, int near, int set, bool one) {
+    std::int64_t* w = weights_[set];
+    const int st[2] = {Stretch(static_cast<int>((65535 - P0(models_[equal])) / 16)),
+                       Stretch(static_cast<int>((65535 - P0(models_[near])) / 16))};
+    const std::int64_t dot = w[0] * st[0] + w[1] * st[1];
+    const std::int64_t d = std::clamp<std::int64_t>(
+        static_cast<std::int64_t>(std::floor(static_cast<double>(dot) / 65536.0)), -2047, 2047);
+    const int p1 = std::clamp(Squash(static_cast<int>(d)), 1, 4095);
+    Code(static_cast<std::uint32_t>(4096 - p1) * 16, one);
+    const int err = ((one ? 4096 : 0) - p1) * 2;
+    for (int k = 0; k < 2; ++k) {
+      w[k] = std::clamp<std::int64_t>(
+          w[k] + static_cast<std::int64_t>(std::floor(st[k] * err / 1024.0)), -(1 << 24), 1 << 24);
+    }
+    Update(models_[equal], one);
+    Update(models_[near], one);
+  }
+  void Code(std::uint32_t p0, bool one) {
+    const std::uint32_t bound = (range_ >> 16) * p0;
+    if (!one) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    while (range_ < (1u << 24)) {
+      range_ <<= 8;
+      ShiftLow();
+    }
+  }
+  static void Update(Model& m, bool one) {
+    const std::uint32_t ss =
+        std::min(static_cast<std::uint32_t>(std::floor(std::log2(m.n + 2.0))), 7u);
+    const std::uint32_t fs = std::min(ss, 2u);
+    if (!one) {
+      m.fast += (65536 - m.fast) >> fs;
+      m.slow += (65536 - m.slow) >> ss;
+    } else {
+      m.fast -= m.fast >> fs;
+      m.slow -= m.slow >> ss;
+    }
+    m.n = std::min(m.n + 1, 126u);
   }
   void Bit(int context, bool one) {
     Model& m = models_[context];
@@ -359,7 +493,9 @@ class SpecEncoder {
       low_ += bound;
       range_ -= bound;
     }
-    const std::uint32_t s = m.n + 1, fs = std::min(s, 3u), ss = std::min(s, 6u);
+    const std::uint32_t ss =
+        std::min(static_cast<std::uint32_t>(std::floor(std::log2(m.n + 2.0))), 7u);
+    const std::uint32_t fs = std::min(ss, 2u);
     if (!one) {
       m.fast += (65536 - m.fast) >> fs;
       m.slow += (65536 - m.slow) >> ss;
@@ -367,7 +503,7 @@ class SpecEncoder {
       m.fast -= m.fast >> fs;
       m.slow -= m.slow >> ss;
     }
-    m.n = std::min(m.n + 1, 5u);
+    m.n = std::min(m.n + 1, 126u);
     while (range_ < (1u << 24)) {
       range_ <<= 8;
       ShiftLow();
@@ -400,7 +536,7 @@ class SpecEncoder {
       out_.pop_back();
       ++dropped;
     }
-    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5));
+    out_.insert(out_.begin(), static_cast<std::uint8_t>(dropped << 5 | model_));
     return out_;
   }
 
@@ -408,7 +544,14 @@ class SpecEncoder {
   const std::vector<std::uint8_t>& hints_;
   int width_;
   CellRect t_;
-  std::vector<Model> models_ = std::vector<Model>(kOther + 405);
+  int model_;
+  bool mixed_;
+  bool all_cells_;
+  std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
+  std::vector<Model> models_ = std::vector<Model>(kNear + 405);
+  std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
+                                  {19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
+                                  {19661, 19661}, {19661, 19661}};
   std::uint64_t low_ = 0;
   std::uint32_t range_ = 0xFFFFFFFFu;
   std::uint8_t cache_ = 0;
@@ -430,15 +573,29 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     }
     const CellRect tile = iter % 3 ? RandomTile(rng, width, height) : CellRect{0, 0, width, height};
     SCOPED_TRACE("iteration " + std::to_string(iter));
-    EXPECT_EQ(
-        EncodeTileCells(cells.data(), hints.empty() ? nullptr : hints.data(), width, height, tile),
-        SpecEncoder(cells, hints, width, tile).Encode());
+    const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
+    EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
+              SpecEncoder(cells, hints, width, tile, 0).Encode());
+    for (int model = 0; model < 4; ++model) {
+      EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile,
+                                static_cast<TileModel>(model)),
+                SpecEncoder(cells, hints, width, tile, model).Encode())
+          << "model " << model;
+    }
   }
   for (const Grid& g : BundledMaps()) {
+    StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+    ASSERT_TRUE(hints.ok()) << hints.status().ToString();
     const std::vector<std::uint8_t> none;
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
-              SpecEncoder(g.cells(), none, g.width(), all).Encode());
+              SpecEncoder(g.cells(), none, g.width(), all, 0).Encode());
+    for (int model = 1; model < 4; ++model) {
+      EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
+                                static_cast<TileModel>(model)),
+                SpecEncoder(g.cells(), *hints, g.width(), all, model).Encode())
+          << "model " << model;
+    }
   }
 }
 
