@@ -1,8 +1,11 @@
 #include "tools/linemap/bag_input.h"
 
+#include <dlfcn.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -11,13 +14,7 @@
 
 #include "format/file_io.h"
 #include "linemap/occupancy_grid.h"
-
-#ifdef LINEMAP_HAVE_ROSBAG
-#include <rosbag/bag.h>
-#include <rosbag/view.h>
-
-#include "ros/ros_conversion.h"
-#endif
+#include "ros/bag_reader.h"
 
 namespace linemap::cli {
 
@@ -27,8 +24,8 @@ std::vector<OptionSpec> WithBagOptions(std::vector<OptionSpec> options) {
                      "(default /map); the last one unless --index or --all"});
   options.push_back({"--index", "K", "bag: encode the K-th map on the topic (0 = first)"});
   options.push_back({"--all", "",
-                     "bag: encode every map on the topic into the folder -o names, as "
-                     "SEC_NSEC.lmap by the header stamps"});
+                     "bag: encode every map on the topic into the folder -o names (made when "
+                     "missing), as SEC_NSEC.lmap by the header stamps"});
   return options;
 }
 
@@ -37,10 +34,9 @@ bool IsBagInput(const std::string& input, const ParsedArgs& args) {
          args.Has("--all");
 }
 
-#ifdef LINEMAP_HAVE_ROSBAG
 namespace {
 
-// What selects the messages, read from the arguments.
+// What selects the messages and where they go, read from the arguments.
 struct BagSelection {
   std::string topic = "/map";
   std::optional<std::uint64_t> index;  // nullopt: the last (or all)
@@ -60,7 +56,11 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
   selection.all = args.Has("--all");
   if (args.Get("--index")) {
     if (selection.all) return InvalidArgumentError("give --index K or --all, not both");
-    LINEMAP_ASSIGN_OR_RETURN(selection.index, args.GetUint64("--index", 0));
+    LINEMAP_ASSIGN_OR_RETURN(selection.index,
+                             args.GetUint64("--index", 0, /*min=*/0));
+    if (*selection.index > static_cast<std::uint64_t>(INT64_MAX)) {
+      return InvalidArgumentError("--index is too large");
+    }
   }
   std::optional<std::string> out = args.Get("-o");
   if (!out) {
@@ -71,7 +71,11 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
   if (!selection.all && !selection.out.ends_with(".lmap")) {
     return InvalidArgumentError("output '" + selection.out + "' must end in .lmap");
   }
-  // map_saver's thresholds read the int8 occupancies unless overridden.
+  if (!selection.all && IsDirectory(selection.out)) {
+    return InvalidArgumentError("'" + selection.out + "' is a directory");
+  }
+  // The int8 occupancies are read with map_saver's thresholds (0.65 / 0.25)
+  // unless these are given.
   if (args.Get("--occupied-thresh")) {
     LINEMAP_ASSIGN_OR_RETURN(selection.thresholds.occupied,
                              args.GetDouble("--occupied-thresh", 0.65));
@@ -94,141 +98,128 @@ Status EnsureFolder(const std::string& dir) {
   return Status::Ok();
 }
 
-Status EncodeGridTo(const Grid& grid, const std::string& path, const EncodeOptions& options,
-                    Durability durability, std::size_t* bytes_written) {
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, EncodeLmap(grid, options));
+#ifdef LINEMAP_ROSBAG_MODULE_NAME
+// The folder of the running program, with its trailing slash ("" if unknown).
+std::string ProgramFolder() {
+  char path[PATH_MAX];
+  const ssize_t n = ::readlink("/proc/self/exe", path, sizeof(path) - 1);
+  if (n <= 0) return "";
+  const std::string program(path, static_cast<std::size_t>(n));
+  return program.substr(0, program.rfind('/') + 1);
+}
+#endif
+
+// Loads the bag reader module: $LINEMAP_ROSBAG_MODULE when set, else
+// liblinemap_rosbag.so beside the program (the build tree), else in the
+// installed module folder relative to it.
+StatusOr<ros_bridge::BagMapReaderFn> LoadBagReader() {
+#ifdef LINEMAP_ROSBAG_MODULE_NAME
+  std::vector<std::string> candidates;
+  if (const char* env = std::getenv("LINEMAP_ROSBAG_MODULE"); env != nullptr && env[0] != '\0') {
+    candidates.push_back(env);
+  } else {
+    const std::string folder = ProgramFolder();
+    candidates.push_back(folder + LINEMAP_ROSBAG_MODULE_NAME);
+    candidates.push_back(folder + LINEMAP_ROSBAG_MODULE_INSTALL_FOLDER "/" LINEMAP_ROSBAG_MODULE_NAME);
+  }
+  std::string errors;
+  for (const std::string& candidate : candidates) {
+    if (::access(candidate.c_str(), F_OK) != 0) continue;
+    // The module stays loaded until the program exits (ROS libraries do
+    // not support being unloaded).
+    void* handle = ::dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr) {
+      errors += std::string("; ") + ::dlerror();
+      continue;
+    }
+    void* symbol = ::dlsym(handle, ros_bridge::kBagReaderSymbol);
+    if (symbol != nullptr) return reinterpret_cast<ros_bridge::BagMapReaderFn>(symbol);
+    errors += "; " + candidate + " has no " + ros_bridge::kBagReaderSymbol;
+  }
+  return IoError("cannot load the ROS 1 bag reader " LINEMAP_ROSBAG_MODULE_NAME " (looked in " +
+                 candidates.front() + (candidates.size() > 1 ? " and " + candidates.back() : "") +
+                 ")" + errors);
+#else
+  return UnsupportedError(
+      "this linemap was built without ROS 1 bag support (rosbag was not found when it was "
+      "built; install librosbag-dev libnav-msgs-dev and rebuild)");
+#endif
+}
+
+// Encodes each map the reader hands over; the first failure stops the read.
+struct EncodeVisit {
+  const BagSelection* selection;
+  const EncodeOptions* options;
+  std::string bag_path;
+  std::set<std::string> names;  // --all: file names given so far
+  Status status;
+};
+
+StatusOr<std::string> OutputPath(EncodeVisit* visit, const std::string& stamp) {
+  if (!visit->selection->all) return visit->selection->out;
+  // Two maps with one stamp get _1, _2, ... after the first.
+  std::string name = stamp;
+  for (int n = 1; visit->names.count(name) > 0; ++n) name = stamp + "_" + std::to_string(n);
+  visit->names.insert(name);
+  const std::string& dir = visit->selection->out;
+  return dir + (dir.ends_with("/") ? "" : "/") + name + ".lmap";
+}
+
+Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
+                 const std::string& stamp, const OccupancyGridMessage& message) {
+  const BagSelection& selection = *visit->selection;
+  const std::string where =
+      "'" + visit->bag_path + "' " + selection.topic + " message " + std::to_string(index);
+  StatusOr<Grid> grid = GridFromOccupancyGrid(message, selection.thresholds, selection.max_cells);
+  if (!grid.ok()) return grid.status().WithContext(where);
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *visit->options);
+  if (!bytes.ok()) return bytes.status().WithContext(where);
+  LINEMAP_ASSIGN_OR_RETURN(std::string out, OutputPath(visit, stamp));
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(
-      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
-      durability));
-  *bytes_written = bytes.size();
+      out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+      selection.durability));
+  std::printf("%s message %llu of %llu: %d x %d cells -> %s, %zu bytes\n", selection.topic.c_str(),
+              static_cast<unsigned long long>(index), static_cast<unsigned long long>(count),
+              grid->width(), grid->height(), out.c_str(), bytes->size());
   return Status::Ok();
 }
 
-constexpr const char* kMapType = "nav_msgs/OccupancyGrid";
-
-// "the topics it holds", for the message when the asked one is missing.
-std::string DescribeTopics(const rosbag::Bag& bag) {
-  rosbag::View view(bag);
-  std::string text;
-  std::set<std::string> seen;
-  for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
-    if (!seen.insert(connection->topic).second) continue;
-    rosbag::View topic_view(bag, rosbag::TopicQuery(connection->topic));
-    if (!text.empty()) text += ", ";
-    text += connection->topic + " (" + connection->datatype + ", " +
-            std::to_string(topic_view.size()) + " messages)";
-  }
-  return text.empty() ? "no messages" : text;
-}
-
-// Checks that the topic exists in the bag and carries maps only.
-Status CheckTopic(const rosbag::Bag& bag, const std::string& bag_path, const std::string& topic) {
-  rosbag::View view(bag, rosbag::TopicQuery(topic));
-  if (view.size() == 0) {
-    return InvalidArgumentError("'" + bag_path + "' has no messages on topic '" + topic +
-                                "'; it holds " + DescribeTopics(bag));
-  }
-  for (const rosbag::ConnectionInfo* connection : view.getConnections()) {
-    if (connection->datatype != kMapType) {
-      return InvalidArgumentError("'" + bag_path + "': topic '" + topic + "' holds " +
-                                  connection->datatype + ", not " + kMapType);
-    }
-  }
-  return Status::Ok();
-}
-
-// "SEC_NSEC" of the header stamp, or of the time the bag recorded the
-// message when the publisher left the stamp at zero.
-std::string StampName(const ros_bridge::OccupancyGridMsg& map, const ros::Time& recorded) {
-  const ros::Time stamp = map.header.stamp.isZero() ? recorded : map.header.stamp;
-  char text[32];
-  std::snprintf(text, sizeof(text), "%u_%09u", stamp.sec, stamp.nsec);
-  return text;
-}
-
-// Reads and encodes; rosbag reports errors as exceptions, caught by the caller.
-int EncodeBagMessages(const std::string& bag_path, const BagSelection& selection,
-                      const EncodeOptions& options) {
-  rosbag::Bag bag;
-  bag.open(bag_path, rosbag::bagmode::Read);
-  if (const Status topic_ok = CheckTopic(bag, bag_path, selection.topic); !topic_ok.ok()) {
-    return ReportError("encode", topic_ok);
-  }
-  rosbag::View view(bag, rosbag::TopicQuery(selection.topic));
-  const std::uint64_t count = view.size();
-  if (selection.index && *selection.index >= count) {
-    return ReportError("encode", InvalidArgumentError(
-                                     "'" + bag_path + "': --index " +
-                                     std::to_string(*selection.index) + " but topic '" +
-                                     selection.topic + "' holds " + std::to_string(count) +
-                                     " maps (0.." + std::to_string(count - 1) + ")"));
-  }
-  const std::uint64_t wanted = selection.index.value_or(count - 1);
-  if (selection.all) {
-    if (const Status made = EnsureFolder(selection.out); !made.ok()) {
-      return ReportError("encode", made);
-    }
-  }
-  std::set<std::string> names;
-  std::uint64_t k = 0;
-  for (const rosbag::MessageInstance& instance : view) {
-    const std::uint64_t this_index = k++;
-    if (!selection.all && this_index != wanted) continue;
-    ros_bridge::OccupancyGridMsg::ConstPtr map = instance.instantiate<ros_bridge::OccupancyGridMsg>();
-    const std::string where = "'" + bag_path + "' " + selection.topic + " message " +
-                              std::to_string(this_index);
-    if (map == nullptr) {
-      return ReportError("encode", CorruptError(where + " is not a " + kMapType));
-    }
-    StatusOr<Grid> grid = GridFromOccupancyGrid(ros_bridge::FromRosMessage(*map),
-                                                selection.thresholds, selection.max_cells);
-    if (!grid.ok()) return ReportError("encode", grid.status().WithContext(where));
-    std::string out = selection.out;
-    if (selection.all) {
-      // Two maps with one stamp get _1, _2, ... after the first.
-      const std::string stamp = StampName(*map, instance.getTime());
-      std::string name = stamp;
-      for (int n = 1; names.count(name) > 0; ++n) name = stamp + "_" + std::to_string(n);
-      names.insert(name);
-      out = selection.out + (selection.out.ends_with("/") ? "" : "/") + name + ".lmap";
-    }
-    std::size_t bytes = 0;
-    if (const Status written = EncodeGridTo(*grid, out, options, selection.durability, &bytes);
-        !written.ok()) {
-      return ReportError("encode", written.WithContext(where));
-    }
-    std::printf("%s message %llu of %llu: %d x %d cells -> %s, %zu bytes\n",
-                selection.topic.c_str(), static_cast<unsigned long long>(this_index),
-                static_cast<unsigned long long>(count), grid->width(), grid->height(),
-                out.c_str(), bytes);
-    if (!selection.all) break;
-  }
-  return kExitOk;
+bool VisitMap(void* context, std::uint64_t index, std::uint64_t count, const std::string& stamp,
+              const OccupancyGridMessage& message) {
+  auto* visit = static_cast<EncodeVisit*>(context);
+  visit->status = EncodeOne(visit, index, count, stamp, message);
+  return visit->status.ok();
 }
 
 }  // namespace
-#endif  // LINEMAP_HAVE_ROSBAG
 
 int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeOptions& options) {
-#ifdef LINEMAP_HAVE_ROSBAG
+  StatusOr<ros_bridge::BagMapReaderFn> reader = LoadBagReader();
+  if (!reader.ok()) return ReportError("encode", reader.status().WithContext("'" + bag_path + "'"));
   StatusOr<BagSelection> selection = BagSelectionFrom(args);
   if (!selection.ok()) return ReportError("encode", selection.status());
-  try {
-    return EncodeBagMessages(bag_path, *selection, options);
-  } catch (const std::exception& error) {
-    // rosbag::BagException for a missing or malformed bag, and
-    // deserialisation errors from a truncated message.
-    return ReportError("encode", InvalidArgumentError("'" + bag_path + "': cannot read it as a "
-                                                      "ROS 1 bag: " + error.what()));
+  if (selection->all) {
+    if (const Status made = EnsureFolder(selection->out); !made.ok()) {
+      return ReportError("encode", made);
+    }
   }
-#else
-  (void)args;
-  (void)options;
-  return ReportError("encode",
-                     UnsupportedError("'" + bag_path + "': this linemap was built without ROS 1 "
-                                      "bag support (rosbag was not found when it was built; "
-                                      "install librosbag-dev libnav-msgs-dev and rebuild)"));
-#endif
+  EncodeVisit visit{&*selection, &options, bag_path, {}, Status::Ok()};
+  ros_bridge::BagMapRequest request;
+  request.bag_path = bag_path;
+  request.topic = selection->topic;
+  request.index = selection->index ? static_cast<std::int64_t>(*selection->index) : -1;
+  request.all = selection->all;
+  request.visit = &VisitMap;
+  request.context = &visit;
+  switch ((*reader)(&request)) {
+    case ros_bridge::BagReadOutcome::kOk:
+      return kExitOk;
+    case ros_bridge::BagReadOutcome::kStopped:
+      return ReportError("encode", visit.status);
+    case ros_bridge::BagReadOutcome::kBadInput:
+      break;
+  }
+  return ReportError("encode", InvalidArgumentError(request.error));
 }
 
 }  // namespace linemap::cli

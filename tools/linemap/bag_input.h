@@ -1,7 +1,8 @@
 // `linemap encode RECORDING.bag`: nav_msgs/OccupancyGrid messages read from a
-// ROS 1 bag (rosbag's C++ API) and encoded as .lmap files. Compiled with the
-// bag reader only when the build found rosbag (LINEMAP_HAVE_ROSBAG); without
-// it every bag input is refused with a message saying so.
+// ROS 1 bag and encoded as .lmap files. The reading (rosbag's C++ API) lives
+// in the module liblinemap_rosbag.so (ros/bag_reader.h), loaded only for a
+// bag input; a build without rosbag (no LINEMAP_ROSBAG_MODULE_NAME) refuses
+// every bag input with a message saying so.
 #ifndef LINEMAP_TOOLS_LINEMAP_BAG_INPUT_H_
 #define LINEMAP_TOOLS_LINEMAP_BAG_INPUT_H_
 
