@@ -43,8 +43,14 @@ StatusOr<Window> WindowFromValues(const double* values, int count) {
 }
 
 StatusOr<Window> ParseWindow(const std::string& text) {
+  // roscpp hands a `_window:=[x0, y0, x1, y1]` argument over as this text:
+  // brackets and spaces are allowed around the numbers.
+  std::string bare;
+  for (const char c : text) {
+    if (c != '[' && c != ']' && c != ' ') bare += c;
+  }
   std::vector<double> values;
-  std::stringstream stream(text);
+  std::stringstream stream(bare);
   std::string item;
   while (std::getline(stream, item, ',')) {
     char* end = nullptr;
