@@ -36,8 +36,8 @@ struct BagMapRequest {
   // number of messages there, and its stamp as "SEC_NSEC" (the header
   // stamp, or the recording time when the header's is zero). Returns false
   // to stop reading.
-  bool (*visit)(void* context, std::uint64_t index, std::uint64_t count,
-                const std::string& stamp, const OccupancyGridMessage& message) = nullptr;
+  bool (*visit)(void* context, std::uint64_t index, std::uint64_t count, const std::string& stamp,
+                const OccupancyGridMessage& message) = nullptr;
   void* context = nullptr;
   // Set by the module when the outcome is not kOk: a message naming the bag
   // and the topic.

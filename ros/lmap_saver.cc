@@ -145,11 +145,7 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "lmap_saver: %s\n%s", args.status().message().c_str(), kUsage);
     return kExitBadInput;
   }
-  const Status uri = CheckMasterUriGiven(argc, argv);
-  if (!uri.ok()) {
-    std::fprintf(stderr, "lmap_saver: %s\n", uri.message().c_str());
-    return kExitFailure;
-  }
+  UseDefaultMasterUriIfUnset(argc, argv);
   ros::init(argc, argv, "lmap_saver", ros::init_options::AnonymousName);
   const Status master = WaitForMaster(args->wait_master_seconds);
   if (!master.ok()) {

@@ -105,11 +105,7 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "lmap_server: %s\n%s", args.status().message().c_str(), kUsage);
     return kExitBadInput;
   }
-  const Status uri = CheckMasterUriGiven(argc, argv);
-  if (!uri.ok()) {
-    std::fprintf(stderr, "lmap_server: %s\n", uri.message().c_str());
-    return kExitFailure;
-  }
+  UseDefaultMasterUriIfUnset(argc, argv);
   ros::init(argc, argv, "lmap_server");
   const Status master = WaitForMaster(args->wait_master_seconds);
   if (!master.ok()) {
@@ -121,8 +117,7 @@ int Run(int argc, char** argv) {
   if (args->map_path) {
     map_path = *args->map_path;
   } else if (!private_nh.getParam("map", map_path)) {
-    std::fprintf(stderr, "lmap_server: no map given (argument MAP or parameter ~map)\n%s",
-                 kUsage);
+    std::fprintf(stderr, "lmap_server: no map given (argument MAP or parameter ~map)\n%s", kUsage);
     return kExitBadInput;
   }
   const std::string frame_id = private_nh.param<std::string>("frame_id", "map");

@@ -12,21 +12,19 @@
 
 namespace linemap::ros_bridge {
 
-Status CheckMasterUriGiven(int argc, char** argv) {
+void UseDefaultMasterUriIfUnset(int argc, char** argv) {
   const char* env = std::getenv("ROS_MASTER_URI");
-  if (env != nullptr && env[0] != '\0') return Status::Ok();
+  if (env != nullptr && env[0] != '\0') return;
   for (int i = 1; i < argc; ++i) {
-    if (std::string_view(argv[i]).starts_with("__master:=")) return Status::Ok();
+    if (std::string_view(argv[i]).starts_with("__master:=")) return;
   }
-  return InvalidArgumentError(
-      "no ROS master given: set ROS_MASTER_URI (e.g. http://127.0.0.1:11311) or pass "
-      "__master:=URI");
+  ::setenv("ROS_MASTER_URI", kDefaultMasterUri, /*overwrite=*/1);
 }
 
 Status WaitForMaster(double seconds) {
   using Clock = std::chrono::steady_clock;
-  const Clock::time_point deadline =
-      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                        std::chrono::duration<double>(seconds));
   while (!ros::master::check()) {
     if (Clock::now() >= deadline) {
       char text[64];

@@ -19,9 +19,15 @@ inline constexpr int kExitBadInput = 2;
 // Seconds a node waits for the master by default before giving up.
 inline constexpr double kDefaultMasterWaitSeconds = 10.0;
 
-// roscpp aborts the process when it does not know the master's URI: checks
-// first that ROS_MASTER_URI or a `__master:=URI` argument gives one.
-Status CheckMasterUriGiven(int argc, char** argv);
+// The master rospy and the ROS command-line tools (rosgraph) use when
+// ROS_MASTER_URI is not set.
+inline constexpr const char* kDefaultMasterUri = "http://localhost:11311/";
+
+// roscpp aborts the process when neither ROS_MASTER_URI nor a `__master:=URI`
+// argument names the master; like rospy, a node then uses
+// kDefaultMasterUri (sets ROS_MASTER_URI; call before ros::init, while the
+// process has one thread).
+void UseDefaultMasterUriIfUnset(int argc, char** argv);
 
 // Polls the master (ros::master::check, after ros::init) every 0.1 s until it
 // answers or `seconds` have passed; fails (I/O error, naming the URI and the

@@ -44,7 +44,7 @@ StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
 }
 
 OccupancyGridMsg RosMessageFromGrid(const Grid& grid, const std::string& frame_id,
-                                           const ros::Time& stamp) {
+                                    const ros::Time& stamp) {
   return ToRosMessage(OccupancyGridFromGrid(grid, frame_id), stamp);
 }
 

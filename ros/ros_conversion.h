@@ -31,7 +31,7 @@ StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
 
 // The grid as map_server publishes it: free 0, occupied 100, unknown -1.
 OccupancyGridMsg RosMessageFromGrid(const Grid& grid, const std::string& frame_id,
-                                           const ros::Time& stamp);
+                                    const ros::Time& stamp);
 
 }  // namespace linemap::ros_bridge
 

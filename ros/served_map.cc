@@ -86,9 +86,8 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
   const double c1 = std::min(std::ceil(col_max + 0.5 - kSlack) - 1.0, grid.width() - 1.0);
   const double r1 = std::min(std::ceil(row_max + 0.5 - kSlack) - 1.0, grid.height() - 1.0);
   if (c0 > c1 || r0 > r1) {
-    return InvalidArgumentError("window does not overlap the map (" +
-                                std::to_string(grid.width()) + " x " +
-                                std::to_string(grid.height()) + " cells)");
+    return InvalidArgumentError("window does not overlap the map (" + std::to_string(grid.width()) +
+                                " x " + std::to_string(grid.height()) + " cells)");
   }
   const int col0 = static_cast<int>(c0), row0 = static_cast<int>(r0);
   const int width = static_cast<int>(c1) - col0 + 1, height = static_cast<int>(r1) - row0 + 1;

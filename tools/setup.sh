@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake pkg-config libeigen3-dev zlib1g-dev libpng-dev libdraco-dev
           libyaml-cpp-dev libgtest-dev googletest libzstd-dev liblzma-dev netpbm jbigkit-bin)
+PACKAGES+=(libroscpp-dev libnav-msgs-dev librosbag-dev ros-core)  # ROS 1 nodes and tests
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -56,7 +56,8 @@ class BagTest : public ::testing::Test {
 };
 
 TEST_F(BagTest, TopicGivesTheLastMap) {
-  const CliResult result = RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "-o", dir_ + "/a.lmap"});
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "-o", dir_ + "/a.lmap"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   ExpectFileIsMessage(dir_ + "/a.lmap", 2);
   // A .bag input without --topic reads /map too.
@@ -68,14 +69,12 @@ TEST_F(BagTest, TopicGivesTheLastMap) {
 TEST_F(BagTest, IndexGivesThatMap) {
   for (int k = 0; k < 3; ++k) {
     const std::string out = dir_ + "/i" + std::to_string(k) + ".lmap";
-    const CliResult result =
-        RunCli({"encode", bag_path_, "--lossless", "--topic", "map", "--index",
+    const CliResult result = RunCli({"encode", bag_path_, "--lossless", "--topic", "map", "--index",
                                      std::to_string(k), "-o", out});
     ASSERT_EQ(result.exit_code, 0) << result.err;
     ExpectFileIsMessage(out, k);
   }
-  const CliResult beyond =
-      RunCli({"encode", bag_path_, "--index", "3", "-o", dir_ + "/x.lmap"});
+  const CliResult beyond = RunCli({"encode", bag_path_, "--index", "3", "-o", dir_ + "/x.lmap"});
   EXPECT_EQ(beyond.exit_code, 2);
   EXPECT_NE(beyond.err.find("holds 3 maps"), std::string::npos) << beyond.err;
   EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
@@ -83,11 +82,11 @@ TEST_F(BagTest, IndexGivesThatMap) {
 
 TEST_F(BagTest, AllWritesEveryMapNamedByItsStamp) {
   const std::string out = dir_ + "/all";
-  const CliResult result = RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "--all", "-o", out + "/"});
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "--all", "-o", out + "/"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const std::vector<std::string> expected = {"1700000000_500000000.lmap",
-                                             "1700000001_500000000.lmap",
-                                             "1800000002_000000007.lmap"};
+  const std::vector<std::string> expected = {
+      "1700000000_500000000.lmap", "1700000001_500000000.lmap", "1800000002_000000007.lmap"};
   ASSERT_EQ(ListDir(out), expected);
   for (int k = 0; k < 3; ++k) ExpectFileIsMessage(out + "/" + expected[k], k);
 }
@@ -100,8 +99,7 @@ TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {
   EXPECT_NE(result.err.find("'/scan'"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("/map (nav_msgs/OccupancyGrid, 3 messages)"), std::string::npos)
       << result.err;
-  EXPECT_NE(result.err.find("/map_metadata (nav_msgs/MapMetaData, 3 messages)"),
-            std::string::npos)
+  EXPECT_NE(result.err.find("/map_metadata (nav_msgs/MapMetaData, 3 messages)"), std::string::npos)
       << result.err;
   EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
 }

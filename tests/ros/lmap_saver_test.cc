@@ -115,8 +115,7 @@ bool WritesUnder(pid_t pid, const std::string& dir) {
   bool found = false;
   while (const dirent* entry = ::readdir(listing)) {
     char target[PATH_MAX];
-    const ssize_t n =
-        ::readlink((fds + "/" + entry->d_name).c_str(), target, sizeof(target) - 1);
+    const ssize_t n = ::readlink((fds + "/" + entry->d_name).c_str(), target, sizeof(target) - 1);
     if (n > 0 && std::string(target, n).starts_with(dir + "/")) {
       found = true;
       break;
@@ -192,8 +191,7 @@ TEST(LmapSaverTest, BadOptionExitsTwo) {
                      {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
                      "saver");
   EXPECT_EQ(saver.Wait(10).value_or(-1), 2);
-  EXPECT_NE(saver.Stderr().find("--free must be below --occ"), std::string::npos)
-      << saver.Stderr();
+  EXPECT_NE(saver.Stderr().find("--free must be below --occ"), std::string::npos) << saver.Stderr();
 }
 
 }  // namespace

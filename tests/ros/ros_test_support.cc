@@ -3,6 +3,8 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
+#include <ros/master.h>
+#include <ros/ros.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
@@ -17,9 +19,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include <ros/master.h>
-#include <ros/ros.h>
-
 #include "tests/testing/test_support.h"
 
 extern char** environ;
@@ -27,8 +26,7 @@ extern char** environ;
 namespace linemap::testing {
 
 double Now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 bool WaitFor(const std::function<bool()>& done, double seconds) {
@@ -154,19 +152,18 @@ RosMaster::RosMaster() : scratch_(MakeTempDir("rosmaster")) {
     const int port = FreePort();
     uri_ = "http://127.0.0.1:" + std::to_string(port) + "/";
     auto master = std::make_unique<ChildProcess>(
-        std::vector<std::string>{"/usr/bin/rosmaster", "--core", "-p", std::to_string(port),
-                                 "-w", "2"},
+        std::vector<std::string>{LINEMAP_ROSMASTER_PATH, "--core", "-p", std::to_string(port), "-w",
+                                 "2"},
         Env(), scratch_, "rosmaster-" + std::to_string(attempt));
-    const bool up = WaitFor(
-        [&] { return Listening(port) || master->Wait(0).has_value(); }, 20.0);
+    const bool up = WaitFor([&] { return Listening(port) || master->Wait(0).has_value(); }, 20.0);
     if (up && !master->Wait(0)) process_ = std::move(master);
   }
   if (!process_) throw std::runtime_error("rosmaster did not start (logs in " + scratch_ + ")");
 }
 
 std::vector<std::string> RosMaster::Env() const {
-  return {"ROS_MASTER_URI=" + uri_, "ROS_IP=127.0.0.1", "ROS_HOME=" + scratch_,
-          "ROS_LOG_DIR=" + scratch_ + "/log"};
+  return {"ROS_MASTER_URI=" + uri_, "ROS_IP=127.0.0.1", "ROS_HOSTNAME=127.0.0.1",
+          "ROS_HOME=" + scratch_, "ROS_LOG_DIR=" + scratch_ + "/log"};
 }
 
 RosMaster& SharedMaster() {
@@ -189,5 +186,6 @@ RosMaster& SharedMaster() {
 
 std::string LmapServerPath() { return LINEMAP_LMAP_SERVER_PATH; }
 std::string LmapSaverPath() { return LINEMAP_LMAP_SAVER_PATH; }
+std::string RostopicPath() { return LINEMAP_ROSTOPIC_PATH; }
 
 }  // namespace linemap::testing

@@ -49,7 +49,8 @@ class RosMaster {
  public:
   RosMaster();
   const std::string& uri() const { return uri_; }
-  // ROS_MASTER_URI, ROS_IP, ROS_HOME and ROS_LOG_DIR for a child node.
+  // ROS_MASTER_URI, ROS_IP / ROS_HOSTNAME (127.0.0.1), ROS_HOME and ROS_LOG_DIR
+  // for a child node.
   std::vector<std::string> Env() const;
   const std::string& scratch() const { return scratch_; }
   bool running() const { return process_ != nullptr; }
@@ -78,6 +79,7 @@ double Now();
 // Paths of the programs under test.
 std::string LmapServerPath();
 std::string LmapSaverPath();
+std::string RostopicPath();
 
 }  // namespace linemap::testing
 

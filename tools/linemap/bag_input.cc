@@ -30,8 +30,7 @@ std::vector<OptionSpec> WithBagOptions(std::vector<OptionSpec> options) {
 }
 
 bool IsBagInput(const std::string& input, const ParsedArgs& args) {
-  return input.ends_with(".bag") || args.Get("--topic") || args.Get("--index") ||
-         args.Has("--all");
+  return input.ends_with(".bag") || args.Get("--topic") || args.Get("--index") || args.Has("--all");
 }
 
 namespace {
@@ -56,8 +55,7 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
   selection.all = args.Has("--all");
   if (args.Get("--index")) {
     if (selection.all) return InvalidArgumentError("give --index K or --all, not both");
-    LINEMAP_ASSIGN_OR_RETURN(selection.index,
-                             args.GetUint64("--index", 0, /*min=*/0));
+    LINEMAP_ASSIGN_OR_RETURN(selection.index, args.GetUint64("--index", 0, /*min=*/0));
     if (*selection.index > static_cast<std::uint64_t>(INT64_MAX)) {
       return InvalidArgumentError("--index is too large");
     }
@@ -120,7 +118,8 @@ StatusOr<ros_bridge::BagMapReaderFn> LoadBagReader() {
   } else {
     const std::string folder = ProgramFolder();
     candidates.push_back(folder + LINEMAP_ROSBAG_MODULE_NAME);
-    candidates.push_back(folder + LINEMAP_ROSBAG_MODULE_INSTALL_FOLDER "/" LINEMAP_ROSBAG_MODULE_NAME);
+    candidates.push_back(folder + LINEMAP_ROSBAG_MODULE_INSTALL_FOLDER
+                         "/" LINEMAP_ROSBAG_MODULE_NAME);
   }
   std::string errors;
   for (const std::string& candidate : candidates) {
