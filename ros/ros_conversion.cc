@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "ros/map_resolution.h"
+
 namespace linemap::ros_bridge {
 
 OccupancyGridMessage FromRosMessage(const OccupancyGridMsg& message) {
@@ -40,7 +42,9 @@ OccupancyGridMsg ToRosMessage(const OccupancyGridMessage& message, const ros::Ti
 
 StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
                                   const OccupancyThresholds& thresholds) {
-  return GridFromOccupancyGrid(FromRosMessage(message), thresholds);
+  StatusOr<Grid> grid = GridFromOccupancyGrid(FromRosMessage(message), thresholds);
+  if (grid.ok()) grid->meta.resolution = ResolutionFromMessage(message.info.resolution);
+  return grid;
 }
 
 OccupancyGridMsg RosMessageFromGrid(const Grid& grid, const std::string& frame_id,

@@ -25,7 +25,8 @@ OccupancyGridMessage FromRosMessage(const OccupancyGridMsg& message);
 OccupancyGridMsg ToRosMessage(const OccupancyGridMessage& message, const ros::Time& stamp);
 
 // A received map as a trinary grid, with map_saver's thresholds (see
-// occupancy_grid.h): shorthand for GridFromOccupancyGrid(FromRosMessage()).
+// occupancy_grid.h): GridFromOccupancyGrid(FromRosMessage()), with the
+// resolution read by ResolutionFromMessage() (map_resolution.h).
 StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
                                   const OccupancyThresholds& thresholds = {});
 

@@ -47,7 +47,7 @@ class BagTest : public ::testing::Test {
     SCOPED_TRACE(path);
     StatusOr<Grid> decoded = LoadLmap(path);
     ASSERT_TRUE(decoded.ok()) << decoded.status().message();
-    ExpectGridIsMessage(*decoded, messages_[k]);
+    ExpectGridIsMessage(*decoded, messages_[k], 0.05);
   }
 
   std::string dir_;

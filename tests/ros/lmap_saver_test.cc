@@ -75,7 +75,7 @@ TEST(LmapSaverTest, WritesThePublishedMapAndExits) {
   EXPECT_EQ(*code, 0) << saver->Stderr();
   StatusOr<Grid> decoded = LoadLmap(dir + "/saved.lmap");
   ASSERT_TRUE(decoded.ok()) << decoded.status().message();
-  ExpectGridIsMessage(*decoded, message);
+  ExpectGridIsMessage(*decoded, message, 0.05);
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"saved.lmap"});
 }
 
@@ -102,8 +102,29 @@ TEST(LmapSaverTest, EveryRewritesTheFileAndLeavesTheLastMap) {
   EXPECT_EQ(saver->Stop(SIGINT), 0) << saver->Stderr();
   StatusOr<Grid> decoded = LoadLmap(path);
   ASSERT_TRUE(decoded.ok()) << decoded.status().message();
-  ExpectGridIsMessage(*decoded, maps[2]);
+  ExpectGridIsMessage(*decoded, maps[2], 0.05);
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"robot.lmap"});
+}
+
+// The acceptance: a map served by lmap_server and saved by
+// lmap_saver comes back exactly, cells, resolution and origin.
+TEST(LmapSaverTest, ServedMapSavesBackExactly) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/lse_arena_lossless.lmap";
+  StatusOr<Grid> original = LoadLmap(lmap);
+  ASSERT_TRUE(original.ok()) << original.status().message();
+  ChildProcess server({LmapServerPath(), lmap, "__ns:=/r1"}, master.Env(), master.scratch(),
+                      "server-r1");
+  const std::string dir = MakeTempDir("roundtrip");
+  auto saver = StartSaver(master, "/r1/map", dir + "/saved", {});
+  ASSERT_EQ(saver->Wait(20).value_or(-1), 0) << saver->Stderr() << server.Stderr();
+  StatusOr<Grid> saved = LoadLmap(dir + "/saved.lmap");
+  ASSERT_TRUE(saved.ok()) << saved.status().message();
+  EXPECT_EQ(saved->width(), original->width());
+  EXPECT_EQ(saved->height(), original->height());
+  EXPECT_TRUE(saved->cells() == original->cells());
+  EXPECT_EQ(saved->meta.resolution, original->meta.resolution);
+  EXPECT_EQ(saved->meta.origin, original->meta.origin);
 }
 
 // True while process `pid` has a file open under `dir` (the temporary file

@@ -63,10 +63,11 @@ void ExpectMessageIsGrid(const ros_bridge::OccupancyGridMsg& message, const Grid
   EXPECT_EQ(differing, 0u) << "of " << expected.data.size() << " cells";
 }
 
-void ExpectGridIsMessage(const Grid& decoded, const ros_bridge::OccupancyGridMsg& message) {
+void ExpectGridIsMessage(const Grid& decoded, const ros_bridge::OccupancyGridMsg& message,
+                         double resolution) {
   ASSERT_EQ(decoded.width(), static_cast<int>(message.info.width));
   ASSERT_EQ(decoded.height(), static_cast<int>(message.info.height));
-  EXPECT_EQ(decoded.meta.resolution, static_cast<double>(message.info.resolution));
+  EXPECT_EQ(decoded.meta.resolution, resolution);
   EXPECT_DOUBLE_EQ(decoded.meta.origin.x, message.info.origin.position.x);
   EXPECT_DOUBLE_EQ(decoded.meta.origin.y, message.info.origin.position.y);
   const auto& q = message.info.origin.orientation;

@@ -28,9 +28,11 @@ void ExpectMessageIsGrid(const ros_bridge::OccupancyGridMsg& message, const Grid
                          const std::string& frame_id);
 
 // Expects `decoded` (a saved .lmap read back) to be the grid `message`
-// carries: cells by ReferenceCell, resolution as the message's float,
-// origin and yaw.
-void ExpectGridIsMessage(const Grid& decoded, const ros_bridge::OccupancyGridMsg& message);
+// carries: cells by ReferenceCell, origin and yaw, and `resolution` (that of
+// the map YAML the message was made from: the saver reads the message's
+// float32 back as that decimal).
+void ExpectGridIsMessage(const Grid& decoded, const ros_bridge::OccupancyGridMsg& message,
+                         double resolution);
 
 // A width x height map of pseudo-random cells (all three states), which
 // encodes to a large file; `seed` varies it.

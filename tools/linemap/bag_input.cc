@@ -15,6 +15,7 @@
 #include "format/file_io.h"
 #include "linemap/occupancy_grid.h"
 #include "ros/bag_reader.h"
+#include "ros/map_resolution.h"
 
 namespace linemap::cli {
 
@@ -171,6 +172,7 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
       "'" + visit->bag_path + "' " + selection.topic + " message " + std::to_string(index);
   StatusOr<Grid> grid = GridFromOccupancyGrid(message, selection.thresholds, selection.max_cells);
   if (!grid.ok()) return grid.status().WithContext(where);
+  grid->meta.resolution = ros_bridge::ResolutionFromMessage(message.resolution);
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *visit->options);
   if (!bytes.ok()) return bytes.status().WithContext(where);
   LINEMAP_ASSIGN_OR_RETURN(std::string out, OutputPath(visit, stamp));
