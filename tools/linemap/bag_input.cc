@@ -141,8 +141,8 @@ StatusOr<ros_bridge::BagMapReaderFn> LoadBagReader() {
                  ")" + errors);
 #else
   return UnsupportedError(
-      "this linemap was built without ROS 1 bag support (rosbag was not found when it was "
-      "built; install librosbag-dev libnav-msgs-dev and rebuild)");
+      "this linemap was built without ROS 1 bag support (CMake found no rosbag, or "
+      "LINEMAP_BUILD_ROS was off; install librosbag-dev libnav-msgs-dev and rebuild)");
 #endif
 }
 
