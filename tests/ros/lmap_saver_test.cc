@@ -190,6 +190,20 @@ TEST(LmapSaverTest, SaverKilledWhileWritingLeavesTheOldFileWhole) {
   EXPECT_EQ(killed_while_writing, 1) << "no kill landed while the saver wrote";
 }
 
+TEST(LmapSaverTest, MalformedMapExitsTwoWithoutAFile) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v4/map", 1, /*latch=*/true);
+  OccupancyGridMsg message = ReferenceMessage(LoadBundledMap("nav2/depot.yaml"), "map");
+  message.data.resize(message.data.size() - 1);  // one value short of width x height
+  publisher.publish(message);
+  const std::string dir = MakeTempDir("malformed");
+  auto saver = StartSaver(master, "/v4/map", dir + "/saved", {});
+  EXPECT_EQ(saver->Wait(20).value_or(-1), 2);
+  EXPECT_NE(saver->Stderr().find("/v4/map"), std::string::npos) << saver->Stderr();
+  EXPECT_TRUE(ListDir(dir).empty());
+}
+
 TEST(LmapSaverTest, NoMasterExitsOneWithinTheWait) {
   const std::string uri = "http://127.0.0.1:" + std::to_string(FreePort()) + "/";
   const std::string scratch = MakeTempDir("nomaster");

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -173,6 +174,18 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
   StatusOr<Grid> grid = GridFromOccupancyGrid(message, selection.thresholds, selection.max_cells);
   if (!grid.ok()) return grid.status().WithContext(where);
   grid->meta.resolution = ros_bridge::ResolutionFromMessage(message.resolution);
+  if (const std::optional<Pose2D>& pose = visit->options->robot_pose) {
+    // As for a map file, the pose must fall in a cell (the one whose square
+    // holds it) of every map it is stored with.
+    double col = 0, row = 0;
+    grid->WorldToCell(pose->x, pose->y, &col, &row);
+    const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
+    if (!(c >= 0 && r >= 0 && c < grid->width() && r < grid->height())) {
+      return InvalidArgumentError(where + ": --pose is outside the map (" +
+                                  std::to_string(grid->width()) + " x " +
+                                  std::to_string(grid->height()) + " cells)");
+    }
+  }
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *visit->options);
   if (!bytes.ok()) return bytes.status().WithContext(where);
   LINEMAP_ASSIGN_OR_RETURN(std::string out, OutputPath(visit, stamp));
