@@ -110,7 +110,7 @@ class MapSaver {
     const Status saved = Save(*message);
     if (!saved.ok()) {
       std::fprintf(stderr, "lmap_saver: %s\n", saved.message().c_str());
-      exit_code_ = saved.code() == StatusCode::kInvalidArgument ? kExitBadInput : kExitFailure;
+      exit_code_ = ExitCodeFor(saved);
       ros::shutdown();
       return;
     }

@@ -132,7 +132,7 @@ int Run(int argc, char** argv) {
   StatusOr<Grid> grid = LoadServedMap(map_path, *window);
   if (!grid.ok()) {
     std::fprintf(stderr, "lmap_server: %s\n", grid.status().message().c_str());
-    return kExitBadInput;
+    return ExitCodeFor(grid.status());
   }
   MapServer server(RosMessageFromGrid(*grid, frame_id, ros::Time::now()));
   ROS_INFO("lmap_server: serving %s: %d x %d cells at %.3f m/cell, frame '%s'", map_path.c_str(),

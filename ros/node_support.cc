@@ -12,6 +12,23 @@
 
 namespace linemap::ros_bridge {
 
+int ExitCodeFor(const Status& status) {
+  switch (status.code()) {
+    case StatusCode::kOk:
+      return kExitOk;
+    case StatusCode::kInvalidArgument:
+    case StatusCode::kNotFound:
+    case StatusCode::kCorrupt:
+    case StatusCode::kUnsupported:
+    case StatusCode::kResourceExhausted:
+      return kExitBadInput;
+    case StatusCode::kIoError:
+    case StatusCode::kInternal:
+      break;
+  }
+  return kExitFailure;
+}
+
 void UseDefaultMasterUriIfUnset(int argc, char** argv) {
   const char* env = std::getenv("ROS_MASTER_URI");
   if (env != nullptr && env[0] != '\0') return;

@@ -16,6 +16,10 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
 
+// The exit code for a failed `status`, as `linemap` maps them: 2 for bad
+// input (invalid, missing, corrupt, unsupported, over a limit), 1 otherwise.
+int ExitCodeFor(const Status& status);
+
 // Seconds a node waits for the master by default before giving up.
 inline constexpr double kDefaultMasterWaitSeconds = 10.0;
 
