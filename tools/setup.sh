@@ -8,6 +8,7 @@ PACKAGES=(build-essential cmake pkg-config libeigen3-dev zlib1g-dev libpng-dev l
           libyaml-cpp-dev libgtest-dev googletest libzstd-dev liblzma-dev netpbm jbigkit-bin)
 PACKAGES+=(libjxl-tools webp)  # bench anchors
 PACKAGES+=(pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module
+PACKAGES+=(libroscpp-dev libnav-msgs-dev librosbag-dev ros-core)  # ROS 1 nodes and tests
 
 missing=()
 for p in "${PACKAGES[@]}"; do

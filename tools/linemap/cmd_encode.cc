@@ -11,6 +11,7 @@
 #include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
+#include "tools/linemap/bag_input.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
 #include "tools/linemap/lmap_cli_util.h"
@@ -31,7 +32,7 @@ const CommandSpec kEncodeSpec = {
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
     "map or the image its YAML names.",
-    WithMapLoadOptions({
+    WithBagOptions(WithMapLoadOptions({
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
          "largest distance (cells) by which the decode may differ; only 0, exact (the "
@@ -64,7 +65,7 @@ const CommandSpec kEncodeSpec = {
          "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
          "power cut right after may lose it"},
         {"--json", "", "print one JSON object instead of text"},
-    }),
+    })),
     1,
     1,
 };
@@ -176,6 +177,12 @@ int RunEncode(const std::vector<std::string>& args) {
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("encode", InvalidArgumentError("missing -o OUT.lmap"));
   const std::string& map_path = parsed->positional[0];
+  // A ROS 1 bag of nav_msgs/OccupancyGrid messages: tools/linemap/bag_input.cc.
+  if (IsBagInput(map_path, *parsed)) {
+    StatusOr<EncodeOptions> bag_options = EncodeOptionsFrom(*parsed);
+    if (!bag_options.ok()) return ReportError("encode", bag_options.status());
+    return EncodeBag(map_path, *parsed, *bag_options);
+  }
   const Status output_ok = CheckOutput(*out, map_path);
   if (!output_ok.ok()) return ReportError("encode", output_ok);
   StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);

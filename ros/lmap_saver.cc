@@ -1,0 +1,166 @@
+// lmap_saver: map_saver writing .lmap files.
+//
+//   lmap_saver [-f NAME] [-t TOPIC] [--every] [--occ P] [--free P]
+//              [--tolerance T] [--raster-only] [--wait-master S]
+//
+// Subscribes to `map` (nav_msgs/OccupancyGrid; remap it with map:=/other or
+// name it with -t), writes NAME.lmap atomically when a map arrives and exits;
+// with --every it keeps running and rewrites the file on every new map. Each
+// save goes to an unnamed temporary file that is flushed and renamed over
+// NAME.lmap (SaveLmap), so a saver killed at any moment leaves the previous
+// file whole. Exit codes: 0 saved, 1 no master or a failed write, 2 bad
+// usage or a map message that is not a map (sizes that do not agree).
+#include <ros/ros.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "ros/node_support.h"
+#include "ros/ros_conversion.h"
+
+namespace linemap::ros_bridge {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: lmap_saver [-f NAME] [-t TOPIC] [--every] [--occ P] [--free P]\n"
+    "                  [--tolerance T] [--raster-only] [--wait-master S]\n"
+    "  -f NAME          output file NAME.lmap (default map.lmap; .lmap is added when missing)\n"
+    "  -t TOPIC         map topic (default map; also remappable as map:=TOPIC)\n"
+    "  --every          keep running and rewrite the file on every new map\n"
+    "  --occ P          occupancy in percent at or above which a cell is occupied (default 65)\n"
+    "  --free P         occupancy in percent at or below which a cell is free (default 25)\n"
+    "  --tolerance T    cells by which the stored map may differ (default 0: exact)\n"
+    "  --raster-only    store the cells only, no vector layers (smallest exact file)\n"
+    "  --wait-master S  seconds to wait for the ROS master (default 10)\n";
+
+struct SaverArgs {
+  std::string path = "map.lmap";
+  std::string topic = "map";
+  bool every = false;
+  OccupancyThresholds thresholds;
+  EncodeOptions encode;
+  double wait_master_seconds = kDefaultMasterWaitSeconds;
+};
+
+// map_saver's thresholds are whole percentages; the library takes
+// probabilities.
+StatusOr<double> ParsePercent(const std::string& option, const std::string& text) {
+  LINEMAP_ASSIGN_OR_RETURN(double percent, ParseNumber(option, text));
+  if (percent < 0 || percent > 100) return InvalidArgumentError(option + " must be in 0..100");
+  return percent / 100.0;
+}
+
+StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
+  SaverArgs parsed;
+  // A saved map reads back as the map that was published, cell for cell,
+  // unless a tolerance is asked for.
+  parsed.encode.lossless = true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const bool has_value = i + 1 < args.size();
+    const bool takes_value = arg == "-f" || arg == "-t" || arg == "--occ" || arg == "--free" ||
+                             arg == "--tolerance" || arg == "--wait-master";
+    if (takes_value && !has_value) return InvalidArgumentError(arg + " needs a value");
+    if (arg == "-f") {
+      parsed.path = args[++i];
+      if (!parsed.path.ends_with(".lmap")) parsed.path += ".lmap";
+    } else if (arg == "-t") {
+      parsed.topic = args[++i];
+    } else if (arg == "--every") {
+      parsed.every = true;
+    } else if (arg == "--occ") {
+      LINEMAP_ASSIGN_OR_RETURN(parsed.thresholds.occupied, ParsePercent(arg, args[++i]));
+    } else if (arg == "--free") {
+      LINEMAP_ASSIGN_OR_RETURN(parsed.thresholds.free, ParsePercent(arg, args[++i]));
+    } else if (arg == "--tolerance") {
+      LINEMAP_ASSIGN_OR_RETURN(double cells, ParseNumber(arg, args[++i]));
+      if (cells < 0 || cells != static_cast<int>(cells)) {
+        return InvalidArgumentError("--tolerance must be a whole number of cells >= 0");
+      }
+      parsed.encode.tolerance_cells = static_cast<int>(cells);
+      parsed.encode.lossless = parsed.encode.tolerance_cells == 0;
+    } else if (arg == "--raster-only") {
+      parsed.encode.vector_layers = false;
+    } else if (arg == "--wait-master") {
+      LINEMAP_ASSIGN_OR_RETURN(parsed.wait_master_seconds, ParseSeconds(arg, args[++i]));
+    } else {
+      return InvalidArgumentError("unknown argument '" + arg + "'");
+    }
+  }
+  if (!(parsed.thresholds.free < parsed.thresholds.occupied)) {
+    return InvalidArgumentError("--free must be below --occ");
+  }
+  return parsed;
+}
+
+class MapSaver {
+ public:
+  explicit MapSaver(const SaverArgs& args) : args_(args) {
+    ros::NodeHandle nh;
+    subscriber_ = nh.subscribe(args_.topic, 1, &MapSaver::OnMap, this);
+    ROS_INFO("lmap_saver: waiting for a map on %s", subscriber_.getTopic().c_str());
+  }
+
+  int exit_code() const { return exit_code_; }
+
+ private:
+  void OnMap(const OccupancyGridMsg::ConstPtr& message) {
+    const Status saved = Save(*message);
+    if (!saved.ok()) {
+      std::fprintf(stderr, "lmap_saver: %s\n", saved.message().c_str());
+      exit_code_ = ExitCodeFor(saved);
+      ros::shutdown();
+      return;
+    }
+    ROS_INFO("lmap_saver: wrote %s (%u x %u cells at %.3f m/cell)", args_.path.c_str(),
+             message->info.width, message->info.height, message->info.resolution);
+    if (!args_.every) ros::shutdown();
+  }
+
+  Status Save(const OccupancyGridMsg& message) const {
+    const std::string what = "map on " + subscriber_.getTopic();
+    StatusOr<Grid> grid = GridFromRosMessage(message, args_.thresholds);
+    if (!grid.ok()) return grid.status().WithContext(what);
+    const Status saved = SaveLmap(args_.path, *grid, args_.encode);
+    if (!saved.ok()) return saved.WithContext("'" + args_.path + "'");
+    return Status::Ok();
+  }
+
+  SaverArgs args_;
+  ros::Subscriber subscriber_;
+  int exit_code_ = kExitOk;
+};
+
+int Run(int argc, char** argv) {
+  // Line by line, so that a log file or a pipe shows each message when it is
+  // written, not when the node exits.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::fputs(kUsage, stdout);
+      return kExitOk;
+    }
+  }
+  StatusOr<SaverArgs> args = ParseSaverArgs(NonRosArguments(argc, argv));
+  if (!args.ok()) {
+    std::fprintf(stderr, "lmap_saver: %s\n%s", args.status().message().c_str(), kUsage);
+    return kExitBadInput;
+  }
+  UseDefaultMasterUriIfUnset(argc, argv);
+  ros::init(argc, argv, "lmap_saver", ros::init_options::AnonymousName);
+  const Status master = WaitForMaster(args->wait_master_seconds);
+  if (!master.ok()) {
+    std::fprintf(stderr, "lmap_saver: %s\n", master.message().c_str());
+    return kExitFailure;
+  }
+  MapSaver saver(*args);
+  ros::spin();
+  return saver.exit_code();
+}
+
+}  // namespace
+}  // namespace linemap::ros_bridge
+
+int main(int argc, char** argv) { return linemap::ros_bridge::Run(argc, argv); }

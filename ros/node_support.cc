@@ -1,0 +1,82 @@
+#include "ros/node_support.h"
+
+#include <ros/master.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
+#include <thread>
+
+namespace linemap::ros_bridge {
+
+int ExitCodeFor(const Status& status) {
+  switch (status.code()) {
+    case StatusCode::kOk:
+      return kExitOk;
+    case StatusCode::kInvalidArgument:
+    case StatusCode::kNotFound:
+    case StatusCode::kCorrupt:
+    case StatusCode::kUnsupported:
+    case StatusCode::kResourceExhausted:
+      return kExitBadInput;
+    case StatusCode::kIoError:
+    case StatusCode::kInternal:
+      break;
+  }
+  return kExitFailure;
+}
+
+void UseDefaultMasterUriIfUnset(int argc, char** argv) {
+  const char* env = std::getenv("ROS_MASTER_URI");
+  if (env != nullptr && env[0] != '\0') return;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string_view(argv[i]).starts_with("__master:=")) return;
+  }
+  ::setenv("ROS_MASTER_URI", kDefaultMasterUri, /*overwrite=*/1);
+}
+
+Status WaitForMaster(double seconds) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                        std::chrono::duration<double>(seconds));
+  while (!ros::master::check()) {
+    if (Clock::now() >= deadline) {
+      char text[64];
+      std::snprintf(text, sizeof(text), "%.1f", seconds);
+      return IoError("no ROS master at " + ros::master::getURI() + " (waited " + text +
+                     " s; start one with `rosmaster` or `roscore`, or set ROS_MASTER_URI)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return Status::Ok();
+}
+
+StatusOr<double> ParseNumber(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0' || errno != 0 || !std::isfinite(value)) {
+    return InvalidArgumentError(option + " needs a number, not '" + text + "'");
+  }
+  return value;
+}
+
+StatusOr<double> ParseSeconds(const std::string& option, const std::string& text) {
+  StatusOr<double> value = ParseNumber(option, text);
+  if (value.ok() && *value < 0) return InvalidArgumentError(option + " must not be negative");
+  return value;
+}
+
+std::vector<std::string> NonRosArguments(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.find(":=") == std::string::npos) args.push_back(arg);
+  }
+  return args;
+}
+
+}  // namespace linemap::ros_bridge

@@ -1,0 +1,52 @@
+// What lmap_server and lmap_saver share: finding the ROS master within a
+// bounded wait, and reading numbers from their command lines.
+#ifndef LINEMAP_ROS_NODE_SUPPORT_H_
+#define LINEMAP_ROS_NODE_SUPPORT_H_
+
+#include <string>
+#include <vector>
+
+#include "linemap/status.h"
+
+namespace linemap::ros_bridge {
+
+// Exit codes, as the `linemap` tool's: 1 failure while working (no master,
+// a file that cannot be written), 2 bad usage or bad input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+// The exit code for a failed `status`, as `linemap` maps them: 2 for bad
+// input (invalid, missing, corrupt, unsupported, over a limit), 1 otherwise.
+int ExitCodeFor(const Status& status);
+
+// Seconds a node waits for the master by default before giving up.
+inline constexpr double kDefaultMasterWaitSeconds = 10.0;
+
+// The master rospy and the ROS command-line tools (rosgraph) use when
+// ROS_MASTER_URI is not set.
+inline constexpr const char* kDefaultMasterUri = "http://localhost:11311/";
+
+// roscpp aborts the process when neither ROS_MASTER_URI nor a `__master:=URI`
+// argument names the master; like rospy, a node then uses
+// kDefaultMasterUri (sets ROS_MASTER_URI; call before ros::init, while the
+// process has one thread).
+void UseDefaultMasterUriIfUnset(int argc, char** argv);
+
+// Polls the master (ros::master::check, after ros::init) every 0.1 s until it
+// answers or `seconds` have passed; fails (I/O error, naming the URI and the
+// wait) when it never answered.
+Status WaitForMaster(double seconds);
+
+// A non-negative finite number of seconds, or a message naming `option`.
+StatusOr<double> ParseSeconds(const std::string& option, const std::string& text);
+// A finite number, or a message naming `option`.
+StatusOr<double> ParseNumber(const std::string& option, const std::string& text);
+
+// The arguments after the program name, without ROS's remappings
+// (`name:=value`), as ros::removeROSArgs leaves them.
+std::vector<std::string> NonRosArguments(int argc, char** argv);
+
+}  // namespace linemap::ros_bridge
+
+#endif  // LINEMAP_ROS_NODE_SUPPORT_H_

@@ -1,0 +1,116 @@
+#include "ros/served_map.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
+
+namespace linemap::ros_bridge {
+namespace {
+
+// As `linemap`'s map arguments: a name ending in .lmap is decoded as one (a
+// renamed image is then refused as a bad .lmap, not read as an image), and so
+// is any file that starts with the .lmap signature.
+bool IsLmapPath(const std::string& path) {
+  if (path.ends_with(".lmap")) return true;
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> head(8, 0);
+  in.read(reinterpret_cast<char*>(head.data()), 8);
+  return in.gcount() == 8 && LooksLikeLmap(head);
+}
+
+}  // namespace
+
+StatusOr<Window> WindowFromValues(const double* values, int count) {
+  if (count != 4) {
+    return InvalidArgumentError("window: expected x0,y0,x1,y1 (4 numbers), got " +
+                                std::to_string(count));
+  }
+  for (int i = 0; i < 4; ++i) {
+    if (!std::isfinite(values[i])) return InvalidArgumentError("window: numbers must be finite");
+  }
+  const Window window{values[0], values[1], values[2], values[3]};
+  if (!(window.x0 < window.x1) || !(window.y0 < window.y1)) {
+    return InvalidArgumentError("window: needs x0 < x1 and y0 < y1 (metres)");
+  }
+  return window;
+}
+
+StatusOr<Window> ParseWindow(const std::string& text) {
+  // roscpp hands a `_window:=[x0, y0, x1, y1]` argument over as this text:
+  // brackets and spaces are allowed around the numbers.
+  std::string bare;
+  for (const char c : text) {
+    if (c != '[' && c != ']' && c != ' ') bare += c;
+  }
+  std::vector<double> values;
+  std::stringstream stream(bare);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(item.c_str(), &end);
+    if (item.empty() || end == item.c_str() || *end != '\0' || errno != 0) {
+      return InvalidArgumentError("window: '" + text + "' is not x0,y0,x1,y1 in metres");
+    }
+    values.push_back(value);
+  }
+  return WindowFromValues(values.data(), static_cast<int>(values.size()));
+}
+
+StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
+  // The window's corners in cell units (cell centres at integers), then the
+  // cells c with c - 0.5 < u1 and c + 0.5 > u0. The small slack keeps a
+  // window edge that lies on a cell border (1.0 m at 0.05 m per cell reads
+  // 19.5000000004 cells) from taking in a cell it does not overlap.
+  constexpr double kSlack = 1e-6;
+  double col_min = INFINITY, col_max = -INFINITY, row_min = INFINITY, row_max = -INFINITY;
+  for (const double x : {window.x0, window.x1}) {
+    for (const double y : {window.y0, window.y1}) {
+      double col = 0.0, row = 0.0;
+      grid.WorldToCell(x, y, &col, &row);
+      col_min = std::min(col_min, col);
+      col_max = std::max(col_max, col);
+      row_min = std::min(row_min, row);
+      row_max = std::max(row_max, row);
+    }
+  }
+  const double c0 = std::max(std::floor(col_min - 0.5 + kSlack) + 1.0, 0.0);
+  const double r0 = std::max(std::floor(row_min - 0.5 + kSlack) + 1.0, 0.0);
+  const double c1 = std::min(std::ceil(col_max + 0.5 - kSlack) - 1.0, grid.width() - 1.0);
+  const double r1 = std::min(std::ceil(row_max + 0.5 - kSlack) - 1.0, grid.height() - 1.0);
+  if (c0 > c1 || r0 > r1) {
+    return InvalidArgumentError("window does not overlap the map (" + std::to_string(grid.width()) +
+                                " x " + std::to_string(grid.height()) + " cells)");
+  }
+  const int col0 = static_cast<int>(c0), row0 = static_cast<int>(r0);
+  const int width = static_cast<int>(c1) - col0 + 1, height = static_cast<int>(r1) - row0 + 1;
+  Grid out(width, height);
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) out.set(col, row, grid.at(col0 + col, row0 + row));
+  }
+  out.meta = grid.meta;
+  // The lower-left corner of cell (col0, row0) is half a cell before its centre.
+  grid.CellToWorld(col0 - 0.5, row0 - 0.5, &out.meta.origin.x, &out.meta.origin.y);
+  return out;
+}
+
+StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window) {
+  StatusOr<Grid> grid = [&]() -> StatusOr<Grid> {
+    if (IsLmapPath(path)) return LoadLmap(path);
+    return LoadRosMap(path);
+  }();
+  if (!grid.ok()) return grid.status();
+  if (!window) return grid;
+  StatusOr<Grid> cropped = CropToWindow(*grid, *window);
+  if (!cropped.ok()) return cropped.status().WithContext("'" + path + "'");
+  return cropped;
+}
+
+}  // namespace linemap::ros_bridge

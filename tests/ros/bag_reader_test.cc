@@ -1,0 +1,128 @@
+// `linemap encode RECORDING.bag` (the CLI with ros/bag_reader.cc loaded) on
+// bags written here with rosbag's C++ API. The files are encoded exactly
+// (--lossless), so that they decode to the messages cell for cell.
+#include <gtest/gtest.h>
+#include <rosbag/bag.h>
+
+#include <string>
+
+#include "linemap/codec.h"
+#include "ros/ros_messages.h"
+#include "tests/ros/ros_maps.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap::testing {
+namespace {
+
+using ros_bridge::MapMetaDataMsg;
+using ros_bridge::OccupancyGridMsg;
+
+// Three maps on /map (stamps 1700000000.5 + k s; the last one stamped zero,
+// so it is named by its recording time), and map metadata on
+// /map_metadata. Values between the thresholds are mixed in.
+class BagTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = MakeTempDir("bag");
+    bag_path_ = dir_ + "/recording.bag";
+    const char* maps[] = {"nav2/depot.yaml", "navtut/lse_arena.yaml", "strands/kth/map.yaml"};
+    rosbag::Bag bag;
+    bag.open(bag_path_, rosbag::bagmode::Write);
+    for (int k = 0; k < 3; ++k) {
+      OccupancyGridMsg message = ReferenceMessage(LoadBundledMap(maps[k]), "map");
+      for (std::size_t i = k; i < message.data.size(); i += 53) {
+        message.data[i] = static_cast<std::int8_t>((i * 7) % 110);
+      }
+      message.info.origin.position.x = 1.5 * k;
+      message.header.stamp = k < 2 ? ros::Time(1700000000 + k, 500000000) : ros::Time(0, 0);
+      bag.write("/map", ros::Time(1800000000 + k, 7), message);
+      MapMetaDataMsg meta = message.info;
+      bag.write("/map_metadata", ros::Time(1800000000 + k, 8), meta);
+      messages_.push_back(message);
+    }
+    bag.close();
+  }
+
+  void ExpectFileIsMessage(const std::string& path, int k) {
+    SCOPED_TRACE(path);
+    StatusOr<Grid> decoded = LoadLmap(path);
+    ASSERT_TRUE(decoded.ok()) << decoded.status().message();
+    ExpectGridIsMessage(*decoded, messages_[k], 0.05);
+  }
+
+  std::string dir_;
+  std::string bag_path_;
+  std::vector<OccupancyGridMsg> messages_;
+};
+
+TEST_F(BagTest, TopicGivesTheLastMap) {
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "-o", dir_ + "/a.lmap"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  ExpectFileIsMessage(dir_ + "/a.lmap", 2);
+  // A .bag input without --topic reads /map too.
+  const CliResult plain = RunCli({"encode", bag_path_, "--lossless", "-o", dir_ + "/b.lmap"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  ExpectFileIsMessage(dir_ + "/b.lmap", 2);
+}
+
+TEST_F(BagTest, IndexGivesThatMap) {
+  for (int k = 0; k < 3; ++k) {
+    const std::string out = dir_ + "/i" + std::to_string(k) + ".lmap";
+    const CliResult result = RunCli({"encode", bag_path_, "--lossless", "--topic", "map", "--index",
+                                     std::to_string(k), "-o", out});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    ExpectFileIsMessage(out, k);
+  }
+  const CliResult beyond = RunCli({"encode", bag_path_, "--index", "3", "-o", dir_ + "/x.lmap"});
+  EXPECT_EQ(beyond.exit_code, 2);
+  EXPECT_NE(beyond.err.find("holds 3 maps"), std::string::npos) << beyond.err;
+  EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+TEST_F(BagTest, AllWritesEveryMapNamedByItsStamp) {
+  const std::string out = dir_ + "/all";
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "--all", "-o", out + "/"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::vector<std::string> expected = {
+      "1700000000_500000000.lmap", "1700000001_500000000.lmap", "1800000002_000000007.lmap"};
+  ASSERT_EQ(ListDir(out), expected);
+  for (int k = 0; k < 3; ++k) ExpectFileIsMessage(out + "/" + expected[k], k);
+}
+
+TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--topic", "/scan", "-o", dir_ + "/x.lmap"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(bag_path_), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("'/scan'"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("/map (nav_msgs/OccupancyGrid, 3 messages)"), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("/map_metadata (nav_msgs/MapMetaData, 3 messages)"), std::string::npos)
+      << result.err;
+  EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+TEST_F(BagTest, TopicOfAnotherTypeExitsTwo) {
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--topic", "/map_metadata", "-o", dir_ + "/x.lmap"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(bag_path_), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("'/map_metadata' holds nav_msgs/MapMetaData, not "
+                            "nav_msgs/OccupancyGrid"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+TEST_F(BagTest, NotABagExitsTwo) {
+  const std::string fake = dir_ + "/fake.bag";
+  WriteFile(fake, "not a bag at all");
+  const CliResult result = RunCli({"encode", fake, "-o", dir_ + "/x.lmap"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(fake), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace linemap::testing

@@ -1,0 +1,233 @@
+// lmap_saver on a real rosmaster: the file it writes decodes to the map that
+// was published, --every keeps the last one, and a saver killed while it
+// writes leaves the previous file whole.
+#include <dirent.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <climits>
+#include <string>
+
+#include "linemap/codec.h"
+#include "ros/ros_messages.h"
+#include "tests/ros/ros_maps.h"
+#include "tests/ros/ros_test_support.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap::testing {
+namespace {
+
+using ros_bridge::OccupancyGridMsg;
+
+std::unique_ptr<ChildProcess> StartSaver(RosMaster& master, const std::string& topic,
+                                         const std::string& name, std::vector<std::string> extra) {
+  std::vector<std::string> argv = {LmapSaverPath(), "-t", topic, "-f", name};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return std::make_unique<ChildProcess>(argv, master.Env(), master.scratch(),
+                                        "saver" + std::to_string(Now()));
+}
+
+// True when `path` holds an .lmap that decodes to exactly `grid`'s cells
+// and size.
+bool FileHoldsCells(const std::string& path, const Grid& grid) {
+  StatusOr<Grid> decoded = LoadLmap(path);
+  return decoded.ok() && decoded->width() == grid.width() && decoded->height() == grid.height() &&
+         decoded->cells() == grid.cells();
+}
+
+// The map messages of the tests: bundled maps with values between the
+// thresholds mixed in, so that the saver's reading of them is checked too.
+OccupancyGridMsg MessageWithLevels(const Grid& grid) {
+  OccupancyGridMsg message = ReferenceMessage(grid, "map");
+  const std::int8_t levels[] = {10, 25, 26, 64, 65, 90, -7};
+  for (std::size_t i = 0; i < message.data.size(); i += 97) {
+    message.data[i] = levels[(i / 97) % 7];
+  }
+  return message;
+}
+
+// The grid the saver must write for `message`, by the reference reading.
+Grid ExpectedGrid(const OccupancyGridMsg& message) {
+  Grid grid(static_cast<int>(message.info.width), static_cast<int>(message.info.height));
+  for (std::size_t i = 0; i < message.data.size(); ++i) {
+    grid.mutable_cells()[i] = ReferenceCell(message.data[i]);
+  }
+  return grid;
+}
+
+TEST(LmapSaverTest, WritesThePublishedMapAndExits) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v1/map", 1, /*latch=*/true);
+  OccupancyGridMsg message = MessageWithLevels(LoadBundledMap("strands/kth/map.yaml"));
+  message.info.origin.position.x = -7.0;
+  message.info.origin.position.y = -17.5;
+  message.info.origin.orientation.z = std::sin(0.25);  // yaw 0.5 rad
+  message.info.origin.orientation.w = std::cos(0.25);
+  publisher.publish(message);
+  const std::string dir = MakeTempDir("saver");
+  auto saver = StartSaver(master, "/v1/map", dir + "/saved", {});
+  const std::optional<int> code = saver->Wait(20);
+  ASSERT_TRUE(code.has_value()) << "lmap_saver did not exit";
+  EXPECT_EQ(*code, 0) << saver->Stderr();
+  StatusOr<Grid> decoded = LoadLmap(dir + "/saved.lmap");
+  ASSERT_TRUE(decoded.ok()) << decoded.status().message();
+  ExpectGridIsMessage(*decoded, message, 0.05);
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"saved.lmap"});
+}
+
+TEST(LmapSaverTest, EveryRewritesTheFileAndLeavesTheLastMap) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v2/map", 3, /*latch=*/true);
+  const OccupancyGridMsg maps[] = {MessageWithLevels(LoadBundledMap("nav2/depot.yaml")),
+                                   MessageWithLevels(LoadBundledMap("navtut/lse_arena.yaml")),
+                                   MessageWithLevels(LoadBundledMap("strands/kth/map.yaml"))};
+  const std::string dir = MakeTempDir("every");
+  const std::string path = dir + "/robot.lmap";
+  auto saver = StartSaver(master, "/v2/map", dir + "/robot", {"--every"});
+  publisher.publish(maps[0]);
+  ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(maps[0])); }, 20))
+      << saver->Stderr();
+  publisher.publish(maps[1]);
+  ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(maps[1])); }, 20))
+      << saver->Stderr();
+  publisher.publish(maps[2]);
+  ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(maps[2])); }, 20))
+      << saver->Stderr();
+  EXPECT_FALSE(saver->Wait(0.2).has_value()) << "--every exited after a map";
+  EXPECT_EQ(saver->Stop(SIGINT), 0) << saver->Stderr();
+  StatusOr<Grid> decoded = LoadLmap(path);
+  ASSERT_TRUE(decoded.ok()) << decoded.status().message();
+  ExpectGridIsMessage(*decoded, maps[2], 0.05);
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"robot.lmap"});
+}
+
+// The acceptance: a map served by lmap_server and saved by
+// lmap_saver comes back exactly, cells, resolution and origin.
+TEST(LmapSaverTest, ServedMapSavesBackExactly) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/lse_arena_lossless.lmap";
+  StatusOr<Grid> original = LoadLmap(lmap);
+  ASSERT_TRUE(original.ok()) << original.status().message();
+  ChildProcess server({LmapServerPath(), lmap, "__ns:=/r1"}, master.Env(), master.scratch(),
+                      "server-r1");
+  const std::string dir = MakeTempDir("roundtrip");
+  auto saver = StartSaver(master, "/r1/map", dir + "/saved", {});
+  ASSERT_EQ(saver->Wait(20).value_or(-1), 0) << saver->Stderr() << server.Stderr();
+  StatusOr<Grid> saved = LoadLmap(dir + "/saved.lmap");
+  ASSERT_TRUE(saved.ok()) << saved.status().message();
+  EXPECT_EQ(saved->width(), original->width());
+  EXPECT_EQ(saved->height(), original->height());
+  EXPECT_TRUE(saved->cells() == original->cells());
+  EXPECT_EQ(saved->meta.resolution, original->meta.resolution);
+  EXPECT_EQ(saved->meta.origin, original->meta.origin);
+}
+
+// True while process `pid` has a file open under `dir` (the temporary file
+// of a save: the output is written to an unnamed file in its folder).
+bool WritesUnder(pid_t pid, const std::string& dir) {
+  const std::string fds = "/proc/" + std::to_string(pid) + "/fd";
+  DIR* listing = ::opendir(fds.c_str());
+  if (listing == nullptr) return false;
+  bool found = false;
+  while (const dirent* entry = ::readdir(listing)) {
+    char target[PATH_MAX];
+    const ssize_t n = ::readlink((fds + "/" + entry->d_name).c_str(), target, sizeof(target) - 1);
+    if (n > 0 && std::string(target, n).starts_with(dir + "/")) {
+      found = true;
+      break;
+    }
+  }
+  ::closedir(listing);
+  return found;
+}
+
+ino_t Inode(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 ? info.st_ino : 0;
+}
+
+TEST(LmapSaverTest, SaverKilledWhileWritingLeavesTheOldFileWhole) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v3/map", 1, /*latch=*/true);
+  const OccupancyGridMsg old_map = MessageWithLevels(LoadBundledMap("nav2/depot.yaml"));
+  const std::string dir = MakeTempDir("killed");
+  const std::string path = dir + "/robot.lmap";
+  // Each try: a saver writes the old map, then gets a large map (noise:
+  // a file of ~40 KB, written and flushed over milliseconds) and is killed
+  // as soon as it holds a file open in the output folder. A try whose kill
+  // came after the rename is repeated.
+  int killed_while_writing = 0;
+  for (int attempt = 0; attempt < 5 && killed_while_writing == 0; ++attempt) {
+    publisher.publish(old_map);
+    auto saver = StartSaver(master, "/v3/map", path, {"--every"});
+    ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(old_map)); }, 20))
+        << saver->Stderr();
+    const OccupancyGridMsg big = ReferenceMessage(NoiseMap(400, 400, attempt + 1), "map");
+    const ino_t old_inode = Inode(path);
+    publisher.publish(big);
+    const double deadline = Now() + 30;
+    // Until the saver holds the temporary file open, or has renamed it
+    // over the old one already (this try came too late), or has died.
+    while (!WritesUnder(saver->pid(), dir) && Inode(path) == old_inode && Now() < deadline &&
+           !saver->Wait(0)) {
+    }
+    ::kill(saver->pid(), SIGKILL);
+    ASSERT_EQ(saver->Wait(5).value_or(-1), 128 + SIGKILL) << saver->Stderr();
+    // Whole either way: the old map, or the new one when the kill came late.
+    const bool old_whole = FileHoldsCells(path, ExpectedGrid(old_map));
+    const bool new_whole = FileHoldsCells(path, ExpectedGrid(big));
+    ASSERT_TRUE(old_whole || new_whole) << "try " << attempt << ": " << path << " is broken";
+    EXPECT_EQ(ListDir(dir), std::vector<std::string>{"robot.lmap"});
+    killed_while_writing += old_whole;
+    std::printf("try %d: killed %s the rename\n", attempt, old_whole ? "before" : "after");
+  }
+  EXPECT_EQ(killed_while_writing, 1) << "no kill landed while the saver wrote";
+}
+
+TEST(LmapSaverTest, MalformedMapExitsTwoWithoutAFile) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v4/map", 1, /*latch=*/true);
+  OccupancyGridMsg message = ReferenceMessage(LoadBundledMap("nav2/depot.yaml"), "map");
+  message.data.resize(message.data.size() - 1);  // one value short of width x height
+  publisher.publish(message);
+  const std::string dir = MakeTempDir("malformed");
+  auto saver = StartSaver(master, "/v4/map", dir + "/saved", {});
+  EXPECT_EQ(saver->Wait(20).value_or(-1), 2);
+  EXPECT_NE(saver->Stderr().find("/v4/map"), std::string::npos) << saver->Stderr();
+  EXPECT_TRUE(ListDir(dir).empty());
+}
+
+TEST(LmapSaverTest, NoMasterExitsOneWithinTheWait) {
+  const std::string uri = "http://127.0.0.1:" + std::to_string(FreePort()) + "/";
+  const std::string scratch = MakeTempDir("nomaster");
+  const double start = Now();
+  ChildProcess saver({LmapSaverPath(), "-f", scratch + "/x", "--wait-master", "1.5"},
+                     {"ROS_MASTER_URI=" + uri, "ROS_HOME=" + scratch}, scratch, "saver");
+  const std::optional<int> code = saver.Wait(10);
+  const double seconds = Now() - start;
+  ASSERT_TRUE(code.has_value()) << "still waiting after 10 s";
+  EXPECT_EQ(*code, 1);
+  EXPECT_GE(seconds, 1.5);
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_NE(saver.Stderr().find("no ROS master"), std::string::npos) << saver.Stderr();
+  EXPECT_FALSE(FileExists(scratch + "/x.lmap"));
+}
+
+TEST(LmapSaverTest, BadOptionExitsTwo) {
+  const std::string scratch = MakeTempDir("badopt");
+  ChildProcess saver({LmapSaverPath(), "--occ", "20", "--free", "30"},
+                     {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
+                     "saver");
+  EXPECT_EQ(saver.Wait(10).value_or(-1), 2);
+  EXPECT_NE(saver.Stderr().find("--free must be below --occ"), std::string::npos) << saver.Stderr();
+}
+
+}  // namespace
+}  // namespace linemap::testing

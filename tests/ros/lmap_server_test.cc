@@ -1,0 +1,180 @@
+// lmap_server on a real rosmaster: what a subscriber, a service client and
+// `rostopic` receive is the map, cell for cell.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <signal.h>
+
+#include <boost/function.hpp>
+#include <cmath>
+#include <string>
+
+#include "linemap/codec.h"
+#include "ros/ros_messages.h"
+#include "tests/ros/ros_maps.h"
+#include "tests/ros/ros_test_support.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap::testing {
+namespace {
+
+using ros_bridge::GetMapSrv;
+using ros_bridge::MapMetaDataMsg;
+using ros_bridge::OccupancyGridMsg;
+
+// What one subscriber received on NS/map and NS/map_metadata.
+struct MapListener {
+  explicit MapListener(const std::string& ns) {
+    ros::NodeHandle nh;
+    map_sub = nh.subscribe<OccupancyGridMsg>(
+        ns + "/map", 1,
+        boost::function<void(const OccupancyGridMsg::ConstPtr&)>(
+            [this](const OccupancyGridMsg::ConstPtr& m) { map = m; }));
+    meta_sub =
+        nh.subscribe<MapMetaDataMsg>(ns + "/map_metadata", 1,
+                                     boost::function<void(const MapMetaDataMsg::ConstPtr&)>(
+                                         [this](const MapMetaDataMsg::ConstPtr& m) { meta = m; }));
+  }
+  bool Received() const { return map != nullptr && meta != nullptr; }
+
+  ros::Subscriber map_sub;
+  ros::Subscriber meta_sub;
+  OccupancyGridMsg::ConstPtr map;
+  MapMetaDataMsg::ConstPtr meta;
+};
+
+// Starts lmap_server in namespace `ns` with `extra` arguments.
+std::unique_ptr<ChildProcess> StartServer(RosMaster& master, const std::string& ns,
+                                          std::vector<std::string> extra) {
+  std::vector<std::string> argv = {LmapServerPath(), "__ns:=" + ns, "__name:=lmap_server"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return std::make_unique<ChildProcess>(argv, master.Env(), master.scratch(),
+                                        "server" + ns.substr(1));
+}
+
+void ExpectMetadataIsMapInfo(const MapMetaDataMsg& meta, const OccupancyGridMsg& map) {
+  EXPECT_EQ(meta.width, map.info.width);
+  EXPECT_EQ(meta.height, map.info.height);
+  EXPECT_EQ(meta.resolution, map.info.resolution);
+  EXPECT_EQ(meta.origin.position.x, map.info.origin.position.x);
+  EXPECT_EQ(meta.origin.position.y, map.info.origin.position.y);
+  EXPECT_EQ(meta.origin.orientation.w, map.info.origin.orientation.w);
+  EXPECT_EQ(meta.map_load_time, map.info.map_load_time);
+}
+
+TEST(LmapServerTest, PublishesBundledLmapAndServesItOnStaticMap) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
+  StatusOr<Grid> expected = LoadLmap(lmap);
+  ASSERT_TRUE(expected.ok()) << expected.status().message();
+  MapListener listener("/s1");
+  auto server = StartServer(master, "/s1", {lmap});
+  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20))
+      << server->Stderr();
+  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+  ExpectMessageIsGrid(*listener.map, *expected, "map");
+  ExpectMetadataIsMapInfo(*listener.meta, *listener.map);
+
+  ros::NodeHandle nh;
+  ros::ServiceClient client = nh.serviceClient<GetMapSrv>("/s1/static_map");
+  ASSERT_TRUE(client.waitForExistence(ros::Duration(10)));
+  GetMapSrv service;
+  ASSERT_TRUE(client.call(service));
+  ExpectMessageIsGrid(service.response.map, *expected, "map");
+  EXPECT_EQ(server->Stop(SIGINT), 0) << server->Stderr();
+}
+
+TEST(LmapServerTest, PublishesMapYamlInTheGivenFrame) {
+  RosMaster& master = SharedMaster();
+  // Non-zero origin: the origin travels into the message.
+  const Grid expected = LoadBundledMap("strands/kth/map.yaml");
+  MapListener listener("/s2");
+  auto server = StartServer(
+      master, "/s2", {"_map:=" + BundledMapsDir() + "/strands/kth/map.yaml", "_frame_id:=world"});
+  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
+  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+  ExpectMessageIsGrid(*listener.map, expected, "world");
+  EXPECT_EQ(listener.map->info.origin.position.x, -7.0);
+  EXPECT_EQ(listener.map->info.origin.position.y, -17.5);
+}
+
+// The reference crop, cell by cell: the cells of an unrotated map whose
+// squares overlap the open window (x0, x1) x (y0, y1).
+Grid ReferenceCrop(const Grid& grid, double x0, double y0, double x1, double y1) {
+  const double r = grid.meta.resolution;
+  const double ox = grid.meta.origin.x, oy = grid.meta.origin.y;
+  std::vector<int> cols, rows;
+  for (int c = 0; c < grid.width(); ++c) {
+    if (ox + (c + 1) * r > x0 + 1e-9 && ox + c * r < x1 - 1e-9) cols.push_back(c);
+  }
+  for (int w = 0; w < grid.height(); ++w) {
+    if (oy + (w + 1) * r > y0 + 1e-9 && oy + w * r < y1 - 1e-9) rows.push_back(w);
+  }
+  Grid out(static_cast<int>(cols.size()), static_cast<int>(rows.size()));
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      out.set(static_cast<int>(i), static_cast<int>(j), grid.at(cols[i], rows[j]));
+    }
+  }
+  out.meta = grid.meta;
+  out.meta.origin.x = ox + cols.front() * r;
+  out.meta.origin.y = oy + rows.front() * r;
+  return out;
+}
+
+TEST(LmapServerTest, WindowPublishesOnlyTheRegionWithItsOrigin) {
+  RosMaster& master = SharedMaster();
+  const Grid whole = LoadBundledMap("strands/kth/map.yaml");
+  // Edges on cell borders (-5.0) and inside cells (-2.32, 3.01, 8.93).
+  const Grid expected = ReferenceCrop(whole, -5.0, -2.32, 3.01, 8.93);
+  ASSERT_EQ(expected.width(), 161);
+  MapListener listener("/s3");
+  auto server = StartServer(
+      master, "/s3",
+      {BundledMapsDir() + "/strands/kth/map.yaml", "_window:=[-5.0, -2.32, 3.01, 8.93]"});
+  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
+  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+  ExpectMessageIsGrid(*listener.map, expected, "map");
+}
+
+TEST(LmapServerTest, RostopicEchoShowsTheMapInfo) {
+  RosMaster& master = SharedMaster();
+  auto server = StartServer(master, "/s4", {SourceDir() + "/tests/data/lmap/depot_lossless.lmap"});
+  ChildProcess echo({RostopicPath(), "echo", "-n1", "/s4/map/info"}, master.Env(), master.scratch(),
+                    "rostopic");
+  const std::optional<int> code = echo.Wait(30);
+  ASSERT_TRUE(code.has_value()) << "rostopic echo did not finish";
+  EXPECT_EQ(*code, 0) << echo.Stderr();
+  const std::string out = echo.Stdout();
+  EXPECT_NE(out.find("width: 604"), std::string::npos) << out;
+  EXPECT_NE(out.find("height: 307"), std::string::npos) << out;
+}
+
+TEST(LmapServerTest, UnreadableMapExitsTwoNamingTheFile) {
+  RosMaster& master = SharedMaster();
+  const std::string missing = MakeTempDir("server") + "/missing.lmap";
+  auto server = StartServer(master, "/s5", {missing});
+  const std::optional<int> code = server->Wait(20);
+  ASSERT_TRUE(code.has_value());
+  EXPECT_EQ(*code, 2);
+  EXPECT_NE(server->Stderr().find(missing), std::string::npos) << server->Stderr();
+}
+
+TEST(LmapServerTest, NoMasterExitsOneWithinTheWait) {
+  // Nothing listens on this port; no master of this process is started.
+  const std::string uri = "http://127.0.0.1:" + std::to_string(FreePort()) + "/";
+  const std::string scratch = MakeTempDir("nomaster");
+  const double start = Now();
+  ChildProcess server({LmapServerPath(), "--wait-master", "1.5",
+                       SourceDir() + "/tests/data/lmap/depot_lossless.lmap"},
+                      {"ROS_MASTER_URI=" + uri, "ROS_HOME=" + scratch}, scratch, "server");
+  const std::optional<int> code = server.Wait(10);
+  const double seconds = Now() - start;
+  ASSERT_TRUE(code.has_value()) << "still waiting after 10 s";
+  EXPECT_EQ(*code, 1);
+  EXPECT_GE(seconds, 1.5);
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_NE(server.Stderr().find("no ROS master at " + uri), std::string::npos) << server.Stderr();
+}
+
+}  // namespace
+}  // namespace linemap::testing
