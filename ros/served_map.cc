@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 
 namespace linemap::ros_bridge {
@@ -64,7 +65,11 @@ StatusOr<Window> ParseWindow(const std::string& text) {
   return WindowFromValues(values.data(), static_cast<int>(values.size()));
 }
 
-StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
+namespace {
+
+// The cells a window in metres covers on a map of `width` x `height` cells
+// with `frame`'s resolution and origin.
+StatusOr<CellWindow> WindowCells(int width, int height, const Grid& frame, const Window& window) {
   // The window's corners in cell units (cell centres at integers), then the
   // cells c with c - 0.5 < u1 and c + 0.5 > u0. The small slack keeps a
   // window edge that lies on a cell border (1.0 m at 0.05 m per cell reads
@@ -74,7 +79,7 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
   for (const double x : {window.x0, window.x1}) {
     for (const double y : {window.y0, window.y1}) {
       double col = 0.0, row = 0.0;
-      grid.WorldToCell(x, y, &col, &row);
+      frame.WorldToCell(x, y, &col, &row);
       col_min = std::min(col_min, col);
       col_max = std::max(col_max, col);
       row_min = std::min(row_min, row);
@@ -83,25 +88,51 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
   }
   const double c0 = std::max(std::floor(col_min - 0.5 + kSlack) + 1.0, 0.0);
   const double r0 = std::max(std::floor(row_min - 0.5 + kSlack) + 1.0, 0.0);
-  const double c1 = std::min(std::ceil(col_max + 0.5 - kSlack) - 1.0, grid.width() - 1.0);
-  const double r1 = std::min(std::ceil(row_max + 0.5 - kSlack) - 1.0, grid.height() - 1.0);
+  const double c1 = std::min(std::ceil(col_max + 0.5 - kSlack) - 1.0, width - 1.0);
+  const double r1 = std::min(std::ceil(row_max + 0.5 - kSlack) - 1.0, height - 1.0);
   if (c0 > c1 || r0 > r1) {
-    return InvalidArgumentError("window does not overlap the map (" + std::to_string(grid.width()) +
-                                " x " + std::to_string(grid.height()) + " cells)");
+    return InvalidArgumentError("window does not overlap the map (" + std::to_string(width) +
+                                " x " + std::to_string(height) + " cells)");
   }
-  const int col0 = static_cast<int>(c0), row0 = static_cast<int>(r0);
-  const int width = static_cast<int>(c1) - col0 + 1, height = static_cast<int>(r1) - row0 + 1;
-  Grid out(width, height);
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) out.set(col, row, grid.at(col0 + col, row0 + row));
+  return CellWindow{static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c1) + 1,
+                    static_cast<int>(r1) + 1};
+}
+
+}  // namespace
+
+StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
+  LINEMAP_ASSIGN_OR_RETURN(CellWindow w, WindowCells(grid.width(), grid.height(), grid, window));
+  Grid out(w.col1 - w.col0, w.row1 - w.row0);
+  for (int row = 0; row < out.height(); ++row) {
+    for (int col = 0; col < out.width(); ++col) out.set(col, row, grid.at(w.col0 + col, w.row0 + row));
   }
   out.meta = grid.meta;
   // The lower-left corner of cell (col0, row0) is half a cell before its centre.
-  grid.CellToWorld(col0 - 0.5, row0 - 0.5, &out.meta.origin.x, &out.meta.origin.y);
+  grid.CellToWorld(w.col0 - 0.5, w.row0 - 0.5, &out.meta.origin.x, &out.meta.origin.y);
   return out;
 }
 
+namespace {
+
+// A window of an .lmap file: only the tiles it meets are decoded (the layers
+// are read first, for the map's size and frame).
+StatusOr<Grid> LoadLmapWindow(const std::string& path, const Window& window) {
+  LINEMAP_ASSIGN_OR_RETURN(LmapVectors vectors, LoadLmapVectors(path));
+  Grid frame;
+  frame.meta = vectors.meta;
+  LINEMAP_ASSIGN_OR_RETURN(CellWindow cells,
+                           WindowCells(vectors.width, vectors.height, frame, window));
+  return LoadLmapRegion(path, cells);
+}
+
+}  // namespace
+
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window) {
+  if (window && IsLmapPath(path)) {
+    StatusOr<Grid> region = LoadLmapWindow(path, *window);
+    if (!region.ok()) return region.status().WithContext("'" + path + "'");
+    return region;
+  }
   StatusOr<Grid> grid = [&]() -> StatusOr<Grid> {
     if (IsLmapPath(path)) return LoadLmap(path);
     return LoadRosMap(path);

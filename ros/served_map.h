@@ -32,9 +32,9 @@ StatusOr<Window> WindowFromValues(const double* values, int count);
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 
 // Loads `path` (.lmap, map YAML or bare PGM/PNG) and, with a window, keeps
-// only the window's cells. A whole .lmap file is decoded first and then
-// cropped; the window is applied here, and nowhere else, so that region
-// decoding of huge .lmap files can take its place.
+// only the window's cells (the same cells as CropToWindow). A 2.0 .lmap
+// file decodes only the tiles the window meets (LoadLmapRegion); a map
+// image is loaded whole and cropped.
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window);
 
 }  // namespace linemap::ros_bridge
