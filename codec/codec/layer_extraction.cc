@@ -240,10 +240,12 @@ LatticeSegment ToLattice(const LineSegment& line, int width, int height) {
 StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
                                                     const EncodeOptions& options) {
   if (grid.empty()) return std::vector<LineSegment>{};
-  // One segment per straight wall: the layer is the map's walls as lines
-  // (export, planning overlays), not the pixel steps the extractor's
-  // defaults follow for the paper's DisPL_ave.
-  LineExtractionOptions line_options = StraightWalls(LineExtractionOptions{});
+  // One segment per straight wall by default: the layer is the map's walls
+  // as lines (export, planning overlays), not the pixel steps the
+  // extractor's defaults follow for the paper's DisPL_ave.
+  LineExtractionOptions line_options = options.straight_walls
+                                           ? StraightWalls(LineExtractionOptions{})
+                                           : LineExtractionOptions{};
   line_options.method = options.method;
   line_options.epsilon_cells = options.epsilon_cells;
   line_options.robot = RobotCell(grid, options);
