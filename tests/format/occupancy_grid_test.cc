@@ -28,8 +28,8 @@ TEST(OccupancyGridTest, ReadsValuesAsMapSaverDoes) {
   OccupancyGridMessage m = Message(8, 1, {-1, 0, 25, 26, 64, 65, 100, 101 - 128});
   StatusOr<Grid> grid = GridFromOccupancyGrid(m);
   ASSERT_TRUE(grid.ok()) << grid.status().message();
-  const std::vector<Cell> expected = {Cell::kUnknown,  Cell::kFree,    Cell::kFree,
-                                      Cell::kUnknown,  Cell::kUnknown, Cell::kOccupied,
+  const std::vector<Cell> expected = {Cell::kUnknown, Cell::kFree,     Cell::kFree,
+                                      Cell::kUnknown, Cell::kUnknown,  Cell::kOccupied,
                                       Cell::kOccupied, Cell::kUnknown};
   EXPECT_EQ(grid->cells(), expected);
 }
