@@ -66,7 +66,9 @@ const CommandSpec kDecodeSpec = {
     "origin's yaw. When the yaw is not 0, the box's corners are taken into the\n"
     "grid and the window is the cell rectangle around them. --window-cells is\n"
     "half-open: C0 <= col < C1, R0 <= row < R1. A window that is empty or\n"
-    "reaches past the map's border is refused (exit 2).",
+    "reaches past the map's border is refused (exit 2).\n"
+    "Without a window a 2.0 file is decoded band by band straight into the\n"
+    "PGM, so memory does not grow with the map's cells.",
     DecodeOptions(),
     1,
     1,
