@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 
 namespace linemap {
 namespace {
@@ -26,21 +27,6 @@ std::string DirectoryOf(const std::string& path) {
   return path.substr(0, slash);
 }
 
-Status WriteAll(int fd, std::string_view data, const std::string& path) {
-  const char* p = data.data();
-  std::size_t left = data.size();
-  while (left > 0) {
-    const ssize_t n = ::write(fd, p, left);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      return IoError("cannot write " + Quoted(path) + ": " + ErrnoText(errno));
-    }
-    p += n;
-    left -= static_cast<std::size_t>(n);
-  }
-  return Status::Ok();
-}
-
 }  // namespace
 
 bool IsDirectory(const std::string& path) {
@@ -54,8 +40,7 @@ bool IsSameFile(const std::string& a, const std::string& b) {
          sa.st_ino == sb.st_ino;
 }
 
-StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
-                                                  std::uint64_t max_bytes) {
+StatusOr<InputFile> InputFile::Open(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
     const int err = errno;
@@ -73,33 +58,67 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
     ::close(fd);
     return InvalidArgumentError(Quoted(path) + " is a directory, not a file");
   }
-  if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
-    ::close(fd);
-    return ResourceExhaustedError(Quoted(path) + " is " + std::to_string(st.st_size) +
-                                  " bytes, more than the limit of " + std::to_string(max_bytes));
+  const bool regular = S_ISREG(st.st_mode);
+  return InputFile(path, fd, regular, regular ? static_cast<std::uint64_t>(st.st_size) : 0);
+}
+
+InputFile::InputFile(InputFile&& other) noexcept
+    : path_(std::move(other.path_)),
+      fd_(std::exchange(other.fd_, -1)),
+      regular_(other.regular_),
+      size_(other.size_) {}
+
+InputFile& InputFile::operator=(InputFile&& other) noexcept {
+  if (this != &other) {
+    if (fd_ >= 0) ::close(fd_);
+    path_ = std::move(other.path_);
+    fd_ = std::exchange(other.fd_, -1);
+    regular_ = other.regular_;
+    size_ = other.size_;
   }
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(static_cast<std::size_t>(st.st_size));
-  std::uint8_t buffer[1 << 16];
-  for (;;) {
-    const ssize_t n = ::read(fd, buffer, sizeof(buffer));
+  return *this;
+}
+
+InputFile::~InputFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+StatusOr<std::size_t> InputFile::Read(std::uint8_t* out, std::size_t size) {
+  std::size_t done = 0;
+  while (done < size) {
+    const ssize_t n = ::read(fd_, out + done, size - done);
     if (n < 0) {
       if (errno == EINTR) continue;
       const int err = errno;
-      ::close(fd);
       // Reading a directory opened on some systems fails with EISDIR.
-      if (err == EISDIR) return InvalidArgumentError(Quoted(path) + " is a directory");
-      return InvalidArgumentError("cannot read " + Quoted(path) + ": " + ErrnoText(err));
+      if (err == EISDIR) return InvalidArgumentError(Quoted(path_) + " is a directory");
+      return InvalidArgumentError("cannot read " + Quoted(path_) + ": " + ErrnoText(err));
     }
     if (n == 0) break;
-    if (bytes.size() + static_cast<std::size_t>(n) > max_bytes) {
-      ::close(fd);
+    done += static_cast<std::size_t>(n);
+  }
+  return done;
+}
+
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
+                                                  std::uint64_t max_bytes) {
+  LINEMAP_ASSIGN_OR_RETURN(InputFile file, InputFile::Open(path));
+  if (file.size() > max_bytes) {
+    return ResourceExhaustedError(Quoted(path) + " is " + std::to_string(file.size()) +
+                                  " bytes, more than the limit of " + std::to_string(max_bytes));
+  }
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(static_cast<std::size_t>(file.size()));
+  std::uint8_t buffer[1 << 16];
+  for (;;) {
+    LINEMAP_ASSIGN_OR_RETURN(const std::size_t n, file.Read(buffer, sizeof(buffer)));
+    if (n == 0) break;
+    if (bytes.size() + n > max_bytes) {
       return ResourceExhaustedError(Quoted(path) + " is larger than the limit of " +
                                     std::to_string(max_bytes) + " bytes");
     }
     bytes.insert(bytes.end(), buffer, buffer + n);
   }
-  ::close(fd);
   return bytes;
 }
 
@@ -159,103 +178,19 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   return existing;
 }
 
-// A new file beside a save's target: unnamed (O_TMPFILE; `fd` open) until
-// NameTemporary links it, or named from the start (`name`; `fd` closed)
-// where the file system has no unnamed files.
-struct Temporary {
-  int fd = -1;
-  std::string name;
-};
-
-// Writes `data` to a new temporary file beside `target`, the file `path`
-// resolves to; flushes it to disk when `durability` is kSynced. The file has
-// no name while it is written, so a save killed meanwhile leaves nothing
-// behind; `named` asks for a named one at once. It gets the permission bits
-// (and, where allowed, the owner) of an existing `target`, else the mode a
-// plain create would give.
-StatusOr<Temporary> WriteTemporary(const std::string& path, const std::string& target,
-                                   const ExistingFile& existing, std::string_view data,
-                                   Durability durability, bool named) {
-  Temporary tmp;
-  int fd = named ? -1 : ::open(DirectoryOf(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
-  if (fd < 0) {  // no unnamed files here (old kernel, some file systems)
-    tmp.name = target + ".tmp-XXXXXX";
-    fd = ::mkstemp(tmp.name.data());
-    if (fd < 0) {
-      return IoError("cannot create a file in " + Quoted(DirectoryOf(target)) + " for " +
-                     Quoted(path) + ": " + ErrnoText(errno));
-    }
-  }
-  Status status = WriteAll(fd, data, path);
-  if (status.ok() && durability == Durability::kSynced && ::fsync(fd) != 0) {
-    status = IoError("cannot flush " + Quoted(path) + " to disk: " + ErrnoText(errno));
-  }
-  if (status.ok()) {
-    mode_t mode = 0;
-    if (existing.exists) {
-      mode = existing.st.st_mode & 0777;
-      // Best effort, as the replaced file's owner is not ours to insist on:
-      // only root (or the owner, for the group) may give a file away.
-      (void)::fchown(fd, existing.st.st_uid, existing.st.st_gid);
-    } else {
-      // New files start 0600; give the file the mode a plain create would.
-      const mode_t mask = ::umask(0);
-      ::umask(mask);
-      mode = 0666 & ~mask;
-    }
-    if (::fchmod(fd, mode) != 0) {
-      status = IoError("cannot set the permissions of " + Quoted(path) + ": " + ErrnoText(errno));
-    }
-  }
-  if (tmp.name.empty() && status.ok()) {
-    tmp.fd = fd;  // closed when named
-    return tmp;
-  }
-  if (::close(fd) != 0 && status.ok()) {
-    status = IoError("cannot close " + Quoted(path) + ": " + ErrnoText(errno));
-  }
-  if (!status.ok()) {
-    if (!tmp.name.empty()) ::unlink(tmp.name.c_str());
-    return status;
-  }
-  return tmp;
-}
-
-// Gives an unnamed temporary a name beside `target` (just before the rename,
-// so a killed save leaves a named temporary only in that instant) and closes
-// it. False, with the temporary untouched, when it cannot be linked (no
-// /proc): the caller writes a named one instead.
-bool NameTemporary(Temporary* tmp, const std::string& target) {
-  if (!tmp->name.empty()) return true;
-  const std::string fd_path = "/proc/self/fd/" + std::to_string(tmp->fd);
-  // A name no other save uses: the clock and the process id, retried on a clash.
+// A name for a temporary beside `target` that no other save uses: the
+// clock and the process id, varied by `attempt` on a clash.
+std::string TemporaryName(const std::string& target, std::uint64_t attempt) {
   const std::uint64_t seed =
       static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
       (static_cast<std::uint64_t>(::getpid()) << 32);
-  for (std::uint64_t attempt = 0; attempt < 100; ++attempt) {
-    char suffix[24];
-    std::snprintf(suffix, sizeof(suffix), ".tmp-%06llx",
-                  static_cast<unsigned long long>((seed + attempt * 0x9e3779b9u) & 0xffffff));
-    const std::string name = target + suffix;
-    if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
-      tmp->name = name;
-      ::close(tmp->fd);
-      tmp->fd = -1;
-      return true;
-    }
-    if (errno != EEXIST) return false;
-  }
-  return false;
+  char suffix[24];
+  std::snprintf(suffix, sizeof(suffix), ".tmp-%06llx",
+                static_cast<unsigned long long>((seed + attempt * 0x9e3779b9u) & 0xffffff));
+  return target + suffix;
 }
 
-// Closes or removes what is left of temporaries that were not renamed.
-void DiscardTemporaries(std::vector<Temporary>* temporaries, std::size_t from) {
-  for (std::size_t i = from; i < temporaries->size(); ++i) {
-    Temporary& tmp = (*temporaries)[i];
-    if (tmp.fd >= 0) ::close(tmp.fd);  // unnamed: the file goes with it
-    if (!tmp.name.empty()) ::unlink(tmp.name.c_str());
-  }
-}
+std::string ProcFdPath(int fd) { return "/proc/self/fd/" + std::to_string(fd); }
 
 void SyncDirectory(const std::string& dir) {
   const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -267,58 +202,192 @@ void SyncDirectory(const std::string& dir) {
 
 }  // namespace
 
-Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durability) {
-  // Every target is resolved and checked before anything is written.
-  std::vector<std::string> targets;
-  std::vector<ExistingFile> existing;
-  for (const FileToWrite& file : files) {
-    if (file.path.empty()) return InvalidArgumentError("empty output file name");
-    LINEMAP_ASSIGN_OR_RETURN(std::string target, ResolveTarget(file.path));
-    LINEMAP_ASSIGN_OR_RETURN(ExistingFile old, CheckReplaceable(file.path, target));
-    targets.push_back(std::move(target));
-    existing.push_back(old);
+StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durability durability) {
+  if (path.empty()) return InvalidArgumentError("empty output file name");
+  LINEMAP_ASSIGN_OR_RETURN(std::string target, ResolveTarget(path));
+  LINEMAP_ASSIGN_OR_RETURN(ExistingFile existing, CheckReplaceable(path, target));
+  AtomicFileWriter writer;
+  writer.path_ = path;
+  writer.target_ = std::move(target);
+  writer.durability_ = durability;
+  writer.replaces_ = existing.exists;
+  writer.mode_ = existing.st.st_mode & 0777;
+  writer.uid_ = existing.st.st_uid;
+  writer.gid_ = existing.st.st_gid;
+  const std::string dir = DirectoryOf(writer.target_);
+  int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  // The unnamed file is linked under a name through /proc at the end; with
+  // no /proc it could never be, so it is named from the start instead.
+  if (fd >= 0 && ::access(ProcFdPath(fd).c_str(), F_OK) != 0) {
+    ::close(fd);
+    fd = -1;
   }
-  std::vector<Temporary> temporaries;
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    StatusOr<Temporary> tmp = WriteTemporary(files[i].path, targets[i], existing[i], files[i].data,
-                                             durability, /*named=*/false);
-    if (!tmp.ok()) {
-      DiscardTemporaries(&temporaries, 0);
-      return tmp.status();
+  if (fd < 0) {  // no unnamed files here (old kernel, some file systems)
+    writer.temp_name_ = writer.target_ + ".tmp-XXXXXX";
+    fd = ::mkstemp(writer.temp_name_.data());
+    if (fd < 0) {
+      return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
+                     ErrnoText(errno));
     }
-    temporaries.push_back(std::move(*tmp));
+    ::fcntl(fd, F_SETFD, FD_CLOEXEC);
   }
-  // Every file is written; now each gets a name and takes its target's.
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (!NameTemporary(&temporaries[i], targets[i])) {
-      StatusOr<Temporary> named = WriteTemporary(files[i].path, targets[i], existing[i],
-                                                 files[i].data, durability, /*named=*/true);
-      if (!named.ok()) {
-        DiscardTemporaries(&temporaries, 0);
-        return named.status();
+  writer.fd_ = fd;
+  return writer;
+}
+
+AtomicFileWriter::AtomicFileWriter(AtomicFileWriter&& other) noexcept
+    : path_(std::move(other.path_)),
+      target_(std::move(other.target_)),
+      durability_(other.durability_),
+      replaces_(other.replaces_),
+      mode_(other.mode_),
+      uid_(other.uid_),
+      gid_(other.gid_),
+      fd_(std::exchange(other.fd_, -1)),
+      temp_name_(std::exchange(other.temp_name_, std::string())),
+      end_(other.end_),
+      error_(std::move(other.error_)) {}
+
+AtomicFileWriter& AtomicFileWriter::operator=(AtomicFileWriter&& other) noexcept {
+  if (this != &other) {
+    Discard();
+    path_ = std::move(other.path_);
+    target_ = std::move(other.target_);
+    durability_ = other.durability_;
+    replaces_ = other.replaces_;
+    mode_ = other.mode_;
+    uid_ = other.uid_;
+    gid_ = other.gid_;
+    fd_ = std::exchange(other.fd_, -1);
+    temp_name_ = std::exchange(other.temp_name_, std::string());
+    end_ = other.end_;
+    error_ = std::move(other.error_);
+  }
+  return *this;
+}
+
+AtomicFileWriter::~AtomicFileWriter() { Discard(); }
+
+void AtomicFileWriter::Discard() {
+  if (fd_ >= 0) ::close(fd_);  // unnamed: the file goes with it
+  fd_ = -1;
+  if (!temp_name_.empty()) ::unlink(temp_name_.c_str());
+  temp_name_.clear();
+}
+
+Status AtomicFileWriter::WriteAt(std::uint64_t offset, std::string_view data) {
+  if (!error_.ok()) return error_;
+  if (fd_ < 0) return InternalError(Quoted(path_) + ": written after it was committed");
+  const char* p = data.data();
+  std::size_t left = data.size();
+  std::uint64_t at = offset;
+  while (left > 0) {
+    const ssize_t n = ::pwrite(fd_, p, left, static_cast<off_t>(at));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      error_ = IoError("cannot write " + Quoted(path_) + ": " + ErrnoText(errno));
+      return error_;
+    }
+    p += n;
+    at += static_cast<std::uint64_t>(n);
+    left -= static_cast<std::size_t>(n);
+  }
+  end_ = std::max(end_, at);
+  return Status::Ok();
+}
+
+Status AtomicFileWriter::Append(std::string_view data) { return WriteAt(end_, data); }
+
+Status AtomicFileWriter::Finish() {
+  if (!error_.ok()) return error_;
+  if (fd_ < 0) return InternalError(Quoted(path_) + ": committed twice");
+  if (durability_ == Durability::kSynced && ::fsync(fd_) != 0) {
+    return IoError("cannot flush " + Quoted(path_) + " to disk: " + ErrnoText(errno));
+  }
+  mode_t mode = mode_;
+  if (replaces_) {
+    // Best effort, as the replaced file's owner is not ours to insist on:
+    // only root (or the owner, for the group) may give a file away.
+    (void)::fchown(fd_, uid_, gid_);
+  } else {
+    // New files start 0600; give the file the mode a plain create would.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    mode = 0666 & ~mask;
+  }
+  if (::fchmod(fd_, mode) != 0) {
+    return IoError("cannot set the permissions of " + Quoted(path_) + ": " + ErrnoText(errno));
+  }
+  if (temp_name_.empty()) {
+    // Named only now, just before the rename: a save killed while writing
+    // leaves nothing behind.
+    const std::string fd_path = ProcFdPath(fd_);
+    for (std::uint64_t attempt = 0; attempt < 100 && temp_name_.empty(); ++attempt) {
+      const std::string name = TemporaryName(target_, attempt);
+      if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+        temp_name_ = name;
+      } else if (errno != EEXIST) {
+        return IoError("cannot name the new file for " + Quoted(path_) + ": " + ErrnoText(errno));
       }
-      ::close(temporaries[i].fd);
-      temporaries[i] = std::move(*named);
+    }
+    if (temp_name_.empty()) {
+      return IoError("cannot name the new file for " + Quoted(path_) + ": every name taken");
     }
   }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temporaries[i].name.c_str(), targets[i].c_str()) != 0) {
-      const int err = errno;
-      DiscardTemporaries(&temporaries, i);
-      return IoError("cannot rename the new file onto " + Quoted(files[i].path) + ": " +
-                     ErrnoText(err));
+  const int fd = std::exchange(fd_, -1);
+  if (::close(fd) != 0) {
+    return IoError("cannot close " + Quoted(path_) + ": " + ErrnoText(errno));
+  }
+  return Status::Ok();
+}
+
+Status AtomicFileWriter::Commit() { return CommitFilesAtomic({this}); }
+
+Status CommitFilesAtomic(const std::vector<AtomicFileWriter*>& writers) {
+  for (AtomicFileWriter* writer : writers) {
+    const Status finished = writer->Finish();
+    if (!finished.ok()) {
+      for (AtomicFileWriter* w : writers) w->Discard();
+      return finished;
     }
   }
-  if (durability == Durability::kSynced) {
+  for (std::size_t i = 0; i < writers.size(); ++i) {
+    AtomicFileWriter& w = *writers[i];
+    if (::rename(w.temp_name_.c_str(), w.target_.c_str()) != 0) {
+      const Status failed =
+          IoError("cannot rename the new file onto " + Quoted(w.path_) + ": " + ErrnoText(errno));
+      for (std::size_t j = i; j < writers.size(); ++j) writers[j]->Discard();
+      return failed;
+    }
+    w.temp_name_.clear();
+  }
+  if (!writers.empty() && writers[0]->durability_ == Durability::kSynced) {
     std::vector<std::string> synced;
-    for (const std::string& target : targets) {
-      const std::string dir = DirectoryOf(target);
+    for (const AtomicFileWriter* w : writers) {
+      const std::string dir = DirectoryOf(w->target_);
       if (std::find(synced.begin(), synced.end(), dir) != synced.end()) continue;
       SyncDirectory(dir);
       synced.push_back(dir);
     }
   }
   return Status::Ok();
+}
+
+Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durability) {
+  // Every target is resolved and checked before anything is written.
+  std::vector<AtomicFileWriter> writers;
+  writers.reserve(files.size());
+  for (const FileToWrite& file : files) {
+    LINEMAP_ASSIGN_OR_RETURN(AtomicFileWriter writer,
+                             AtomicFileWriter::Open(file.path, durability));
+    writers.push_back(std::move(writer));
+  }
+  std::vector<AtomicFileWriter*> pointers;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    LINEMAP_RETURN_IF_ERROR(writers[i].Append(files[i].data));
+    pointers.push_back(&writers[i]);
+  }
+  return CommitFilesAtomic(pointers);
 }
 
 Status WriteFileAtomic(const std::string& path, std::string_view data, Durability durability) {

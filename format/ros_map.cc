@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -258,27 +259,37 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
                             std::uint64_t max_cells) {
   LINEMAP_RETURN_IF_ERROR(CheckResolution(meta.resolution, Quoted(image_path)));
   LINEMAP_RETURN_IF_ERROR(CheckThresholds(meta, Quoted(image_path)));
-  LINEMAP_ASSIGN_OR_RETURN(RawImage image, ReadImageFile(image_path, max_cells));
-  Grid grid(image.width, image.height);
+  // Row by row: loading holds the grid and one row of samples, never the
+  // image (2 bytes per pixel per channel as quanta).
+  LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<ImageRowReader> image,
+                           OpenImageRows(image_path, max_cells));
+  const int width = image->width();
+  const int height = image->height();
+  const int channels = image->channels();
+  Grid grid(width, height);
   grid.meta = meta;
+  std::vector<std::uint16_t> samples(static_cast<std::size_t>(width) * channels);
   // A grey pixel's cell depends on its one sample only, and maps are long
   // runs of equal samples: classify each new sample once.
-  const bool grey = image.channels == 1;
   std::uint16_t last_sample = 0;
   Cell last_cell = ClassifyPixel(&last_sample, 1, meta);
-  for (int y = 0; y < image.height; ++y) {
-    const int row = image.height - 1 - y;  // image row 0 is the top of the map
-    for (int x = 0; x < image.width; ++x) {
-      const std::uint16_t* samples = image.pixel(x, y);
-      if (!grey) {
-        grid.set(x, row, ClassifyPixel(samples, image.channels, meta));
-        continue;
+  for (int y = 0; y < height; ++y) {
+    LINEMAP_RETURN_IF_ERROR(image->ReadRow(samples.data()));
+    // Image row 0 is the top of the map.
+    Cell* cells = grid.mutable_cells().data() + grid.Index(0, height - 1 - y);
+    if (channels != 1) {
+      for (int x = 0; x < width; ++x) {
+        cells[x] =
+            ClassifyPixel(samples.data() + static_cast<std::size_t>(x) * channels, channels, meta);
       }
-      if (samples[0] != last_sample) {
-        last_sample = samples[0];
-        last_cell = ClassifyPixel(samples, 1, meta);
+      continue;
+    }
+    for (int x = 0; x < width; ++x) {
+      if (samples[x] != last_sample) {
+        last_sample = samples[x];
+        last_cell = ClassifyPixel(&last_sample, 1, meta);
       }
-      grid.set(x, row, last_cell);
+      cells[x] = last_cell;
     }
   }
   return grid;
@@ -313,31 +324,127 @@ std::string SavedImagePath(const std::string& yaml_path) {
   return DirectoryOf(yaml_path) + StemOf(yaml_path) + ".pgm";
 }
 
-Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability durability) {
+// The PGM bytes of rectangles of cells, gathered in a fixed buffer and
+// written where they belong in the file (rows of a full-width rectangle lie
+// one after the other in the PGM, top row first).
+struct RosMapWriter::Impl {
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+
+  Impl(AtomicFileWriter pgm_writer, AtomicFileWriter yaml_writer)
+      : pgm(std::move(pgm_writer)), yaml(std::move(yaml_writer)) {}
+
+  AtomicFileWriter pgm;
+  AtomicFileWriter yaml;
+  std::string yaml_text;
+  int width = 0;
+  int height = 0;
+  std::uint64_t header_bytes = 0;
+  std::uint64_t cells_written = 0;
+  std::string buffer;  // grey bytes of the run at buffer_offset
+  std::uint64_t buffer_offset = 0;
+
+  Status Flush() {
+    if (buffer.empty()) return Status::Ok();
+    const Status written = pgm.WriteAt(buffer_offset, buffer);
+    buffer.clear();
+    return written;
+  }
+
+  // The grey bytes of `n` cells at PGM byte `offset`.
+  Status Put(std::uint64_t offset, const Cell* cells, std::size_t n) {
+    static constexpr char kGrey[3] = {static_cast<char>(kPgmFree), static_cast<char>(kPgmOccupied),
+                                      static_cast<char>(kPgmUnknown)};  // by Cell value
+    while (n > 0) {
+      const bool continues = !buffer.empty() && buffer_offset + buffer.size() == offset;
+      if (!continues || buffer.size() == kBufferBytes) {
+        LINEMAP_RETURN_IF_ERROR(Flush());
+        buffer_offset = offset;
+      }
+      const std::size_t k = std::min(n, kBufferBytes - buffer.size());
+      const std::size_t start = buffer.size();
+      buffer.resize(start + k);
+      for (std::size_t i = 0; i < k; ++i) buffer[start + i] = kGrey[static_cast<int>(cells[i])];
+      cells += k;
+      offset += k;
+      n -= k;
+    }
+    return Status::Ok();
+  }
+};
+
+RosMapWriter::RosMapWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+RosMapWriter::RosMapWriter(RosMapWriter&&) noexcept = default;
+RosMapWriter& RosMapWriter::operator=(RosMapWriter&&) noexcept = default;
+RosMapWriter::~RosMapWriter() = default;
+
+StatusOr<RosMapWriter> RosMapWriter::Open(const std::string& yaml_path, int width, int height,
+                                          const MapMetadata& meta, Durability durability) {
   if (!IsYamlPath(yaml_path)) {
     return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml");
   }
-  if (grid.width() <= 0 || grid.height() <= 0) {
+  if (width <= 0 || height <= 0) {
     return InvalidArgumentError(Quoted(yaml_path) + ": cannot save an empty grid");
   }
-  const MapMetadata meta = SavedMetadata(grid.meta);
-  const std::uint8_t grey[3] = {kPgmFree, kPgmOccupied, kPgmUnknown};  // by Cell value
-  // The PGM is written straight into its file buffer (no pixel copy: the
-  // decoder's peak memory is the grid plus this buffer).
-  std::string pgm = PgmHeader(grid.width(), grid.height());
-  const std::size_t header_bytes = pgm.size();
-  pgm.resize(header_bytes + grid.size());
-  for (int row = 0; row < grid.height(); ++row) {
-    const int y = grid.height() - 1 - row;  // PGM rows run top down, grid rows bottom up
-    char* line = pgm.data() + header_bytes + static_cast<std::size_t>(y) * grid.width();
-    for (int col = 0; col < grid.width(); ++col) {
-      line[col] = static_cast<char>(grey[static_cast<int>(grid.at(col, row))]);
-    }
+  LINEMAP_ASSIGN_OR_RETURN(AtomicFileWriter pgm,
+                           AtomicFileWriter::Open(SavedImagePath(yaml_path), durability));
+  LINEMAP_ASSIGN_OR_RETURN(AtomicFileWriter yaml, AtomicFileWriter::Open(yaml_path, durability));
+  auto impl = std::make_unique<Impl>(std::move(pgm), std::move(yaml));
+  impl->yaml_text = YamlText(StemOf(yaml_path) + ".pgm", SavedMetadata(meta));
+  impl->width = width;
+  impl->height = height;
+  const std::string header = PgmHeader(width, height);
+  impl->header_bytes = header.size();
+  LINEMAP_RETURN_IF_ERROR(impl->pgm.Append(header));
+  impl->buffer.reserve(Impl::kBufferBytes);
+  return RosMapWriter(std::move(impl));
+}
+
+Status RosMapWriter::WriteCells(int col0, int row0, int cols, int rows, const Cell* cells) {
+  Impl& m = *impl_;
+  if (col0 < 0 || row0 < 0 || cols <= 0 || rows <= 0 || cols > m.width - col0 ||
+      rows > m.height - row0) {
+    return InvalidArgumentError("cells [" + std::to_string(col0) + ", +" + std::to_string(cols) +
+                                ") x [" + std::to_string(row0) + ", +" + std::to_string(rows) +
+                                ") are empty or not inside the " + std::to_string(m.width) + " x " +
+                                std::to_string(m.height) + " map of " + Quoted(m.yaml.path()));
   }
-  const std::string image_path = SavedImagePath(yaml_path);
-  const std::string image_name = StemOf(yaml_path) + ".pgm";
-  const std::string yaml = YamlText(image_name, meta);
-  return WriteFilesAtomic({{image_path, pgm}, {yaml_path, yaml}}, durability);
+  // Top row first: the PGM runs top down, grid rows bottom up.
+  for (int r = row0 + rows - 1; r >= row0; --r) {
+    const std::uint64_t image_row = static_cast<std::uint64_t>(m.height - 1 - r);
+    const std::uint64_t offset =
+        m.header_bytes + image_row * static_cast<std::uint64_t>(m.width) + col0;
+    LINEMAP_RETURN_IF_ERROR(m.Put(offset, cells + static_cast<std::size_t>(r - row0) * cols, cols));
+  }
+  LINEMAP_RETURN_IF_ERROR(m.Flush());
+  m.cells_written += static_cast<std::uint64_t>(cols) * rows;
+  return Status::Ok();
+}
+
+Status RosMapWriter::Commit() {
+  Impl& m = *impl_;
+  const std::uint64_t cells = static_cast<std::uint64_t>(m.width) * m.height;
+  if (m.cells_written != cells) {
+    return InternalError(Quoted(m.yaml.path()) + ": " + std::to_string(m.cells_written) + " of " +
+                         std::to_string(cells) + " cells written; not saving");
+  }
+  LINEMAP_RETURN_IF_ERROR(m.yaml.Append(m.yaml_text));
+  return CommitFilesAtomic({&m.pgm, &m.yaml});
+}
+
+Status SaveRosMap(const std::string& yaml_path, const Grid& grid, Durability durability) {
+  LINEMAP_ASSIGN_OR_RETURN(
+      RosMapWriter writer,
+      RosMapWriter::Open(yaml_path, grid.width(), grid.height(), grid.meta, durability));
+  // Bands of about 1 MiB: the image is never held whole beside the grid.
+  const int band_rows = static_cast<int>(
+      std::max<std::size_t>(1, (std::size_t{1} << 20) / static_cast<std::size_t>(grid.width())));
+  // From the top of the map down, so the PGM is written front to back.
+  for (int row1 = grid.height(); row1 > 0; row1 -= band_rows) {
+    const int row0 = std::max(0, row1 - band_rows);
+    LINEMAP_RETURN_IF_ERROR(writer.WriteCells(0, row0, grid.width(), row1 - row0,
+                                              grid.cells().data() + grid.Index(0, row0)));
+  }
+  return writer.Commit();
 }
 
 }  // namespace linemap

@@ -18,6 +18,7 @@
 
 #include "linemap/grid.h"
 #include "linemap/lines.h"
+#include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "linemap/status.h"
 #include "linemap/vector_layers.h"
@@ -159,6 +160,21 @@ StatusOr<Grid> DecodeLmapRegion(const std::vector<std::uint8_t>& bytes, const Ce
                                 const DecodeLimits& limits = {});
 StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,
                               const DecodeLimits& limits = {});
+
+// Decodes the .lmap file `lmap_path` into the ROS map SaveRosMap writes
+// (`yaml_path` and the PGM beside it), atomically, without holding the grid:
+// a 2.x file is decoded a band of tile rows at a time from the top of the
+// map (at most 24 Mi cells per band, column groups on wider maps) and each
+// band goes straight to the PGM. Memory: the file's bytes and its vector
+// layers as decoded, plus the band and one tile per thread, whatever the
+// map's size (a 20,768 x 13,612 map peaks at 33 MB without layers; its
+// room and furniture chains add about 210 MB). A 1.0 file is decoded whole
+// (its planes have no tiles) and saved. Returns the map's size, metadata
+// and cell counts.
+StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
+                                            const std::string& yaml_path,
+                                            const DecodeLimits& limits = {},
+                                            Durability durability = Durability::kSynced);
 
 // save(): encodes, then writes atomically (temporary file, fsync, rename), so
 // a crash or a full disk never leaves a broken file where a good one was.

@@ -20,6 +20,7 @@
 #define LINEMAP_MAP_IO_H_
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -78,6 +79,51 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
 // a failure leaves existing files untouched.
 Status SaveRosMap(const std::string& yaml_path, const Grid& grid,
                   Durability durability = Durability::kSynced);
+
+// A ROS map saved piece by piece, for maps too large to hold twice (a
+// 20,768 x 13,612 map is 282 MB as a grid and again as a PGM): the files
+// SaveRosMap writes, built from rectangles of cells given in any order, with
+// memory that does not grow with the map (a 1 MiB conversion buffer). The
+// PGM and YAML are written under temporary names and renamed into place by
+// Commit(), as SaveRosMap does; a writer destroyed without Commit() leaves
+// existing files untouched and no temporary behind.
+class RosMapWriter {
+ public:
+  // Starts writing `yaml_path` (must end in .yaml) and its image
+  // SavedImagePath(yaml_path) for a width x height map (both >= 1) with
+  // metadata `meta` (written as SaveRosMap writes a grid's). Refuses, before
+  // creating anything, outputs that are directories or read-only files.
+  static StatusOr<RosMapWriter> Open(const std::string& yaml_path, int width, int height,
+                                     const MapMetadata& meta,
+                                     Durability durability = Durability::kSynced);
+
+  RosMapWriter(RosMapWriter&&) noexcept;
+  RosMapWriter& operator=(RosMapWriter&&) noexcept;
+  ~RosMapWriter();
+
+  // Writes the cells of columns [col0, col0 + cols) and grid rows
+  // [row0, row0 + rows) (row 0 at the origin), given as a rows x cols array
+  // in grid-row order (row0 first). The rectangle must lie inside the map;
+  // every cell is to be written exactly once, in any order.
+  Status WriteCells(int col0, int row0, int cols, int rows, const Cell* cells);
+  // Renames both files into place once every cell has been written (else
+  // fails, leaving the old files).
+  Status Commit();
+
+ private:
+  struct Impl;
+  explicit RosMapWriter(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// What a map saved to files holds, for callers that never had the grid in
+// memory (DecodeLmapToRosMap in codec.h).
+struct MapFileSummary {
+  int width = 0;
+  int height = 0;
+  MapMetadata meta;   // the grid's, as the YAML describes it
+  CellCounts counts;  // cells written in each state
+};
 
 // The image SaveRosMap() writes beside `yaml_path`: same directory and stem,
 // ending in .pgm ("maps/office.yaml" -> "maps/office.pgm").

@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 #include <png.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <random>
 #include <vector>
 
 #include "linemap/map_io.h"
@@ -25,6 +29,7 @@ struct PngSpec {
   std::vector<std::vector<std::uint8_t>> rows;  // packed as PNG stores them
   std::vector<png_color> palette;
   std::vector<png_byte> trns;
+  int interlace = PNG_INTERLACE_NONE;
 };
 
 void WritePng(const std::string& path, const PngSpec& spec) {
@@ -33,8 +38,8 @@ void WritePng(const std::string& path, const PngSpec& spec) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   png_init_io(png, f);
-  png_set_IHDR(png, info, spec.width, spec.height, spec.bit_depth, spec.color_type,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, spec.width, spec.height, spec.bit_depth, spec.color_type, spec.interlace,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   if (!spec.palette.empty()) {
     png_set_PLTE(png, info, spec.palette.data(), static_cast<int>(spec.palette.size()));
   }
@@ -42,7 +47,10 @@ void WritePng(const std::string& path, const PngSpec& spec) {
     png_set_tRNS(png, info, spec.trns.data(), static_cast<int>(spec.trns.size()), nullptr);
   }
   png_write_info(png, info);
-  for (const auto& row : spec.rows) png_write_row(png, row.data());
+  const int passes = png_set_interlace_handling(png);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (const auto& row : spec.rows) png_write_row(png, row.data());
+  }
   png_write_end(png, info);
   png_destroy_write_struct(&png, &info);
   std::fclose(f);
@@ -228,6 +236,128 @@ TEST(ImageTest, MustFailFilesFail) {
     ++checked;
   }
   EXPECT_GE(checked, 4);
+}
+
+}  // namespace
+}  // namespace linemap
+
+namespace linemap {
+namespace {
+
+// The quantum a PGM sample v of maxval m becomes (GraphicsMagick's
+// rounding), written out here for the reference.
+std::uint16_t Quantum(unsigned v, unsigned maxval) {
+  return static_cast<std::uint16_t>((v * 65535u + maxval / 2) / maxval);
+}
+
+// Images several times the 256 KiB read buffer, so that rows, samples and
+// ASCII numbers straddle its refills.
+TEST(ImageRowsTest, LargePgmsReadFromFileGiveTheirSamples) {
+  const std::string dir = testing::MakeTempDir("img_rows");
+  constexpr int kWidth = 701, kHeight = 503;
+  std::mt19937 rng(5);
+  std::vector<unsigned> values(kWidth * kHeight);
+  std::uniform_int_distribution<unsigned> value(0, 1000);
+  for (unsigned& v : values) v = value(rng);
+  // ASCII with maxval 1000, uneven spacing and a comment mid-raster.
+  std::string ascii = "P2\n" + std::to_string(kWidth) + " " + std::to_string(kHeight) + "\n1000\n";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    ascii += std::to_string(values[i]);
+    ascii += i % 17 == 0 ? "\n" : (i % 5 == 0 ? "   " : " ");
+    if (i == values.size() / 2) ascii += "# half way\n";
+  }
+  WriteFile(dir + "/ascii.pgm", ascii);
+  // Binary 16-bit, big-endian.
+  std::string binary = "P5 " + std::to_string(kWidth) + " " + std::to_string(kHeight) + " 1000\n";
+  for (unsigned v : values) {
+    binary += static_cast<char>(v >> 8);
+    binary += static_cast<char>(v & 0xff);
+  }
+  WriteFile(dir + "/binary.pgm", binary);
+  for (const char* name : {"ascii.pgm", "binary.pgm"}) {
+    SCOPED_TRACE(name);
+    StatusOr<std::unique_ptr<ImageRowReader>> rows =
+        OpenImageRows(dir + "/" + name, std::uint64_t{1} << 28);
+    ASSERT_TRUE(rows.ok()) << rows.status().message();
+    ASSERT_EQ((*rows)->width(), kWidth);
+    ASSERT_EQ((*rows)->height(), kHeight);
+    ASSERT_EQ((*rows)->channels(), 1);
+    std::vector<std::uint16_t> row(kWidth);
+    for (int y = 0; y < kHeight; ++y) {
+      ASSERT_TRUE((*rows)->ReadRow(row.data()).ok()) << "row " << y;
+      for (int x = 0; x < kWidth; ++x) {
+        ASSERT_EQ(row[x], Quantum(values[y * kWidth + x], 1000)) << "x " << x << " y " << y;
+      }
+    }
+  }
+}
+
+// Adam7 rows come out only after the last pass: such PNGs are read whole
+// first, and must give the same cells.
+TEST(ImageRowsTest, InterlacedPngLoadsLikeItsPlainTwin) {
+  const std::string dir = testing::MakeTempDir("img_rows");
+  PngSpec spec{37, 23, PNG_COLOR_TYPE_GRAY, 8, {}, {}, {}};
+  std::string want;
+  for (int y = 0; y < spec.height; ++y) {
+    std::vector<std::uint8_t> row;
+    for (int x = 0; x < spec.width; ++x) {
+      const std::uint8_t grey = (x * 7 + y * 3) % 3 == 0 ? 0 : ((x + y) % 4 == 0 ? 205 : 254);
+      row.push_back(grey);
+      want += grey == 0 ? 'O' : grey == 205 ? 'U' : 'F';
+    }
+    spec.rows.push_back(row);
+  }
+  WritePng(dir + "/plain.png", spec);
+  spec.interlace = PNG_INTERLACE_ADAM7;
+  WritePng(dir + "/adam7.png", spec);
+  EXPECT_EQ(TopDown(MustLoad(dir + "/plain.png")), want);
+  EXPECT_EQ(TopDown(MustLoad(dir + "/adam7.png")), want);
+}
+
+// A pipe has no size to check a header against: the image is read as it
+// comes, and a short one fails on the row that is missing.
+TEST(ImageRowsTest, PgmFromAPipeLoadsAndATruncatedOneFails) {
+  const std::string dir = testing::MakeTempDir("img_rows");
+  const std::string fifo = dir + "/map.pgm";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string whole =
+      std::string("P5 3 2 255\n") + std::string("\x00\xff\xcd\xfe\x00\x80", 6);
+  for (const std::size_t size : {whole.size(), whole.size() - 2}) {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      FILE* out = std::fopen(fifo.c_str(), "wb");
+      if (out != nullptr) {
+        std::fwrite(whole.data(), 1, size, out);
+        std::fclose(out);
+      }
+      _exit(0);
+    }
+    StatusOr<Grid> grid = LoadMapImage(fifo, MapMetadata());
+    ::waitpid(pid, nullptr, 0);
+    if (size == whole.size()) {
+      ASSERT_TRUE(grid.ok()) << grid.status().message();
+      EXPECT_EQ(TopDown(*grid), "OFUFOU");
+    } else {
+      ASSERT_FALSE(grid.ok());
+      EXPECT_EQ(grid.status().code(), StatusCode::kCorrupt);
+      EXPECT_NE(grid.status().message().find("truncated"), std::string::npos);
+      EXPECT_NE(grid.status().message().find("map.pgm"), std::string::npos);
+    }
+  }
+}
+
+// The must-fail files fail through the row reader too (LoadMapImage), with
+// their name in the message.
+TEST(ImageRowsTest, MustFailFilesFailWhenLoaded) {
+  const std::string dir = testing::SourceDir() + "/tests/data/bad/map_image";
+  for (const std::string& name : testing::ListDir(dir)) {
+    StatusOr<Grid> grid = LoadMapImage(dir + "/" + name, MapMetadata(), std::uint64_t{1} << 28);
+    EXPECT_FALSE(grid.ok()) << name << " loaded";
+    if (!grid.ok()) {
+      EXPECT_NE(grid.status().message().find(name), std::string::npos);
+    }
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 
@@ -254,6 +255,92 @@ TEST(RosMapTest, SharedMapsLoadAndRoundTrip) {
     ++loaded;
   }
   EXPECT_GE(loaded, 24);
+}
+
+// The PGM SaveRosMap writes, byte for byte, from a reference written out
+// here: map_saver's header, then the rows top first. The grid is wider and
+// taller than the save's 1 MiB bands, so bands join in the file.
+std::string ReferencePgm(const Grid& grid) {
+  std::string pgm = "P5\n# CREATOR: linemap\n" + std::to_string(grid.width()) + " " +
+                    std::to_string(grid.height()) + "\n255\n";
+  for (int row = grid.height() - 1; row >= 0; --row) {
+    for (int col = 0; col < grid.width(); ++col) {
+      const Cell c = grid.at(col, row);
+      pgm += static_cast<char>(c == Cell::kFree ? 254 : c == Cell::kOccupied ? 0 : 205);
+    }
+  }
+  return pgm;
+}
+
+TEST(RosMapTest, SaveWritesEveryBandInPlace) {
+  const std::string dir = MakeTempDir("ros_bands");
+  const Grid grid = RandomGrid(1500, 1901, 3);  // 2.85 Mcells: three bands
+  ASSERT_TRUE(SaveRosMap(dir + "/big.yaml", grid, Durability::kUnsynced).ok());
+  EXPECT_TRUE(ReadFile(dir + "/big.pgm") == ReferencePgm(grid));
+  EXPECT_EQ(ListDir(dir), (std::vector<std::string>{"big.pgm", "big.yaml"}));
+}
+
+// RosMapWriter takes rectangles in any order and gives SaveRosMap's files.
+TEST(RosMapWriterTest, RectanglesInAnyOrderGiveTheSavedFiles) {
+  const std::string dir = MakeTempDir("ros_writer");
+  Grid grid = RandomGrid(301, 207, 9);
+  grid.meta.origin = {2.5, -1.25, 0.5};
+  ASSERT_TRUE(SaveRosMap(dir + "/whole.yaml", grid).ok());
+  StatusOr<RosMapWriter> writer =
+      RosMapWriter::Open(dir + "/pieces.yaml", grid.width(), grid.height(), grid.meta);
+  ASSERT_TRUE(writer.ok()) << writer.status().message();
+  // A 4 x 3 cut of the map, shuffled.
+  struct Piece {
+    int col0, row0, cols, rows;
+  };
+  std::vector<Piece> pieces;
+  const int col_cuts[] = {0, 1, 150, 300, 301};
+  const int row_cuts[] = {0, 100, 206, 207};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      pieces.push_back(
+          {col_cuts[i], row_cuts[j], col_cuts[i + 1] - col_cuts[i], row_cuts[j + 1] - row_cuts[j]});
+    }
+  }
+  std::shuffle(pieces.begin(), pieces.end(), std::mt19937(4));
+  for (const Piece& p : pieces) {
+    std::vector<Cell> cells;
+    for (int r = p.row0; r < p.row0 + p.rows; ++r) {
+      for (int c = p.col0; c < p.col0 + p.cols; ++c) cells.push_back(grid.at(c, r));
+    }
+    ASSERT_TRUE(writer->WriteCells(p.col0, p.row0, p.cols, p.rows, cells.data()).ok());
+  }
+  EXPECT_FALSE(FileExists(dir + "/pieces.pgm")) << "visible before Commit()";
+  ASSERT_TRUE(writer->Commit().ok());
+  EXPECT_TRUE(ReadFile(dir + "/pieces.pgm") == ReadFile(dir + "/whole.pgm"));
+  std::string yaml = ReadFile(dir + "/pieces.yaml");
+  const std::string whole_yaml = ReadFile(dir + "/whole.yaml");
+  EXPECT_EQ(yaml.replace(yaml.find("pieces.pgm"), 10, "whole.pgm"), whole_yaml);
+}
+
+TEST(RosMapWriterTest, RefusesCellsOutsideTheMapAndAnIncompleteMap) {
+  const std::string dir = MakeTempDir("ros_writer");
+  WriteFile(dir + "/old.yaml", "old yaml");
+  WriteFile(dir + "/old.pgm", "old pgm");
+  {
+    StatusOr<RosMapWriter> writer = RosMapWriter::Open(dir + "/old.yaml", 10, 5, MapMetadata());
+    ASSERT_TRUE(writer.ok());
+    const std::vector<Cell> cells(50, Cell::kFree);
+    EXPECT_EQ(writer->WriteCells(5, 0, 6, 1, cells.data()).code(), StatusCode::kInvalidArgument);
+    EXPECT_EQ(writer->WriteCells(0, -1, 1, 1, cells.data()).code(), StatusCode::kInvalidArgument);
+    EXPECT_EQ(writer->WriteCells(0, 0, 0, 1, cells.data()).code(), StatusCode::kInvalidArgument);
+    ASSERT_TRUE(writer->WriteCells(0, 0, 10, 4, cells.data()).ok());
+    const Status committed = writer->Commit();  // the top row is missing
+    EXPECT_FALSE(committed.ok());
+    EXPECT_NE(committed.message().find("40 of 50"), std::string::npos) << committed.message();
+  }
+  EXPECT_EQ(ReadFile(dir + "/old.yaml"), "old yaml");
+  EXPECT_EQ(ReadFile(dir + "/old.pgm"), "old pgm");
+  EXPECT_EQ(ListDir(dir), (std::vector<std::string>{"old.pgm", "old.yaml"}));
+  EXPECT_EQ(RosMapWriter::Open(dir + "/x.pgm", 1, 1, MapMetadata()).status().code(),
+            StatusCode::kInvalidArgument);
+  EXPECT_EQ(RosMapWriter::Open(dir + "/x.yaml", 0, 1, MapMetadata()).status().code(),
+            StatusCode::kInvalidArgument);
 }
 
 }  // namespace

@@ -27,6 +27,14 @@ Status CheckOutput(const std::string& out, const std::string& in) {
   return Status::Ok();
 }
 
+StatusOr<MapFileSummary> SaveWindow(const std::string& in, const CellWindow& window,
+                                    const std::string& out, const DecodeLimits& limits,
+                                    Durability durability) {
+  LINEMAP_ASSIGN_OR_RETURN(Grid grid, LoadLmapRegion(in, window, limits));
+  LINEMAP_RETURN_IF_ERROR(SaveRosMap(out, grid, durability));
+  return MapFileSummary{grid.width(), grid.height(), grid.meta, grid.Count()};
+}
+
 std::vector<OptionSpec> DecodeOptions() {
   std::vector<OptionSpec> options = {
       {"-o", "OUT.yaml", "output YAML; the PGM goes beside it"},
@@ -58,7 +66,9 @@ const CommandSpec kDecodeSpec = {
     "origin's yaw. When the yaw is not 0, the box's corners are taken into the\n"
     "grid and the window is the cell rectangle around them. --window-cells is\n"
     "half-open: C0 <= col < C1, R0 <= row < R1. A window that is empty or\n"
-    "reaches past the map's border is refused (exit 2).",
+    "reaches past the map's border is refused (exit 2).\n"
+    "Without a window a 2.0 file is decoded band by band straight into the\n"
+    "PGM, so memory does not grow with the map's cells.",
     DecodeOptions(),
     1,
     1,
@@ -77,20 +87,22 @@ int RunDecode(const std::vector<std::string>& args) {
   const std::string& in = parsed->positional[0];
   StatusOr<std::optional<CellWindow>> window = WindowFromArgs(*parsed, in, *limits);
   if (!window.ok()) return ReportError("decode", window.status());
-  StatusOr<Grid> grid = *window ? LoadLmapRegion(in, **window, *limits) : LoadLmap(in, *limits);
-  if (!grid.ok()) return ReportError("decode", grid.status());
-  Status saved = SaveRosMap(*out, *grid,
-                            parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
-  if (!saved.ok()) return ReportError("decode", saved);
-  const CellCounts counts = grid->Count();
+  const Durability durability =
+      parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced;
+  // A window is decoded into memory (it is the small part asked for); the
+  // whole map goes to the files band by band, never held whole.
+  StatusOr<MapFileSummary> written = *window ? SaveWindow(in, **window, *out, *limits, durability)
+                                             : DecodeLmapToRosMap(in, *out, *limits, durability);
+  if (!written.ok()) return ReportError("decode", written.status());
   std::string where;
   if (*window) {
     const CellWindow& w = **window;
     where = " (columns " + std::to_string(w.col0) + ".." + std::to_string(w.col1 - 1) + ", rows " +
             std::to_string(w.row0) + ".." + std::to_string(w.row1 - 1) + ")";
   }
+  const CellCounts& counts = written->counts;
   std::printf("wrote %s and its .pgm: %d x %d cells%s, %zu free, %zu occupied, %zu unknown\n",
-              out->c_str(), grid->width(), grid->height(), where.c_str(), counts.free,
+              out->c_str(), written->width, written->height, where.c_str(), counts.free,
               counts.occupied, counts.unknown);
   return kExitOk;
 }
