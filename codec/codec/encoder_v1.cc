@@ -43,6 +43,7 @@
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/raster.h"
+#include "codec/codec/start_task.h"
 #include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
@@ -563,20 +564,6 @@ Status CheckDecodesTo(const EncodedFile& file) {
     return InternalError("lossy encoder and decoder disagree on the decoded grid");
   }
   return Status::Ok();
-}
-
-// Runs `task` on a thread of its own when `own_thread` (and the system gives
-// one), else when its result is asked for.
-template <typename Task>
-auto StartTask(bool own_thread, Task task) {
-  if (own_thread) {
-    try {
-      return std::async(std::launch::async, task);
-    } catch (const std::system_error&) {
-      // No thread to be had: run it on the caller's.
-    }
-  }
-  return std::async(std::launch::deferred, task);
 }
 
 // The lossy file. Files with wall segments and without are searched apart,

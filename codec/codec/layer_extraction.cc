@@ -10,6 +10,7 @@
 
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_order.h"
+#include "codec/codec/start_task.h"
 #include "codec/codec/raster.h"
 #include "linemap/segmentation.h"
 
@@ -212,18 +213,6 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
   }
   OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();
-}
-
-template <typename Task>
-auto StartTask(bool own_thread, Task task) {
-  if (own_thread) {
-    try {
-      return std::async(std::launch::async, task);
-    } catch (const std::system_error&) {
-      // No thread to be had: run it on the caller's.
-    }
-  }
-  return std::async(std::launch::deferred, task);
 }
 
 }  // namespace
