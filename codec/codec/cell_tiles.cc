@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <string>
+#include <system_error>
 #include <thread>
 
 #include "format/byte_io.h"
@@ -35,7 +36,13 @@ void ForEachIndexParallel(std::uint64_t n, int threads,
     for (std::uint64_t i = next++; i < n; i = next++) body(i);
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < workers; ++t) pool.emplace_back(run);
+  for (int t = 1; t < workers; ++t) {
+    try {
+      pool.emplace_back(run);
+    } catch (const std::system_error&) {
+      break;  // no more threads to be had: the others share the work
+    }
+  }
   run();
   for (std::thread& t : pool) t.join();
 }
