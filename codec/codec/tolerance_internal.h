@@ -38,9 +38,10 @@ struct TopologyFaults {
 };
 TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, bool want_culprits);
 
-// Plans compared on sampled start / goal cells free in both grids
-// (deterministic: the same grids give the same pairs). `paths` (when asked
-// for): the cells of both plans of each disagreeing pair.
+// Plans compared from sampled start cells to every goal cell free in both
+// grids (deterministic: the same grids give the same pairs). `paths` (when
+// asked for): the cells of both plans of the worst disagreeing pair of each
+// start.
 struct PlanFaults {
   std::size_t pairs = 0;
   std::size_t disagreements = 0;

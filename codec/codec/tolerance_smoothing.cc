@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "codec/codec/tolerance_internal.h"
@@ -12,6 +13,109 @@
 
 namespace linemap::tolerance_internal {
 namespace {
+
+// Groups of the 8 neighbours of a cell that have `member` set, connected
+// within the 3x3 ring (the centre left out) by 4-adjacency (`eight` false)
+// or 8-adjacency; with `touching_centre`, only groups holding a
+// 4-neighbour of the centre count.
+int RingGroups(const bool member[8], bool eight, bool touching_centre) {
+  static constexpr int kDc[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+  static constexpr int kDr[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+  int group[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  int groups = 0;
+  for (int start = 0; start < 8; ++start) {
+    if (!member[start] || group[start]) continue;
+    ++groups;
+    int stack[8];
+    int top = 0;
+    stack[top++] = start;
+    group[start] = groups;
+    bool touches = false;
+    while (top > 0) {
+      const int k = stack[--top];
+      touches |= k % 2 == 0;  // even positions are the 4-neighbours
+      for (int n = 0; n < 8; ++n) {
+        if (!member[n] || group[n]) continue;
+        const int dc = std::abs(kDc[n] - kDc[k]);
+        const int dr = std::abs(kDr[n] - kDr[k]);
+        if (dc + dr == 1 || (eight && dc == 1 && dr == 1)) {
+          group[n] = groups;
+          stack[top++] = n;
+        }
+      }
+    }
+    if (touching_centre && !touches) --groups;  // (its cells keep a stale id)
+  }
+  return groups;
+}
+
+// True when turning the non-free cell (c, r) free keeps the free space's
+// topology (a simple point for 4-connected free space against 8-connected
+// rest): it meets exactly one 4-connected group of free cells and the
+// non-free cells around it stay one 8-connected group. Filling a thin
+// unknown line between two parts of a room would open a shortcut that
+// changes plans; these changes never do.
+bool FillKeepsTopology(const Grid& g, int c, int r) {
+  static constexpr int kDc[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+  static constexpr int kDr[8] = {0, 1, 1, 1, 0, -1, -1, -1};
+  bool free[8], rest[8];
+  for (int k = 0; k < 8; ++k) {
+    free[k] = g.Contains(c + kDc[k], r + kDr[k]) && g.at(c + kDc[k], r + kDr[k]) == Cell::kFree;
+    rest[k] = !free[k];
+  }
+  return RingGroups(free, false, true) == 1 && RingGroups(rest, true, false) == 1;
+}
+
+// True when all 8 neighbours of (c, r) are free: a one-cell speck inside
+// free space. Filling it changes the topology but shortens a plan around it
+// by two steps at most, which plans may (kPlanSlackSteps).
+bool FreeAllAround(const Grid& g, int c, int r) {
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      if ((dc || dr) && !(g.Contains(c + dc, r + dr) && g.at(c + dc, r + dr) == Cell::kFree)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// True when turning (c, r) free shortens no plan by more than two steps:
+// two free 4-neighbours on adjacent sides must have the corner between
+// them free (a path through the cell then has an equally long one around
+// it), and two on opposite sides a free side of three cells between them
+// (a path around is two steps longer). A bump of unknown on a straight
+// border passes; the tip of a thin spur, or a cell in a thin line between
+// two parts of a room, does not.
+bool FillKeepsPlans(const Grid& g, int c, int r) {
+  auto free = [&](int dc, int dr) {
+    return g.Contains(c + dc, r + dr) && g.at(c + dc, r + dr) == Cell::kFree;
+  };
+  const bool e = free(1, 0), n = free(0, 1), w = free(-1, 0), s = free(0, -1);
+  if ((e && n && !free(1, 1)) || (n && w && !free(-1, 1)) || (w && s && !free(-1, -1)) ||
+      (s && e && !free(1, -1))) {
+    return false;
+  }
+  const bool row_n = free(-1, 1) && n && free(1, 1);
+  const bool row_s = free(-1, -1) && s && free(1, -1);
+  const bool col_e = free(1, -1) && e && free(1, 1);
+  const bool col_w = free(-1, -1) && w && free(-1, 1);
+  if (e && w && !row_n && !row_s) return false;
+  if (n && s && !col_e && !col_w) return false;
+  return true;
+}
+
+// Whether the non-free cell (c, r) may turn free, judged on the map before
+// the current operation (`before`) and as it is now (`now`): both must keep
+// the topology, so that a spur or island is worn down by a cell at its end
+// at most and never eaten away cell by cell, and the plans through it must
+// stay as long (FillKeepsPlans); or the cell was a one-cell speck inside
+// free space before.
+bool MayFill(const Grid& before, const Grid& now, int c, int r) {
+  if (FreeAllAround(before, c, r)) return true;
+  return FillKeepsTopology(before, c, r) && FillKeepsTopology(now, c, r) &&
+         FillKeepsPlans(now, c, r);
+}
 
 std::vector<std::uint8_t> Not(const std::vector<std::uint8_t>& mask) {
   std::vector<std::uint8_t> out(mask.size());
@@ -71,30 +175,81 @@ void DropSpecks(const Grid& original, int t, int speck_cells, Grid* grid) {
     if (!droppable) continue;
     for (int r = s.box.min_row; r <= s.box.max_row; ++r) {
       for (int c = s.box.min_col; c <= s.box.max_col; ++c) {
-        if (labels.at(c, r) == label) grid->set(c, r, Cell::kFree);
+        if (labels.at(c, r) == label && MayFill(original, *grid, c, r))
+          grid->set(c, r, Cell::kFree);
       }
     }
   }
 }
 
-// Opens and closes the free space of `grid`.
-void SmoothFreeSpace(const SmoothingParams& p, Grid* grid) {
+// Opens the free space of `grid`: thin free rays into unknown space become
+// unknown, a 4-connected piece of them at a time and only when every cell of
+// the piece is within t of the free space that stays (a ray cut halfway
+// would leave its tip as a free island).
+void OpenFreeSpace(int t, int radius, Grid* grid) {
   const int w = grid->width();
   const int h = grid->height();
-  std::vector<Cell>& cells = grid->mutable_cells();
-  if (p.open_radius > 0) {
-    const auto free = CellMask(*grid, Cell::kFree);
-    const auto opened = Dilate(w, h, Erode(w, h, free, p.open_radius), p.open_radius);
-    const auto near_occ = Dilate(w, h, CellMask(*grid, Cell::kOccupied), p.open_radius + 1);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (free[i] && !opened[i] && !near_occ[i]) cells[i] = Cell::kUnknown;
-    }
+  const auto free = CellMask(*grid, Cell::kFree);
+  const auto opened = Dilate(w, h, Erode(w, h, free, radius), radius);
+  const auto near_occ = Dilate(w, h, CellMask(*grid, Cell::kOccupied), radius + 1);
+  const auto to_opened = ChebyshevDistance(w, h, opened);
+  BinaryMask removed(w, h);
+  for (std::size_t i = 0; i < free.size(); ++i) removed.bits[i] = free[i] && !opened[i];
+  const Labeling pieces = LabelComponents(removed, Connectivity::kFour);
+  std::vector<std::uint8_t> keep(pieces.components.size() + 1, 0);
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const std::int32_t l = pieces.labels[i];
+    if (l && (near_occ[i] || to_opened[i] > t)) keep[l] = 1;
   }
-  if (p.close_radius > 0) {
-    const auto free = CellMask(*grid, Cell::kFree);
-    const auto closed = Erode(w, h, Dilate(w, h, free, p.close_radius), p.close_radius);
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      if (closed[i] && cells[i] == Cell::kUnknown) cells[i] = Cell::kFree;
+  std::vector<Cell>& cells = grid->mutable_cells();
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    const std::int32_t l = pieces.labels[i];
+    if (l && !keep[l]) cells[i] = Cell::kUnknown;
+  }
+}
+
+// Closes the free space of `grid`: unknown notches and specks inside free
+// space become free, but only where the free cells around (within radius
+// + 1) belong to one free region, so that no unknown gap between two rooms
+// (or a room and a speck of free space) fills.
+void CloseFreeSpace(const Grid& original, int radius, Grid* grid) {
+  const int w = grid->width();
+  const int h = grid->height();
+  const auto free = CellMask(*grid, Cell::kFree);
+  const auto closed = Erode(w, h, Dilate(w, h, free, radius), radius);
+  BinaryMask free_mask(w, h);
+  free_mask.bits = free;
+  const Labeling regions = LabelComponents(free_mask, Connectivity::kFour);
+  const int reach = radius + 1;
+  std::vector<Cell>& cells = grid->mutable_cells();
+  // Cells are filled one at a time, each checked against the cells filled
+  // before it (simple points stay simple only when taken in turn) and
+  // against the original map, so that a thin spur of unknown loses its tip
+  // only and not its length cell by cell (each cell taken would shorten
+  // the plans around it by two more steps), and so that the opening before
+  // cannot make a fill look harmless.
+  const Grid& before = original;
+  for (int pass = 0; pass < 1; ++pass) {
+    for (int r = 0; r < h; ++r) {
+      for (int c = 0; c < w; ++c) {
+        const std::size_t i = grid->Index(c, r);
+        if (!closed[i] || cells[i] != Cell::kUnknown) continue;
+        if (!MayFill(before, *grid, c, r)) continue;
+        std::int32_t region = 0;
+        bool one_region = true;
+        for (int dr = -reach; dr <= reach && one_region; ++dr) {
+          for (int dc = -reach; dc <= reach; ++dc) {
+            const std::int32_t l = regions.get(c + dc, r + dr);
+            if (!l) continue;
+            if (region && l != region) {
+              one_region = false;
+              break;
+            }
+            region = l;
+          }
+        }
+        if (one_region) cells[i] = Cell::kFree;
+      }
     }
   }
 }
@@ -130,6 +285,27 @@ void SmoothWallBacks(int passes, Grid* grid) {
   }
 }
 
+// Every cell takes the value of its aligned block of side `b`: the map made
+// b times coarser, drawn back at full resolution.
+void QuantizeBlocks(int b, Grid* grid) {
+  const int w = grid->width();
+  const int h = grid->height();
+  for (int r0 = 0; r0 < h; r0 += b) {
+    for (int c0 = 0; c0 < w; c0 += b) {
+      Cell v = Cell::kFree;
+      for (int r = r0; r < std::min(h, r0 + b); ++r) {
+        for (int c = c0; c < std::min(w, c0 + b); ++c) {
+          const Cell x = grid->at(c, r);
+          if (x == Cell::kOccupied || (x == Cell::kUnknown && v == Cell::kFree)) v = x;
+        }
+      }
+      for (int r = r0; r < std::min(h, r0 + b); ++r) {
+        for (int c = c0; c < std::min(w, c0 + b); ++c) grid->set(c, r, v);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 SmoothingParams DefaultSmoothingParams(int t) {
@@ -143,8 +319,10 @@ SmoothingParams DefaultSmoothingParams(int t) {
 
 Grid ProposeSmoothing(const Grid& grid, int t, const SmoothingParams& params) {
   Grid out = grid;
+  if (params.block_cells > 1) QuantizeBlocks(params.block_cells, &out);
   if (params.speck_cells > 0) DropSpecks(grid, t, params.speck_cells, &out);
-  SmoothFreeSpace(params, &out);
+  if (params.open_radius > 0) OpenFreeSpace(t, params.open_radius, &out);
+  if (params.close_radius > 0) CloseFreeSpace(grid, params.close_radius, &out);
   SmoothWallBacks(params.wall_back_passes, &out);
   return out;
 }

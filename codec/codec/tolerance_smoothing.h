@@ -23,6 +23,10 @@ struct SmoothingParams {
   // Passes of a 3x3 majority vote between occupied and unknown among the
   // cells with no free 8-neighbour (the backs of walls).
   int wall_back_passes = 1;
+  // Side of the aligned blocks every cell takes its block's value from
+  // (occupied if any cell is, else unknown if any is, else free) before the
+  // rest; 1 (or less) leaves cells alone.
+  int block_cells = 1;
 };
 
 // The parameters used for a tolerance of `t` cells (1..4).

@@ -1,7 +1,7 @@
 // bench_tolerance: bytes of the tolerance mode's files against the exact
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
-//   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only]
+//   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR]
 //                   [--open R] [--close R] [--specks N] [--backs P]
 //
 // For T = 1..4 each map is simplified (SimplifyWithinTolerance) and coded as
@@ -90,6 +90,20 @@ long SmallestPngBytes(const Grid& g) {
   return best;
 }
 
+std::string FlatName(std::string path) {
+  std::replace(path.begin(), path.end(), '/', '_');
+  return path;
+}
+
+void DumpPng(const Grid& g, const std::string& path) {
+  StatusOr<std::string> png = bench::EncodeTrinaryPng(g, bench::PngLayout::kPalette8, 9);
+  if (!png.ok()) return;
+  if (FILE* f = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(png->data(), 1, png->size(), f);
+    std::fclose(f);
+  }
+}
+
 long LmapBytes(const Grid& g, bool layers) {
   EncodeOptions options;
   options.vector_layers = layers;
@@ -142,6 +156,7 @@ void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
 int Run(int argc, char** argv) {
   std::string dir = "../shared/maps";
   std::string only;
+  std::string dump;  // folder for PNGs of the original and simplified grids
   bool with_layers = true;
   bool override_params = false;
   tolerance_internal::SmoothingParams params;
@@ -152,6 +167,8 @@ int Run(int argc, char** argv) {
       dir = next();
     } else if (a == "--only") {
       only = next();
+    } else if (a == "--dump") {
+      dump = next();
     } else if (a == "--cells-only") {
       with_layers = false;
     } else if (a == "--open") {
@@ -160,6 +177,8 @@ int Run(int argc, char** argv) {
       params.close_radius = std::atoi(next()), override_params = true;
     } else if (a == "--specks") {
       params.speck_cells = std::atoi(next()), override_params = true;
+    } else if (a == "--block") {
+      params.block_cells = std::atoi(next()), override_params = true;
     } else if (a == "--backs") {
       params.wall_back_passes = std::atoi(next()), override_params = true;
     } else {
@@ -198,6 +217,7 @@ int Run(int argc, char** argv) {
         s = *simplified;
       }
       row.holds[t] = CheckTolerance(g, s, t).Holds();
+      if (!dump.empty()) DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
       row.cells[t] = LmapBytes(s, false);
       row.layers[t] = with_layers ? LmapBytes(s, true) : row.cells[t];
       if (with_layers) {
