@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <random>
@@ -156,8 +155,6 @@ void ExpectPlansAgree(const Grid& o, const Grid& s, int sources) {
       const bool agree =
           (x < 0) == (y < 0) && (x < 0 || std::abs(x - y) <= 2 || std::abs(x - y) <= 0.03 * x);
       disagreements += !agree;
-      if (!agree && std::getenv("TOL_DEBUG"))
-        std::fprintf(stderr, "pair %d->%d: %d vs %d\n", both[a], both[b], x, y);
     }
   }
   EXPECT_EQ(disagreements, 0) << "of " << pairs << " pairs";
@@ -301,7 +298,9 @@ TEST(ToleranceTest, GuaranteesHoldOnBundledMaps) {
       ExpectGuarantees(g, *s, t, rel);
       changed += ChangedCells(g, *s);
     }
-    if (std::string(rel).find("willow") != std::string::npos) EXPECT_GT(changed, 0u) << rel;
+    if (std::string(rel).find("willow") != std::string::npos) {
+      EXPECT_GT(changed, 0u) << rel;
+    }
   }
 }
 
