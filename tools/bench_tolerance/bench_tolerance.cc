@@ -1,7 +1,7 @@
 // bench_tolerance: bytes of the tolerance mode's files against the exact
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
-//   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR]
+//   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
 //                   [--open R] [--close R] [--specks N] [--backs P]
 //
 // For T = 1..4 each map is simplified (SimplifyWithinTolerance) and coded as
@@ -12,7 +12,8 @@
 // occupied if any cell is, else unknown if any is, else free). Medians are
 // printed for the tuning maps and for the others separately. --cells-only
 // skips the files with vector layers (much faster). --open etc. override
-// the smoothing parameters for every T (tuning).
+// the smoothing parameters for every T (tuning). --coarse-lmap also prints
+// the exact file of the coarser maps and of them drawn back at full size.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -76,6 +77,15 @@ Grid Coarser(const Grid& g, int factor) {
         out.set(c / factor, r / factor, v);
       }
     }
+  }
+  return out;
+}
+
+// `coarse` drawn back at the size of `like`, each cell its block's value.
+Grid Upsampled(const Grid& coarse, int factor, const Grid& like) {
+  Grid out(like.width(), like.height());
+  for (int r = 0; r < like.height(); ++r) {
+    for (int c = 0; c < like.width(); ++c) out.set(c, r, coarse.at(c / factor, r / factor));
   }
   return out;
 }
@@ -157,6 +167,7 @@ int Run(int argc, char** argv) {
   std::string dir = "../shared/maps";
   std::string only;
   std::string dump;  // folder for PNGs of the original and simplified grids
+  bool coarse_lmap = false;
   bool with_layers = true;
   bool override_params = false;
   tolerance_internal::SmoothingParams params;
@@ -169,6 +180,8 @@ int Run(int argc, char** argv) {
       only = next();
     } else if (a == "--dump") {
       dump = next();
+    } else if (a == "--coarse-lmap") {
+      coarse_lmap = true;
     } else if (a == "--cells-only") {
       with_layers = false;
     } else if (a == "--open") {
@@ -217,7 +230,8 @@ int Run(int argc, char** argv) {
         s = *simplified;
       }
       row.holds[t] = CheckTolerance(g, s, t).Holds();
-      if (!dump.empty()) DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
+      if (!dump.empty())
+        DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
       row.cells[t] = LmapBytes(s, false);
       row.layers[t] = with_layers ? LmapBytes(s, true) : row.cells[t];
       if (with_layers) {
@@ -228,6 +242,15 @@ int Run(int argc, char** argv) {
       std::fflush(stdout);
     }
     std::printf("\n");
+    if (coarse_lmap) {
+      // What the exact coder makes of the coarser maps themselves, and of
+      // them drawn back at full resolution (blocks of 2 x 2 / 4 x 4 cells):
+      // how much a coder that knew the block lattice could save.
+      std::printf("    coarse lmap: 2x %ld, 4x %ld; drawn back at full size: 2x %ld, 4x %ld\n",
+                  LmapBytes(Coarser(g, 2), false), LmapBytes(Coarser(g, 4), false),
+                  LmapBytes(Upsampled(Coarser(g, 2), 2, g), false),
+                  LmapBytes(Upsampled(Coarser(g, 4), 4, g), false));
+    }
     rows.push_back(row);
   }
   PrintSummary(rows, true, with_layers);
