@@ -27,6 +27,11 @@ struct SmoothingParams {
   // (occupied if any cell is, else unknown if any is, else free) before the
   // rest; 1 (or less) leaves cells alone.
   int block_cells = 1;
+  // The same for the non-free cells only (free cells stay): in each aligned
+  // block of this side the non-free cells all become occupied if any of
+  // them is, else stay unknown. Free space, and so every plan, is kept
+  // exactly; obstacles move by less than the block side. 1 leaves them.
+  int nonfree_block_cells = 1;
 };
 
 // The parameters used for a tolerance of `t` cells (1..4).

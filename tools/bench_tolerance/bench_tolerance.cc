@@ -192,6 +192,8 @@ int Run(int argc, char** argv) {
       params.speck_cells = std::atoi(next()), override_params = true;
     } else if (a == "--block") {
       params.block_cells = std::atoi(next()), override_params = true;
+    } else if (a == "--nonfree-block") {
+      params.nonfree_block_cells = std::atoi(next()), override_params = true;
     } else if (a == "--backs") {
       params.wall_back_passes = std::atoi(next()), override_params = true;
     } else {
