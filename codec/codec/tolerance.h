@@ -38,9 +38,11 @@ inline constexpr int kPlanSlackSteps = 2;
 
 // The simplified grid: the input where a region cannot be simplified within
 // `tolerance_cells` (0..kMaxToleranceCells; else invalid argument), smoothed
-// elsewhere (occupied specks next to walls dropped, free rays into unknown
-// cut, unknown notches and specks inside free space filled, the backs of
-// walls smoothed). Every guarantee above is checked on the result, and
+// elsewhere (occupied specks next to walls dropped, short free rays into
+// unknown cut, unknown notches and specks inside free space filled, the
+// backs of walls smoothed, and the border between obstacles and unknown
+// space laid on a lattice of blocks of T + 1 cells); see
+// tolerance_smoothing.h. Every guarantee above is checked on the result, and
 // changes are undone block by block where one fails, so
 // CheckTolerance(grid, result, tolerance_cells).Holds() is true.
 // tolerance_cells == 0 returns the grid unchanged. Deterministic; metadata

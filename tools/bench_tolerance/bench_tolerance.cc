@@ -12,8 +12,8 @@
 // occupied if any cell is, else unknown if any is, else free). Medians are
 // printed for the tuning maps and for the others separately. --cells-only
 // skips the files with vector layers (much faster). --open etc. override
-// the smoothing parameters for every T (tuning). --coarse-lmap also prints
-// the exact file of the coarser maps and of them drawn back at full size.
+// one smoothing parameter of DefaultSmoothingParams(T) for every T (tuning). --coarse-lmap also
+// prints the exact file of the coarser maps and of them drawn back at full size.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -170,7 +170,8 @@ int Run(int argc, char** argv) {
   bool coarse_lmap = false;
   bool with_layers = true;
   bool override_params = false;
-  tolerance_internal::SmoothingParams params;
+  // Overrides of DefaultSmoothingParams(T); -1 keeps the default.
+  int open = -1, close = -1, specks = -1, backs = -1, block = -1, nonfree_block = -1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : ""; };
@@ -185,17 +186,17 @@ int Run(int argc, char** argv) {
     } else if (a == "--cells-only") {
       with_layers = false;
     } else if (a == "--open") {
-      params.open_radius = std::atoi(next()), override_params = true;
+      open = std::atoi(next()), override_params = true;
     } else if (a == "--close") {
-      params.close_radius = std::atoi(next()), override_params = true;
+      close = std::atoi(next()), override_params = true;
     } else if (a == "--specks") {
-      params.speck_cells = std::atoi(next()), override_params = true;
+      specks = std::atoi(next()), override_params = true;
     } else if (a == "--block") {
-      params.block_cells = std::atoi(next()), override_params = true;
+      block = std::atoi(next()), override_params = true;
     } else if (a == "--nonfree-block") {
-      params.nonfree_block_cells = std::atoi(next()), override_params = true;
+      nonfree_block = std::atoi(next()), override_params = true;
     } else if (a == "--backs") {
-      params.wall_back_passes = std::atoi(next()), override_params = true;
+      backs = std::atoi(next()), override_params = true;
     } else {
       std::fprintf(stderr, "bench_tolerance: unknown argument '%s'\n", a.c_str());
       return 2;
@@ -224,6 +225,16 @@ int Run(int argc, char** argv) {
       if (t > 0 && override_params) {
         // Tuning: the proposal with the given parameters, then the same
         // checks and undoing as SimplifyWithinTolerance.
+        tolerance_internal::SmoothingParams params = tolerance_internal::DefaultSmoothingParams(t);
+        auto set = [](int value, int* field) {
+          if (value >= 0) *field = value;
+        };
+        set(open, &params.open_radius);
+        set(close, &params.close_radius);
+        set(specks, &params.speck_cells);
+        set(backs, &params.wall_back_passes);
+        set(block, &params.block_cells);
+        set(nonfree_block, &params.nonfree_block_cells);
         s = tolerance_internal::ProposeSmoothing(g, t, params);
         s = tolerance_internal::EnforceGuarantees(g, s, t);
       } else if (t > 0) {
