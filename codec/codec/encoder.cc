@@ -16,6 +16,7 @@
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
+#include "codec/codec/tolerance.h"
 #include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
@@ -36,9 +37,10 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   if (options.min_segment_cells < 1) {
     return InvalidArgumentError("min_segment_cells must be at least 1");
   }
-  if (options.tolerance_cells != 0) {
+  if (options.tolerance_cells < 0 || options.tolerance_cells > kMaxToleranceCells) {
     return InvalidArgumentError("tolerance " + std::to_string(options.tolerance_cells) +
-                                " cells: only exact files (tolerance 0) are implemented");
+                                " cells: must be 0 (exact) to " +
+                                std::to_string(kMaxToleranceCells));
   }
   if (options.tile_size_cells < kMinTileSize || options.tile_size_cells > kMaxTileSize) {
     return InvalidArgumentError("tile size must be 16..65536 cells");
@@ -76,7 +78,16 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
 StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_RETURN_IF_ERROR(CheckEncodeInput(grid, options));
   if (options.format_v1) return EncodeLmapV1(grid, options);
-  return EncodeV2(grid, options);
+  if (options.tolerance_cells == 0) return EncodeV2(grid, options);
+  // Within a tolerance the file is the exact file of the map simplified
+  // within it: every guarantee is checked on that grid, which is exactly
+  // what the file decodes to (SimplifyWithinTolerance undoes what fails).
+  // Where the simplification saves nothing (a clean plan, or the layers'
+  // cost), the exact file is kept: never larger than it.
+  LINEMAP_ASSIGN_OR_RETURN(Grid simplified, SimplifyWithinTolerance(grid, options.tolerance_cells));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> within, EncodeV2(simplified, options));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, options));
+  return within.size() < exact.size() ? within : exact;
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {

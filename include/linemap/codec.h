@@ -35,8 +35,11 @@ enum class LosslessMethod {
 
 struct EncodeOptions {
   // Largest distance, in cells (Chebyshev), by which the decoded map may
-  // differ from the input; 0 (the default) is an exact file. Only 0 is
-  // implemented yet: other values are refused (invalid argument).
+  // differ from the input; 0 (the default) is an exact file, 1..4 a file of
+  // the map simplified within that distance with every guarantee of
+  // codec/codec/tolerance.h checked on what it decodes to (obstacles and
+  // free space within T both ways, no leaks, plans agree); other values are
+  // refused (invalid argument).
   int tolerance_cells = 0;
   // Store the vector layers (walls, rooms, furniture) besides the cells
   // (default true); false writes the smallest exact file, cells only.

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <string>
 
+#include "linemap/grid.h"
+#include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -46,6 +48,57 @@ TEST(CmdEvalTest, DifferentSizesAreAnError) {
     EXPECT_NE(r.err.find(part), std::string::npos) << part << ": " << r.err;
   }
   EXPECT_EQ(RunCli({"eval", Arena(), depot, "--json"}).exit_code, 2);
+}
+
+// A 20 x 10 room (occupied border, free inside) with one obstacle cell at
+// (obstacle_col, 5), saved as a ROS map.
+std::string SaveRoom(const std::string& dir, const std::string& name, int obstacle_col) {
+  Grid g(20, 10, Cell::kFree);
+  for (int c = 0; c < 20; ++c) {
+    g.set(c, 0, Cell::kOccupied);
+    g.set(c, 9, Cell::kOccupied);
+  }
+  for (int r = 0; r < 10; ++r) {
+    g.set(0, r, Cell::kOccupied);
+    g.set(19, r, Cell::kOccupied);
+  }
+  g.set(obstacle_col, 5, Cell::kOccupied);
+  const std::string path = dir + "/" + name + ".yaml";
+  EXPECT_TRUE(SaveRosMap(path, g).ok());
+  return path;
+}
+
+// The obstacle moved by 3 cells: Hausdorff 3 both ways (the border is
+// further), and of the 53 wall-surface cells (18 + 18 + 8 + 8 along the
+// border, corners excluded, and the obstacle) the obstacle alone has no
+// decoded obstacle within 2.
+TEST(CmdEvalTest, ToleranceReportsTheGuaranteesFigures) {
+  const std::string dir = MakeTempDir("eval_tolerance");
+  const std::string original = SaveRoom(dir, "a", 10);
+  const std::string moved = SaveRoom(dir, "b", 13);
+  const CliResult r = RunCli({"eval", original, moved, "--tolerance", "2", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string expected :
+       {"\"hausdorff_original_to_decoded\":3", "\"hausdorff_decoded_to_original\":3",
+        "\"wall_surface_cells\":53", "\"wall_surface_within_t\":52", "\"free_moved_beyond_t\":0",
+        "\"tolerance_leaks\":0", "\"tolerance_holds\":false"}) {
+    EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " in " << r.out;
+  }
+  const CliResult same = RunCli({"eval", original, original, "--tolerance", "1"});
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.out.find("guarantees:         hold"), std::string::npos) << same.out;
+  const CliResult within = RunCli({"eval", original, moved, "--tolerance", "3"});
+  EXPECT_NE(within.out.find("guarantees:         hold"), std::string::npos) << within.out;
+}
+
+TEST(CmdEvalTest, ToleranceOutsideTheRangeIsBadUsage) {
+  const std::string dir = MakeTempDir("eval_tolerance_range");
+  const std::string original = SaveRoom(dir, "a", 10);
+  for (const std::string bad : {"5", "-1", "1.5", "two"}) {
+    const CliResult r = RunCli({"eval", original, original, "--tolerance", bad});
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("0 to 4"), std::string::npos) << bad << ": " << r.err;
+  }
 }
 
 }  // namespace

@@ -35,8 +35,9 @@ const CommandSpec kEncodeSpec = {
     WithBagOptions(WithMapLoadOptions({
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
-         "largest distance (cells) by which the decode may differ; only 0, exact (the "
-         "default), is implemented"},
+         "largest distance (cells, 0..4) by which the decode may differ: 0 exact (the default); "
+         "1..4 simplify the map within T, checking obstacles and free space within T both ways, "
+         "no leaks and plans that agree"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
         {"--raster-only", "", "leave the vector layers out: the smallest exact file"},
         {"--follow-steps", "",
@@ -95,10 +96,6 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   LINEMAP_ASSIGN_OR_RETURN(options.tolerance_cells, args.GetInt("--tolerance", 0));
   if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {
     return InvalidArgumentError("--tolerance must be a whole number of cells from 0 to 4");
-  }
-  if (options.tolerance_cells != 0) {
-    return InvalidArgumentError("--tolerance " + std::to_string(options.tolerance_cells) +
-                                ": only 0 (exact) is implemented yet");
   }
   LINEMAP_ASSIGN_OR_RETURN(options.max_threads, args.GetInt("--threads", 0));
   if (options.max_threads < 0) return InvalidArgumentError("--threads must be 0 or more");
@@ -234,9 +231,10 @@ int RunEncode(const std::vector<std::string>& args) {
   }
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
-              options->format_v1 ? "version 1.0, lossy"
-              : options->vector_layers ? "exact, with walls, rooms and furniture"
-                                       : "exact, cells only");
+              options->format_v1                 ? "version 1.0, lossy"
+              : options->tolerance_cells > 0     ? "within the tolerance, 2.0"
+              : options->vector_layers           ? "exact, with walls, rooms and furniture"
+                                                 : "exact, cells only");
   if (with_png) {
     std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
                 ratio > 0 ? 1.0 / ratio : 0.0);

@@ -1,7 +1,11 @@
-// linemap eval ORIGINAL DECODED_OR_LMAP [--json]: the issue's quality
-// measures of a decoded map against the original.
+// linemap eval ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]: the
+// quality measures of a decoded map against the original, and with
+// --tolerance the guarantees of a lossy save within T cells.
 #include <cstdio>
+#include <optional>
+#include <string>
 
+#include "codec/codec/tolerance.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "tools/linemap/commands.h"
@@ -13,7 +17,7 @@ namespace linemap::cli {
 
 const CommandSpec kEvalSpec = {
     "eval",
-    "ORIGINAL DECODED_OR_LMAP [--json]",
+    "ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]",
     "compare a decoded map with the original, cell by cell",
     "DECODED_OR_LMAP is a map (YAML or image) or an .lmap file, which is decoded.\n"
     "Prints: cells equal, obstacle recall and precision within 1 cell, free-space\n"
@@ -28,11 +32,47 @@ const CommandSpec kEvalSpec = {
     "outline's cells and the cells whose centres it encloses).\n"
     "The map-reading options (--negate, --mode, the thresholds, --resolution,\n"
     "--origin) apply to ORIGINAL only: a decoded map's YAML carries its own\n"
-    "values. --max-cells limits both. Maps of different sizes are refused.",
-    WithMapLoadOptions({{"--json", "", "print one JSON object"}}),
+    "values. --max-cells limits both. Maps of different sizes are refused.\n"
+    "With --tolerance T (whole cells, 0 to 4) also the guarantees of a save\n"
+    "within T cells (Chebyshev): the Hausdorff distance between the two maps'\n"
+    "occupied cells in each direction, the share of the original's wall-surface\n"
+    "cells (occupied, with a free 4-neighbour) with a decoded obstacle within T,\n"
+    "free cells moved or lost further than T, unknown turned free further than T\n"
+    "from the original free space, free regions joined (leaks) or split, and\n"
+    "plans (4-connected, over free cells, from 16 sampled starts to every cell\n"
+    "free in both) that exist on one map only or differ in length by more than\n"
+    "3 % and 2 steps; and whether all hold (exit status 0 either way).",
+    WithMapLoadOptions(
+        {{"--json", "", "print one JSON object"},
+         {"--tolerance", "T", "also check the guarantees of a save within T cells (0..4)"}}),
     2,
     2,
 };
+
+namespace {
+
+// A Hausdorff distance as text; -1 stands for "the other map has no
+// obstacle at all".
+std::string DistanceText(int cells) {
+  return cells < 0 ? std::string("infinite (no obstacle on the other map)")
+                   : std::to_string(cells) + " cells";
+}
+
+void PrintToleranceReport(const ToleranceReport& t) {
+  std::printf("tolerance:            %d cells (Chebyshev)\n", t.tolerance_cells);
+  std::printf("  Hausdorff orig->dec: %s\n", DistanceText(t.hausdorff_original_to_decoded).c_str());
+  std::printf("  Hausdorff dec->orig: %s\n", DistanceText(t.hausdorff_decoded_to_original).c_str());
+  std::printf("  wall surface kept:  %.4f (%zu of %zu within T)\n", t.WallSurfaceShare(),
+              t.wall_surface_kept, t.wall_surface_cells);
+  std::printf("  free moved > T:     %zu\n", t.free_moved_beyond);
+  std::printf("  free lost > T:      %zu\n", t.free_lost_beyond);
+  std::printf("  unknown->free > T:  %zu\n", t.unknown_turned_free_beyond);
+  std::printf("  leaks / splits:     %zu / %zu\n", t.leaks, t.splits);
+  std::printf("  plans disagreeing:  %zu of %zu pairs\n", t.plan_disagreements, t.plan_pairs);
+  std::printf("  guarantees:         %s\n", t.Holds() ? "hold" : "BROKEN");
+}
+
+}  // namespace
 
 int RunEval(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
@@ -55,6 +95,16 @@ int RunEval(const std::vector<std::string>& args) {
                     std::to_string(original->height()) + " cells but '" + decoded_path + "' is " +
                     std::to_string(decoded->width()) + " x " + std::to_string(decoded->height()) +
                     ": eval compares maps of the same size"));
+  }
+  std::optional<ToleranceReport> tol;
+  if (parsed->Get("--tolerance")) {
+    StatusOr<int> t = parsed->GetInt("--tolerance", 0);
+    if (!t.ok() || *t < 0 || *t > kMaxToleranceCells) {
+      return ReportError(
+          "eval", InvalidArgumentError("--tolerance must be a whole number of cells from 0 to " +
+                                       std::to_string(kMaxToleranceCells)));
+    }
+    tol = CheckTolerance(*original, *decoded, *t);
   }
   const GridComparison m = CompareGrids(*original, *decoded);
   // The layers' fidelity when the second file is an .lmap.
@@ -98,6 +148,22 @@ int RunEval(const std::vector<std::string>& args) {
           .Add("edge_share_in_furniture", share(fidelity->in_furniture, fidelity->edge_cells))
           .Add("edge_share_within_1_or_furniture", share(fidelity->covered, fidelity->edge_cells));
     }
+    if (tol) {
+      json.Add("tolerance_cells", std::int64_t{tol->tolerance_cells})
+          .Add("hausdorff_original_to_decoded", std::int64_t{tol->hausdorff_original_to_decoded})
+          .Add("hausdorff_decoded_to_original", std::int64_t{tol->hausdorff_decoded_to_original})
+          .Add("wall_surface_cells", std::uint64_t{tol->wall_surface_cells})
+          .Add("wall_surface_within_t", std::uint64_t{tol->wall_surface_kept})
+          .Add("wall_surface_share_within_t", tol->WallSurfaceShare())
+          .Add("free_moved_beyond_t", std::uint64_t{tol->free_moved_beyond})
+          .Add("free_lost_beyond_t", std::uint64_t{tol->free_lost_beyond})
+          .Add("unknown_turned_free_beyond_t", std::uint64_t{tol->unknown_turned_free_beyond})
+          .Add("tolerance_leaks", std::uint64_t{tol->leaks})
+          .Add("tolerance_splits", std::uint64_t{tol->splits})
+          .Add("plan_pairs", std::uint64_t{tol->plan_pairs})
+          .Add("plan_disagreements", std::uint64_t{tol->plan_disagreements})
+          .Add("tolerance_holds", tol->Holds());
+    }
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -124,6 +190,7 @@ int RunEval(const std::vector<std::string>& args) {
                 share(fidelity->within_1_of_wall, fidelity->edge_cells));
     std::printf("  or in furniture:    %.4f\n", share(fidelity->covered, fidelity->edge_cells));
   }
+  if (tol) PrintToleranceReport(*tol);
   return kExitOk;
 }
 

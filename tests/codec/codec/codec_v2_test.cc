@@ -14,6 +14,7 @@
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
+#include "codec/codec/tolerance.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -270,12 +271,36 @@ TEST(CodecV2Test, WindowsOfVersionOneFilesAreCropped) {
   EXPECT_EQ(region->cells(), Crop(*grid, w).cells());
 }
 
-TEST(CodecV2Test, ToleranceAboveZeroIsRefused) {
+// Within a tolerance the file decodes to the simplified map (whose
+// guarantees tolerance_test.cc checks by brute force) or, where that is no
+// smaller, to the map itself; never larger than the exact file.
+TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/strands/kth/map.yaml");
+  ASSERT_TRUE(grid.ok());
+  auto exact = EncodeLmap(*grid);
+  ASSERT_TRUE(exact.ok());
+  for (int t = 1; t <= 4; ++t) {
+    EncodeOptions options;
+    options.tolerance_cells = t;
+    auto bytes = EncodeLmap(*grid, options);
+    ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
+    EXPECT_LE(bytes->size(), exact->size()) << t;
+    auto decoded = DecodeLmap(*bytes);
+    ASSERT_TRUE(decoded.ok());
+    auto simplified = SimplifyWithinTolerance(*grid, t);
+    ASSERT_TRUE(simplified.ok());
+    EXPECT_TRUE(*decoded == *simplified || *decoded == *grid) << t;
+  }
+}
+
+TEST(CodecV2Test, ToleranceOutsideZeroToFourIsRefused) {
   EncodeOptions options;
-  options.tolerance_cells = 1;
+  options.tolerance_cells = 5;
   auto bytes = EncodeLmap(Grid(4, 4, Cell::kFree), options);
   ASSERT_FALSE(bytes.ok());
   EXPECT_EQ(bytes.status().code(), StatusCode::kInvalidArgument);
+  options.tolerance_cells = -1;
+  EXPECT_FALSE(EncodeLmap(Grid(4, 4, Cell::kFree), options).ok());
   options.tolerance_cells = 0;
   options.tile_size_cells = 8;
   EXPECT_FALSE(EncodeLmap(Grid(4, 4, Cell::kFree), options).ok());

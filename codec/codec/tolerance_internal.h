@@ -1,0 +1,60 @@
+// The parts of the tolerance checks that SimplifyWithinTolerance() and
+// CheckTolerance() share: distance transforms, free-space topology and the
+// plan comparison. Cells are addressed by Grid::Index (row-major).
+#ifndef LINEMAP_CODEC_CODEC_TOLERANCE_INTERNAL_H_
+#define LINEMAP_CODEC_CODEC_TOLERANCE_INTERNAL_H_
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "linemap/grid.h"
+
+namespace linemap::tolerance_internal {
+
+// Distance used for "no such cell in the map".
+inline constexpr std::int32_t kFar = INT32_MAX / 2;
+
+// 1 where grid's cell equals `value`.
+std::vector<std::uint8_t> CellMask(const Grid& grid, Cell value);
+
+// Chebyshev distance (cells) from every cell to the nearest cell where
+// `mask` is non-zero; kFar everywhere when the mask is empty. Two raster
+// passes with the 8-neighbour chamfer, which is exact for this metric.
+std::vector<std::int32_t> ChebyshevDistance(int width, int height,
+                                            const std::vector<std::uint8_t>& mask);
+
+// Free-space topology of `decoded` against `original` (4-connected free
+// regions). `leaks` as CompareGrids counts them (original regions of
+// kLeakRegionCells+ cells joined by a decoded component); `splits`: original
+// regions of kLeakRegionCells+ cells whose cells free in the decode lie in
+// several decoded components. `culprits` (when asked for): changed cells
+// whose undoing removes a fault: new free cells of a joining component, and
+// cells that were free and are no longer, beside a split-off piece.
+struct TopologyFaults {
+  std::size_t leaks = 0;
+  std::size_t splits = 0;
+  std::vector<std::size_t> culprits;
+};
+TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, bool want_culprits);
+
+// Plans compared from sampled start cells to every goal cell free in both
+// grids (deterministic: the same grids give the same pairs). `paths` (when
+// asked for): the cells of both plans of the worst disagreeing pair of each
+// start.
+struct PlanFaults {
+  std::size_t pairs = 0;
+  std::size_t disagreements = 0;
+  std::vector<std::size_t> paths;
+};
+PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths);
+
+// `proposal` (a grid of the original's size) with its changes undone where
+// a guarantee of tolerance `t` fails, until all hold; the original when
+// that does not settle. SimplifyWithinTolerance() is this applied to
+// ProposeSmoothing(); tools tuning the smoothing call it directly.
+Grid EnforceGuarantees(const Grid& original, Grid proposal, int t);
+
+}  // namespace linemap::tolerance_internal
+
+#endif  // LINEMAP_CODEC_CODEC_TOLERANCE_INTERNAL_H_

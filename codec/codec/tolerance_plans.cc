@@ -1,0 +1,123 @@
+// Plans compared on two grids: breadth-first 4-connected paths over free
+// cells (what a planner that treats unknown as an obstacle can use) from
+// sampled start cells to every cell free in both grids.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "codec/codec/tolerance.h"
+#include "codec/codec/tolerance_internal.h"
+
+namespace linemap::tolerance_internal {
+namespace {
+
+// Start cells per check, each planned to every cell free in both grids:
+// 16 x 2 breadth-first searches per check (about 0.1 s per million cells).
+constexpr int kSampledCells = 16;
+constexpr int kDrawsPerCell = 64;
+
+// Steps from `source` to every cell over free cells; -1 where unreachable.
+std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source) {
+  std::vector<std::int32_t> steps(grid.size(), -1);
+  std::vector<std::size_t> queue;
+  queue.reserve(1024);
+  steps[source] = 0;
+  queue.push_back(source);
+  const std::size_t w = static_cast<std::size_t>(grid.width());
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t i = queue[head];
+    const int c = static_cast<int>(i % w);
+    const int r = static_cast<int>(i / w);
+    auto visit = [&](int nc, int nr) {
+      if (!grid.Contains(nc, nr)) return;
+      const std::size_t n = grid.Index(nc, nr);
+      if (steps[n] >= 0 || grid.cells()[n] != Cell::kFree) return;
+      steps[n] = steps[i] + 1;
+      queue.push_back(n);
+    };
+    visit(c + 1, r);
+    visit(c - 1, r);
+    visit(c, r + 1);
+    visit(c, r - 1);
+  }
+  return steps;
+}
+
+// The cells of one shortest path from the search's source to `goal`.
+void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::size_t goal,
+                std::vector<std::size_t>* out) {
+  const std::size_t w = static_cast<std::size_t>(grid.width());
+  std::size_t i = goal;
+  out->push_back(i);
+  while (steps[i] > 0) {
+    const int c = static_cast<int>(i % w);
+    const int r = static_cast<int>(i / w);
+    const int dc[4] = {1, -1, 0, 0};
+    const int dr[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+      if (!grid.Contains(c + dc[k], r + dr[k])) continue;
+      const std::size_t n = grid.Index(c + dc[k], r + dr[k]);
+      if (steps[n] == steps[i] - 1) {
+        i = n;
+        break;
+      }
+    }
+    out->push_back(i);
+  }
+}
+
+// Cells free in both grids, drawn by a fixed linear congruential sequence.
+std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
+  std::vector<std::size_t> cells;
+  if (a.empty()) return cells;
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (int draw = 0; draw < kSampledCells * kDrawsPerCell && cells.size() < kSampledCells; ++draw) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const std::size_t i = static_cast<std::size_t>((state >> 17) % a.size());
+    if (a.cells()[i] == Cell::kFree && b.cells()[i] == Cell::kFree) cells.push_back(i);
+  }
+  return cells;
+}
+
+}  // namespace
+
+PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths) {
+  PlanFaults out;
+  const std::vector<std::size_t> sources = SampleCells(original, decoded);
+  for (const std::size_t source : sources) {
+    const std::vector<std::int32_t> a = FreeSteps(original, source);
+    const std::vector<std::int32_t> b = FreeSteps(decoded, source);
+    // Every cell free in both is a goal: the searches reach them all anyway.
+    std::size_t worst = 0;
+    double worst_excess = -1;
+    for (std::size_t g = 0; g < a.size(); ++g) {
+      if (g == source || original.cells()[g] != Cell::kFree || decoded.cells()[g] != Cell::kFree) {
+        continue;
+      }
+      ++out.pairs;
+      const std::int32_t la = a[g];
+      const std::int32_t lb = b[g];
+      const int diff = std::abs(lb - la);
+      const bool agree = (la < 0) == (lb < 0) &&
+                         (la < 0 || diff <= kPlanSlackSteps || diff <= kPlanLengthTolerance * la);
+      if (agree) continue;
+      ++out.disagreements;
+      const double excess = (la < 0 || lb < 0) ? 1e9 : static_cast<double>(diff) / la;
+      if (excess > worst_excess) {
+        worst_excess = excess;
+        worst = g;
+      }
+    }
+    if (!want_paths || worst_excess < 0) continue;
+    // The worst goal's plans: undoing the changes along them removes the
+    // shortcut or the detour; the next check finds any other.
+    if (a[worst] >= 0) AppendPath(original, a, worst, &out.paths);
+    if (b[worst] >= 0) AppendPath(decoded, b, worst, &out.paths);
+    out.paths.push_back(source);
+    out.paths.push_back(worst);
+  }
+  return out;
+}
+
+}  // namespace linemap::tolerance_internal

@@ -1,0 +1,277 @@
+// bench_tolerance: bytes of the tolerance mode's files against the exact
+// file and the PNG-9 of coarser maps, on ../shared/maps.
+//
+//   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
+//                   [--open R] [--close R] [--specks N] [--backs P]
+//
+// For T = 1..4 each map is simplified (SimplifyWithinTolerance) and coded as
+// the exact 2.0 file of the simplified grid (EncodeLmap, default options,
+// and with vector_layers = false), every guarantee re-checked by
+// CheckTolerance. Anchors: the exact file of the original (T = 0) and the
+// smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block is
+// occupied if any cell is, else unknown if any is, else free). Medians are
+// printed for the tuning maps and for the others separately. --cells-only
+// skips the files with vector layers (much faster). --open etc. override
+// one smoothing parameter of DefaultSmoothingParams(T) for every T (tuning). --coarse-lmap also
+// prints the exact file of the coarser maps and of them drawn back at full size.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "codec/codec/tolerance.h"
+#include "codec/codec/tolerance_internal.h"
+#include "codec/codec/tolerance_smoothing.h"
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
+#include "tools/bench/png_codec.h"
+
+namespace linemap {
+namespace {
+
+struct MapEntry {
+  const char* path;  // relative to the maps folder
+  bool tuning;
+};
+
+// The same split as bench_tiles: parameters were chosen on the first group.
+const MapEntry kMaps[] = {
+    {"aws_bookstore/map.yaml", true},
+    {"aws_warehouse/002/map.yaml", true},
+    {"f1tenth/columbia.yaml", true},
+    {"f1tenth/levinelobby.yaml", true},
+    {"fetch/3_1_16_localization.yaml", true},
+    {"fetch/4_26_15.yaml", true},
+    {"mrpt/map1.png", true},
+    {"nav2/depot.yaml", true},
+    {"nav2/map.pgm", true},
+    {"nav2/tb3_sandbox.yaml", true},
+    {"navtut/lse_arena.yaml", true},
+    {"rosnav1/willow-full-0.05.pgm", true},
+    {"strands/bham/cs_lg.yaml", true},
+    {"strands/tsc/tsc.yaml", true},
+    {"turtlebot_apps/willow-2010-02-18-0.10.yaml", true},
+    {"uos/avz.yaml", true},
+    {"f1tenth/mtl.yaml", false},
+    {"fetch/9_16_15.yaml", false},
+    {"nav2/warehouse.yaml", false},
+    {"strands/kth/map.yaml", false},
+    {"uos/avz5floor_plan.yaml", false},
+    {"turtlebot_apps/ctrl_room.yaml", false},
+    {"aws_warehouse/005/map.yaml", false},
+    {"stage_ros/willow-full.pgm", false},
+    {"nav2/empty_room.pgm", false},
+};
+
+constexpr int kMaxT = 4;
+
+Grid Coarser(const Grid& g, int factor) {
+  Grid out((g.width() + factor - 1) / factor, (g.height() + factor - 1) / factor, Cell::kFree);
+  for (int r = 0; r < g.height(); ++r) {
+    for (int c = 0; c < g.width(); ++c) {
+      const Cell v = g.at(c, r);
+      const Cell cur = out.at(c / factor, r / factor);
+      if (v == Cell::kOccupied || (v == Cell::kUnknown && cur == Cell::kFree)) {
+        out.set(c / factor, r / factor, v);
+      }
+    }
+  }
+  return out;
+}
+
+// `coarse` drawn back at the size of `like`, each cell its block's value.
+Grid Upsampled(const Grid& coarse, int factor, const Grid& like) {
+  Grid out(like.width(), like.height());
+  for (int r = 0; r < like.height(); ++r) {
+    for (int c = 0; c < like.width(); ++c) out.set(c, r, coarse.at(c / factor, r / factor));
+  }
+  return out;
+}
+
+long SmallestPngBytes(const Grid& g) {
+  long best = -1;
+  for (bench::PngLayout layout :
+       {bench::PngLayout::kGrey8, bench::PngLayout::kPalette8, bench::PngLayout::kPalette2}) {
+    StatusOr<std::string> png = bench::EncodeTrinaryPng(g, layout, 9);
+    if (png.ok() && (best < 0 || static_cast<long>(png->size()) < best)) best = png->size();
+  }
+  return best;
+}
+
+std::string FlatName(std::string path) {
+  std::replace(path.begin(), path.end(), '/', '_');
+  return path;
+}
+
+void DumpPng(const Grid& g, const std::string& path) {
+  StatusOr<std::string> png = bench::EncodeTrinaryPng(g, bench::PngLayout::kPalette8, 9);
+  if (!png.ok()) return;
+  if (FILE* f = std::fopen(path.c_str(), "wb")) {
+    std::fwrite(png->data(), 1, png->size(), f);
+    std::fclose(f);
+  }
+}
+
+long LmapBytes(const Grid& g, bool layers) {
+  EncodeOptions options;
+  options.vector_layers = layers;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(g, options);
+  return bytes.ok() ? static_cast<long>(bytes->size()) : -1;
+}
+
+struct Row {
+  std::string name;
+  bool tuning = false;
+  long png2 = 0, png4 = 0;
+  long cells[kMaxT + 1] = {};   // vector_layers = false
+  long layers[kMaxT + 1] = {};  // default options
+  bool holds[kMaxT + 1] = {};
+};
+
+double Median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
+  std::printf("\n%s maps:\n", tuning ? "tuning" : "held-out");
+  std::printf(
+      "  T  kind     med/exact  max/exact  med/png2x  max/png2x  med/png4x  max/png4x  held\n");
+  for (int t = 1; t <= kMaxT; ++t) {
+    for (int kind = 0; kind < (with_layers ? 2 : 1); ++kind) {
+      std::vector<double> e, p2, p4;
+      int held = 0, n = 0;
+      for (const Row& r : rows) {
+        if (r.tuning != tuning) continue;
+        const long* b = kind ? r.layers : r.cells;
+        e.push_back(static_cast<double>(b[t]) / b[0]);
+        p2.push_back(static_cast<double>(b[t]) / r.png2);
+        p4.push_back(static_cast<double>(b[t]) / r.png4);
+        held += r.holds[t];
+        ++n;
+      }
+      auto mx = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+      if (n == 0) continue;
+      std::printf("  %d  %-7s  %9.3f  %9.3f  %9.3f  %9.3f  %9.3f  %9.3f  %d/%d\n", t,
+                  kind ? "layers" : "cells", Median(e), mx(e), Median(p2), mx(p2), Median(p4),
+                  mx(p4), held, n);
+    }
+  }
+}
+
+int Run(int argc, char** argv) {
+  std::string dir = "../shared/maps";
+  std::string only;
+  std::string dump;  // folder for PNGs of the original and simplified grids
+  bool coarse_lmap = false;
+  bool with_layers = true;
+  bool override_params = false;
+  // Overrides of DefaultSmoothingParams(T); -1 keeps the default.
+  int open = -1, close = -1, specks = -1, backs = -1, block = -1, nonfree_block = -1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--maps") {
+      dir = next();
+    } else if (a == "--only") {
+      only = next();
+    } else if (a == "--dump") {
+      dump = next();
+    } else if (a == "--coarse-lmap") {
+      coarse_lmap = true;
+    } else if (a == "--cells-only") {
+      with_layers = false;
+    } else if (a == "--open") {
+      open = std::atoi(next()), override_params = true;
+    } else if (a == "--close") {
+      close = std::atoi(next()), override_params = true;
+    } else if (a == "--specks") {
+      specks = std::atoi(next()), override_params = true;
+    } else if (a == "--block") {
+      block = std::atoi(next()), override_params = true;
+    } else if (a == "--nonfree-block") {
+      nonfree_block = std::atoi(next()), override_params = true;
+    } else if (a == "--backs") {
+      backs = std::atoi(next()), override_params = true;
+    } else {
+      std::fprintf(stderr, "bench_tolerance: unknown argument '%s'\n", a.c_str());
+      return 2;
+    }
+  }
+  std::printf("%-44s %8s %8s  T: %s\n", "map", "png2x", "png4x",
+              with_layers ? "cells-only bytes / with layers (ok = guarantees hold)"
+                          : "cells-only bytes (ok = guarantees hold)");
+  std::vector<Row> rows;
+  for (const MapEntry& m : kMaps) {
+    if (!only.empty() && std::string(m.path).find(only) == std::string::npos) continue;
+    StatusOr<Grid> loaded = LoadRosMap(dir + "/" + m.path);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "bench_tolerance: %s: %s\n", m.path, loaded.status().message().c_str());
+      continue;
+    }
+    const Grid& g = *loaded;
+    Row row;
+    row.name = m.path;
+    row.tuning = m.tuning;
+    row.png2 = SmallestPngBytes(Coarser(g, 2));
+    row.png4 = SmallestPngBytes(Coarser(g, 4));
+    std::printf("%-44s %8ld %8ld ", m.path, row.png2, row.png4);
+    for (int t = 0; t <= kMaxT; ++t) {
+      Grid s = g;
+      if (t > 0 && override_params) {
+        // Tuning: the proposal with the given parameters, then the same
+        // checks and undoing as SimplifyWithinTolerance.
+        tolerance_internal::SmoothingParams params = tolerance_internal::DefaultSmoothingParams(t);
+        auto set = [](int value, int* field) {
+          if (value >= 0) *field = value;
+        };
+        set(open, &params.open_radius);
+        set(close, &params.close_radius);
+        set(specks, &params.speck_cells);
+        set(backs, &params.wall_back_passes);
+        set(block, &params.block_cells);
+        set(nonfree_block, &params.nonfree_block_cells);
+        s = tolerance_internal::ProposeSmoothing(g, t, params);
+        s = tolerance_internal::EnforceGuarantees(g, s, t);
+      } else if (t > 0) {
+        StatusOr<Grid> simplified = SimplifyWithinTolerance(g, t);
+        if (!simplified.ok()) return 1;
+        s = *simplified;
+      }
+      row.holds[t] = CheckTolerance(g, s, t).Holds();
+      if (!dump.empty())
+        DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
+      row.cells[t] = LmapBytes(s, false);
+      row.layers[t] = with_layers ? LmapBytes(s, true) : row.cells[t];
+      if (with_layers) {
+        std::printf(" %ld/%ld%s", row.cells[t], row.layers[t], row.holds[t] ? "" : "!");
+      } else {
+        std::printf(" %ld%s", row.cells[t], row.holds[t] ? "" : "!");
+      }
+      std::fflush(stdout);
+    }
+    std::printf("\n");
+    if (coarse_lmap) {
+      // What the exact coder makes of the coarser maps themselves, and of
+      // them drawn back at full resolution (blocks of 2 x 2 / 4 x 4 cells):
+      // how much a coder that knew the block lattice could save.
+      std::printf("    coarse lmap: 2x %ld, 4x %ld; drawn back at full size: 2x %ld, 4x %ld\n",
+                  LmapBytes(Coarser(g, 2), false), LmapBytes(Coarser(g, 4), false),
+                  LmapBytes(Upsampled(Coarser(g, 2), 2, g), false),
+                  LmapBytes(Upsampled(Coarser(g, 4), 4, g), false));
+    }
+    rows.push_back(row);
+  }
+  PrintSummary(rows, true, with_layers);
+  PrintSummary(rows, false, with_layers);
+  return 0;
+}
+
+}  // namespace
+}  // namespace linemap
+
+int main(int argc, char** argv) { return linemap::Run(argc, argv); }
