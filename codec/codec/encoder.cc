@@ -48,14 +48,16 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   return Status::Ok();
 }
 
-StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptions& options) {
+// `exact`: `grid` is the caller's map itself (the header's lossless flag).
+StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptions& options,
+                                             bool exact) {
   VectorLayers layers;
   if (options.vector_layers) {
     LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options));
   }
   ContainerWriter writer;
   writer.AddChunk(kHeaderChunk,
-                  WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, true}));
+                  WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, exact}));
   const auto metadata = MetadataOf(options);
   if (!metadata.empty()) {
     writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
@@ -78,15 +80,16 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
 StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_RETURN_IF_ERROR(CheckEncodeInput(grid, options));
   if (options.format_v1) return EncodeLmapV1(grid, options);
-  if (options.tolerance_cells == 0) return EncodeV2(grid, options);
+  if (options.tolerance_cells == 0) return EncodeV2(grid, options, true);
   // Within a tolerance the file is the exact file of the map simplified
   // within it: every guarantee is checked on that grid, which is exactly
   // what the file decodes to (SimplifyWithinTolerance undoes what fails).
   // Where the simplification saves nothing (a clean plan, or the layers'
   // cost), the exact file is kept: never larger than it.
   LINEMAP_ASSIGN_OR_RETURN(Grid simplified, SimplifyWithinTolerance(grid, options.tolerance_cells));
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> within, EncodeV2(simplified, options));
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, options));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> within,
+                           EncodeV2(simplified, options, simplified == grid));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, options, true));
   return within.size() < exact.size() ? within : exact;
 }
 

@@ -290,6 +290,10 @@ TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
     auto simplified = SimplifyWithinTolerance(*grid, t);
     ASSERT_TRUE(simplified.ok());
     EXPECT_TRUE(*decoded == *simplified || *decoded == *grid) << t;
+    // The header says whether the file is exact.
+    auto contents = DecodeLmapContents(*bytes);
+    ASSERT_TRUE(contents.ok());
+    EXPECT_EQ(contents->lossless, *decoded == *grid) << t;
   }
 }
 
