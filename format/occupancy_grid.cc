@@ -57,15 +57,16 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
                                   std::to_string(max_cells));
   }
   if (message.data.size() != cells) {
-    return InvalidArgumentError("occupancy grid: data holds " + std::to_string(message.data.size()) +
+    return InvalidArgumentError("occupancy grid: data holds " +
+                                std::to_string(message.data.size()) +
                                 " values, width x height is " + std::to_string(cells));
   }
   if (!(message.resolution > 0.0f) || !std::isfinite(message.resolution)) {
     return InvalidArgumentError("occupancy grid: resolution must be positive and finite");
   }
   const Quaternion& q = message.origin_orientation;
-  if (!std::isfinite(message.origin_x) || !std::isfinite(message.origin_y) ||
-      !std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w)) {
+  if (!std::isfinite(message.origin_x) || !std::isfinite(message.origin_y) || !std::isfinite(q.x) ||
+      !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w)) {
     return InvalidArgumentError("occupancy grid: origin is not finite");
   }
   Grid grid(static_cast<int>(message.width), static_cast<int>(message.height));

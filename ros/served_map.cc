@@ -104,7 +104,8 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
   LINEMAP_ASSIGN_OR_RETURN(CellWindow w, WindowCells(grid.width(), grid.height(), grid, window));
   Grid out(w.col1 - w.col0, w.row1 - w.row0);
   for (int row = 0; row < out.height(); ++row) {
-    for (int col = 0; col < out.width(); ++col) out.set(col, row, grid.at(w.col0 + col, w.row0 + row));
+    for (int col = 0; col < out.width(); ++col)
+      out.set(col, row, grid.at(w.col0 + col, w.row0 + row));
   }
   out.meta = grid.meta;
   // The lower-left corner of cell (col0, row0) is half a cell before its centre.

@@ -63,8 +63,8 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
 
 }  // namespace
 
-std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers,
-                                          int tile_size, int threads) {
+std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
+                                          int threads) {
   const TileLayout layout(grid.width(), grid.height(), tile_size);
   std::vector<std::vector<std::uint8_t>> tiles(layout.count());
   ForEachIndexParallel(layout.count(), threads, [&](std::uint64_t i) {
@@ -122,8 +122,8 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
     if (!status[k].ok()) return;
     const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
     for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {
-      std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw + (c0 - t.x0),
-                  c1 - c0, out + static_cast<std::ptrdiff_t>(r - window.y0) * ww + (c0 - window.x0));
+      std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw + (c0 - t.x0), c1 - c0,
+                  out + static_cast<std::ptrdiff_t>(r - window.y0) * ww + (c0 - window.x0));
     }
   });
   for (std::size_t k = 0; k < wanted.size(); ++k) {

@@ -29,7 +29,9 @@ struct TileLayout {
   int tiles_y = 0;
 
   TileLayout(int width, int height, int tile_size);
-  std::uint64_t count() const { return std::uint64_t{static_cast<std::uint64_t>(tiles_x)} * tiles_y; }
+  std::uint64_t count() const {
+    return std::uint64_t{static_cast<std::uint64_t>(tiles_x)} * tiles_y;
+  }
   // Tile i in raster order of tiles (row 0 at the origin), clipped to the grid.
   CellRect Tile(std::uint64_t i) const;
 };
@@ -39,8 +41,8 @@ struct TileLayout {
 void ForEachIndexParallel(std::uint64_t n, int threads,
                           const std::function<void(std::uint64_t)>& body);
 
-std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers,
-                                          int tile_size, int threads);
+std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
+                                          int threads);
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
 // `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.

@@ -42,7 +42,8 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   PayloadCoder coder = PayloadCoder::kRaw;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> body,
                            UnwrapPayload(chunk.payload, chunk.size, limits, &coder));
-  if (coder == PayloadCoder::kDraco) return CorruptError("the Draco payload coder is for SEGS only");
+  if (coder == PayloadCoder::kDraco)
+    return CorruptError("the Draco payload coder is for SEGS only");
   const bool range = rank >= 0 && chunk.type != kCellChunk;
   file->chunks.push_back({chunk.type, chunk.size,
                           chunk.type == kCellChunk ? "tiles"
@@ -106,9 +107,9 @@ Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLim
   if (!file.has_cells) return Status::Ok();  // no CELL chunk: all unknown
   const LayerIndex index(file.walls, file.rooms, file.furniture);
   const CellRect rect{window.col0, window.row0, window.col1, window.row1};
-  const Status status = DecodeCellChunk(file.cell_body, index, file.header.width,
-                                        file.header.height, rect, limits.max_threads,
-                                        out->mutable_cells().data());
+  const Status status =
+      DecodeCellChunk(file.cell_body, index, file.header.width, file.header.height, rect,
+                      limits.max_threads, out->mutable_cells().data());
   return status.ok() ? status : status.WithContext("chunk CELL");
 }
 
@@ -121,8 +122,8 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
   out->grid.meta = h.meta;
   out->lossless = h.lossless;
   if (h.width > 0 && h.height > 0) {
-    LINEMAP_RETURN_IF_ERROR(DecodeCells(file, CellWindow{0, 0, h.width, h.height}, limits,
-                                        &out->grid));
+    LINEMAP_RETURN_IF_ERROR(
+        DecodeCells(file, CellWindow{0, 0, h.width, h.height}, limits, &out->grid));
   }
   out->walls = std::move(file.walls);
   out->rooms = std::move(file.rooms);

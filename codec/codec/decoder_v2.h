@@ -26,8 +26,7 @@ struct V2File {
   std::vector<std::uint8_t> cell_body;  // only with read_cells
 };
 
-StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits,
-                            bool read_cells);
+StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells);
 
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);

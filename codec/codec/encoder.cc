@@ -63,8 +63,10 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
     writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
   }
   // Range-coded bodies gain nothing from deflate: stored raw.
-  if (!layers.walls.empty()) writer.AddChunk(kWallChunk, WrapPayload(EncodeWalls(layers.walls), false));
-  if (!layers.rooms.empty()) writer.AddChunk(kRoomChunk, WrapPayload(EncodeRooms(layers.rooms), false));
+  if (!layers.walls.empty())
+    writer.AddChunk(kWallChunk, WrapPayload(EncodeWalls(layers.walls), false));
+  if (!layers.rooms.empty())
+    writer.AddChunk(kRoomChunk, WrapPayload(EncodeRooms(layers.rooms), false));
   if (!layers.furniture.empty()) {
     writer.AddChunk(kFurnitureChunk, WrapPayload(EncodeFurniture(layers.furniture), false));
   }

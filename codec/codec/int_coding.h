@@ -54,8 +54,8 @@ inline bool DecodeUInt(RangeDecoder* dec, UIntModel* m, std::uint64_t* v) {
 
 // Signed values by zigzag: 0, -1, 1, -2, ... as 0, 1, 2, 3, ...
 inline void EncodeSInt(RangeEncoder* enc, UIntModel* m, std::int64_t v) {
-  const std::uint64_t z = v < 0 ? (static_cast<std::uint64_t>(-(v + 1)) << 1) | 1
-                                : static_cast<std::uint64_t>(v) << 1;
+  const std::uint64_t z =
+      v < 0 ? (static_cast<std::uint64_t>(-(v + 1)) << 1) | 1 : static_cast<std::uint64_t>(v) << 1;
   EncodeUInt(enc, m, z);
 }
 
@@ -86,7 +86,8 @@ inline void EncodeSymbol(RangeEncoder* enc, SymbolModel<Bits>* m, unsigned symbo
 template <int Bits>
 inline unsigned DecodeSymbol(RangeDecoder* dec, SymbolModel<Bits>* m) {
   unsigned node = 1;
-  for (int k = 0; k < Bits; ++k) node = (node << 1) | static_cast<unsigned>(dec->Decode(&m->node[node]));
+  for (int k = 0; k < Bits; ++k)
+    node = (node << 1) | static_cast<unsigned>(dec->Decode(&m->node[node]));
   return node - (1u << Bits);
 }
 

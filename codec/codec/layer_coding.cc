@@ -88,10 +88,9 @@ void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& 
 }
 
 // Decodes one path; `points` counts its points against `max_points`.
-StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m, int width,
-                                            int height, std::size_t min_points,
-                                            std::uint64_t max_points, std::uint64_t* points,
-                                            CellIndex* prev) {
+StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m, int width, int height,
+                                            std::size_t min_points, std::uint64_t max_points,
+                                            std::uint64_t* points, CellIndex* prev) {
   const Status corrupt = CorruptError("point out of the grid or malformed");
   std::uint64_t k = 0;
   std::int64_t dcol = 0, drow = 0;
@@ -228,7 +227,8 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
   std::uint64_t length = polygon->size() == 1 ? 1 : 0;
   for (std::size_t i = 0; i < polygon->size() && polygon->size() > 1; ++i) {
     const CellIndex a = (*polygon)[i], b = (*polygon)[(i + 1) % polygon->size()];
-    length += static_cast<std::uint64_t>(std::max(std::abs(b.col - a.col), std::abs(b.row - a.row)));
+    length +=
+        static_cast<std::uint64_t>(std::max(std::abs(b.col - a.col), std::abs(b.row - a.row)));
   }
   *cells += length;
   if (length > limits.max_chain_length || *cells > limits.max_chain_length) {
@@ -291,8 +291,8 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
     const unsigned kind = DecodeSymbol<2>(&dec, &m->kind);
     if (kind > 2) return CorruptError("room kind 3 is reserved");
     room.kind = static_cast<RoomKind>(kind);
-    LINEMAP_ASSIGN_OR_RETURN(room.polygon, DecodePolygon(&dec, &m->polygon, width, height,
-                                                         limits, &vertices, &cells, &prev_start));
+    LINEMAP_ASSIGN_OR_RETURN(room.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
+                                                         &vertices, &cells, &prev_start));
     room.chain = ChainOfPolygon(room.polygon);
     rooms.push_back(std::move(room));
   }
@@ -334,8 +334,8 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
     FurnitureObject object;
     object.id = static_cast<std::uint32_t>(i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
-    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(&dec, &m->polygon, width, height,
-                                                           limits, &vertices, &cells, &prev_start));
+    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
+                                                           &vertices, &cells, &prev_start));
     object.outline = ChainOfPolygon(object.polygon);
     furniture.push_back(std::move(object));
   }

@@ -10,8 +10,8 @@
 
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_order.h"
-#include "codec/codec/start_task.h"
 #include "codec/codec/raster.h"
+#include "codec/codec/start_task.h"
 #include "linemap/segmentation.h"
 
 namespace linemap {
@@ -188,8 +188,8 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
     if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;
     std::vector<CellIndex> polygon = SimplifyClosedChain(room.chain, kRoomTolerance);
     std::vector<CellIndex> chain = ChainOfPolygon(polygon);
-    layers->rooms.push_back({static_cast<std::uint32_t>(room.id), room.kind, std::move(polygon),
-                             std::move(chain)});
+    layers->rooms.push_back(
+        {static_cast<std::uint32_t>(room.id), room.kind, std::move(polygon), std::move(chain)});
   }
   for (FurnitureBlob& blob : seg.blobs) {
     if (!IsStorableChain(blob.outline, grid.width(), grid.height())) continue;
@@ -232,9 +232,8 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   // One segment per straight wall by default: the layer is the map's walls
   // as lines (export, planning overlays), not the pixel steps the
   // extractor's defaults follow for the paper's DisPL_ave.
-  LineExtractionOptions line_options = options.straight_walls
-                                           ? StraightWalls(LineExtractionOptions{})
-                                           : LineExtractionOptions{};
+  LineExtractionOptions line_options =
+      options.straight_walls ? StraightWalls(LineExtractionOptions{}) : LineExtractionOptions{};
   line_options.method = options.method;
   line_options.epsilon_cells = options.epsilon_cells;
   line_options.robot = RobotCell(grid, options);
@@ -286,8 +285,7 @@ namespace {
 
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options) {
   VectorLayers layers;
-  auto walls_task =
-      StartTask(options.max_threads != 1, [&] { return WallLayer(grid, options); });
+  auto walls_task = StartTask(options.max_threads != 1, [&] { return WallLayer(grid, options); });
   const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
   StatusOr<std::vector<WallPolyline>> walls = walls_task.get();
   LINEMAP_RETURN_IF_ERROR(rooms);

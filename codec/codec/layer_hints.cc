@@ -62,8 +62,8 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
 void LayerIndex::AddChain(const std::vector<CellIndex>& cells, std::uint8_t fill_bits,
                           std::uint8_t chain_bits, std::uint8_t clear_on_chain) {
   if (cells.empty()) return;
-  chains_.push_back({&cells, BoxOf(cells), Crossings(cells), fill_bits, chain_bits,
-                     clear_on_chain});
+  chains_.push_back(
+      {&cells, BoxOf(cells), Crossings(cells), fill_bits, chain_bits, clear_on_chain});
 }
 
 std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
@@ -78,8 +78,8 @@ std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
     if (!Overlaps(chain.box, t)) continue;
     // Fill: on each row, the cells in [x0, x1), [x2, x3), ... of its
     // sorted crossings, clipped to the tile.
-    auto it = std::lower_bound(chain.crossings.begin(), chain.crossings.end(),
-                               std::make_pair(t.y0, -1));
+    auto it =
+        std::lower_bound(chain.crossings.begin(), chain.crossings.end(), std::make_pair(t.y0, -1));
     while (it != chain.crossings.end() && it->first < t.y1) {
       const int row = it->first;
       auto end = it;
@@ -93,8 +93,8 @@ std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
     }
     for (const CellIndex& c : *chain.cells) {
       if (!in(c.col, c.row)) continue;
-      at(c.col, c.row) = static_cast<std::uint8_t>((at(c.col, c.row) & ~chain.clear_on_chain) |
-                                                   chain.chain_bits);
+      at(c.col, c.row) =
+          static_cast<std::uint8_t>((at(c.col, c.row) & ~chain.clear_on_chain) | chain.chain_bits);
     }
   }
   for (const Segment& s : segments_) {

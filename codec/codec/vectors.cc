@@ -1,16 +1,15 @@
 // LoadLmapVectors(): the vector layers of a file (include/linemap/lmap_vectors.h).
-#include <string>
-#include <vector>
-
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "codec/codec/decoder_v2.h"
 #include "codec/codec/raster.h"
 #include "codec/lines/segment_index.h"
-#include "linemap/lines.h"
 #include "format/container.h"
 #include "format/file_io.h"
+#include "linemap/lines.h"
 #include "linemap/lmap_vectors.h"
 
 namespace linemap {
@@ -66,8 +65,8 @@ StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
                        contents.room_chains[i], contents.room_chains[i]});
   }
   for (std::size_t i = 0; i < contents.blob_outlines.size(); ++i) {
-    v.furniture.push_back({static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i],
-                           contents.blob_outlines[i]});
+    v.furniture.push_back(
+        {static_cast<std::uint32_t>(i), -1, contents.blob_outlines[i], contents.blob_outlines[i]});
   }
   return v;
 }

@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "linemap/cells.h"
-#include "linemap/vector_layers.h"
 #include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
+#include "linemap/vector_layers.h"
 
 namespace linemap {
 

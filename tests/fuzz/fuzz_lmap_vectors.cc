@@ -56,7 +56,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     w.col1 = w.col0 + 1 + data[size - 2] % (vectors->width - w.col0);
     w.row1 = w.row0 + 1 + data[size - 1] % (vectors->height - w.row0);
     const auto region = linemap::DecodeLmapRegion(bytes, w, limits);
-    if (region.ok() && (region->width() != w.col1 - w.col0 || region->height() != w.row1 - w.row0)) {
+    if (region.ok() &&
+        (region->width() != w.col1 - w.col0 || region->height() != w.row1 - w.row0)) {
       Fail("window of the wrong size");
     }
   }

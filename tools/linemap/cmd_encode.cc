@@ -43,7 +43,8 @@ const CommandSpec kEncodeSpec = {
         {"--follow-steps", "",
          "walls follow the pixel steps of slanted walls (the RM-Line paper's DisPL_ave drops; "
          "files 5-17 % larger) instead of one segment per straight wall"},
-        {"--threads", "N", "threads to use (default 0: one per core); the bytes do not depend on it"},
+        {"--threads", "N",
+         "threads to use (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
          "side of the independently decodable tiles, 16..65536 (default 1024)"},
         {"--lossy", "",
@@ -85,8 +86,9 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     }
   }
   if (options.format_v1 && (args.Has("--lossless") || args.Get("--tolerance"))) {
-    return InvalidArgumentError("--lossy writes a lossy file; --lossless / --tolerance 0 an exact "
-                                "one; give one of them");
+    return InvalidArgumentError(
+        "--lossy writes a lossy file; --lossless / --tolerance 0 an exact "
+        "one; give one of them");
   }
   options.store_room_chains = args.Has("--rooms");
   if (args.Has("--no-segments")) options.store_segments = false;
@@ -231,10 +233,10 @@ int RunEncode(const std::vector<std::string>& args) {
   }
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
-              options->format_v1                 ? "version 1.0, lossy"
-              : options->tolerance_cells > 0     ? "within the tolerance, 2.0"
-              : options->vector_layers           ? "exact, with walls, rooms and furniture"
-                                                 : "exact, cells only");
+              options->format_v1             ? "version 1.0, lossy"
+              : options->tolerance_cells > 0 ? "within the tolerance, 2.0"
+              : options->vector_layers       ? "exact, with walls, rooms and furniture"
+                                             : "exact, cells only");
   if (with_png) {
     std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
                 ratio > 0 ? 1.0 / ratio : 0.0);

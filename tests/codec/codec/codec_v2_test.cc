@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/tolerance.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
-#include "codec/codec/tolerance.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -266,7 +266,8 @@ TEST(CodecV2Test, WindowsOfVersionOneFilesAreCropped) {
   auto full = LoadLmap(testing::SourceDir() + "/tests/data/lmap/lse_arena_lossless.lmap");
   ASSERT_TRUE(full.ok());
   const CellWindow w{10, 5, 50, 40};
-  auto region = LoadLmapRegion(testing::SourceDir() + "/tests/data/lmap/lse_arena_lossless.lmap", w);
+  auto region =
+      LoadLmapRegion(testing::SourceDir() + "/tests/data/lmap/lse_arena_lossless.lmap", w);
   ASSERT_TRUE(region.ok());
   EXPECT_EQ(region->cells(), Crop(*grid, w).cells());
 }

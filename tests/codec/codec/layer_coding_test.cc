@@ -46,9 +46,11 @@ std::vector<WallPolyline> RandomWalls(std::mt19937* rng, int count) {
 // A random closed polygon: a rectangle with one corner cut diagonally, or
 // (sometimes) a single vertex.
 std::vector<CellIndex> RandomPolygon(std::mt19937* rng) {
-  const int c0 = static_cast<int>((*rng)() % (kW - 20)), r0 = static_cast<int>((*rng)() % (kH - 20));
+  const int c0 = static_cast<int>((*rng)() % (kW - 20)),
+            r0 = static_cast<int>((*rng)() % (kH - 20));
   if ((*rng)() % 8 == 0) return {{c0, r0}};
-  const int c1 = c0 + 2 + static_cast<int>((*rng)() % 17), r1 = r0 + 2 + static_cast<int>((*rng)() % 17);
+  const int c1 = c0 + 2 + static_cast<int>((*rng)() % 17),
+            r1 = r0 + 2 + static_cast<int>((*rng)() % 17);
   return {{c0, r0}, {c1, r0}, {c1, r1 - 1}, {c1 - 1, r1}, {c0, r1}};
 }
 
@@ -73,7 +75,8 @@ TEST(LayerCodingTest, ChainOfPolygonIsTheClosedChainOfItsEdges) {
   EXPECT_EQ(ChainOfPolygon({{0, 0}, {2, 2}}),
             (std::vector<CellIndex>{{0, 0}, {1, 1}, {2, 2}, {1, 1}}));
   std::mt19937 rng(3);
-  for (int i = 0; i < 100; ++i) EXPECT_TRUE(IsStorableChain(ChainOfPolygon(RandomPolygon(&rng)), kW, kH));
+  for (int i = 0; i < 100; ++i)
+    EXPECT_TRUE(IsStorableChain(ChainOfPolygon(RandomPolygon(&rng)), kW, kH));
 }
 
 TEST(LayerCodingTest, WallsRoundTrip) {
@@ -97,10 +100,9 @@ TEST(LayerCodingTest, OrderKeepsEveryWallAndItsSegments) {
   auto key = [](std::vector<CellIndex> p) {
     std::vector<CellIndex> r(p.rbegin(), p.rend());
     const auto less = [](const std::vector<CellIndex>& a, const std::vector<CellIndex>& b) {
-      return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
-                                          [](CellIndex x, CellIndex y) {
-                                            return std::tie(x.row, x.col) < std::tie(y.row, y.col);
-                                          });
+      return std::lexicographical_compare(
+          a.begin(), a.end(), b.begin(), b.end(),
+          [](CellIndex x, CellIndex y) { return std::tie(x.row, x.col) < std::tie(y.row, y.col); });
     };
     return less(r, p) ? r : p;
   };
@@ -119,7 +121,8 @@ TEST(LayerCodingTest, OrderKeepsEveryWallAndItsSegments) {
   // force for the first wall).
   long best = 1L << 40;
   for (const auto& w : walls) {
-    for (CellIndex p : {w.points.front(), w.points.back()}) best = std::min(best, long{p.col} + p.row);
+    for (CellIndex p : {w.points.front(), w.points.back()})
+      best = std::min(best, long{p.col} + p.row);
   }
   EXPECT_EQ(long{ordered[0].points[0].col} + ordered[0].points[0].row, best);
 }
@@ -129,9 +132,10 @@ TEST(LayerCodingTest, RoomsAndFurnitureRoundTrip) {
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
   for (int i = 0; i < 30; ++i) {
-    rooms.push_back(Room(static_cast<std::uint32_t>(i * 3 + (i % 2)),
-                         static_cast<RoomKind>(i % 3), RandomPolygon(&rng)));
-    furniture.push_back(Object(static_cast<std::uint32_t>(i), i % 4 == 0 ? -1 : i, RandomPolygon(&rng)));
+    rooms.push_back(Room(static_cast<std::uint32_t>(i * 3 + (i % 2)), static_cast<RoomKind>(i % 3),
+                         RandomPolygon(&rng)));
+    furniture.push_back(
+        Object(static_cast<std::uint32_t>(i), i % 4 == 0 ? -1 : i, RandomPolygon(&rng)));
   }
   furniture.push_back(Object(30, 5, {{4, 4}}));  // a one-cell object
   auto r = DecodeRooms(EncodeRooms(rooms), kW, kH, DecodeLimits{});
@@ -166,8 +170,8 @@ TEST(LayerCodingTest, LimitsAreResourceExhausted) {
   EXPECT_EQ(w.status().code(), StatusCode::kResourceExhausted);
   limits = DecodeLimits{};
   limits.max_chain_length = 10;
-  auto r = DecodeRooms(EncodeRooms({Room(0, RoomKind::kRoom, {{0, 0}, {20, 0}, {20, 20}})}), kW,
-                       kH, limits);
+  auto r = DecodeRooms(EncodeRooms({Room(0, RoomKind::kRoom, {{0, 0}, {20, 0}, {20, 20}})}), kW, kH,
+                       limits);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), StatusCode::kResourceExhausted);
 }
@@ -188,7 +192,8 @@ TEST(LayerCodingTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
     auto dw = DecodeWalls(w, kW, kH, DecodeLimits{});
     if (dw.ok()) {
       for (const auto& wall : *dw) {
-        for (CellIndex p : wall.points) ASSERT_TRUE(p.col >= 0 && p.col < kW && p.row >= 0 && p.row < kH);
+        for (CellIndex p : wall.points)
+          ASSERT_TRUE(p.col >= 0 && p.col < kW && p.row >= 0 && p.row < kH);
       }
     }
     auto dr = DecodeRooms(r, kW, kH, DecodeLimits{});
