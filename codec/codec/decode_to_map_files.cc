@@ -135,7 +135,7 @@ StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
     summary.counts = grid->Count();
     return summary;
   }
-  StatusOr<V2File> file = ReadV2File(*view, limits, /*read_cells=*/true);
+  StatusOr<V2File> file = ReadV2File(*view, limits, /*read_cells=*/true, /*expand_chains=*/false);
   if (!file.ok()) return file.status().WithContext(where);
   summary.width = file->header.width;
   summary.height = file->header.height;

@@ -21,8 +21,8 @@ int V2Rank(const std::string& type) {
 }
 
 // One chunk after LMHD into `file`.
-Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cells, int* last_rank,
-                   V2File* file) {
+Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cells,
+                   bool expand_chains, int* last_rank, V2File* file) {
   if (chunk.type == kHeaderChunk) return CorruptError("a second LMHD chunk");
   const int rank = V2Rank(chunk.type);
   if (rank < 0 && chunk.type != kMetadataChunk) {
@@ -56,9 +56,9 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   } else if (chunk.type == kWallChunk) {
     LINEMAP_ASSIGN_OR_RETURN(file->walls, DecodeWalls(body, w, h, limits));
   } else if (chunk.type == kRoomChunk) {
-    LINEMAP_ASSIGN_OR_RETURN(file->rooms, DecodeRooms(body, w, h, limits));
+    LINEMAP_ASSIGN_OR_RETURN(file->rooms, DecodeRooms(body, w, h, limits, expand_chains));
   } else if (chunk.type == kFurnitureChunk) {
-    LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits));
+    LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits, expand_chains));
   } else {
     file->has_cells = true;
     file->cell_body = std::move(body);
@@ -68,8 +68,8 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
 
 }  // namespace
 
-StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits,
-                            bool read_cells) {
+StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
+                            bool expand_chains) {
   if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
     return CorruptError("the first chunk is not LMHD");
   }
@@ -81,7 +81,8 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
   file.chunks.push_back({head.type, head.size, "header"});
   int last_rank = -1;
   for (std::size_t i = 1; i < view.chunks.size(); ++i) {
-    const Status status = ReadV2Chunk(view.chunks[i], limits, read_cells, &last_rank, &file);
+    const Status status =
+        ReadV2Chunk(view.chunks[i], limits, read_cells, expand_chains, &last_rank, &file);
     if (!status.ok()) return status.WithContext("chunk " + view.chunks[i].type);
   }
   return file;
@@ -135,7 +136,7 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
 
 StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& window,
                               const DecodeLimits& limits) {
-  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true));
+  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false));
   Grid grid = WindowGrid(file.header.meta, window);
   LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
   return grid;

@@ -26,7 +26,11 @@ struct V2File {
   std::vector<std::uint8_t> cell_body;  // only with read_cells
 };
 
-StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells);
+// `expand_chains` false leaves the rooms' and objects' chains empty (their
+// polygons are read): enough to draw the tiles' hints, and on a map with
+// tens of thousands of rooms some hundred MB less.
+StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
+                            bool expand_chains = true);
 
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);

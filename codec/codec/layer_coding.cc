@@ -266,7 +266,8 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
 }
 
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
-                                               int height, const DecodeLimits& limits) {
+                                               int height, const DecodeLimits& limits,
+                                               bool expand_chains) {
   ByteCursor cursor(body);
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("room count"));
   if (count > limits.max_chain_length) {
@@ -293,7 +294,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
     room.kind = static_cast<RoomKind>(kind);
     LINEMAP_ASSIGN_OR_RETURN(room.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
                                                          &vertices, &cells, &prev_start));
-    room.chain = ChainOfPolygon(room.polygon);
+    if (expand_chains) room.chain = ChainOfPolygon(room.polygon);
     rooms.push_back(std::move(room));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "ROOM"));
@@ -314,7 +315,8 @@ std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& fu
 
 StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::uint8_t>& body,
                                                        int width, int height,
-                                                       const DecodeLimits& limits) {
+                                                       const DecodeLimits& limits,
+                                                       bool expand_chains) {
   ByteCursor cursor(body);
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("furniture count"));
   if (count > limits.max_chain_length) {
@@ -336,7 +338,7 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
     LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
                                                            &vertices, &cells, &prev_start));
-    object.outline = ChainOfPolygon(object.polygon);
+    if (expand_chains) object.outline = ChainOfPolygon(object.polygon);
     furniture.push_back(std::move(object));
   }
   LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "FURN"));

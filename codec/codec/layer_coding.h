@@ -29,14 +29,18 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls);
 // Rooms must have strictly increasing ids and storable chains (8-adjacent
 // steps, closed, inside the grid).
 std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms);
+// With `expand_chains` false the chains are left empty (the polygons are
+// read and checked alike): what a decoder that only draws hints needs.
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
-                                               int height, const DecodeLimits& limits);
+                                               int height, const DecodeLimits& limits,
+                                               bool expand_chains = true);
 
 // Furniture ids are their index in the list; room_id is -1 or a room's id.
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture);
 StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::uint8_t>& body,
                                                        int width, int height,
-                                                       const DecodeLimits& limits);
+                                                       const DecodeLimits& limits,
+                                                       bool expand_chains = true);
 
 // True when consecutive cells (and the last and first) are 8-neighbours, not
 // equal, and all lie in the width x height grid.

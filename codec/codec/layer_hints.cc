@@ -52,18 +52,17 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
     }
   }
   for (const RoomOutline& room : rooms) {
-    AddChain(room.chain, kHintRoomInside, kHintRoomBorder, kHintRoomInside);
+    AddOutline(room.polygon, kHintRoomInside, kHintRoomBorder, kHintRoomInside);
   }
   for (const FurnitureObject& object : furniture) {
-    AddChain(object.outline, kHintFurniture, kHintFurniture, 0);
+    AddOutline(object.polygon, kHintFurniture, kHintFurniture, 0);
   }
 }
 
-void LayerIndex::AddChain(const std::vector<CellIndex>& cells, std::uint8_t fill_bits,
-                          std::uint8_t chain_bits, std::uint8_t clear_on_chain) {
-  if (cells.empty()) return;
-  chains_.push_back(
-      {&cells, BoxOf(cells), Crossings(cells), fill_bits, chain_bits, clear_on_chain});
+void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t fill_bits,
+                            std::uint8_t chain_bits, std::uint8_t clear_on_chain) {
+  if (polygon.empty()) return;
+  outlines_.push_back({&polygon, BoxOf(polygon), fill_bits, chain_bits, clear_on_chain});
 }
 
 std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
@@ -74,27 +73,28 @@ std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
     return hints[static_cast<std::size_t>(r - t.y0) * tw + (c - t.x0)];
   };
   const auto in = [&](int c, int r) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; };
-  for (const Chain& chain : chains_) {
-    if (!Overlaps(chain.box, t)) continue;
+  for (const Outline& outline : outlines_) {
+    if (!Overlaps(outline.box, t)) continue;
+    const std::vector<CellIndex> chain = ChainOfPolygon(*outline.polygon);
+    const std::vector<std::pair<int, int>> crossings = Crossings(chain);
     // Fill: on each row, the cells in [x0, x1), [x2, x3), ... of its
     // sorted crossings, clipped to the tile.
-    auto it =
-        std::lower_bound(chain.crossings.begin(), chain.crossings.end(), std::make_pair(t.y0, -1));
-    while (it != chain.crossings.end() && it->first < t.y1) {
+    auto it = std::lower_bound(crossings.begin(), crossings.end(), std::make_pair(t.y0, -1));
+    while (it != crossings.end() && it->first < t.y1) {
       const int row = it->first;
       auto end = it;
-      while (end != chain.crossings.end() && end->first == row) ++end;
+      while (end != crossings.end() && end->first == row) ++end;
       for (auto p = it; p + 1 < end; p += 2) {
         const int lo = std::max(p->second, t.x0);
         const int hi = std::min((p + 1)->second, t.x1);
-        for (int c = lo; c < hi; ++c) at(c, row) |= chain.fill_bits;
+        for (int c = lo; c < hi; ++c) at(c, row) |= outline.fill_bits;
       }
       it = end;
     }
-    for (const CellIndex& c : *chain.cells) {
+    for (const CellIndex& c : chain) {
       if (!in(c.col, c.row)) continue;
-      at(c.col, c.row) =
-          static_cast<std::uint8_t>((at(c.col, c.row) & ~chain.clear_on_chain) | chain.chain_bits);
+      at(c.col, c.row) = static_cast<std::uint8_t>((at(c.col, c.row) & ~outline.clear_on_chain) |
+                                                   outline.chain_bits);
     }
   }
   for (const Segment& s : segments_) {
