@@ -209,6 +209,16 @@ StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,
 }
 
 StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits.max_chunk_bytes));
+  if (view.major >= 2 && !view.chunks.empty() && view.chunks[0].type == kHeaderChunk) {
+    // The grid alone: the window path reads the layers' polygons without
+    // making their chains (LmapContents would hold them all).
+    StatusOr<HeaderFields> header = ReadHeader(view.chunks[0].payload, view.chunks[0].size, limits);
+    if (!header.ok()) return header.status().WithContext("chunk LMHD");
+    if (header->width > 0 && header->height > 0) {
+      return DecodeV2Region(view, CellWindow{0, 0, header->width, header->height}, limits);
+    }
+  }
   LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(bytes, limits));
   return std::move(contents.grid);
 }
