@@ -16,7 +16,7 @@ void RangeEncoder::ShiftLow() {
   low_ = (low_ & 0x00FFFFFFu) << 8;
 }
 
-void RangeEncoder::Finish() {
+std::size_t RangeEncoder::Finish(std::size_t max_dropped) {
   // Any value in [low, low + range) identifies the stream; take the one
   // with the most trailing zero bits, so the flushed tail is zero bytes,
   // which are dropped (the decoder reads missing bytes as zero).
@@ -31,7 +31,9 @@ void RangeEncoder::Finish() {
   for (int i = 0; i < 5; ++i) ShiftLow();
   // The first byte is always 0 (the code value is below 1): not stored.
   out_.erase(out_.begin());
-  while (!out_.empty() && out_.back() == 0) out_.pop_back();
+  const std::size_t full = out_.size();
+  while (!out_.empty() && out_.back() == 0 && full - out_.size() < max_dropped) out_.pop_back();
+  return full - out_.size();
 }
 
 RangeDecoder::RangeDecoder(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {

@@ -68,21 +68,31 @@ class RangeEncoder {
  public:
   // Inline: the plane encoders call it once per cell.
   void Encode(BitModel* model, int bit) {
-    const std::uint32_t bound = (range_ >> kProbBits) * model->p();
+    EncodeWithProbability(model->p(), bit);
+    model->Update(bit);
+  }
+  // Codes `bit` with a probability of 0 of p0 / 2^16 (1 <= p0 <= 65535)
+  // given by the caller: for models of other kinds (the tile coder's
+  // two-rate models, its mixer), which update themselves.
+  void EncodeWithProbability(std::uint32_t p0, int bit) {
+    const std::uint32_t bound = (range_ >> kProbBits) * p0;
     if (bit == 0) {
       range_ = bound;
     } else {
       low_ += bound;
       range_ -= bound;
     }
-    model->Update(bit);
     while (range_ < kRangeTop) {
       range_ <<= 8;
       ShiftLow();
     }
   }
-  // Writes the final bytes; call once, then take bytes().
-  void Finish();
+  // Writes the final bytes, dropping every zero byte of the tail (the
+  // decoder implies them); call once, then take bytes().
+  void Finish() { Finish(SIZE_MAX); }
+  // The same, dropping at most `max_dropped` zero bytes; returns how many
+  // it dropped (a format that stores the count can check its end exactly).
+  std::size_t Finish(std::size_t max_dropped);
   const std::vector<std::uint8_t>& bytes() const { return out_; }
 
  private:
@@ -102,7 +112,13 @@ class RangeDecoder {
   RangeDecoder(const std::uint8_t* data, std::size_t size);
   // Inline: the plane decoders call it once per cell.
   int Decode(BitModel* model) {
-    const std::uint32_t bound = (range_ >> kProbBits) * model->p();
+    const int bit = DecodeWithProbability(model->p());
+    model->Update(bit);
+    return bit;
+  }
+  // Decodes a bit coded with EncodeWithProbability(p0, bit).
+  int DecodeWithProbability(std::uint32_t p0) {
+    const std::uint32_t bound = (range_ >> kProbBits) * p0;
     int bit;
     if (code_ < bound) {
       range_ = bound;
@@ -112,7 +128,6 @@ class RangeDecoder {
       code_ -= bound;
       bit = 1;
     }
-    model->Update(bit);
     while (range_ < kRangeTop) {
       range_ <<= 8;
       code_ = (code_ << 8) | NextByte();

@@ -14,6 +14,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "format/range_coder.h"
+
 namespace linemap {
 
 // An adaptive bit model: the probability that the next bit is 0, in units
@@ -79,115 +81,48 @@ class TileModelTable {
   std::unique_ptr<TileBitModel, Free> models_;
 };
 
+// The LZMA range coder of format/range_coder.h, driven by TileBitModels
+// and by the mixer's probabilities.
 class TileRangeEncoder {
  public:
   void Encode(TileBitModel* m, int bit) {
-    const std::uint32_t bound = (range_ >> 16) * m->p0();
-    if (bit == 0) {
-      range_ = bound;
-    } else {
-      low_ += bound;
-      range_ -= bound;
-    }
+    encoder_.EncodeWithProbability(m->p0(), bit);
     m->Update(bit);
-    while (range_ < kTop) {
-      range_ <<= 8;
-      ShiftLow();
-    }
   }
   // Codes `bit` with a probability of 0 of p0 / 2^16 (1 <= p0 <= 65535)
   // given by the caller (a mixer), no model update.
-  void EncodeP(std::uint32_t p0, int bit) {
-    const std::uint32_t bound = (range_ >> 16) * p0;
-    if (bit == 0) {
-      range_ = bound;
-    } else {
-      low_ += bound;
-      range_ -= bound;
-    }
-    while (range_ < kTop) {
-      range_ <<= 8;
-      ShiftLow();
-    }
-  }
+  void EncodeP(std::uint32_t p0, int bit) { encoder_.EncodeWithProbability(p0, bit); }
   // Writes the final bytes, dropping up to kMaxDropped zero bytes of the
   // tail (the decoder implies them); returns how many were dropped.
   static constexpr int kMaxDropped = 7;
-  int Finish();
-  const std::vector<std::uint8_t>& bytes() const { return out_; }
+  int Finish() { return static_cast<int>(encoder_.Finish(kMaxDropped)); }
+  const std::vector<std::uint8_t>& bytes() const { return encoder_.bytes(); }
 
  private:
-  static constexpr std::uint32_t kTop = 1u << 24;
-  void ShiftLow();
-  std::uint64_t low_ = 0;
-  std::uint32_t range_ = 0xFFFFFFFFu;
-  std::uint8_t cache_ = 0;
-  std::uint64_t cache_size_ = 1;
-  std::vector<std::uint8_t> out_;
+  RangeEncoder encoder_;
 };
 
 // Never reads outside [data, data + size): past the end it reads zeros and
-// counts them (overrun()).
+// counts them.
 class TileRangeDecoder {
  public:
-  TileRangeDecoder(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {
-    for (int i = 0; i < 4; ++i) code_ = (code_ << 8) | NextByte();
-  }
+  TileRangeDecoder(const std::uint8_t* data, std::size_t size) : decoder_(data, size), size_(size) {}
   int Decode(TileBitModel* m) {
-    const std::uint32_t bound = (range_ >> 16) * m->p0();
-    int bit;
-    if (code_ < bound) {
-      range_ = bound;
-      bit = 0;
-    } else {
-      range_ -= bound;
-      code_ -= bound;
-      bit = 1;
-    }
+    const int bit = decoder_.DecodeWithProbability(m->p0());
     m->Update(bit);
-    while (range_ < kTop) {
-      range_ <<= 8;
-      code_ = (code_ << 8) | NextByte();
-    }
     return bit;
   }
   // Decodes a bit coded with EncodeP(p0, bit).
-  int DecodeP(std::uint32_t p0) {
-    const std::uint32_t bound = (range_ >> 16) * p0;
-    int bit;
-    if (code_ < bound) {
-      range_ = bound;
-      bit = 0;
-    } else {
-      range_ -= bound;
-      code_ -= bound;
-      bit = 1;
-    }
-    while (range_ < kTop) {
-      range_ <<= 8;
-      code_ = (code_ << 8) | NextByte();
-    }
-    return bit;
-  }
+  int DecodeP(std::uint32_t p0) { return decoder_.DecodeWithProbability(p0); }
   // True when every byte was read and exactly `dropped` zero bytes were
   // implied past the end, as the encoder's Finish() reported.
   bool EndsCleanly(int dropped) const {
-    return pos_ == size_ && overrun_ == static_cast<std::size_t>(dropped);
+    return decoder_.consumed() == size_ && decoder_.overrun() == static_cast<std::size_t>(dropped);
   }
 
  private:
-  static constexpr std::uint32_t kTop = 1u << 24;
-  std::uint8_t NextByte() {
-    if (pos_ < size_) return data_[pos_++];
-    ++overrun_;
-    return 0;
-  }
-  const std::uint8_t* data_;
+  RangeDecoder decoder_;
   std::size_t size_;
-  std::size_t pos_ = 0;
-  std::size_t overrun_ = 0;
-  std::uint32_t range_ = 0xFFFFFFFFu;
-  std::uint32_t code_ = 0;
 };
 
 }  // namespace linemap
