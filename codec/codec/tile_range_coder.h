@@ -106,7 +106,8 @@ class TileRangeEncoder {
 // counts them.
 class TileRangeDecoder {
  public:
-  TileRangeDecoder(const std::uint8_t* data, std::size_t size) : decoder_(data, size), size_(size) {}
+  TileRangeDecoder(const std::uint8_t* data, std::size_t size)
+      : decoder_(data, size), size_(size) {}
   int Decode(TileBitModel* m) {
     const int bit = decoder_.DecodeWithProbability(m->p0());
     m->Update(bit);

@@ -27,43 +27,10 @@
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/png_codec.h"
+#include "tools/bench/tuning_split.h"
 
 namespace linemap {
 namespace {
-
-struct MapEntry {
-  const char* path;  // relative to the maps folder
-  bool tuning;
-};
-
-// The same split as bench_tiles: parameters were chosen on the first group.
-const MapEntry kMaps[] = {
-    {"aws_bookstore/map.yaml", true},
-    {"aws_warehouse/002/map.yaml", true},
-    {"f1tenth/columbia.yaml", true},
-    {"f1tenth/levinelobby.yaml", true},
-    {"fetch/3_1_16_localization.yaml", true},
-    {"fetch/4_26_15.yaml", true},
-    {"mrpt/map1.png", true},
-    {"nav2/depot.yaml", true},
-    {"nav2/map.pgm", true},
-    {"nav2/tb3_sandbox.yaml", true},
-    {"navtut/lse_arena.yaml", true},
-    {"rosnav1/willow-full-0.05.pgm", true},
-    {"strands/bham/cs_lg.yaml", true},
-    {"strands/tsc/tsc.yaml", true},
-    {"turtlebot_apps/willow-2010-02-18-0.10.yaml", true},
-    {"uos/avz.yaml", true},
-    {"f1tenth/mtl.yaml", false},
-    {"fetch/9_16_15.yaml", false},
-    {"nav2/warehouse.yaml", false},
-    {"strands/kth/map.yaml", false},
-    {"uos/avz5floor_plan.yaml", false},
-    {"turtlebot_apps/ctrl_room.yaml", false},
-    {"aws_warehouse/005/map.yaml", false},
-    {"stage_ros/willow-full.pgm", false},
-    {"nav2/empty_room.pgm", false},
-};
 
 constexpr int kMaxT = 4;
 
@@ -206,7 +173,7 @@ int Run(int argc, char** argv) {
               with_layers ? "cells-only bytes / with layers (ok = guarantees hold)"
                           : "cells-only bytes (ok = guarantees hold)");
   std::vector<Row> rows;
-  for (const MapEntry& m : kMaps) {
+  for (const bench::SplitMap& m : bench::kTuningSplit) {
     if (!only.empty() && std::string(m.path).find(only) == std::string::npos) continue;
     StatusOr<Grid> loaded = LoadRosMap(dir + "/" + m.path);
     if (!loaded.ok()) {
