@@ -94,15 +94,7 @@ class MapServer {
 };
 
 int Run(int argc, char** argv) {
-  // Line by line, so that a log file or a pipe shows each message when it is
-  // written, not when the node exits.
-  std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    }
-  }
+  if (StartNodeOutput(argc, argv, kUsage)) return kExitOk;
   StatusOr<ServerArgs> args = ParseServerArgs(NonRosArguments(argc, argv));
   if (!args.ok()) {
     std::fprintf(stderr, "lmap_server: %s\n%s", args.status().message().c_str(), kUsage);

@@ -79,4 +79,15 @@ std::vector<std::string> NonRosArguments(int argc, char** argv) {
   return args;
 }
 
+bool StartNodeOutput(int argc, char** argv, const char* usage) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  for (int i = 1; i < argc; ++i) {
+    if (std::string_view(argv[i]) == "--help" || std::string_view(argv[i]) == "-h") {
+      std::fputs(usage, stdout);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace linemap::ros_bridge

@@ -47,6 +47,12 @@ StatusOr<double> ParseNumber(const std::string& option, const std::string& text)
 // (`name:=value`), as ros::removeROSArgs leaves them.
 std::vector<std::string> NonRosArguments(int argc, char** argv);
 
+// A node's first steps: standard output line by line (so that a log file or
+// a pipe shows each message when it is written, not when the node exits),
+// and `usage` printed when -h or --help is among the arguments. True when
+// it was: the node then exits 0.
+bool StartNodeOutput(int argc, char** argv, const char* usage);
+
 }  // namespace linemap::ros_bridge
 
 #endif  // LINEMAP_ROS_NODE_SUPPORT_H_

@@ -16,6 +16,7 @@
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "tests/testing/floor_plan.h"
+#include "tests/testing/reference_components.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -30,30 +31,9 @@ void Fill(Grid* grid, int c0, int r0, int c1, int r1, Cell value) {
 // Sizes of the 4-connected components of free cells, per cell (0 for cells
 // that are not free), by a plain flood fill.
 std::vector<std::size_t> FreeComponentSizes(const Grid& grid) {
-  std::vector<int> id(grid.size(), 0);
-  std::vector<std::size_t> sizes{0};
-  for (int r = 0; r < grid.height(); ++r) {
-    for (int c = 0; c < grid.width(); ++c) {
-      if (grid.at(c, r) != Cell::kFree || id[grid.Index(c, r)]) continue;
-      const int k = static_cast<int>(sizes.size());
-      sizes.push_back(0);
-      std::vector<CellIndex> stack{{c, r}};
-      id[grid.Index(c, r)] = k;
-      while (!stack.empty()) {
-        const CellIndex cur = stack.back();
-        stack.pop_back();
-        ++sizes[k];
-        const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-        for (int d = 0; d < 4; ++d) {
-          const int nc = cur.col + dc[d], nr = cur.row + dr[d];
-          if (!grid.Contains(nc, nr) || grid.at(nc, nr) != Cell::kFree) continue;
-          if (id[grid.Index(nc, nr)]) continue;
-          id[grid.Index(nc, nr)] = k;
-          stack.push_back({nc, nr});
-        }
-      }
-    }
-  }
+  const testing::FreeComponents components = testing::FreeComponentsByFloodFill(grid);
+  const std::vector<int>& id = components.id;
+  const std::vector<std::size_t>& sizes = components.sizes;
   std::vector<std::size_t> out(grid.size(), 0);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = sizes[id[i]];
   return out;
