@@ -89,6 +89,23 @@ std::string BoxRingJson(const Grid& grid, const BoundingBox& box) {
   return out + "]";
 }
 
+// The blobs as a JSON array; with `with_room` each names the room it stands
+// in (the rooms method numbers rooms; the paper's does not).
+std::string BlobsJson(const Grid& grid, const std::vector<FurnitureBlob>& blobs, bool with_room) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < blobs.size(); ++i) {
+    const FurnitureBlob& blob = blobs[i];
+    JsonObject json;
+    if (with_room) json.Add("room", blob.room);
+    json.Add("cell_count", std::uint64_t{blob.cell_count})
+        .AddRaw("first_cell", PointJson(grid, blob.first_cell))
+        .AddRaw("bbox", BoxJson(grid, blob.box))
+        .AddRaw("outline", ChainJson(grid, blob.outline, false));
+    out += (i ? "," : "") + json.str();
+  }
+  return out + "]";
+}
+
 std::string PlainJson(const Grid& grid, const Segmentation& seg) {
   std::string rooms = "[";
   for (std::size_t i = 0; i < seg.rooms.size(); ++i) {
@@ -101,16 +118,7 @@ std::string PlainJson(const Grid& grid, const Segmentation& seg) {
         .AddRaw("chain", ChainJson(grid, room.chain, false));
     rooms += (i ? "," : "") + json.str();
   }
-  std::string blobs = "[";
-  for (std::size_t i = 0; i < seg.blobs.size(); ++i) {
-    const FurnitureBlob& blob = seg.blobs[i];
-    JsonObject json;
-    json.Add("cell_count", std::uint64_t{blob.cell_count})
-        .AddRaw("first_cell", PointJson(grid, blob.first_cell))
-        .AddRaw("bbox", BoxJson(grid, blob.box))
-        .AddRaw("outline", ChainJson(grid, blob.outline, false));
-    blobs += (i ? "," : "") + json.str();
-  }
+  const std::string blobs = BlobsJson(grid, seg.blobs, false);
   const SegmentationTimings& t = seg.timings;
   JsonObject timings;
   timings.Add("layout", t.room_layout_ms)
@@ -123,7 +131,7 @@ std::string PlainJson(const Grid& grid, const Segmentation& seg) {
   top.Add("resolution", grid.meta.resolution)
       .AddRaw("timings_ms", timings.str())
       .AddRaw("rooms", rooms + "]")
-      .AddRaw("blobs", blobs + "]");
+      .AddRaw("blobs", blobs);
   return top.str() + "\n";
 }
 
@@ -184,17 +192,7 @@ std::string RoomsPlainJson(const Grid& grid, const Segmentation& seg) {
   for (std::size_t i = 0; i < seg.doors.size(); ++i) {
     doors += (i ? "," : "") + DoorJson(grid, seg.doors[i]);
   }
-  std::string blobs = "[";
-  for (std::size_t i = 0; i < seg.blobs.size(); ++i) {
-    const FurnitureBlob& blob = seg.blobs[i];
-    JsonObject json;
-    json.Add("room", blob.room)
-        .Add("cell_count", std::uint64_t{blob.cell_count})
-        .AddRaw("first_cell", PointJson(grid, blob.first_cell))
-        .AddRaw("bbox", BoxJson(grid, blob.box))
-        .AddRaw("outline", ChainJson(grid, blob.outline, false));
-    blobs += (i ? "," : "") + json.str();
-  }
+  const std::string blobs = BlobsJson(grid, seg.blobs, true);
   const SegmentationTimings& t = seg.timings;
   JsonObject timings;
   timings.Add("clearance", t.clearance_ms)
@@ -207,7 +205,7 @@ std::string RoomsPlainJson(const Grid& grid, const Segmentation& seg) {
       .AddRaw("timings_ms", timings.str())
       .AddRaw("rooms", rooms + "]")
       .AddRaw("doors", doors + "]")
-      .AddRaw("blobs", blobs + "]");
+      .AddRaw("blobs", blobs);
   return top.str() + "\n";
 }
 
