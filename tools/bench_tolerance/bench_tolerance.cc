@@ -2,18 +2,17 @@
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
 //   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
-//                   [--open R] [--close R] [--specks N] [--backs P]
 //
-// For T = 1..4 each map is simplified (SimplifyWithinTolerance) and coded as
-// the exact 2.0 file of the simplified grid (EncodeLmap, default options,
-// and with vector_layers = false), every guarantee re-checked by
-// CheckTolerance. Anchors: the exact file of the original (T = 0) and the
-// smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block is
-// occupied if any cell is, else unknown if any is, else free). Medians are
-// printed for the tuning maps and for the others separately. --cells-only
-// skips the files with vector layers (much faster). --open etc. override
-// one smoothing parameter of DefaultSmoothingParams(T) for every T (tuning). --coarse-lmap also
-// prints the exact file of the coarser maps and of them drawn back at full size.
+// For T = 0..4 each map is saved as `linemap encode --tolerance T` saves it
+// (EncodeLmap with tolerance_cells = T, with and without the vector layers),
+// decoded, and every guarantee checked on the decode by CheckTolerance
+// ('!' after a size: one fails). Anchors: the exact file (T = 0) and the
+// smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block
+// is occupied if any cell is, else unknown if any is, else free). Medians
+// are printed for the tuning maps and for the others separately.
+// --cells-only skips the files with vector layers (much faster).
+// --coarse-lmap also prints the exact file of the coarser maps and of them
+// drawn back at full size. --dump writes PNGs of the decodes.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -22,8 +21,6 @@
 #include <vector>
 
 #include "codec/codec/tolerance.h"
-#include "codec/codec/tolerance_internal.h"
-#include "codec/codec/tolerance_smoothing.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/png_codec.h"
@@ -88,6 +85,26 @@ long LmapBytes(const Grid& g, bool layers) {
   return bytes.ok() ? static_cast<long>(bytes->size()) : -1;
 }
 
+// The file saved within `t` cells and what it decodes to.
+struct Saved {
+  long bytes = -1;
+  Grid decoded;
+};
+
+Saved SaveWithin(const Grid& g, int t, bool layers) {
+  EncodeOptions options;
+  options.vector_layers = layers;
+  options.tolerance_cells = t;
+  Saved out;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(g, options);
+  if (!bytes.ok()) return out;
+  StatusOr<Grid> decoded = DecodeLmap(*bytes);
+  if (!decoded.ok()) return out;
+  out.bytes = static_cast<long>(bytes->size());
+  out.decoded = std::move(*decoded);
+  return out;
+}
+
 struct Row {
   std::string name;
   bool tuning = false;
@@ -136,9 +153,6 @@ int Run(int argc, char** argv) {
   std::string dump;  // folder for PNGs of the original and simplified grids
   bool coarse_lmap = false;
   bool with_layers = true;
-  bool override_params = false;
-  // Overrides of DefaultSmoothingParams(T); -1 keeps the default.
-  int open = -1, close = -1, specks = -1, backs = -1, block = -1, nonfree_block = -1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : ""; };
@@ -152,18 +166,6 @@ int Run(int argc, char** argv) {
       coarse_lmap = true;
     } else if (a == "--cells-only") {
       with_layers = false;
-    } else if (a == "--open") {
-      open = std::atoi(next()), override_params = true;
-    } else if (a == "--close") {
-      close = std::atoi(next()), override_params = true;
-    } else if (a == "--specks") {
-      specks = std::atoi(next()), override_params = true;
-    } else if (a == "--block") {
-      block = std::atoi(next()), override_params = true;
-    } else if (a == "--nonfree-block") {
-      nonfree_block = std::atoi(next()), override_params = true;
-    } else if (a == "--backs") {
-      backs = std::atoi(next()), override_params = true;
     } else {
       std::fprintf(stderr, "bench_tolerance: unknown argument '%s'\n", a.c_str());
       return 2;
@@ -188,32 +190,20 @@ int Run(int argc, char** argv) {
     row.png4 = SmallestPngBytes(Coarser(g, 4));
     std::printf("%-44s %8ld %8ld ", m.path, row.png2, row.png4);
     for (int t = 0; t <= kMaxT; ++t) {
-      Grid s = g;
-      if (t > 0 && override_params) {
-        // Tuning: the proposal with the given parameters, then the same
-        // checks and undoing as SimplifyWithinTolerance.
-        tolerance_internal::SmoothingParams params = tolerance_internal::DefaultSmoothingParams(t);
-        auto set = [](int value, int* field) {
-          if (value >= 0) *field = value;
-        };
-        set(open, &params.open_radius);
-        set(close, &params.close_radius);
-        set(specks, &params.speck_cells);
-        set(backs, &params.wall_back_passes);
-        set(block, &params.block_cells);
-        set(nonfree_block, &params.nonfree_block_cells);
-        s = tolerance_internal::ProposeSmoothing(g, t, params);
-        s = tolerance_internal::EnforceGuarantees(g, s, t);
-      } else if (t > 0) {
-        StatusOr<Grid> simplified = SimplifyWithinTolerance(g, t);
-        if (!simplified.ok()) return 1;
-        s = *simplified;
+      const Saved cells = SaveWithin(g, t, false);
+      row.holds[t] = cells.bytes >= 0 && CheckTolerance(g, cells.decoded, t).Holds();
+      row.cells[t] = cells.bytes;
+      if (with_layers) {
+        const Saved layers = SaveWithin(g, t, true);
+        row.holds[t] =
+            row.holds[t] && layers.bytes >= 0 && CheckTolerance(g, layers.decoded, t).Holds();
+        row.layers[t] = layers.bytes;
+      } else {
+        row.layers[t] = row.cells[t];
       }
-      row.holds[t] = CheckTolerance(g, s, t).Holds();
-      if (!dump.empty())
-        DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
-      row.cells[t] = LmapBytes(s, false);
-      row.layers[t] = with_layers ? LmapBytes(s, true) : row.cells[t];
+      if (!dump.empty() && cells.bytes >= 0) {
+        DumpPng(cells.decoded, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
+      }
       if (with_layers) {
         std::printf(" %ld/%ld%s", row.cells[t], row.layers[t], row.holds[t] ? "" : "!");
       } else {

@@ -234,7 +234,7 @@ int RunEncode(const std::vector<std::string>& args) {
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
               options->format_v1             ? "version 1.0, lossy"
-              : options->tolerance_cells > 0 ? "within the tolerance, 2.0"
+              : options->tolerance_cells > 0 ? "within the tolerance"
               : options->vector_layers       ? "exact, with walls, rooms and furniture"
                                              : "exact, cells only");
   if (with_png) {
