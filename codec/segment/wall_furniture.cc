@@ -1,0 +1,231 @@
+// Furniture standing against walls (SegmentationMethod::kRooms, step 5b).
+// A cabinet or a shelf against a wall is, in the occupancy grid, one piece
+// with the wall: the free space does not enclose it, so the enclosed-
+// obstacle test of step 1 cannot see it. It shows as a compact bump of the
+// wall into a room: in every grid line across the bump (rows for a bump on
+// a top or bottom wall, columns for one on a left or right wall) the run of
+// blocked cells is short and has the same room on both ends, while in the
+// wall behind it the run is long (it goes on along the wall). The bump is
+// the connected set of such short-run cells; it is cut from the wall along
+// the wall's face, the first grid line whose run is long. It is furniture
+// when it is deep and wide enough to be more than wall noise or a wall's
+// end (a stub beside a wide opening is no wider than a wall is thick) and
+// small enough to be a piece of furniture rather than a room's notch.
+//
+// Runs are taken along the grid's axes, so bumps are found on walls that
+// run along the grid's rows or columns (maps are usually drawn so); a
+// cabinet in a room's corner (its run goes on into the side wall) or against
+// a slanted wall is not found.
+#include <algorithm>
+#include <cmath>
+
+#include "codec/segment/segment_internal.h"
+
+namespace linemap::segment_internal {
+namespace {
+
+// Size limits of a bump in cells: depth across the wall's face, width along
+// it.
+struct BumpRule {
+  int min_depth = 0;
+  int max_depth = 0;
+  int min_width = 0;
+  int max_width = 0;
+};
+
+BumpRule MakeBumpRule(const SegmentationOptions& options, double res) {
+  BumpRule rule;
+  rule.min_depth =
+      std::max(1, static_cast<int>(std::lround(options.wall_furniture_min_depth_m / res)));
+  rule.max_depth = static_cast<int>(std::lround(options.wall_furniture_max_depth_m / res));
+  // Wider than a wall is thick: a wall's end beside a wide opening is a bump
+  // of the wall's thickness.
+  rule.min_width = static_cast<int>(std::floor(options.wall_max_thickness_m / res)) + 1;
+  rule.max_width = static_cast<int>(std::lround(options.wall_furniture_max_width_m / res));
+  return rule;
+}
+
+// The map seen along one axis: `along` steps along a run, `across` from one
+// run's line to the next. Horizontal runs (rows) find bumps on top and
+// bottom walls; vertical runs (columns) on left and right walls.
+struct Axis {
+  bool rows = true;
+  int lines = 0;   // rows (or columns)
+  int length = 0;  // cells per line
+};
+
+class BumpFinder {
+ public:
+  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule)
+      : grid_(grid), room_of_(room_of_cell), rule_(rule), claimed_(grid.size(), 0) {}
+
+  void Find(bool rows, std::vector<WallPiece>* out);
+
+ private:
+  std::size_t Index(const Axis& axis, int line, int k) const {
+    return axis.rows ? grid_.Index(k, line) : grid_.Index(line, k);
+  }
+  // Blocked: no room cell and not free (wall, unknown, obstacles too large
+  // or too wall-like for furniture).
+  bool Blocked(std::size_t i) const { return room_of_[i] == 0 && grid_.cells()[i] != Cell::kFree; }
+  void MarkShortRuns(const Axis& axis);
+  bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
+              WallPiece* piece) const;
+
+  const Grid& grid_;
+  const std::vector<std::int32_t>& room_of_;
+  BumpRule rule_;
+  std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
+  std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
+};
+
+void BumpFinder::MarkShortRuns(const Axis& axis) {
+  mark_.assign(grid_.size(), 0);
+  for (int line = 0; line < axis.lines; ++line) {
+    int k = 0;
+    while (k < axis.length) {
+      if (!Blocked(Index(axis, line, k))) {
+        ++k;
+        continue;
+      }
+      const int begin = k;
+      while (k < axis.length && Blocked(Index(axis, line, k))) ++k;
+      // Run [begin, k): bounded on both ends by cells of one room.
+      if (begin == 0 || k == axis.length || k - begin > rule_.max_width) continue;
+      const std::int32_t room = room_of_[Index(axis, line, begin - 1)];
+      if (room == 0 || room != room_of_[Index(axis, line, k)]) continue;
+      for (int j = begin; j < k; ++j) mark_[Index(axis, line, j)] = room;
+    }
+  }
+}
+
+// `cells`: one 4-connected set of cells marked with `room`.
+bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
+                        WallPiece* piece) const {
+  const int w = grid_.width();
+  BoundingBox box{w, grid_.height(), -1, -1};
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    box.min_col = std::min(box.min_col, c);
+    box.max_col = std::max(box.max_col, c);
+    box.min_row = std::min(box.min_row, r);
+    box.max_row = std::max(box.max_row, r);
+  }
+  // Along the runs (the wall's face) and across them (out of the wall).
+  const int lo_line = axis.rows ? box.min_row : box.min_col;
+  const int hi_line = axis.rows ? box.max_row : box.max_col;
+  const int lo_k = axis.rows ? box.min_col : box.min_row;
+  const int hi_k = axis.rows ? box.max_col : box.max_row;
+  const int depth = hi_line - lo_line + 1;
+  const int width = hi_k - lo_k + 1;
+  if (depth < rule_.min_depth || depth > rule_.max_depth || width > rule_.max_width) return false;
+  // The typical width (median over the lines): a noise cell beside a wall's
+  // end widens one line, not the end.
+  std::vector<int> per_line(depth, 0);
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    ++per_line[(axis.rows ? r : c) - lo_line];
+  }
+  std::nth_element(per_line.begin(), per_line.begin() + depth / 2, per_line.end());
+  if (per_line[depth / 2] < rule_.min_width) return false;
+  // The lines just outside the bump: on one side the wall (blocked cells
+  // with long runs), on the other the room it stands in.
+  if (lo_line == 0 || hi_line == axis.lines - 1) return false;
+  int wall_lo = 0, wall_hi = 0, room_lo = 0, room_hi = 0;
+  for (int k = lo_k; k <= hi_k; ++k) {
+    const std::size_t lo = Index(axis, lo_line - 1, k);
+    const std::size_t hi = Index(axis, hi_line + 1, k);
+    wall_lo += Blocked(lo) && mark_[lo] == 0;
+    wall_hi += Blocked(hi) && mark_[hi] == 0;
+    room_lo += room_of_[lo] == room;
+    room_hi += room_of_[hi] == room;
+  }
+  const bool on_lo_wall = 2 * wall_lo >= width && 2 * room_hi >= width;
+  const bool on_hi_wall = 2 * wall_hi >= width && 2 * room_lo >= width;
+  if (on_lo_wall == on_hi_wall) return false;
+  // The wall goes on behind the bump past both of its sides: a piece of
+  // wall between two door openings ends where the openings cross the wall.
+  const int base = on_lo_wall ? lo_line - 1 : hi_line + 1;
+  for (const int k : {lo_k - 1, hi_k + 1}) {
+    if (k < 0 || k >= axis.length) return false;
+    const std::size_t i = Index(axis, base, k);
+    if (!Blocked(i) || mark_[i] != 0) return false;
+  }
+  piece->room = room;
+  piece->box = box;
+  Labeling local;
+  local.width = box.max_col - box.min_col + 1;
+  local.height = box.max_row - box.min_row + 1;
+  local.labels.assign(static_cast<std::size_t>(local.width) * local.height, 0);
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    local.labels[static_cast<std::size_t>(r - box.min_row) * local.width + (c - box.min_col)] = 1;
+    if (grid_.cells()[i] == Cell::kOccupied) piece->occupied.push_back({c, r});
+  }
+  if (piece->occupied.empty()) return false;
+  ComponentStats stats;
+  stats.cell_count = cells.size();
+  stats.box = {0, 0, local.width - 1, local.height - 1};
+  local.components.push_back(stats);
+  for (const CellIndex& cell : TraceOuterContour(local, 1)) {
+    piece->outline.push_back({cell.col + box.min_col, cell.row + box.min_row});
+  }
+  std::sort(piece->occupied.begin(), piece->occupied.end(),
+            [](const CellIndex& a, const CellIndex& b) {
+              return a.row != b.row ? a.row < b.row : a.col < b.col;
+            });
+  return true;
+}
+
+void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
+  const Axis axis{rows, rows ? grid_.height() : grid_.width(),
+                  rows ? grid_.width() : grid_.height()};
+  MarkShortRuns(axis);
+  const int w = grid_.width(), h = grid_.height();
+  std::vector<std::uint8_t> seen(grid_.size(), 0);
+  std::vector<std::size_t> cells, stack;
+  for (std::size_t seed = 0; seed < grid_.size(); ++seed) {
+    if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
+    const std::int32_t room = mark_[seed];
+    cells.clear();
+    stack.assign(1, seed);
+    seen[seed] = 1;
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      cells.push_back(i);
+      const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+      for (int d = 0; d < 4; ++d) {
+        const int nc = c + dc[d], nr = r + dr[d];
+        if (nc < 0 || nr < 0 || nc >= w || nr >= h) continue;
+        const std::size_t j = grid_.Index(nc, nr);
+        if (seen[j] || claimed_[j] || mark_[j] != room) continue;
+        seen[j] = 1;
+        stack.push_back(j);
+      }
+    }
+    WallPiece piece;
+    if (!Accept(axis, room, cells, &piece)) continue;
+    for (const std::size_t i : cells) claimed_[i] = 1;
+    out->push_back(std::move(piece));
+  }
+}
+
+}  // namespace
+
+std::vector<WallPiece> FindWallFurniture(const Grid& grid,
+                                         const std::vector<std::int32_t>& room_of_cell,
+                                         const SegmentationOptions& options) {
+  std::vector<WallPiece> pieces;
+  if (grid.empty() || options.wall_furniture_max_depth_m <= 0 ||
+      options.wall_furniture_max_width_m <= 0) {
+    return pieces;
+  }
+  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution));
+  finder.Find(/*rows=*/true, &pieces);
+  finder.Find(/*rows=*/false, &pieces);
+  return pieces;
+}
+
+}  // namespace linemap::segment_internal
