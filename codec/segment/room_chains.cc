@@ -154,40 +154,58 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
     group_box[k] = pieces[k].box;
   }
   const int bucket = std::max(32, gap + 2);
-  std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
   auto key = [](int bc, int br) {
     return (static_cast<std::int64_t>(br) << 32) ^ (bc & 0xffffffff);
   };
-  for (std::int32_t k = 0; k < n; ++k) {
-    const BoundingBox& b = pieces[k].box;
-    // Boxes `gap` cells apart share a bucket when each reaches gap + 1
-    // cells past its far side.
-    for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
-      for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
-        std::vector<std::int32_t>& list = buckets[key(bc, br)];
-        for (const std::int32_t other : list) {
-          const BoundingBox& o = pieces[other].box;
-          const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
-          const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
-          if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
-          const bool speck = pieces[k].occupied.size() <= speck_cells ||
-                             pieces[other].occupied.size() <= speck_cells;
-          if (speck && !LineUp(b, o)) continue;
-          const std::int32_t a = FindGroup(parent, k);
-          const std::int32_t z = FindGroup(parent, other);
-          if (a == z) continue;
-          BoundingBox joined = group_box[a];
-          Extend(&joined, group_box[z]);
-          const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
-                                   (joined.max_row - joined.min_row + 1);
-          if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
-          parent[a] = z;
-          group_box[z] = joined;
+  // Joins every two pieces of one room within `gap` for which `may_join`
+  // holds, as long as the joined box stays small and in room space.
+  auto join_near = [&](const auto& may_join) {
+    std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
+    for (std::int32_t k = 0; k < n; ++k) {
+      const BoundingBox& b = pieces[k].box;
+      // Boxes `gap` cells apart share a bucket when each reaches gap + 1
+      // cells past its far side.
+      for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
+        for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
+          std::vector<std::int32_t>& list = buckets[key(bc, br)];
+          for (const std::int32_t other : list) {
+            const BoundingBox& o = pieces[other].box;
+            const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
+            const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
+            if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
+            if (!may_join(k, other)) continue;
+            const std::int32_t a = FindGroup(parent, k);
+            const std::int32_t z = FindGroup(parent, other);
+            if (a == z) continue;
+            BoundingBox joined = group_box[a];
+            Extend(&joined, group_box[z]);
+            const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
+                                     (joined.max_row - joined.min_row + 1);
+            if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
+            parent[a] = z;
+            group_box[z] = joined;
+          }
+          list.push_back(k);
         }
-        list.push_back(k);
       }
     }
+  };
+  const auto speck = [&](std::int32_t k) { return pieces[k].occupied.size() <= speck_cells; };
+  // First pass: specks join only what they line up with.
+  join_near([&](std::int32_t k, std::int32_t other) {
+    return (!speck(k) && !speck(other)) || LineUp(pieces[k].box, pieces[other].box);
+  });
+  // Second pass: what is more than a lone speck now (a piece of some size,
+  // or legs that lined up: the two legs at one end of a table) joins
+  // whatever else is more than a lone speck nearby (the legs at the other
+  // end, a chair).
+  std::vector<std::int32_t> members(n, 0);
+  for (std::int32_t k = 0; k < n; ++k) ++members[FindGroup(parent, k)];
+  std::vector<std::uint8_t> structure(n, 0);
+  for (std::int32_t k = 0; k < n; ++k) {
+    structure[k] = !speck(k) || members[FindGroup(parent, k)] > 1;
   }
+  join_near([&](std::int32_t k, std::int32_t other) { return structure[k] && structure[other]; });
   for (std::int32_t k = 0; k < n; ++k) parent[k] = FindGroup(parent, k);
   return parent;
 }

@@ -68,6 +68,12 @@ class BumpFinder {
   // Blocked: no room cell and not free (wall, unknown, obstacles too large
   // or too wall-like for furniture).
   bool Blocked(std::size_t i) const { return room_of_[i] == 0 && grid_.cells()[i] != Cell::kFree; }
+  // The room at the end of a run: its id, -1 for a free cell in no room
+  // (any room), 0 for none.
+  std::int32_t EndRoom(std::size_t i) const {
+    if (room_of_[i] > 0) return room_of_[i];
+    return grid_.cells()[i] == Cell::kFree ? -1 : 0;
+  }
   void MarkShortRuns(const Axis& axis);
   bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
               WallPiece* piece) const;
@@ -90,10 +96,14 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
       }
       const int begin = k;
       while (k < axis.length && Blocked(Index(axis, line, k))) ++k;
-      // Run [begin, k): bounded on both ends by cells of one room.
+      // Run [begin, k): bounded on both ends by cells of one room. A free
+      // cell in no room (a pocket that noise closed off, e.g. in the gap
+      // between a cabinet and a side wall) stands for any room.
       if (begin == 0 || k == axis.length || k - begin > rule_.max_width) continue;
-      const std::int32_t room = room_of_[Index(axis, line, begin - 1)];
-      if (room == 0 || room != room_of_[Index(axis, line, k)]) continue;
+      const std::int32_t a = EndRoom(Index(axis, line, begin - 1));
+      const std::int32_t b = EndRoom(Index(axis, line, k));
+      if (a == 0 || b == 0 || (a > 0 && b > 0 && a != b) || (a < 0 && b < 0)) continue;
+      const std::int32_t room = std::max(a, b);
       for (int j = begin; j < k; ++j) mark_[Index(axis, line, j)] = room;
     }
   }
@@ -143,13 +153,21 @@ bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<s
   const bool on_lo_wall = 2 * wall_lo >= width && 2 * room_hi >= width;
   const bool on_hi_wall = 2 * wall_hi >= width && 2 * room_lo >= width;
   if (on_lo_wall == on_hi_wall) return false;
-  // The wall goes on behind the bump past both of its sides: a piece of
-  // wall between two door openings ends where the openings cross the wall.
+  // The wall goes on behind the bump past both of its sides (in the line
+  // behind the bump or, where noise merged the bump's last line with the
+  // wall, the line behind that): a piece of wall between two door openings
+  // ends where the openings cross the wall, and is no bump.
+  const int step = on_lo_wall ? -1 : 1;
   const int base = on_lo_wall ? lo_line - 1 : hi_line + 1;
   for (const int k : {lo_k - 1, hi_k + 1}) {
     if (k < 0 || k >= axis.length) return false;
-    const std::size_t i = Index(axis, base, k);
-    if (!Blocked(i) || mark_[i] != 0) return false;
+    bool wall = false;
+    for (const int line : {base, base + step}) {
+      if (line < 0 || line >= axis.lines) continue;
+      const std::size_t i = Index(axis, line, k);
+      wall = wall || (Blocked(i) && mark_[i] == 0);
+    }
+    if (!wall) return false;
   }
   piece->room = room;
   piece->box = box;
