@@ -153,21 +153,24 @@ bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<s
   const bool on_lo_wall = 2 * wall_lo >= width && 2 * room_hi >= width;
   const bool on_hi_wall = 2 * wall_hi >= width && 2 * room_lo >= width;
   if (on_lo_wall == on_hi_wall) return false;
-  // The wall goes on behind the bump past both of its sides (in the line
-  // behind the bump or, where noise merged the bump's last line with the
-  // wall, the line behind that): a piece of wall between two door openings
-  // ends where the openings cross the wall, and is no bump.
+  // The wall goes on behind the bump for min_depth cells past each of its
+  // sides (in the line behind the bump or, where noise merged the bump's
+  // last line with the wall, the line behind that): a piece of wall between
+  // two door openings ends where the openings cross the wall (give or take
+  // a noise cell at a jamb), and is no bump.
   const int step = on_lo_wall ? -1 : 1;
   const int base = on_lo_wall ? lo_line - 1 : hi_line + 1;
-  for (const int k : {lo_k - 1, hi_k + 1}) {
-    if (k < 0 || k >= axis.length) return false;
-    bool wall = false;
-    for (const int line : {base, base + step}) {
-      if (line < 0 || line >= axis.lines) continue;
-      const std::size_t i = Index(axis, line, k);
-      wall = wall || (Blocked(i) && mark_[i] == 0);
+  for (int j = 1; j <= rule_.min_depth; ++j) {
+    for (const int k : {lo_k - j, hi_k + j}) {
+      if (k < 0 || k >= axis.length) return false;
+      bool wall = false;
+      for (const int line : {base, base + step}) {
+        if (line < 0 || line >= axis.lines) continue;
+        const std::size_t i = Index(axis, line, k);
+        wall = wall || (Blocked(i) && mark_[i] == 0);
+      }
+      if (!wall) return false;
     }
-    if (!wall) return false;
   }
   piece->room = room;
   piece->box = box;
