@@ -107,6 +107,17 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
       for (int j = begin; j < k; ++j) mark_[Index(axis, line, j)] = room;
     }
   }
+  // A noise cell in the gap between a cabinet and a side wall joins one
+  // line of the cabinet to the side wall, and that line's run goes on: its
+  // cells between two marked lines (of one room) are marked all the same.
+  for (int line = 1; line + 1 < axis.lines; ++line) {
+    for (int k = 0; k < axis.length; ++k) {
+      const std::size_t i = Index(axis, line, k);
+      if (mark_[i] || !Blocked(i)) continue;
+      const std::int32_t before = mark_[Index(axis, line - 1, k)];
+      if (before && before == mark_[Index(axis, line + 1, k)]) mark_[i] = before;
+    }
+  }
 }
 
 // `cells`: one 4-connected set of cells marked with `room`.
@@ -141,14 +152,18 @@ bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<s
   // The lines just outside the bump: on one side the wall (blocked cells
   // with long runs), on the other the room it stands in.
   if (lo_line == 0 || hi_line == axis.lines - 1) return false;
+  // The room is looked for up to two lines out: noise may have joined the
+  // bump's front line to a side wall (that line is then left out).
   int wall_lo = 0, wall_hi = 0, room_lo = 0, room_hi = 0;
   for (int k = lo_k; k <= hi_k; ++k) {
     const std::size_t lo = Index(axis, lo_line - 1, k);
     const std::size_t hi = Index(axis, hi_line + 1, k);
     wall_lo += Blocked(lo) && mark_[lo] == 0;
     wall_hi += Blocked(hi) && mark_[hi] == 0;
-    room_lo += room_of_[lo] == room;
-    room_hi += room_of_[hi] == room;
+    room_lo += room_of_[lo] == room ||
+               (lo_line >= 2 && room_of_[Index(axis, lo_line - 2, k)] == room);
+    room_hi += room_of_[hi] == room ||
+               (hi_line + 2 < axis.lines && room_of_[Index(axis, hi_line + 2, k)] == room);
   }
   const bool on_lo_wall = 2 * wall_lo >= width && 2 * room_hi >= width;
   const bool on_hi_wall = 2 * wall_hi >= width && 2 * room_lo >= width;
