@@ -18,6 +18,7 @@
 // a slanted wall is not found.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "codec/segment/segment_internal.h"
 
@@ -160,8 +161,8 @@ bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<s
     const std::size_t hi = Index(axis, hi_line + 1, k);
     wall_lo += Blocked(lo) && mark_[lo] == 0;
     wall_hi += Blocked(hi) && mark_[hi] == 0;
-    room_lo += room_of_[lo] == room ||
-               (lo_line >= 2 && room_of_[Index(axis, lo_line - 2, k)] == room);
+    room_lo +=
+        room_of_[lo] == room || (lo_line >= 2 && room_of_[Index(axis, lo_line - 2, k)] == room);
     room_hi += room_of_[hi] == room ||
                (hi_line + 2 < axis.lines && room_of_[Index(axis, hi_line + 2, k)] == room);
   }
@@ -198,10 +199,27 @@ bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<s
     local.labels[static_cast<std::size_t>(r - box.min_row) * local.width + (c - box.min_col)] = 1;
     if (grid_.cells()[i] == Cell::kOccupied) piece->occupied.push_back({c, r});
   }
-  if (piece->occupied.empty()) return false;
+  // Furniture is seen by the scan: most of the bump's cells that face the
+  // room are occupied (a bump of unknown cells is a hole in the scan).
+  std::size_t facing = 0, facing_occupied = 0;
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    bool faces = false;
+    for (const auto& [dc, dr] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      faces = faces ||
+              (grid_.Contains(c + dc, r + dr) && room_of_[grid_.Index(c + dc, r + dr)] == room);
+    }
+    facing += faces;
+    facing_occupied += faces && grid_.cells()[i] == Cell::kOccupied;
+  }
+  if (facing_occupied == 0 || 2 * facing_occupied < facing) return false;
   ComponentStats stats;
   stats.cell_count = cells.size();
   stats.box = {0, 0, local.width - 1, local.height - 1};
+  // The trace starts at the first cell in raster order.
+  const auto first = std::find(local.labels.begin(), local.labels.end(), 1);
+  const int offset = static_cast<int>(first - local.labels.begin());
+  stats.first_cell = {offset % local.width, offset / local.width};
   local.components.push_back(stats);
   for (const CellIndex& cell : TraceOuterContour(local, 1)) {
     piece->outline.push_back({cell.col + box.min_col, cell.row + box.min_row});

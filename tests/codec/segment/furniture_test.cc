@@ -9,13 +9,16 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "tests/testing/floor_plan.h"
+#include "tests/testing/test_support.h"
 
 namespace linemap {
 namespace {
@@ -45,7 +48,7 @@ bool InsideChain(const std::vector<CellIndex>& chain, int col, int row) {
 //  - no blob crosses a chain: all its cells are on one side of each chain;
 //  - free-standing: cells in the blob's room, none 8-adjacent to a chain;
 //  - against a wall: cells in no room, 4-adjacent to a blocked cell in no
-//    room and no blob (the wall), 8-adjacent to a free cell of its room.
+//    room and no blob (the wall), 4-adjacent to a cell of its room.
 void ExpectFurnitureInvariants(const Grid& grid, const Segmentation& seg, const std::string& what) {
   std::vector<int> chain_of(grid.size(), 0);
   std::vector<BoundingBox> chain_box;
@@ -74,6 +77,19 @@ void ExpectFurnitureInvariants(const Grid& grid, const Segmentation& seg, const 
                                 << cell.row;
       ASSERT_EQ(seg.room_of_cell[i], blob.against_wall ? 0 : blob.room) << what;
     }
+    // The outline: closed, 8-connected, holding every cell of the blob.
+    ASSERT_FALSE(blob.outline.empty()) << what;
+    for (std::size_t i = 0; i < blob.outline.size(); ++i) {
+      const CellIndex& a = blob.outline[i];
+      const CellIndex& b = blob.outline[(i + 1) % blob.outline.size()];
+      ASSERT_LE(std::max(std::abs(a.col - b.col), std::abs(a.row - b.row)), 1) << what;
+    }
+    const BinaryMask fill = FillChainPolygon(blob.outline, grid.width(), grid.height());
+    for (const CellIndex& cell : blob.cells) {
+      ASSERT_TRUE(fill.at(cell.col, cell.row))
+          << what << ": blob at " << blob.first_cell.col << "," << blob.first_cell.row
+          << " has cells outside its outline";
+    }
     // One side of every chain whose box meets the blob's.
     for (std::size_t k = 0; k < seg.rooms.size(); ++k) {
       const BoundingBox& b = chain_box[k];
@@ -96,8 +112,7 @@ void ExpectFurnitureInvariants(const Grid& grid, const Segmentation& seg, const 
           if ((!dr && !dc) || !grid.Contains(c, r)) continue;
           const std::size_t j = grid.Index(c, r);
           chain_next = chain_next || chain_of[j] != 0;
-          room_next =
-              room_next || (grid.cells()[j] == Cell::kFree && seg.room_of_cell[j] == blob.room);
+          room_next = room_next || ((!dr || !dc) && seg.room_of_cell[j] == blob.room);
           if (dr && dc) continue;
           wall =
               wall || (grid.cells()[j] != Cell::kFree && seg.room_of_cell[j] == 0 && !in_blob[j]);
@@ -286,6 +301,8 @@ TEST(FurnitureTest, CabinetAgainstWallAndBumpsThatAreNone) {
 TEST(FurnitureTest, CabinetsOnEveryWall) {
   Grid grid = Room();
   Fill(&grid, 30, 62, 45, 69, Cell::kOccupied);  // top wall
+  grid.set(30, 62, Cell::kFree);                 // a chipped corner
+  grid.set(31, 62, Cell::kFree);
   Fill(&grid, 10, 30, 17, 45, Cell::kOccupied);  // left wall
   Fill(&grid, 80, 30, 89, 49, Cell::kOccupied);  // right wall, 0.5 x 1 m
   StatusOr<Segmentation> seg = SegmentMap(grid);
@@ -331,6 +348,28 @@ TEST(FurnitureTest, SpecksStayOutOfBlobs) {
   ASSERT_TRUE(lined.ok());
   ASSERT_EQ(lined->blobs.size(), 1u);
   EXPECT_EQ(lined->blobs[0].cell_count, 5u);
+}
+
+// The same promises on the shared maps (real scans: slanted walls, clutter,
+// unknown patches); the count of blobs against walls is printed.
+TEST(FurnitureTest, InvariantsOnSharedMaps) {
+  const std::string dir = testing::SharedMapsDir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
+  int checked = 0;
+  std::size_t against_wall = 0, blobs = 0;
+  for (const std::string& path : testing::FindYamlFiles(dir)) {
+    StatusOr<Grid> grid = LoadRosMap(path);
+    if (!grid.ok()) continue;
+    StatusOr<Segmentation> seg = SegmentMap(*grid);
+    ASSERT_TRUE(seg.ok()) << path << ": " << seg.status().message();
+    ExpectFurnitureInvariants(*grid, *seg, path);
+    for (const FurnitureBlob& blob : seg->blobs) against_wall += blob.against_wall;
+    blobs += seg->blobs.size();
+    ++checked;
+  }
+  std::printf("[ furniture ] %d shared maps: %zu blobs, %zu against walls\n", checked, blobs,
+              against_wall);
+  EXPECT_GT(checked, 0);
 }
 
 }  // namespace
