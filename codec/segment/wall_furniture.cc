@@ -58,7 +58,15 @@ struct Axis {
 class BumpFinder {
  public:
   BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule)
-      : grid_(grid), room_of_(room_of_cell), rule_(rule), claimed_(grid.size(), 0) {}
+      : grid_(grid),
+        room_of_(room_of_cell),
+        rule_(rule),
+        blocked_(grid.size()),
+        claimed_(grid.size(), 0) {
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      blocked_[i] = room_of_cell[i] == 0 && grid.cells()[i] != Cell::kFree;
+    }
+  }
 
   void Find(bool rows, std::vector<WallPiece>* out);
 
@@ -66,15 +74,14 @@ class BumpFinder {
   std::size_t Index(const Axis& axis, int line, int k) const {
     return axis.rows ? grid_.Index(k, line) : grid_.Index(line, k);
   }
-  // Blocked: no room cell and not free (wall, unknown, obstacles too large
-  // or too wall-like for furniture).
-  bool Blocked(std::size_t i) const { return room_of_[i] == 0 && grid_.cells()[i] != Cell::kFree; }
+  bool Blocked(std::size_t i) const { return blocked_[i] != 0; }
   // The room at the end of a run: its id, -1 for a free cell in no room
   // (any room), 0 for none.
   std::int32_t EndRoom(std::size_t i) const {
     if (room_of_[i] > 0) return room_of_[i];
     return grid_.cells()[i] == Cell::kFree ? -1 : 0;
   }
+  void MarkRun(const Axis& axis, int line, int begin, int end);
   void MarkShortRuns(const Axis& axis);
   bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
               WallPiece* piece) const;
@@ -82,41 +89,70 @@ class BumpFinder {
   const Grid& grid_;
   const std::vector<std::int32_t>& room_of_;
   BumpRule rule_;
-  std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
+  std::vector<std::int32_t> mark_;  // room at both ends of the short run through the cell
+  // Blocked: no room cell and not free (wall, unknown, obstacles too large
+  // or too wall-like for furniture).
+  std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
 };
 
+// A run [begin, end) of blocked cells along the axis in one line: marked
+// when it is short and bounded on both ends by cells of one room. A free
+// cell in no room (a pocket that noise closed off, e.g. in the gap between
+// a cabinet and a side wall) stands for any room.
+void BumpFinder::MarkRun(const Axis& axis, int line, int begin, int end) {
+  if (begin == 0 || end == axis.length || end - begin > rule_.max_width) return;
+  const std::int32_t a = EndRoom(Index(axis, line, begin - 1));
+  const std::int32_t b = EndRoom(Index(axis, line, end));
+  if (a == 0 || b == 0 || (a > 0 && b > 0 && a != b) || (a < 0 && b < 0)) return;
+  const std::int32_t room = std::max(a, b);
+  for (int j = begin; j < end; ++j) mark_[Index(axis, line, j)] = room;
+}
+
 void BumpFinder::MarkShortRuns(const Axis& axis) {
   mark_.assign(grid_.size(), 0);
-  for (int line = 0; line < axis.lines; ++line) {
-    int k = 0;
-    while (k < axis.length) {
-      if (!Blocked(Index(axis, line, k))) {
-        ++k;
-        continue;
+  const int w = grid_.width(), h = grid_.height();
+  // Both axes are scanned in raster order (columns keep their open run's
+  // start), so the map is read in memory order.
+  if (axis.rows) {
+    for (int r = 0; r < h; ++r) {
+      const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(r) * w;
+      int c = 0;
+      while (c < w) {
+        if (!row[c]) {
+          ++c;
+          continue;
+        }
+        const int begin = c;
+        while (c < w && row[c]) ++c;
+        MarkRun(axis, r, begin, c);
       }
-      const int begin = k;
-      while (k < axis.length && Blocked(Index(axis, line, k))) ++k;
-      // Run [begin, k): bounded on both ends by cells of one room. A free
-      // cell in no room (a pocket that noise closed off, e.g. in the gap
-      // between a cabinet and a side wall) stands for any room.
-      if (begin == 0 || k == axis.length || k - begin > rule_.max_width) continue;
-      const std::int32_t a = EndRoom(Index(axis, line, begin - 1));
-      const std::int32_t b = EndRoom(Index(axis, line, k));
-      if (a == 0 || b == 0 || (a > 0 && b > 0 && a != b) || (a < 0 && b < 0)) continue;
-      const std::int32_t room = std::max(a, b);
-      for (int j = begin; j < k; ++j) mark_[Index(axis, line, j)] = room;
+    }
+  } else {
+    std::vector<int> start(w, -1);
+    for (int r = 0; r <= h; ++r) {
+      const std::uint8_t* row = r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : nullptr;
+      for (int c = 0; c < w; ++c) {
+        const bool blocked = row && row[c];
+        if (blocked && start[c] < 0) {
+          start[c] = r;
+        } else if (!blocked && start[c] >= 0) {
+          MarkRun(axis, c, start[c], r);
+          start[c] = -1;
+        }
+      }
     }
   }
   // A noise cell in the gap between a cabinet and a side wall joins one
   // line of the cabinet to the side wall, and that line's run goes on: its
   // cells between two marked lines (of one room) are marked all the same.
-  for (int line = 1; line + 1 < axis.lines; ++line) {
-    for (int k = 0; k < axis.length; ++k) {
-      const std::size_t i = Index(axis, line, k);
-      if (mark_[i] || !Blocked(i)) continue;
-      const std::int32_t before = mark_[Index(axis, line - 1, k)];
-      if (before && before == mark_[Index(axis, line + 1, k)]) mark_[i] = before;
+  const int dc = axis.rows ? 0 : 1, dr = axis.rows ? 1 : 0;
+  for (int r = dr; r + dr < h; ++r) {
+    for (int c = dc; c + dc < w; ++c) {
+      const std::size_t i = grid_.Index(c, r);
+      if (mark_[i] || !blocked_[i]) continue;
+      const std::int32_t before = mark_[grid_.Index(c - dc, r - dr)];
+      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) mark_[i] = before;
     }
   }
 }
