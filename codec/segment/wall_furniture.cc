@@ -9,8 +9,15 @@
 // the connected set of such short-run cells; it is cut from the wall along
 // the wall's face, the first grid line whose run is long. It is furniture
 // when it is deep and wide enough to be more than wall noise or a wall's
-// end (a stub beside a wide opening is no wider than a wall is thick) and
-// small enough to be a piece of furniture rather than a room's notch.
+// end (a stub beside a wide opening is no wider than a wall is thick),
+// small enough to be a piece of furniture rather than a room's notch, the
+// wall goes on behind it past both of its sides (a piece of wall between
+// two door openings does not), and most of its cells that face the room
+// are occupied (the scan saw it; a bump of unknown cells is a scan hole).
+// Scan noise is allowed for: a free pocket that noise closed off beside a
+// cabinet stands for any room at a run's end, a line that a noise cell
+// joined to a side wall is bridged from the lines on either side, and the
+// room in front of the bump is looked for up to two lines out.
 //
 // Runs are taken along the grid's axes, so bumps are found on walls that
 // run along the grid's rows or columns (maps are usually drawn so); a
@@ -46,8 +53,8 @@ BumpRule MakeBumpRule(const SegmentationOptions& options, double res) {
   return rule;
 }
 
-// The map seen along one axis: `along` steps along a run, `across` from one
-// run's line to the next. Horizontal runs (rows) find bumps on top and
+// The map seen along one axis: runs go along a line (a row or a column),
+// `lines` of `length` cells. Horizontal runs (rows) find bumps on top and
 // bottom walls; vertical runs (columns) on left and right walls.
 struct Axis {
   bool rows = true;
