@@ -69,7 +69,10 @@ class BumpFinder {
         room_of_(room_of_cell),
         rule_(rule),
         blocked_(grid.size()),
-        claimed_(grid.size(), 0) {
+        claimed_(grid.size(), 0),
+        mark_(grid.size(), 0),
+        seen_(grid.size(), 0),
+        row_marked_(grid.height(), 0) {
     for (std::size_t i = 0; i < grid.size(); ++i) {
       blocked_[i] = room_of_cell[i] == 0 && grid.cells()[i] != Cell::kFree;
     }
@@ -96,11 +99,15 @@ class BumpFinder {
   const Grid& grid_;
   const std::vector<std::int32_t>& room_of_;
   BumpRule rule_;
-  std::vector<std::int32_t> mark_;  // room at both ends of the short run through the cell
   // Blocked: no room cell and not free (wall, unknown, obstacles too large
   // or too wall-like for furniture).
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
+  std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
+  std::vector<std::uint8_t> seen_;     // cells of components looked at
+  // Rows holding marks: the passes after the marking skip the others (most
+  // of a map: walls, unknown, open floor).
+  std::vector<std::uint8_t> row_marked_;
 };
 
 // A run [begin, end) of blocked cells along the axis in one line: marked
@@ -114,11 +121,23 @@ void BumpFinder::MarkRun(const Axis& axis, int line, int begin, int end) {
   if (a == 0 || b == 0 || (a > 0 && b > 0 && a != b) || (a < 0 && b < 0)) return;
   const std::int32_t room = std::max(a, b);
   for (int j = begin; j < end; ++j) mark_[Index(axis, line, j)] = room;
+  if (axis.rows) {
+    row_marked_[line] = 1;
+  } else {
+    std::fill(row_marked_.begin() + begin, row_marked_.begin() + end, 1);
+  }
 }
 
 void BumpFinder::MarkShortRuns(const Axis& axis) {
-  mark_.assign(grid_.size(), 0);
   const int w = grid_.width(), h = grid_.height();
+  // Clear what the other axis marked.
+  for (int r = 0; r < h; ++r) {
+    if (!row_marked_[r]) continue;
+    const std::size_t row = static_cast<std::size_t>(r) * w;
+    std::fill(mark_.begin() + row, mark_.begin() + row + w, 0);
+    std::fill(seen_.begin() + row, seen_.begin() + row + w, 0);
+    row_marked_[r] = 0;
+  }
   // Both axes are scanned in raster order (columns keep their open run's
   // start), so the map is read in memory order.
   if (axis.rows) {
@@ -155,11 +174,15 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
   // cells between two marked lines (of one room) are marked all the same.
   const int dc = axis.rows ? 0 : 1, dr = axis.rows ? 1 : 0;
   for (int r = dr; r + dr < h; ++r) {
+    if (!row_marked_[r - dr] || !row_marked_[r + dr]) continue;
     for (int c = dc; c + dc < w; ++c) {
       const std::size_t i = grid_.Index(c, r);
       if (mark_[i] || !blocked_[i]) continue;
       const std::int32_t before = mark_[grid_.Index(c - dc, r - dr)];
-      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) mark_[i] = before;
+      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) {
+        mark_[i] = before;
+        row_marked_[r] = 1;
+      }
     }
   }
 }
@@ -279,33 +302,37 @@ void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
                   rows ? grid_.width() : grid_.height()};
   MarkShortRuns(axis);
   const int w = grid_.width(), h = grid_.height();
-  std::vector<std::uint8_t> seen(grid_.size(), 0);
+  std::vector<std::uint8_t>& seen = seen_;
   std::vector<std::size_t> cells, stack;
-  for (std::size_t seed = 0; seed < grid_.size(); ++seed) {
-    if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
-    const std::int32_t room = mark_[seed];
-    cells.clear();
-    stack.assign(1, seed);
-    seen[seed] = 1;
-    while (!stack.empty()) {
-      const std::size_t i = stack.back();
-      stack.pop_back();
-      cells.push_back(i);
-      const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
-      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-      for (int d = 0; d < 4; ++d) {
-        const int nc = c + dc[d], nr = r + dr[d];
-        if (nc < 0 || nr < 0 || nc >= w || nr >= h) continue;
-        const std::size_t j = grid_.Index(nc, nr);
-        if (seen[j] || claimed_[j] || mark_[j] != room) continue;
-        seen[j] = 1;
-        stack.push_back(j);
+  for (int r0 = 0; r0 < h; ++r0) {
+    if (!row_marked_[r0]) continue;  // a row without marks
+    for (int c0 = 0; c0 < w; ++c0) {
+      const std::size_t seed = grid_.Index(c0, r0);
+      if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
+      const std::int32_t room = mark_[seed];
+      cells.clear();
+      stack.assign(1, seed);
+      seen[seed] = 1;
+      while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        cells.push_back(i);
+        const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+        const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+        for (int d = 0; d < 4; ++d) {
+          const int nc = c + dc[d], nr = r + dr[d];
+          if (nc < 0 || nr < 0 || nc >= w || nr >= h) continue;
+          const std::size_t j = grid_.Index(nc, nr);
+          if (seen[j] || claimed_[j] || mark_[j] != room) continue;
+          seen[j] = 1;
+          stack.push_back(j);
+        }
       }
+      WallPiece piece;
+      if (!Accept(axis, room, cells, &piece)) continue;
+      for (const std::size_t i : cells) claimed_[i] = 1;
+      out->push_back(std::move(piece));
     }
-    WallPiece piece;
-    if (!Accept(axis, room, cells, &piece)) continue;
-    for (const std::size_t i : cells) claimed_[i] = 1;
-    out->push_back(std::move(piece));
   }
 }
 
