@@ -2,6 +2,7 @@
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
 //   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
+//                   [--svg OUT.svg]
 //
 // For T = 0..4 each map is saved as `linemap encode --tolerance T` saves it
 // (EncodeLmap with tolerance_cells = T, with and without the vector layers),
@@ -12,8 +13,10 @@
 // are printed for the tuning maps and for the others separately.
 // --cells-only skips the files with vector layers (much faster).
 // --coarse-lmap also prints the exact file of the coarser maps and of them
-// drawn back at full size. --dump writes PNGs of the decodes.
+// drawn back at full size. --dump writes PNGs of the decodes. --svg draws
+// the curve of bytes against T beside the anchors.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -147,11 +150,93 @@ void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
   }
 }
 
+// The curve a user chooses from: bytes against T, as a share of the PNG-9
+// of the 2x coarser map (log scale), one faint line per map (cells only),
+// the medians of the cells-only and the default files bold, the anchors
+// (PNG-9 of the 2x and 4x coarser maps) as horizontal lines and the
+// issue's goals (0.5x of them at T = 1 and 3) as crosses.
+std::string CurveSvg(const std::vector<Row>& rows) {
+  const double w = 640, h = 420, left = 70, right = 170, top = 30, bottom = 50;
+  const double lo = std::log(0.2), hi = std::log(4.0);
+  auto x = [&](int t) { return left + (w - left - right) * t / kMaxT; };
+  auto y = [&](double ratio) {
+    const double v = std::clamp(std::log(ratio), lo, hi);
+    return top + (h - top - bottom) * (hi - v) / (hi - lo);
+  };
+  std::string svg;
+  auto add = [&](const char* fmt, auto... args) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, fmt, args...);
+    svg += buf;
+  };
+  add("<svg xmlns='http://www.w3.org/2000/svg' width='%.0f' height='%.0f' "
+      "font-family='sans-serif' font-size='12'>\n<rect width='100%%' height='100%%' "
+      "fill='white'/>\n",
+      w, h);
+  add("<text x='%.0f' y='18' font-size='14'>Bytes against tolerance T (share of the PNG-9 of the "
+      "2x coarser map)</text>\n",
+      left);
+  for (const double r : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+    add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='#ddd'/><text x='%.1f' y='%.1f' "
+        "text-anchor='end'>%.2f</text>\n",
+        left, w - right, y(r), y(r), left - 6, y(r) + 4, r);
+  }
+  for (int t = 0; t <= kMaxT; ++t) {
+    add("<text x='%.1f' y='%.1f' text-anchor='middle'>T = %d</text>\n", x(t), h - bottom + 20, t);
+  }
+  auto polyline = [&](const std::vector<double>& v, const char* style) {
+    svg += "<polyline fill='none' " + std::string(style) + " points='";
+    for (int t = 0; t <= kMaxT; ++t) add("%.1f,%.1f ", x(t), y(v[t]));
+    svg += "'/>\n";
+  };
+  std::vector<std::vector<double>> cells(kMaxT + 1), layers(kMaxT + 1);
+  std::vector<double> png4;
+  for (const Row& r : rows) {
+    std::vector<double> mine;
+    for (int t = 0; t <= kMaxT; ++t) {
+      mine.push_back(static_cast<double>(r.cells[t]) / r.png2);
+      cells[t].push_back(mine.back());
+      layers[t].push_back(static_cast<double>(r.layers[t]) / r.png2);
+    }
+    png4.push_back(static_cast<double>(r.png4) / r.png2);
+    polyline(mine, "stroke='#9ecae1' stroke-width='1'");
+  }
+  std::vector<double> med_cells, med_layers;
+  for (int t = 0; t <= kMaxT; ++t) {
+    med_cells.push_back(Median(cells[t]));
+    med_layers.push_back(Median(layers[t]));
+  }
+  polyline(med_cells, "stroke='#08519c' stroke-width='3'");
+  polyline(med_layers, "stroke='#a63603' stroke-width='3'");
+  const double p4 = Median(png4);
+  add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='black' stroke-dasharray='6 4'/>\n",
+      left, w - right, y(1.0), y(1.0));
+  add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='#555' stroke-dasharray='2 3'/>\n",
+      left, w - right, y(p4), y(p4));
+  for (const auto& [t, r] : {std::pair{1, 0.5}, std::pair{3, 0.5 * p4}}) {
+    add("<path d='M%.1f %.1f l8 8 m0 -8 l-8 8' stroke='#2ca02c' stroke-width='2' "
+        "transform='translate(-4 -4)'/>\n",
+        x(t), y(r));
+  }
+  const double lx = w - right + 12;
+  add("<text x='%.1f' y='%.1f' fill='#08519c'>median, cells only</text>\n", lx,
+      y(med_cells[kMaxT]));
+  add("<text x='%.1f' y='%.1f' fill='#a63603'>median, with layers</text>\n", lx,
+      y(med_layers[kMaxT]));
+  add("<text x='%.1f' y='%.1f'>PNG-9, 2x coarser</text>\n", lx, y(1.0) + 4);
+  add("<text x='%.1f' y='%.1f' fill='#555'>PNG-9, 4x coarser</text>\n", lx, y(p4) + 4);
+  add("<text x='%.1f' y='%.1f' fill='#2ca02c'>goals (0.5x)</text>\n", lx, y(0.5 * p4) + 18);
+  add("<text x='%.1f' y='%.1f' fill='#6baed6'>each map, cells only</text>\n", lx, top + 10);
+  svg += "</svg>\n";
+  return svg;
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "../shared/maps";
   std::string only;
   std::string dump;  // folder for PNGs of the original and simplified grids
   bool coarse_lmap = false;
+  std::string svg_path;  // the curve's figure
   bool with_layers = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -164,6 +249,8 @@ int Run(int argc, char** argv) {
       dump = next();
     } else if (a == "--coarse-lmap") {
       coarse_lmap = true;
+    } else if (a == "--svg") {
+      svg_path = next();
     } else if (a == "--cells-only") {
       with_layers = false;
     } else {
@@ -225,6 +312,16 @@ int Run(int argc, char** argv) {
   }
   PrintSummary(rows, true, with_layers);
   PrintSummary(rows, false, with_layers);
+  if (!svg_path.empty() && !rows.empty()) {
+    std::FILE* f = std::fopen(svg_path.c_str(), "w");
+    const std::string svg = CurveSvg(rows);
+    if (f == nullptr || std::fwrite(svg.data(), 1, svg.size(), f) != svg.size()) {
+      std::fprintf(stderr, "bench_tolerance: cannot write '%s'\n", svg_path.c_str());
+      if (f) std::fclose(f);
+      return 1;
+    }
+    std::fclose(f);
+  }
   return 0;
 }
 
