@@ -129,6 +129,7 @@ py::dict Segment(const Map& map, const py::object& pose) {
   for (const FurnitureBlob& blob : seg.blobs) {
     py::dict b;
     b["cell_count"] = blob.cells.size();
+    b["against_wall"] = blob.against_wall;
     // Cells are in raster order, so the first is the CLI's first_cell.
     b["first_cell"] = blob.cells.empty() ? py::object(py::none()) : WorldPoint(grid, blob.cells[0]);
     b["bbox"] = BoxTuple(grid, blob.box);
@@ -325,7 +326,8 @@ in metres floods only the robot's free space.
              R"doc(
 Room-border chains and furniture blobs, as ``linemap segment`` writes them:
 {resolution, rooms: [{chain: (K, 2) closed chain of cell centres, chain_cells}],
-blobs: [{cell_count, first_cell, bbox (x0, y0, x1, y1 cell edges),
+blobs: [{cell_count, against_wall (a cabinet or shelf standing against a
+wall, else free-standing), first_cell, bbox (x0, y0, x1, y1 cell edges),
 outline: (K, 2), cells: (M, 2)}]}, map-frame metres. ``pose`` (x, y) picks
 the robot's room; without it every free component of 400+ cells is a room.
 )doc");

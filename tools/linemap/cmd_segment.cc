@@ -97,7 +97,8 @@ std::string BlobsJson(const Grid& grid, const std::vector<FurnitureBlob>& blobs,
     const FurnitureBlob& blob = blobs[i];
     JsonObject json;
     if (with_room) json.Add("room", blob.room);
-    json.Add("cell_count", std::uint64_t{blob.cell_count})
+    json.Add("against_wall", blob.against_wall)
+        .Add("cell_count", std::uint64_t{blob.cell_count})
         .AddRaw("first_cell", PointJson(grid, blob.first_cell))
         .AddRaw("bbox", BoxJson(grid, blob.box))
         .AddRaw("outline", ChainJson(grid, blob.outline, false));
