@@ -2,11 +2,19 @@
 #include "codec/codec/layer_hints.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <utility>
 
 #include "codec/codec/raster.h"
 
 namespace linemap {
 namespace {
+
+// Bucket side of the item index (cells, as a shift): small enough that a
+// 1024-cell tile looks at few items it does not meet, large enough that a
+// room's box spans few buckets.
+constexpr int kBucketShift = 8;
 
 BoundingBox BoxOf(const std::vector<CellIndex>& cells) {
   BoundingBox box{cells[0].col, cells[0].row, cells[0].col, cells[0].row};
@@ -23,22 +31,75 @@ bool Overlaps(const BoundingBox& box, CellRect t) {
   return box.max_col >= t.x0 && box.min_col < t.x1 && box.max_row >= t.y0 && box.min_row < t.y1;
 }
 
-// The row crossings of a closed chain as FillChain (raster.h) defines them:
-// each step p -> q between rows r and r + 1 crosses at the column of its end
-// on row r.
-std::vector<std::pair<int, int>> Crossings(const std::vector<CellIndex>& chain) {
-  std::vector<std::pair<int, int>> crossings;
-  const std::size_t n = chain.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const CellIndex p = chain[i];
-    const CellIndex q = chain[(i + 1) % n];
-    if (std::abs(p.row - q.row) != 1) continue;
-    const int r = std::min(p.row, q.row);
-    crossings.emplace_back(r, p.row == r ? p.col : q.col);
+bool Inside(int c, int r, CellRect t) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; }
+
+// The rasterisation of a -> b (RasterizeSegment, raster.h) as a function of
+// the step i in [0, n]. Along the major axis (the one with |delta| == n) the
+// cell moves exactly one per step, which lets a tile find its cells and
+// crossings without walking the rest of the edge.
+class EdgeRaster {
+ public:
+  EdgeRaster(CellIndex a, CellIndex b)
+      : a_(a),
+        dx_(std::int64_t{b.col} - a.col),
+        dy_(std::int64_t{b.row} - a.row),
+        n_(std::max(std::llabs(dx_), std::llabs(dy_))) {}
+  std::int64_t n() const { return n_; }
+  std::int64_t dy() const { return dy_; }
+  int Col(std::int64_t i) const {
+    return static_cast<int>(a_.col + FloorDiv(2 * i * dx_ + n_, 2 * n_));
   }
-  std::sort(crossings.begin(), crossings.end());
-  return crossings;
-}
+  int Row(std::int64_t i) const {
+    return static_cast<int>(a_.row + FloorDiv(2 * i * dy_ + n_, 2 * n_));
+  }
+
+  // Visits the cells of steps [0, last] (n > 0) inside `t`.
+  template <typename Visit>
+  void VisitInside(std::int64_t last, CellRect t, Visit&& visit) const {
+    const bool steep = std::llabs(dy_) == n_;
+    const std::int64_t start = steep ? a_.row : a_.col;
+    const bool up = steep ? dy_ > 0 : dx_ > 0;
+    const std::int64_t lo = steep ? t.y0 : t.x0;
+    const std::int64_t hi = steep ? t.y1 : t.x1;
+    std::int64_t i0 = up ? lo - start : start - hi + 1;
+    std::int64_t i1 = up ? hi - start : start - lo + 1;
+    i0 = std::max<std::int64_t>(i0, 0);
+    i1 = std::min<std::int64_t>(i1, last + 1);
+    for (std::int64_t i = i0; i < i1; ++i) {
+      const int c = Col(i), r = Row(i);
+      if (Inside(c, r, t)) visit(c, r);
+    }
+  }
+
+  // The column at which the edge's steps cross between rows r and r + 1
+  // (dy != 0, r between the ends' rows, the upper one excluded): the
+  // column of the step's cell on row r, as FillChain (raster.h) takes it.
+  int CrossingCol(int r) const {
+    const bool steep = std::llabs(dy_) == n_;
+    if (dy_ > 0) {
+      // The last step on row r.
+      if (steep) return Col(r - a_.row);
+      std::int64_t lo = 0, hi = n_;  // Row(lo) <= r < Row(hi)
+      while (hi - lo > 1) {
+        const std::int64_t mid = (lo + hi) / 2;
+        (Row(mid) <= r ? lo : hi) = mid;
+      }
+      return Col(lo);
+    }
+    // Going down: the first step on row r.
+    if (steep) return Col(a_.row - r);
+    std::int64_t lo = 0, hi = n_;  // Row(lo) > r >= Row(hi)
+    while (hi - lo > 1) {
+      const std::int64_t mid = (lo + hi) / 2;
+      (Row(mid) <= r ? hi : lo) = mid;
+    }
+    return Col(hi);
+  }
+
+ private:
+  CellIndex a_;
+  std::int64_t dx_, dy_, n_;
+};
 
 }  // namespace
 
@@ -57,6 +118,8 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
   for (const FurnitureObject& object : furniture) {
     AddOutline(object.polygon, kHintFurniture, kHintFurniture, 0);
   }
+  segment_buckets_ = MakeBuckets(segments_);
+  outline_buckets_ = MakeBuckets(outlines_);
 }
 
 void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t fill_bits,
@@ -65,44 +128,181 @@ void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t 
   outlines_.push_back({&polygon, BoxOf(polygon), fill_bits, chain_bits, clear_on_chain});
 }
 
+template <typename Item>
+LayerIndex::Buckets LayerIndex::MakeBuckets(const std::vector<Item>& list) {
+  Buckets b;
+  for (const Item& item : list) {
+    b.cols = std::max(b.cols, (std::max(item.box.max_col, 0) >> kBucketShift) + 1);
+    b.rows = std::max(b.rows, (std::max(item.box.max_row, 0) >> kBucketShift) + 1);
+  }
+  b.starts.assign(static_cast<std::size_t>(b.cols) * b.rows + 1, 0);
+  // Two passes over the boxes' buckets: count, then place.
+  const auto for_buckets = [&](const BoundingBox& box, auto&& f) {
+    const int bx0 = std::max(box.min_col, 0) >> kBucketShift;
+    const int bx1 = std::max(box.max_col, 0) >> kBucketShift;
+    const int by0 = std::max(box.min_row, 0) >> kBucketShift;
+    const int by1 = std::max(box.max_row, 0) >> kBucketShift;
+    for (int by = by0; by <= by1; ++by) {
+      for (int bx = bx0; bx <= bx1; ++bx) f(static_cast<std::size_t>(by) * b.cols + bx);
+    }
+  };
+  for (const Item& item : list) for_buckets(item.box, [&](std::size_t k) { ++b.starts[k + 1]; });
+  for (std::size_t k = 1; k < b.starts.size(); ++k) b.starts[k] += b.starts[k - 1];
+  b.items.resize(b.starts.back());
+  std::vector<std::uint32_t> fill(b.starts.begin(), b.starts.end() - 1);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    for_buckets(list[i].box,
+                [&](std::size_t k) { b.items[fill[k]++] = static_cast<std::uint32_t>(i); });
+  }
+  return b;
+}
+
+std::vector<std::uint32_t> LayerIndex::ItemsNear(const Buckets& b, CellRect t) {
+  std::vector<std::uint32_t> items;
+  if (b.cols == 0 || t.x1 <= t.x0 || t.y1 <= t.y0) return items;
+  const int bx0 = std::max(t.x0, 0) >> kBucketShift;
+  const int by0 = std::max(t.y0, 0) >> kBucketShift;
+  const int bx1 = std::min((t.x1 - 1) >> kBucketShift, b.cols - 1);
+  const int by1 = std::min((t.y1 - 1) >> kBucketShift, b.rows - 1);
+  if (t.x1 <= 0 || t.y1 <= 0 || bx0 > bx1 || by0 > by1) return items;
+  for (int by = by0; by <= by1; ++by) {
+    for (int bx = bx0; bx <= bx1; ++bx) {
+      const std::size_t k = static_cast<std::size_t>(by) * b.cols + bx;
+      items.insert(items.end(), b.items.begin() + b.starts[k], b.items.begin() + b.starts[k + 1]);
+    }
+  }
+  if (bx0 != bx1 || by0 != by1) {
+    std::sort(items.begin(), items.end());
+    items.erase(std::unique(items.begin(), items.end()), items.end());
+  }
+  return items;
+}
+
+void LayerIndex::DrawOutline(const Outline& outline, CellRect t, std::uint8_t* out,
+                             std::ptrdiff_t stride, Scratch* scratch) {
+  const std::vector<CellIndex>& polygon = *outline.polygon;
+  const auto at = [&](int c, int r) -> std::uint8_t& {
+    return out[(r - t.y0) * stride + (c - t.x0)];
+  };
+  const auto mark_chain = [&](int c, int r) {
+    std::uint8_t& h = at(c, r);
+    h = static_cast<std::uint8_t>((h & ~outline.clear_on_chain) | outline.chain_bits);
+  };
+  const std::size_t k = polygon.size();
+  if (k == 1) {
+    // A one-cell chain: no crossings, no fill.
+    if (Inside(polygon[0].col, polygon[0].row, t)) mark_chain(polygon[0].col, polygon[0].row);
+    return;
+  }
+  // Fill (8.2): on each row, the cells in [x0, x1), [x2, x3), ... of the
+  // sorted crossings, i.e. those with an odd number of crossings at or left
+  // of them. Crossings left of the tile only flip the parity a row starts
+  // with (`flip` holds the flips as differences along the rows, so an edge
+  // wholly left of the tile costs two writes); those right of it change
+  // nothing inside.
+  const int r0 = std::max(t.y0, outline.box.min_row);
+  const int r1 = std::min(t.y1, outline.box.max_row);  // crossing rows stop below the top
+  if (r0 < r1) {
+    const std::size_t rows = static_cast<std::size_t>(r1 - r0);
+    std::vector<std::uint8_t>& flip = scratch->flip;
+    flip.assign(rows + 1, 0);
+    std::vector<std::pair<int, int>>& crossings = scratch->crossings;  // (row, column)
+    crossings.clear();
+    for (std::size_t i = 0; i < k; ++i) {
+      const CellIndex a = polygon[i], b = polygon[(i + 1) % k];
+      if (a.row == b.row) continue;  // no crossings (and a == b: no steps)
+      const int lo = std::max(std::min(a.row, b.row), r0);
+      const int hi = std::min(std::max(a.row, b.row) - 1, r1 - 1);
+      if (lo > hi) continue;
+      if (std::max(a.col, b.col) < t.x0) {
+        flip[lo - r0] ^= 1;
+        flip[hi + 1 - r0] ^= 1;
+        continue;
+      }
+      if (std::min(a.col, b.col) >= t.x1) continue;
+      const EdgeRaster edge(a, b);
+      for (int r = lo; r <= hi; ++r) {
+        const int c = edge.CrossingCol(r);
+        if (c < t.x0) {
+          flip[r - r0] ^= 1;
+          flip[r + 1 - r0] ^= 1;
+        } else if (c < t.x1) {
+          crossings.emplace_back(r, c);
+        }
+      }
+    }
+    // The crossings by row (a counting sort: a room over a whole tile has
+    // two on each of its rows), then by column within each row.
+    std::vector<std::uint32_t>& starts = scratch->starts;
+    starts.assign(rows + 1, 0);
+    for (const auto& [r, c] : crossings) ++starts[r - r0 + 1];
+    for (std::size_t i = 1; i <= rows; ++i) starts[i] += starts[i - 1];
+    std::vector<int>& cols = scratch->cols;
+    cols.resize(crossings.size());
+    {
+      std::vector<std::uint32_t>& next = scratch->next;
+      next.assign(starts.begin(), starts.end() - 1);
+      for (const auto& [r, c] : crossings) cols[next[r - r0]++] = c;
+    }
+    unsigned parity = 0;
+    for (int r = r0; r < r1; ++r) {
+      parity ^= flip[r - r0];
+      int* begin = cols.data() + starts[r - r0];
+      int* end = cols.data() + starts[r - r0 + 1];
+      if (end - begin > 1) std::sort(begin, end);
+      unsigned inside = parity;
+      int from = t.x0;
+      std::uint8_t* row = &at(t.x0, r) - t.x0;
+      for (const int* p = begin; p != end; ++p) {
+        if (inside) {
+          for (int c = from; c < *p; ++c) row[c] |= outline.fill_bits;
+        }
+        from = *p;
+        inside ^= 1;
+      }
+      if (inside) {
+        for (int c = from; c < t.x1; ++c) row[c] |= outline.fill_bits;
+      }
+    }
+  }
+  // The chain's cells: each edge's rasterisation but its last cell.
+  for (std::size_t i = 0; i < k; ++i) {
+    const CellIndex a = polygon[i], b = polygon[(i + 1) % k];
+    if (a == b) continue;
+    if (std::max(a.col, b.col) < t.x0 || std::min(a.col, b.col) >= t.x1 ||
+        std::max(a.row, b.row) < t.y0 || std::min(a.row, b.row) >= t.y1) {
+      continue;
+    }
+    const EdgeRaster edge(a, b);
+    edge.VisitInside(edge.n() - 1, t, mark_chain);
+  }
+}
+
+void LayerIndex::DrawTileHints(CellRect t, std::uint8_t* out, std::ptrdiff_t stride) const {
+  const int tw = t.x1 - t.x0;
+  for (int r = t.y0; r < t.y1; ++r) std::memset(out + (r - t.y0) * stride, 0, tw);
+  Scratch scratch;
+  for (std::uint32_t i : ItemsNear(outline_buckets_, t)) {
+    const Outline& outline = outlines_[i];
+    if (Overlaps(outline.box, t)) DrawOutline(outline, t, out, stride, &scratch);
+  }
+  for (std::uint32_t i : ItemsNear(segment_buckets_, t)) {
+    const Segment& s = segments_[i];
+    if (!Overlaps(s.box, t)) continue;
+    const auto mark = [&](int c, int r) { out[(r - t.y0) * stride + (c - t.x0)] |= kHintWall; };
+    if (s.a == s.b) {
+      mark(s.a.col, s.a.row);  // inside: its box overlaps the tile
+      continue;
+    }
+    const EdgeRaster edge(s.a, s.b);
+    edge.VisitInside(edge.n(), t, mark);
+  }
+}
+
 std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
   const int tw = t.x1 - t.x0;
-  const int th = t.y1 - t.y0;
-  std::vector<std::uint8_t> hints(static_cast<std::size_t>(tw) * th, 0);
-  const auto at = [&](int c, int r) -> std::uint8_t& {
-    return hints[static_cast<std::size_t>(r - t.y0) * tw + (c - t.x0)];
-  };
-  const auto in = [&](int c, int r) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; };
-  for (const Outline& outline : outlines_) {
-    if (!Overlaps(outline.box, t)) continue;
-    const std::vector<CellIndex> chain = ChainOfPolygon(*outline.polygon);
-    const std::vector<std::pair<int, int>> crossings = Crossings(chain);
-    // Fill: on each row, the cells in [x0, x1), [x2, x3), ... of its
-    // sorted crossings, clipped to the tile.
-    auto it = std::lower_bound(crossings.begin(), crossings.end(), std::make_pair(t.y0, -1));
-    while (it != crossings.end() && it->first < t.y1) {
-      const int row = it->first;
-      auto end = it;
-      while (end != crossings.end() && end->first == row) ++end;
-      for (auto p = it; p + 1 < end; p += 2) {
-        const int lo = std::max(p->second, t.x0);
-        const int hi = std::min((p + 1)->second, t.x1);
-        for (int c = lo; c < hi; ++c) at(c, row) |= outline.fill_bits;
-      }
-      it = end;
-    }
-    for (const CellIndex& c : chain) {
-      if (!in(c.col, c.row)) continue;
-      at(c.col, c.row) = static_cast<std::uint8_t>((at(c.col, c.row) & ~outline.clear_on_chain) |
-                                                   outline.chain_bits);
-    }
-  }
-  for (const Segment& s : segments_) {
-    if (!Overlaps(s.box, t)) continue;
-    RasterizeSegment(s.a, s.b, [&](int c, int r) {
-      if (in(c, r)) at(c, r) |= kHintWall;
-    });
-  }
+  std::vector<std::uint8_t> hints(static_cast<std::size_t>(tw) * (t.y1 - t.y0));
+  if (!hints.empty()) DrawTileHints(t, hints.data(), tw);
   return hints;
 }
 
