@@ -145,9 +145,10 @@ inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsign
 // kMix (model 1), an unsure "equals W" is coded with the logistic mix of
 // the template's model and the nearest cells' model.
 template <bool kMix, typename Io>
-void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
-               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
-               int begin, int end) {
+[[gnu::always_inline]] inline void CodeCellRun(Io& io, TileModelTable& models, TileMixer<2>& mixer,
+                                               std::uint8_t* cur, const std::uint8_t* n1,
+                                               const std::uint8_t* n2, const std::uint8_t* hint_row,
+                                               int begin, int end) {
   for (int i = begin; i < end; ++i) {
     const unsigned hc = kHintClass[hint_row[i] & 15];
     const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + hc;
@@ -180,6 +181,22 @@ void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t
   }
 }
 
+// The decoder's state in a local for the run (see CodeTile): the cells
+// are stored as bytes, which may alias any object, so a decoder reached
+// through a reference would be reloaded from memory after every cell.
+template <bool kMix, typename Io>
+void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
+               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
+               int begin, int end) {
+  if constexpr (Io::kEncoding) {
+    CodeCellRun<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
+  } else {
+    Io local = io;
+    CodeCellRun<kMix>(local, models, mixer, cur, n1, n2, hint_row, begin, end);
+    io = local;
+  }
+}
+
 // Whether `len` bytes at a and b are equal; `full` says len ==
 // kBlockCells, which is compared inline (a library call per 16-cell block
 // costs as much as coding a cell).
@@ -207,7 +224,7 @@ struct TileRows {
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
 template <bool kMix, bool kFlags, typename Io>
-void CodeTile(Io& io, const TileRows& t) {
+void CodeTileScan(Io& io, const TileRows& t) {
   const int tw = t.width;
   const int th = t.height;
   const std::uint8_t* hints = t.hints;
@@ -322,6 +339,22 @@ void CodeTile(Io& io, const TileRows& t) {
     if constexpr (!Io::kEncoding) {
       std::memcpy(t.canvas + r * t.canvas_stride, cur, static_cast<std::size_t>(tw));
     }
+  }
+}
+
+// The decoder's state is copied into a local for the scan: the cells and
+// the models' counts are stored as bytes, which may alias any object, so
+// a decoder reached through a reference would be reloaded from memory after
+// every cell; a local whose address is never taken stays in registers
+// (decode ~10 % faster).
+template <bool kMix, bool kFlags, typename Io>
+void CodeTile(Io& io, const TileRows& t) {
+  if constexpr (Io::kEncoding) {
+    CodeTileScan<kMix, kFlags>(io, t);
+  } else {
+    Io local = io;
+    CodeTileScan<kMix, kFlags>(local, t);
+    io = local;
   }
 }
 
