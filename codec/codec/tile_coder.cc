@@ -114,15 +114,12 @@ class RowRing {
   std::vector<std::uint8_t> cells_;
 };
 
-// The 8-cell trinary template (spec "Cell context"): W, WW on this row;
-// NWW, NW, N, NE, NEE on the row below; NN two rows below.
-inline unsigned TemplateOf(const std::uint8_t* cur, const std::uint8_t* n1, const std::uint8_t* n2,
-                           int i) {
-  return cur[i - 1] +
-         3u * (cur[i - 2] +
-               3u * (n1[i - 2] +
-                     3u * (n1[i - 1] +
-                           3u * (n1[i] + 3u * (n1[i + 1] + 3u * (n1[i + 2] + 3u * n2[i]))))));
+// The 8-cell trinary template (spec "Cell context") of cell i: W, WW on
+// this row; NWW, NW, N, NE, NEE on the row below; NN two rows below, as
+// W + 3 (WW + 3 Below(i)), W the least significant digit.
+inline unsigned Below(const std::uint8_t* n1, const std::uint8_t* n2, int i) {
+  return n1[i - 2] +
+         3u * (n1[i - 1] + 3u * (n1[i] + 3u * (n1[i + 1] + 3u * (n1[i + 2] + 3u * n2[i]))));
 }
 
 // Codes cells [begin, end) of the row `cur` one by one. Each is coded as
@@ -149,10 +146,14 @@ template <bool kMix, typename Io>
                                                std::uint8_t* cur, const std::uint8_t* n1,
                                                const std::uint8_t* n2, const std::uint8_t* hint_row,
                                                int begin, int end) {
+  // W and WW are carried in registers rather than read back from `cur`
+  // (a store-to-load round trip on the path from one cell to the next);
+  // the rest of the template (Below) reads rows already coded.
+  unsigned west = cur[begin - 1];
+  unsigned west2 = cur[begin - 2];
   for (int i = begin; i < end; ++i) {
     const unsigned hc = kHintClass[hint_row[i] & 15];
-    const unsigned ctx = TemplateOf(cur, n1, n2, i) * kHintClasses + hc;
-    const unsigned west = cur[i - 1];
+    const unsigned ctx = (west + 3u * (west2 + 3u * Below(n1, n2, i))) * kHintClasses + hc;
     const unsigned v = Io::kEncoding ? cur[i] : 0;
     TileBitModel& equal = models[kEqualModel + ctx];
     int eq;
@@ -167,17 +168,19 @@ template <bool kMix, typename Io>
       equal.Update(eq);
       near.Update(eq);
     }
-    if (eq) {
-      cur[i] = static_cast<std::uint8_t>(west);
-      continue;
+    unsigned value = west;
+    if (!eq) {
+      // The two values other than W, in increasing order.
+      const unsigned lo = west == 0 ? 1 : 0;
+      const unsigned hi = west == 2 ? 1 : 2;
+      // Which of the two is decided by the nearest neighbours alone (W, N,
+      // NW, NE and the hint): a smaller table, learned faster.
+      const unsigned octx = NearContext(west, n1, i, hc);
+      value = io.Code(&models[kOtherModel + octx], v == hi) ? hi : lo;
     }
-    // The two values other than W, in increasing order.
-    const unsigned lo = west == 0 ? 1 : 0;
-    const unsigned hi = west == 2 ? 1 : 2;
-    // Which of the two is decided by the nearest neighbours alone (W, N,
-    // NW, NE and the hint): a smaller table, learned faster.
-    const unsigned octx = NearContext(west, n1, i, hc);
-    cur[i] = static_cast<std::uint8_t>(io.Code(&models[kOtherModel + octx], v == hi) ? hi : lo);
+    cur[i] = static_cast<std::uint8_t>(value);
+    west2 = west;
+    west = value;
   }
 }
 
