@@ -133,8 +133,7 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
                        const std::vector<FurnitureObject>& furniture) {
   for (const WallPolyline& wall : walls) {
     for (std::size_t i = 1; i < wall.points.size(); ++i) {
-      const CellIndex a = wall.points[i - 1], b = wall.points[i];
-      segments_.push_back({a, b, BoxOf({a, b})});
+      segments_.push_back({&wall.points[i - 1]});
     }
   }
   for (const RoomOutline& room : rooms) {
@@ -153,12 +152,17 @@ void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t 
   outlines_.push_back({&polygon, BoxOf(polygon), fill_bits, chain_bits, clear_on_chain});
 }
 
+BoundingBox LayerIndex::Segment::box() const {
+  return {std::min(ends[0].col, ends[1].col), std::min(ends[0].row, ends[1].row),
+          std::max(ends[0].col, ends[1].col), std::max(ends[0].row, ends[1].row)};
+}
+
 template <typename Item>
 LayerIndex::Buckets LayerIndex::MakeBuckets(const std::vector<Item>& list) {
   Buckets b;
   for (const Item& item : list) {
-    b.cols = std::max(b.cols, (std::max(item.box.max_col, 0) >> kBucketShift) + 1);
-    b.rows = std::max(b.rows, (std::max(item.box.max_row, 0) >> kBucketShift) + 1);
+    b.cols = std::max(b.cols, (std::max(item.box().max_col, 0) >> kBucketShift) + 1);
+    b.rows = std::max(b.rows, (std::max(item.box().max_row, 0) >> kBucketShift) + 1);
   }
   b.starts.assign(static_cast<std::size_t>(b.cols) * b.rows + 1, 0);
   // Two passes over the boxes' buckets: count, then place.
@@ -171,12 +175,12 @@ LayerIndex::Buckets LayerIndex::MakeBuckets(const std::vector<Item>& list) {
       for (int bx = bx0; bx <= bx1; ++bx) f(static_cast<std::size_t>(by) * b.cols + bx);
     }
   };
-  for (const Item& item : list) for_buckets(item.box, [&](std::size_t k) { ++b.starts[k + 1]; });
+  for (const Item& item : list) for_buckets(item.box(), [&](std::size_t k) { ++b.starts[k + 1]; });
   for (std::size_t k = 1; k < b.starts.size(); ++k) b.starts[k] += b.starts[k - 1];
   b.items.resize(b.starts.back());
   std::vector<std::uint32_t> fill(b.starts.begin(), b.starts.end() - 1);
   for (std::size_t i = 0; i < list.size(); ++i) {
-    for_buckets(list[i].box,
+    for_buckets(list[i].box(),
                 [&](std::size_t k) { b.items[fill[k]++] = static_cast<std::uint32_t>(i); });
   }
   return b;
@@ -225,8 +229,8 @@ void LayerIndex::DrawOutline(const Outline& outline, CellRect t, std::uint8_t* o
   // with (`flip` holds the flips as differences along the rows, so an edge
   // wholly left of the tile costs two writes); those right of it change
   // nothing inside.
-  const int r0 = std::max(t.y0, outline.box.min_row);
-  const int r1 = std::min(t.y1, outline.box.max_row);  // crossing rows stop below the top
+  const int r0 = std::max(t.y0, outline.box().min_row);
+  const int r1 = std::min(t.y1, outline.box().max_row);  // crossing rows stop below the top
   if (r0 < r1) {
     const std::size_t rows = static_cast<std::size_t>(r1 - r0);
     std::vector<std::uint8_t>& flip = scratch->flip;
@@ -306,17 +310,18 @@ void LayerIndex::DrawTileHints(CellRect t, std::uint8_t* out, std::ptrdiff_t str
   Scratch scratch;
   for (std::uint32_t i : ItemsNear(outline_buckets_, t)) {
     const Outline& outline = outlines_[i];
-    if (Overlaps(outline.box, t)) DrawOutline(outline, t, out, stride, &scratch);
+    if (Overlaps(outline.box(), t)) DrawOutline(outline, t, out, stride, &scratch);
   }
   for (std::uint32_t i : ItemsNear(segment_buckets_, t)) {
     const Segment& s = segments_[i];
-    if (!Overlaps(s.box, t)) continue;
+    if (!Overlaps(s.box(), t)) continue;
     const auto mark = [&](int c, int r) { out[(r - t.y0) * stride + (c - t.x0)] |= kHintWall; };
-    if (s.a == s.b) {
-      mark(s.a.col, s.a.row);  // inside: its box overlaps the tile
+    const CellIndex a = s.a(), b = s.b();
+    if (a == b) {
+      mark(a.col, a.row);  // inside: its box overlaps the tile
       continue;
     }
-    const EdgeRaster edge(s.a, s.b);
+    const EdgeRaster edge(a, b);
     edge.VisitInside(edge.n(), t, mark);
   }
 }
