@@ -274,9 +274,12 @@ void CodeTileScan(Io& io, const TileRows& t) {
         const int s_end = std::min(sb_end * kBlockCells, tw);
         const std::size_t s_len = static_cast<std::size_t>(s_end - s_begin);
         const std::size_t si = static_cast<std::size_t>(sb / kSuperBlocks);
+        // Hints equal over the row are equal over each of its parts: no
+        // comparison then (and likewise for a super-block's blocks).
         const bool super_hints_same =
-            r > 0 &&
-            (hints == nullptr || std::memcmp(hint_row + s_begin, hint_below + s_begin, s_len) == 0);
+            hints_same ||
+            (r > 0 && (hints == nullptr ||
+                       std::memcmp(hint_row + s_begin, hint_below + s_begin, s_len) == 0));
         const unsigned super_uniform =
             std::memcmp(n1 + s_begin - 1, n1 + s_begin, s_len + 1) == 0 ? 1u + n1[s_begin] : 0u;
         const unsigned super_ctx =
@@ -300,8 +303,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
           const std::size_t len = static_cast<std::size_t>(end - begin);
           const bool full = len == kBlockCells;
           const bool block_hints_same =
-              r > 0 &&
-              (hints == nullptr || SameCells(hint_row + begin, hint_below + begin, len, full));
+              super_hints_same ||
+              (r > 0 &&
+               (hints == nullptr || SameCells(hint_row + begin, hint_below + begin, len, full)));
           const unsigned above_right = b + 1 < blocks ? above_state[b + 1] : kStateNone;
           // Whether the row below is one value over the block and its two
           // neighbours (and which): a uniform area rarely starts a structure.
