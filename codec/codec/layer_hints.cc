@@ -256,6 +256,12 @@ void LayerIndex::DrawOutline(const Outline& outline, CellRect t, std::uint8_t* o
         continue;
       }
       if (std::min(a.col, b.col) >= t.x1) continue;
+      if (a.col == b.col) {
+        // A vertical edge (most room sides) crosses every row in its own
+        // column, here inside the tile: no division per row.
+        for (int r = lo; r <= hi; ++r) crossings.emplace_back(r, a.col);
+        continue;
+      }
       const EdgeRaster edge(a, b);
       for (int r = lo; r <= hi; ++r) {
         const int c = edge.CrossingCol(r);
