@@ -39,10 +39,12 @@ void OrSpan(std::uint8_t* p, int n, std::uint8_t bits) {
 
 bool Inside(int c, int r, CellRect t) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; }
 
-// The rasterisation of a -> b (RasterizeSegment, raster.h) as a function of
-// the step i in [0, n]. Along the major axis (the one with |delta| == n) the
-// cell moves exactly one per step, which lets a tile find its cells and
-// crossings without walking the rest of the edge.
+// The rasterisation of a -> b (RasterizeSegment, raster.h): step i in
+// [0, n] covers (a.col + floor((2 i dx + n) / 2n), a.row + floor((2 i dy +
+// n) / 2n)). Along the major axis (the one with |delta| == n) the cell moves
+// exactly one per step, which lets a tile find its cells and crossings
+// without walking the rest of the edge; along the other the floor is
+// stepped with a remainder rather than divided out per cell.
 class EdgeRaster {
  public:
   EdgeRaster(CellIndex a, CellIndex b)
@@ -51,13 +53,6 @@ class EdgeRaster {
         dy_(std::int64_t{b.row} - a.row),
         n_(std::max(std::llabs(dx_), std::llabs(dy_))) {}
   std::int64_t n() const { return n_; }
-  std::int64_t dy() const { return dy_; }
-  int Col(std::int64_t i) const {
-    return static_cast<int>(a_.col + FloorDiv(2 * i * dx_ + n_, 2 * n_));
-  }
-  int Row(std::int64_t i) const {
-    return static_cast<int>(a_.row + FloorDiv(2 * i * dy_ + n_, 2 * n_));
-  }
 
   // Visits the cells of steps [0, last] (n > 0) inside `t`. The minor
   // coordinate's floor division is stepped along (a remainder kept in
@@ -96,29 +91,62 @@ class EdgeRaster {
     }
   }
 
-  // The column at which the edge's steps cross between rows r and r + 1
-  // (dy != 0, r between the ends' rows, the upper one excluded): the
-  // column of the step's cell on row r, as FillChain (raster.h) takes it.
-  int CrossingCol(int r) const {
-    const bool steep = std::llabs(dy_) == n_;
-    if (dy_ > 0) {
-      // The last step on row r.
-      if (steep) return Col(r - a_.row);
-      std::int64_t lo = 0, hi = n_;  // Row(lo) <= r < Row(hi)
-      while (hi - lo > 1) {
-        const std::int64_t mid = (lo + hi) / 2;
-        (Row(mid) <= r ? lo : hi) = mid;
+  // Calls emit(r, c) for each step of the edge between rows r and r + 1
+  // with r in [lo, hi] (dy != 0): c is the column of the step's cell on row
+  // r, as FillChain (raster.h) takes it. Columns are stepped along, as in
+  // VisitInside.
+  template <typename Emit>
+  void VisitCrossings(int lo, int hi, Emit&& emit) const {
+    const std::int64_t two_n = 2 * n_;
+    if (std::llabs(dy_) == n_) {
+      // Steep: one row per step. Going up, the step from row r starts at
+      // cell r - a.row; going down, the step to row r ends at a.row - r.
+      // Either way the cell's index rises by one per row visited.
+      const std::int64_t i0 = dy_ > 0 ? lo - a_.row : a_.row - hi;
+      const std::int64_t count = hi - lo + 1;
+      const std::int64_t step = 2 * dx_;
+      std::int64_t q = FloorDiv(i0 * step + n_, two_n);
+      std::int64_t rem = i0 * step + n_ - q * two_n;
+      for (std::int64_t k = 0; k < count; ++k) {
+        const int r = static_cast<int>(dy_ > 0 ? lo + k : hi - k);
+        emit(r, static_cast<int>(a_.col + q));
+        rem += step;
+        if (rem >= two_n) {
+          rem -= two_n;
+          ++q;
+        } else if (rem < 0) {
+          rem += two_n;
+          --q;
+        }
       }
-      return Col(lo);
+      return;
     }
-    // Going down: the first step on row r.
-    if (steep) return Col(a_.row - r);
-    std::int64_t lo = 0, hi = n_;  // Row(lo) > r >= Row(hi)
-    while (hi - lo > 1) {
-      const std::int64_t mid = (lo + hi) / 2;
-      (Row(mid) <= r ? hi : lo) = mid;
+    // Shallow: one column per step, the row changing on some steps; walked
+    // cell by cell, with the row stepped along.
+    const std::int64_t sx = dx_ > 0 ? 1 : -1;
+    const std::int64_t step = 2 * dy_;
+    std::int64_t q = FloorDiv(n_, two_n);  // 0: step 0 is a itself
+    std::int64_t rem = n_ - q * two_n;
+    int row = a_.row;
+    for (std::int64_t i = 0; i < n_; ++i) {
+      rem += step;
+      if (rem >= two_n) {
+        rem -= two_n;
+        ++q;
+      } else if (rem < 0) {
+        rem += two_n;
+        --q;
+      }
+      const int next = static_cast<int>(a_.row + q);
+      if (next != row) {
+        // Up: the cell on row r is this one (i); down: the next (i + 1).
+        const int r = std::min(row, next);
+        if (r >= lo && r <= hi) {
+          emit(r, static_cast<int>(a_.col + sx * (next > row ? i : i + 1)));
+        }
+        row = next;
+      }
     }
-    return Col(hi);
   }
 
  private:
@@ -263,15 +291,14 @@ void LayerIndex::DrawOutline(const Outline& outline, CellRect t, std::uint8_t* o
         continue;
       }
       const EdgeRaster edge(a, b);
-      for (int r = lo; r <= hi; ++r) {
-        const int c = edge.CrossingCol(r);
+      edge.VisitCrossings(lo, hi, [&](int r, int c) {
         if (c < t.x0) {
           flip[r - r0] ^= 1;
           flip[r + 1 - r0] ^= 1;
         } else if (c < t.x1) {
           crossings.emplace_back(r, c);
         }
-      }
+      });
     }
     // The crossings by row (a counting sort: a room over a whole tile has
     // two on each of its rows), then by column within each row.
