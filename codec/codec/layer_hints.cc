@@ -15,6 +15,8 @@ namespace {
 // 1024-cell tile looks at few items it does not meet, large enough that a
 // room's box spans few buckets.
 constexpr int kBucketShift = 8;
+// Buckets an item may be listed in (see MakeBuckets).
+constexpr int kMaxBucketsPerItem = 4;
 
 BoundingBox BoxOf(const std::vector<CellIndex>& cells) {
   BoundingBox box{cells[0].col, cells[0].row, cells[0].col, cells[0].row};
@@ -200,6 +202,16 @@ LayerIndex::Buckets LayerIndex::MakeBuckets(const std::vector<Item>& list) {
     b.rows = std::max(b.rows, (std::max(item.box().max_row, 0) >> kBucketShift) + 1);
   }
   b.starts.assign(static_cast<std::size_t>(b.cols) * b.rows + 1, 0);
+  // An item listed in at most kMaxBucketsPerItem buckets, a wider one in
+  // `wide` (every tile looks at those): the index stays within a few bytes
+  // per item whatever a file's boxes span (long diagonal walls, corridors).
+  const auto wide = [](const BoundingBox& box) {
+    const std::int64_t w =
+        (std::max(box.max_col, 0) >> kBucketShift) - (std::max(box.min_col, 0) >> kBucketShift) + 1;
+    const std::int64_t h =
+        (std::max(box.max_row, 0) >> kBucketShift) - (std::max(box.min_row, 0) >> kBucketShift) + 1;
+    return w * h > kMaxBucketsPerItem;
+  };
   // Two passes over the boxes' buckets: count, then place.
   const auto for_buckets = [&](const BoundingBox& box, auto&& f) {
     const int bx0 = std::max(box.min_col, 0) >> kBucketShift;
@@ -210,13 +222,21 @@ LayerIndex::Buckets LayerIndex::MakeBuckets(const std::vector<Item>& list) {
       for (int bx = bx0; bx <= bx1; ++bx) f(static_cast<std::size_t>(by) * b.cols + bx);
     }
   };
-  for (const Item& item : list) for_buckets(item.box(), [&](std::size_t k) { ++b.starts[k + 1]; });
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const BoundingBox box = list[i].box();
+    if (wide(box)) {
+      b.wide.push_back(static_cast<std::uint32_t>(i));
+    } else {
+      for_buckets(box, [&](std::size_t k) { ++b.starts[k + 1]; });
+    }
+  }
   for (std::size_t k = 1; k < b.starts.size(); ++k) b.starts[k] += b.starts[k - 1];
   b.items.resize(b.starts.back());
   std::vector<std::uint32_t> fill(b.starts.begin(), b.starts.end() - 1);
   for (std::size_t i = 0; i < list.size(); ++i) {
-    for_buckets(list[i].box(),
-                [&](std::size_t k) { b.items[fill[k]++] = static_cast<std::uint32_t>(i); });
+    const BoundingBox box = list[i].box();
+    if (wide(box)) continue;
+    for_buckets(box, [&](std::size_t k) { b.items[fill[k]++] = static_cast<std::uint32_t>(i); });
   }
   return b;
 }
@@ -235,7 +255,8 @@ std::vector<std::uint32_t> LayerIndex::ItemsNear(const Buckets& b, CellRect t) {
       items.insert(items.end(), b.items.begin() + b.starts[k], b.items.begin() + b.starts[k + 1]);
     }
   }
-  if (bx0 != bx1 || by0 != by1) {
+  items.insert(items.end(), b.wide.begin(), b.wide.end());
+  if (bx0 != bx1 || by0 != by1 || !b.wide.empty()) {
     std::sort(items.begin(), items.end());
     items.erase(std::unique(items.begin(), items.end()), items.end());
   }

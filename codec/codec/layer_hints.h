@@ -58,11 +58,12 @@ class LayerIndex {
   };
   // Items (segment or outline numbers) whose box meets each bucket, as one
   // array with offsets (bucket b's items are items[starts[b], starts[b+1]),
-  // increasing).
+  // increasing), and the items too wide to list per bucket.
   struct Buckets {
     int cols = 0, rows = 0;
     std::vector<std::uint32_t> starts;
     std::vector<std::uint32_t> items;
+    std::vector<std::uint32_t> wide;
   };
   void AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t fill_bits,
                   std::uint8_t chain_bits, std::uint8_t clear_on_chain);
