@@ -32,7 +32,11 @@ inline constexpr std::uint32_t kRangeTop = 1u << 24;
 struct BitModel {
   static constexpr std::uint16_t kHalf = 1u << (kProbBits - 1);
   std::uint16_t p_xor_half;  // p() ^ kHalf
-  std::uint8_t n;            // updates so far, saturating at kAdaptSteps
+  // Updates so far, saturating at kAdaptSteps. Not a byte: a store to a
+  // byte may alias any object, which would make the coders reload their
+  // state from memory after every model update (same size: the struct is
+  // padded to 4 bytes anyway).
+  std::uint16_t n;
   std::uint32_t p() const { return p_xor_half ^ kHalf; }
   void Update(int bit) {
     const std::uint32_t old = p();
@@ -44,6 +48,7 @@ struct BitModel {
   }
 };
 static_assert(std::is_trivially_default_constructible_v<BitModel>);
+static_assert(sizeof(BitModel) == 4);
 
 // `size` models in their initial state. The plane coders make tens of
 // thousands per plane; set one by one (as a std::vector fills them) or even

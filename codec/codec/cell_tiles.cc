@@ -116,9 +116,17 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
     const CellRect t = layout.Tile(i);
     const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
     const std::vector<std::uint8_t> hints = layers.TileHints(t);
+    const std::uint8_t* data = body.data() + base + offsets[i];
+    const std::size_t size = offsets[i + 1] - offsets[i];
+    if (t.x0 >= window.x0 && t.x1 <= window.x1 && t.y0 >= window.y0 && t.y1 <= window.y1) {
+      // A tile inside the window decodes straight into it.
+      status[k] = DecodeTileRows(
+          data, size, hints.data(), tw, tw, th,
+          out + static_cast<std::ptrdiff_t>(t.y0 - window.y0) * ww + (t.x0 - window.x0), ww);
+      return;
+    }
     std::vector<Cell> cells(static_cast<std::size_t>(tw) * th, Cell::kUnknown);
-    status[k] = DecodeTileCells(body.data() + base + offsets[i], offsets[i + 1] - offsets[i],
-                                hints.data(), tw, th, CellRect{0, 0, tw, th}, cells.data());
+    status[k] = DecodeTileRows(data, size, hints.data(), tw, tw, th, cells.data(), tw);
     if (!status[k].ok()) return;
     const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
     for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {

@@ -89,7 +89,7 @@ Status WriteCellBands(const V2File& file, const DecodeLimits& limits, const std:
     for (int col0 = 0; col0 < width; col0 += bands.cols) {
       const int col1 = std::min(width, col0 + bands.cols);
       const std::size_t n = static_cast<std::size_t>(col1 - col0) * (row1 - row0);
-      std::fill_n(band.begin(), n, Cell::kUnknown);
+      // No fill first: the tiles cover the band, and each writes its cells.
       const Status decoded =
           cells.Decode(CellRect{col0, row0, col1, row1}, limits.max_threads, band.data());
       if (!decoded.ok()) return decoded.WithContext(where);

@@ -232,8 +232,12 @@ StatusOr<LmapContents> LoadLmapContents(const std::string& path, const DecodeLim
 }
 
 StatusOr<Grid> LoadLmap(const std::string& path, const DecodeLimits& limits) {
-  LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, LoadLmapContents(path, limits));
-  return std::move(contents.grid);
+  // Through DecodeLmap: the grid alone, without the layers' chains.
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, limits.max_file_bytes));
+  StatusOr<Grid> grid = DecodeLmap(bytes, limits);
+  if (!grid.ok()) return grid.status().WithContext("'" + path + "'");
+  return grid;
 }
 
 }  // namespace linemap

@@ -40,7 +40,9 @@ struct TileBitModel {
 
   std::uint16_t fast_x;  // fast estimate XOR kHalf
   std::uint16_t slow_x;  // slow estimate XOR kHalf
-  std::uint8_t n;        // updates so far, saturating at kCountLimit
+  // Updates so far, saturating at kCountLimit; 16 bits rather than a byte,
+  // whose stores may alias anything (same size: padded to 6 bytes).
+  std::uint16_t n;
 
   std::uint32_t p0() const { return ((fast_x ^ kHalf) + (slow_x ^ kHalf)) >> 1; }
   void Update(int bit) {
@@ -63,6 +65,7 @@ struct TileBitModel {
   }
 };
 static_assert(std::is_trivially_default_constructible_v<TileBitModel>);
+static_assert(sizeof(TileBitModel) == 6);
 
 // `size` models in their initial state, from calloc: fresh pages cost
 // nothing until a context is first used, which matters for small tiles.
