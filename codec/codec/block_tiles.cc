@@ -91,9 +91,9 @@ std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cell
   return std::move(out.mutable_bytes());
 }
 
-// Decodes one tile's data into `cells` (w x h, row-major).
-Status DecodeTile(const std::uint8_t* data, std::size_t size, int w, int h, int f,
-                  std::vector<Cell>* cells) {
+// Decodes one tile's data: row r of its w x h cells at cells + r * stride.
+Status DecodeTile(const std::uint8_t* data, std::size_t size, int w, int h, int f, Cell* cells,
+                  std::ptrdiff_t stride) {
   ByteCursor cursor(data, size);
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t blocks_len, cursor.ReadVarint("block data length"));
   if (blocks_len > cursor.remaining()) return CorruptError("block data past the tile's end");
@@ -102,9 +102,8 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, int w, int h, int 
   LINEMAP_RETURN_IF_ERROR(DecodeTileCells(at, blocks_len, nullptr, b.bw, b.bh,
                                           CellRect{0, 0, b.bw, b.bh}, b.blocks.data()));
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
-  cells->assign(static_cast<std::size_t>(w) * h, Cell::kUnknown);
-  return DecodeTileCells(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, h,
-                         CellRect{0, 0, w, h}, cells->data());
+  return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h,
+                        cells, stride);
 }
 
 }  // namespace
@@ -159,27 +158,12 @@ Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, int width, int he
   }
   const TileLayout layout(width, height, static_cast<int>(tile_size));
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
-  const std::vector<std::uint64_t> wanted = TilesMeeting(layout, window);
-  const int ww = window.x1 - window.x0;
-  std::vector<Status> status(wanted.size());
-  ForEachIndexParallel(wanted.size(), threads, [&](std::uint64_t k) {
-    const std::uint64_t i = wanted[k];
-    const CellRect t = layout.Tile(i);
-    const int tw = t.x1 - t.x0;
-    std::vector<Cell> cells;
-    status[k] = DecodeTile(body.data() + index.base + index.offsets[i],
-                           index.offsets[i + 1] - index.offsets[i], tw, t.y1 - t.y0, f, &cells);
-    if (!status[k].ok()) return;
-    const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
-    for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {
-      std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw + (c0 - t.x0), c1 - c0,
-                  out + static_cast<std::ptrdiff_t>(r - window.y0) * ww + (c0 - window.x0));
-    }
-  });
-  for (std::size_t k = 0; k < wanted.size(); ++k) {
-    if (!status[k].ok()) return status[k].WithContext("tile " + std::to_string(wanted[k]));
-  }
-  return Status::Ok();
+  return DecodeTilesInWindow(body, layout, index, window, threads, out,
+                             [f](CellRect t, const std::uint8_t* data, std::size_t size,
+                                 Cell* cells, std::ptrdiff_t stride) {
+                               return DecodeTile(data, size, t.x1 - t.x0, t.y1 - t.y0, f, cells,
+                                                 stride);
+                             });
 }
 
 }  // namespace linemap

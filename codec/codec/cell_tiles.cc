@@ -7,6 +7,7 @@
 #include <system_error>
 #include <thread>
 
+#include "codec/codec/tile_index.h"
 #include "format/byte_io.h"
 
 namespace linemap {
@@ -89,55 +90,15 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
     return CorruptError("tile size " + std::to_string(tile_size) + " outside 16..65536");
   }
   const TileLayout layout(width, height, static_cast<int>(tile_size));
-  // Every tile's length takes at least one byte: a count the body cannot
-  // hold is corrupt before anything is allocated for it.
-  if (layout.count() > cursor.remaining()) return CorruptError("tile index past the chunk's end");
-  std::vector<std::uint64_t> offsets(layout.count() + 1, 0);
-  for (std::uint64_t i = 0; i < layout.count(); ++i) {
-    LINEMAP_ASSIGN_OR_RETURN(std::uint64_t len, cursor.ReadVarint("tile length"));
-    if (len > body.size()) return CorruptError("tile length past the chunk's end");
-    offsets[i + 1] = offsets[i] + len;
-  }
-  const std::size_t base = cursor.position();
-  if (offsets.back() != body.size() - base) {
-    return CorruptError("tile lengths do not add up to the chunk's size");
-  }
-  std::vector<std::uint64_t> wanted;
-  for (std::uint64_t i = 0; i < layout.count(); ++i) {
-    const CellRect t = layout.Tile(i);
-    if (t.x1 > window.x0 && t.x0 < window.x1 && t.y1 > window.y0 && t.y0 < window.y1) {
-      wanted.push_back(i);
-    }
-  }
-  const int ww = window.x1 - window.x0;
-  std::vector<Status> status(wanted.size());
-  ForEachIndexParallel(wanted.size(), threads, [&](std::uint64_t k) {
-    const std::uint64_t i = wanted[k];
-    const CellRect t = layout.Tile(i);
-    const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
-    const std::vector<std::uint8_t> hints = layers.TileHints(t);
-    const std::uint8_t* data = body.data() + base + offsets[i];
-    const std::size_t size = offsets[i + 1] - offsets[i];
-    if (t.x0 >= window.x0 && t.x1 <= window.x1 && t.y0 >= window.y0 && t.y1 <= window.y1) {
-      // A tile inside the window decodes straight into it.
-      status[k] = DecodeTileRows(
-          data, size, hints.data(), tw, tw, th,
-          out + static_cast<std::ptrdiff_t>(t.y0 - window.y0) * ww + (t.x0 - window.x0), ww);
-      return;
-    }
-    std::vector<Cell> cells(static_cast<std::size_t>(tw) * th, Cell::kUnknown);
-    status[k] = DecodeTileRows(data, size, hints.data(), tw, tw, th, cells.data(), tw);
-    if (!status[k].ok()) return;
-    const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
-    for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {
-      std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw + (c0 - t.x0), c1 - c0,
-                  out + static_cast<std::ptrdiff_t>(r - window.y0) * ww + (c0 - window.x0));
-    }
-  });
-  for (std::size_t k = 0; k < wanted.size(); ++k) {
-    if (!status[k].ok()) return status[k].WithContext("tile " + std::to_string(wanted[k]));
-  }
-  return Status::Ok();
+  LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
+  return DecodeTilesInWindow(body, layout, index, window, threads, out,
+                             [&](CellRect t, const std::uint8_t* data, std::size_t size,
+                                 Cell* cells, std::ptrdiff_t stride) {
+                               const int tw = t.x1 - t.x0;
+                               const std::vector<std::uint8_t> hints = layers.TileHints(t);
+                               return DecodeTileRows(data, size, hints.data(), tw, tw, t.y1 - t.y0,
+                                                     cells, stride);
+                             });
 }
 
 }  // namespace linemap

@@ -1,6 +1,9 @@
 // The tile index of CELL and BLKS (spec/format.md 6.1).
 #include "codec/codec/tile_index.h"
 
+#include <algorithm>
+#include <string>
+
 namespace linemap {
 
 StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const TileLayout& layout,
@@ -29,6 +32,40 @@ std::vector<std::uint64_t> TilesMeeting(const TileLayout& layout, CellRect windo
     }
   }
   return wanted;
+}
+
+Status DecodeTilesInWindow(const std::vector<std::uint8_t>& body, const TileLayout& layout,
+                           const TileIndex& index, CellRect window, int threads, Cell* out,
+                           const TileDecoder& decode) {
+  const std::vector<std::uint64_t> wanted = TilesMeeting(layout, window);
+  const int ww = window.x1 - window.x0;
+  std::vector<Status> status(wanted.size());
+  ForEachIndexParallel(wanted.size(), threads, [&](std::uint64_t k) {
+    const std::uint64_t i = wanted[k];
+    const CellRect t = layout.Tile(i);
+    const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+    const std::uint8_t* data = body.data() + index.base + index.offsets[i];
+    const std::size_t size = index.offsets[i + 1] - index.offsets[i];
+    if (t.x0 >= window.x0 && t.x1 <= window.x1 && t.y0 >= window.y0 && t.y1 <= window.y1) {
+      // A tile inside the window decodes straight into it.
+      status[k] =
+          decode(t, data, size,
+                 out + static_cast<std::ptrdiff_t>(t.y0 - window.y0) * ww + (t.x0 - window.x0), ww);
+      return;
+    }
+    std::vector<Cell> cells(static_cast<std::size_t>(tw) * th, Cell::kUnknown);
+    status[k] = decode(t, data, size, cells.data(), tw);
+    if (!status[k].ok()) return;
+    const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
+    for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {
+      std::copy_n(cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw + (c0 - t.x0), c1 - c0,
+                  out + static_cast<std::ptrdiff_t>(r - window.y0) * ww + (c0 - window.x0));
+    }
+  });
+  for (std::size_t k = 0; k < wanted.size(); ++k) {
+    if (!status[k].ok()) return status[k].WithContext("tile " + std::to_string(wanted[k]));
+  }
+  return Status::Ok();
 }
 
 }  // namespace linemap

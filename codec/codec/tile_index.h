@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "codec/codec/cell_tiles.h"
@@ -28,6 +29,19 @@ StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const T
 
 // The tiles (raster order) that meet `window`.
 std::vector<std::uint64_t> TilesMeeting(const TileLayout& layout, CellRect window);
+
+// Writes the cells of tile `tile` from its `size` bytes at `data`: row r of
+// the tile at cells + r * stride.
+using TileDecoder = std::function<Status(CellRect tile, const std::uint8_t* data, std::size_t size,
+                                         Cell* cells, std::ptrdiff_t stride)>;
+
+// Decodes the tiles that meet `window` (inside the grid, non-empty) into
+// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0, on up to
+// `threads` threads: a tile inside the window straight into `out`, others
+// through a buffer of their own. Errors name the tile.
+Status DecodeTilesInWindow(const std::vector<std::uint8_t>& body, const TileLayout& layout,
+                           const TileIndex& index, CellRect window, int threads, Cell* out,
+                           const TileDecoder& decode);
 
 }  // namespace linemap
 
