@@ -67,22 +67,12 @@ TileBlocks GatherBlocks(const BlockCells& cells, CellRect t) {
   return b;
 }
 
-std::vector<Cell> TileCellsOf(const Grid& grid, CellRect t) {
-  const int tw = t.x1 - t.x0;
-  std::vector<Cell> cells(static_cast<std::size_t>(tw) * (t.y1 - t.y0));
-  for (int r = t.y0; r < t.y1; ++r) {
-    std::copy_n(grid.cells().begin() + static_cast<std::ptrdiff_t>(grid.Index(t.x0, r)), tw,
-                cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw);
-  }
-  return cells;
-}
-
 std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cells, CellRect t) {
   const int w = t.x1 - t.x0, h = t.y1 - t.y0, f = cells.block_cells;
   const TileBlocks b = GatherBlocks(cells, t);
   const std::vector<std::uint8_t> blocks = EncodeTileCells(b.blocks.data(), nullptr, b.bw, b.bh,
                                                            CellRect{0, 0, b.bw, b.bh}, kBlockModel);
-  const std::vector<Cell> tile = TileCellsOf(decoded, t);
+  const std::vector<Cell> tile = TileCells(decoded, t);
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
   ByteWriter out;
   out.PutVarint(blocks.size());

@@ -48,10 +48,6 @@ void ForEachIndexParallel(std::uint64_t n, int threads,
   for (std::thread& t : pool) t.join();
 }
 
-namespace {
-
-// The tile's cells as a tile-sized array (the tile coder sees the tile as a
-// grid of its own, so it cannot read past it).
 std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
   const int tw = t.x1 - t.x0;
   std::vector<Cell> cells(static_cast<std::size_t>(tw) * (t.y1 - t.y0));
@@ -61,8 +57,6 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
   }
   return cells;
 }
-
-}  // namespace
 
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads) {

@@ -41,6 +41,10 @@ struct TileLayout {
 void ForEachIndexParallel(std::uint64_t n, int threads,
                           const std::function<void(std::uint64_t)>& body);
 
+// The tile's cells as a tile-sized array, row-major (the tile coder sees
+// the tile as a grid of its own, so it cannot read past it).
+std::vector<Cell> TileCells(const Grid& grid, CellRect t);
+
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads);
 
