@@ -116,9 +116,11 @@ Grid ComposeBlockCells(const Grid& original, const BlockCells& b) {
 StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const BlockCells& blocks,
                                                      int tile_size, int threads) {
   const int f = blocks.block_cells;
-  if (f < kMinBlockCells || f > kMaxBlockCells || tile_size % f != 0) {
+  if (f < kMinBlockCells || f > kMaxBlockCells || tile_size < kMinTileSize ||
+      tile_size > kMaxTileSize || tile_size % f != 0) {
     return InvalidArgumentError("tile size " + std::to_string(tile_size) +
-                                " is not a multiple of the block side " + std::to_string(f));
+                                " is outside 16..65536 or not a multiple of the block side " +
+                                std::to_string(f));
   }
   const TileLayout layout(original.width(), original.height(), tile_size);
   std::vector<std::vector<std::uint8_t>> tiles(layout.count());

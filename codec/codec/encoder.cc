@@ -97,7 +97,9 @@ StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
   *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
                        [](std::uint8_t r) { return r != 0; });
   const int f = blocks.block_cells;
-  return EncodeBlockChunk(grid, blocks, options.tile_size_cells / f * f, options.max_threads);
+  int tile = options.tile_size_cells / f * f;
+  if (tile < kMinTileSize) tile += f;  // a side of 16 with blocks of 3 or 5
+  return EncodeBlockChunk(grid, blocks, tile, options.max_threads);
 }
 
 }  // namespace
