@@ -71,6 +71,137 @@ void AddOnWalls(const Grid& grid, const LatticeSegment& s, std::vector<LatticeSe
   flush();
 }
 
+double PointSegmentDistance(CellIndex p, CellIndex a, CellIndex b) {
+  const double dx = b.col - a.col, dy = b.row - a.row;
+  const double px = p.col - a.col, py = p.row - a.row;
+  const double len2 = dx * dx + dy * dy;
+  const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
+  return std::hypot(px - t * dx, py - t * dy);
+}
+
+// The edge cells of the grid (occupied, with a free 4-neighbour): what
+// `linemap eval` measures the walls against (MeasureLayerFidelity).
+class EdgeCells {
+ public:
+  explicit EdgeCells(const Grid& grid) : grid_(grid), edge_(grid.cells().size(), 0) {
+    constexpr int kDc[4] = {1, -1, 0, 0}, kDr[4] = {0, 0, 1, -1};
+    for (int r = 0; r < grid.height(); ++r) {
+      for (int c = 0; c < grid.width(); ++c) {
+        if (grid.at(c, r) != Cell::kOccupied) continue;
+        for (int k = 0; k < 4; ++k) {
+          const int nc = c + kDc[k], nr = r + kDr[k];
+          if (grid.Contains(nc, nr) && grid.at(nc, nr) == Cell::kFree) {
+            edge_[grid.Index(c, r)] = 1;
+            break;
+          }
+        }
+      }
+    }
+  }
+  bool at(int c, int r) const { return edge_[grid_.Index(c, r)] != 0; }
+
+  // Edge cells the segment's rasterisation runs through.
+  int OnSegment(const LatticeSegment& s) const {
+    int hits = 0;
+    RasterizeSegment(s.a, s.b, [&](int c, int r) { hits += at(c, r) ? 1 : 0; });
+    return hits;
+  }
+
+  // The edge cells within one cell (Euclidean, to the segment) of the
+  // segment, as sorted cell indices: the ones eval counts as held by it.
+  // They lie within two cells of the segment's rasterisation.
+  std::vector<std::size_t> Held(const LatticeSegment& s) const {
+    std::vector<std::size_t> cells;
+    RasterizeSegment(s.a, s.b, [&](int c, int r) {
+      for (int dr = -2; dr <= 2; ++dr) {
+        for (int dc = -2; dc <= 2; ++dc) {
+          const int x = c + dc, y = r + dr;
+          if (grid_.Contains(x, y) && at(x, y) && PointSegmentDistance({x, y}, s.a, s.b) <= 1.0) {
+            cells.push_back(grid_.Index(x, y));
+          }
+        }
+      }
+    });
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    return cells;
+  }
+
+ private:
+  const Grid& grid_;
+  std::vector<std::uint8_t> edge_;
+};
+
+// Moves each end of a segment by at most one cell (either axis) where the
+// moved segment runs through more edge cells, still holds every edge cell
+// it held (EdgeCells::Held) and stays on the walls. The extractor fits its
+// lines between the faces of a wall and rounding puts them a cell off; on
+// the faces their hints (spec/format.md 6.2) mark the cells the tile coder
+// has to code. Measured on the 25 maps of ../shared/maps: CELL -1.0 %,
+// WALL -0.3 %, edge cells held 0.9443 -> 0.9465 (mean over the maps).
+void SnapToFaces(const Grid& grid, const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
+  for (LatticeSegment& s : *segments) {
+    const int hits = edges.OnSegment(s);
+    std::vector<std::pair<int, LatticeSegment>> better;
+    for (int a = 0; a < 9; ++a) {
+      for (int b = 0; b < 9; ++b) {
+        const LatticeSegment t{{s.a.col + a % 3 - 1, s.a.row + a / 3 - 1},
+                               {s.b.col + b % 3 - 1, s.b.row + b / 3 - 1}};
+        if (t.a == t.b || !grid.Contains(t.a.col, t.a.row) || !grid.Contains(t.b.col, t.b.row)) {
+          continue;
+        }
+        const int h = edges.OnSegment(t);
+        if (h > hits) better.push_back({h, t});
+      }
+    }
+    if (better.empty()) continue;
+    // Most edge cells first; ties in the order tried, so the result is
+    // deterministic.
+    std::stable_sort(better.begin(), better.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    const std::vector<std::size_t> held = edges.Held(s);
+    for (const auto& [h, t] : better) {
+      if (!OnWalls(grid, t)) continue;
+      const std::vector<std::size_t> moved = edges.Held(t);
+      if (std::includes(moved.begin(), moved.end(), held.begin(), held.end())) {
+        s = t;
+        break;
+      }
+    }
+  }
+}
+
+// Drops, fewest held edge cells first, each segment whose every held edge
+// cell another kept segment holds too: a broken or doubled wall piece costs
+// some 20 bits in WALL and adds nothing to what the walls hold (eval's
+// share of edge cells within one cell of a wall stays). Measured on the 25
+// maps of ../shared/maps: WALL -7.5 %, CELL +0.6 % (fewer hints).
+void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
+  std::vector<std::vector<std::size_t>> held(segments->size());
+  std::unordered_map<std::size_t, int> holders;
+  for (std::size_t i = 0; i < segments->size(); ++i) {
+    held[i] = edges.Held((*segments)[i]);
+    for (std::size_t c : held[i]) ++holders[c];
+  }
+  std::vector<std::size_t> order(segments->size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return held[a].size() < held[b].size(); });
+  std::vector<bool> keep(segments->size(), true);
+  for (std::size_t i : order) {
+    const bool redundant =
+        std::all_of(held[i].begin(), held[i].end(), [&](std::size_t c) { return holders[c] >= 2; });
+    if (!redundant) continue;
+    keep[i] = false;
+    for (std::size_t c : held[i]) --holders[c];
+  }
+  std::vector<LatticeSegment> kept;
+  for (std::size_t i = 0; i < segments->size(); ++i) {
+    if (keep[i]) kept.push_back((*segments)[i]);
+  }
+  *segments = std::move(kept);
+}
+
 StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
   std::vector<LatticeSegment> segments;
@@ -78,15 +209,10 @@ StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOpti
   for (const LineSegment& line : lines) {
     AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
+  const EdgeCells edges(grid);
+  SnapToFaces(grid, edges, &segments);
+  DropRedundantSegments(edges, &segments);
   return JoinSegments(segments);
-}
-
-double PointSegmentDistance(CellIndex p, CellIndex a, CellIndex b) {
-  const double dx = b.col - a.col, dy = b.row - a.row;
-  const double px = p.col - a.col, py = p.row - a.row;
-  const double len2 = dx * dx + dy * dy;
-  const double t = len2 > 0 ? std::clamp((px * dx + py * dy) / len2, 0.0, 1.0) : 0.0;
-  return std::hypot(px - t * dx, py - t * dy);
 }
 
 // Room and furniture borders are stored as polygons (spec/format.md 5.3):
