@@ -79,6 +79,11 @@ double PointSegmentDistance(CellIndex p, CellIndex a, CellIndex b) {
   return std::hypot(px - t * dx, py - t * dy);
 }
 
+// Edge cells this near a segment (cells) count as near it when segments are
+// moved or dropped: eval's one cell, and the cells just beyond, whose
+// distance to the nearest wall DisPL_ave averages too.
+constexpr double kNearCells = 1.5;
+
 // The edge cells of the grid (occupied, with a free 4-neighbour): what
 // `linemap eval` measures the walls against (MeasureLayerFidelity).
 class EdgeCells {
@@ -100,25 +105,18 @@ class EdgeCells {
   }
   bool at(int c, int r) const { return edge_[grid_.Index(c, r)] != 0; }
 
-  // Edge cells the segment's rasterisation runs through.
-  int OnSegment(const LatticeSegment& s) const {
-    int hits = 0;
-    RasterizeSegment(s.a, s.b, [&](int c, int r) { hits += at(c, r) ? 1 : 0; });
-    return hits;
-  }
-
-  // The edge cells within one cell (Euclidean, to the segment) of the
-  // segment, as sorted cell indices: the ones eval counts as held by it.
-  // They lie within two cells of the segment's rasterisation.
-  std::vector<std::size_t> Held(const LatticeSegment& s) const {
-    std::vector<std::size_t> cells;
+  // The edge cells within kNearCells (Euclidean, to the segment) of the
+  // segment with their distances, by cell index. They lie within two cells
+  // of the segment's rasterisation.
+  std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s) const {
+    std::vector<std::pair<std::size_t, double>> cells;
     RasterizeSegment(s.a, s.b, [&](int c, int r) {
       for (int dr = -2; dr <= 2; ++dr) {
         for (int dc = -2; dc <= 2; ++dc) {
           const int x = c + dc, y = r + dr;
-          if (grid_.Contains(x, y) && at(x, y) && PointSegmentDistance({x, y}, s.a, s.b) <= 1.0) {
-            cells.push_back(grid_.Index(x, y));
-          }
+          if (!grid_.Contains(x, y) || !at(x, y)) continue;
+          const double d = PointSegmentDistance({x, y}, s.a, s.b);
+          if (d <= kNearCells) cells.push_back({grid_.Index(x, y), d});
         }
       }
     });
@@ -132,38 +130,59 @@ class EdgeCells {
   std::vector<std::uint8_t> edge_;
 };
 
-// Moves each end of a segment by at most one cell (either axis) where the
-// moved segment runs through more edge cells, still holds every edge cell
-// it held (EdgeCells::Held) and stays on the walls. The extractor fits its
-// lines between the faces of a wall and rounding puts them a cell off; on
-// the faces their hints (spec/format.md 6.2) mark the cells the tile coder
-// has to code. Measured on the 25 maps of ../shared/maps: CELL -1.0 %,
-// WALL -0.3 %, edge cells held 0.9443 -> 0.9465 (mean over the maps).
-void SnapToFaces(const Grid& grid, const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
+// Ends of a slanted segment moved by at most one cell across its main axis
+// where that makes it axis-aligned: the extractor fits its lines between a
+// wall's faces and rounding tilts a straight wall by a cell or two; an
+// axis-aligned step codes without the offset across (spec/format.md 5.2).
+// Only when the moved segment stays on the walls, still holds every edge
+// cell within one cell that it held, and is no more than kMoveSlack farther
+// from any edge cell near it (eval's DisPL_ave barely moves). Measured on
+// the 25 maps of ../shared/maps with DropRedundantSegments: WALL 42,305 ->
+// 41,969 bytes, CELL 119,389 -> 119,221; edge cells within one cell of a
+// wall 0.9443 -> 0.9444, DisPL_ave 1.1700 -> 1.1686 cells (means over the
+// maps); a slack of one cell saved 2,100 more WALL bytes but cost 2,000
+// CELL bytes and raised DisPL_ave 2 %.
+constexpr double kMoveSlack = 0.5;  // cells
+
+void StraightenSegments(const Grid& grid, const EdgeCells& edges,
+                        std::vector<LatticeSegment>* segments) {
   for (LatticeSegment& s : *segments) {
-    const int hits = edges.OnSegment(s);
-    std::vector<std::pair<int, LatticeSegment>> better;
-    for (int a = 0; a < 9; ++a) {
-      for (int b = 0; b < 9; ++b) {
-        const LatticeSegment t{{s.a.col + a % 3 - 1, s.a.row + a / 3 - 1},
-                               {s.b.col + b % 3 - 1, s.b.row + b / 3 - 1}};
-        if (t.a == t.b || !grid.Contains(t.a.col, t.a.row) || !grid.Contains(t.b.col, t.b.row)) {
-          continue;
+    const int dc = s.b.col - s.a.col, dr = s.b.row - s.a.row;
+    if (dc == 0 || dr == 0) continue;
+    const bool col_main = std::abs(dc) >= std::abs(dr);
+    const int minor = col_main ? dr : dc;
+    if (std::abs(minor) > 2) continue;
+    const std::vector<std::pair<std::size_t, double>> near = edges.Near(s);
+    // Candidates: a and b each moved by up to one cell across the main axis.
+    std::vector<LatticeSegment> cands;
+    for (int ma = -1; ma <= 1; ++ma) {
+      for (int mb = -1; mb <= 1; ++mb) {
+        LatticeSegment t = s;
+        if (col_main) {
+          t.a.row += ma;
+          t.b.row += mb;
+          if (t.a.row != t.b.row) continue;
+        } else {
+          t.a.col += ma;
+          t.b.col += mb;
+          if (t.a.col != t.b.col) continue;
         }
-        const int h = edges.OnSegment(t);
-        if (h > hits) better.push_back({h, t});
+        if (!grid.Contains(t.a.col, t.a.row) || !grid.Contains(t.b.col, t.b.row)) continue;
+        cands.push_back(t);
       }
     }
-    if (better.empty()) continue;
-    // Most edge cells first; ties in the order tried, so the result is
-    // deterministic.
-    std::stable_sort(better.begin(), better.end(),
-                     [](const auto& x, const auto& y) { return x.first > y.first; });
-    const std::vector<std::size_t> held = edges.Held(s);
-    for (const auto& [h, t] : better) {
+    for (const LatticeSegment& t : cands) {
       if (!OnWalls(grid, t)) continue;
-      const std::vector<std::size_t> moved = edges.Held(t);
-      if (std::includes(moved.begin(), moved.end(), held.begin(), held.end())) {
+      bool ok = true;
+      for (const auto& [c, d] : near) {
+        const CellIndex p{static_cast<int>(c % grid.width()), static_cast<int>(c / grid.width())};
+        const double nd = PointSegmentDistance(p, t.a, t.b);
+        if ((d <= 1.0 && nd > 1.0) || nd > d + kMoveSlack) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) {
         s = t;
         break;
       }
@@ -171,29 +190,46 @@ void SnapToFaces(const Grid& grid, const EdgeCells& edges, std::vector<LatticeSe
   }
 }
 
-// Drops, fewest held edge cells first, each segment whose every held edge
-// cell another kept segment holds too: a broken or doubled wall piece costs
-// some 20 bits in WALL and adds nothing to what the walls hold (eval's
-// share of edge cells within one cell of a wall stays). Measured on the 25
-// maps of ../shared/maps: WALL -7.5 %, CELL +0.6 % (fewer hints).
+// Drops, fewest near edge cells first, each segment such that every edge
+// cell near it has another kept segment no more than kMoveSlack farther
+// than the nearest of all the segments was (and within one cell when that
+// one was): a broken, doubled or overlapping wall piece costs some 20 bits
+// in WALL and adds little to what eval measures. Measured with
+// StraightenSegments (above); dropping every segment whose edge cells
+// within one cell others hold saved 3,200 WALL bytes but cost 750 CELL
+// bytes and doubled DisPL_ave on some maps (nav2/depot 0.13 -> 0.29).
 void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
-  std::vector<std::vector<std::size_t>> held(segments->size());
-  std::unordered_map<std::size_t, int> holders;
+  struct Holder {
+    std::size_t segment;
+    double distance;
+  };
+  std::vector<std::vector<std::pair<std::size_t, double>>> near(segments->size());
+  std::unordered_map<std::size_t, std::vector<Holder>> holders;
+  std::unordered_map<std::size_t, double> nearest;  // over all the segments
   for (std::size_t i = 0; i < segments->size(); ++i) {
-    held[i] = edges.Held((*segments)[i]);
-    for (std::size_t c : held[i]) ++holders[c];
+    near[i] = edges.Near((*segments)[i]);
+    for (const auto& [c, d] : near[i]) {
+      holders[c].push_back({i, d});
+      auto [it, added] = nearest.try_emplace(c, d);
+      if (!added) it->second = std::min(it->second, d);
+    }
   }
   std::vector<std::size_t> order(segments->size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return held[a].size() < held[b].size(); });
+                   [&](std::size_t a, std::size_t b) { return near[a].size() < near[b].size(); });
   std::vector<bool> keep(segments->size(), true);
   for (std::size_t i : order) {
-    const bool redundant =
-        std::all_of(held[i].begin(), held[i].end(), [&](std::size_t c) { return holders[c] >= 2; });
-    if (!redundant) continue;
-    keep[i] = false;
-    for (std::size_t c : held[i]) --holders[c];
+    // Against the nearest distance of the start, not the kept ones', so
+    // that drops do not add up their slack.
+    keep[i] = !std::all_of(near[i].begin(), near[i].end(), [&](const auto& cd) {
+      const double best = nearest[cd.first];
+      const double limit = best <= 1.0 ? std::min(1.0, best + kMoveSlack) : best + kMoveSlack;
+      for (const Holder& h : holders[cd.first]) {
+        if (h.segment != i && keep[h.segment] && h.distance <= limit) return true;
+      }
+      return false;
+    });
   }
   std::vector<LatticeSegment> kept;
   for (std::size_t i = 0; i < segments->size(); ++i) {
@@ -202,17 +238,15 @@ void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* 
   *segments = std::move(kept);
 }
 
-StatusOr<std::vector<WallPolyline>> WallLayer(const Grid& grid, const EncodeOptions& options) {
+StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
   std::vector<LatticeSegment> segments;
   segments.reserve(lines.size());
   for (const LineSegment& line : lines) {
     AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
-  const EdgeCells edges(grid);
-  SnapToFaces(grid, edges, &segments);
-  DropRedundantSegments(edges, &segments);
-  return JoinSegments(segments);
+  StraightenSegments(grid, EdgeCells(grid), &segments);
+  return segments;
 }
 
 // Room and furniture borders are stored as polygons (spec/format.md 5.3):
@@ -411,12 +445,14 @@ namespace {
 
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options) {
   VectorLayers layers;
-  auto walls_task = StartTask(options.max_threads != 1, [&] { return WallLayer(grid, options); });
+  auto walls_task =
+      StartTask(options.max_threads != 1, [&] { return WallSegments(grid, options); });
   const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
-  StatusOr<std::vector<WallPolyline>> walls = walls_task.get();
+  StatusOr<std::vector<LatticeSegment>> segments = walls_task.get();
   LINEMAP_RETURN_IF_ERROR(rooms);
-  if (!walls.ok()) return walls.status();
-  layers.walls = std::move(*walls);
+  if (!segments.ok()) return segments.status();
+  DropRedundantSegments(EdgeCells(grid), &*segments);
+  layers.walls = JoinSegments(*segments);
   return layers;
 }
 
