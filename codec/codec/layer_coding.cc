@@ -158,10 +158,11 @@ bool CodePath(IO* io, PathModels* m, int width, int height, std::size_t min_poin
       !io->SInt(&m->side[OffsetClass(ahead)], &side) || std::llabs(side) >= side_limit) {
     return false;
   }
-  CellIndex p{
-      state->prev.col + static_cast<int>(ahead * kAxisCol[h] + side * kAxisCol[(h + 1) & 3]),
-      state->prev.row + static_cast<int>(ahead * kAxisRow[h] + side * kAxisRow[(h + 1) & 3])};
-  if (!Inside(p, width, height)) return false;
+  // In 64 bits: the offsets are below max(width, height), not the sums.
+  const std::int64_t col = state->prev.col + ahead * kAxisCol[h] + side * kAxisCol[(h + 1) & 3];
+  const std::int64_t row = state->prev.row + ahead * kAxisRow[h] + side * kAxisRow[(h + 1) & 3];
+  if (col < 0 || row < 0 || col >= width || row >= height) return false;
+  CellIndex p{static_cast<int>(col), static_cast<int>(row)};
   if constexpr (IO::kReading) {
     path->clear();
     path->push_back(p);
@@ -350,7 +351,8 @@ struct RoomModels {
 };
 
 struct FurnitureModels {
-  UIntModel room;  // room id + 1 (0: none)
+  BitModel same_room;  // 1: the previous object's room
+  UIntModel room;      // room id + 1 (0: none)
   PathModels polygon;
 };
 
@@ -411,8 +413,12 @@ std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& fu
   RangeEncoder enc;
   auto m = std::make_unique<FurnitureModels>();
   PathState prev_start;
+  std::uint64_t prev_room = 0;  // room id + 1 of the previous object
   for (const FurnitureObject& object : furniture) {
-    EncodeUInt(&enc, &m->room, static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1));
+    const std::uint64_t room = static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1);
+    enc.Encode(&m->same_room, room == prev_room ? 1 : 0);
+    if (room != prev_room) EncodeUInt(&enc, &m->room, room);
+    prev_room = room;
     EncodePath(&enc, &m->polygon, object.polygon, 1, &prev_start);
   }
   enc.Finish();
@@ -434,11 +440,15 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
   std::vector<FurnitureObject> furniture;
   std::uint64_t cells = 0, vertices = 0;
   PathState prev_start;
+  std::uint64_t prev_room = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t room = 0;
-    if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
+    if (dec.Decode(&m->same_room) == 1) {
+      room = prev_room;
+    } else if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
       return CorruptError("furniture room id above 2^31 - 1");
     }
+    prev_room = room;
     FurnitureObject object;
     object.id = static_cast<std::uint32_t>(i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);

@@ -199,37 +199,63 @@ void StraightenSegments(const Grid& grid, const EdgeCells& edges,
 // within one cell others hold saved 3,200 WALL bytes but cost 750 CELL
 // bytes and doubled DisPL_ave on some maps (nav2/depot 0.13 -> 0.29).
 void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
-  struct Holder {
+  // Every (edge cell, segment near it) pair, grouped by cell: flat arrays,
+  // not hash maps, since a large map has millions of pairs.
+  struct Pair {
+    std::size_t cell;
     std::size_t segment;
     double distance;
   };
-  std::vector<std::vector<std::pair<std::size_t, double>>> near(segments->size());
-  std::unordered_map<std::size_t, std::vector<Holder>> holders;
-  std::unordered_map<std::size_t, double> nearest;  // over all the segments
+  std::vector<Pair> pairs;
+  std::vector<std::size_t> first(segments->size() + 1,
+                                 0);  // segment i: pairs [first[i], first[i+1])
   for (std::size_t i = 0; i < segments->size(); ++i) {
-    near[i] = edges.Near((*segments)[i]);
-    for (const auto& [c, d] : near[i]) {
-      holders[c].push_back({i, d});
-      auto [it, added] = nearest.try_emplace(c, d);
-      if (!added) it->second = std::min(it->second, d);
+    for (const auto& [c, d] : edges.Near((*segments)[i])) pairs.push_back({c, i, d});
+    first[i + 1] = pairs.size();
+  }
+  std::vector<std::size_t> by_cell(pairs.size());
+  for (std::size_t k = 0; k < by_cell.size(); ++k) by_cell[k] = k;
+  std::sort(by_cell.begin(), by_cell.end(), [&](std::size_t x, std::size_t y) {
+    return pairs[x].cell != pairs[y].cell ? pairs[x].cell < pairs[y].cell : x < y;
+  });
+  // For each pair, its cell's run in by_cell and the nearest distance of
+  // all the segments to that cell.
+  std::vector<std::size_t> run_begin(pairs.size()), run_end(pairs.size());
+  std::vector<double> nearest(pairs.size());
+  for (std::size_t b = 0; b < by_cell.size();) {
+    std::size_t e = b;
+    double best = pairs[by_cell[b]].distance;
+    while (e < by_cell.size() && pairs[by_cell[e]].cell == pairs[by_cell[b]].cell) {
+      best = std::min(best, pairs[by_cell[e]].distance);
+      ++e;
     }
+    for (std::size_t k = b; k < e; ++k) {
+      run_begin[by_cell[k]] = b;
+      run_end[by_cell[k]] = e;
+      nearest[by_cell[k]] = best;
+    }
+    b = e;
   }
   std::vector<std::size_t> order(segments->size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return near[a].size() < near[b].size(); });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return first[a + 1] - first[a] < first[b + 1] - first[b];
+  });
   std::vector<bool> keep(segments->size(), true);
   for (std::size_t i : order) {
-    // Against the nearest distance of the start, not the kept ones', so
-    // that drops do not add up their slack.
-    keep[i] = !std::all_of(near[i].begin(), near[i].end(), [&](const auto& cd) {
-      const double best = nearest[cd.first];
+    bool redundant = true;
+    for (std::size_t k = first[i]; k < first[i + 1] && redundant; ++k) {
+      // Against the nearest distance of the start, not the kept ones', so
+      // that drops do not add up their slack.
+      const double best = nearest[k];
       const double limit = best <= 1.0 ? std::min(1.0, best + kMoveSlack) : best + kMoveSlack;
-      for (const Holder& h : holders[cd.first]) {
-        if (h.segment != i && keep[h.segment] && h.distance <= limit) return true;
+      redundant = false;
+      for (std::size_t q = run_begin[k]; q < run_end[k] && !redundant; ++q) {
+        const Pair& other = pairs[by_cell[q]];
+        redundant = other.segment != i && keep[other.segment] && other.distance <= limit;
       }
-      return false;
-    });
+    }
+    if (redundant) keep[i] = false;
   }
   std::vector<LatticeSegment> kept;
   for (std::size_t i = 0; i < segments->size(); ++i) {
