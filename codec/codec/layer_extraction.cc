@@ -96,38 +96,52 @@ class EdgeCells {
         for (int k = 0; k < 4; ++k) {
           const int nc = c + kDc[k], nr = r + kDr[k];
           if (grid.Contains(nc, nr) && grid.at(nc, nr) == Cell::kFree) {
-            edge_[grid.Index(c, r)] = 1;
+            edge_[grid.Index(c, r)] = kEdge;
             break;
           }
         }
       }
     }
   }
-  bool at(int c, int r) const { return edge_[grid_.Index(c, r)] != 0; }
 
   // The edge cells within kNearCells (Euclidean, to the segment) of the
   // segment with their distances, by cell index. They lie within two cells
   // of the segment's rasterisation.
   std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s) const {
-    std::vector<std::pair<std::size_t, double>> cells;
+    // Each candidate once (neighbourhoods of consecutive raster cells
+    // overlap in 20 of their 25 cells): marked in the edge bytes while the
+    // call runs, rather than sorted.
+    std::vector<std::size_t> candidates;
     RasterizeSegment(s.a, s.b, [&](int c, int r) {
       for (int dr = -2; dr <= 2; ++dr) {
         for (int dc = -2; dc <= 2; ++dc) {
           const int x = c + dc, y = r + dr;
-          if (!grid_.Contains(x, y) || !at(x, y)) continue;
-          const double d = PointSegmentDistance({x, y}, s.a, s.b);
-          if (d <= kNearCells) cells.push_back({grid_.Index(x, y), d});
+          if (!grid_.Contains(x, y)) continue;
+          const std::size_t i = grid_.Index(x, y);
+          if (edge_[i] == kEdge) {
+            edge_[i] = kEdgeSeen;
+            candidates.push_back(i);
+          }
         }
       }
     });
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::vector<std::pair<std::size_t, double>> cells;
+    const auto width = static_cast<std::size_t>(grid_.width());
+    for (std::size_t i : candidates) {
+      edge_[i] = kEdge;
+      const CellIndex p{static_cast<int>(i % width), static_cast<int>(i / width)};
+      const double d = PointSegmentDistance(p, s.a, s.b);
+      if (d <= kNearCells) cells.push_back({i, d});
+    }
     return cells;
   }
 
  private:
+  static constexpr std::uint8_t kEdge = 1, kEdgeSeen = 2;
   const Grid& grid_;
-  std::vector<std::uint8_t> edge_;
+  // 0, kEdge, or kEdgeSeen for an edge cell already listed by the running
+  // Near() (which restores kEdge before it returns).
+  mutable std::vector<std::uint8_t> edge_;
 };
 
 // Ends of a slanted segment moved by at most one cell across its main axis

@@ -117,11 +117,14 @@ double JumpCost(CellIndex p, CellIndex q) {
 // kReach cells), so a pass costs about n kNeighbours, and at most
 // kMaxPasses passes run. The nearest-neighbour tour leaves long jumps where
 // it ran out of near walls; on the 25 maps of ../shared/maps these moves
-// cut WALL from 41,988 to 41,186 bytes (16 neighbours; 8 gave 41,246, a
-// reach of 128 cells and 20 passes 41,181).
+// cut WALL from 41,988 to 41,201 bytes (16 neighbours; 8 gave 41,246, a
+// reach of 128 cells and 20 passes 41,181, all without kMaxRun).
 constexpr int kNeighbours = 16;
 constexpr int kReach = 64;
 constexpr int kMaxPasses = 8;
+// Longest run reversed, in walls: a reversal costs its length, and on a
+// map of 184,000 walls unbounded runs cost a second and a half.
+constexpr std::size_t kMaxRun = 1000;
 
 class WallTour {
  public:
@@ -158,7 +161,7 @@ class WallTour {
               if (k <= i || InEnd(k) != e) continue;
               j = k - 1;
             }
-            if (Gain(i, j) > 1e-9) {
+            if (j - i < kMaxRun && Gain(i, j) > 1e-9) {
               Reverse(i, j);
               improved = true;
             }
