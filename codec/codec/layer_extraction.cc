@@ -411,6 +411,7 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
       break;
     }
   }
+  RotateRoomsForCoding(&layers->rooms);
   OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();
 }
@@ -552,6 +553,7 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
     }
   }
   OrderWallsForCoding(&all.walls);
+  RotateRoomsForCoding(&all.rooms);
   OrderFurnitureForCoding(&all.furniture);
   return all;
 }
