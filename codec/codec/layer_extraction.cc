@@ -411,7 +411,6 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
       break;
     }
   }
-  RotateRoomsForCoding(&layers->rooms);
   OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();
 }
@@ -553,7 +552,6 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
     }
   }
   OrderWallsForCoding(&all.walls);
-  RotateRoomsForCoding(&all.rooms);
   OrderFurnitureForCoding(&all.furniture);
   return all;
 }

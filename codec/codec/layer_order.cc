@@ -373,28 +373,4 @@ void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
   *furniture = std::move(ordered);
 }
 
-void RotateRoomsForCoding(std::vector<RoomOutline>* rooms) {
-  CellIndex at{0, 0};
-  for (RoomOutline& room : *rooms) {
-    std::vector<CellIndex>& polygon = room.polygon;
-    if (polygon.empty()) continue;
-    std::size_t best = 0;
-    long best_d = -1;
-    for (std::size_t v = 0; v < polygon.size(); ++v) {
-      const long d =
-          std::labs(long{polygon[v].col} - at.col) + std::labs(long{polygon[v].row} - at.row);
-      if (best_d < 0 || d < best_d) {
-        best = v;
-        best_d = d;
-      }
-    }
-    if (best != 0) {
-      std::rotate(polygon.begin(), polygon.begin() + static_cast<std::ptrdiff_t>(best),
-                  polygon.end());
-      room.chain = ChainOfPolygon(polygon);
-    }
-    at = polygon.back();
-  }
-}
-
 }  // namespace linemap

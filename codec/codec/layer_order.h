@@ -25,11 +25,6 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls);
 // start there (its outline recomputed); ids follow the new order.
 void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture);
 
-// Rotates each room's polygon (the rooms keep their order, by id) to start
-// at the vertex nearest (L1) the previous polygon's last vertex, from (0, 0)
-// on, its chain recomputed: the same border, a shorter start offset.
-void RotateRoomsForCoding(std::vector<RoomOutline>* rooms);
-
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_LAYER_ORDER_H_
