@@ -28,6 +28,8 @@ inline constexpr char kMetadataChunk[] = "meta";
 inline constexpr char kWallChunk[] = "WALL";
 inline constexpr char kFurnitureChunk[] = "FURN";
 inline constexpr char kCellChunk[] = "CELL";
+// Version 2.1: the cells of a file saved within a tolerance, in blocks.
+inline constexpr char kBlockChunk[] = "BLKS";
 
 // Payload coders (the first byte of every payload but LMHD's).
 enum class PayloadCoder : std::uint8_t { kRaw = 0, kDeflate = 1, kDraco = 2 };

@@ -56,18 +56,7 @@ Bands ChooseBands(int width, int height, int tile_size) {
   return bands;
 }
 
-// The CELL chunk's tile side (its first varint), which DecodeCellChunk
-// checks again.
-StatusOr<int> TileSize(const std::vector<std::uint8_t>& cell_body) {
-  ByteCursor cursor(cell_body);
-  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t tile_size, cursor.ReadVarint("tile size"));
-  if (tile_size < kMinTileSize || tile_size > kMaxTileSize) {
-    return CorruptError("tile size " + std::to_string(tile_size) + " outside 16..65536");
-  }
-  return static_cast<int>(tile_size);
-}
-
-// Writes a map with no CELL chunk: every cell unknown.
+// Writes a map with no cells' chunk: every cell unknown.
 Status WriteUnknown(int width, int height, RosMapWriter* writer, CellCounts* counts) {
   const int rows = static_cast<int>(std::max<std::int64_t>(1, (std::int64_t{1} << 20) / width));
   const std::vector<Cell> band(static_cast<std::size_t>(rows) * width, Cell::kUnknown);
@@ -87,9 +76,9 @@ Status WriteCellBands(const V2File& file, const DecodeLimits& limits, const std:
   const int width = file.header.width;
   const int height = file.header.height;
   if (!file.has_cells) return WriteUnknown(width, height, writer, counts);
-  StatusOr<int> tile_size = TileSize(file.cell_body);
-  if (!tile_size.ok()) return tile_size.status().WithContext("chunk CELL").WithContext(where);
-  const LayerIndex index(file.walls, file.rooms, file.furniture);
+  const V2CellDecoder cells(file);
+  StatusOr<int> tile_size = cells.TileSize();
+  if (!tile_size.ok()) return tile_size.status().WithContext(where);
   const Bands bands = ChooseBands(width, height, *tile_size);
   std::vector<Cell> band(static_cast<std::size_t>(bands.rows) * bands.cols);
   // Bands start on tile rows counted from row 0, so each decodes whole tiles:
@@ -102,9 +91,8 @@ Status WriteCellBands(const V2File& file, const DecodeLimits& limits, const std:
       const std::size_t n = static_cast<std::size_t>(col1 - col0) * (row1 - row0);
       std::fill_n(band.begin(), n, Cell::kUnknown);
       const Status decoded =
-          DecodeCellChunk(file.cell_body, index, width, height, CellRect{col0, row0, col1, row1},
-                          limits.max_threads, band.data());
-      if (!decoded.ok()) return decoded.WithContext("chunk CELL").WithContext(where);
+          cells.Decode(CellRect{col0, row0, col1, row1}, limits.max_threads, band.data());
+      if (!decoded.ok()) return decoded.WithContext(where);
       AddCounts(band.data(), n, counts);
       LINEMAP_RETURN_IF_ERROR(
           writer->WriteCells(col0, row0, col1 - col0, row1 - row0, band.data()));

@@ -4,16 +4,20 @@
 
 #include <cmath>
 
+#include "codec/codec/block_tiles.h"
 #include "codec/codec/cell_tiles.h"
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_hints.h"
+#include "format/byte_io.h"
 
 namespace linemap {
 namespace {
 
 constexpr const char* kV2CriticalOrder[] = {kWallChunk, kRoomChunk, kFurnitureChunk, kCellChunk};
 
+// CELL and BLKS are the two forms of the cells: either may come last.
 int V2Rank(const std::string& type) {
+  if (type == kBlockChunk) return 3;
   for (int i = 0; i < 4; ++i) {
     if (type == kV2CriticalOrder[i]) return i;
   }
@@ -34,8 +38,12 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
     if (rank <= *last_rank) return CorruptError("chunk out of order or repeated");
     *last_rank = rank;
   }
-  if (chunk.type == kCellChunk && !read_cells) {
+  const bool cells = chunk.type == kCellChunk || chunk.type == kBlockChunk;
+  if (cells) {
     file->has_cells = true;
+    file->cells_in_blocks = chunk.type == kBlockChunk;
+  }
+  if (cells && !read_cells) {
     file->chunks.push_back({chunk.type, chunk.size, "tiles"});
     return Status::Ok();
   }
@@ -44,9 +52,9 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
                            UnwrapPayload(chunk.payload, chunk.size, limits, &coder));
   if (coder == PayloadCoder::kDraco)
     return CorruptError("the Draco payload coder is for SEGS only");
-  const bool range = rank >= 0 && chunk.type != kCellChunk;
+  const bool range = rank >= 0 && !cells;
   file->chunks.push_back({chunk.type, chunk.size,
-                          chunk.type == kCellChunk ? "tiles"
+                          cells   ? "tiles"
                           : range ? (coder == PayloadCoder::kRaw ? "range" : "range+deflate")
                                   : (coder == PayloadCoder::kRaw ? "raw" : "deflate")});
   const int w = file->header.width;
@@ -60,7 +68,6 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   } else if (chunk.type == kFurnitureChunk) {
     LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits, expand_chains));
   } else {
-    file->has_cells = true;
     file->cell_body = std::move(body);
   }
   return Status::Ok();
@@ -105,16 +112,40 @@ namespace {
 
 Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLimits& limits,
                    Grid* out) {
-  if (!file.has_cells) return Status::Ok();  // no CELL chunk: all unknown
-  const LayerIndex index(file.walls, file.rooms, file.furniture);
   const CellRect rect{window.col0, window.row0, window.col1, window.row1};
-  const Status status =
-      DecodeCellChunk(file.cell_body, index, file.header.width, file.header.height, rect,
-                      limits.max_threads, out->mutable_cells().data());
-  return status.ok() ? status : status.WithContext("chunk CELL");
+  return V2CellDecoder(file).Decode(rect, limits.max_threads, out->mutable_cells().data());
 }
 
 }  // namespace
+
+V2CellDecoder::V2CellDecoder(const V2File& file)
+    : file_(file), index_(file.walls, file.rooms, file.furniture) {}
+
+StatusOr<int> V2CellDecoder::TileSize() const {
+  if (!file_.has_cells) return 1;
+  ByteCursor cursor(file_.cell_body);
+  // BLKS puts its block side first; both decoders check the side again.
+  if (file_.cells_in_blocks) LINEMAP_RETURN_IF_ERROR(cursor.ReadU8("block side").status());
+  StatusOr<std::uint64_t> tile_size = cursor.ReadVarint("tile size");
+  if (tile_size.ok() && (*tile_size < kMinTileSize || *tile_size > kMaxTileSize)) {
+    tile_size = CorruptError("tile size " + std::to_string(*tile_size) + " outside 16..65536");
+  }
+  if (!tile_size.ok()) return tile_size.status().WithContext(ChunkName());
+  return static_cast<int>(*tile_size);
+}
+
+Status V2CellDecoder::Decode(CellRect window, int threads, Cell* out) const {
+  if (!file_.has_cells) return Status::Ok();  // no cells' chunk: all unknown
+  const int w = file_.header.width, h = file_.header.height;
+  const Status status = file_.cells_in_blocks
+                            ? DecodeBlockChunk(file_.cell_body, w, h, window, threads, out)
+                            : DecodeCellChunk(file_.cell_body, index_, w, h, window, threads, out);
+  return status.ok() ? status : status.WithContext(ChunkName());
+}
+
+std::string V2CellDecoder::ChunkName() const {
+  return std::string("chunk ") + (file_.cells_in_blocks ? kBlockChunk : kCellChunk);
+}
 
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out) {
   LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true));

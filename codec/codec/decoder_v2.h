@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "codec/codec/chunk_coding.h"
+#include "codec/codec/layer_hints.h"
 #include "format/container.h"
 #include "linemap/codec.h"
 
@@ -23,7 +24,27 @@ struct V2File {
   std::vector<std::pair<std::string, std::string>> metadata;
   std::vector<LmapChunkInfo> chunks;
   bool has_cells = false;
+  bool cells_in_blocks = false;         // the cells are BLKS, not CELL
   std::vector<std::uint8_t> cell_body;  // only with read_cells
+};
+
+// Windows of a file's cells (CELL or BLKS; all unknown without either).
+// The layers' index is built once, for all the windows of a map decoded
+// band by band.
+class V2CellDecoder {
+ public:
+  explicit V2CellDecoder(const V2File& file);
+  // The tile side of the cells' chunk (1 without cells).
+  StatusOr<int> TileSize() const;
+  // The cells of `window` (inside the map, non-empty) into `out`, a
+  // (x1 - x0) x (y1 - y0) array, row-major from y0; errors name the chunk.
+  Status Decode(CellRect window, int threads, Cell* out) const;
+
+ private:
+  std::string ChunkName() const;
+
+  const V2File& file_;
+  LayerIndex index_;
 };
 
 // `expand_chains` false leaves the rooms' and objects' chains empty (their

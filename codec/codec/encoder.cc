@@ -1,15 +1,19 @@
 // The .lmap encoder (spec/format.md section 9, "Encoding (informative)").
 //
-// A 2.0 file is written in the order the decoder reads it: LMHD, meta, the
+// A 2.x file is written in the order the decoder reads it: LMHD, meta, the
 // vector layers (WALL, ROOM, FURN: what a viewer reads without the
-// raster), then CELL, the exact cells in tiles, each coded against the
-// hints the layers draw into it (a cell on a wall is cheap to confirm as
-// occupied, one inside a room as free).
+// raster), then the cells in tiles: CELL, the exact cells, each tile coded
+// against the hints the layers draw into it (a cell on a wall is cheap to
+// confirm as occupied, one inside a room as free), or, within a tolerance,
+// BLKS, the map drawn in blocks of T + 1 cells.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "codec/codec/block_tiles.h"
 #include "codec/codec/cell_tiles.h"
 #include "codec/codec/chunk_coding.h"
 #include "codec/codec/encoder_v1.h"
@@ -17,6 +21,7 @@
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
 #include "codec/codec/tolerance.h"
+#include "codec/codec/tolerance_blocks.h"
 #include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
@@ -48,14 +53,16 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   return Status::Ok();
 }
 
-// `exact`: `grid` is the caller's map itself (the header's lossless flag).
-StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptions& options,
-                                             bool exact) {
-  VectorLayers layers;
-  if (options.vector_layers) {
-    LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options));
-  }
-  ContainerWriter writer;
+// A 2.x file: header, metadata, the vector layers (what a viewer reads
+// without the raster) and the cells' chunk (`cells_type`: CELL or BLKS).
+// `exact`: the cells are the caller's map itself (the header's lossless
+// flag); files with BLKS are version 2.1 (a 2.0 decoder refuses the unknown
+// critical chunk; the minor number tells a reader why).
+std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options,
+                                  const VectorLayers& layers, bool exact, const char* cells_type,
+                                  const std::vector<std::uint8_t>& cells_body) {
+  const bool blocks = std::string_view(cells_type) == kBlockChunk;
+  ContainerWriter writer(kFormatMajor, blocks ? 1 : 0);
   writer.AddChunk(kHeaderChunk,
                   WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, exact}));
   const auto metadata = MetadataOf(options);
@@ -70,11 +77,27 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   if (!layers.furniture.empty()) {
     writer.AddChunk(kFurnitureChunk, WrapPayload(EncodeFurniture(layers.furniture), false));
   }
-  const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
-  writer.AddChunk(kCellChunk, WrapPayload(EncodeCellChunk(grid, index, options.tile_size_cells,
-                                                          options.max_threads),
-                                          false));
+  writer.AddChunk(cells_type, WrapPayload(cells_body, false));
   return writer.Finish();
+}
+
+// The exact cells: CELL tiles coded against the layers' hints.
+std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& options,
+                                     const VectorLayers& layers) {
+  const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
+  return EncodeCellChunk(grid, index, options.tile_size_cells, options.max_threads);
+}
+
+// The cells within a tolerance: BLKS tiles, the tile side the caller's
+// down to a multiple of the block side (spec/format.md 6.4).
+StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
+                                                         const EncodeOptions& options,
+                                                         bool* exact) {
+  LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks, FitBlockCells(grid, options.tolerance_cells));
+  *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
+                       [](std::uint8_t r) { return r != 0; });
+  const int f = blocks.block_cells;
+  return EncodeBlockChunk(grid, blocks, options.tile_size_cells / f * f, options.max_threads);
 }
 
 }  // namespace
@@ -82,17 +105,27 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
 StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_RETURN_IF_ERROR(CheckEncodeInput(grid, options));
   if (options.format_v1) return EncodeLmapV1(grid, options);
-  if (options.tolerance_cells == 0) return EncodeV2(grid, options, true);
-  // Within a tolerance the file is the exact file of the map simplified
-  // within it: every guarantee is checked on that grid, which is exactly
-  // what the file decodes to (SimplifyWithinTolerance undoes what fails).
-  // Where the simplification saves nothing (a clean plan, or the layers'
-  // cost), the exact file is kept: never larger than it.
-  LINEMAP_ASSIGN_OR_RETURN(Grid simplified, SimplifyWithinTolerance(grid, options.tolerance_cells));
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> within,
-                           EncodeV2(simplified, options, simplified == grid));
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, options, true));
-  return within.size() < exact.size() ? within : exact;
+  // The layers are drawn from the map itself at every tolerance.
+  VectorLayers layers;
+  if (options.vector_layers) {
+    LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options));
+  }
+  std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);
+  if (options.tolerance_cells == 0) {
+    return WriteV2(grid, options, layers, true, kCellChunk, exact_cells);
+  }
+  // Within a tolerance the cells are the map drawn in blocks of T + 1
+  // cells, with cells restored where a guarantee fails (FitBlockCells
+  // checks every one on exactly what the file decodes to). Where the blocks
+  // save nothing (a clean plan at T = 1) the exact cells are kept: never
+  // larger than the exact file.
+  bool exact = false;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> block_cells,
+                           CellsWithinTolerance(grid, options, &exact));
+  if (block_cells.size() >= exact_cells.size()) {
+    return WriteV2(grid, options, layers, true, kCellChunk, exact_cells);
+  }
+  return WriteV2(grid, options, layers, exact, kBlockChunk, block_cells);
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {

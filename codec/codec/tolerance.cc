@@ -1,7 +1,5 @@
-// SimplifyWithinTolerance(): smoothing proposed by morphology, then every
-// guarantee checked on the whole result and the changes undone block by
-// block where one fails, until all hold. CheckTolerance(): the guarantees'
-// figures.
+// SimplifyWithinTolerance(): the map in blocks (tolerance_blocks.h).
+// CheckTolerance(): the guarantees' figures.
 #include "codec/codec/tolerance.h"
 
 #include <algorithm>
@@ -9,111 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/tolerance_blocks.h"
 #include "codec/codec/tolerance_internal.h"
-#include "codec/codec/tolerance_smoothing.h"
 
 namespace linemap {
-namespace {
 
 using tolerance_internal::CellMask;
 using tolerance_internal::ChebyshevDistance;
 using tolerance_internal::kFar;
-
-// Changes are undone in square blocks of this side (cells): large enough
-// that a few rounds settle, small enough that one failing doorway does not
-// undo a room's worth of smoothing.
-constexpr int kUndoBlockCells = 16;
-// Rounds of checks before giving up and returning the input (each round
-// undoes at least one changed cell, so this only bounds pathological maps).
-constexpr int kMaxRounds = 64;
-
-// Resets every cell of `simplified` that breaks a distance guarantee to
-// its original value; returns how many. Every breaking cell is a changed
-// cell (an unchanged one is its own witness), so undoing them converges.
-std::size_t UndoDistanceFaults(const Grid& original, int t, Grid* simplified) {
-  const int w = original.width();
-  const int h = original.height();
-  const auto o_occ = ChebyshevDistance(w, h, CellMask(original, Cell::kOccupied));
-  const auto o_free = ChebyshevDistance(w, h, CellMask(original, Cell::kFree));
-  const auto s_occ = ChebyshevDistance(w, h, CellMask(*simplified, Cell::kOccupied));
-  const auto s_free = ChebyshevDistance(w, h, CellMask(*simplified, Cell::kFree));
-  std::size_t undone = 0;
-  std::vector<Cell>& cells = simplified->mutable_cells();
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const Cell a = original.cells()[i];
-    const Cell b = cells[i];
-    const bool fault = (b == Cell::kOccupied && o_occ[i] > t) ||
-                       (a == Cell::kOccupied && s_occ[i] > t) ||
-                       (b == Cell::kFree && o_free[i] > t) || (a == Cell::kFree && s_free[i] > t);
-    if (fault && a != b) {
-      cells[i] = a;
-      ++undone;
-    }
-  }
-  return undone;
-}
-
-// Resets the blocks holding any of `cells` (grid indices) to the original,
-// after growing each cell by `reach` cells; returns the changed cells reset.
-std::size_t UndoBlocks(const Grid& original, const std::vector<std::size_t>& cells, int reach,
-                       Grid* simplified) {
-  const int w = original.width();
-  const int h = original.height();
-  const int bw = (w + kUndoBlockCells - 1) / kUndoBlockCells;
-  const int bh = (h + kUndoBlockCells - 1) / kUndoBlockCells;
-  std::vector<std::uint8_t> marked(static_cast<std::size_t>(bw) * bh, 0);
-  for (const std::size_t i : cells) {
-    const int c = static_cast<int>(i % w);
-    const int r = static_cast<int>(i / w);
-    const int b0 = std::max(0, c - reach) / kUndoBlockCells;
-    const int b1 = std::min(w - 1, c + reach) / kUndoBlockCells;
-    const int a0 = std::max(0, r - reach) / kUndoBlockCells;
-    const int a1 = std::min(h - 1, r + reach) / kUndoBlockCells;
-    for (int br = a0; br <= a1; ++br) {
-      for (int bc = b0; bc <= b1; ++bc) marked[static_cast<std::size_t>(br) * bw + bc] = 1;
-    }
-  }
-  std::size_t undone = 0;
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      if (!marked[static_cast<std::size_t>(r / kUndoBlockCells) * bw + c / kUndoBlockCells]) {
-        continue;
-      }
-      const Cell a = original.at(c, r);
-      if (simplified->at(c, r) != a) {
-        simplified->set(c, r, a);
-        ++undone;
-      }
-    }
-  }
-  return undone;
-}
-
-}  // namespace
-
-namespace tolerance_internal {
-
-Grid EnforceGuarantees(const Grid& original, Grid proposal, int t) {
-  Grid& simplified = proposal;
-  for (int round = 0; round < kMaxRounds; ++round) {
-    if (UndoDistanceFaults(original, t, &simplified) > 0) continue;
-    const TopologyFaults topology = FindTopologyFaults(original, simplified, true);
-    if (topology.leaks > 0 || topology.splits > 0) {
-      if (UndoBlocks(original, topology.culprits, 1, &simplified) == 0) return original;
-      continue;
-    }
-    const PlanFaults plans = ComparePlans(original, simplified, true);
-    if (plans.disagreements > 0) {
-      // The changes that made the plans differ lie near either path.
-      if (UndoBlocks(original, plans.paths, t + 1, &simplified) == 0) return original;
-      continue;
-    }
-    return simplified;
-  }
-  return original;
-}
-
-}  // namespace tolerance_internal
 
 bool ToleranceReport::Holds() const {
   return same_size && hausdorff_original_to_decoded >= 0 &&
@@ -129,8 +30,8 @@ StatusOr<Grid> SimplifyWithinTolerance(const Grid& grid, int tolerance_cells) {
                                 " cells is outside 0.." + std::to_string(kMaxToleranceCells));
   }
   if (tolerance_cells == 0 || grid.empty()) return grid;
-  return tolerance_internal::EnforceGuarantees(
-      grid, tolerance_internal::ProposeSmoothing(grid, tolerance_cells), tolerance_cells);
+  LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks, FitBlockCells(grid, tolerance_cells));
+  return ComposeBlockCells(grid, blocks);
 }
 
 ToleranceReport CheckTolerance(const Grid& original, const Grid& decoded, int tolerance_cells) {

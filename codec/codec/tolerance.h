@@ -36,17 +36,13 @@ inline constexpr double kPlanLengthTolerance = 0.03;
 // its length by two steps, which is more than 3 % of a plan under 67 steps.
 inline constexpr int kPlanSlackSteps = 2;
 
-// The simplified grid: the input where a region cannot be simplified within
-// `tolerance_cells` (0..kMaxToleranceCells; else invalid argument), smoothed
-// elsewhere (occupied specks next to walls dropped, short free rays into
-// unknown cut, unknown notches and specks inside free space filled, the
-// backs of walls smoothed, and the border between obstacles and unknown
-// space laid on a lattice of blocks of T + 1 cells); see
-// tolerance_smoothing.h. Every guarantee above is checked on the result, and
-// changes are undone block by block where one fails, so
-// CheckTolerance(grid, result, tolerance_cells).Holds() is true.
-// tolerance_cells == 0 returns the grid unchanged. Deterministic; metadata
-// is kept.
+// The grid a file saved within `tolerance_cells` (0..kMaxToleranceCells;
+// else invalid argument) decodes to when its cells are in blocks: the map
+// drawn in blocks of T + 1 cells, with cells given back their original
+// value wherever a guarantee above would fail (FitBlockCells,
+// tolerance_blocks.h), so CheckTolerance(grid, result, tolerance_cells)
+// .Holds() is true. tolerance_cells == 0 returns the grid unchanged.
+// Deterministic; metadata is kept.
 StatusOr<Grid> SimplifyWithinTolerance(const Grid& grid, int tolerance_cells);
 
 // The guarantees' figures of `decoded` against `original` (same size; a

@@ -35,6 +35,7 @@ struct TopologyFaults {
   std::size_t leaks = 0;
   std::size_t splits = 0;
   std::vector<std::size_t> culprits;
+  std::vector<std::size_t> split_culprits;  // those of splits alone
 };
 TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, bool want_culprits);
 
@@ -49,11 +50,17 @@ struct PlanFaults {
 };
 PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths);
 
-// `proposal` (a grid of the original's size) with its changes undone where
-// a guarantee of tolerance `t` fails, until all hold; the original when
-// that does not settle. SimplifyWithinTolerance() is this applied to
-// ProposeSmoothing(); tools tuning the smoothing call it directly.
-Grid EnforceGuarantees(const Grid& original, Grid proposal, int t);
+// Whether plans of `la` and `lb` steps (-1: none) agree (tolerance.h 4).
+bool PlansAgree(std::int32_t la, std::int32_t lb);
+
+// The changed cells that make plans disagree, for every goal of every
+// sampled start of ComparePlans (the same pairs): the cells of the
+// original's plan that are not free in `decoded` where the decoded plan is
+// longer or missing, and the cells of the decoded plan that are not free in
+// the original where it is shorter or new. Giving them back their original
+// value makes those plans agree (the original plan is there again, the
+// shortcut gone), so a fitting loop settles in a few rounds.
+std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded);
 
 }  // namespace linemap::tolerance_internal
 

@@ -67,6 +67,21 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
   }
 }
 
+// Walks the plan from `goal` back towards the source until a cell already
+// walked (plans of one search form a tree), appending the cells whose
+// value in `other` is not free.
+void AppendUnfreeOnPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::size_t goal,
+                        const Grid& other, std::vector<std::uint8_t>* walked,
+                        std::vector<std::size_t>* out) {
+  std::vector<std::size_t> path;
+  AppendPath(grid, steps, goal, &path);
+  for (const std::size_t i : path) {
+    if ((*walked)[i]) break;
+    (*walked)[i] = 1;
+    if (other.cells()[i] != Cell::kFree) out->push_back(i);
+  }
+}
+
 // Cells free in both grids, drawn by a fixed linear congruential sequence.
 std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
   std::vector<std::size_t> cells;
@@ -81,6 +96,36 @@ std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
 }
 
 }  // namespace
+
+bool PlansAgree(std::int32_t la, std::int32_t lb) {
+  const int diff = std::abs(lb - la);
+  return (la < 0) == (lb < 0) &&
+         (la < 0 || diff <= kPlanSlackSteps || diff <= kPlanLengthTolerance * la);
+}
+
+std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {
+  std::vector<std::size_t> out;
+  for (const std::size_t source : SampleCells(original, decoded)) {
+    const std::vector<std::int32_t> a = FreeSteps(original, source);
+    const std::vector<std::int32_t> b = FreeSteps(decoded, source);
+    std::vector<std::uint8_t> walked_a(a.size(), 0), walked_b(b.size(), 0);
+    for (std::size_t g = 0; g < a.size(); ++g) {
+      if (g == source || original.cells()[g] != Cell::kFree || decoded.cells()[g] != Cell::kFree ||
+          PlansAgree(a[g], b[g])) {
+        continue;
+      }
+      // Longer or gone on the decode: the original plan crosses a cell that
+      // is no longer free. Shorter or new: the decoded plan crosses a cell
+      // that was not free.
+      if (a[g] >= 0 && (b[g] < 0 || b[g] > a[g])) {
+        AppendUnfreeOnPath(original, a, g, decoded, &walked_a, &out);
+      } else {
+        AppendUnfreeOnPath(decoded, b, g, original, &walked_b, &out);
+      }
+    }
+  }
+  return out;
+}
 
 PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths) {
   PlanFaults out;
@@ -98,12 +143,9 @@ PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_pat
       ++out.pairs;
       const std::int32_t la = a[g];
       const std::int32_t lb = b[g];
-      const int diff = std::abs(lb - la);
-      const bool agree = (la < 0) == (lb < 0) &&
-                         (la < 0 || diff <= kPlanSlackSteps || diff <= kPlanLengthTolerance * la);
-      if (agree) continue;
+      if (PlansAgree(la, lb)) continue;
       ++out.disagreements;
-      const double excess = (la < 0 || lb < 0) ? 1e9 : static_cast<double>(diff) / la;
+      const double excess = (la < 0 || lb < 0) ? 1e9 : static_cast<double>(std::abs(lb - la)) / la;
       if (excess > worst_excess) {
         worst_excess = excess;
         worst = g;

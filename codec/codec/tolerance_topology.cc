@@ -132,6 +132,7 @@ TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, boo
           const std::int32_t n = dec.get(c + kDc[k], r + kDr[k]);
           if (n && n != main_piece[o]) {
             out.culprits.push_back(i);
+            out.split_culprits.push_back(i);
             break;
           }
         }

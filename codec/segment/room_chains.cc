@@ -2,11 +2,17 @@
 //   4. each room's chain is the outer boundary of its own cells (Moore
 //      tracing), so chains of two rooms never share a cell; its kind comes
 //      from its elongation (area over the square of its width);
-//   5. furniture: the furniture candidates of step 1 that keep off every
-//      room chain (an obstacle within a cell of a chain hugs a wall or sits
-//      in a doorway), grouped by nearness within their room (the legs of a
-//      table or a chair), and kept when they have enough occupied cells to
-//      be more than a scan speck.
+//   5. furniture: (a) free-standing: the furniture candidates of step 1
+//      that keep off every room chain (an obstacle within a cell of a chain
+//      hugs a wall or sits in a doorway), grouped by nearness within their
+//      room (the legs of a table or a chair), and kept when they have
+//      enough occupied cells to be more than a scan speck; a speck-sized
+//      piece joins a group only through a piece it lines up with (legs
+//      stand in rows and columns, scan specks anywhere); (b) against walls:
+//      compact bumps of a wall into a room (wall_furniture.cc), cut from the
+//      wall along its face. They are no room cells, so the room's chain runs
+//      around them over the free cells along their faces: such a blob
+//      borders its room's chain, no blob crosses one.
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -121,13 +127,25 @@ class NoRoomCounter {
   std::vector<std::int32_t> sums_;
 };
 
+// Two boxes whose row spans or column spans overlap, give or take a cell.
+bool LineUp(const BoundingBox& a, const BoundingBox& b) {
+  return (a.min_row <= b.max_row + 1 && b.min_row <= a.max_row + 1) ||
+         (a.min_col <= b.max_col + 1 && b.min_col <= a.max_col + 1);
+}
+
 // Union of pieces of one room whose boxes come within `gap` cells, found
 // through square buckets of the map, as long as the group's box stays in
 // room space (its rim is the blob's outline, which must not run through a
 // wall, e.g. around the inner corner of an L-shaped room) and holds at
 // most `max_box_cells` cells (one piece of furniture, not a field of specks).
+// Speck rule: a piece of at most `speck_cells` occupied cells (a chair leg
+// or a scan speck, which look alike) joins another piece only when the two
+// line up. The legs of a table or a chair stand in rows and columns, so each
+// lines up with a neighbour; a speck that lands near a table by chance
+// rarely does, and stays out of its blob.
 std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
-                                      const NoRoomCounter& no_room, double max_box_cells) {
+                                      const NoRoomCounter& no_room, double max_box_cells,
+                                      std::size_t speck_cells) {
   const std::int32_t n = static_cast<std::int32_t>(pieces.size());
   std::vector<std::int32_t> parent(n);
   std::vector<BoundingBox> group_box(n);
@@ -136,37 +154,58 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
     group_box[k] = pieces[k].box;
   }
   const int bucket = std::max(32, gap + 2);
-  std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
   auto key = [](int bc, int br) {
     return (static_cast<std::int64_t>(br) << 32) ^ (bc & 0xffffffff);
   };
-  for (std::int32_t k = 0; k < n; ++k) {
-    const BoundingBox& b = pieces[k].box;
-    // Boxes `gap` cells apart share a bucket when each reaches gap + 1
-    // cells past its far side.
-    for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
-      for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
-        std::vector<std::int32_t>& list = buckets[key(bc, br)];
-        for (const std::int32_t other : list) {
-          const BoundingBox& o = pieces[other].box;
-          const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
-          const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
-          if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
-          const std::int32_t a = FindGroup(parent, k);
-          const std::int32_t z = FindGroup(parent, other);
-          if (a == z) continue;
-          BoundingBox joined = group_box[a];
-          Extend(&joined, group_box[z]);
-          const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
-                                   (joined.max_row - joined.min_row + 1);
-          if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
-          parent[a] = z;
-          group_box[z] = joined;
+  // Joins every two pieces of one room within `gap` for which `may_join`
+  // holds, as long as the joined box stays small and in room space.
+  auto join_near = [&](const auto& may_join) {
+    std::unordered_map<std::int64_t, std::vector<std::int32_t>> buckets;
+    for (std::int32_t k = 0; k < n; ++k) {
+      const BoundingBox& b = pieces[k].box;
+      // Boxes `gap` cells apart share a bucket when each reaches gap + 1
+      // cells past its far side.
+      for (int br = b.min_row / bucket; br <= (b.max_row + gap + 1) / bucket; ++br) {
+        for (int bc = b.min_col / bucket; bc <= (b.max_col + gap + 1) / bucket; ++bc) {
+          std::vector<std::int32_t>& list = buckets[key(bc, br)];
+          for (const std::int32_t other : list) {
+            const BoundingBox& o = pieces[other].box;
+            const int gap_c = std::max(o.min_col - b.max_col, b.min_col - o.max_col) - 1;
+            const int gap_r = std::max(o.min_row - b.max_row, b.min_row - o.max_row) - 1;
+            if (pieces[other].room != pieces[k].room || std::max(gap_c, gap_r) > gap) continue;
+            if (!may_join(k, other)) continue;
+            const std::int32_t a = FindGroup(parent, k);
+            const std::int32_t z = FindGroup(parent, other);
+            if (a == z) continue;
+            BoundingBox joined = group_box[a];
+            Extend(&joined, group_box[z]);
+            const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
+                                     (joined.max_row - joined.min_row + 1);
+            if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
+            parent[a] = z;
+            group_box[z] = joined;
+          }
+          list.push_back(k);
         }
-        list.push_back(k);
       }
     }
+  };
+  const auto speck = [&](std::int32_t k) { return pieces[k].occupied.size() <= speck_cells; };
+  // First pass: specks join only what they line up with.
+  join_near([&](std::int32_t k, std::int32_t other) {
+    return (!speck(k) && !speck(other)) || LineUp(pieces[k].box, pieces[other].box);
+  });
+  // Second pass: what is more than a lone speck now (a piece of some size,
+  // or legs that lined up: the two legs at one end of a table) joins
+  // whatever else is more than a lone speck nearby (the legs at the other
+  // end, a chair).
+  std::vector<std::int32_t> members(n, 0);
+  for (std::int32_t k = 0; k < n; ++k) ++members[FindGroup(parent, k)];
+  std::vector<std::uint8_t> structure(n, 0);
+  for (std::int32_t k = 0; k < n; ++k) {
+    structure[k] = !speck(k) || members[FindGroup(parent, k)] > 1;
   }
+  join_near([&](std::int32_t k, std::int32_t other) { return structure[k] && structure[other]; });
   for (std::int32_t k = 0; k < n; ++k) parent[k] = FindGroup(parent, k);
   return parent;
 }
@@ -181,7 +220,8 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
   if (pieces.size() > 1) {
     const NoRoomCounter no_room(flood.room_of_cell, grid.width(), grid.height());
     const double res = grid.meta.resolution;
-    group = GroupPieces(pieces, gap, no_room, options.max_furniture_area_m2 / (res * res));
+    group = GroupPieces(pieces, gap, no_room, options.max_furniture_area_m2 / (res * res),
+                        options.speck_max_cells);
   } else {
     group.assign(pieces.size(), 0);
   }
@@ -207,6 +247,18 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
     // the rim of their common box.
     blob.outline = list.size() == 1 ? TraceOuterContour(flood.enclosed, pieces[list[0]].label)
                                     : BoxRing(blob.box);
+    blobs.push_back(std::move(blob));
+  }
+  for (WallPiece& piece : FindWallFurniture(grid, flood.room_of_cell, options)) {
+    if (piece.occupied.size() < options.min_furniture_cells) continue;
+    FurnitureBlob blob;
+    blob.room = piece.room;
+    blob.against_wall = true;
+    blob.box = piece.box;
+    blob.cells = std::move(piece.occupied);
+    blob.cell_count = blob.cells.size();
+    blob.first_cell = blob.cells.front();
+    blob.outline = std::move(piece.outline);
     blobs.push_back(std::move(blob));
   }
   std::sort(blobs.begin(), blobs.end(), [](const FurnitureBlob& a, const FurnitureBlob& b) {

@@ -90,6 +90,20 @@ RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
 // Chamfer units to cells.
 double ClearanceCells(std::uint16_t chamfer);
 
+// Furniture against walls (wall_furniture.cc): compact bumps of a wall into
+// a room, found from the rooms' cells (grid-sized, 0 = no room). `occupied`
+// holds the bump's occupied cells in raster order, `outline` the closed
+// outer boundary of all its cells (occupied and unknown).
+struct WallPiece {
+  std::int32_t room = 0;
+  BoundingBox box;
+  std::vector<CellIndex> occupied;
+  std::vector<CellIndex> outline;
+};
+std::vector<WallPiece> FindWallFurniture(const Grid& grid,
+                                         const std::vector<std::int32_t>& room_of_cell,
+                                         const SegmentationOptions& options);
+
 // Room chains, kinds and furniture blobs from the flood (room_chains.cc).
 void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood flood,
                 Segmentation* result);

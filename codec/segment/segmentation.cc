@@ -26,7 +26,9 @@ Status ValidateRoomOptions(const SegmentationOptions& options) {
   for (const double v :
        {options.door_constriction_m, options.min_room_area_m2, options.max_room_area_m2,
         options.max_furniture_area_m2, options.wall_min_length_m, options.wall_max_thickness_m,
-        options.furniture_group_m, options.corridor_min_elongation}) {
+        options.furniture_group_m, options.corridor_min_elongation,
+        options.wall_furniture_min_depth_m, options.wall_furniture_max_depth_m,
+        options.wall_furniture_max_width_m}) {
     if (!std::isfinite(v) || v < 0) {
       return InvalidArgumentError("segmentation lengths and areas must be finite and >= 0");
     }
@@ -162,7 +164,6 @@ BinaryMask FillChainPolygon(const std::vector<CellIndex>& chain, int width, int 
   }
   return fill;
 }
-
 
 StatusOr<Segmentation> SegmentMap(const Grid& grid, const SegmentationOptions& options) {
   LINEMAP_RETURN_IF_ERROR(ValidateOptions(options));

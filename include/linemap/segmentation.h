@@ -23,8 +23,21 @@
 // share a cell and the doorway is closed by the line where the two rooms'
 // cells meet. A room's cells are free cells plus the small obstacles it
 // encloses, so a chain runs over free cells but where such an obstacle
-// stands right at a doorway. Furniture is the enclosed obstacles that are
-// not wall pieces (long and thin) and stay off every room chain.
+// stands right at a doorway. Furniture comes in two kinds:
+//  - free-standing: the enclosed obstacles that are not wall pieces (long
+//    and thin) and stay off every room chain (not on it, not 8-adjacent),
+//    grouped by nearness (the legs of a table);
+//  - against a wall (FurnitureBlob::against_wall): a cabinet or a shelf
+//    makes one piece with the wall it stands on, so nothing encloses it.
+//    It is found as a compact bump of a wall into a room and cut from the
+//    wall along the wall's face (see the wall_furniture_* options). Its
+//    cells stay out of the room's cells, as the wall's do, so the room's
+//    chain runs around it, over the free cells along its faces: the room is
+//    the space a robot can enter, and its polygon and area (and the ROOM
+//    layer of a file) do not depend on whether a bump was called furniture.
+// So no furniture cell is ever on a room chain and no blob crosses one
+// (has cells on both sides of it); a blob against a wall borders its room's
+// chain.
 //
 // kPaperBorder: one chain per free component by Kosteley et al., "Local
 // navigation map processing algorithm...", sections 3.2 B and C: binary
@@ -126,6 +139,11 @@ struct FurnitureBlob {
   std::vector<CellIndex> outline;
   // kRooms: the id of the room the blob stands in.
   int room = 0;
+  // kRooms: furniture standing against a wall, cut from it along the wall's
+  // face; its cells are in no room (room_of_cell 0, as the wall's), the
+  // room's chain runs around it. false: free-standing, its cells are cells
+  // of `room`.
+  bool against_wall = false;
 };
 
 struct SegmentationOptions {
@@ -170,6 +188,34 @@ struct SegmentationOptions {
   double furniture_group_m = 0.8;
   // Blobs with fewer occupied cells are scan specks, not furniture.
   std::size_t min_furniture_cells = 3;
+  // Speck rule (cells): a piece of at most this many occupied cells (a
+  // chair leg and a scan speck look alike) joins a nearby piece only when
+  // the two line up, their row or column spans overlapping give or take one
+  // cell: legs of a table or chair stand in rows and columns, specks
+  // anywhere. Then what is more than a lone speck (larger pieces, legs that
+  // lined up) joins within furniture_group_m, whatever the alignment (the
+  // two ends of a long table). A lone speck that lines up with nothing
+  // never joins, and alone it is below min_furniture_cells. (Assumes
+  // furniture square to the grid, as the walls of most maps are; a leg of a
+  // slanted chair may stay out of its blob.) 0 = no rule.
+  std::size_t speck_max_cells = 2;
+  // Furniture against a wall (metres): a bump of a wall into one room, cut
+  // from the wall along the wall's face. In every grid row (or every
+  // column) across the bump, the blocked cells form a run with that room
+  // on both ends, while behind it, in the wall, the run goes on past both
+  // of the bump's sides; most of the bump's cells facing the room are
+  // occupied (a bump of unknown cells is a hole in the scan). Depth is
+  // measured out of the face, width along it (the median over the bump's
+  // lines). Bumps shallower than wall_furniture_min_depth_m are wall noise
+  // or a doubled wall line; bumps no wider than wall_max_thickness_m are
+  // wall ends (a stub beside a wide opening); deeper or wider ones are
+  // parts of the building (a notch of the room). Walls along the grid's
+  // rows and columns only: a cabinet flush in a room's corner or on a
+  // slanted wall is not found. wall_furniture_max_depth_m or
+  // wall_furniture_max_width_m 0: none are sought.
+  double wall_furniture_min_depth_m = 0.2;
+  double wall_furniture_max_depth_m = 0.8;
+  double wall_furniture_max_width_m = 2.5;
   // A room is a corridor when area / width^2 is at least this (width: twice
   // its largest clearance).
   double corridor_min_elongation = 4.0;
@@ -226,8 +272,8 @@ struct Segmentation {
   std::vector<RoomBorder> rooms;
   std::vector<FurnitureBlob> blobs;
   // kRooms: the room id of every grid cell (grid.Index order), 0 for cells
-  // in no room: walls, unknown, and free specks smaller than
-  // min_room_area_m2. Empty for kPaperBorder.
+  // in no room: walls, furniture against walls, unknown, and free specks
+  // smaller than min_room_area_m2. Empty for kPaperBorder.
   std::vector<std::int32_t> room_of_cell;
   std::vector<Doorway> doors;  // kRooms
   SegmentationTimings timings;

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Writes the version 2.0 fixtures (tests/data/lmap/*_v2*.lmap) with the
-# linemap built in BUILD (default build/), and the 2.0 must-fail files
+# Writes the version 2.0 and 2.1 fixtures (tests/data/lmap/*_v2*.lmap) with
+# the linemap built in BUILD (default build/), and the 2.x must-fail files
 # (tests/data/bad/lmap_decode/v2_*.lmap) by editing one chunk of a valid
-# 2.0 file and recomputing its CRC. Run from the repository root; the tests
+# file and recomputing its CRC. Run from the repository root; the tests
 # check the fixtures against the source maps, not against this script.
 set -euo pipefail
 BUILD=${1:-build}
@@ -14,6 +14,11 @@ $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_raster_only.lmap --rast
   --no-sync >/dev/null
 $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_tiles_64.lmap --tile-size 64 \
   --no-sync >/dev/null
+# Version 2.1: cells in blocks (BLKS), within a tolerance of 1 cell.
+$L encode $M/turtlebot_apps/willow-2010-02-18-0.10.yaml \
+  -o tests/data/lmap/willow_v2_1_tolerance_1.lmap --tolerance 1 \
+  --no-sync >/dev/null
+cp tests/data/lmap/willow_v2_1_tolerance_1.lmap tests/fuzz/corpus/lmap_decode/
 for f in lse_arena_v2 depot_v2; do
   mkdir -p tests/fuzz/corpus/lmap_vectors
   cp tests/data/lmap/$f.lmap tests/fuzz/corpus/lmap_decode/$f.lmap
@@ -88,4 +93,20 @@ write('v2_wall_count_over_limit.lmap',
 # The WALL stream cut short.
 write('v2_wall_stream_truncated.lmap',
       [c if c[0] != b'WALL' else [b'WALL', wall[1][:len(wall[1]) // 2]] for c in chunks])
+
+# Version 2.1: BLKS payload: coder byte 0, block side u8, tile side varint.
+head21, chunks21 = parse(open('tests/data/lmap/willow_v2_1_tolerance_1.lmap', 'rb').read())
+blks = [c for c in chunks21 if c[0] == b'BLKS'][0]
+
+def with_blks(payload):
+    return build(head21, [c if c[0] != b'BLKS' else [b'BLKS', payload] for c in chunks21])
+
+open(bad + 'v2_1_block_side_1.lmap', 'wb').write(with_blks(b'\x00\x01' + blks[1][2:]))
+# Side 3 with the tile side of the side-2 file (1024): not a multiple.
+open(bad + 'v2_1_tile_side_not_a_multiple_of_the_block_side.lmap', 'wb').write(
+    with_blks(b'\x00\x03' + blks[1][2:]))
+# Both forms of the cells: CELL (from the exact file) before BLKS.
+both = [c for c in chunks21 if c[0] != b'BLKS' and c[0] != b'LEND'] + [chunk(b'CELL'), blks,
+                                                                       [b'LEND', b'']]
+open(bad + 'v2_1_cell_and_blks.lmap', 'wb').write(build(head21, both))
 PY

@@ -208,14 +208,34 @@ void Builder::AddFurniture(int room) {
     ++plan_.furniture_objects;
   }
   if (Chance(0.5)) {
-    // A cabinet against the room's top or bottom wall.
-    const int w = Cells(0.8), h = Cells(0.4);
+    // A cabinet against one of the room's walls, off the room's corners: 0.6
+    // to 1.6 m along the wall, 0.3 to 0.6 m deep.
+    const int along = Cells(Uniform(0.6, 1.6)), depth = Cells(Uniform(0.3, 0.6));
     for (int attempt = 0; attempt < 20; ++attempt) {
-      const int c0 = UniformInt(area.c0 + 1, std::max(area.c0 + 1, area.c1 - w));
-      const bool top = Chance(0.5);
-      const Rect cabinet{c0, top ? area.r1 - h + 1 : area.r0, c0 + w - 1,
-                         top ? area.r1 : area.r0 + h - 1};
-      if (Clear(room, cabinet, 0)) {
+      const int side = UniformInt(0, 3);  // bottom, top, left, right
+      Rect cabinet;
+      if (side < 2) {
+        const int c0 = UniformInt(area.c0 + 1, std::max(area.c0 + 1, area.c1 - along));
+        cabinet = {c0, side == 1 ? area.r1 - depth + 1 : area.r0, c0 + along - 1,
+                   side == 1 ? area.r1 : area.r0 + depth - 1};
+      } else {
+        const int r0 = UniformInt(area.r0 + 1, std::max(area.r0 + 1, area.r1 - along));
+        cabinet = {side == 3 ? area.c1 - depth + 1 : area.c0, r0,
+                   side == 3 ? area.c1 : area.c0 + depth - 1, r0 + along - 1};
+      }
+      // Against wall the whole way (not in front of a wide opening).
+      const Rect behind =
+          side == 0   ? Rect{cabinet.c0 - 1, area.r0 - 1, cabinet.c1 + 1, area.r0 - 1}
+          : side == 1 ? Rect{cabinet.c0 - 1, area.r1 + 1, cabinet.c1 + 1, area.r1 + 1}
+          : side == 2 ? Rect{area.c0 - 1, cabinet.r0 - 1, area.c0 - 1, cabinet.r1 + 1}
+                      : Rect{area.c1 + 1, cabinet.r0 - 1, area.c1 + 1, cabinet.r1 + 1};
+      bool walled = true;
+      for (int r = behind.r0; r <= behind.r1; ++r) {
+        for (int c = behind.c0; c <= behind.c1; ++c) {
+          walled = walled && plan_.grid.at(c, r) == Cell::kOccupied;
+        }
+      }
+      if (walled && Clear(room, cabinet, 0)) {
         Occupy(cabinet, FloorPlan::kAgainstWall);
         ++plan_.furniture_objects;
         break;

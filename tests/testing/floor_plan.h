@@ -5,7 +5,8 @@
 // least 0.3 m narrower than the corridor) from each room to the corridor,
 // doors between some neighbouring rooms and wide openings (over 2 m, which
 // make the two one room) between others, optional
-// furniture (table and chair legs, bins, cabinets against walls) and
+// furniture (table and chair legs, bins, cabinets of 0.6 to 1.6 by 0.3 to
+// 0.6 m against any wall of a room, off its corners) and
 // optional scan noise (specks in the rooms, cells lost along the walls).
 // Everything outside the building is unknown.
 #ifndef LINEMAP_TESTS_TESTING_FLOOR_PLAN_H_

@@ -2,11 +2,12 @@
 // truth on generated floor plans (tests/testing/floor_plan.h), and its speed
 // on real maps.
 //
-// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]...
+// Usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth...]...
 //                    [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]
 // --min-door / --max-door M set the door width range (metres) to try
 // other values than SegmentationOptions' defaults.
-// --truth scores a hand-labelled map (tests/data/rooms/*.truth; its map is
+// --truth scores a hand-labelled map (any argument ending in .truth does,
+// so that --truth DIR/*.truth takes them all) (tests/data/rooms/*.truth; its map is
 // found under --maps-dir, default ../shared/maps) with the same recall and
 // precision; rooms found = true rooms whose best segment is the best one of
 // no other true room.
@@ -17,9 +18,12 @@
 // of doors found (the two rooms a door joins fall in different segments, each
 // the best match of its room), rooms found / true, and on furnished plans the
 // furniture figures cell by cell: recall = furniture cells inside a blob (its
-// cells or its outline's interior), precision = of the non-free cells blobs
-// cover, the share that is furniture (and the share that is no wall:
-// furniture or scan specks). Then, per MAP, segmentation CPU time
+// cells or its outline's interior), for all furniture, for the cabinets
+// against walls and for the free-standing pieces (tables, chairs, bins);
+// precision = of the non-free cells blobs cover, the share that is
+// furniture, for all blobs, for the blobs against walls and for the
+// free-standing ones (and the share that is no wall: furniture or scan
+// specks). Then, per MAP, segmentation CPU time
 // (best of 5) and ms per Mcell, rooms, corridors, doors and blobs. The
 // recall and precision of the distance-transform method of the survey
 // (distance_baseline.h) are printed beside ours.
@@ -55,6 +59,11 @@ struct Totals {
   int plans = 0, doors = 0, doors_found = 0, rooms_true = 0, rooms_found = 0;
   std::size_t furniture = 0, furniture_covered = 0, blob_blocked = 0, blob_furniture = 0;
   std::size_t standalone = 0, standalone_covered = 0, blob_not_wall = 0;
+  std::size_t against_wall = 0, against_wall_covered = 0;
+  // Non-free cells covered by blobs against walls / free-standing blobs, and
+  // of those the furniture cells.
+  std::size_t wall_blob_blocked = 0, wall_blob_furniture = 0;
+  std::size_t free_blob_blocked = 0, free_blob_furniture = 0;
   std::size_t blobs = 0, objects = 0;
   double ms = 0, mcells = 0;
 
@@ -67,6 +76,9 @@ struct Totals {
     blob_blocked += o.blob_blocked, blob_furniture += o.blob_furniture;
     standalone += o.standalone, standalone_covered += o.standalone_covered;
     blob_not_wall += o.blob_not_wall, blobs += o.blobs, objects += o.objects;
+    against_wall += o.against_wall, against_wall_covered += o.against_wall_covered;
+    wall_blob_blocked += o.wall_blob_blocked, wall_blob_furniture += o.wall_blob_furniture;
+    free_blob_blocked += o.free_blob_blocked, free_blob_furniture += o.free_blob_furniture;
     ms += o.ms, mcells += o.mcells;
   }
 };
@@ -98,14 +110,16 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
     found += a != best.end() && b != best.end() && a->second != b->second;
   }
   // Furniture, cell by cell.
+  // 1: covered by a free-standing blob, 2: by one against a wall.
   std::vector<std::uint8_t> covered(grid.size(), 0);
   for (const FurnitureBlob& blob : seg.blobs) {
-    for (const CellIndex& cell : blob.cells) covered[grid.Index(cell.col, cell.row)] = 1;
+    const std::uint8_t kind = blob.against_wall ? 2 : 1;
+    for (const CellIndex& cell : blob.cells) covered[grid.Index(cell.col, cell.row)] = kind;
     if (blob.outline.size() >= 3) {
       const BinaryMask fill = FillChainPolygon(blob.outline, grid.width(), grid.height());
       for (int r = blob.box.min_row; r <= blob.box.max_row; ++r) {
         for (int c = blob.box.min_col; c <= blob.box.max_col; ++c) {
-          if (fill.at(c, r)) covered[grid.Index(c, r)] = 1;
+          if (fill.at(c, r)) covered[grid.Index(c, r)] = kind;
         }
       }
     }
@@ -117,10 +131,19 @@ void Evaluate(const testing::FloorPlan& plan, const Segmentation& seg, Totals* t
     hit += plan.furniture[i] && covered[i];
     standalone += plan.furniture[i] == testing::FloorPlan::kStandAlone;
     standalone_hit += plan.furniture[i] == testing::FloorPlan::kStandAlone && covered[i];
+    t->against_wall += plan.furniture[i] == testing::FloorPlan::kAgainstWall;
+    t->against_wall_covered += plan.furniture[i] == testing::FloorPlan::kAgainstWall && covered[i];
     if (covered[i] && grid.cells()[i] != Cell::kFree) {
       ++blocked;
       blocked_furniture += plan.furniture[i] != 0;
       not_wall += plan.room_of_cell[i] != 0;  // furniture or a speck in a room
+      if (covered[i] == 2) {
+        ++t->wall_blob_blocked;
+        t->wall_blob_furniture += plan.furniture[i] != 0;
+      } else {
+        ++t->free_blob_blocked;
+        t->free_blob_furniture += plan.furniture[i] != 0;
+      }
     }
   }
   t->recall += scores.recall;
@@ -195,9 +218,10 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump,
                  const SegmentationOptions& seg_options) {
   std::printf(
       "| plans | recall | precision | doors found | rooms found/true | furniture recall |"
-      " stand-alone furniture recall | furniture precision | blob cells not wall | blobs/objects |"
+      " against-wall recall | stand-alone recall | furniture precision | against-wall"
+      " precision | stand-alone precision | blob cells not wall | blobs/objects |"
       " ms per Mcell | DT baseline recall | DT baseline precision |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
   for (int variant = 0; variant < 8; ++variant) {
     Totals t;
@@ -226,22 +250,28 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump,
       return std::string(text);
     };
     std::printf(
-        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %zu/%zu | %.1f | %.3f | "
-        "%.3f |\n",
+        "| %s %s %s | %.3f | %.3f | %d/%d | %d/%d | %s | %s | %s | %s | %s | %s | %s | %zu/%zu | "
+        "%.1f | %.3f | %.3f |\n",
         options.thick_walls ? "thick" : "thin", options.furniture ? "furnished" : "plain",
         options.noise ? "noisy" : "clean", t.recall / t.plans, t.precision / t.plans, t.doors_found,
         t.doors, t.rooms_found, t.rooms_true, figure(t.furniture_covered, t.furniture).c_str(),
+        figure(t.against_wall_covered, t.against_wall).c_str(),
         figure(t.standalone_covered, t.standalone).c_str(),
         figure(t.blob_furniture, t.blob_blocked).c_str(),
+        figure(t.wall_blob_furniture, t.wall_blob_blocked).c_str(),
+        figure(t.free_blob_furniture, t.free_blob_blocked).c_str(),
         figure(t.blob_not_wall, t.blob_blocked).c_str(), t.blobs, t.objects, t.ms / t.mcells,
         t.base_recall / t.plans, t.base_precision / t.plans);
   }
   std::printf(
-      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %zu/%zu | %.1f "
-      "| %.3f | %.3f |\n",
+      "| all %d plans | %.3f | %.3f | %d/%d | %d/%d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | "
+      "%.3f | %zu/%zu | %.1f | %.3f | %.3f |\n",
       all.plans, all.recall / all.plans, all.precision / all.plans, all.doors_found, all.doors,
       all.rooms_found, all.rooms_true, Share(all.furniture_covered, all.furniture),
+      Share(all.against_wall_covered, all.against_wall),
       Share(all.standalone_covered, all.standalone), Share(all.blob_furniture, all.blob_blocked),
+      Share(all.wall_blob_furniture, all.wall_blob_blocked),
+      Share(all.free_blob_furniture, all.free_blob_blocked),
       Share(all.blob_not_wall, all.blob_blocked), all.blobs, all.objects, all.ms / all.mcells,
       all.base_recall / all.plans, all.base_precision / all.plans);
   return 0;
@@ -357,6 +387,8 @@ int main(int argc, char** argv) {
       seg_options.max_door_width_m = std::atof(argv[++i]);
     } else if (arg == "--truth" && i + 1 < argc) {
       truths.push_back(argv[++i]);
+    } else if (arg.size() > 6 && arg.substr(arg.size() - 6) == ".truth") {
+      truths.push_back(arg);
     } else if (arg == "--maps-dir" && i + 1 < argc) {
       maps_dir = argv[++i];
     } else if (arg == "--dump" && i + 1 < argc) {
@@ -364,9 +396,10 @@ int main(int argc, char** argv) {
     } else if (arg == "--verbose") {
       verbose = true;
     } else if (!arg.empty() && arg[0] == '-') {
-      std::fprintf(stderr,
-                   "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth]..."
-                   " [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]\n");
+      std::fprintf(
+          stderr,
+          "usage: bench_rooms [--seeds N] [--verbose] [--dump DIR] [--truth FILE.truth...]..."
+          " [--maps-dir DIR] [--min-door M] [--max-door M] [MAP.yaml...]\n");
       return 2;
     } else {
       maps.push_back(arg);

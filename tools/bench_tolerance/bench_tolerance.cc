@@ -2,19 +2,21 @@
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
 //   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
-//                   [--open R] [--close R] [--specks N] [--backs P]
+//                   [--svg OUT.svg]
 //
-// For T = 1..4 each map is simplified (SimplifyWithinTolerance) and coded as
-// the exact 2.0 file of the simplified grid (EncodeLmap, default options,
-// and with vector_layers = false), every guarantee re-checked by
-// CheckTolerance. Anchors: the exact file of the original (T = 0) and the
-// smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block is
-// occupied if any cell is, else unknown if any is, else free). Medians are
-// printed for the tuning maps and for the others separately. --cells-only
-// skips the files with vector layers (much faster). --open etc. override
-// one smoothing parameter of DefaultSmoothingParams(T) for every T (tuning). --coarse-lmap also
-// prints the exact file of the coarser maps and of them drawn back at full size.
+// For T = 0..4 each map is saved as `linemap encode --tolerance T` saves it
+// (EncodeLmap with tolerance_cells = T, with and without the vector layers),
+// decoded, and every guarantee checked on the decode by CheckTolerance
+// ('!' after a size: one fails). Anchors: the exact file (T = 0) and the
+// smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block
+// is occupied if any cell is, else unknown if any is, else free). Medians
+// are printed for the tuning maps and for the others separately.
+// --cells-only skips the files with vector layers (much faster).
+// --coarse-lmap also prints the exact file of the coarser maps and of them
+// drawn back at full size. --dump writes PNGs of the decodes. --svg draws
+// the curve of bytes against T beside the anchors.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,8 +24,6 @@
 #include <vector>
 
 #include "codec/codec/tolerance.h"
-#include "codec/codec/tolerance_internal.h"
-#include "codec/codec/tolerance_smoothing.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/png_codec.h"
@@ -88,6 +88,26 @@ long LmapBytes(const Grid& g, bool layers) {
   return bytes.ok() ? static_cast<long>(bytes->size()) : -1;
 }
 
+// The file saved within `t` cells and what it decodes to.
+struct Saved {
+  long bytes = -1;
+  Grid decoded;
+};
+
+Saved SaveWithin(const Grid& g, int t, bool layers) {
+  EncodeOptions options;
+  options.vector_layers = layers;
+  options.tolerance_cells = t;
+  Saved out;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(g, options);
+  if (!bytes.ok()) return out;
+  StatusOr<Grid> decoded = DecodeLmap(*bytes);
+  if (!decoded.ok()) return out;
+  out.bytes = static_cast<long>(bytes->size());
+  out.decoded = std::move(*decoded);
+  return out;
+}
+
 struct Row {
   std::string name;
   bool tuning = false;
@@ -130,15 +150,94 @@ void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
   }
 }
 
+// The curve a user chooses from: bytes against T, as a share of the PNG-9
+// of the 2x coarser map (log scale), one faint line per map (cells only),
+// the medians of the cells-only and the default files bold, the anchors
+// (PNG-9 of the 2x and 4x coarser maps) as horizontal lines and the
+// issue's goals (0.5x of them at T = 1 and 3) as crosses.
+std::string CurveSvg(const std::vector<Row>& rows) {
+  const double w = 640, h = 420, left = 70, right = 170, top = 30, bottom = 50;
+  const double lo = std::log(0.2), hi = std::log(4.0);
+  auto x = [&](int t) { return left + (w - left - right) * t / kMaxT; };
+  auto y = [&](double ratio) {
+    const double v = std::clamp(std::log(ratio), lo, hi);
+    return top + (h - top - bottom) * (hi - v) / (hi - lo);
+  };
+  std::string svg;
+  auto add = [&](const char* fmt, auto... args) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, fmt, args...);
+    svg += buf;
+  };
+  add("<svg xmlns='http://www.w3.org/2000/svg' width='%.0f' height='%.0f' "
+      "font-family='sans-serif' font-size='12'>\n<rect width='100%%' height='100%%' "
+      "fill='white'/>\n",
+      w, h);
+  add("<text x='%.0f' y='18' font-size='14'>Bytes against tolerance T (share of the PNG-9 of the "
+      "2x coarser map)</text>\n",
+      left);
+  for (const double r : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+    add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='#ddd'/><text x='%.1f' y='%.1f' "
+        "text-anchor='end'>%.2f</text>\n",
+        left, w - right, y(r), y(r), left - 6, y(r) + 4, r);
+  }
+  for (int t = 0; t <= kMaxT; ++t) {
+    add("<text x='%.1f' y='%.1f' text-anchor='middle'>T = %d</text>\n", x(t), h - bottom + 20, t);
+  }
+  auto polyline = [&](const std::vector<double>& v, const char* style) {
+    svg += "<polyline fill='none' " + std::string(style) + " points='";
+    for (int t = 0; t <= kMaxT; ++t) add("%.1f,%.1f ", x(t), y(v[t]));
+    svg += "'/>\n";
+  };
+  std::vector<std::vector<double>> cells(kMaxT + 1), layers(kMaxT + 1);
+  std::vector<double> png4;
+  for (const Row& r : rows) {
+    std::vector<double> mine;
+    for (int t = 0; t <= kMaxT; ++t) {
+      mine.push_back(static_cast<double>(r.cells[t]) / r.png2);
+      cells[t].push_back(mine.back());
+      layers[t].push_back(static_cast<double>(r.layers[t]) / r.png2);
+    }
+    png4.push_back(static_cast<double>(r.png4) / r.png2);
+    polyline(mine, "stroke='#9ecae1' stroke-width='1'");
+  }
+  std::vector<double> med_cells, med_layers;
+  for (int t = 0; t <= kMaxT; ++t) {
+    med_cells.push_back(Median(cells[t]));
+    med_layers.push_back(Median(layers[t]));
+  }
+  polyline(med_cells, "stroke='#08519c' stroke-width='3'");
+  polyline(med_layers, "stroke='#a63603' stroke-width='3'");
+  const double p4 = Median(png4);
+  add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='black' stroke-dasharray='6 4'/>\n",
+      left, w - right, y(1.0), y(1.0));
+  add("<line x1='%.1f' x2='%.1f' y1='%.1f' y2='%.1f' stroke='#555' stroke-dasharray='2 3'/>\n",
+      left, w - right, y(p4), y(p4));
+  for (const auto& [t, r] : {std::pair{1, 0.5}, std::pair{3, 0.5 * p4}}) {
+    add("<path d='M%.1f %.1f l8 8 m0 -8 l-8 8' stroke='#2ca02c' stroke-width='2' "
+        "transform='translate(-4 -4)'/>\n",
+        x(t), y(r));
+  }
+  const double lx = w - right + 12;
+  add("<text x='%.1f' y='%.1f' fill='#08519c'>median, cells only</text>\n", lx,
+      y(med_cells[kMaxT]));
+  add("<text x='%.1f' y='%.1f' fill='#a63603'>median, with layers</text>\n", lx,
+      y(med_layers[kMaxT]));
+  add("<text x='%.1f' y='%.1f'>PNG-9, 2x coarser</text>\n", lx, y(1.0) + 4);
+  add("<text x='%.1f' y='%.1f' fill='#555'>PNG-9, 4x coarser</text>\n", lx, y(p4) + 4);
+  add("<text x='%.1f' y='%.1f' fill='#2ca02c'>goals (0.5x)</text>\n", lx, y(0.5 * p4) + 18);
+  add("<text x='%.1f' y='%.1f' fill='#6baed6'>each map, cells only</text>\n", lx, top + 10);
+  svg += "</svg>\n";
+  return svg;
+}
+
 int Run(int argc, char** argv) {
   std::string dir = "../shared/maps";
   std::string only;
   std::string dump;  // folder for PNGs of the original and simplified grids
   bool coarse_lmap = false;
+  std::string svg_path;  // the curve's figure
   bool with_layers = true;
-  bool override_params = false;
-  // Overrides of DefaultSmoothingParams(T); -1 keeps the default.
-  int open = -1, close = -1, specks = -1, backs = -1, block = -1, nonfree_block = -1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : ""; };
@@ -150,20 +249,10 @@ int Run(int argc, char** argv) {
       dump = next();
     } else if (a == "--coarse-lmap") {
       coarse_lmap = true;
+    } else if (a == "--svg") {
+      svg_path = next();
     } else if (a == "--cells-only") {
       with_layers = false;
-    } else if (a == "--open") {
-      open = std::atoi(next()), override_params = true;
-    } else if (a == "--close") {
-      close = std::atoi(next()), override_params = true;
-    } else if (a == "--specks") {
-      specks = std::atoi(next()), override_params = true;
-    } else if (a == "--block") {
-      block = std::atoi(next()), override_params = true;
-    } else if (a == "--nonfree-block") {
-      nonfree_block = std::atoi(next()), override_params = true;
-    } else if (a == "--backs") {
-      backs = std::atoi(next()), override_params = true;
     } else {
       std::fprintf(stderr, "bench_tolerance: unknown argument '%s'\n", a.c_str());
       return 2;
@@ -188,32 +277,20 @@ int Run(int argc, char** argv) {
     row.png4 = SmallestPngBytes(Coarser(g, 4));
     std::printf("%-44s %8ld %8ld ", m.path, row.png2, row.png4);
     for (int t = 0; t <= kMaxT; ++t) {
-      Grid s = g;
-      if (t > 0 && override_params) {
-        // Tuning: the proposal with the given parameters, then the same
-        // checks and undoing as SimplifyWithinTolerance.
-        tolerance_internal::SmoothingParams params = tolerance_internal::DefaultSmoothingParams(t);
-        auto set = [](int value, int* field) {
-          if (value >= 0) *field = value;
-        };
-        set(open, &params.open_radius);
-        set(close, &params.close_radius);
-        set(specks, &params.speck_cells);
-        set(backs, &params.wall_back_passes);
-        set(block, &params.block_cells);
-        set(nonfree_block, &params.nonfree_block_cells);
-        s = tolerance_internal::ProposeSmoothing(g, t, params);
-        s = tolerance_internal::EnforceGuarantees(g, s, t);
-      } else if (t > 0) {
-        StatusOr<Grid> simplified = SimplifyWithinTolerance(g, t);
-        if (!simplified.ok()) return 1;
-        s = *simplified;
+      const Saved cells = SaveWithin(g, t, false);
+      row.holds[t] = cells.bytes >= 0 && CheckTolerance(g, cells.decoded, t).Holds();
+      row.cells[t] = cells.bytes;
+      if (with_layers) {
+        const Saved layers = SaveWithin(g, t, true);
+        row.holds[t] =
+            row.holds[t] && layers.bytes >= 0 && CheckTolerance(g, layers.decoded, t).Holds();
+        row.layers[t] = layers.bytes;
+      } else {
+        row.layers[t] = row.cells[t];
       }
-      row.holds[t] = CheckTolerance(g, s, t).Holds();
-      if (!dump.empty())
-        DumpPng(s, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
-      row.cells[t] = LmapBytes(s, false);
-      row.layers[t] = with_layers ? LmapBytes(s, true) : row.cells[t];
+      if (!dump.empty() && cells.bytes >= 0) {
+        DumpPng(cells.decoded, dump + "/" + FlatName(m.path) + "_t" + std::to_string(t) + ".png");
+      }
       if (with_layers) {
         std::printf(" %ld/%ld%s", row.cells[t], row.layers[t], row.holds[t] ? "" : "!");
       } else {
@@ -235,6 +312,16 @@ int Run(int argc, char** argv) {
   }
   PrintSummary(rows, true, with_layers);
   PrintSummary(rows, false, with_layers);
+  if (!svg_path.empty() && !rows.empty()) {
+    std::FILE* f = std::fopen(svg_path.c_str(), "w");
+    const std::string svg = CurveSvg(rows);
+    if (f == nullptr || std::fwrite(svg.data(), 1, svg.size(), f) != svg.size()) {
+      std::fprintf(stderr, "bench_tolerance: cannot write '%s'\n", svg_path.c_str());
+      if (f) std::fclose(f);
+      return 1;
+    }
+    std::fclose(f);
+  }
   return 0;
 }
 

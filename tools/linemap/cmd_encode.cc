@@ -36,8 +36,9 @@ const CommandSpec kEncodeSpec = {
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
          "largest distance (cells, 0..4) by which the decode may differ: 0 exact (the default); "
-         "1..4 simplify the map within T, checking obstacles and free space within T both ways, "
-         "no leaks and plans that agree"},
+         "1..4 draw the map in 2 x 2-cell blocks (a version 2.1 file), keeping cells exact "
+         "where obstacles or free space would move more than T, two free regions would join "
+         "or split, or a plan would change by more than 3 % or 2 steps"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
         {"--raster-only", "", "leave the vector layers out: the smallest exact file"},
         {"--follow-steps", "",
@@ -49,7 +50,7 @@ const CommandSpec kEncodeSpec = {
          "side of the independently decodable tiles, 16..65536 (default 1024)"},
         {"--lossy", "",
          "write a version 1.0 file with the former lossy encoder (obstacles within one cell, "
-         "free space kept); replaced by --tolerance once it is implemented"},
+         "free space kept; it can drop wall surfaces: --tolerance keeps them)"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
         {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
         {"--pose", "X,Y[,YAW]",
@@ -234,7 +235,7 @@ int RunEncode(const std::vector<std::string>& args) {
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
               options->format_v1             ? "version 1.0, lossy"
-              : options->tolerance_cells > 0 ? "within the tolerance, 2.0"
+              : options->tolerance_cells > 0 ? "within the tolerance"
               : options->vector_layers       ? "exact, with walls, rooms and furniture"
                                              : "exact, cells only");
   if (with_png) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/tolerance.h"
 #include "format/deflate.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
@@ -59,6 +60,23 @@ TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
     const bool layers = std::string(file).find("raster_only") == std::string::npos;
     EXPECT_EQ(!contents->walls.empty(), layers) << file;
   }
+}
+
+// A version 2.1 file (cells in blocks, saved within 1 cell) decodes to a
+// grid that keeps every guarantee of tolerance 1 against its map, checked by
+// CheckTolerance, whatever the encoder's choices were when it was written.
+TEST(FixturesTest, VersionTwoOneFixtureKeepsItsTolerance) {
+  auto contents = LoadLmapContents(Fixture("willow_v2_1_tolerance_1.lmap"));
+  ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+  EXPECT_EQ(contents->major, 2);
+  EXPECT_EQ(contents->minor, 1);
+  EXPECT_FALSE(contents->lossless);
+  auto original =
+      LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
+  ASSERT_TRUE(original.ok());
+  EXPECT_NE(contents->grid, *original);
+  EXPECT_TRUE(CheckTolerance(*original, contents->grid, 1).Holds());
+  EXPECT_FALSE(contents->walls.empty());
 }
 
 TEST(FixturesTest, LossyFixturesDecodeToTheRecordedGrids) {

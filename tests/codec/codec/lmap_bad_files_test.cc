@@ -51,6 +51,11 @@ const BadFile kBadFiles[] = {
     {"v2_wall_after_cell.lmap", "chunk WALL: chunk out of order or repeated"},
     {"v2_wall_count_over_limit.lmap", "chunk WALL: 1099511627776 walls exceed the segment limit"},
     {"v2_wall_stream_truncated.lmap", "chunk WALL: "},
+    // Version 2.1 (the same script).
+    {"v2_1_block_side_1.lmap", "chunk BLKS: block side 1 outside 2..5"},
+    {"v2_1_tile_side_not_a_multiple_of_the_block_side.lmap",
+     "chunk BLKS: tile size 1024 outside 16..65536 or not a multiple of the block side"},
+    {"v2_1_cell_and_blks.lmap", "chunk BLKS: chunk out of order or repeated"},
 };
 
 std::string BadDir() { return testing::SourceDir() + "/tests/data/bad/lmap_decode/"; }

@@ -1,0 +1,355 @@
+// Furniture standing against walls (SegmentationMethod::kRooms, step 5b).
+// A cabinet or a shelf against a wall is, in the occupancy grid, one piece
+// with the wall: the free space does not enclose it, so the enclosed-
+// obstacle test of step 1 cannot see it. It shows as a compact bump of the
+// wall into a room: in every grid line across the bump (rows for a bump on
+// a top or bottom wall, columns for one on a left or right wall) the run of
+// blocked cells is short and has the same room on both ends, while in the
+// wall behind it the run is long (it goes on along the wall). The bump is
+// the connected set of such short-run cells; it is cut from the wall along
+// the wall's face, the first grid line whose run is long. It is furniture
+// when it is deep and wide enough to be more than wall noise or a wall's
+// end (a stub beside a wide opening is no wider than a wall is thick),
+// small enough to be a piece of furniture rather than a room's notch, the
+// wall goes on behind it past both of its sides (a piece of wall between
+// two door openings does not), and most of its cells that face the room
+// are occupied (the scan saw it; a bump of unknown cells is a scan hole).
+// Scan noise is allowed for: a free pocket that noise closed off beside a
+// cabinet stands for any room at a run's end, a line that a noise cell
+// joined to a side wall is bridged from the lines on either side, and the
+// room in front of the bump is looked for up to two lines out.
+//
+// Runs are taken along the grid's axes, so bumps are found on walls that
+// run along the grid's rows or columns (maps are usually drawn so); a
+// cabinet in a room's corner (its run goes on into the side wall) or against
+// a slanted wall is not found.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "codec/segment/segment_internal.h"
+
+namespace linemap::segment_internal {
+namespace {
+
+// Size limits of a bump in cells: depth across the wall's face, width along
+// it.
+struct BumpRule {
+  int min_depth = 0;
+  int max_depth = 0;
+  int min_width = 0;
+  int max_width = 0;
+};
+
+BumpRule MakeBumpRule(const SegmentationOptions& options, double res) {
+  BumpRule rule;
+  rule.min_depth =
+      std::max(1, static_cast<int>(std::lround(options.wall_furniture_min_depth_m / res)));
+  rule.max_depth = static_cast<int>(std::lround(options.wall_furniture_max_depth_m / res));
+  // Wider than a wall is thick: a wall's end beside a wide opening is a bump
+  // of the wall's thickness.
+  rule.min_width = static_cast<int>(std::floor(options.wall_max_thickness_m / res)) + 1;
+  rule.max_width = static_cast<int>(std::lround(options.wall_furniture_max_width_m / res));
+  return rule;
+}
+
+// The map seen along one axis: runs go along a line (a row or a column),
+// `lines` of `length` cells. Horizontal runs (rows) find bumps on top and
+// bottom walls; vertical runs (columns) on left and right walls.
+struct Axis {
+  bool rows = true;
+  int lines = 0;   // rows (or columns)
+  int length = 0;  // cells per line
+};
+
+class BumpFinder {
+ public:
+  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule)
+      : grid_(grid),
+        room_of_(room_of_cell),
+        rule_(rule),
+        blocked_(grid.size()),
+        claimed_(grid.size(), 0),
+        mark_(grid.size(), 0),
+        seen_(grid.size(), 0),
+        row_marked_(grid.height(), 0) {
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      blocked_[i] = room_of_cell[i] == 0 && grid.cells()[i] != Cell::kFree;
+    }
+  }
+
+  void Find(bool rows, std::vector<WallPiece>* out);
+
+ private:
+  std::size_t Index(const Axis& axis, int line, int k) const {
+    return axis.rows ? grid_.Index(k, line) : grid_.Index(line, k);
+  }
+  bool Blocked(std::size_t i) const { return blocked_[i] != 0; }
+  // The room at the end of a run: its id, -1 for a free cell in no room
+  // (any room), 0 for none.
+  std::int32_t EndRoom(std::size_t i) const {
+    if (room_of_[i] > 0) return room_of_[i];
+    return grid_.cells()[i] == Cell::kFree ? -1 : 0;
+  }
+  void MarkRun(const Axis& axis, int line, int begin, int end);
+  void MarkShortRuns(const Axis& axis);
+  bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
+              WallPiece* piece) const;
+
+  const Grid& grid_;
+  const std::vector<std::int32_t>& room_of_;
+  BumpRule rule_;
+  // Blocked: no room cell and not free (wall, unknown, obstacles too large
+  // or too wall-like for furniture).
+  std::vector<std::uint8_t> blocked_;
+  std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
+  std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
+  std::vector<std::uint8_t> seen_;     // cells of components looked at
+  // Rows holding marks: the passes after the marking skip the others (most
+  // of a map: walls, unknown, open floor).
+  std::vector<std::uint8_t> row_marked_;
+};
+
+// A run [begin, end) of blocked cells along the axis in one line: marked
+// when it is short and bounded on both ends by cells of one room. A free
+// cell in no room (a pocket that noise closed off, e.g. in the gap between
+// a cabinet and a side wall) stands for any room.
+void BumpFinder::MarkRun(const Axis& axis, int line, int begin, int end) {
+  if (begin == 0 || end == axis.length || end - begin > rule_.max_width) return;
+  const std::int32_t a = EndRoom(Index(axis, line, begin - 1));
+  const std::int32_t b = EndRoom(Index(axis, line, end));
+  if (a == 0 || b == 0 || (a > 0 && b > 0 && a != b) || (a < 0 && b < 0)) return;
+  const std::int32_t room = std::max(a, b);
+  for (int j = begin; j < end; ++j) mark_[Index(axis, line, j)] = room;
+  if (axis.rows) {
+    row_marked_[line] = 1;
+  } else {
+    std::fill(row_marked_.begin() + begin, row_marked_.begin() + end, 1);
+  }
+}
+
+void BumpFinder::MarkShortRuns(const Axis& axis) {
+  const int w = grid_.width(), h = grid_.height();
+  // Clear what the other axis marked.
+  for (int r = 0; r < h; ++r) {
+    if (!row_marked_[r]) continue;
+    const std::size_t row = static_cast<std::size_t>(r) * w;
+    std::fill(mark_.begin() + row, mark_.begin() + row + w, 0);
+    std::fill(seen_.begin() + row, seen_.begin() + row + w, 0);
+    row_marked_[r] = 0;
+  }
+  // Both axes are scanned in raster order (columns keep their open run's
+  // start), so the map is read in memory order.
+  if (axis.rows) {
+    for (int r = 0; r < h; ++r) {
+      const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(r) * w;
+      int c = 0;
+      while (c < w) {
+        if (!row[c]) {
+          ++c;
+          continue;
+        }
+        const int begin = c;
+        while (c < w && row[c]) ++c;
+        MarkRun(axis, r, begin, c);
+      }
+    }
+  } else {
+    std::vector<int> start(w, -1);
+    for (int r = 0; r <= h; ++r) {
+      const std::uint8_t* row = r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : nullptr;
+      for (int c = 0; c < w; ++c) {
+        const bool blocked = row && row[c];
+        if (blocked && start[c] < 0) {
+          start[c] = r;
+        } else if (!blocked && start[c] >= 0) {
+          MarkRun(axis, c, start[c], r);
+          start[c] = -1;
+        }
+      }
+    }
+  }
+  // A noise cell in the gap between a cabinet and a side wall joins one
+  // line of the cabinet to the side wall, and that line's run goes on: its
+  // cells between two marked lines (of one room) are marked all the same.
+  const int dc = axis.rows ? 0 : 1, dr = axis.rows ? 1 : 0;
+  for (int r = dr; r + dr < h; ++r) {
+    if (!row_marked_[r - dr] || !row_marked_[r + dr]) continue;
+    for (int c = dc; c + dc < w; ++c) {
+      const std::size_t i = grid_.Index(c, r);
+      if (mark_[i] || !blocked_[i]) continue;
+      const std::int32_t before = mark_[grid_.Index(c - dc, r - dr)];
+      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) {
+        mark_[i] = before;
+        row_marked_[r] = 1;
+      }
+    }
+  }
+}
+
+// `cells`: one 4-connected set of cells marked with `room`.
+bool BumpFinder::Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
+                        WallPiece* piece) const {
+  const int w = grid_.width();
+  BoundingBox box{w, grid_.height(), -1, -1};
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    box.min_col = std::min(box.min_col, c);
+    box.max_col = std::max(box.max_col, c);
+    box.min_row = std::min(box.min_row, r);
+    box.max_row = std::max(box.max_row, r);
+  }
+  // Along the runs (the wall's face) and across them (out of the wall).
+  const int lo_line = axis.rows ? box.min_row : box.min_col;
+  const int hi_line = axis.rows ? box.max_row : box.max_col;
+  const int lo_k = axis.rows ? box.min_col : box.min_row;
+  const int hi_k = axis.rows ? box.max_col : box.max_row;
+  const int depth = hi_line - lo_line + 1;
+  const int width = hi_k - lo_k + 1;
+  if (depth < rule_.min_depth || depth > rule_.max_depth || width > rule_.max_width) return false;
+  // The typical width (median over the lines): a noise cell beside a wall's
+  // end widens one line, not the end.
+  std::vector<int> per_line(depth, 0);
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    ++per_line[(axis.rows ? r : c) - lo_line];
+  }
+  std::nth_element(per_line.begin(), per_line.begin() + depth / 2, per_line.end());
+  if (per_line[depth / 2] < rule_.min_width) return false;
+  // The lines just outside the bump: on one side the wall (blocked cells
+  // with long runs), on the other the room it stands in.
+  if (lo_line == 0 || hi_line == axis.lines - 1) return false;
+  // The room is looked for up to two lines out: noise may have joined the
+  // bump's front line to a side wall (that line is then left out).
+  int wall_lo = 0, wall_hi = 0, room_lo = 0, room_hi = 0;
+  for (int k = lo_k; k <= hi_k; ++k) {
+    const std::size_t lo = Index(axis, lo_line - 1, k);
+    const std::size_t hi = Index(axis, hi_line + 1, k);
+    wall_lo += Blocked(lo) && mark_[lo] == 0;
+    wall_hi += Blocked(hi) && mark_[hi] == 0;
+    room_lo +=
+        room_of_[lo] == room || (lo_line >= 2 && room_of_[Index(axis, lo_line - 2, k)] == room);
+    room_hi += room_of_[hi] == room ||
+               (hi_line + 2 < axis.lines && room_of_[Index(axis, hi_line + 2, k)] == room);
+  }
+  const bool on_lo_wall = 2 * wall_lo >= width && 2 * room_hi >= width;
+  const bool on_hi_wall = 2 * wall_hi >= width && 2 * room_lo >= width;
+  if (on_lo_wall == on_hi_wall) return false;
+  // The wall goes on behind the bump for min_depth cells past each of its
+  // sides (in the line behind the bump or, where noise merged the bump's
+  // last line with the wall, the line behind that): a piece of wall between
+  // two door openings ends where the openings cross the wall (give or take
+  // a noise cell at a jamb), and is no bump.
+  const int step = on_lo_wall ? -1 : 1;
+  const int base = on_lo_wall ? lo_line - 1 : hi_line + 1;
+  for (int j = 1; j <= rule_.min_depth; ++j) {
+    for (const int k : {lo_k - j, hi_k + j}) {
+      if (k < 0 || k >= axis.length) return false;
+      bool wall = false;
+      for (const int line : {base, base + step}) {
+        if (line < 0 || line >= axis.lines) continue;
+        const std::size_t i = Index(axis, line, k);
+        wall = wall || (Blocked(i) && mark_[i] == 0);
+      }
+      if (!wall) return false;
+    }
+  }
+  piece->room = room;
+  piece->box = box;
+  Labeling local;
+  local.width = box.max_col - box.min_col + 1;
+  local.height = box.max_row - box.min_row + 1;
+  local.labels.assign(static_cast<std::size_t>(local.width) * local.height, 0);
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    local.labels[static_cast<std::size_t>(r - box.min_row) * local.width + (c - box.min_col)] = 1;
+    if (grid_.cells()[i] == Cell::kOccupied) piece->occupied.push_back({c, r});
+  }
+  // Furniture is seen by the scan: most of the bump's cells that face the
+  // room are occupied (a bump of unknown cells is a hole in the scan).
+  std::size_t facing = 0, facing_occupied = 0;
+  for (const std::size_t i : cells) {
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    bool faces = false;
+    for (const auto& [dc, dr] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+      faces = faces ||
+              (grid_.Contains(c + dc, r + dr) && room_of_[grid_.Index(c + dc, r + dr)] == room);
+    }
+    facing += faces;
+    facing_occupied += faces && grid_.cells()[i] == Cell::kOccupied;
+  }
+  if (facing_occupied == 0 || 2 * facing_occupied < facing) return false;
+  ComponentStats stats;
+  stats.cell_count = cells.size();
+  stats.box = {0, 0, local.width - 1, local.height - 1};
+  // The trace starts at the first cell in raster order.
+  const auto first = std::find(local.labels.begin(), local.labels.end(), 1);
+  const int offset = static_cast<int>(first - local.labels.begin());
+  stats.first_cell = {offset % local.width, offset / local.width};
+  local.components.push_back(stats);
+  for (const CellIndex& cell : TraceOuterContour(local, 1)) {
+    piece->outline.push_back({cell.col + box.min_col, cell.row + box.min_row});
+  }
+  std::sort(piece->occupied.begin(), piece->occupied.end(),
+            [](const CellIndex& a, const CellIndex& b) {
+              return a.row != b.row ? a.row < b.row : a.col < b.col;
+            });
+  return true;
+}
+
+void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
+  const Axis axis{rows, rows ? grid_.height() : grid_.width(),
+                  rows ? grid_.width() : grid_.height()};
+  MarkShortRuns(axis);
+  const int w = grid_.width(), h = grid_.height();
+  std::vector<std::uint8_t>& seen = seen_;
+  std::vector<std::size_t> cells, stack;
+  for (int r0 = 0; r0 < h; ++r0) {
+    if (!row_marked_[r0]) continue;  // a row without marks
+    for (int c0 = 0; c0 < w; ++c0) {
+      const std::size_t seed = grid_.Index(c0, r0);
+      if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
+      const std::int32_t room = mark_[seed];
+      cells.clear();
+      stack.assign(1, seed);
+      seen[seed] = 1;
+      while (!stack.empty()) {
+        const std::size_t i = stack.back();
+        stack.pop_back();
+        cells.push_back(i);
+        const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+        const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+        for (int d = 0; d < 4; ++d) {
+          const int nc = c + dc[d], nr = r + dr[d];
+          if (nc < 0 || nr < 0 || nc >= w || nr >= h) continue;
+          const std::size_t j = grid_.Index(nc, nr);
+          if (seen[j] || claimed_[j] || mark_[j] != room) continue;
+          seen[j] = 1;
+          stack.push_back(j);
+        }
+      }
+      WallPiece piece;
+      if (!Accept(axis, room, cells, &piece)) continue;
+      for (const std::size_t i : cells) claimed_[i] = 1;
+      out->push_back(std::move(piece));
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<WallPiece> FindWallFurniture(const Grid& grid,
+                                         const std::vector<std::int32_t>& room_of_cell,
+                                         const SegmentationOptions& options) {
+  std::vector<WallPiece> pieces;
+  if (grid.empty() || options.wall_furniture_max_depth_m <= 0 ||
+      options.wall_furniture_max_width_m <= 0) {
+    return pieces;
+  }
+  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution));
+  finder.Find(/*rows=*/true, &pieces);
+  finder.Find(/*rows=*/false, &pieces);
+  return pieces;
+}
+
+}  // namespace linemap::segment_internal
