@@ -441,7 +441,11 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   return std::move(lines.segments);
 }
 
-std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segments) {
+namespace {
+
+// JoinSegments without the canonical order: a map's blocks are ordered
+// once, all together (ExtractVectorLayers), not each on its own first.
+std::vector<WallPolyline> JoinSegmentsUnordered(const std::vector<LatticeSegment>& segments) {
   const auto key = [](CellIndex c) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.row)) << 32) |
            static_cast<std::uint32_t>(c.col);
@@ -477,13 +481,23 @@ std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segmen
     backward.insert(backward.end(), forward.begin(), forward.end());
     walls.push_back({std::move(backward)});
   }
+  return walls;
+}
+
+}  // namespace
+
+std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segments) {
+  std::vector<WallPolyline> walls = JoinSegmentsUnordered(segments);
   CanonicalizeWalls(&walls);
   return walls;
 }
 
 namespace {
 
-StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options) {
+// With `order_walls` false the walls are left unordered, zero-length steps
+// and all (the caller canonicalises them).
+StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options,
+                                             bool order_walls) {
   VectorLayers layers;
   auto walls_task =
       StartTask(options.max_threads != 1, [&] { return WallSegments(grid, options); });
@@ -492,7 +506,7 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   LINEMAP_RETURN_IF_ERROR(rooms);
   if (!segments.ok()) return segments.status();
   DropRedundantSegments(EdgeCells(grid), &*segments);
-  layers.walls = JoinSegments(*segments);
+  layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;
 }
 
@@ -529,7 +543,7 @@ void AppendBlockLayers(VectorLayers block, int x0, int y0, VectorLayers* all) {
 StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options) {
   if (grid.empty()) return VectorLayers{};
   if (grid.width() <= kLayerBlockCells && grid.height() <= kLayerBlockCells) {
-    return ExtractWholeMapLayers(grid, options);
+    return ExtractWholeMapLayers(grid, options, true);
   }
   // A map larger than a block: the line extractor and the segmentation need
   // tens of bytes per cell, so they run block by block, and walls, rooms and
@@ -547,11 +561,12 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
         std::copy_n(grid.cells().begin() + static_cast<std::ptrdiff_t>(grid.Index(x0, y0 + r)), w,
                     block.mutable_cells().begin() + static_cast<std::ptrdiff_t>(r) * w);
       }
-      LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractWholeMapLayers(block, block_options));
+      LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers,
+                               ExtractWholeMapLayers(block, block_options, false));
       AppendBlockLayers(std::move(layers), x0, y0, &all);
     }
   }
-  OrderWallsForCoding(&all.walls);
+  CanonicalizeWalls(&all.walls);
   OrderFurnitureForCoding(&all.furniture);
   return all;
 }
