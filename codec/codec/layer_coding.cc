@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -46,97 +47,203 @@ std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc
 
 // ---- paths: walls and polygons ----
 
-// A path of lattice points: its number of points (less `min_points`), its
-// start as an offset from the previous path's last point, then each step
-// (spec/format.md section 5.2).
-struct PathModels {
-  UIntModel points;
-  UIntModel start[2];     // dcol, drow
-  BitModel axis[3];       // by the previous step: first, axis, diagonal
-  SymbolModel<2> dir[5];  // by the previous axis direction, 4 = none
-  UIntModel axis_len[2];  // length - 1; first step, later steps
-  UIntModel diag[2];      // dcol, drow of a diagonal step
+// The encoder and the decoder run the same code (CodePath) over one of
+// these: a writer codes the value it is given, a reader replaces it with the
+// value it reads and returns false when the stream is corrupt. One body of
+// code keeps the two sides from drifting apart.
+class PathWriter {
+ public:
+  explicit PathWriter(RangeEncoder* enc) : enc_(enc) {}
+  static constexpr bool kReading = false;
+  bool Bit(BitModel* m, int* bit) {
+    enc_->Encode(m, *bit);
+    return true;
+  }
+  bool UInt(UIntModel* m, std::uint64_t* v) {
+    EncodeUInt(enc_, m, *v);
+    return true;
+  }
+  bool SInt(UIntModel* m, std::int64_t* v) {
+    EncodeSInt(enc_, m, *v);
+    return true;
+  }
+  bool Turn(SymbolModel<2>* m, unsigned* symbol) {
+    EncodeSymbol<2>(enc_, m, *symbol);
+    return true;
+  }
+
+ private:
+  RangeEncoder* enc_;
 };
 
-void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& p,
-                std::size_t min_points, CellIndex* prev) {
-  EncodeUInt(enc, &m->points, p.size() - min_points);
-  EncodeSInt(enc, &m->start[0], p[0].col - prev->col);
-  EncodeSInt(enc, &m->start[1], p[0].row - prev->row);
-  *prev = p.back();
-  int kind = 0;      // 0 first step, 1 axis, 2 diagonal
-  int last_dir = 4;  // previous axis direction, 4 = none
-  for (std::size_t i = 1; i < p.size(); ++i) {
-    const int dc = p[i].col - p[i - 1].col;
-    const int dr = p[i].row - p[i - 1].row;
-    const bool axis = dc == 0 || dr == 0;
-    enc->Encode(&m->axis[kind], axis ? 1 : 0);
-    if (axis) {
-      const int dir = dc > 0 ? 0 : dr > 0 ? 1 : dc < 0 ? 2 : 3;
-      const unsigned symbol = last_dir == 4 ? dir : (dir - last_dir) & 3;
-      EncodeSymbol<2>(enc, &m->dir[last_dir], symbol);
-      EncodeUInt(enc, &m->axis_len[kind == 0 ? 0 : 1], std::abs(dc) + std::abs(dr) - 1);
-      last_dir = dir;
-      kind = 1;
-    } else {
-      EncodeSInt(enc, &m->diag[0], dc);
-      EncodeSInt(enc, &m->diag[1], dr);
-      last_dir = 4;
-      kind = 2;
-    }
+class PathReader {
+ public:
+  explicit PathReader(RangeDecoder* dec) : dec_(dec) {}
+  static constexpr bool kReading = true;
+  bool Bit(BitModel* m, int* bit) {
+    *bit = dec_->Decode(m);
+    return true;
   }
+  bool UInt(UIntModel* m, std::uint64_t* v) { return DecodeUInt(dec_, m, v); }
+  bool SInt(UIntModel* m, std::int64_t* v) { return DecodeSInt(dec_, m, v); }
+  bool Turn(SymbolModel<2>* m, unsigned* symbol) {
+    *symbol = DecodeSymbol<2>(dec_, m);
+    return true;
+  }
+
+ private:
+  RangeDecoder* dec_;
+};
+
+// Length classes of a step's length along its main axis: 1, 2-3, 4-7,
+// 8-15, 16-31, 32 and more.
+constexpr int kLengthClasses = 6;
+int LengthClass(std::uint64_t len) {
+  int c = 0;
+  while (c + 1 < kLengthClasses && (len >> (c + 1)) != 0) ++c;
+  return c;
+}
+
+// Magnitude classes of a start's forward offset: 0, 1, 2-3, 4 and more.
+int OffsetClass(std::int64_t v) {
+  const std::uint64_t a = static_cast<std::uint64_t>(v < 0 ? -v : v);
+  return a == 0 ? 0 : a == 1 ? 1 : a <= 3 ? 2 : 3;
+}
+
+// A path of lattice points: its number of points (less `min_points`), its
+// start as an offset from the previous path's last point, then each step
+// (spec/format.md section 5.2). Offsets and steps are coded in the frame of
+// the heading (the main direction of the last step coded, carried from path
+// to path): indoor walls run along a few directions, so the next piece
+// mostly starts ahead of the last one and runs on or turns by a right angle.
+struct PathModels {
+  UIntModel points;
+  UIntModel ahead;                  // start offset along the heading
+  UIntModel side[4];                // across it, by OffsetClass(ahead)
+  SymbolModel<2> turn[2][5];        // [later step][previous turn, 4 none]
+  UIntModel length[2][2];           // length - 1: [later step][turned]
+  UIntModel minor[kLengthClasses];  // |offset across the main axis|
+  BitModel minor_sign[3][3];        // [turn: on, left or back, right][previous sign + 1]
+};
+
+struct PathState {
+  CellIndex prev{0, 0};  // the last point coded
+  int heading = 0;       // axis direction of the last step's main axis
+};
+
+// Codes one path (`*path` is read when writing, filled when reading);
+// `points` counts the points against `max_points`. Returns false when the
+// stream is corrupt, sets *exhausted when the points exceed the limit.
+template <class IO>
+bool CodePath(IO* io, PathModels* m, int width, int height, std::size_t min_points,
+              std::uint64_t max_points, std::uint64_t* points, PathState* state,
+              std::vector<CellIndex>* path, bool* exhausted) {
+  const std::int64_t side_limit = std::max(width, height);
+  std::uint64_t k = IO::kReading ? 0 : path->size() - min_points;
+  if (!io->UInt(&m->points, &k)) return false;
+  *points += k + min_points;
+  if (k + min_points > max_points || *points > max_points) {
+    *exhausted = true;
+    return false;
+  }
+  const int h = state->heading;
+  std::int64_t ahead = 0, side = 0;
+  if constexpr (!IO::kReading) {
+    const std::int64_t dc = (*path)[0].col - state->prev.col;
+    const std::int64_t dr = (*path)[0].row - state->prev.row;
+    ahead = dc * kAxisCol[h] + dr * kAxisRow[h];
+    side = dc * kAxisCol[(h + 1) & 3] + dr * kAxisRow[(h + 1) & 3];
+  }
+  if (!io->SInt(&m->ahead, &ahead) || std::llabs(ahead) >= side_limit ||
+      !io->SInt(&m->side[OffsetClass(ahead)], &side) || std::llabs(side) >= side_limit) {
+    return false;
+  }
+  // In 64 bits: the offsets are below max(width, height), not the sums.
+  const std::int64_t col = state->prev.col + ahead * kAxisCol[h] + side * kAxisCol[(h + 1) & 3];
+  const std::int64_t row = state->prev.row + ahead * kAxisRow[h] + side * kAxisRow[(h + 1) & 3];
+  if (col < 0 || row < 0 || col >= width || row >= height) return false;
+  CellIndex p{static_cast<int>(col), static_cast<int>(row)};
+  if constexpr (IO::kReading) {
+    path->clear();
+    path->push_back(p);
+  }
+  int heading = h;
+  int later = 0;
+  unsigned last_turn = 4;
+  int last_sign = 0;
+  for (std::uint64_t i = 1; i < k + min_points; ++i) {
+    // The step as a main axis direction a, a length along it and an offset
+    // across it (towards direction a + 1); the main axis is the one the
+    // step moves along the most, ties to the heading's axis.
+    unsigned turn = 0;
+    std::uint64_t len = 0, minor_abs = 0;
+    int sign = 0;
+    if constexpr (!IO::kReading) {
+      const std::int64_t dc = (*path)[i].col - (*path)[i - 1].col;
+      const std::int64_t dr = (*path)[i].row - (*path)[i - 1].row;
+      const bool heading_is_col = (heading & 1) == 0;
+      const bool col_main =
+          std::llabs(dc) > std::llabs(dr) || (std::llabs(dc) == std::llabs(dr) && heading_is_col);
+      const int a = col_main ? (dc > 0 ? 0 : 2) : (dr > 0 ? 1 : 3);
+      turn = static_cast<unsigned>((a - heading) & 3);
+      len = static_cast<std::uint64_t>(col_main ? std::llabs(dc) : std::llabs(dr)) - 1;
+      const std::int64_t across = dc * kAxisCol[(a + 1) & 3] + dr * kAxisRow[(a + 1) & 3];
+      minor_abs = static_cast<std::uint64_t>(std::llabs(across));
+      sign = across > 0 ? 1 : 0;
+    }
+    if (!io->Turn(&m->turn[later][last_turn], &turn)) return false;
+    const int turned = turn == 0 ? 0 : 1;
+    if (!io->UInt(&m->length[later][turned], &len) ||
+        len >= static_cast<std::uint64_t>(side_limit)) {
+      return false;
+    }
+    if (!io->UInt(&m->minor[LengthClass(len + 1)], &minor_abs) || minor_abs > len + 1) {
+      return false;
+    }
+    if (minor_abs != 0) {
+      const int turn_class = turn == 1 ? 1 : turn == 3 ? 2 : 0;
+      if (!io->Bit(&m->minor_sign[turn_class][last_sign + 1], &sign)) return false;
+    }
+    const int a = static_cast<int>((heading + static_cast<int>(turn)) & 3);
+    const std::int64_t across =
+        sign == 1 ? static_cast<std::int64_t>(minor_abs) : -static_cast<std::int64_t>(minor_abs);
+    const std::int64_t along = static_cast<std::int64_t>(len + 1);
+    const std::int64_t c = p.col + along * kAxisCol[a] + across * kAxisCol[(a + 1) & 3];
+    const std::int64_t r = p.row + along * kAxisRow[a] + across * kAxisRow[(a + 1) & 3];
+    if (c < 0 || r < 0 || c >= width || r >= height) return false;
+    p = {static_cast<int>(c), static_cast<int>(r)};
+    if constexpr (IO::kReading) path->push_back(p);
+    heading = a;
+    later = 1;
+    last_turn = turn;
+    last_sign = minor_abs == 0 ? 0 : sign == 1 ? 1 : -1;
+  }
+  state->prev = p;
+  state->heading = heading;
+  return true;
+}
+
+void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& p,
+                std::size_t min_points, PathState* state) {
+  PathWriter io(enc);
+  std::uint64_t points = 0;
+  bool exhausted = false;
+  std::vector<CellIndex> copy = p;
+  CodePath(&io, m, std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), min_points,
+           std::numeric_limits<std::uint64_t>::max(), &points, state, &copy, &exhausted);
 }
 
 // Decodes one path; `points` counts its points against `max_points`.
 StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m, int width, int height,
                                             std::size_t min_points, std::uint64_t max_points,
-                                            std::uint64_t* points, CellIndex* prev) {
-  const Status corrupt = CorruptError("point out of the grid or malformed");
-  std::uint64_t k = 0;
-  std::int64_t dcol = 0, drow = 0;
-  if (!DecodeUInt(dec, &m->points, &k)) return corrupt;
-  *points += k + min_points;
-  if (k + min_points > max_points || *points > max_points) {
-    return ResourceExhaustedError("points exceed the limit");
+                                            std::uint64_t* points, PathState* state) {
+  PathReader io(dec);
+  std::vector<CellIndex> path;
+  bool exhausted = false;
+  if (!CodePath(&io, m, width, height, min_points, max_points, points, state, &path, &exhausted)) {
+    if (exhausted) return ResourceExhaustedError("points exceed the limit");
+    return CorruptError("point out of the grid or malformed");
   }
-  if (!DecodeSInt(dec, &m->start[0], &dcol) || !DecodeSInt(dec, &m->start[1], &drow) ||
-      std::llabs(dcol) >= width || std::llabs(drow) >= height) {
-    return corrupt;
-  }
-  CellIndex p{prev->col + static_cast<int>(dcol), prev->row + static_cast<int>(drow)};
-  if (!Inside(p, width, height)) return corrupt;
-  std::vector<CellIndex> path = {p};
-  int kind = 0, last_dir = 4;
-  for (std::uint64_t i = 1; i < k + min_points; ++i) {
-    std::int64_t dc = 0, dr = 0;
-    if (dec->Decode(&m->axis[kind]) == 1) {
-      const unsigned symbol = DecodeSymbol<2>(dec, &m->dir[last_dir]);
-      const int dir =
-          last_dir == 4 ? static_cast<int>(symbol) : static_cast<int>((symbol + last_dir) & 3);
-      std::uint64_t len = 0;
-      if (!DecodeUInt(dec, &m->axis_len[kind == 0 ? 0 : 1], &len) ||
-          len >= static_cast<std::uint64_t>(std::max(width, height))) {
-        return corrupt;
-      }
-      dc = kAxisCol[dir] * static_cast<std::int64_t>(len + 1);
-      dr = kAxisRow[dir] * static_cast<std::int64_t>(len + 1);
-      last_dir = dir;
-      kind = 1;
-    } else {
-      if (!DecodeSInt(dec, &m->diag[0], &dc) || !DecodeSInt(dec, &m->diag[1], &dr) || dc == 0 ||
-          dr == 0 || std::llabs(dc) >= width || std::llabs(dr) >= height) {
-        return corrupt;
-      }
-      last_dir = 4;
-      kind = 2;
-    }
-    const std::int64_t c = p.col + dc;
-    const std::int64_t r = p.row + dr;
-    if (c < 0 || r < 0 || c >= width || r >= height) return corrupt;
-    p = {static_cast<int>(c), static_cast<int>(r)};
-    path.push_back(p);
-  }
-  *prev = p;
   return path;
 }
 
@@ -158,8 +265,8 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
   RangeEncoder enc;
   auto m = std::make_unique<PathModels>();
-  CellIndex prev{0, 0};
-  for (const WallPolyline& wall : walls) EncodePath(&enc, m.get(), wall.points, 2, &prev);
+  PathState state;
+  for (const WallPolyline& wall : walls) EncodePath(&enc, m.get(), wall.points, 2, &state);
   enc.Finish();
   return WithCount(walls.size(), enc);
 }
@@ -179,10 +286,10 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
   // k + 1 segments has k + 2 points).
   std::uint64_t points = 0;
   const std::uint64_t max_points = limits.max_segments + count;
-  CellIndex prev{0, 0};
+  PathState state;
   for (std::uint64_t w = 0; w < count; ++w) {
     StatusOr<std::vector<CellIndex>> path =
-        DecodePath(&dec, m.get(), width, height, 2, max_points, &points, &prev);
+        DecodePath(&dec, m.get(), width, height, 2, max_points, &points, &state);
     if (!path.ok()) {
       return path.status().code() == StatusCode::kResourceExhausted
                  ? ResourceExhaustedError("wall segments exceed the segment limit")
@@ -214,7 +321,7 @@ namespace {
 StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m, int width,
                                                int height, const DecodeLimits& limits,
                                                std::uint64_t* vertices, std::uint64_t* cells,
-                                               CellIndex* prev) {
+                                               PathState* prev) {
   StatusOr<std::vector<CellIndex>> polygon =
       DecodePath(dec, m, width, height, 1, limits.max_chain_length, vertices, prev);
   if (!polygon.ok()) {
@@ -244,7 +351,8 @@ struct RoomModels {
 };
 
 struct FurnitureModels {
-  UIntModel room;  // room id + 1 (0: none)
+  BitModel same_room;  // 1: the previous object's room
+  UIntModel room;      // room id + 1 (0: none)
   PathModels polygon;
 };
 
@@ -254,7 +362,7 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
   RangeEncoder enc;
   auto m = std::make_unique<RoomModels>();
   std::int64_t prev_id = -1;
-  CellIndex prev_start{0, 0};
+  PathState prev_start;
   for (const RoomOutline& room : rooms) {
     EncodeUInt(&enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
     prev_id = room.id;
@@ -279,7 +387,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
   std::vector<RoomOutline> rooms;
   std::uint64_t cells = 0, vertices = 0;
   std::int64_t prev_id = -1;
-  CellIndex prev_start{0, 0};
+  PathState prev_start;
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t gap = 0;
     if (!DecodeUInt(&dec, &m->id_gap, &gap) || gap > 0xFFFFFFFFu ||
@@ -304,9 +412,13 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
   RangeEncoder enc;
   auto m = std::make_unique<FurnitureModels>();
-  CellIndex prev_start{0, 0};
+  PathState prev_start;
+  std::uint64_t prev_room = 0;  // room id + 1 of the previous object
   for (const FurnitureObject& object : furniture) {
-    EncodeUInt(&enc, &m->room, static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1));
+    const std::uint64_t room = static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1);
+    enc.Encode(&m->same_room, room == prev_room ? 1 : 0);
+    if (room != prev_room) EncodeUInt(&enc, &m->room, room);
+    prev_room = room;
     EncodePath(&enc, &m->polygon, object.polygon, 1, &prev_start);
   }
   enc.Finish();
@@ -327,12 +439,16 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
   auto m = std::make_unique<FurnitureModels>();
   std::vector<FurnitureObject> furniture;
   std::uint64_t cells = 0, vertices = 0;
-  CellIndex prev_start{0, 0};
+  PathState prev_start;
+  std::uint64_t prev_room = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
     std::uint64_t room = 0;
-    if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
+    if (dec.Decode(&m->same_room) == 1) {
+      room = prev_room;
+    } else if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
       return CorruptError("furniture room id above 2^31 - 1");
     }
+    prev_room = room;
     FurnitureObject object;
     object.id = static_cast<std::uint32_t>(i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);

@@ -146,6 +146,55 @@ TEST(LayerCodingTest, RoomsAndFurnitureRoundTrip) {
   EXPECT_EQ(*f, furniture);
 }
 
+// Steps whose two components are equal (a tie for the main axis), one cell
+// long, reaching the grid's corners, in every direction: each decodes to
+// the point it was.
+TEST(LayerCodingTest, StepsOfEveryShapeRoundTrip) {
+  std::vector<WallPolyline> walls = {
+      {{{0, 0}, {kW - 1, kH - 1}, {kW - 1, 0}, {0, kH - 1}}},
+      {{{10, 10}, {11, 11}, {10, 12}, {9, 11}, {10, 10}}},  // diagonal unit steps, closed
+      {{{50, 50}, {60, 60}, {50, 70}, {40, 60}}},           // ties after each heading
+      {{{100, 100}, {101, 100}, {101, 101}, {100, 101}}},   // unit axis steps
+      {{{120, 20}, {120, 21}}},
+      {{{kW - 1, kH - 1}, {0, 0}}},
+  };
+  auto decoded = DecodeWalls(EncodeWalls(walls), kW, kH, DecodeLimits{});
+  ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+  EXPECT_EQ(*decoded, walls);
+  std::vector<RoomOutline> rooms = {
+      Room(1, RoomKind::kRoom, {{5, 5}, {9, 9}, {5, 13}, {1, 9}}),
+      Room(2, RoomKind::kCorridor, {{0, 0}, {kW - 1, 0}, {kW - 1, kH - 1}, {0, kH - 1}})};
+  auto r = DecodeRooms(EncodeRooms(rooms), kW, kH, DecodeLimits{});
+  ASSERT_TRUE(r.ok()) << r.status().ToString();
+  EXPECT_EQ(*r, rooms);
+}
+
+// Runs of objects in one room code the room once; the ids still come back.
+TEST(LayerCodingTest, FurnitureRoomsRoundTripAcrossRuns) {
+  std::mt19937 rng(13);
+  std::vector<FurnitureObject> furniture;
+  const std::int32_t rooms[] = {-1, -1, 3, 3, 3, 0, 7, -1, 7, 7, 2147483647, 2147483647, -1};
+  for (std::int32_t room : rooms) {
+    furniture.push_back(
+        Object(static_cast<std::uint32_t>(furniture.size()), room, RandomPolygon(&rng)));
+  }
+  auto f = DecodeFurniture(EncodeFurniture(furniture), kW, kH, DecodeLimits{});
+  ASSERT_TRUE(f.ok()) << f.status().ToString();
+  EXPECT_EQ(*f, furniture);
+}
+
+// Paths code relative to where the last one ended and its heading, so a
+// wall that runs on from the last one costs less than the same wall coded
+// after a jump across the map.
+TEST(LayerCodingTest, AWallRunningOnFromTheLastCostsLittle) {
+  std::vector<WallPolyline> near_walls, far_walls;
+  for (int i = 0; i < 40; ++i) {
+    near_walls.push_back({{{5 * i, 10}, {5 * i + 3, 10}}});
+    far_walls.push_back({{{(97 * i) % 290, (31 * i) % 190}, {(97 * i) % 290 + 3, (31 * i) % 190}}});
+  }
+  EXPECT_LT(EncodeWalls(near_walls).size() * 3, EncodeWalls(far_walls).size());
+}
+
 TEST(LayerCodingTest, LayersOutsideASmallerGridAreCorrupt) {
   std::mt19937 rng(10);
   std::vector<WallPolyline> walls = RandomWalls(&rng, 20);
