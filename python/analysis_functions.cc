@@ -294,7 +294,10 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     out["edge_cells"] = f.edge_cells;
     if (f.displ_ave_cells) {
       out["displ_ave_cells"] = *f.displ_ave_cells;
-      out["displ_ave_cm"] = *f.displ_ave_cells * original.meta.resolution * 100.0;
+      // The CLI multiplies by centimetres per cell; the same order gives the
+      // same last digit.
+      const double cm_per_cell = original.meta.resolution * 100;
+      out["displ_ave_cm"] = *f.displ_ave_cells * cm_per_cell;
       out["displ_max_cells"] = *f.displ_max_cells;
     } else {
       out["displ_ave_cells"] = py::none();
