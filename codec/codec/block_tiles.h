@@ -1,15 +1,17 @@
 // The BLKS chunk of 2.x files (spec/format.md section 6.4): the cells of a
-// file saved within a tolerance of T cells, as blocks of F = T + 1 cells a
-// side, each one value, with exact 8 x 8-cell patches where a block would
-// break a guarantee. Cut into the same independently decodable tiles as
+// file saved within a tolerance, as blocks of F cells a side, each one
+// value, coded first; then every cell of the tile coded with its block's
+// value as its hint, so a cell equal to its block costs almost nothing and
+// the cells kept different (where a block would break a guarantee) are
+// coded where they are. Cut into the same independently decodable tiles as
 // CELL, so windows and threads work the same way.
 //
 // Why blocks: a map drawn in F x F blocks has about 1/F^2 of the cells to
-// code, and every cell lies within F - 1 = T cells (Chebyshev) of every
-// other cell of its block, which is what the tolerance allows a cell to
-// move. This is the PNG of the coarser map that the tolerance mode must
-// beat, coded by the tile coder instead of deflate, and drawn back at full
-// size so the file keeps the map's size, resolution and origin.
+// code, and every cell lies within F - 1 cells (Chebyshev) of every other
+// cell of its block, which the tolerance allows a cell to move when
+// F - 1 <= T. This is the PNG of the coarser map that the tolerance mode
+// must beat, coded by the tile coder instead of deflate, and drawn back at
+// full size so the file keeps the map's size, resolution and origin.
 #ifndef LINEMAP_CODEC_CODEC_BLOCK_TILES_H_
 #define LINEMAP_CODEC_CODEC_BLOCK_TILES_H_
 
@@ -22,7 +24,7 @@
 
 namespace linemap {
 
-// Block sides a file may use (cells): tolerances 1..4.
+// Block sides a file may use (cells): up to tolerance 4's T + 1.
 inline constexpr int kMinBlockCells = 2;
 inline constexpr int kMaxBlockCells = 5;
 
@@ -36,12 +38,13 @@ struct BlockCells {
   std::vector<std::uint8_t> restored;  // one per cell of the grid, 1 = original value
 };
 
-// The cells `blocks` draw, taking patched cells from `original`.
+// The cells `blocks` draw, taking restored cells from `original`.
 Grid ComposeBlockCells(const Grid& original, const BlockCells& blocks);
 
-// The chunk body. The tile side must be a multiple of both F and the patch
-// unit (so that every tile's blocks and units are the grid's), else
-// kInvalidArgument.
+// The chunk body: the cells ComposeBlockCells(original, blocks) draws, in
+// tiles of `tile_size` cells on up to `threads` threads (the bytes do not
+// depend on it). The tile side must be 16..65536 and a multiple of F (so
+// every tile's blocks are the grid's), else kInvalidArgument.
 StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const BlockCells& blocks,
                                                      int tile_size, int threads);
 

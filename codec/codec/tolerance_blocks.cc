@@ -17,7 +17,7 @@ namespace {
 using tolerance_internal::CellMask;
 using tolerance_internal::ChebyshevDistance;
 
-// Rounds of checks. Each round patches a unit or turns a block unknown, and
+// Rounds of checks. Each round restores cells or turns a block unknown, and
 // neither is ever undone, so the rounds end; this bounds pathological maps,
 // which then get the exact cells.
 constexpr int kMaxRounds = 96;
@@ -225,7 +225,7 @@ bool MendRound(Mender* m, int t) {
     return false;
   }
   // A plan that differs passes a changed cell: a detour leaves a cell of the
-  // original plan that is no longer free (patched back), a shortcut takes a
+  // original plan that is no longer free (restored), a shortcut takes a
   // cell the blocks made free (its block unfilled). Either is on one of the
   // two plans.
   const std::vector<std::size_t> culprits =

@@ -1,6 +1,7 @@
 // The cells of a file saved within a tolerance of T cells: the map drawn in
-// blocks of T + 1 cells a side (BlockCells, block_tiles.h), with exact
-// patches wherever a block breaks one of the guarantees of tolerance.h.
+// blocks of 2 x 2 cells (BlockCells, block_tiles.h), with cells given back
+// their original value wherever a block breaks one of the guarantees of
+// tolerance.h.
 #ifndef LINEMAP_CODEC_CODEC_TOLERANCE_BLOCKS_H_
 #define LINEMAP_CODEC_CODEC_TOLERANCE_BLOCKS_H_
 
@@ -10,15 +11,18 @@
 
 namespace linemap {
 
-// Blocks of `tolerance_cells` + 1 (1..kMaxToleranceCells, else invalid
-// argument): a block is occupied if any of its cells is, else unknown if
-// any is, else free. So every occupied cell keeps an occupied cell within T
-// (its block), every decoded occupied cell has an original one within T,
-// and free cells only ever turn unknown or occupied, never the other way:
-// no leak and no unknown turned free. What blocks can break (a free cell
-// with no free block within T, a doorway closed, a plan made longer) is
-// found by CheckTolerance's measures and patched, 8 x 8-cell unit by unit,
-// until every guarantee holds on ComposeBlockCells(grid, result).
+// The blocks for a tolerance of `tolerance_cells` (1..kMaxToleranceCells,
+// else invalid argument). A block is occupied if any of its cells is (so
+// every occupied cell keeps an occupied cell within T, and every decoded
+// occupied cell has an original one within 1); else free if any is and
+// filling its unknown cells opens no new way between free cells; else
+// unknown. Unknown cells turn free only next to a free cell of their block.
+// What blocks can still break (a free cell with no free cell within T, two
+// free regions joined or one split, a plan made longer or shorter) is found
+// on exactly what the file decodes to and mended (cells restored, or a
+// block turned unknown) round by round until every guarantee holds on
+// ComposeBlockCells(grid, result); a map that does not settle gets every
+// cell restored (the exact map).
 StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells);
 
 }  // namespace linemap
