@@ -3,7 +3,9 @@
 //
 // Input layout: byte 0 -> width (1..64), byte 1 -> height (1..64), byte 2 ->
 // encoder options (bit 0: residual lossless method, bit 1: store segments,
-// bit 2: store room chains, bit 3: two threads), then one byte per cell (value % 3 is the Cell,
+// bit 2: store room chains, bit 3: two threads, bit 4: the other encoder
+// (see OptionsFromByte), bit 5: no vector layers, bit 6: 16-cell tiles,
+// bits 6-7: the tolerance), then one byte per cell (value % 3 is the Cell,
 // row 0 first); cells past the end of the input are unknown. The height is
 // cut so that the grid holds at most 4 cells per input cell byte plus 64:
 // short inputs (which libFuzzer prefers) stay small grids, so executions
@@ -42,9 +44,13 @@ inline Grid GridFromBytes(const std::uint8_t* data, std::size_t size) {
 
 inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   EncodeOptions options;
-  // Lossy: the 1.0 encoder. Exact: a 2.0 file (with or without its layers,
-  // in 16-cell or 1024-cell tiles), or with bit 4 the 1.0 lossless encoder.
-  options.format_v1 = !lossless || (flags & 16) != 0;
+  // Lossy: the 1.0 encoder, or with bit 4 a 2.x file within a tolerance of
+  // 1..4 cells (bits 6-7; BLKS where blocks pay). Exact: a 2.0 file (with or
+  // without its layers, in 16-cell or 1024-cell tiles), or with bit 4 the
+  // 1.0 lossless encoder.
+  const bool bit4 = (flags & 16) != 0;
+  options.format_v1 = lossless ? bit4 : !bit4;
+  if (!lossless && !options.format_v1) options.tolerance_cells = 1 + ((flags >> 6) & 3);
   options.vector_layers = (flags & 32) == 0;
   options.tile_size_cells = (flags & 64) ? 16 : 1024;
   options.lossless = lossless;

@@ -1,9 +1,11 @@
 // Fuzz target: lossy encode -> decode on small grids derived from the input
 // (layout in fuzz_grid.h). Encoding must succeed and the decoded grid must
-// have the input's dimensions and metadata; anything else aborts.
+// have the input's dimensions and metadata; a file within a tolerance must
+// keep every guarantee of it (CheckTolerance); anything else aborts.
 #include <cstddef>
 #include <cstdint>
 
+#include "codec/codec/tolerance.h"
 #include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "tests/fuzz/fuzz_grid.h"
@@ -16,6 +18,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (decoded.width() != grid.width() || decoded.height() != grid.height() ||
       !(decoded.meta == grid.meta)) {
     fuzz::Fail("lmap_lossy", "lossy round trip changed the dimensions or metadata");
+  }
+  const EncodeOptions options = fuzz::OptionsFromByte(data[2], /*lossless=*/false);
+  if (options.tolerance_cells > 0 &&
+      !CheckTolerance(grid, decoded, options.tolerance_cells).Holds()) {
+    fuzz::Fail("lmap_lossy", "a guarantee of the tolerance fails on the decode");
   }
   return 0;
 }
