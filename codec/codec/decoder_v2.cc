@@ -118,8 +118,21 @@ Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLim
 
 }  // namespace
 
-V2CellDecoder::V2CellDecoder(const V2File& file)
-    : file_(file), index_(file.walls, file.rooms, file.furniture) {}
+namespace {
+
+// The layers' index the tiles' hints come from; BLKS tiles take no hints
+// from the layers (spec/format.md 6.4), so theirs is empty.
+LayerIndex IndexForCells(const V2File& file) {
+  static const std::vector<WallPolyline> kNoWalls;
+  static const std::vector<RoomOutline> kNoRooms;
+  static const std::vector<FurnitureObject> kNoFurniture;
+  if (file.cells_in_blocks) return LayerIndex(kNoWalls, kNoRooms, kNoFurniture);
+  return LayerIndex(file.walls, file.rooms, file.furniture);
+}
+
+}  // namespace
+
+V2CellDecoder::V2CellDecoder(const V2File& file) : file_(file), index_(IndexForCells(file)) {}
 
 StatusOr<int> V2CellDecoder::TileSize() const {
   if (!file_.has_cells) return 1;
