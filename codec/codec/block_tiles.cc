@@ -67,11 +67,31 @@ TileBlocks GatherBlocks(const BlockCells& cells, CellRect t) {
   return b;
 }
 
-std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cells, CellRect t) {
+// The hints of a tile's block grid: each block the union of the hint bits
+// the layers draw into its cells (spec/format.md 6.4), so the blocks are
+// coded knowing where the walls, rooms and furniture are, as exact cells
+// are.
+std::vector<std::uint8_t> BlockHints(const LayerIndex& layers, CellRect t, int bw, int bh, int f) {
+  std::vector<std::uint8_t> out(static_cast<std::size_t>(bw) * bh, 0);
+  if (layers.empty()) return out;
+  const int w = t.x1 - t.x0, h = t.y1 - t.y0;
+  const std::vector<std::uint8_t> cells = layers.TileHints(t);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      out[static_cast<std::size_t>(y / f) * bw + x / f] |=
+          cells[static_cast<std::size_t>(y) * w + x];
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cells,
+                                     const LayerIndex& layers, CellRect t) {
   const int w = t.x1 - t.x0, h = t.y1 - t.y0, f = cells.block_cells;
   const TileBlocks b = GatherBlocks(cells, t);
-  const std::vector<std::uint8_t> blocks = EncodeTileCells(b.blocks.data(), nullptr, b.bw, b.bh,
-                                                           CellRect{0, 0, b.bw, b.bh}, kBlockModel);
+  const std::vector<std::uint8_t> block_hints = BlockHints(layers, t, b.bw, b.bh, f);
+  const std::vector<std::uint8_t> blocks = EncodeTileCells(
+      b.blocks.data(), block_hints.data(), b.bw, b.bh, CellRect{0, 0, b.bw, b.bh}, kBlockModel);
   const std::vector<Cell> tile = TileCells(decoded, t);
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
   ByteWriter out;
@@ -81,15 +101,17 @@ std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cell
   return std::move(out.mutable_bytes());
 }
 
-// Decodes one tile's data: row r of its w x h cells at cells + r * stride.
-Status DecodeTile(const std::uint8_t* data, std::size_t size, int w, int h, int f, Cell* cells,
-                  std::ptrdiff_t stride) {
+// Decodes tile t's data: row r of its cells at cells + r * stride.
+Status DecodeTile(const std::uint8_t* data, std::size_t size, const LayerIndex& layers, CellRect t,
+                  int f, Cell* cells, std::ptrdiff_t stride) {
+  const int w = t.x1 - t.x0, h = t.y1 - t.y0;
   ByteCursor cursor(data, size);
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t blocks_len, cursor.ReadVarint("block data length"));
   if (blocks_len > cursor.remaining()) return CorruptError("block data past the tile's end");
   TileBlocks b = EmptyBlocks(w, h, f);
   const std::uint8_t* at = data + cursor.position();
-  LINEMAP_RETURN_IF_ERROR(DecodeTileCells(at, blocks_len, nullptr, b.bw, b.bh,
+  const std::vector<std::uint8_t> block_hints = BlockHints(layers, t, b.bw, b.bh, f);
+  LINEMAP_RETURN_IF_ERROR(DecodeTileCells(at, blocks_len, block_hints.data(), b.bw, b.bh,
                                           CellRect{0, 0, b.bw, b.bh}, b.blocks.data()));
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
   return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h,
@@ -114,7 +136,8 @@ Grid ComposeBlockCells(const Grid& original, const BlockCells& b) {
 }
 
 StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const BlockCells& blocks,
-                                                     int tile_size, int threads) {
+                                                     const LayerIndex& layers, int tile_size,
+                                                     int threads) {
   const int f = blocks.block_cells;
   if (f < kMinBlockCells || f > kMaxBlockCells || tile_size < kMinTileSize ||
       tile_size > kMaxTileSize || tile_size % f != 0) {
@@ -126,7 +149,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const
   std::vector<std::vector<std::uint8_t>> tiles(layout.count());
   const Grid decoded = ComposeBlockCells(original, blocks);
   ForEachIndexParallel(layout.count(), threads, [&](std::uint64_t i) {
-    tiles[i] = EncodeTile(decoded, blocks, layout.Tile(i));
+    tiles[i] = EncodeTile(decoded, blocks, layers, layout.Tile(i));
   });
   ByteWriter out;
   out.PutU8(static_cast<std::uint8_t>(f));
@@ -136,8 +159,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const
   return std::move(out.mutable_bytes());
 }
 
-Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, int width, int height,
-                        CellRect window, int threads, Cell* out) {
+Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
+                        int height, CellRect window, int threads, Cell* out) {
   ByteCursor cursor(body);
   LINEMAP_ASSIGN_OR_RETURN(std::uint8_t f, cursor.ReadU8("block side"));
   if (f < kMinBlockCells || f > kMaxBlockCells) {
@@ -150,12 +173,10 @@ Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, int width, int he
   }
   const TileLayout layout(width, height, static_cast<int>(tile_size));
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
-  return DecodeTilesInWindow(body, layout, index, window, threads, out,
-                             [f](CellRect t, const std::uint8_t* data, std::size_t size,
-                                 Cell* cells, std::ptrdiff_t stride) {
-                               return DecodeTile(data, size, t.x1 - t.x0, t.y1 - t.y0, f, cells,
-                                                 stride);
-                             });
+  return DecodeTilesInWindow(
+      body, layout, index, window, threads, out,
+      [&](CellRect t, const std::uint8_t* data, std::size_t size, Cell* cells,
+          std::ptrdiff_t stride) { return DecodeTile(data, size, layers, t, f, cells, stride); });
 }
 
 }  // namespace linemap

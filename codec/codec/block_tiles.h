@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "codec/codec/layer_hints.h"
 #include "codec/codec/tile_coder.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -43,15 +44,17 @@ Grid ComposeBlockCells(const Grid& original, const BlockCells& blocks);
 
 // The chunk body: the cells ComposeBlockCells(original, blocks) draws, in
 // tiles of `tile_size` cells on up to `threads` threads (the bytes do not
-// depend on it). The tile side must be 16..65536 and a multiple of F (so
+// depend on it); the blocks are coded against what `layers` (the file's
+// vector layers) draw into them. The tile side must be 16..65536 and a multiple of F (so
 // every tile's blocks are the grid's), else kInvalidArgument.
 StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const BlockCells& blocks,
-                                                     int tile_size, int threads);
+                                                     const LayerIndex& layers, int tile_size,
+                                                     int threads);
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
 // `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.
-Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, int width, int height,
-                        CellRect window, int threads, Cell* out);
+Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
+                        int height, CellRect window, int threads, Cell* out);
 
 }  // namespace linemap
 

@@ -118,21 +118,8 @@ Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLim
 
 }  // namespace
 
-namespace {
-
-// The layers' index the tiles' hints come from; BLKS tiles take no hints
-// from the layers (spec/format.md 6.4), so theirs is empty.
-LayerIndex IndexForCells(const V2File& file) {
-  static const std::vector<WallPolyline> kNoWalls;
-  static const std::vector<RoomOutline> kNoRooms;
-  static const std::vector<FurnitureObject> kNoFurniture;
-  if (file.cells_in_blocks) return LayerIndex(kNoWalls, kNoRooms, kNoFurniture);
-  return LayerIndex(file.walls, file.rooms, file.furniture);
-}
-
-}  // namespace
-
-V2CellDecoder::V2CellDecoder(const V2File& file) : file_(file), index_(IndexForCells(file)) {}
+V2CellDecoder::V2CellDecoder(const V2File& file)
+    : file_(file), index_(file.walls, file.rooms, file.furniture) {}
 
 StatusOr<int> V2CellDecoder::TileSize() const {
   if (!file_.has_cells) return 1;
@@ -151,7 +138,7 @@ Status V2CellDecoder::Decode(CellRect window, int threads, Cell* out) const {
   if (!file_.has_cells) return Status::Ok();  // no cells' chunk: all unknown
   const int w = file_.header.width, h = file_.header.height;
   const Status status = file_.cells_in_blocks
-                            ? DecodeBlockChunk(file_.cell_body, w, h, window, threads, out)
+                            ? DecodeBlockChunk(file_.cell_body, index_, w, h, window, threads, out)
                             : DecodeCellChunk(file_.cell_body, index_, w, h, window, threads, out);
   return status.ok() ? status : status.WithContext(ChunkName());
 }

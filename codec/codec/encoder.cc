@@ -92,14 +92,15 @@ std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& opti
 // down to a multiple of the block side (spec/format.md 6.4).
 StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
                                                          const EncodeOptions& options,
-                                                         bool* exact) {
+                                                         const VectorLayers& layers, bool* exact) {
   LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks, FitBlockCells(grid, options.tolerance_cells));
   *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
                        [](std::uint8_t r) { return r != 0; });
   const int f = blocks.block_cells;
   int tile = options.tile_size_cells / f * f;
   if (tile < kMinTileSize) tile += f;  // a side of 16 with blocks of 3 or 5
-  return EncodeBlockChunk(grid, blocks, tile, options.max_threads);
+  const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
+  return EncodeBlockChunk(grid, blocks, index, tile, options.max_threads);
 }
 
 }  // namespace
@@ -123,7 +124,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   // larger than the exact file.
   bool exact = false;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> block_cells,
-                           CellsWithinTolerance(grid, options, &exact));
+                           CellsWithinTolerance(grid, options, layers, &exact));
   if (block_cells.size() >= exact_cells.size()) {
     return WriteV2(grid, options, layers, true, kCellChunk, exact_cells);
   }

@@ -9,12 +9,25 @@
 #include <random>
 #include <vector>
 
+#include "codec/codec/layer_hints.h"
 #include "format/byte_io.h"
 
 namespace linemap {
 namespace {
 
 Cell RandomCell(std::mt19937* rng) { return static_cast<Cell>((*rng)() % 3); }
+
+const std::vector<WallPolyline> kNoWalls;
+const std::vector<RoomOutline> kNoRooms;
+const std::vector<FurnitureObject> kNoFurniture;
+
+const LayerIndex& NoLayers() {
+  static const LayerIndex index(kNoWalls, kNoRooms, kNoFurniture);
+  return index;
+}
+
+// Two walls across the grid: their hints change how the blocks are coded.
+const std::vector<WallPolyline> kTwoWalls = {{{{0, 3}, {39, 3}, {39, 17}}}, {{{5, 0}, {5, 19}}}};
 
 // Blocks of side f over a w x h grid with random values, and random cells
 // restored to a random original.
@@ -56,10 +69,11 @@ Grid ReferenceCompose(const Case& c) {
 }
 
 StatusOr<std::vector<Cell>> Decode(const std::vector<std::uint8_t>& body, int w, int h,
-                                   CellRect window, int threads = 1) {
+                                   CellRect window, int threads = 1,
+                                   const LayerIndex& layers = NoLayers()) {
   std::vector<Cell> out(static_cast<std::size_t>(window.x1 - window.x0) * (window.y1 - window.y0),
                         Cell::kUnknown);
-  LINEMAP_RETURN_IF_ERROR(DecodeBlockChunk(body, w, h, window, threads, out.data()));
+  LINEMAP_RETURN_IF_ERROR(DecodeBlockChunk(body, layers, w, h, window, threads, out.data()));
   return out;
 }
 
@@ -78,7 +92,7 @@ TEST(BlockTilesTest, RoundTripsEveryBlockSideAndTileSide) {
       const Grid expected = ReferenceCompose(c);
       for (const int tile : {f * (16 / f + 1), 60, 1024 / f * f}) {
         if (tile % f != 0 || tile < 16) continue;
-        auto body = EncodeBlockChunk(c.original, c.blocks, tile, 2);
+        auto body = EncodeBlockChunk(c.original, c.blocks, NoLayers(), tile, 2);
         ASSERT_TRUE(body.ok()) << body.status().ToString();
         auto cells = Decode(*body, 83, 61, CellRect{0, 0, 83, 61}, 2);
         ASSERT_TRUE(cells.ok()) << cells.status().ToString();
@@ -91,9 +105,9 @@ TEST(BlockTilesTest, RoundTripsEveryBlockSideAndTileSide) {
 TEST(BlockTilesTest, WindowsAreCropsAndThreadsDoNotMatter) {
   const Case c = RandomCase(7, 90, 70, 2, 0.03);
   const Grid expected = ReferenceCompose(c);
-  auto body = EncodeBlockChunk(c.original, c.blocks, 32, 1);
+  auto body = EncodeBlockChunk(c.original, c.blocks, NoLayers(), 32, 1);
   ASSERT_TRUE(body.ok());
-  auto body4 = EncodeBlockChunk(c.original, c.blocks, 32, 4);
+  auto body4 = EncodeBlockChunk(c.original, c.blocks, NoLayers(), 32, 4);
   ASSERT_TRUE(body4.ok());
   EXPECT_EQ(*body, *body4);
   for (const CellRect w : {CellRect{0, 0, 1, 1}, CellRect{31, 31, 33, 33}, CellRect{5, 40, 90, 70},
@@ -109,9 +123,12 @@ TEST(BlockTilesTest, WindowsAreCropsAndThreadsDoNotMatter) {
 }
 
 // A body written from the spec's tables: F, T, the tile lengths, then per
-// tile the block data length, the blocks coded with no hints, and the cells
-// coded with hint 1 / 2 / 0 for an occupied / free / unknown block.
-TEST(BlockTilesTest, ReadsABodyLaidOutAsTheSpecSays) {
+// tile the block data length, the blocks coded with the union of the layer
+// hints of their cells (here two walls; none for a file without layers),
+// and the cells coded with hint 1 / 2 / 0 for an occupied / free / unknown
+// block. The encoder writes the same bytes.
+void ExpectBodyAsTheSpecSays(const std::vector<WallPolyline>& walls) {
+  const LayerIndex layers(walls, kNoRooms, kNoFurniture);
   const int w = 40, h = 20, f = 3, tile = 24;
   const Case c = RandomCase(3, w, h, f, 0.1);
   const Grid decoded = ReferenceCompose(c);
@@ -121,6 +138,13 @@ TEST(BlockTilesTest, ReadsABodyLaidOutAsTheSpecSays) {
       const int x0 = tx * tile, y0 = ty * tile;
       const int tw = std::min(tile, w - x0), th = std::min(tile, h - y0);
       const int bw = (tw + f - 1) / f, bh = (th + f - 1) / f;
+      const std::vector<std::uint8_t> layer_hints =
+          layers.TileHints(CellRect{x0, y0, x0 + tw, y0 + th});
+      std::vector<std::uint8_t> block_hints(static_cast<std::size_t>(bw) * bh, 0);
+      for (int r = 0; r < th; ++r) {
+        for (int col = 0; col < tw; ++col)
+          block_hints[(r / f) * bw + col / f] |= layer_hints[r * tw + col];
+      }
       std::vector<Cell> blocks;
       for (int by = 0; by < bh; ++by) {
         for (int bx = 0; bx < bw; ++bx) {
@@ -136,10 +160,10 @@ TEST(BlockTilesTest, ReadsABodyLaidOutAsTheSpecSays) {
           hints.push_back(b == Cell::kOccupied ? 1 : b == Cell::kFree ? 2 : 0);
         }
       }
-      const auto block_data =
-          EncodeTileCells(blocks.data(), nullptr, bw, bh, CellRect{0, 0, bw, bh});
+      const auto block_data = EncodeTileCells(blocks.data(), block_hints.data(), bw, bh,
+                                              CellRect{0, 0, bw, bh}, TileModel::kMixedAllCells);
       const auto cell_data = EncodeTileCells(cells.data(), hints.data(), tw, th,
-                                             CellRect{0, 0, tw, th}, TileModel::kMixed);
+                                             CellRect{0, 0, tw, th}, TileModel::kMixedAllCells);
       ByteWriter t;
       t.PutVarint(block_data.size());
       t.PutBytes(block_data);
@@ -152,14 +176,22 @@ TEST(BlockTilesTest, ReadsABodyLaidOutAsTheSpecSays) {
   body.PutVarint(tile);
   for (const auto& t : tiles) body.PutVarint(t.size());
   for (const auto& t : tiles) body.PutBytes(t);
-  auto out = Decode(body.bytes(), w, h, CellRect{0, 0, w, h});
+  auto out = Decode(body.bytes(), w, h, CellRect{0, 0, w, h}, 1, layers);
   ASSERT_TRUE(out.ok()) << out.status().ToString();
   EXPECT_EQ(*out, decoded.cells());
+  auto encoded = EncodeBlockChunk(c.original, c.blocks, layers, tile, 1);
+  ASSERT_TRUE(encoded.ok());
+  EXPECT_EQ(*encoded, body.bytes());
+}
+
+TEST(BlockTilesTest, ReadsABodyLaidOutAsTheSpecSays) {
+  ExpectBodyAsTheSpecSays(kNoWalls);
+  ExpectBodyAsTheSpecSays(kTwoWalls);
 }
 
 TEST(BlockTilesTest, MalformedBodiesAreCorrupt) {
   const Case c = RandomCase(5, 30, 30, 2, 0.1);
-  auto body = EncodeBlockChunk(c.original, c.blocks, 16, 1);
+  auto body = EncodeBlockChunk(c.original, c.blocks, NoLayers(), 16, 1);
   ASSERT_TRUE(body.ok());
   const CellRect all{0, 0, 30, 30};
   auto expect_corrupt = [&](std::vector<std::uint8_t> bytes, const char* what) {
@@ -184,7 +216,7 @@ TEST(BlockTilesTest, MalformedBodiesAreCorrupt) {
 
 TEST(BlockTilesTest, EncoderRefusesATileSideThatIsNotAMultiple) {
   const Case c = RandomCase(5, 30, 30, 3, 0.0);
-  auto body = EncodeBlockChunk(c.original, c.blocks, 16, 1);
+  auto body = EncodeBlockChunk(c.original, c.blocks, NoLayers(), 16, 1);
   ASSERT_FALSE(body.ok());
   EXPECT_EQ(body.status().code(), StatusCode::kInvalidArgument);
 }
