@@ -145,17 +145,13 @@ StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const
                                 " is outside 16..65536 or not a multiple of the block side " +
                                 std::to_string(f));
   }
-  const TileLayout layout(original.width(), original.height(), tile_size);
-  std::vector<std::vector<std::uint8_t>> tiles(layout.count());
   const Grid decoded = ComposeBlockCells(original, blocks);
-  ForEachIndexParallel(layout.count(), threads, [&](std::uint64_t i) {
-    tiles[i] = EncodeTile(decoded, blocks, layers, layout.Tile(i));
-  });
   ByteWriter out;
   out.PutU8(static_cast<std::uint8_t>(f));
   out.PutVarint(static_cast<std::uint64_t>(tile_size));
-  for (const std::vector<std::uint8_t>& tile : tiles) out.PutVarint(tile.size());
-  for (const std::vector<std::uint8_t>& tile : tiles) out.PutBytes(tile);
+  WriteTiles(
+      TileLayout(original.width(), original.height(), tile_size), threads,
+      [&](CellRect t) { return EncodeTile(decoded, blocks, layers, t); }, &out);
   return std::move(out.mutable_bytes());
 }
 

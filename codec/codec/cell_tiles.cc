@@ -60,19 +60,17 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
 
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads) {
-  const TileLayout layout(grid.width(), grid.height(), tile_size);
-  std::vector<std::vector<std::uint8_t>> tiles(layout.count());
-  ForEachIndexParallel(layout.count(), threads, [&](std::uint64_t i) {
-    const CellRect t = layout.Tile(i);
-    const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
-    const std::vector<Cell> cells = TileCells(grid, t);
-    const std::vector<std::uint8_t> hints = layers.TileHints(t);
-    tiles[i] = EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th});
-  });
   ByteWriter out;
   out.PutVarint(static_cast<std::uint64_t>(tile_size));
-  for (const std::vector<std::uint8_t>& tile : tiles) out.PutVarint(tile.size());
-  for (const std::vector<std::uint8_t>& tile : tiles) out.PutBytes(tile);
+  WriteTiles(
+      TileLayout(grid.width(), grid.height(), tile_size), threads,
+      [&](CellRect t) {
+        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+        const std::vector<Cell> cells = TileCells(grid, t);
+        const std::vector<std::uint8_t> hints = layers.TileHints(t);
+        return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th});
+      },
+      &out);
   return std::move(out.mutable_bytes());
 }
 

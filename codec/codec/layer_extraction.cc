@@ -345,13 +345,7 @@ std::vector<CellIndex> SimplifyClosedChain(const std::vector<CellIndex>& chain,
 
 // True when the fill of `chain` (FillChain, spec 8.2) holds every cell.
 bool FillHolds(const std::vector<CellIndex>& chain, const std::vector<CellIndex>& cells) {
-  BoundingBox box{chain[0].col, chain[0].row, chain[0].col, chain[0].row};
-  for (const CellIndex& c : chain) {
-    box.min_col = std::min(box.min_col, c.col);
-    box.max_col = std::max(box.max_col, c.col);
-    box.min_row = std::min(box.min_row, c.row);
-    box.max_row = std::max(box.max_row, c.row);
-  }
+  const BoundingBox box = BoxOfCells(chain);
   const int w = box.max_col - box.min_col + 1;
   std::vector<std::uint8_t> in(static_cast<std::size_t>(w) * (box.max_row - box.min_row + 1), 0);
   FillChain(chain, [&](int c, int r) {

@@ -18,17 +18,6 @@ constexpr int kBucketShift = 8;
 // Buckets an item may be listed in (see MakeBuckets).
 constexpr int kMaxBucketsPerItem = 4;
 
-BoundingBox BoxOf(const std::vector<CellIndex>& cells) {
-  BoundingBox box{cells[0].col, cells[0].row, cells[0].col, cells[0].row};
-  for (const CellIndex& c : cells) {
-    box.min_col = std::min(box.min_col, c.col);
-    box.max_col = std::max(box.max_col, c.col);
-    box.min_row = std::min(box.min_row, c.row);
-    box.max_row = std::max(box.max_row, c.row);
-  }
-  return box;
-}
-
 bool Overlaps(const BoundingBox& box, CellRect t) {
   return box.max_col >= t.x0 && box.min_col < t.x1 && box.max_row >= t.y0 && box.min_row < t.y1;
 }
@@ -40,6 +29,28 @@ void OrSpan(std::uint8_t* p, int n, std::uint8_t bits) {
 }
 
 bool Inside(int c, int r, CellRect t) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; }
+
+// The minor coordinate of step i of a lattice segment, floor((i * step + n)
+// / 2n) (spec 8.1's rounding), for i rising by one at a time: |step| <= 2n,
+// so each step carries at most one, and no division runs per cell.
+struct MinorStepper {
+  std::int64_t step, two_n, q, rem;
+  MinorStepper(std::int64_t i0, std::int64_t step_, std::int64_t n)
+      : step(step_),
+        two_n(2 * n),
+        q(FloorDiv(i0 * step_ + n, 2 * n)),
+        rem(i0 * step_ + n - FloorDiv(i0 * step_ + n, 2 * n) * 2 * n) {}
+  void Next() {
+    rem += step;
+    if (rem >= two_n) {
+      rem -= two_n;
+      ++q;
+    } else if (rem < 0) {
+      rem += two_n;
+      --q;
+    }
+  }
+};
 
 // The rasterisation of a -> b (RasterizeSegment, raster.h): step i in
 // [0, n] covers (a.col + floor((2 i dx + n) / 2n), a.row + floor((2 i dy +
@@ -73,23 +84,12 @@ class EdgeRaster {
     i1 = std::min<std::int64_t>(i1, last + 1);
     if (i0 >= i1) return;
     const std::int64_t minor_start = steep ? a_.col : a_.row;
-    const std::int64_t step = 2 * (steep ? dx_ : dy_);
-    const std::int64_t two_n = 2 * n_;
-    std::int64_t q = FloorDiv(i0 * step + n_, two_n);
-    std::int64_t rem = i0 * step + n_ - q * two_n;
-    for (std::int64_t i = i0; i < i1; ++i) {
+    MinorStepper minor_step(i0, 2 * (steep ? dx_ : dy_), n_);
+    for (std::int64_t i = i0; i < i1; ++i, minor_step.Next()) {
       const int major = static_cast<int>(up ? start + i : start - i);
-      const int minor = static_cast<int>(minor_start + q);
+      const int minor = static_cast<int>(minor_start + minor_step.q);
       const int c = steep ? minor : major, r = steep ? major : minor;
       if (Inside(c, r, t)) visit(c, r);
-      rem += step;  // |step| <= 2n: at most one carry
-      if (rem >= two_n) {
-        rem -= two_n;
-        ++q;
-      } else if (rem < 0) {
-        rem += two_n;
-        --q;
-      }
     }
   }
 
@@ -99,47 +99,27 @@ class EdgeRaster {
   // VisitInside.
   template <typename Emit>
   void VisitCrossings(int lo, int hi, Emit&& emit) const {
-    const std::int64_t two_n = 2 * n_;
     if (std::llabs(dy_) == n_) {
       // Steep: one row per step. Going up, the step from row r starts at
       // cell r - a.row; going down, the step to row r ends at a.row - r.
       // Either way the cell's index rises by one per row visited.
       const std::int64_t i0 = dy_ > 0 ? lo - a_.row : a_.row - hi;
       const std::int64_t count = hi - lo + 1;
-      const std::int64_t step = 2 * dx_;
-      std::int64_t q = FloorDiv(i0 * step + n_, two_n);
-      std::int64_t rem = i0 * step + n_ - q * two_n;
-      for (std::int64_t k = 0; k < count; ++k) {
+      MinorStepper col(i0, 2 * dx_, n_);
+      for (std::int64_t k = 0; k < count; ++k, col.Next()) {
         const int r = static_cast<int>(dy_ > 0 ? lo + k : hi - k);
-        emit(r, static_cast<int>(a_.col + q));
-        rem += step;
-        if (rem >= two_n) {
-          rem -= two_n;
-          ++q;
-        } else if (rem < 0) {
-          rem += two_n;
-          --q;
-        }
+        emit(r, static_cast<int>(a_.col + col.q));
       }
       return;
     }
     // Shallow: one column per step, the row changing on some steps; walked
     // cell by cell, with the row stepped along.
     const std::int64_t sx = dx_ > 0 ? 1 : -1;
-    const std::int64_t step = 2 * dy_;
-    std::int64_t q = FloorDiv(n_, two_n);  // 0: step 0 is a itself
-    std::int64_t rem = n_ - q * two_n;
+    MinorStepper row_step(0, 2 * dy_, n_);  // step 0 is a itself
     int row = a_.row;
     for (std::int64_t i = 0; i < n_; ++i) {
-      rem += step;
-      if (rem >= two_n) {
-        rem -= two_n;
-        ++q;
-      } else if (rem < 0) {
-        rem += two_n;
-        --q;
-      }
-      const int next = static_cast<int>(a_.row + q);
+      row_step.Next();
+      const int next = static_cast<int>(a_.row + row_step.q);
       if (next != row) {
         // Up: the cell on row r is this one (i); down: the next (i + 1).
         const int r = std::min(row, next);
@@ -186,7 +166,7 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
 void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t fill_bits,
                             std::uint8_t chain_bits, std::uint8_t clear_on_chain) {
   if (polygon.empty()) return;
-  outlines_.push_back({&polygon, BoxOf(polygon), fill_bits, chain_bits, clear_on_chain});
+  outlines_.push_back({&polygon, BoxOfCells(polygon), fill_bits, chain_bits, clear_on_chain});
 }
 
 BoundingBox LayerIndex::Segment::box() const {

@@ -6,6 +6,15 @@
 
 namespace linemap {
 
+void WriteTiles(const TileLayout& layout, int threads,
+                const std::function<std::vector<std::uint8_t>(CellRect)>& encode, ByteWriter* out) {
+  std::vector<std::vector<std::uint8_t>> tiles(layout.count());
+  ForEachIndexParallel(layout.count(), threads,
+                       [&](std::uint64_t i) { tiles[i] = encode(layout.Tile(i)); });
+  for (const std::vector<std::uint8_t>& tile : tiles) out->PutVarint(tile.size());
+  for (const std::vector<std::uint8_t>& tile : tiles) out->PutBytes(tile);
+}
+
 StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const TileLayout& layout,
                                   ByteCursor* cursor) {
   if (layout.count() > cursor->remaining()) return CorruptError("tile index past the chunk's end");

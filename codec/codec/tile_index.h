@@ -20,6 +20,12 @@ struct TileIndex {
   std::vector<std::uint64_t> offsets;  // count + 1 offsets from `base`
 };
 
+// Codes every tile of `layout` with encode(tile) on up to `threads`
+// threads, then appends the tiles' byte lengths and their data, in order
+// (the bytes do not depend on the number of threads).
+void WriteTiles(const TileLayout& layout, int threads,
+                const std::function<std::vector<std::uint8_t>(CellRect)>& encode, ByteWriter* out);
+
 // Reads the lengths at `cursor` (just after the tile side) of a body of
 // `body.size()` bytes. Every length takes at least one byte, so a tile
 // count the body cannot hold is corrupt before anything is allocated; the

@@ -4,6 +4,9 @@
 #ifndef LINEMAP_CELLS_H_
 #define LINEMAP_CELLS_H_
 
+#include <algorithm>
+#include <vector>
+
 namespace linemap {
 
 struct CellIndex {
@@ -16,6 +19,19 @@ struct BoundingBox {
   int min_col = 0, min_row = 0, max_col = -1, max_row = -1;  // inclusive
   bool operator==(const BoundingBox&) const = default;
 };
+
+// The smallest box holding every cell (the empty box for no cells).
+inline BoundingBox BoxOfCells(const std::vector<CellIndex>& cells) {
+  if (cells.empty()) return BoundingBox{};
+  BoundingBox box{cells[0].col, cells[0].row, cells[0].col, cells[0].row};
+  for (const CellIndex& c : cells) {
+    box.min_col = std::min(box.min_col, c.col);
+    box.max_col = std::max(box.max_col, c.col);
+    box.min_row = std::min(box.min_row, c.row);
+    box.max_row = std::max(box.max_row, c.row);
+  }
+  return box;
+}
 
 }  // namespace linemap
 

@@ -470,4 +470,13 @@ StatusOr<HandTruth> LoadHandTruth(const std::string& path, const std::string& ma
   return truth;
 }
 
+FloorPlanOptions FloorPlanKind(int kind, std::uint32_t seed) {
+  FloorPlanOptions options;
+  options.seed = seed;
+  options.thick_walls = (kind & 1) != 0;
+  options.furniture = (kind & 2) != 0;
+  options.noise = (kind & 4) != 0;
+  return options;
+}
+
 }  // namespace linemap::testing

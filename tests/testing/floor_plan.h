@@ -57,6 +57,11 @@ struct FloorPlan {
 
 FloorPlan GenerateFloorPlan(const FloorPlanOptions& options);
 
+// The development set's eight kinds of plan: `kind` 0..7, bit 0 thick
+// walls, bit 1 furniture, bit 2 scan noise; the given seed.
+inline constexpr int kFloorPlanKinds = 8;
+FloorPlanOptions FloorPlanKind(int kind, std::uint32_t seed);
+
 // The survey's area-weighted figures over cells with a true room: recall =
 // sum over true rooms of the largest share one segment covers (in cells) /
 // all such cells; precision = sum over segments of their largest overlap

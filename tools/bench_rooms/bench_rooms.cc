@@ -223,15 +223,12 @@ int RunGenerated(int seeds, bool verbose, const std::string& dump,
       " ms per Mcell | DT baseline recall | DT baseline precision |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   Totals all;
-  for (int variant = 0; variant < 8; ++variant) {
+  for (int variant = 0; variant < testing::kFloorPlanKinds; ++variant) {
     Totals t;
-    testing::FloorPlanOptions options;
-    options.thick_walls = variant & 1;
-    options.furniture = variant & 2;
-    options.noise = variant & 4;
+    const testing::FloorPlanOptions options = testing::FloorPlanKind(variant, 1);
     for (int seed = 1; seed <= seeds; ++seed) {
-      options.seed = static_cast<std::uint32_t>(seed);
-      const testing::FloorPlan plan = testing::GenerateFloorPlan(options);
+      const testing::FloorPlan plan = testing::GenerateFloorPlan(
+          testing::FloorPlanKind(variant, static_cast<std::uint32_t>(seed)));
       StatusOr<Segmentation> seg = SegmentMap(plan.grid, seg_options);
       if (!seg.ok()) {
         std::fprintf(stderr, "bench_rooms: %s: %s\n", plan.name.c_str(),

@@ -163,12 +163,8 @@ TEST(FurnitureTest, GeneratedPlansAgainstTruth) {
   std::size_t standalone = 0, standalone_found = 0;
   int cabinets = 0;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
-    for (int variant = 0; variant < 8; ++variant) {
-      testing::FloorPlanOptions options;
-      options.seed = seed;
-      options.thick_walls = variant & 1;
-      options.furniture = variant & 2;
-      options.noise = variant & 4;
+    for (int kind = 0; kind < testing::kFloorPlanKinds; ++kind) {
+      const testing::FloorPlanOptions options = testing::FloorPlanKind(kind, seed);
       const testing::FloorPlan plan = testing::GenerateFloorPlan(options);
       const Grid& grid = plan.grid;
       StatusOr<Segmentation> seg = SegmentMap(grid);

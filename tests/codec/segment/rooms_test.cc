@@ -129,13 +129,9 @@ TEST(RoomsTest, GeneratedPlansEveryDoorFoundNoSplitWithoutDoor) {
   const SegmentationOptions options;
   int plans = 0;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
-    for (int variant = 0; variant < 8; ++variant) {
-      testing::FloorPlanOptions plan_options;
-      plan_options.seed = seed;
-      plan_options.thick_walls = variant & 1;
-      plan_options.furniture = variant & 2;
-      plan_options.noise = variant & 4;
-      const testing::FloorPlan plan = testing::GenerateFloorPlan(plan_options);
+    for (int kind = 0; kind < testing::kFloorPlanKinds; ++kind) {
+      const testing::FloorPlan plan =
+          testing::GenerateFloorPlan(testing::FloorPlanKind(kind, seed));
       StatusOr<Segmentation> seg = SegmentMap(plan.grid, options);
       ASSERT_TRUE(seg.ok()) << plan.name << ": " << seg.status().message();
       ExpectRoomInvariants(plan.grid, *seg, options, plan.name);
