@@ -29,22 +29,6 @@ bool Inside(CellIndex p, int width, int height) {
   return p.col >= 0 && p.row >= 0 && p.col < width && p.row < height;
 }
 
-// The range-coded part of a body starts after the count; it must be read to
-// its last byte (the encoder drops the implied zero tail).
-Status CheckEnd(const RangeDecoder& dec, std::size_t size, const char* layer) {
-  if (!dec.valid_start() || dec.consumed() != size) {
-    return CorruptError(std::string(layer) + " range-coded data is malformed or truncated");
-  }
-  return Status::Ok();
-}
-
-std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc) {
-  ByteWriter out;
-  out.PutVarint(count);
-  out.PutBytes(enc.bytes());
-  return std::move(out.mutable_bytes());
-}
-
 // ---- paths: walls and polygons ----
 
 // The encoder and the decoder run the same code (CodePath) over one of
@@ -135,10 +119,10 @@ struct PathState {
 // `points` counts the points against `max_points`. Returns false when the
 // stream is corrupt, sets *exhausted when the points exceed the limit.
 template <class IO>
-bool CodePath(IO* io, PathModels* m, int width, int height, std::size_t min_points,
+bool CodePath(IO* io, PathModels* m, const LayerBounds& bounds, std::size_t min_points,
               std::uint64_t max_points, std::uint64_t* points, PathState* state,
               std::vector<CellIndex>* path, bool* exhausted) {
-  const std::int64_t side_limit = std::max(width, height);
+  const std::int64_t side_limit = bounds.side_limit;
   std::uint64_t k = IO::kReading ? 0 : path->size() - min_points;
   if (!io->UInt(&m->points, &k)) return false;
   *points += k + min_points;
@@ -161,7 +145,7 @@ bool CodePath(IO* io, PathModels* m, int width, int height, std::size_t min_poin
   // In 64 bits: the offsets are below max(width, height), not the sums.
   const std::int64_t col = state->prev.col + ahead * kAxisCol[h] + side * kAxisCol[(h + 1) & 3];
   const std::int64_t row = state->prev.row + ahead * kAxisRow[h] + side * kAxisRow[(h + 1) & 3];
-  if (col < 0 || row < 0 || col >= width || row >= height) return false;
+  if (!bounds.Holds(col, row)) return false;
   CellIndex p{static_cast<int>(col), static_cast<int>(row)};
   if constexpr (IO::kReading) {
     path->clear();
@@ -210,7 +194,7 @@ bool CodePath(IO* io, PathModels* m, int width, int height, std::size_t min_poin
     const std::int64_t along = static_cast<std::int64_t>(len + 1);
     const std::int64_t c = p.col + along * kAxisCol[a] + across * kAxisCol[(a + 1) & 3];
     const std::int64_t r = p.row + along * kAxisRow[a] + across * kAxisRow[(a + 1) & 3];
-    if (c < 0 || r < 0 || c >= width || r >= height) return false;
+    if (!bounds.Holds(c, r)) return false;
     p = {static_cast<int>(c), static_cast<int>(r)};
     if constexpr (IO::kReading) path->push_back(p);
     heading = a;
@@ -229,101 +213,37 @@ void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& 
   std::uint64_t points = 0;
   bool exhausted = false;
   std::vector<CellIndex> copy = p;
-  CodePath(&io, m, std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), min_points,
-           std::numeric_limits<std::uint64_t>::max(), &points, state, &copy, &exhausted);
+  const LayerBounds any{std::numeric_limits<int>::min(), std::numeric_limits<int>::min(),
+                        std::numeric_limits<int>::max(), std::numeric_limits<int>::max(),
+                        std::numeric_limits<std::int64_t>::max()};
+  CodePath(&io, m, any, min_points, std::numeric_limits<std::uint64_t>::max(), &points, state,
+           &copy, &exhausted);
 }
 
 // Decodes one path; `points` counts its points against `max_points`.
-StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m, int width, int height,
-                                            std::size_t min_points, std::uint64_t max_points,
-                                            std::uint64_t* points, PathState* state) {
+StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m,
+                                            const LayerBounds& bounds, std::size_t min_points,
+                                            std::uint64_t max_points, std::uint64_t* points,
+                                            PathState* state) {
   PathReader io(dec);
   std::vector<CellIndex> path;
   bool exhausted = false;
-  if (!CodePath(&io, m, width, height, min_points, max_points, points, state, &path, &exhausted)) {
+  if (!CodePath(&io, m, bounds, min_points, max_points, points, state, &path, &exhausted)) {
     if (exhausted) return ResourceExhaustedError("points exceed the limit");
     return CorruptError("point out of the grid or malformed");
   }
   return path;
 }
 
-}  // namespace
-
-void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
-  std::vector<WallPolyline> kept;
-  for (WallPolyline& wall : *walls) {
-    std::vector<CellIndex> points;
-    for (const CellIndex& q : wall.points) {
-      if (points.empty() || !(points.back() == q)) points.push_back(q);
-    }
-    if (points.size() >= 2) kept.push_back({std::move(points)});
-  }
-  *walls = std::move(kept);
-  OrderWallsForCoding(walls);
-}
-
-std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
-  RangeEncoder enc;
-  auto m = std::make_unique<PathModels>();
-  PathState state;
-  for (const WallPolyline& wall : walls) EncodePath(&enc, m.get(), wall.points, 2, &state);
-  enc.Finish();
-  return WithCount(walls.size(), enc);
-}
-
-StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
-                                                int height, const DecodeLimits& limits) {
-  ByteCursor cursor(body);
-  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("wall count"));
-  if (count > limits.max_segments) {
-    return ResourceExhaustedError(std::to_string(count) + " walls exceed the segment limit");
-  }
-  const std::size_t size = cursor.remaining();
-  RangeDecoder dec(body.data() + cursor.position(), size);
-  auto m = std::make_unique<PathModels>();
-  std::vector<WallPolyline> walls;
-  // Points, against the segment limit plus one point per wall (a wall of
-  // k + 1 segments has k + 2 points).
-  std::uint64_t points = 0;
-  const std::uint64_t max_points = limits.max_segments + count;
-  PathState state;
-  for (std::uint64_t w = 0; w < count; ++w) {
-    StatusOr<std::vector<CellIndex>> path =
-        DecodePath(&dec, m.get(), width, height, 2, max_points, &points, &state);
-    if (!path.ok()) {
-      return path.status().code() == StatusCode::kResourceExhausted
-                 ? ResourceExhaustedError("wall segments exceed the segment limit")
-                 : path.status();
-    }
-    walls.push_back({std::move(*path)});
-  }
-  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "WALL"));
-  return walls;
-}
-
-// ---- chains (rooms and furniture) ----
-
-bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height) {
-  if (chain.empty()) return false;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    if (!Inside(chain[i], width, height)) return false;
-    if (i + 1 < chain.size() && !EightAdjacent(chain[i], chain[i + 1])) return false;
-  }
-  const int dc = std::abs(chain.back().col - chain.front().col);
-  const int dr = std::abs(chain.back().row - chain.front().row);
-  return dc <= 1 && dr <= 1;
-}
-
-namespace {
-
 // A closed polygon's vertices; the chain is expanded from them, its cells
 // counted against the chain limit before it is allocated.
-StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m, int width,
-                                               int height, const DecodeLimits& limits,
+StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
+                                               const LayerBounds& bounds,
+                                               const DecodeLimits& limits,
                                                std::uint64_t* vertices, std::uint64_t* cells,
                                                PathState* prev) {
   StatusOr<std::vector<CellIndex>> polygon =
-      DecodePath(dec, m, width, height, 1, limits.max_chain_length, vertices, prev);
+      DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev);
   if (!polygon.ok()) {
     return polygon.status().code() == StatusCode::kResourceExhausted
                ? ResourceExhaustedError("polygon vertices exceed the chain limit")
@@ -356,19 +276,209 @@ struct FurnitureModels {
   PathModels polygon;
 };
 
+PathState StartState(CellIndex origin) {
+  PathState state;
+  state.prev = origin;
+  return state;
+}
+
+// The body of a 2.0 layer chunk: its count, then the items' stream.
+std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc) {
+  ByteWriter out;
+  out.PutVarint(count);
+  out.PutBytes(enc.bytes());
+  return std::move(out.mutable_bytes());
+}
+
+// Reads a 2.0 layer chunk's count (above `limit`: resource exhausted) and
+// opens its stream.
+struct ChunkStream {
+  std::uint64_t count = 0;
+  std::size_t size = 0;
+  const std::uint8_t* data = nullptr;
+};
+StatusOr<ChunkStream> OpenChunkStream(const std::vector<std::uint8_t>& body, const char* count_name,
+                                      const char* items, std::uint64_t limit,
+                                      const char* limit_name) {
+  ByteCursor cursor(body);
+  ChunkStream stream;
+  LINEMAP_ASSIGN_OR_RETURN(stream.count, cursor.ReadVarint(count_name));
+  if (stream.count > limit) {
+    return ResourceExhaustedError(std::to_string(stream.count) + " " + items + " exceed the " +
+                                  limit_name + " limit");
+  }
+  stream.size = cursor.remaining();
+  stream.data = body.data() + cursor.position();
+  return stream;
+}
+
 }  // namespace
+
+LayerBounds LayerBounds::Grid(int width, int height) {
+  return {0, 0, width, height, std::max(width, height)};
+}
+
+Status CheckLayerStreamEnd(const RangeDecoder& dec, std::size_t size, const std::string& what) {
+  if (!dec.valid_start() || dec.consumed() != size) {
+    return CorruptError(what + " range-coded data is malformed or truncated");
+  }
+  return Status::Ok();
+}
+
+void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
+  std::vector<WallPolyline> kept;
+  for (WallPolyline& wall : *walls) {
+    std::vector<CellIndex> points;
+    for (const CellIndex& q : wall.points) {
+      if (points.empty() || !(points.back() == q)) points.push_back(q);
+    }
+    if (points.size() >= 2) kept.push_back({std::move(points)});
+  }
+  *walls = std::move(kept);
+  OrderWallsForCoding(walls);
+}
+
+void EncodeWallItems(RangeEncoder* enc, const std::vector<WallPolyline>& walls, CellIndex origin) {
+  auto m = std::make_unique<PathModels>();
+  PathState state = StartState(origin);
+  for (const WallPolyline& wall : walls) EncodePath(enc, m.get(), wall.points, 2, &state);
+}
+
+Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
+                       std::uint64_t max_points, std::uint64_t* points, CellIndex origin,
+                       std::vector<WallPolyline>* out) {
+  auto m = std::make_unique<PathModels>();
+  PathState state = StartState(origin);
+  for (std::uint64_t w = 0; w < count; ++w) {
+    StatusOr<std::vector<CellIndex>> path =
+        DecodePath(dec, m.get(), bounds, 2, max_points, points, &state);
+    if (!path.ok()) {
+      return path.status().code() == StatusCode::kResourceExhausted
+                 ? ResourceExhaustedError("wall segments exceed the segment limit")
+                 : path.status();
+    }
+    out->push_back({std::move(*path)});
+  }
+  return Status::Ok();
+}
+
+void EncodeRoomItems(RangeEncoder* enc, const std::vector<RoomOutline>& rooms, CellIndex origin) {
+  auto m = std::make_unique<RoomModels>();
+  std::int64_t prev_id = -1;
+  PathState state = StartState(origin);
+  for (const RoomOutline& room : rooms) {
+    EncodeUInt(enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
+    prev_id = room.id;
+    EncodeSymbol<2>(enc, &m->kind, static_cast<unsigned>(room.kind));
+    EncodePath(enc, &m->polygon, room.polygon, 1, &state);
+  }
+}
+
+Status DecodeRoomItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
+                       const DecodeLimits& limits, LayerTotals* totals, CellIndex origin,
+                       bool expand_chains, std::vector<RoomOutline>* out) {
+  auto m = std::make_unique<RoomModels>();
+  std::int64_t prev_id = -1;
+  PathState state = StartState(origin);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint64_t gap = 0;
+    if (!DecodeUInt(dec, &m->id_gap, &gap) || gap > 0xFFFFFFFFu ||
+        prev_id + 1 + static_cast<std::int64_t>(gap) > 0xFFFFFFFF) {
+      return CorruptError("room id above 2^32 - 1");
+    }
+    RoomOutline room;
+    room.id = static_cast<std::uint32_t>(prev_id + 1 + static_cast<std::int64_t>(gap));
+    prev_id = room.id;
+    const unsigned kind = DecodeSymbol<2>(dec, &m->kind);
+    if (kind > 2) return CorruptError("room kind 3 is reserved");
+    room.kind = static_cast<RoomKind>(kind);
+    LINEMAP_ASSIGN_OR_RETURN(room.polygon,
+                             DecodePolygon(dec, &m->polygon, bounds, limits,
+                                           &totals->room_vertices, &totals->room_cells, &state));
+    if (expand_chains) room.chain = ChainOfPolygon(room.polygon);
+    out->push_back(std::move(room));
+  }
+  return Status::Ok();
+}
+
+void EncodeFurnitureItems(RangeEncoder* enc, const std::vector<FurnitureObject>& furniture,
+                          CellIndex origin) {
+  auto m = std::make_unique<FurnitureModels>();
+  PathState state = StartState(origin);
+  std::uint64_t prev_room = 0;  // room id + 1 of the previous object
+  for (const FurnitureObject& object : furniture) {
+    const std::uint64_t room = static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1);
+    enc->Encode(&m->same_room, room == prev_room ? 1 : 0);
+    if (room != prev_room) EncodeUInt(enc, &m->room, room);
+    prev_room = room;
+    EncodePath(enc, &m->polygon, object.polygon, 1, &state);
+  }
+}
+
+Status DecodeFurnitureItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
+                            const DecodeLimits& limits, LayerTotals* totals, CellIndex origin,
+                            bool expand_chains, std::uint32_t first_id,
+                            std::vector<FurnitureObject>* out) {
+  auto m = std::make_unique<FurnitureModels>();
+  PathState state = StartState(origin);
+  std::uint64_t prev_room = 0;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    std::uint64_t room = 0;
+    if (dec->Decode(&m->same_room) == 1) {
+      room = prev_room;
+    } else if (!DecodeUInt(dec, &m->room, &room) || room > 0x80000000u) {
+      return CorruptError("furniture room id above 2^31 - 1");
+    }
+    prev_room = room;
+    FurnitureObject object;
+    object.id = static_cast<std::uint32_t>(first_id + i);
+    object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
+    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(dec, &m->polygon, bounds, limits,
+                                                           &totals->object_vertices,
+                                                           &totals->object_cells, &state));
+    if (expand_chains) object.outline = ChainOfPolygon(object.polygon);
+    out->push_back(std::move(object));
+  }
+  return Status::Ok();
+}
+
+std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
+  RangeEncoder enc;
+  EncodeWallItems(&enc, walls, {0, 0});
+  enc.Finish();
+  return WithCount(walls.size(), enc);
+}
+
+StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
+                                                int height, const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
+                           OpenChunkStream(body, "wall count", "walls", limits.max_segments, "segment"));
+  RangeDecoder dec(stream.data, stream.size);
+  std::vector<WallPolyline> walls;
+  // Points, against the segment limit plus one point per wall (a wall of
+  // k + 1 segments has k + 2 points).
+  std::uint64_t points = 0;
+  LINEMAP_RETURN_IF_ERROR(DecodeWallItems(&dec, stream.count, LayerBounds::Grid(width, height),
+                                          limits.max_segments + stream.count, &points, {0, 0},
+                                          &walls));
+  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "WALL"));
+  return walls;
+}
+
+bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height) {
+  if (chain.empty()) return false;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    if (!Inside(chain[i], width, height)) return false;
+    if (i + 1 < chain.size() && !EightAdjacent(chain[i], chain[i + 1])) return false;
+  }
+  const int dc = std::abs(chain.back().col - chain.front().col);
+  const int dr = std::abs(chain.back().row - chain.front().row);
+  return dc <= 1 && dr <= 1;
+}
 
 std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
   RangeEncoder enc;
-  auto m = std::make_unique<RoomModels>();
-  std::int64_t prev_id = -1;
-  PathState prev_start;
-  for (const RoomOutline& room : rooms) {
-    EncodeUInt(&enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
-    prev_id = room.id;
-    EncodeSymbol<2>(&enc, &m->kind, static_cast<unsigned>(room.kind));
-    EncodePath(&enc, &m->polygon, room.polygon, 1, &prev_start);
-  }
+  EncodeRoomItems(&enc, rooms, {0, 0});
   enc.Finish();
   return WithCount(rooms.size(), enc);
 }
@@ -376,51 +486,20 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
                                                int height, const DecodeLimits& limits,
                                                bool expand_chains) {
-  ByteCursor cursor(body);
-  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("room count"));
-  if (count > limits.max_chain_length) {
-    return ResourceExhaustedError(std::to_string(count) + " rooms exceed the chain limit");
-  }
-  const std::size_t size = cursor.remaining();
-  RangeDecoder dec(body.data() + cursor.position(), size);
-  auto m = std::make_unique<RoomModels>();
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
+                           OpenChunkStream(body, "room count", "rooms", limits.max_chain_length, "chain"));
+  RangeDecoder dec(stream.data, stream.size);
   std::vector<RoomOutline> rooms;
-  std::uint64_t cells = 0, vertices = 0;
-  std::int64_t prev_id = -1;
-  PathState prev_start;
-  for (std::uint64_t i = 0; i < count; ++i) {
-    std::uint64_t gap = 0;
-    if (!DecodeUInt(&dec, &m->id_gap, &gap) || gap > 0xFFFFFFFFu ||
-        prev_id + 1 + static_cast<std::int64_t>(gap) > 0xFFFFFFFF) {
-      return CorruptError("room id above 2^32 - 1");
-    }
-    RoomOutline room;
-    room.id = static_cast<std::uint32_t>(prev_id + 1 + static_cast<std::int64_t>(gap));
-    prev_id = room.id;
-    const unsigned kind = DecodeSymbol<2>(&dec, &m->kind);
-    if (kind > 2) return CorruptError("room kind 3 is reserved");
-    room.kind = static_cast<RoomKind>(kind);
-    LINEMAP_ASSIGN_OR_RETURN(room.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
-                                                         &vertices, &cells, &prev_start));
-    if (expand_chains) room.chain = ChainOfPolygon(room.polygon);
-    rooms.push_back(std::move(room));
-  }
-  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "ROOM"));
+  LayerTotals totals;
+  LINEMAP_RETURN_IF_ERROR(DecodeRoomItems(&dec, stream.count, LayerBounds::Grid(width, height),
+                                          limits, &totals, {0, 0}, expand_chains, &rooms));
+  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "ROOM"));
   return rooms;
 }
 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
   RangeEncoder enc;
-  auto m = std::make_unique<FurnitureModels>();
-  PathState prev_start;
-  std::uint64_t prev_room = 0;  // room id + 1 of the previous object
-  for (const FurnitureObject& object : furniture) {
-    const std::uint64_t room = static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1);
-    enc.Encode(&m->same_room, room == prev_room ? 1 : 0);
-    if (room != prev_room) EncodeUInt(&enc, &m->room, room);
-    prev_room = room;
-    EncodePath(&enc, &m->polygon, object.polygon, 1, &prev_start);
-  }
+  EncodeFurnitureItems(&enc, furniture, {0, 0});
   enc.Finish();
   return WithCount(furniture.size(), enc);
 }
@@ -429,35 +508,15 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
                                                        int width, int height,
                                                        const DecodeLimits& limits,
                                                        bool expand_chains) {
-  ByteCursor cursor(body);
-  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count, cursor.ReadVarint("furniture count"));
-  if (count > limits.max_chain_length) {
-    return ResourceExhaustedError(std::to_string(count) + " objects exceed the chain limit");
-  }
-  const std::size_t size = cursor.remaining();
-  RangeDecoder dec(body.data() + cursor.position(), size);
-  auto m = std::make_unique<FurnitureModels>();
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
+                           OpenChunkStream(body, "furniture count", "objects", limits.max_chain_length, "chain"));
+  RangeDecoder dec(stream.data, stream.size);
   std::vector<FurnitureObject> furniture;
-  std::uint64_t cells = 0, vertices = 0;
-  PathState prev_start;
-  std::uint64_t prev_room = 0;
-  for (std::uint64_t i = 0; i < count; ++i) {
-    std::uint64_t room = 0;
-    if (dec.Decode(&m->same_room) == 1) {
-      room = prev_room;
-    } else if (!DecodeUInt(&dec, &m->room, &room) || room > 0x80000000u) {
-      return CorruptError("furniture room id above 2^31 - 1");
-    }
-    prev_room = room;
-    FurnitureObject object;
-    object.id = static_cast<std::uint32_t>(i);
-    object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
-    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(&dec, &m->polygon, width, height, limits,
-                                                           &vertices, &cells, &prev_start));
-    if (expand_chains) object.outline = ChainOfPolygon(object.polygon);
-    furniture.push_back(std::move(object));
-  }
-  LINEMAP_RETURN_IF_ERROR(CheckEnd(dec, size, "FURN"));
+  LayerTotals totals;
+  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, stream.count,
+                                               LayerBounds::Grid(width, height), limits, &totals,
+                                               {0, 0}, expand_chains, 0, &furniture));
+  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "FURN"));
   return furniture;
 }
 
