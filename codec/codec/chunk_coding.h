@@ -30,6 +30,9 @@ inline constexpr char kFurnitureChunk[] = "FURN";
 inline constexpr char kCellChunk[] = "CELL";
 // Version 2.1: the cells of a file saved within a tolerance, in blocks.
 inline constexpr char kBlockChunk[] = "BLKS";
+// Version 2.2: the three vector layers in sections (instead of WALL, ROOM
+// and FURN).
+inline constexpr char kLayerChunk[] = "LAYR";
 
 // Payload coders (the first byte of every payload but LMHD's).
 enum class PayloadCoder : std::uint8_t { kRaw = 0, kDeflate = 1, kDraco = 2 };

@@ -1,13 +1,17 @@
-// 2.x files: LMHD, then WALL, ROOM, FURN, CELL (each optional, at most once,
-// in this order), meta and unknown ancillary chunks anywhere after LMHD.
+// 2.x files: LMHD, then WALL, ROOM, FURN or LAYR, then CELL or BLKS (each
+// optional, at most once, in this order), meta and unknown ancillary chunks
+// anywhere after LMHD.
 #include "codec/codec/decoder_v2.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "codec/codec/block_tiles.h"
 #include "codec/codec/cell_tiles.h"
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_hints.h"
+#include "codec/codec/layer_sections.h"
 #include "format/byte_io.h"
 
 namespace linemap {
@@ -15,9 +19,12 @@ namespace {
 
 constexpr const char* kV2CriticalOrder[] = {kWallChunk, kRoomChunk, kFurnitureChunk, kCellChunk};
 
-// CELL and BLKS are the two forms of the cells: either may come last.
+// CELL and BLKS are the two forms of the cells: either may come last. LAYR
+// holds the three layers: it takes FURN's place, and a file with it has
+// none of WALL, ROOM and FURN (ReadV2Chunk).
 int V2Rank(const std::string& type) {
   if (type == kBlockChunk) return 3;
+  if (type == kLayerChunk) return 2;
   for (int i = 0; i < 4; ++i) {
     if (type == kV2CriticalOrder[i]) return i;
   }
@@ -36,6 +43,9 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   }
   if (rank >= 0) {
     if (rank <= *last_rank) return CorruptError("chunk out of order or repeated");
+    if (chunk.type == kLayerChunk && *last_rank >= 0) {
+      return CorruptError("LAYR in a file with WALL, ROOM or FURN");
+    }
     *last_rank = rank;
   }
   const bool cells = chunk.type == kCellChunk || chunk.type == kBlockChunk;
@@ -53,10 +63,12 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   if (coder == PayloadCoder::kDraco)
     return CorruptError("the Draco payload coder is for SEGS only");
   const bool range = rank >= 0 && !cells;
+  const bool raw = coder == PayloadCoder::kRaw;
   file->chunks.push_back({chunk.type, chunk.size,
-                          cells   ? "tiles"
-                          : range ? (coder == PayloadCoder::kRaw ? "range" : "range+deflate")
-                                  : (coder == PayloadCoder::kRaw ? "raw" : "deflate")});
+                          cells                          ? "tiles"
+                          : chunk.type == kLayerChunk    ? (raw ? "sections" : "sections+deflate")
+                          : range                        ? (raw ? "range" : "range+deflate")
+                                                         : (raw ? "raw" : "deflate")});
   const int w = file->header.width;
   const int h = file->header.height;
   if (chunk.type == kMetadataChunk) {
@@ -67,6 +79,9 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
     LINEMAP_ASSIGN_OR_RETURN(file->rooms, DecodeRooms(body, w, h, limits, expand_chains));
   } else if (chunk.type == kFurnitureChunk) {
     LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits, expand_chains));
+  } else if (chunk.type == kLayerChunk) {
+    file->has_layer_sections = true;
+    file->layer_body = std::move(body);  // read once the window is known
   } else {
     file->cell_body = std::move(body);
   }
@@ -75,8 +90,43 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
 
 }  // namespace
 
+namespace {
+
+// `window` grown to the tiles of the cells' chunk that meet it.
+StatusOr<CellRect> WindowTiles(const V2File& file, CellRect window) {
+  LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder(file).TileSize());
+  const int w = file.header.width, h = file.header.height;
+  return CellRect{window.x0 / tile * tile, window.y0 / tile * tile,
+                  static_cast<int>(std::min<std::int64_t>(
+                      (std::int64_t{window.x1} + tile - 1) / tile * tile, w)),
+                  static_cast<int>(std::min<std::int64_t>(
+                      (std::int64_t{window.y1} + tile - 1) / tile * tile, h))};
+}
+
+// LAYR's layers into `file`: all of them, or those that draw into the
+// tiles meeting `window`.
+Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const CellRect* window,
+                         V2File* file) {
+  std::optional<CellRect> tiles;
+  if (window != nullptr && file->has_cells && !file->cell_body.empty()) {
+    LINEMAP_ASSIGN_OR_RETURN(tiles, WindowTiles(*file, *window));
+  }
+  StatusOr<DecodedLayers> layers =
+      DecodeLayerSections(file->layer_body, file->header.width, file->header.height, limits,
+                          expand_chains, tiles ? &*tiles : nullptr);
+  if (!layers.ok()) return layers.status().WithContext(std::string("chunk ") + kLayerChunk);
+  file->walls = std::move(layers->walls);
+  file->rooms = std::move(layers->rooms);
+  file->furniture = std::move(layers->furniture);
+  file->layer_body.clear();
+  file->layer_body.shrink_to_fit();
+  return Status::Ok();
+}
+
+}  // namespace
+
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
-                            bool expand_chains) {
+                            bool expand_chains, const CellRect* window) {
   if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
     return CorruptError("the first chunk is not LMHD");
   }
@@ -91,6 +141,9 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
     const Status status =
         ReadV2Chunk(view.chunks[i], limits, read_cells, expand_chains, &last_rank, &file);
     if (!status.ok()) return status.WithContext("chunk " + view.chunks[i].type);
+  }
+  if (file.has_layer_sections) {
+    LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, expand_chains, window, &file));
   }
   return file;
 }
@@ -167,7 +220,9 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
 
 StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& window,
                               const DecodeLimits& limits) {
-  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false));
+  const CellRect rect{window.col0, window.row0, window.col1, window.row1};
+  LINEMAP_ASSIGN_OR_RETURN(V2File file,
+                           ReadV2File(view, limits, true, /*expand_chains=*/false, &rect));
   Grid grid = WindowGrid(file.header.meta, window);
   LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
   return grid;

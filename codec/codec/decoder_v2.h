@@ -26,6 +26,8 @@ struct V2File {
   bool has_cells = false;
   bool cells_in_blocks = false;         // the cells are BLKS, not CELL
   std::vector<std::uint8_t> cell_body;  // only with read_cells
+  bool has_layer_sections = false;        // the layers are LAYR's
+  std::vector<std::uint8_t> layer_body;  // LAYR's, until read
 };
 
 // Windows of a file's cells (CELL or BLKS; all unknown without either).
@@ -49,9 +51,12 @@ class V2CellDecoder {
 
 // `expand_chains` false leaves the rooms' and objects' chains empty (their
 // polygons are read): enough to draw the tiles' hints, and on a map with
-// tens of thousands of rooms some hundred MB less.
+// tens of thousands of rooms some hundred MB less. With `window` (and
+// read_cells), the layers of a LAYR chunk are read only where they can
+// draw into the tiles that meet the window (sections, spec 5.6); 2.0 layer
+// chunks are read whole.
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
-                            bool expand_chains = true);
+                            bool expand_chains = true, const CellRect* window = nullptr);
 
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);

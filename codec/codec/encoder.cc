@@ -1,8 +1,7 @@
 // The .lmap encoder (spec/format.md section 9, "Encoding (informative)").
 //
 // A 2.x file is written in the order the decoder reads it: LMHD, meta, the
-// vector layers (WALL, ROOM, FURN: what a viewer reads without the
-// raster), then the cells in tiles: CELL, the exact cells, each tile coded
+// vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the exact cells, each tile coded
 // against the hints the layers draw into it (a cell on a wall is cheap to
 // confirm as occupied, one inside a room as free), or, within a tolerance,
 // BLKS, the map drawn in blocks of T + 1 cells.
@@ -20,6 +19,7 @@
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
+#include "codec/codec/layer_sections.h"
 #include "codec/codec/tolerance.h"
 #include "codec/codec/tolerance_blocks.h"
 #include "format/container.h"
@@ -50,19 +50,25 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   if (options.tile_size_cells < kMinTileSize || options.tile_size_cells > kMaxTileSize) {
     return InvalidArgumentError("tile size must be 16..65536 cells");
   }
+  if (options.layer_section_cells != 0 && options.layer_section_cells < kMinSectionSide) {
+    return InvalidArgumentError("layer section side must be 0 (automatic) or at least 16 cells");
+  }
   return Status::Ok();
 }
 
-// A 2.x file: header, metadata, the vector layers (what a viewer reads
-// without the raster) and the cells' chunk (`cells_type`: CELL or BLKS).
-// `exact`: the cells are the caller's map itself (the header's lossless
-// flag); files with BLKS are version 2.1 (a 2.0 decoder refuses the unknown
-// critical chunk; the minor number tells a reader why).
+// A 2.x file: header, metadata, the vector layers in sections (LAYR: what a
+// viewer reads without the raster) and the cells' chunk (`cells_type`: CELL
+// or BLKS). `exact`: the cells are the caller's map itself (the header's
+// lossless flag). The minor version names the newest chunk the file holds
+// (LAYR 2, BLKS 1), so that an older decoder's refusal of it says why.
 std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options,
-                                  const VectorLayers& layers, bool exact, const char* cells_type,
+                                  const VectorLayers& layers, int section_side, bool exact,
+                                  const char* cells_type,
                                   const std::vector<std::uint8_t>& cells_body) {
   const bool blocks = std::string_view(cells_type) == kBlockChunk;
-  ContainerWriter writer(kFormatMajor, blocks ? 1 : 0);
+  const bool has_layers =
+      !layers.walls.empty() || !layers.rooms.empty() || !layers.furniture.empty();
+  ContainerWriter writer(kFormatMajor, has_layers ? 2 : blocks ? 1 : 0);
   writer.AddChunk(kHeaderChunk,
                   WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, exact}));
   const auto metadata = MetadataOf(options);
@@ -70,12 +76,11 @@ std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options
     writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
   }
   // Range-coded bodies gain nothing from deflate: stored raw.
-  if (!layers.walls.empty())
-    writer.AddChunk(kWallChunk, WrapPayload(EncodeWalls(layers.walls), false));
-  if (!layers.rooms.empty())
-    writer.AddChunk(kRoomChunk, WrapPayload(EncodeRooms(layers.rooms), false));
-  if (!layers.furniture.empty()) {
-    writer.AddChunk(kFurnitureChunk, WrapPayload(EncodeFurniture(layers.furniture), false));
+  if (has_layers) {
+    writer.AddChunk(kLayerChunk,
+                    WrapPayload(EncodeLayerSections(layers.walls, layers.rooms, layers.furniture,
+                                                    grid.width(), grid.height(), section_side),
+                                false));
   }
   writer.AddChunk(cells_type, WrapPayload(cells_body, false));
   return writer.Finish();
@@ -113,9 +118,15 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   if (options.vector_layers) {
     LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options));
   }
+  // The layers in the order LAYR lists them: the cells' hints are drawn
+  // from them in that order, as the decoder draws them.
+  const int section_side = LayerSectionSide(grid.width(), grid.height(),
+                                            options.layer_section_cells, kLayerBlockCells);
+  ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls,
+                          &layers.rooms, &layers.furniture);
   std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);
   if (options.tolerance_cells == 0) {
-    return WriteV2(grid, options, layers, true, kCellChunk, exact_cells);
+    return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);
   }
   // Within a tolerance the cells are the map drawn in blocks of T + 1
   // cells, with cells restored where a guarantee fails (FitBlockCells
@@ -126,9 +137,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> block_cells,
                            CellsWithinTolerance(grid, options, layers, &exact));
   if (block_cells.size() >= exact_cells.size()) {
-    return WriteV2(grid, options, layers, true, kCellChunk, exact_cells);
+    return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);
   }
-  return WriteV2(grid, options, layers, exact, kBlockChunk, block_cells);
+  return WriteV2(grid, options, layers, section_side, exact, kBlockChunk, block_cells);
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {

@@ -338,10 +338,11 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
   OrderWallsForCoding(walls);
 }
 
-void EncodeWallItems(RangeEncoder* enc, const std::vector<WallPolyline>& walls, CellIndex origin) {
+void EncodeWallItems(RangeEncoder* enc, const WallPolyline* walls, std::size_t count,
+                     CellIndex origin) {
   auto m = std::make_unique<PathModels>();
   PathState state = StartState(origin);
-  for (const WallPolyline& wall : walls) EncodePath(enc, m.get(), wall.points, 2, &state);
+  for (std::size_t i = 0; i < count; ++i) EncodePath(enc, m.get(), walls[i].points, 2, &state);
 }
 
 Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
@@ -362,11 +363,13 @@ Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
   return Status::Ok();
 }
 
-void EncodeRoomItems(RangeEncoder* enc, const std::vector<RoomOutline>& rooms, CellIndex origin) {
+void EncodeRoomItems(RangeEncoder* enc, const RoomOutline* rooms, std::size_t count,
+                     CellIndex origin) {
   auto m = std::make_unique<RoomModels>();
   std::int64_t prev_id = -1;
   PathState state = StartState(origin);
-  for (const RoomOutline& room : rooms) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const RoomOutline& room = rooms[i];
     EncodeUInt(enc, &m->id_gap, static_cast<std::uint64_t>(room.id - prev_id - 1));
     prev_id = room.id;
     EncodeSymbol<2>(enc, &m->kind, static_cast<unsigned>(room.kind));
@@ -401,12 +404,13 @@ Status DecodeRoomItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
   return Status::Ok();
 }
 
-void EncodeFurnitureItems(RangeEncoder* enc, const std::vector<FurnitureObject>& furniture,
+void EncodeFurnitureItems(RangeEncoder* enc, const FurnitureObject* furniture, std::size_t count,
                           CellIndex origin) {
   auto m = std::make_unique<FurnitureModels>();
   PathState state = StartState(origin);
   std::uint64_t prev_room = 0;  // room id + 1 of the previous object
-  for (const FurnitureObject& object : furniture) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const FurnitureObject& object = furniture[i];
     const std::uint64_t room = static_cast<std::uint64_t>(std::int64_t{object.room_id} + 1);
     enc->Encode(&m->same_room, room == prev_room ? 1 : 0);
     if (room != prev_room) EncodeUInt(enc, &m->room, room);
@@ -444,7 +448,7 @@ Status DecodeFurnitureItems(RangeDecoder* dec, std::uint64_t count, const LayerB
 
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
   RangeEncoder enc;
-  EncodeWallItems(&enc, walls, {0, 0});
+  EncodeWallItems(&enc, walls.data(), walls.size(), {0, 0});
   enc.Finish();
   return WithCount(walls.size(), enc);
 }
@@ -478,7 +482,7 @@ bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height)
 
 std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
   RangeEncoder enc;
-  EncodeRoomItems(&enc, rooms, {0, 0});
+  EncodeRoomItems(&enc, rooms.data(), rooms.size(), {0, 0});
   enc.Finish();
   return WithCount(rooms.size(), enc);
 }
@@ -499,7 +503,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
   RangeEncoder enc;
-  EncodeFurnitureItems(&enc, furniture, {0, 0});
+  EncodeFurnitureItems(&enc, furniture.data(), furniture.size(), {0, 0});
   enc.Finish();
   return WithCount(furniture.size(), enc);
 }

@@ -5,6 +5,7 @@
 #ifndef LINEMAP_CODEC_CODEC_LAYER_CODING_H_
 #define LINEMAP_CODEC_CODEC_LAYER_CODING_H_
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,9 +38,12 @@ struct LayerTotals {
 
 // One layer's items into a stream, with fresh models and the paths' state
 // starting at `origin`, heading 0 (spec 5.2).
-void EncodeWallItems(RangeEncoder* enc, const std::vector<WallPolyline>& walls, CellIndex origin);
-void EncodeRoomItems(RangeEncoder* enc, const std::vector<RoomOutline>& rooms, CellIndex origin);
-void EncodeFurnitureItems(RangeEncoder* enc, const std::vector<FurnitureObject>& furniture,
+// `count` items from `items` on.
+void EncodeWallItems(RangeEncoder* enc, const WallPolyline* walls, std::size_t count,
+                     CellIndex origin);
+void EncodeRoomItems(RangeEncoder* enc, const RoomOutline* rooms, std::size_t count,
+                     CellIndex origin);
+void EncodeFurnitureItems(RangeEncoder* enc, const FurnitureObject* furniture, std::size_t count,
                           CellIndex origin);
 // `count` items appended to `out`; points outside `bounds` are corrupt.
 // Walls count their points in `points` against `max_points`; objects are

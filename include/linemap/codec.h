@@ -49,6 +49,12 @@ struct EncodeOptions {
   // the tiles it meets, and tiles are coded on several threads. Smaller
   // tiles make windows cheaper and files a little larger.
   int tile_size_cells = 1024;
+  // Side of the square sections the vector layers are stored in (cells;
+  // 0, the default, picks it: one section up to 4096 cells a side, sections
+  // of 4096 beyond; else at least 16). A window decodes only the layers of
+  // the sections that reach its tiles; each section costs a few bytes and
+  // starts its models afresh.
+  int layer_section_cells = 0;
   // Write a version 1.0 file with the 1.0 encoder instead (lossy unless
   // `lossless`): the former lossy mode, kept until the tolerance mode
   // replaces it. The fields below marked "1.0" apply only to it.

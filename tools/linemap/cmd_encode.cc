@@ -48,6 +48,10 @@ const CommandSpec kEncodeSpec = {
          "threads to use (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
          "side of the independently decodable tiles, 16..65536 (default 1024)"},
+        {"--section-size", "CELLS",
+         "side of the sections the vector layers are stored in, at least 16 (default 0: one "
+         "section up to 4096 cells a side, 4096 beyond); a window reads only the sections "
+         "reaching its tiles"},
         {"--lossy", "",
          "write a version 1.0 file with the former lossy encoder (obstacles within one cell, "
          "free space kept; it can drop wall surfaces: --tolerance keeps them)"},
@@ -105,6 +109,10 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 1024));
   if (options.tile_size_cells < 16 || options.tile_size_cells > 65536) {
     return InvalidArgumentError("--tile-size must be 16..65536 cells");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(options.layer_section_cells, args.GetInt("--section-size", 0));
+  if (options.layer_section_cells != 0 && options.layer_section_cells < 16) {
+    return InvalidArgumentError("--section-size must be 0 (automatic) or at least 16 cells");
   }
   if (std::optional<std::string> method = args.Get("--method")) {
     if (*method == "linemap") {

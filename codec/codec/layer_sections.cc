@@ -1,0 +1,331 @@
+// LAYR bodies (spec/format.md section 5.6).
+#include "codec/codec/layer_sections.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <string>
+
+#include "codec/codec/layer_coding.h"
+#include "codec/codec/layer_order.h"
+#include "format/byte_io.h"
+#include "format/range_coder.h"
+
+namespace linemap {
+namespace {
+
+// The sections of a width x height grid: ceil(width / side) columns by
+// ceil(height / side) rows, numbered row-major from the origin.
+struct SectionGrid {
+  SectionGrid(int width, int height, std::int64_t side)
+      : side(side), cols((width + side - 1) / side), rows((height + side - 1) / side) {}
+  std::int64_t count() const { return cols * rows; }
+  std::int64_t Of(CellIndex lower) const { return lower.row / side * cols + lower.col / side; }
+  std::int64_t side, cols, rows;
+};
+
+// The box of a list of points, inclusive at both ends.
+struct PointBox {
+  int c0 = std::numeric_limits<int>::max(), r0 = std::numeric_limits<int>::max();
+  int c1 = std::numeric_limits<int>::min(), r1 = std::numeric_limits<int>::min();
+  void Add(const std::vector<CellIndex>& points) {
+    for (const CellIndex& p : points) {
+      c0 = std::min(c0, p.col);
+      r0 = std::min(r0, p.row);
+      c1 = std::max(c1, p.col);
+      r1 = std::max(r1, p.row);
+    }
+  }
+  CellIndex lower() const { return {c0, r0}; }
+};
+
+const std::vector<CellIndex>& PointsOf(const WallPolyline& wall) { return wall.points; }
+const std::vector<CellIndex>& PointsOf(const RoomOutline& room) { return room.polygon; }
+const std::vector<CellIndex>& PointsOf(const FurnitureObject& object) { return object.polygon; }
+
+template <class Item>
+std::int64_t SectionOf(const SectionGrid& grid, const Item& item) {
+  PointBox box;
+  box.Add(PointsOf(item));
+  return grid.Of(box.lower());
+}
+
+// Stable grouping by section; returns each item's section in the new order.
+template <class Item>
+std::vector<std::int64_t> GroupBySection(const SectionGrid& grid, std::vector<Item>* items) {
+  std::vector<std::pair<std::int64_t, std::size_t>> keys;
+  keys.reserve(items->size());
+  for (std::size_t i = 0; i < items->size(); ++i) keys.emplace_back(SectionOf(grid, (*items)[i]), i);
+  std::stable_sort(keys.begin(), keys.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Item> grouped;
+  grouped.reserve(items->size());
+  std::vector<std::int64_t> sections;
+  sections.reserve(items->size());
+  for (const auto& [section, i] : keys) {
+    grouped.push_back(std::move((*items)[i]));
+    sections.push_back(section);
+  }
+  *items = std::move(grouped);
+  return sections;
+}
+
+// [begin, end) of each section's run in a grouped list.
+std::vector<std::size_t> RunStarts(const std::vector<std::int64_t>& sections,
+                                   std::int64_t count) {
+  std::vector<std::size_t> starts(static_cast<std::size_t>(count) + 1, sections.size());
+  for (std::size_t i = sections.size(); i-- > 0;) {
+    starts[static_cast<std::size_t>(sections[i])] = i;
+  }
+  // Empty sections start where the next one does.
+  for (std::int64_t s = count; s-- > 0;) {
+    starts[s] = std::min(starts[s], starts[s + 1]);
+  }
+  return starts;
+}
+
+// Each section's run ordered for coding on its own (a tour per section).
+template <class Item, class Order>
+void OrderRuns(const std::vector<std::size_t>& starts, std::vector<Item>* items, Order order) {
+  for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
+    if (starts[s + 1] - starts[s] < 2) continue;
+    std::vector<Item> run(std::make_move_iterator(items->begin() + starts[s]),
+                          std::make_move_iterator(items->begin() + starts[s + 1]));
+    order(&run);
+    std::move(run.begin(), run.end(), items->begin() + starts[s]);
+  }
+}
+
+// Room ids 1, 2, ... in list order when they do not increase already; the
+// objects' room ids follow.
+void RenumberRoomsIfNeeded(std::vector<RoomOutline>* rooms,
+                           std::vector<FurnitureObject>* furniture) {
+  bool increasing = true;
+  for (std::size_t i = 1; i < rooms->size() && increasing; ++i) {
+    increasing = (*rooms)[i].id > (*rooms)[i - 1].id;
+  }
+  if (increasing) return;
+  std::map<std::uint32_t, std::uint32_t> new_id;
+  for (std::size_t i = 0; i < rooms->size(); ++i) {
+    new_id[(*rooms)[i].id] = static_cast<std::uint32_t>(i + 1);
+    (*rooms)[i].id = static_cast<std::uint32_t>(i + 1);
+  }
+  for (FurnitureObject& object : *furniture) {
+    if (object.room_id < 0) continue;
+    const auto it = new_id.find(static_cast<std::uint32_t>(object.room_id));
+    object.room_id = it == new_id.end() ? -1 : static_cast<std::int32_t>(it->second);
+  }
+}
+
+// One section's entry in the table, as read.
+struct SectionEntry {
+  std::uint64_t walls = 0, rooms = 0, objects = 0;
+  PointBox box;
+  std::uint64_t stream_bytes = 0;
+  std::uint64_t stream_offset = 0;  // from the end of the table
+  bool empty() const { return walls == 0 && rooms == 0 && objects == 0; }
+};
+
+bool Meets(const PointBox& box, const CellRect& region) {
+  return box.c0 < region.x1 && box.c1 >= region.x0 && box.r0 < region.y1 && box.r1 >= region.y0;
+}
+
+}  // namespace
+
+int LayerSectionSide(int width, int height, int requested, int block_side) {
+  if (requested > 0) return requested;
+  const int side = std::max(width, height);
+  if (side <= block_side) return std::max(side, static_cast<int>(kMinSectionSide));
+  return block_side;
+}
+
+void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
+                             std::vector<RoomOutline>* rooms,
+                             std::vector<FurnitureObject>* furniture) {
+  const SectionGrid grid(width, height, side);
+  const std::vector<std::int64_t> wall_sections = GroupBySection(grid, walls);
+  const std::vector<std::int64_t> room_sections = GroupBySection(grid, rooms);
+  const std::vector<std::int64_t> object_sections = GroupBySection(grid, furniture);
+  if (grid.count() > 1) {
+    // One section is the whole map, already in the tour order of the
+    // extraction; with more, each section's items get a tour of their own.
+    OrderRuns(RunStarts(wall_sections, grid.count()), walls, OrderWallsForCoding);
+    OrderRuns(RunStarts(object_sections, grid.count()), furniture, OrderFurnitureForCoding);
+  }
+  RenumberRoomsIfNeeded(rooms, furniture);
+  for (std::size_t i = 0; i < furniture->size(); ++i) {
+    (*furniture)[i].id = static_cast<std::uint32_t>(i);
+  }
+}
+
+std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& walls,
+                                              const std::vector<RoomOutline>& rooms,
+                                              const std::vector<FurnitureObject>& furniture,
+                                              int width, int height, int side) {
+  const SectionGrid grid(width, height, side);
+  const auto sections_of = [&](const auto& items) {
+    std::vector<std::int64_t> sections;
+    sections.reserve(items.size());
+    for (const auto& item : items) sections.push_back(SectionOf(grid, item));
+    return sections;
+  };
+  const std::vector<std::size_t> wall_starts = RunStarts(sections_of(walls), grid.count());
+  const std::vector<std::size_t> room_starts = RunStarts(sections_of(rooms), grid.count());
+  const std::vector<std::size_t> object_starts = RunStarts(sections_of(furniture), grid.count());
+  ByteWriter table;
+  table.PutVarint(static_cast<std::uint64_t>(side));
+  ByteWriter streams;
+  for (std::int64_t s = 0; s < grid.count(); ++s) {
+    const std::size_t w0 = wall_starts[s], wn = wall_starts[s + 1] - w0;
+    const std::size_t r0 = room_starts[s], rn = room_starts[s + 1] - r0;
+    const std::size_t o0 = object_starts[s], on = object_starts[s + 1] - o0;
+    table.PutVarint(wn);
+    table.PutVarint(rn);
+    table.PutVarint(on);
+    if (wn + rn + on == 0) continue;
+    PointBox box;
+    for (std::size_t i = 0; i < wn; ++i) box.Add(walls[w0 + i].points);
+    for (std::size_t i = 0; i < rn; ++i) box.Add(rooms[r0 + i].polygon);
+    for (std::size_t i = 0; i < on; ++i) box.Add(furniture[o0 + i].polygon);
+    CellIndex origin{0, 0};
+    if (grid.count() > 1) {
+      table.PutVarint(static_cast<std::uint64_t>(box.c0));
+      table.PutVarint(static_cast<std::uint64_t>(box.r0));
+      table.PutVarint(static_cast<std::uint64_t>(box.c1 - box.c0));
+      table.PutVarint(static_cast<std::uint64_t>(box.r1 - box.r0));
+      origin = box.lower();
+    }
+    RangeEncoder enc;
+    EncodeWallItems(&enc, walls.data() + w0, wn, origin);
+    EncodeRoomItems(&enc, rooms.data() + r0, rn, origin);
+    EncodeFurnitureItems(&enc, furniture.data() + o0, on, origin);
+    enc.Finish();
+    table.PutVarint(enc.bytes().size());
+    streams.PutBytes(enc.bytes());
+  }
+  table.PutBytes(streams.bytes());
+  return std::move(table.mutable_bytes());
+}
+
+namespace {
+
+// The section table: every entry read and checked against the grid, the
+// limits and the bytes after it.
+StatusOr<std::vector<SectionEntry>> ReadSectionTable(ByteCursor* cursor, int width, int height,
+                                                     const DecodeLimits& limits,
+                                                     std::int64_t* side) {
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t s, cursor->ReadVarint("section side"));
+  if (s < static_cast<std::uint64_t>(kMinSectionSide) ||
+      s > static_cast<std::uint64_t>(kMaxSectionSide)) {
+    return CorruptError("section side " + std::to_string(s) + " outside 16..2^31-1");
+  }
+  *side = static_cast<std::int64_t>(s);
+  const SectionGrid grid(width, height, *side);
+  // An entry takes at least three bytes (its counts).
+  if (static_cast<std::uint64_t>(grid.count()) > cursor->remaining() / 3) {
+    return CorruptError(std::to_string(grid.count()) + " sections do not fit the chunk");
+  }
+  std::vector<SectionEntry> entries(static_cast<std::size_t>(grid.count()));
+  std::uint64_t walls = 0, rooms = 0, objects = 0, stream_bytes = 0;
+  for (std::int64_t k = 0; k < grid.count(); ++k) {
+    SectionEntry& e = entries[static_cast<std::size_t>(k)];
+    LINEMAP_ASSIGN_OR_RETURN(e.walls, cursor->ReadVarint("section wall count"));
+    LINEMAP_ASSIGN_OR_RETURN(e.rooms, cursor->ReadVarint("section room count"));
+    LINEMAP_ASSIGN_OR_RETURN(e.objects, cursor->ReadVarint("section object count"));
+    // Each sum stays below 2^64: every term is checked against a limit of
+    // at most 2^64 - 1 before the next is added.
+    walls += std::min<std::uint64_t>(e.walls, limits.max_segments + 1);
+    rooms += std::min<std::uint64_t>(e.rooms, limits.max_chain_length + 1);
+    objects += std::min<std::uint64_t>(e.objects, limits.max_chain_length + 1);
+    if (walls > limits.max_segments) return ResourceExhaustedError("walls exceed the segment limit");
+    if (rooms > limits.max_chain_length) return ResourceExhaustedError("rooms exceed the chain limit");
+    if (objects > limits.max_chain_length) {
+      return ResourceExhaustedError("objects exceed the chain limit");
+    }
+    if (e.empty()) continue;
+    if (grid.count() == 1) {
+      e.box = PointBox{0, 0, width - 1, height - 1};
+    } else {
+      std::uint64_t c0 = 0, r0 = 0, dc = 0, dr = 0;
+      LINEMAP_ASSIGN_OR_RETURN(c0, cursor->ReadVarint("section box column"));
+      LINEMAP_ASSIGN_OR_RETURN(r0, cursor->ReadVarint("section box row"));
+      LINEMAP_ASSIGN_OR_RETURN(dc, cursor->ReadVarint("section box width"));
+      LINEMAP_ASSIGN_OR_RETURN(dr, cursor->ReadVarint("section box height"));
+      if (c0 >= static_cast<std::uint64_t>(width) || dc >= static_cast<std::uint64_t>(width) - c0 ||
+          r0 >= static_cast<std::uint64_t>(height) ||
+          dr >= static_cast<std::uint64_t>(height) - r0) {
+        return CorruptError("section " + std::to_string(k) + ": box outside the grid");
+      }
+      e.box = PointBox{static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c0 + dc),
+                       static_cast<int>(r0 + dr)};
+    }
+    LINEMAP_ASSIGN_OR_RETURN(e.stream_bytes, cursor->ReadVarint("section stream length"));
+    if (e.stream_bytes > cursor->remaining()) {
+      return CorruptError("section " + std::to_string(k) + ": stream past the end of the chunk");
+    }
+    e.stream_offset = stream_bytes;
+    stream_bytes += e.stream_bytes;
+  }
+  if (stream_bytes != cursor->remaining()) {
+    return CorruptError("the section streams do not fill the chunk");
+  }
+  return entries;
+}
+
+// One section's stream into `out`.
+Status DecodeSection(const std::uint8_t* data, const SectionEntry& e, int width, int height,
+                     const DecodeLimits& limits, bool expand_chains, std::uint64_t max_points,
+                     std::uint64_t* points, LayerTotals* totals, std::uint32_t first_object,
+                     DecodedLayers* out) {
+  const LayerBounds bounds{e.box.c0, e.box.r0, std::int64_t{e.box.c1} + 1,
+                           std::int64_t{e.box.r1} + 1, std::max(width, height)};
+  const std::size_t size = static_cast<std::size_t>(e.stream_bytes);
+  RangeDecoder dec(data + e.stream_offset, size);
+  const CellIndex origin = e.box.lower();
+  LINEMAP_RETURN_IF_ERROR(
+      DecodeWallItems(&dec, e.walls, bounds, max_points, points, origin, &out->walls));
+  const std::size_t first_room = out->rooms.size();
+  LINEMAP_RETURN_IF_ERROR(DecodeRoomItems(&dec, e.rooms, bounds, limits, totals, origin,
+                                          expand_chains, &out->rooms));
+  if (first_room > 0 && first_room < out->rooms.size() &&
+      out->rooms[first_room].id <= out->rooms[first_room - 1].id) {
+    return CorruptError("room ids do not increase");
+  }
+  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, e.objects, bounds, limits, totals, origin,
+                                               expand_chains, first_object, &out->furniture));
+  return CheckLayerStreamEnd(dec, size, "the section's");
+}
+
+}  // namespace
+
+StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& body, int width,
+                                            int height, const DecodeLimits& limits,
+                                            bool expand_chains, const CellRect* region) {
+  ByteCursor cursor(body);
+  std::int64_t side = 0;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<SectionEntry> entries,
+                           ReadSectionTable(&cursor, width, height, limits, &side));
+  const std::uint8_t* streams = body.data() + cursor.position();
+  std::uint64_t all_walls = 0;
+  for (const SectionEntry& e : entries) all_walls += e.walls;
+  // Points against the segment limit plus one point per wall (a wall of
+  // k + 1 segments has k + 2 points).
+  const std::uint64_t max_points = limits.max_segments + all_walls;
+  std::uint64_t points = 0;
+  LayerTotals totals;
+  DecodedLayers out;
+  std::uint64_t first_object = 0;
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const SectionEntry& e = entries[k];
+    if (!e.empty() && (region == nullptr || Meets(e.box, *region))) {
+      const Status status =
+          DecodeSection(streams, e, width, height, limits, expand_chains, max_points, &points,
+                        &totals, static_cast<std::uint32_t>(first_object), &out);
+      if (!status.ok()) return status.WithContext("section " + std::to_string(k));
+    }
+    first_object += e.objects;
+  }
+  return out;
+}
+
+}  // namespace linemap
