@@ -230,7 +230,7 @@ StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m,
   bool exhausted = false;
   if (!CodePath(&io, m, bounds, min_points, max_points, points, state, &path, &exhausted)) {
     if (exhausted) return ResourceExhaustedError("points exceed the limit");
-    return CorruptError("point out of the grid or malformed");
+    return CorruptError("point out of the grid (or its section's box) or malformed");
   }
   return path;
 }

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
-# Writes the version 2.0 and 2.1 fixtures (tests/data/lmap/*_v2*.lmap) with
-# the linemap built in BUILD (default build/), and the 2.x must-fail files
+# Writes the version 2.x fixtures (tests/data/lmap/*_v2*.lmap) with the
+# linemap built in BUILD (default build/), and the 2.x must-fail files
 # (tests/data/bad/lmap_decode/v2_*.lmap) by editing one chunk of a valid
 # file and recomputing its CRC. Run from the repository root; the tests
 # check the fixtures against the source maps, not against this script.
+# Files of earlier versions are kept as they were written and never
+# rewritten: depot_v2_0.lmap and lse_arena_v2_0.lmap (2.0: WALL, ROOM,
+# FURN), willow_v2_1_tolerance_1.lmap (2.1: BLKS); the 2.0 and 2.1
+# must-fail files are made from them.
 set -euo pipefail
 BUILD=${1:-build}
 L=$BUILD/linemap
@@ -14,11 +18,17 @@ $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_raster_only.lmap --rast
   --no-sync >/dev/null
 $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_tiles_64.lmap --tile-size 64 \
   --no-sync >/dev/null
-# Version 2.1: cells in blocks (BLKS), within a tolerance of 1 cell.
+# Cells in blocks (BLKS), within a tolerance of 1 cell.
 $L encode $M/turtlebot_apps/willow-2010-02-18-0.10.yaml \
-  -o tests/data/lmap/willow_v2_1_tolerance_1.lmap --tolerance 1 \
+  -o tests/data/lmap/willow_v2_2_tolerance_1.lmap --tolerance 1 \
   --no-sync >/dev/null
-cp tests/data/lmap/willow_v2_1_tolerance_1.lmap tests/fuzz/corpus/lmap_decode/
+# The layers in several sections (LAYR with boxes), tiles of 64 cells.
+$L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_2_sections_64.lmap \
+  --section-size 64 --tile-size 64 --no-sync >/dev/null
+cp tests/data/lmap/willow_v2_1_tolerance_1.lmap tests/data/lmap/willow_v2_2_tolerance_1.lmap \
+  tests/data/lmap/depot_v2_0.lmap tests/data/lmap/depot_v2_2_sections_64.lmap \
+  tests/fuzz/corpus/lmap_decode/
+cp tests/data/lmap/depot_v2_2_sections_64.lmap tests/fuzz/corpus/lmap_vectors/
 for f in lse_arena_v2 depot_v2; do
   mkdir -p tests/fuzz/corpus/lmap_vectors
   cp tests/data/lmap/$f.lmap tests/fuzz/corpus/lmap_decode/$f.lmap
@@ -60,7 +70,7 @@ def build(head, chunks):
         out += struct.pack('<I', zlib.crc32(t + payload) & 0xFFFFFFFF)
     return bytes(out)
 
-head, chunks = parse(open('tests/data/lmap/depot_v2.lmap', 'rb').read())
+head, chunks = parse(open('tests/data/lmap/depot_v2_0.lmap', 'rb').read())
 types = [c[0] for c in chunks]
 bad = 'tests/data/bad/lmap_decode/'
 
@@ -109,4 +119,42 @@ open(bad + 'v2_1_tile_side_not_a_multiple_of_the_block_side.lmap', 'wb').write(
 both = [c for c in chunks21 if c[0] != b'BLKS' and c[0] != b'LEND'] + [chunk(b'CELL'), blks,
                                                                        [b'LEND', b'']]
 open(bad + 'v2_1_cell_and_blks.lmap', 'wb').write(build(head21, both))
+
+# Version 2.2: LAYR payload: coder byte 0, section side varint, the table,
+# the streams.
+head22, chunks22 = parse(open('tests/data/lmap/depot_v2_2_sections_64.lmap', 'rb').read())
+layr = [c for c in chunks22 if c[0] == b'LAYR'][0]
+
+def with_layr(payload, extra=()):
+    out = []
+    for c in chunks22:
+        if c[0] == b'LAYR':
+            out.extend(extra)
+            out.append([b'LAYR', payload])
+        else:
+            out.append(c)
+    return build(head22, out)
+
+side, p = read_varint(layr[1], 1)
+open(bad + 'v2_2_section_side_8.lmap', 'wb').write(with_layr(b'\x00' + varint(8) + layr[1][p:]))
+# The 2.0 file's WALL before LAYR: the layers twice.
+open(bad + 'v2_2_layr_and_wall.lmap', 'wb').write(with_layr(layr[1], [chunk(b'WALL')]))
+# The first section with items gets a box one column narrower than its
+# points: an item outside its section's box.
+q = p
+while True:
+    counts = []
+    for _ in range(3):
+        v, q = read_varint(layr[1], q)
+        counts.append(v)
+    if sum(counts):
+        break
+c0, q = read_varint(layr[1], q)
+r0, q = read_varint(layr[1], q)
+dc_at = q
+dc, q = read_varint(layr[1], q)
+assert dc > 0
+narrow = layr[1][:dc_at] + varint(dc - 1) + layr[1][q:]
+assert len(varint(dc - 1)) == len(varint(dc))
+open(bad + 'v2_2_item_outside_its_section_box.lmap', 'wb').write(with_layr(narrow))
 PY

@@ -55,7 +55,7 @@ TEST(CliInfoTest, LmapCountsTheVectorLayers) {
   ASSERT_EQ(json.exit_code, 0) << json.err;
   EXPECT_NE(json.out.find(counts), std::string::npos) << counts << "\n" << json.out;
   EXPECT_NE(json.out.find("\"version\":\"2."), std::string::npos) << json.out;
-  EXPECT_NE(json.out.find("{\"type\":\"WALL\","), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("{\"type\":\"LAYR\","), std::string::npos) << json.out;
   EXPECT_EQ(json.out.find("\"segments\""), std::string::npos) << json.out;  // 1.0 keys only
   const CliResult text = RunCli({"info", dir + "/d.lmap"});
   ASSERT_EQ(text.exit_code, 0) << text.err;

@@ -36,6 +36,11 @@ struct ScalingRow {
   double linemap_lines_ms_per_mcell = 0;  // ExtractLines() with the defaults
   std::optional<double> lmap_encode_ms_per_mcell;
   std::optional<double> lmap_decode_ms_per_mcell;
+  // A window of 1 % of the map (a tenth of each side, from 30 % of each
+  // side: inside one section of the layers), decoded with DecodeLmapRegion,
+  // against decoding the whole map: ms (median) and how many times faster.
+  std::optional<double> lmap_window_ms;
+  std::optional<double> lmap_window_speedup;
 };
 
 // Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16

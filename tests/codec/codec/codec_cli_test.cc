@@ -54,7 +54,7 @@ TEST(CodecCliTest, InfoListsChunksAndEvalReportsExactness) {
   ASSERT_EQ(info.exit_code, 0) << info.err;
   EXPECT_NE(info.out.find("LMHD"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("CELL"), std::string::npos) << info.out;
-  EXPECT_NE(info.out.find("WALL"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("LAYR"), std::string::npos) << info.out;
   EXPECT_NE(info.out.find("lossless"), std::string::npos) << info.out;
   auto eval = RunCli({"eval", kArena, dir + "/a.lmap", "--json"});
   ASSERT_EQ(eval.exit_code, 0) << eval.err;

@@ -230,6 +230,9 @@ TEST(CodecV2Test, WindowsEqualTheCropOfTheWholeDecode) {
     ASSERT_TRUE(grid.ok());
     EncodeOptions options;
     options.tile_size_cells = 64;  // several tiles even on small maps
+    // Layer sections not aligned with the tiles: a window draws its tiles'
+    // hints from the sections whose box reaches them.
+    options.layer_section_cells = 48;
     auto bytes = EncodeLmap(*grid, options);
     ASSERT_TRUE(bytes.ok());
     for (int trial = 0; trial < 25; ++trial) {
