@@ -65,10 +65,10 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
   const bool range = rank >= 0 && !cells;
   const bool raw = coder == PayloadCoder::kRaw;
   file->chunks.push_back({chunk.type, chunk.size,
-                          cells                          ? "tiles"
-                          : chunk.type == kLayerChunk    ? (raw ? "sections" : "sections+deflate")
-                          : range                        ? (raw ? "range" : "range+deflate")
-                                                         : (raw ? "raw" : "deflate")});
+                          cells                       ? "tiles"
+                          : chunk.type == kLayerChunk ? (raw ? "sections" : "sections+deflate")
+                          : range                     ? (raw ? "range" : "range+deflate")
+                                                      : (raw ? "raw" : "deflate")});
   const int w = file->header.width;
   const int h = file->header.height;
   if (chunk.type == kMetadataChunk) {

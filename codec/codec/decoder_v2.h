@@ -24,9 +24,9 @@ struct V2File {
   std::vector<std::pair<std::string, std::string>> metadata;
   std::vector<LmapChunkInfo> chunks;
   bool has_cells = false;
-  bool cells_in_blocks = false;         // the cells are BLKS, not CELL
-  std::vector<std::uint8_t> cell_body;  // only with read_cells
-  bool has_layer_sections = false;        // the layers are LAYR's
+  bool cells_in_blocks = false;          // the cells are BLKS, not CELL
+  std::vector<std::uint8_t> cell_body;   // only with read_cells
+  bool has_layer_sections = false;       // the layers are LAYR's
   std::vector<std::uint8_t> layer_body;  // LAYR's, until read
 };
 

@@ -1,10 +1,10 @@
 // The .lmap encoder (spec/format.md section 9, "Encoding (informative)").
 //
 // A 2.x file is written in the order the decoder reads it: LMHD, meta, the
-// vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the exact cells, each tile coded
-// against the hints the layers draw into it (a cell on a wall is cheap to
-// confirm as occupied, one inside a room as free), or, within a tolerance,
-// BLKS, the map drawn in blocks of T + 1 cells.
+// vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the
+// exact cells, each tile coded against the hints the layers draw into it (a cell on a wall is cheap
+// to confirm as occupied, one inside a room as free), or, within a tolerance, BLKS, the map drawn
+// in blocks of T + 1 cells.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,6 +20,7 @@
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
 #include "codec/codec/layer_sections.h"
+#include "codec/codec/section_order.h"
 #include "codec/codec/tolerance.h"
 #include "codec/codec/tolerance_blocks.h"
 #include "format/container.h"
@@ -120,10 +121,10 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   }
   // The layers in the order LAYR lists them: the cells' hints are drawn
   // from them in that order, as the decoder draws them.
-  const int section_side = LayerSectionSide(grid.width(), grid.height(),
-                                            options.layer_section_cells, kLayerBlockCells);
-  ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls,
-                          &layers.rooms, &layers.furniture);
+  const int section_side =
+      LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells, kLayerBlockCells);
+  ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls, &layers.rooms,
+                          &layers.furniture);
   std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);
   if (options.tolerance_cells == 0) {
     return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);

@@ -239,9 +239,8 @@ StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m,
 // counted against the chain limit before it is allocated.
 StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
                                                const LayerBounds& bounds,
-                                               const DecodeLimits& limits,
-                                               std::uint64_t* vertices, std::uint64_t* cells,
-                                               PathState* prev) {
+                                               const DecodeLimits& limits, std::uint64_t* vertices,
+                                               std::uint64_t* cells, PathState* prev) {
   StatusOr<std::vector<CellIndex>> polygon =
       DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev);
   if (!polygon.ok()) {
@@ -396,8 +395,8 @@ Status DecodeRoomItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
     if (kind > 2) return CorruptError("room kind 3 is reserved");
     room.kind = static_cast<RoomKind>(kind);
     LINEMAP_ASSIGN_OR_RETURN(room.polygon,
-                             DecodePolygon(dec, &m->polygon, bounds, limits,
-                                           &totals->room_vertices, &totals->room_cells, &state));
+                             DecodePolygon(dec, &m->polygon, bounds, limits, &totals->room_vertices,
+                                           &totals->room_cells, &state));
     if (expand_chains) room.chain = ChainOfPolygon(room.polygon);
     out->push_back(std::move(room));
   }
@@ -437,9 +436,9 @@ Status DecodeFurnitureItems(RangeDecoder* dec, std::uint64_t count, const LayerB
     FurnitureObject object;
     object.id = static_cast<std::uint32_t>(first_id + i);
     object.room_id = static_cast<std::int32_t>(static_cast<std::int64_t>(room) - 1);
-    LINEMAP_ASSIGN_OR_RETURN(object.polygon, DecodePolygon(dec, &m->polygon, bounds, limits,
-                                                           &totals->object_vertices,
-                                                           &totals->object_cells, &state));
+    LINEMAP_ASSIGN_OR_RETURN(
+        object.polygon, DecodePolygon(dec, &m->polygon, bounds, limits, &totals->object_vertices,
+                                      &totals->object_cells, &state));
     if (expand_chains) object.outline = ChainOfPolygon(object.polygon);
     out->push_back(std::move(object));
   }
@@ -455,8 +454,8 @@ std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
 
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
                                                 int height, const DecodeLimits& limits) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
-                           OpenChunkStream(body, "wall count", "walls", limits.max_segments, "segment"));
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "wall count", "walls",
+                                                               limits.max_segments, "segment"));
   RangeDecoder dec(stream.data, stream.size);
   std::vector<WallPolyline> walls;
   // Points, against the segment limit plus one point per wall (a wall of
@@ -490,8 +489,8 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
                                                int height, const DecodeLimits& limits,
                                                bool expand_chains) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
-                           OpenChunkStream(body, "room count", "rooms", limits.max_chain_length, "chain"));
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "room count", "rooms",
+                                                               limits.max_chain_length, "chain"));
   RangeDecoder dec(stream.data, stream.size);
   std::vector<RoomOutline> rooms;
   LayerTotals totals;
@@ -512,14 +511,14 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
                                                        int width, int height,
                                                        const DecodeLimits& limits,
                                                        bool expand_chains) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
-                           OpenChunkStream(body, "furniture count", "objects", limits.max_chain_length, "chain"));
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "furniture count", "objects",
+                                                               limits.max_chain_length, "chain"));
   RangeDecoder dec(stream.data, stream.size);
   std::vector<FurnitureObject> furniture;
   LayerTotals totals;
-  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, stream.count,
-                                               LayerBounds::Grid(width, height), limits, &totals,
-                                               {0, 0}, expand_chains, 0, &furniture));
+  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, stream.count, LayerBounds::Grid(width, height),
+                                               limits, &totals, {0, 0}, expand_chains, 0,
+                                               &furniture));
   LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "FURN"));
   return furniture;
 }

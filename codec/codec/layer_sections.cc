@@ -3,11 +3,9 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 #include <string>
 
 #include "codec/codec/layer_coding.h"
-#include "codec/codec/layer_order.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
 
@@ -43,36 +41,8 @@ const std::vector<CellIndex>& PointsOf(const WallPolyline& wall) { return wall.p
 const std::vector<CellIndex>& PointsOf(const RoomOutline& room) { return room.polygon; }
 const std::vector<CellIndex>& PointsOf(const FurnitureObject& object) { return object.polygon; }
 
-template <class Item>
-std::int64_t SectionOf(const SectionGrid& grid, const Item& item) {
-  PointBox box;
-  box.Add(PointsOf(item));
-  return grid.Of(box.lower());
-}
-
-// Stable grouping by section; returns each item's section in the new order.
-template <class Item>
-std::vector<std::int64_t> GroupBySection(const SectionGrid& grid, std::vector<Item>* items) {
-  std::vector<std::pair<std::int64_t, std::size_t>> keys;
-  keys.reserve(items->size());
-  for (std::size_t i = 0; i < items->size(); ++i) keys.emplace_back(SectionOf(grid, (*items)[i]), i);
-  std::stable_sort(keys.begin(), keys.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<Item> grouped;
-  grouped.reserve(items->size());
-  std::vector<std::int64_t> sections;
-  sections.reserve(items->size());
-  for (const auto& [section, i] : keys) {
-    grouped.push_back(std::move((*items)[i]));
-    sections.push_back(section);
-  }
-  *items = std::move(grouped);
-  return sections;
-}
-
 // [begin, end) of each section's run in a grouped list.
-std::vector<std::size_t> RunStarts(const std::vector<std::int64_t>& sections,
-                                   std::int64_t count) {
+std::vector<std::size_t> RunStarts(const std::vector<std::int64_t>& sections, std::int64_t count) {
   std::vector<std::size_t> starts(static_cast<std::size_t>(count) + 1, sections.size());
   for (std::size_t i = sections.size(); i-- > 0;) {
     starts[static_cast<std::size_t>(sections[i])] = i;
@@ -82,39 +52,6 @@ std::vector<std::size_t> RunStarts(const std::vector<std::int64_t>& sections,
     starts[s] = std::min(starts[s], starts[s + 1]);
   }
   return starts;
-}
-
-// Each section's run ordered for coding on its own (a tour per section).
-template <class Item, class Order>
-void OrderRuns(const std::vector<std::size_t>& starts, std::vector<Item>* items, Order order) {
-  for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
-    if (starts[s + 1] - starts[s] < 2) continue;
-    std::vector<Item> run(std::make_move_iterator(items->begin() + starts[s]),
-                          std::make_move_iterator(items->begin() + starts[s + 1]));
-    order(&run);
-    std::move(run.begin(), run.end(), items->begin() + starts[s]);
-  }
-}
-
-// Room ids 1, 2, ... in list order when they do not increase already; the
-// objects' room ids follow.
-void RenumberRoomsIfNeeded(std::vector<RoomOutline>* rooms,
-                           std::vector<FurnitureObject>* furniture) {
-  bool increasing = true;
-  for (std::size_t i = 1; i < rooms->size() && increasing; ++i) {
-    increasing = (*rooms)[i].id > (*rooms)[i - 1].id;
-  }
-  if (increasing) return;
-  std::map<std::uint32_t, std::uint32_t> new_id;
-  for (std::size_t i = 0; i < rooms->size(); ++i) {
-    new_id[(*rooms)[i].id] = static_cast<std::uint32_t>(i + 1);
-    (*rooms)[i].id = static_cast<std::uint32_t>(i + 1);
-  }
-  for (FurnitureObject& object : *furniture) {
-    if (object.room_id < 0) continue;
-    const auto it = new_id.find(static_cast<std::uint32_t>(object.room_id));
-    object.room_id = it == new_id.end() ? -1 : static_cast<std::int32_t>(it->second);
-  }
 }
 
 // One section's entry in the table, as read.
@@ -132,30 +69,10 @@ bool Meets(const PointBox& box, const CellRect& region) {
 
 }  // namespace
 
-int LayerSectionSide(int width, int height, int requested, int block_side) {
-  if (requested > 0) return requested;
-  const int side = std::max(width, height);
-  if (side <= block_side) return std::max(side, static_cast<int>(kMinSectionSide));
-  return block_side;
-}
-
-void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
-                             std::vector<RoomOutline>* rooms,
-                             std::vector<FurnitureObject>* furniture) {
-  const SectionGrid grid(width, height, side);
-  const std::vector<std::int64_t> wall_sections = GroupBySection(grid, walls);
-  const std::vector<std::int64_t> room_sections = GroupBySection(grid, rooms);
-  const std::vector<std::int64_t> object_sections = GroupBySection(grid, furniture);
-  if (grid.count() > 1) {
-    // One section is the whole map, already in the tour order of the
-    // extraction; with more, each section's items get a tour of their own.
-    OrderRuns(RunStarts(wall_sections, grid.count()), walls, OrderWallsForCoding);
-    OrderRuns(RunStarts(object_sections, grid.count()), furniture, OrderFurnitureForCoding);
-  }
-  RenumberRoomsIfNeeded(rooms, furniture);
-  for (std::size_t i = 0; i < furniture->size(); ++i) {
-    (*furniture)[i].id = static_cast<std::uint32_t>(i);
-  }
+std::int64_t SectionOfPoints(const std::vector<CellIndex>& points, int width, int side) {
+  PointBox box;
+  box.Add(points);
+  return SectionGrid(width, 0, side).Of(box.lower());
 }
 
 std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& walls,
@@ -166,7 +83,7 @@ std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& w
   const auto sections_of = [&](const auto& items) {
     std::vector<std::int64_t> sections;
     sections.reserve(items.size());
-    for (const auto& item : items) sections.push_back(SectionOf(grid, item));
+    for (const auto& item : items) sections.push_back(SectionOfPoints(PointsOf(item), width, side));
     return sections;
   };
   const std::vector<std::size_t> wall_starts = RunStarts(sections_of(walls), grid.count());
@@ -237,8 +154,10 @@ StatusOr<std::vector<SectionEntry>> ReadSectionTable(ByteCursor* cursor, int wid
     walls += std::min<std::uint64_t>(e.walls, limits.max_segments + 1);
     rooms += std::min<std::uint64_t>(e.rooms, limits.max_chain_length + 1);
     objects += std::min<std::uint64_t>(e.objects, limits.max_chain_length + 1);
-    if (walls > limits.max_segments) return ResourceExhaustedError("walls exceed the segment limit");
-    if (rooms > limits.max_chain_length) return ResourceExhaustedError("rooms exceed the chain limit");
+    if (walls > limits.max_segments)
+      return ResourceExhaustedError("walls exceed the segment limit");
+    if (rooms > limits.max_chain_length)
+      return ResourceExhaustedError("rooms exceed the chain limit");
     if (objects > limits.max_chain_length) {
       return ResourceExhaustedError("objects exceed the chain limit");
     }
@@ -285,8 +204,8 @@ Status DecodeSection(const std::uint8_t* data, const SectionEntry& e, int width,
   LINEMAP_RETURN_IF_ERROR(
       DecodeWallItems(&dec, e.walls, bounds, max_points, points, origin, &out->walls));
   const std::size_t first_room = out->rooms.size();
-  LINEMAP_RETURN_IF_ERROR(DecodeRoomItems(&dec, e.rooms, bounds, limits, totals, origin,
-                                          expand_chains, &out->rooms));
+  LINEMAP_RETURN_IF_ERROR(
+      DecodeRoomItems(&dec, e.rooms, bounds, limits, totals, origin, expand_chains, &out->rooms));
   if (first_room > 0 && first_room < out->rooms.size() &&
       out->rooms[first_room].id <= out->rooms[first_room - 1].id) {
     return CorruptError("room ids do not increase");

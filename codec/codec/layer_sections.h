@@ -22,28 +22,14 @@ namespace linemap {
 inline constexpr std::int64_t kMinSectionSide = 16;
 inline constexpr std::int64_t kMaxSectionSide = (std::int64_t{1} << 31) - 1;
 
-// The side the encoder writes: `requested` when positive (the caller
-// checked it is at least kMinSectionSide), else one section for a map of at
-// most `block_side` cells a side (a window of a small map decodes fast
-// enough with all of its layers; one stream codes smallest) and sections of
-// `block_side` cells beyond, the blocks the layers of large maps are
-// extracted in, so that no item crosses a section.
-int LayerSectionSide(int width, int height, int requested, int block_side);
+// The section (row-major number) an item with these points belongs to: the
+// one holding the lower corner of their box (spec 5.6 leaves the choice to
+// the encoder; EncodeLayerSections and ArrangeLayersInSections agree on this
+// one). `points` must not be empty.
+std::int64_t SectionOfPoints(const std::vector<CellIndex>& points, int width, int side);
 
-// The layers as one LAYR body lists them, so that the hints the cells are
-// coded against (drawn in file order, spec 6.2) are the decoder's: items
-// grouped by section in row-major order (an item's section is the one
-// holding the lower corner of its points' box); with more than one section,
-// walls and objects ordered for coding within each section; room ids
-// renumbered 1, 2, ... in file order when the grouping left them out of
-// increasing order (the objects' room ids follow); object ids their place
-// in the list.
-void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
-                             std::vector<RoomOutline>* rooms,
-                             std::vector<FurnitureObject>* furniture);
-
-// The LAYR body of layers already arranged (ArrangeLayersInSections with
-// the same side).
+// The LAYR body of layers already grouped by section, in section order
+// (ArrangeLayersInSections, section_order.h, with the same side).
 std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& walls,
                                               const std::vector<RoomOutline>& rooms,
                                               const std::vector<FurnitureObject>& furniture,

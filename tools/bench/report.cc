@@ -258,9 +258,8 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
         {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
          FormatFixed(row.png_encode_ms_per_mcell, 1), FormatFixed(row.png_decode_ms_per_mcell, 1),
          FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.linemap_lines_ms_per_mcell, 1),
-         FormatFixed(row.lmap_encode_ms_per_mcell, 1),
-         FormatFixed(row.lmap_decode_ms_per_mcell, 1), FormatFixed(row.lmap_window_ms, 2),
-         FormatFixed(row.lmap_window_speedup, 1)});
+         FormatFixed(row.lmap_encode_ms_per_mcell, 1), FormatFixed(row.lmap_decode_ms_per_mcell, 1),
+         FormatFixed(row.lmap_window_ms, 2), FormatFixed(row.lmap_window_speedup, 1)});
   }
   auto spread = [&](auto get) -> std::optional<double> {
     double lo = 0, hi = 0;
@@ -293,8 +292,8 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
                    }),
                    0),
        FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; }), 0),
-       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0),
-       "", ""});
+       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0), "",
+       ""});
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "

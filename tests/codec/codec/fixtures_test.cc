@@ -81,8 +81,8 @@ TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
   auto original =
       LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
   ASSERT_TRUE(original.ok());
-  for (const auto& [file, minor] :
-       {std::pair{"willow_v2_1_tolerance_1.lmap", 1}, std::pair{"willow_v2_2_tolerance_1.lmap", 2}}) {
+  for (const auto& [file, minor] : {std::pair{"willow_v2_1_tolerance_1.lmap", 1},
+                                    std::pair{"willow_v2_2_tolerance_1.lmap", 2}}) {
     auto contents = LoadLmapContents(Fixture(file));
     ASSERT_TRUE(contents.ok()) << file << ": " << contents.status().ToString();
     EXPECT_EQ(contents->major, 2) << file;

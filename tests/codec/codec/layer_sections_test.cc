@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "codec/codec/layer_coding.h"
+#include "codec/codec/section_order.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
 
@@ -44,8 +45,7 @@ std::vector<WallPolyline> RandomWalls(std::mt19937* rng, int count) {
 }
 
 std::vector<CellIndex> RandomPolygon(std::mt19937* rng) {
-  const CellIndex a{static_cast<int>((*rng)() % (kW - 30)),
-                    static_cast<int>((*rng)() % (kH - 30))};
+  const CellIndex a{static_cast<int>((*rng)() % (kW - 30)), static_cast<int>((*rng)() % (kH - 30))};
   const int w = 2 + static_cast<int>((*rng)() % 25), h = 2 + static_cast<int>((*rng)() % 25);
   return {a, {a.col + w, a.row}, {a.col + w, a.row + h}, {a.col, a.row + h}};
 }
@@ -233,12 +233,12 @@ TEST(LayerSectionsTest, BodyIsLaidOutAsTheSpecSays) {
     expected.PutVarint(0);
     expected.PutVarint(0);
   };
-  section(0, 1, 0, 0, 0, 0, 10, 10, 40, 30);            // section 0: columns 0..127, rows 0..127
-  section(1, 1, 0, 0, 0, 0, 200, 20, 250, 20);          // section 1: columns 128..255
-  empty();                                              // section 2: columns 256..299
-  empty();                                              // section 3: rows 128..199
-  section(2, 0, 0, 1, 0, 1, 210, 150, 260, 190);        // section 4
-  empty();                                              // section 5
+  section(0, 1, 0, 0, 0, 0, 10, 10, 40, 30);      // section 0: columns 0..127, rows 0..127
+  section(1, 1, 0, 0, 0, 0, 200, 20, 250, 20);    // section 1: columns 128..255
+  empty();                                        // section 2: columns 256..299
+  empty();                                        // section 3: rows 128..199
+  section(2, 0, 0, 1, 0, 1, 210, 150, 260, 190);  // section 4
+  empty();                                        // section 5
   expected.PutBytes(streams.bytes());
   EXPECT_EQ(Encode(l, side), expected.bytes());
   // One section: no box, the stream coded from (0, 0).
@@ -260,8 +260,8 @@ TEST(LayerSectionsTest, BodyIsLaidOutAsTheSpecSays) {
 void ExpectCorrupt(const std::vector<std::uint8_t>& body, const std::string& what) {
   auto decoded = DecodeLayerSections(body, kW, kH, DecodeLimits{}, true, nullptr);
   ASSERT_FALSE(decoded.ok()) << what;
-  EXPECT_EQ(decoded.status().code(), StatusCode::kCorrupt) << what << ": "
-                                                          << decoded.status().ToString();
+  EXPECT_EQ(decoded.status().code(), StatusCode::kCorrupt)
+      << what << ": " << decoded.status().ToString();
   EXPECT_NE(decoded.status().message().find(what), std::string::npos)
       << decoded.status().ToString();
 }

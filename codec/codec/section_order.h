@@ -1,0 +1,35 @@
+// How the encoder lays the vector layers out in LAYR's sections
+// (spec/format.md 5.6 and 9): the section side it picks and the order of the
+// items. Encoder only: decoding does not need it.
+#ifndef LINEMAP_CODEC_CODEC_SECTION_ORDER_H_
+#define LINEMAP_CODEC_CODEC_SECTION_ORDER_H_
+
+#include <vector>
+
+#include "linemap/vector_layers.h"
+
+namespace linemap {
+
+// The side the encoder writes: `requested` when positive (the caller
+// checked it is at least kMinSectionSide), else one section for a map of at
+// most `block_side` cells a side (a window of a small map decodes fast
+// enough with all of its layers; one stream codes smallest) and sections of
+// `block_side` cells beyond, the blocks the layers of large maps are
+// extracted in, so that no item crosses a section.
+int LayerSectionSide(int width, int height, int requested, int block_side);
+
+// The layers as one LAYR body lists them, so that the hints the cells are
+// coded against (drawn in file order, spec 6.2) are the decoder's: items
+// grouped by section in row-major order (an item's section is the one
+// holding the lower corner of its points' box); with more than one section,
+// walls and objects ordered for coding within each section; room ids
+// renumbered 1, 2, ... in file order when the grouping left them out of
+// increasing order (the objects' room ids follow); object ids their place
+// in the list.
+void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
+                             std::vector<RoomOutline>* rooms,
+                             std::vector<FurnitureObject>* furniture);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_CODEC_SECTION_ORDER_H_
