@@ -256,3 +256,36 @@ def test_wall_segments_are_the_polylines_point_pairs(tmp_path, cli):
     v = linemap.vectors(lmap)
     pairs = [(*p[i], *p[i + 1]) for p in v["wall_polylines"] for i in range(len(p) - 1)]
     assert np.array_equal(v["walls"], np.array(pairs).reshape(-1, 4))
+
+
+def test_window_cells_load_equals_the_slice_of_the_whole_map(bundled, tmp_path):
+    whole = linemap.load(bundled)
+    out = tmp_path / "map.lmap"
+    linemap.save(out, whole)
+    h, w = whole.cells.shape
+    for c0, r0, c1, r1 in [(0, 0, w, h), (w // 3, h // 4, w // 3 + 17, h // 4 + 9),
+                           (w - 1, h - 1, w, h)]:
+        part = linemap.load(out, window_cells=(c0, r0, c1, r1))
+        assert np.array_equal(part.cells, whole.cells[r0:r1, c0:c1])
+        assert part.resolution == whole.resolution
+        # The window's lower-left corner in the map frame (no yaw in the
+        # bundled maps): the origin moved by whole cells.
+        assert part.origin[0] == pytest.approx(whole.origin[0] + c0 * whole.resolution)
+        assert part.origin[1] == pytest.approx(whole.origin[1] + r0 * whole.resolution)
+
+
+def test_window_cells_are_checked(bundled, tmp_path):
+    whole = linemap.load(bundled)
+    out = tmp_path / "map.lmap"
+    linemap.save(out, whole)
+    h, w = whole.cells.shape
+    with pytest.raises(ValueError):
+        linemap.load(out, window_cells=(0, 0, w + 1, h))
+    with pytest.raises(ValueError):
+        linemap.load(out, window_cells=(5, 5, 5, 6))
+    with pytest.raises(ValueError):
+        linemap.load(out, window_cells=(0, 0, 1))
+    with pytest.raises(TypeError):
+        linemap.load(out, window_cells="0,0,1,1")
+    with pytest.raises(ValueError, match="needs an .lmap file"):
+        linemap.load(bundled, window_cells=(0, 0, 1, 1))
