@@ -12,6 +12,7 @@
 #include "codec/codec/layer_order.h"
 #include "codec/codec/raster.h"
 #include "codec/codec/start_task.h"
+#include "codec/codec/wall_cover.h"
 #include "linemap/segmentation.h"
 
 namespace linemap {
@@ -488,6 +489,24 @@ std::vector<WallPolyline> JoinSegments(const std::vector<LatticeSegment>& segmen
 
 namespace {
 
+// Walls for the edge cells that no wall holds within one cell and no
+// furniture outline encloses (wall_cover.h). On the 25 maps of
+// ../shared/maps they are nearly all lone occupied cells in free space (scan
+// specks): covering them raised the share of edge cells within one cell of
+// a wall or in furniture from 0.34-1.00 (10 maps at 0.99 or more) to
+// 0.9994-1.0000 on every map and lowered DisPL_ave on every map (willow-2010
+// 210 -> 2.8 cm, willow-full-0.05 10.5 -> 0.8 cm), for 3.1 % more bytes in
+// the 25 default files (190,249 -> 196,194).
+void AddCoveringSegments(const Grid& grid, const std::vector<FurnitureObject>& furniture,
+                         std::vector<LatticeSegment>* segments) {
+  std::vector<std::uint8_t> in_furniture(grid.size(), 0);
+  for (const FurnitureObject& object : furniture) {
+    FillChain(object.outline, [&](int c, int r) { in_furniture[grid.Index(c, r)] = 1; });
+  }
+  const std::vector<LatticeSegment> cover = CoveringSegments(grid, *segments, &in_furniture);
+  segments->insert(segments->end(), cover.begin(), cover.end());
+}
+
 // With `order_walls` false the walls are left unordered, zero-length steps
 // and all (the caller canonicalises them).
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options,
@@ -500,6 +519,7 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   LINEMAP_RETURN_IF_ERROR(rooms);
   if (!segments.ok()) return segments.status();
   DropRedundantSegments(EdgeCells(grid), &*segments);
+  AddCoveringSegments(grid, layers.furniture, &*segments);
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;
 }
