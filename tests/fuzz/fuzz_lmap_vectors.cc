@@ -2,7 +2,9 @@
 // Whatever the input, DecodeLmapVectors gives layers inside the map (walls of
 // at least two points, closed 8-connected room and furniture chains) or an
 // error; a window decode, with the window taken from the input's last bytes,
-// gives that window's cells or an error. Anything else aborts.
+// gives that window's cells or an error, and when the whole grid decodes it
+// gives the same cells as the whole grid there (a window reads only the
+// tiles and layer sections that reach it). Anything else aborts.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -59,6 +61,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (region.ok() &&
         (region->width() != w.col1 - w.col0 || region->height() != w.row1 - w.row0)) {
       Fail("window of the wrong size");
+    }
+    const auto whole = linemap::DecodeLmap(bytes, limits);
+    if (whole.ok()) {
+      if (!region.ok()) Fail("a window of a grid that decodes fails");
+      for (int r = w.row0; r < w.row1; ++r) {
+        for (int c = w.col0; c < w.col1; ++c) {
+          if (region->at(c - w.col0, r - w.row0) != whole->at(c, r)) {
+            Fail("a window differs from the whole grid");
+          }
+        }
+      }
     }
   }
   return 0;
