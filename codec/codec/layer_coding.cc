@@ -281,10 +281,17 @@ PathState StartState(CellIndex origin) {
   return state;
 }
 
-// The body of a 2.0 layer chunk: its count, then the items' stream.
-std::vector<std::uint8_t> WithCount(std::uint64_t count, const RangeEncoder& enc) {
+// The body of a 2.0 layer chunk: its count, then the items' stream coded
+// from (0, 0) by `encode`.
+template <class Item>
+std::vector<std::uint8_t> ChunkBody(const std::vector<Item>& items,
+                                    void (*encode)(RangeEncoder*, const Item*, std::size_t,
+                                                   CellIndex)) {
+  RangeEncoder enc;
+  encode(&enc, items.data(), items.size(), {0, 0});
+  enc.Finish();
   ByteWriter out;
-  out.PutVarint(count);
+  out.PutVarint(items.size());
   out.PutBytes(enc.bytes());
   return std::move(out.mutable_bytes());
 }
@@ -446,10 +453,7 @@ Status DecodeFurnitureItems(RangeDecoder* dec, std::uint64_t count, const LayerB
 }
 
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
-  RangeEncoder enc;
-  EncodeWallItems(&enc, walls.data(), walls.size(), {0, 0});
-  enc.Finish();
-  return WithCount(walls.size(), enc);
+  return ChunkBody(walls, EncodeWallItems);
 }
 
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
@@ -480,10 +484,7 @@ bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height)
 }
 
 std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
-  RangeEncoder enc;
-  EncodeRoomItems(&enc, rooms.data(), rooms.size(), {0, 0});
-  enc.Finish();
-  return WithCount(rooms.size(), enc);
+  return ChunkBody(rooms, EncodeRoomItems);
 }
 
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
@@ -501,10 +502,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
 }
 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
-  RangeEncoder enc;
-  EncodeFurnitureItems(&enc, furniture.data(), furniture.size(), {0, 0});
-  enc.Finish();
-  return WithCount(furniture.size(), enc);
+  return ChunkBody(furniture, EncodeFurnitureItems);
 }
 
 StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::uint8_t>& body,
