@@ -68,7 +68,10 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
         const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
         const std::vector<Cell> cells = TileCells(grid, t);
         const std::vector<std::uint8_t> hints = layers.TileHints(t);
-        return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th});
+        // The layer context: 9 % smaller than kTemplate at the tuning
+        // median for the same decode time (spec/tile_coding.md 5.2).
+        return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th},
+                               TileModel::kLayerContext);
       },
       &out);
   return std::move(out.mutable_bytes());

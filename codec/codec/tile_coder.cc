@@ -47,6 +47,14 @@ constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
 constexpr unsigned kNearModel = kOtherModel + 81 * kHintClasses;  // model 1 only
 constexpr unsigned kModelCount = kNearModel + 81 * kHintClasses;
+// Model 4 (spec "Layer context") keeps the flag contexts and puts its two
+// cell tables where models 0-3 have theirs: 81 patterns of the nearest cells
+// x 40 layer classes each, a table 1/10 the size of EQUAL's.
+constexpr unsigned kNearPatterns = 81;
+constexpr unsigned kLayerClasses = 40;
+constexpr unsigned kLayerEqualModel = kEqualModel;
+constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kLayerModelCount = kLayerOtherModel + kNearPatterns * kLayerClasses;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -113,6 +121,31 @@ class RowRing {
   std::size_t stride_;
   std::vector<std::uint8_t> cells_;
 };
+
+// Model 4's layer class of cell i (spec "Layer context"), 0..39, from the
+// hints (bits 0-3) of its row (`here`, `width` cells) and the rows below and
+// above (zero rows outside the tile; columns outside it read as zero too,
+// so no tile depends on another):
+// - the hint class (0-4), as models 0-3 take it;
+// - + 5 when the hint differs from W's: the cell starts a wall, a room
+//   border, a furniture fill, or leaves one, so the run of W likely ends;
+// - + 10 when it differs from N's (the same across rows);
+// - + 20 when the cell is not on a wall and none of its four neighbours
+//   is: far from the walls the map rarely changes, next to one its
+//   thickness and scan noise do.
+// These are what the template cannot see: a change at the cell itself
+// and the cells ahead of the scan (E, the row above).
+inline unsigned LayerClass(const std::uint8_t* below, const std::uint8_t* here,
+                           const std::uint8_t* above, int i, int width) {
+  const unsigned h = here[i] & 15u;
+  const unsigned west = i > 0 ? here[i - 1] & 15u : 0u;
+  const unsigned east = i + 1 < width ? here[i + 1] & 15u : 0u;
+  const unsigned hint_class = kHintClass[h];
+  const unsigned north = below[i] & 15u;
+  const unsigned wall_near = (west | east | north | above[i]) & kHintWall;
+  return hint_class + (west != h ? 5u : 0u) + (north != h ? 10u : 0u) +
+         (hint_class != 1 && wall_near == 0 ? 20u : 0u);
+}
 
 // The 8-cell trinary template (spec "Cell context") of cell i: W, WW on
 // this row; NWW, NW, N, NE, NEE on the row below; NN two rows below, as
@@ -184,18 +217,69 @@ template <bool kMix, typename Io>
   }
 }
 
+// Codes cells [begin, end) of the row `cur` with model 4's contexts: the
+// nearest cells' pattern (W, N, NW, NE) x the layer class. Both decisions
+// ("equals W", then which other value) use that context, each with its
+// own table. The smaller pattern is what lets the layer class pay: with the
+// 8-cell template x 40 classes the tables learn too slowly within a tile.
+template <typename Io>
+[[gnu::always_inline]] inline void CodeLayerCellRun(Io& io, TileModelTable& models,
+                                                    std::uint8_t* cur, const std::uint8_t* n1,
+                                                    const std::uint8_t* below,
+                                                    const std::uint8_t* here,
+                                                    const std::uint8_t* above, int width, int begin,
+                                                    int end) {
+  unsigned west = cur[begin - 1];
+  for (int i = begin; i < end; ++i) {
+    const unsigned pattern = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
+    const unsigned ctx = pattern * kLayerClasses + LayerClass(below, here, above, i, width);
+    const unsigned v = Io::kEncoding ? cur[i] : 0;
+    unsigned value = west;
+    if (!io.Code(&models[kLayerEqualModel + ctx], v == west)) {
+      const unsigned lo = west == 0 ? 1 : 0;
+      const unsigned hi = west == 2 ? 1 : 2;
+      value = io.Code(&models[kLayerOtherModel + ctx], v == hi) ? hi : lo;
+    }
+    cur[i] = static_cast<std::uint8_t>(value);
+    west = value;
+  }
+}
+
+// The rows a run of cells reads: the row being coded and the two below
+// it; the hints of the row and (model 4) of the rows below and above it,
+// zero rows outside the tile.
+struct CellRows {
+  std::uint8_t* cur;
+  const std::uint8_t* n1;
+  const std::uint8_t* n2;
+  const std::uint8_t* hint_row;
+  const std::uint8_t* hint_below;
+  const std::uint8_t* hint_above;
+  int width;
+};
+
+template <bool kMix, bool kLayer, typename Io>
+void CodeCellsIn(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows,
+                 int begin, int end) {
+  if constexpr (kLayer) {
+    CodeLayerCellRun(io, models, rows.cur, rows.n1, rows.hint_below, rows.hint_row, rows.hint_above,
+                     rows.width, begin, end);
+  } else {
+    CodeCellRun<kMix>(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_row, begin, end);
+  }
+}
+
 // The decoder's state in a local for the run (see CodeTile): the cells
 // are stored as bytes, which may alias any object, so a decoder reached
 // through a reference would be reloaded from memory after every cell.
-template <bool kMix, typename Io>
-void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
-               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
-               int begin, int end) {
+template <bool kMix, bool kLayer, typename Io>
+void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows, int begin,
+               int end) {
   if constexpr (Io::kEncoding) {
-    CodeCellRun<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
+    CodeCellsIn<kMix, kLayer>(io, models, mixer, rows, begin, end);
   } else {
     Io local = io;
-    CodeCellRun<kMix>(local, models, mixer, cur, n1, n2, hint_row, begin, end);
+    CodeCellsIn<kMix, kLayer>(local, models, mixer, rows, begin, end);
     io = local;
   }
 }
@@ -226,21 +310,22 @@ struct TileRows {
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
-template <bool kMix, bool kFlags, typename Io>
+template <bool kMix, bool kFlags, bool kLayer, typename Io>
 void CodeTileScan(Io& io, const TileRows& t) {
   const int tw = t.width;
   const int th = t.height;
   const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
-  TileModelTable models(kModelCount);
+  TileModelTable models(kLayer ? kLayerModelCount : kModelCount);
   TileMixer<2> mixer(kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
       static_cast<std::size_t>((blocks + kSuperBlocks - 1) / kSuperBlocks), kStateNone);
-  // Without layers every hint is zero: both rows read this one.
-  const std::vector<std::uint8_t> zero_hints(hints == nullptr ? static_cast<std::size_t>(tw) : 0,
-                                             0);
+  // Without layers every hint is zero: all rows read this one (model 4
+  // reads it for the rows outside the tile as well).
+  const std::vector<std::uint8_t> zero_hints(
+      hints == nullptr || kLayer ? static_cast<std::size_t>(tw) : 0, 0);
   unsigned row_state = kStateNone;
   for (int r = 0; r < th; ++r) {
     std::uint8_t* cur = ring.Row(r + 2);
@@ -252,6 +337,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
     if constexpr (Io::kEncoding) {
       std::memcpy(cur, t.cells + r * t.cell_stride, static_cast<std::size_t>(tw));
     }
+    const std::uint8_t* hint_above =
+        hints && r + 1 < th ? hint_row + t.hint_stride : zero_hints.data();
+    const CellRows cell_rows{cur, n1, n2, hint_row, hint_below, hint_above, tw};
     const bool hints_same =
         r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
@@ -263,7 +351,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
       std::fill(above_super.begin(), above_super.end(), kStateCopy);
       row_state = kStateCopy;
     } else if (!kFlags) {
-      CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, 0, tw);
+      CodeCells<kMix, kLayer>(io, models, mixer, cell_rows, 0, tw);
       row_state = kStateCoded;
     } else {
       unsigned left = kStateNone;
@@ -334,7 +422,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
               }
             }
           } else {
-            CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
+            CodeCells<kMix, kLayer>(io, models, mixer, cell_rows, begin, end);
             changed = true;
           }
           left = copy ? kStateCopy : kStateCoded;
@@ -354,13 +442,13 @@ void CodeTileScan(Io& io, const TileRows& t) {
 // a decoder reached through a reference would be reloaded from memory after
 // every cell; a local whose address is never taken stays in registers
 // (decode ~10 % faster).
-template <bool kMix, bool kFlags, typename Io>
+template <bool kMix, bool kFlags, bool kLayer, typename Io>
 void CodeTile(Io& io, const TileRows& t) {
   if constexpr (Io::kEncoding) {
-    CodeTileScan<kMix, kFlags>(io, t);
+    CodeTileScan<kMix, kFlags, kLayer>(io, t);
   } else {
     Io local = io;
-    CodeTileScan<kMix, kFlags>(local, t);
+    CodeTileScan<kMix, kFlags, kLayer>(local, t);
     io = local;
   }
 }
@@ -385,19 +473,21 @@ bool TileInside(CellRect t, int width, int height) {
          t.x1 <= width && t.y1 <= height;
 }
 
-// Runs the scan of `model` (bit 0: mixed; bit 1: every cell of a changed
-// row, no block flags).
+// Runs the scan of `model` (models 0-3: bit 0 mixed, bit 1 every cell of
+// a changed row, no block flags; model 4: block flags, layer context).
 template <typename Io>
 void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
   switch (model) {
     case 0:
-      return CodeTile<false, true>(io, rows);
+      return CodeTile<false, true, false>(io, rows);
     case 1:
-      return CodeTile<true, true>(io, rows);
+      return CodeTile<true, true, false>(io, rows);
     case 2:
-      return CodeTile<false, false>(io, rows);
+      return CodeTile<false, false, false>(io, rows);
+    case 3:
+      return CodeTile<true, false, false>(io, rows);
     default:
-      return CodeTile<true, false>(io, rows);
+      return CodeTile<false, true, true>(io, rows);
   }
 }
 
@@ -422,7 +512,7 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
-  if (model > static_cast<unsigned>(TileModel::kMixedAllCells)) {
+  if (model > static_cast<unsigned>(TileModel::kLayerContext)) {
     return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);

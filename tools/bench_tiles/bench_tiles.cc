@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/layer_extraction.h"
+#include "codec/codec/layer_hints.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/tile_coder.h"
 #include "codec/codec/tile_hints.h"
@@ -241,11 +243,26 @@ double JxlBytes(const std::string& file, const std::string& name) {
   return found;
 }
 
+// The hints a default .lmap 2.x file's tiles are coded against: the
+// layers the encoder extracts and stores, drawn by LayerIndex (spec 6.2).
+StatusOr<std::vector<std::uint8_t>> FileLayerHints(const Grid& g) {
+  LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractVectorLayers(g, EncodeOptions{}));
+  const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
+  return index.TileHints(CellRect{0, 0, g.width(), g.height()});
+}
+
 // Encodes and decodes `g` in tiles, timing both; false when the decode
 // fails or differs from `g`.
-bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out) {
+bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out,
+             bool timed = true) {
   const double cells = static_cast<double>(g.size());
   std::vector<std::vector<std::uint8_t>> data;
+  if (!timed) {
+    data = EncodeAll(g, hints, tile, model);
+    out->bytes = static_cast<double>(TotalBytes(data));
+    std::vector<Cell> decoded(g.size(), Cell::kFree);
+    return DecodeAll(data, hints, g.width(), g.height(), tile, &decoded) && decoded == g.cells();
+  }
   out->enc_ns =
       1e9 / cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, hints, tile, model); });
   out->bytes = static_cast<double>(TotalBytes(data));
@@ -260,7 +277,7 @@ bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
-  bool sizes = false, hints_on = true;
+  bool sizes = false, hints_on = true, compare = false, timed = false, file_layers = false;
   std::string only, dump, jxl_file;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -270,6 +287,12 @@ int Run(int argc, char** argv) {
       tile = std::atoi(argv[++i]);
     } else if (a == "--sizes") {
       sizes = true;
+    } else if (a == "--compare") {
+      compare = true;
+    } else if (a == "--time") {
+      timed = true;
+    } else if (a == "--file-layers") {
+      file_layers = true;
     } else if (a == "--no-hints") {
       hints_on = false;
     } else if (a == "--only" && i + 1 < argc) {
@@ -305,6 +328,21 @@ int Run(int argc, char** argv) {
     r.name = m.path;
     r.tuning = m.tuning;
     r.cells = static_cast<double>(g.size());
+    if (compare) {
+      StatusOr<std::vector<std::uint8_t>> built =
+          file_layers ? FileLayerHints(g) : BuildLayerHints(g);
+      if (!built.ok()) return 1;
+      const std::uint8_t* compare_hints = hints_on ? built->data() : nullptr;
+      Coded a, b;
+      const bool ok = Measure(g, compare_hints, tile, TileModel::kTemplate, &a, timed) &&
+                      Measure(g, compare_hints, tile, TileModel::kLayerContext, &b, timed);
+      std::printf("%-44s %s %9.0f %7.0f %7.0f %6.3f %6.2f %6.2f %6.3f\n", m.path,
+                  m.tuning ? "T" : "H", r.cells, a.bytes, b.bytes, b.bytes / a.bytes, a.dec_ns,
+                  b.dec_ns, b.dec_ns / a.dec_ns);
+      std::fflush(stdout);
+      if (!ok) return 1;
+      continue;
+    }
     std::string best_png;
     for (bench::PngLayout layout :
          {bench::PngLayout::kGrey8, bench::PngLayout::kPalette8, bench::PngLayout::kPalette2}) {
