@@ -58,6 +58,19 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
   return cells;
 }
 
+std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
+                                         const std::vector<std::uint8_t>& hints, int tw, int th) {
+  const CellRect all{0, 0, tw, th};
+  std::vector<std::uint8_t> plain =
+      EncodeTileCells(cells.data(), hints.data(), tw, th, all, TileModel::kTemplate);
+  if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
+    return plain;
+  }
+  std::vector<std::uint8_t> layered =
+      EncodeTileCells(cells.data(), hints.data(), tw, th, all, TileModel::kLayerContext);
+  return layered.size() <= plain.size() ? layered : plain;
+}
+
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads) {
   ByteWriter out;
@@ -67,11 +80,7 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
       [&](CellRect t) {
         const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
         const std::vector<Cell> cells = TileCells(grid, t);
-        const std::vector<std::uint8_t> hints = layers.TileHints(t);
-        // The layer context: 9 % smaller than kTemplate at the tuning
-        // median for the same decode time (spec/tile_coding.md 5.2).
-        return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th},
-                               TileModel::kLayerContext);
+        return EncodeCellTile(cells, layers.TileHints(t), tw, th);
       },
       &out);
   return std::move(out.mutable_bytes());

@@ -336,9 +336,19 @@ int Run(int argc, char** argv) {
       Coded a, b;
       const bool ok = Measure(g, compare_hints, tile, TileModel::kTemplate, &a, timed) &&
                       Measure(g, compare_hints, tile, TileModel::kLayerContext, &b, timed);
-      std::printf("%-44s %s %9.0f %7.0f %7.0f %6.3f %6.2f %6.2f %6.3f\n", m.path,
+      double best = 0;
+      for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
+        best +=
+            static_cast<double>(std::min(EncodeTileCells(g.cells().data(), compare_hints, g.width(),
+                                                         g.height(), t, TileModel::kTemplate)
+                                             .size(),
+                                         EncodeTileCells(g.cells().data(), compare_hints, g.width(),
+                                                         g.height(), t, TileModel::kLayerContext)
+                                             .size()));
+      }
+      std::printf("%-44s %s %9.0f %7.0f %7.0f %6.3f %6.2f %6.2f %6.3f %7.0f %6.3f\n", m.path,
                   m.tuning ? "T" : "H", r.cells, a.bytes, b.bytes, b.bytes / a.bytes, a.dec_ns,
-                  b.dec_ns, b.dec_ns / a.dec_ns);
+                  b.dec_ns, b.dec_ns / a.dec_ns, best, best / a.bytes);
       std::fflush(stdout);
       if (!ok) return 1;
       continue;

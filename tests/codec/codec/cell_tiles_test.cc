@@ -1,13 +1,15 @@
-// The CELL chunk's tiles: what model the encoder writes, that threads do
-// not change the bytes, and that files whose tiles use the models before
-// the layer context still decode.
+// The CELL chunk's tiles: which model the encoder writes in each, that
+// threads do not change the bytes, and that files whose tiles use the
+// models before the layer context still decode.
 #include "codec/codec/cell_tiles.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
+#include "codec/codec/layer_extraction.h"
 #include "format/byte_io.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
@@ -43,25 +45,54 @@ std::vector<unsigned> TileModels(const std::vector<std::uint8_t>& body, const Ti
   return models;
 }
 
-TEST(CellTilesTest, TilesAreCodedWithTheLayerContextWhateverTheThreads) {
+// Each tile holds the smaller of the layer context and the template (the
+// template alone without hints); threads change no byte; the chunk
+// decodes to the map on any number of threads.
+TEST(CellTilesTest, EachTileTakesTheSmallerModelWhateverTheThreads) {
   const Grid g = Depot();
-  const std::vector<WallPolyline> walls;
-  const std::vector<RoomOutline> rooms;
-  const std::vector<FurnitureObject> furniture;
-  const LayerIndex layers(walls, rooms, furniture);
-  for (int tile_size : {16, 97, 256}) {
-    const std::vector<std::uint8_t> one = EncodeCellChunk(g, layers, tile_size, 1);
-    EXPECT_EQ(one, EncodeCellChunk(g, layers, tile_size, 3)) << tile_size;
-    const TileLayout layout(g.width(), g.height(), tile_size);
-    for (unsigned model : TileModels(one, layout)) {
-      EXPECT_EQ(model, static_cast<unsigned>(TileModel::kLayerContext));
-    }
-    std::vector<Cell> out(g.size(), Cell::kFree);
-    for (int threads : {1, 2}) {
-      const Status s = DecodeCellChunk(one, layers, g.width(), g.height(),
-                                       CellRect{0, 0, g.width(), g.height()}, threads, out.data());
-      ASSERT_TRUE(s.ok()) << s.ToString();
-      EXPECT_EQ(out, g.cells()) << tile_size << " " << threads;
+  StatusOr<VectorLayers> extracted = ExtractVectorLayers(g, EncodeOptions{});
+  ASSERT_TRUE(extracted.ok()) << extracted.status().ToString();
+  const VectorLayers none;
+  const VectorLayers& with_layers = *extracted;
+  for (const VectorLayers* layers : {&none, &with_layers}) {
+    const LayerIndex index(layers->walls, layers->rooms, layers->furniture);
+    for (int tile_size : {16, 97, 256}) {
+      SCOPED_TRACE("tile size " + std::to_string(tile_size) +
+                   (layers == &none ? " without layers" : " with layers"));
+      const std::vector<std::uint8_t> one = EncodeCellChunk(g, index, tile_size, 1);
+      EXPECT_EQ(one, EncodeCellChunk(g, index, tile_size, 3));
+      const TileLayout layout(g.width(), g.height(), tile_size);
+      std::vector<unsigned> expected;
+      for (std::uint64_t i = 0; i < layout.count(); ++i) {
+        const CellRect t = layout.Tile(i);
+        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+        const std::vector<Cell> cells = TileCells(g, t);
+        const std::vector<std::uint8_t> hints = index.TileHints(t);
+        const std::size_t plain = EncodeTileCells(cells.data(), hints.data(), tw, th,
+                                                  CellRect{0, 0, tw, th}, TileModel::kTemplate)
+                                      .size();
+        const std::size_t layered =
+            EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th},
+                            TileModel::kLayerContext)
+                .size();
+        const bool any_hint =
+            std::any_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h != 0; });
+        expected.push_back(any_hint && layered <= plain ? 4u : 0u);
+      }
+      EXPECT_EQ(TileModels(one, layout), expected);
+      if (layers == &none) {
+        EXPECT_EQ(std::count(expected.begin(), expected.end(), 4u), 0);
+      } else {
+        EXPECT_GT(std::count(expected.begin(), expected.end(), 4u), 0);
+      }
+      std::vector<Cell> out(g.size(), Cell::kFree);
+      for (int threads : {1, 2}) {
+        const Status s =
+            DecodeCellChunk(one, index, g.width(), g.height(),
+                            CellRect{0, 0, g.width(), g.height()}, threads, out.data());
+        ASSERT_TRUE(s.ok()) << s.ToString();
+        EXPECT_EQ(out, g.cells()) << threads << " threads";
+      }
     }
   }
 }
