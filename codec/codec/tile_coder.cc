@@ -54,7 +54,10 @@ constexpr unsigned kNearPatterns = 81;
 constexpr unsigned kLayerClasses = 40;
 constexpr unsigned kLayerEqualModel = kEqualModel;
 constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerClasses;
-constexpr unsigned kLayerModelCount = kLayerOtherModel + kNearPatterns * kLayerClasses;
+// and its block decisions next to a drawn wall have a BLOCK table of their
+// own (LBLOCK).
+constexpr unsigned kLayerBlockModel = kLayerOtherModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kLayerModelCount = kLayerBlockModel + kBlockContexts;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -296,6 +299,26 @@ inline bool SameCells(const std::uint8_t* a, const std::uint8_t* b, std::size_t 
   return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
 }
 
+// Whether bit 0 (wall) is set in any of the `len` hints at `begin` of the
+// rows below, at and above the block's row (`full`: len == kBlockCells,
+// read as two 64-bit words per row).
+inline bool WallNearBlock(const std::uint8_t* below, const std::uint8_t* here,
+                          const std::uint8_t* above, int begin, std::size_t len, bool full) {
+  if (!full) {
+    unsigned any = 0;
+    for (std::size_t c = 0; c < len; ++c)
+      any |= below[begin + c] | here[begin + c] | above[begin + c];
+    return (any & kHintWall) != 0;
+  }
+  std::uint64_t w[6];
+  static_assert(sizeof(w) == 3 * kBlockCells);
+  std::memcpy(w, below + begin, kBlockCells);
+  std::memcpy(w + 2, here + begin, kBlockCells);
+  std::memcpy(w + 4, above + begin, kBlockCells);
+  constexpr std::uint64_t kWallBytes = 0x0101010101010101u * kHintWall;
+  return ((w[0] | w[1] | w[2] | w[3] | w[4] | w[5]) & kWallBytes) != 0;
+}
+
 // A tile's rows as the scan reads and writes them (the encoder reads
 // `cells`, the decoder writes `canvas`; `hints` null = all zero).
 struct TileRows {
@@ -408,10 +431,15 @@ void CodeTileScan(Io& io, const TileRows& t) {
                uniform);
           // The super-block differs, so when every block before the last was
           // equal, the last one differs: no decision.
+          // Model 4: a block next to a drawn wall changes more often than one
+          // in the open (LBLOCK; 0.6 % smaller at the tuning median with the
+          // file's layers).
+          const bool wall_near =
+              kLayer && WallNearBlock(hint_below, hint_row, cell_rows.hint_above, begin, len, full);
           const int copy =
               b + 1 == sb_end && !changed
                   ? 0
-                  : io.Code(&models[kBlockModel + ctx],
+                  : io.Code(&models[(wall_near ? kLayerBlockModel : kBlockModel) + ctx],
                             Io::kEncoding && SameCells(cur + begin, n1 + begin, len, full));
           if (copy) {
             if constexpr (!Io::kEncoding) {

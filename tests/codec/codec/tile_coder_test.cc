@@ -368,7 +368,9 @@ class SpecEncoder {
           if (b + 1 == b_end && !changed) {
             copy = false;  // implied
           } else {
-            Bit(kBlock +
+            // Model 4: LBLOCK (after LEQUAL and LOTHER) next to a drawn wall.
+            const int table = layer_ && WallNear(ba, be, r) ? kEqual + 2 * 3240 : kBlock;
+            Bit(table +
                     (((below_block[b] * 3 + left) * 3 + above_right) * 2 + HintsSame(ba, be, r)) *
                         4 +
                     Uniform(ba, be, r),
@@ -418,6 +420,16 @@ class SpecEncoder {
       if (V(c, r - 1) != V(a, r - 1)) return 0;
     }
     return 1 + V(a, r - 1);
+  }
+  // Whether bit 0 is set in a hint of columns [a, e) of rows r - 1 .. r + 1
+  // (inside the tile).
+  bool WallNear(int a, int e, int r) const {
+    for (int rr = r - 1; rr <= r + 1; ++rr) {
+      for (int c = a; c < e; ++c) {
+        if (LayerH(c, rr) & 1) return true;
+      }
+    }
+    return false;
   }
   // Model 4's hint: bits 0-3 inside the tile, 0 outside it.
   int LayerH(int c, int r) const {
