@@ -49,9 +49,9 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 // TileModel::kLayerContext and kTemplate, the layer context on a tie; a
 // tile without any hint is coded with kTemplate alone. The decoder reads
 // the model from the tile's first byte. Why both: with the layers a 2.x
-// file stores, the layer context is 3 % smaller at the tuning median, but
-// on maps whose stored walls run a cell off the scanned ones (the willow
-// maps) the 8-cell template is up to 2 % smaller, and without hints
+// file stores, the layer context is 4 % smaller at the tuning median, but
+// on the noisy willow scans the 8-cell template is up to 2 % smaller, and
+// without hints
 // (--raster-only, tiles no layer reaches) it always is; keeping the smaller
 // costs a second encoding of the tile and nothing when decoding.
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
