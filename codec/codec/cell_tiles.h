@@ -51,9 +51,9 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 // the model from the tile's first byte. Why both: with the layers a 2.x
 // file stores, the layer context is 4 % smaller at the tuning median, but
 // on the noisy willow scans the 8-cell template is up to 2 % smaller, and
-// without hints
-// (--raster-only, tiles no layer reaches) it always is; keeping the smaller
-// costs a second encoding of the tile and nothing when decoding.
+// without hints (--raster-only, tiles no layer reaches) it always is;
+// keeping the smaller costs a second encoding of the tile and nothing when
+// decoding.
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
                                          const std::vector<std::uint8_t>& hints, int tw, int th);
 
