@@ -61,14 +61,19 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
                                          const std::vector<std::uint8_t>& hints, int tw, int th) {
   const CellRect all{0, 0, tw, th};
-  std::vector<std::uint8_t> plain =
-      EncodeTileCells(cells.data(), hints.data(), tw, th, all, TileModel::kTemplate);
+  const auto encode = [&](TileModel model) {
+    return EncodeTileCells(cells.data(), hints.data(), tw, th, all, model);
+  };
   if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
-    return plain;
+    return encode(TileModel::kTemplate);
   }
-  std::vector<std::uint8_t> layered =
-      EncodeTileCells(cells.data(), hints.data(), tw, th, all, TileModel::kLayerContext);
-  return layered.size() <= plain.size() ? layered : plain;
+  std::vector<std::uint8_t> best = encode(TileModel::kLayerContext);
+  for (TileModel model :
+       {LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange), TileModel::kTemplate}) {
+    std::vector<std::uint8_t> data = encode(model);
+    if (data.size() < best.size()) best = std::move(data);
+  }
+  return best;
 }
 
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,

@@ -137,17 +137,32 @@ class RowRing {
 //   is: far from the walls the map rarely changes, next to one its
 //   thickness and scan noise do.
 // These are what the template cannot see: a change at the cell itself
-// and the cells ahead of the scan (E, the row above).
+// and the cells ahead of the scan (E, the row above). A tile may drop
+// terms (models 5-11): each term's addend is then 0.
+struct LayerTerms {
+  unsigned west_change = 5, north_change = 10, far_from_walls = 20;
+};
+
+LayerTerms LayerTermsOf(unsigned model) {
+  const unsigned dropped = model - static_cast<unsigned>(TileModel::kLayerContext);
+  LayerTerms terms;
+  if (dropped & kLayerTermWestChange) terms.west_change = 0;
+  if (dropped & kLayerTermNorthChange) terms.north_change = 0;
+  if (dropped & kLayerTermWallNear) terms.far_from_walls = 0;
+  return terms;
+}
+
 inline unsigned LayerClass(const std::uint8_t* below, const std::uint8_t* here,
-                           const std::uint8_t* above, int i, int width) {
+                           const std::uint8_t* above, int i, int width, const LayerTerms& terms) {
   const unsigned h = here[i] & 15u;
   const unsigned west = i > 0 ? here[i - 1] & 15u : 0u;
   const unsigned east = i + 1 < width ? here[i + 1] & 15u : 0u;
   const unsigned hint_class = kHintClass[h];
   const unsigned north = below[i] & 15u;
   const unsigned wall_near = (west | east | north | above[i]) & kHintWall;
-  return hint_class + (west != h ? 5u : 0u) + (north != h ? 10u : 0u) +
-         (hint_class != 1 && wall_near == 0 ? 20u : 0u);
+  return hint_class + (west != h ? terms.west_change : 0u) +
+         (north != h ? terms.north_change : 0u) +
+         (hint_class != 1 && wall_near == 0 ? terms.far_from_walls : 0u);
 }
 
 // The 8-cell trinary template (spec "Cell context") of cell i: W, WW on
@@ -230,12 +245,12 @@ template <typename Io>
                                                     std::uint8_t* cur, const std::uint8_t* n1,
                                                     const std::uint8_t* below,
                                                     const std::uint8_t* here,
-                                                    const std::uint8_t* above, int width, int begin,
-                                                    int end) {
+                                                    const std::uint8_t* above, int width,
+                                                    const LayerTerms& terms, int begin, int end) {
   unsigned west = cur[begin - 1];
   for (int i = begin; i < end; ++i) {
     const unsigned pattern = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
-    const unsigned ctx = pattern * kLayerClasses + LayerClass(below, here, above, i, width);
+    const unsigned ctx = pattern * kLayerClasses + LayerClass(below, here, above, i, width, terms);
     const unsigned v = Io::kEncoding ? cur[i] : 0;
     unsigned value = west;
     if (!io.Code(&models[kLayerEqualModel + ctx], v == west)) {
@@ -259,6 +274,7 @@ struct CellRows {
   const std::uint8_t* hint_below;
   const std::uint8_t* hint_above;
   int width;
+  LayerTerms terms;
 };
 
 template <bool kMix, bool kLayer, typename Io>
@@ -266,7 +282,7 @@ void CodeCellsIn(Io& io, TileModelTable& models, TileMixer<2>& mixer, const Cell
                  int begin, int end) {
   if constexpr (kLayer) {
     CodeLayerCellRun(io, models, rows.cur, rows.n1, rows.hint_below, rows.hint_row, rows.hint_above,
-                     rows.width, begin, end);
+                     rows.width, rows.terms, begin, end);
   } else {
     CodeCellRun<kMix>(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_row, begin, end);
   }
@@ -329,6 +345,7 @@ struct TileRows {
   std::ptrdiff_t canvas_stride = 0;
   const std::uint8_t* hints = nullptr;
   std::ptrdiff_t hint_stride = 0;
+  LayerTerms layer_terms;  // of the layer context (models 4-11)
 };
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
@@ -362,7 +379,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
     }
     const std::uint8_t* hint_above =
         hints && r + 1 < th ? hint_row + t.hint_stride : zero_hints.data();
-    const CellRows cell_rows{cur, n1, n2, hint_row, hint_below, hint_above, tw};
+    const CellRows cell_rows{cur, n1, n2, hint_row, hint_below, hint_above, tw, t.layer_terms};
     const bool hints_same =
         r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
@@ -502,9 +519,10 @@ bool TileInside(CellRect t, int width, int height) {
 }
 
 // Runs the scan of `model` (models 0-3: bit 0 mixed, bit 1 every cell of
-// a changed row, no block flags; model 4: block flags, layer context).
+// a changed row, no block flags; models 4-11: block flags, layer context
+// with the terms model - 4 drops).
 template <typename Io>
-void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
+void CodeTileAs(Io& io, TileRows rows, unsigned model) {
   switch (model) {
     case 0:
       return CodeTile<false, true, false>(io, rows);
@@ -515,6 +533,7 @@ void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
     case 3:
       return CodeTile<true, false, false>(io, rows);
     default:
+      rows.layer_terms = LayerTermsOf(model);
       return CodeTile<false, true, true>(io, rows);
   }
 }
@@ -540,7 +559,7 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
-  if (model > static_cast<unsigned>(TileModel::kLayerContext)) {
+  if (model > static_cast<unsigned>(TileModel::kLayerContextLast)) {
     return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);

@@ -58,7 +58,24 @@ enum class TileModel : std::uint8_t {
   // BuildLayerHints), ~3 % more decode time. The CELL encoder writes it in
   // every tile where it is the smaller of the two.
   kLayerContext = 4,
+  // Models 5-11: the layer context without some of its class terms (ids
+  // 4 + the LayerTerm bits dropped; LayerContextWithout). The encoder keeps
+  // whichever codes a tile smallest: the terms that pay differ by map.
+  kLayerContextLast = 11,
 };
+
+// The layer context's class terms a tile may drop (spec/tile_coding.md 5.2).
+enum LayerTerm : unsigned {
+  kLayerTermWestChange = 1,   // the hint differs from W's
+  kLayerTermNorthChange = 2,  // the hint differs from N's
+  kLayerTermWallNear = 4,     // no wall on or next to the cell
+};
+
+// The model of the layer context without the terms `dropped` (LayerTerm
+// bits): kLayerContext for none.
+constexpr TileModel LayerContextWithout(unsigned dropped) {
+  return static_cast<TileModel>(static_cast<unsigned>(TileModel::kLayerContext) + (dropped & 7u));
+}
 
 // Every call below allocates about 0.2 MB of model state (kLayerContext
 // 42 kB) and three rows of the tile, and shares nothing with other calls:

@@ -27,8 +27,9 @@
 // instead of BuildLayerHints. --compare prints one line per map instead:
 // map, T(uning)/H(eld-out), cells, hinted kTemplate bytes, kLayerContext
 // bytes, their ratio, (with --time) both decode ns per cell and their
-// ratio, then the bytes when each tile keeps the smaller of the two (what
-// the CELL encoder writes) and their ratio to kTemplate's. Tuning maps and
+// ratio, then the bytes of the CELL encoder's choice per tile
+// (EncodeCellTile: the smallest of three models) and their ratio to
+// kTemplate's. Tuning maps and
 // held-out maps are listed and summarised (medians) separately: the coder's
 // parameters were chosen on the tuning maps only. Every coding is decoded and compared
 // with the map (exit 1 if one differs).
@@ -40,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/cell_tiles.h"
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
 #include "codec/codec/plane_coder.h"
@@ -368,15 +370,17 @@ int Run(int argc, char** argv) {
       Coded a, b;
       const bool ok = Measure(g, compare_hints, tile, TileModel::kTemplate, &a, timed) &&
                       Measure(g, compare_hints, tile, TileModel::kLayerContext, &b, timed);
+      // What the CELL encoder writes (EncodeCellTile: the smallest model).
       double best = 0;
       for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
-        best +=
-            static_cast<double>(std::min(EncodeTileCells(g.cells().data(), compare_hints, g.width(),
-                                                         g.height(), t, TileModel::kTemplate)
-                                             .size(),
-                                         EncodeTileCells(g.cells().data(), compare_hints, g.width(),
-                                                         g.height(), t, TileModel::kLayerContext)
-                                             .size()));
+        std::vector<std::uint8_t> tile_hints;
+        for (int y = t.y0; y < t.y1; ++y) {
+          for (int x = t.x0; x < t.x1; ++x) {
+            tile_hints.push_back(compare_hints ? compare_hints[g.Index(x, y)] : 0);
+          }
+        }
+        best += static_cast<double>(
+            EncodeCellTile(TileCells(g, t), tile_hints, t.x1 - t.x0, t.y1 - t.y0).size());
       }
       const double values[kCompareValues] = {r.cells,
                                              a.bytes,
@@ -384,7 +388,7 @@ int Run(int argc, char** argv) {
                                              b.bytes / a.bytes,
                                              a.dec_ns,
                                              b.dec_ns,
-                                             b.dec_ns / a.dec_ns,
+                                             a.dec_ns > 0 ? b.dec_ns / a.dec_ns : 0,
                                              best,
                                              best / a.bytes};
       std::printf("%-44s %s", m.path, m.tuning ? "T" : "H");

@@ -99,7 +99,9 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
     }
     SCOPED_TRACE("iteration " + std::to_string(iter));
     for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kTemplateAllCells,
-                            TileModel::kMixedAllCells, TileModel::kLayerContext}) {
+                            TileModel::kMixedAllCells, TileModel::kLayerContext,
+                            LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange),
+                            TileModel::kLayerContextLast}) {
       const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
       ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
     }
@@ -169,7 +171,8 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
         local_hints[static_cast<std::size_t>(y) * stride + x] = hints[from];
       }
     }
-    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext}) {
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext,
+                            LayerContextWithout(kLayerTermNorthChange)}) {
       const Bytes data =
           EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
       ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
@@ -220,11 +223,11 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
-        // The five models in turn over the tiles: the decoder reads each.
+        // The twelve models in turn over the tiles: the decoder reads each.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          const TileModel model = static_cast<TileModel>(data.size() % 5);
+          const TileModel model = static_cast<TileModel>(data.size() % 12);
           data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
@@ -289,7 +292,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                                  canvas.data())
                      .ok());
   }
-  for (std::uint8_t model : {5, 6, 31}) {  // models 5 and up do not exist
+  for (std::uint8_t model : {12, 13, 31}) {  // models 12 and up do not exist
     Bytes bad_model = data;
     bad_model[0] = static_cast<std::uint8_t>((bad_model[0] & ~31) | model);
     EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
@@ -312,7 +315,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
 class SpecEncoder {
  public:
   // `model` as the tile's model id: for 0-3 bit 0 mixed, bit 1 every cell;
-  // 4 the layer context.
+  // 4-11 the layer context without the terms of the bits of model - 4.
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
               CellRect tile, int model)
       : cells_(cells),
@@ -322,7 +325,8 @@ class SpecEncoder {
         model_(model),
         mixed_(model < 4 && (model & 1) != 0),
         all_cells_(model < 4 && (model & 2) != 0),
-        layer_(model == 4) {}
+        layer_(model >= 4),
+        dropped_(model >= 4 ? model - 4 : 0) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
@@ -443,9 +447,9 @@ class SpecEncoder {
     const bool wall_next =
         ((LayerH(c - 1, r) | LayerH(c + 1, r) | LayerH(c, r - 1) | LayerH(c, r + 1)) & 1) != 0;
     int layer_class = hc;
-    if (LayerH(c - 1, r) != h) layer_class += 5;
-    if (LayerH(c, r - 1) != h) layer_class += 10;
-    if (hc != 1 && !wall_next) layer_class += 20;
+    if (!(dropped_ & 1) && LayerH(c - 1, r) != h) layer_class += 5;
+    if (!(dropped_ & 2) && LayerH(c, r - 1) != h) layer_class += 10;
+    if (!(dropped_ & 4) && hc != 1 && !wall_next) layer_class += 20;
     const int w = V(c - 1, r), v = V(c, r);
     const int pattern = ((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1);
     const int ctx = pattern * 40 + layer_class;
@@ -607,6 +611,7 @@ class SpecEncoder {
   bool mixed_;
   bool all_cells_;
   bool layer_;
+  int dropped_;  // layer terms left out: 1 change from W, 2 from N, 4 wall
   std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
   std::vector<Model> models_ = std::vector<Model>(kNear + 405);
   std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
@@ -639,7 +644,7 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
     EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
               SpecEncoder(cells, hints, width, tile, 0).Encode());
-    for (int model = 0; model <= 4; ++model) {
+    for (int model = 0; model <= 11; ++model) {
       EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(cells, hints, width, tile, model).Encode())
@@ -653,7 +658,7 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
               SpecEncoder(g.cells(), none, g.width(), all, 0).Encode());
-    for (int model = 1; model <= 4; ++model) {
+    for (int model = 1; model <= 11; ++model) {
       EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(g.cells(), *hints, g.width(), all, model).Encode())
