@@ -55,7 +55,7 @@ enum class TileModel : std::uint8_t {
   // cell's context is the 4 nearest cells x a class of the layers around it
   // (hint changes from W and from N, a wall next to it): with the layers a
   // 2.x file stores 3.8 % smaller than kTemplate (tuning median; 9.7 % with
-  // BuildLayerHints), ~3 % more decode time. The CELL encoder writes it in
+  // BuildLayerHints), ~4 % more decode time. The CELL encoder writes it in
   // every tile where it is the smaller of the two.
   kLayerContext = 4,
   // Models 5-11: the layer context without some of its class terms (ids
