@@ -47,15 +47,15 @@ constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
 constexpr unsigned kNearModel = kOtherModel + 81 * kHintClasses;  // model 1 only
 constexpr unsigned kModelCount = kNearModel + 81 * kHintClasses;
-// Model 4 (spec "Layer context") keeps the flag contexts and puts its two
-// cell tables where models 0-3 have theirs: 81 patterns of the nearest cells
-// x 40 layer classes each, a table 1/10 the size of EQUAL's.
+// The layer context (models 4-11, spec "Layer context") keeps the flag
+// contexts and puts its two cell tables where models 0-3 have theirs: 81
+// patterns of the nearest cells x 40 layer classes each, a table 1/10 the
+// size of EQUAL's; then LBLOCK, the BLOCK table of the blocks next to a
+// drawn wall.
 constexpr unsigned kNearPatterns = 81;
 constexpr unsigned kLayerClasses = 40;
 constexpr unsigned kLayerEqualModel = kEqualModel;
 constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerClasses;
-// and its block decisions next to a drawn wall have a BLOCK table of their
-// own (LBLOCK).
 constexpr unsigned kLayerBlockModel = kLayerOtherModel + kNearPatterns * kLayerClasses;
 constexpr unsigned kLayerModelCount = kLayerBlockModel + kBlockContexts;
 
@@ -125,20 +125,8 @@ class RowRing {
   std::vector<std::uint8_t> cells_;
 };
 
-// Model 4's layer class of cell i (spec "Layer context"), 0..39, from the
-// hints (bits 0-3) of its row (`here`, `width` cells) and the rows below and
-// above (zero rows outside the tile; columns outside it read as zero too,
-// so no tile depends on another):
-// - the hint class (0-4), as models 0-3 take it;
-// - + 5 when the hint differs from W's: the cell starts a wall, a room
-//   border, a furniture fill, or leaves one, so the run of W likely ends;
-// - + 10 when it differs from N's (the same across rows);
-// - + 20 when the cell is not on a wall and none of its four neighbours
-//   is: far from the walls the map rarely changes, next to one its
-//   thickness and scan noise do.
-// These are what the template cannot see: a change at the cell itself
-// and the cells ahead of the scan (E, the row above). A tile may drop
-// terms (models 5-11): each term's addend is then 0.
+// The addends of the layer class's terms (LayerClass): a tile of model
+// 4 + d drops the terms of the LayerTerm bits of d (their addend is 0).
 struct LayerTerms {
   unsigned west_change = 5, north_change = 10, far_from_walls = 20;
 };
@@ -152,6 +140,19 @@ LayerTerms LayerTermsOf(unsigned model) {
   return terms;
 }
 
+// The layer class of cell i (spec "Layer context"), 0..39, from the hints
+// (bits 0-3) of its row (`here`, `width` cells) and the rows below and
+// above (zero rows outside the tile; columns outside it read as zero too,
+// so no tile depends on another):
+// - the hint class (0-4), as models 0-3 take it;
+// - + 5 when the hint differs from W's: the cell starts a wall, a room
+//   border, a furniture fill, or leaves one, so the run of W likely ends;
+// - + 10 when it differs from N's (the same across rows);
+// - + 20 when the cell is not on a wall and none of its four neighbours
+//   is: far from the walls the map rarely changes, next to one its
+//   thickness and scan noise do.
+// These are what the template cannot see: a change at the cell itself
+// and the cells ahead of the scan (E, the row above).
 inline unsigned LayerClass(const std::uint8_t* below, const std::uint8_t* here,
                            const std::uint8_t* above, int i, int width, const LayerTerms& terms) {
   const unsigned h = here[i] & 15u;
@@ -235,7 +236,7 @@ template <bool kMix, typename Io>
   }
 }
 
-// Codes cells [begin, end) of the row `cur` with model 4's contexts: the
+// Codes cells [begin, end) of the row `cur` with the layer context: the
 // nearest cells' pattern (W, N, NW, NE) x the layer class. Both decisions
 // ("equals W", then which other value) use that context, each with its
 // own table. The smaller pattern is what lets the layer class pay: with the
@@ -264,8 +265,8 @@ template <typename Io>
 }
 
 // The rows a run of cells reads: the row being coded and the two below
-// it; the hints of the row and (model 4) of the rows below and above it,
-// zero rows outside the tile.
+// it; the hints of the row and (layer context) of the rows below and
+// above it, zero rows outside the tile.
 struct CellRows {
   std::uint8_t* cur;
   const std::uint8_t* n1;
@@ -322,8 +323,9 @@ inline bool WallNearBlock(const std::uint8_t* below, const std::uint8_t* here,
                           const std::uint8_t* above, int begin, std::size_t len, bool full) {
   if (!full) {
     unsigned any = 0;
-    for (std::size_t c = 0; c < len; ++c)
+    for (std::size_t c = 0; c < len; ++c) {
       any |= below[begin + c] | here[begin + c] | above[begin + c];
+    }
     return (any & kHintWall) != 0;
   }
   std::uint64_t w[6];
@@ -362,8 +364,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
       static_cast<std::size_t>((blocks + kSuperBlocks - 1) / kSuperBlocks), kStateNone);
-  // Without layers every hint is zero: all rows read this one (model 4
-  // reads it for the rows outside the tile as well).
+  // Without layers every hint is zero: all rows read this one (the layer
+  // context reads it for the rows outside the tile as well).
   const std::vector<std::uint8_t> zero_hints(
       hints == nullptr || kLayer ? static_cast<std::size_t>(tw) : 0, 0);
   unsigned row_state = kStateNone;
@@ -448,9 +450,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
                uniform);
           // The super-block differs, so when every block before the last was
           // equal, the last one differs: no decision.
-          // Model 4: a block next to a drawn wall changes more often than one
-          // in the open (LBLOCK; 0.6 % smaller at the tuning median with the
-          // file's layers).
+          // Layer context: a block next to a drawn wall changes more often
+          // than one in the open (LBLOCK; 0.6 % smaller at the tuning median
+          // with the file's layers).
           const bool wall_near =
               kLayer && WallNearBlock(hint_below, hint_row, cell_rows.hint_above, begin, len, full);
           const int copy =
