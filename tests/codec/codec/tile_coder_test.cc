@@ -446,17 +446,18 @@ class SpecEncoder {
     const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
     const bool wall_next =
         ((LayerH(c - 1, r) | LayerH(c + 1, r) | LayerH(c, r - 1) | LayerH(c, r + 1)) & 1) != 0;
-    int layer_class = hc;
+    int other_class = hc;
+    if (!(dropped_ & 4) && hc != 1 && !wall_next) other_class += 20;
+    int layer_class = other_class;
     if (!(dropped_ & 1) && LayerH(c - 1, r) != h) layer_class += 5;
     if (!(dropped_ & 2) && LayerH(c, r - 1) != h) layer_class += 10;
-    if (!(dropped_ & 4) && hc != 1 && !wall_next) layer_class += 20;
     const int w = V(c - 1, r), v = V(c, r);
     const int pattern = ((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1);
     const int ctx = pattern * 40 + layer_class;
     Bit(kEqual + ctx, v == w);
     if (v == w) return;
     const int hi = w == 2 ? 1 : 2;
-    Bit(kEqual + 3240 + ctx, v == hi);
+    Bit(kEqual + 3240 + pattern * 40 + other_class, v == hi);
   }
   void CodeCell(int c, int r) {
     if (layer_) return CodeLayerCell(c, r);
