@@ -58,6 +58,24 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
   return cells;
 }
 
+std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
+                                         const std::vector<std::uint8_t>& hints, int tw, int th) {
+  const CellRect all{0, 0, tw, th};
+  const auto encode = [&](TileModel model) {
+    return EncodeTileCells(cells.data(), hints.data(), tw, th, all, model);
+  };
+  if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
+    return encode(TileModel::kTemplate);
+  }
+  std::vector<std::uint8_t> best = encode(TileModel::kLayerContext);
+  for (TileModel model :
+       {LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange), TileModel::kTemplate}) {
+    std::vector<std::uint8_t> data = encode(model);
+    if (data.size() < best.size()) best = std::move(data);
+  }
+  return best;
+}
+
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads) {
   ByteWriter out;
@@ -67,8 +85,7 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
       [&](CellRect t) {
         const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
         const std::vector<Cell> cells = TileCells(grid, t);
-        const std::vector<std::uint8_t> hints = layers.TileHints(t);
-        return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th});
+        return EncodeCellTile(cells, layers.TileHints(t), tw, th);
       },
       &out);
   return std::move(out.mutable_bytes());

@@ -45,6 +45,20 @@ void ForEachIndexParallel(std::uint64_t n, int threads,
 // the tile as a grid of its own, so it cannot read past it).
 std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 
+// One tile's data (cells and hints tw x th, row-major): the smallest of
+// TileModel::kLayerContext, the layer context with the wall term alone
+// (LayerContextWithout the two hint changes) and kTemplate, in that order
+// on a tie; a tile without any hint is coded with kTemplate alone. The
+// decoder reads the model from the tile's first byte. Why three: with the
+// layers a 2.x file stores, the full layer context is 4 % smaller than
+// kTemplate at the tuning median and the wall term alone smaller on other
+// maps (5 % together); on the noisy willow scans kTemplate is up to 2 %
+// smaller, and without hints (--raster-only, tiles no layer reaches) it
+// always is. The choice costs three encodings of the tile and nothing when
+// decoding.
+std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
+                                         const std::vector<std::uint8_t>& hints, int tw, int th);
+
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads);
 

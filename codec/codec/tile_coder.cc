@@ -47,6 +47,17 @@ constexpr unsigned kEqualModel = kSuperModel + kSuperContexts;
 constexpr unsigned kOtherModel = kEqualModel + kCellContexts;
 constexpr unsigned kNearModel = kOtherModel + 81 * kHintClasses;  // model 1 only
 constexpr unsigned kModelCount = kNearModel + 81 * kHintClasses;
+// The layer context (models 4-11, spec "Layer context") keeps the flag
+// contexts and puts its two cell tables where models 0-3 have theirs: 81
+// patterns of the nearest cells x 40 layer classes each, a table 1/10 the
+// size of EQUAL's; then LBLOCK, the BLOCK table of the blocks next to a
+// drawn wall.
+constexpr unsigned kNearPatterns = 81;
+constexpr unsigned kLayerClasses = 40;
+constexpr unsigned kLayerEqualModel = kEqualModel;
+constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kLayerBlockModel = kLayerOtherModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kLayerModelCount = kLayerBlockModel + kBlockContexts;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -113,6 +124,58 @@ class RowRing {
   std::size_t stride_;
   std::vector<std::uint8_t> cells_;
 };
+
+// The addends of the layer class's terms (LayerClassesOf): a tile of model
+// 4 + d drops the terms of the LayerTerm bits of d (their addend is 0).
+struct LayerTerms {
+  unsigned west_change = 5, north_change = 10, far_from_walls = 20;
+};
+
+LayerTerms LayerTermsOf(unsigned model) {
+  const unsigned dropped = model - static_cast<unsigned>(TileModel::kLayerContext);
+  LayerTerms terms;
+  if (dropped & kLayerTermWestChange) terms.west_change = 0;
+  if (dropped & kLayerTermNorthChange) terms.north_change = 0;
+  if (dropped & kLayerTermWallNear) terms.far_from_walls = 0;
+  return terms;
+}
+
+// The layer classes of cell i (spec "Layer context"), 0..39, from the hints
+// (bits 0-3) of its row (`here`, `width` cells) and the rows below and
+// above (zero rows outside the tile; columns outside it read as zero too,
+// so no tile depends on another):
+// - the hint class (0-4), as models 0-3 take it;
+// - + 5 when the hint differs from W's: the cell starts a wall, a room
+//   border, a furniture fill, or leaves one, so the run of W likely ends;
+// - + 10 when it differs from N's (the same across rows);
+// - + 20 when the cell is not on a wall and none of its four neighbours
+//   is: far from the walls the map rarely changes, next to one its
+//   thickness and scan noise do.
+// These are what the template cannot see: a change at the cell itself
+// and the cells ahead of the scan (E, the row above). The OTHER decision
+// (which of the two other values) takes the class without the two change
+// terms (`other`): which value follows W is a matter of what the cell is
+// (wall, room, outside), and the change terms would split its few uses
+// four ways (model 4 1.7 % larger at the tuning median with them).
+struct LayerClasses {
+  unsigned equal;  // of the "equals W" decision
+  unsigned other;  // of the "which other value" decision
+};
+
+inline LayerClasses LayerClassesOf(const std::uint8_t* below, const std::uint8_t* here,
+                                   const std::uint8_t* above, int i, int width,
+                                   const LayerTerms& terms) {
+  const unsigned h = here[i] & 15u;
+  const unsigned west = i > 0 ? here[i - 1] & 15u : 0u;
+  const unsigned east = i + 1 < width ? here[i + 1] & 15u : 0u;
+  const unsigned hint_class = kHintClass[h];
+  const unsigned north = below[i] & 15u;
+  const unsigned wall_near = (west | east | north | above[i]) & kHintWall;
+  const unsigned other =
+      hint_class + (hint_class != 1 && wall_near == 0 ? terms.far_from_walls : 0u);
+  return {other + (west != h ? terms.west_change : 0u) + (north != h ? terms.north_change : 0u),
+          other};
+}
 
 // The 8-cell trinary template (spec "Cell context") of cell i: W, WW on
 // this row; NWW, NW, N, NE, NEE on the row below; NN two rows below, as
@@ -184,18 +247,72 @@ template <bool kMix, typename Io>
   }
 }
 
+// Codes cells [begin, end) of the row `cur` with the layer context: the
+// nearest cells' pattern (W, N, NW, NE) x the layer class ("equals W";
+// "which other value" takes the class without the change terms), each
+// decision with its own table. The smaller pattern is what lets the layer class pay: with the
+// 8-cell template x 40 classes the tables learn too slowly within a tile.
+template <typename Io>
+[[gnu::always_inline]] inline void CodeLayerCellRun(Io& io, TileModelTable& models,
+                                                    std::uint8_t* cur, const std::uint8_t* n1,
+                                                    const std::uint8_t* below,
+                                                    const std::uint8_t* here,
+                                                    const std::uint8_t* above, int width,
+                                                    const LayerTerms& terms, int begin, int end) {
+  unsigned west = cur[begin - 1];
+  for (int i = begin; i < end; ++i) {
+    const unsigned pattern = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
+    const LayerClasses classes = LayerClassesOf(below, here, above, i, width, terms);
+    const unsigned ctx = pattern * kLayerClasses + classes.equal;
+    const unsigned v = Io::kEncoding ? cur[i] : 0;
+    unsigned value = west;
+    if (!io.Code(&models[kLayerEqualModel + ctx], v == west)) {
+      const unsigned lo = west == 0 ? 1 : 0;
+      const unsigned hi = west == 2 ? 1 : 2;
+      const unsigned other_ctx = pattern * kLayerClasses + classes.other;
+      value = io.Code(&models[kLayerOtherModel + other_ctx], v == hi) ? hi : lo;
+    }
+    cur[i] = static_cast<std::uint8_t>(value);
+    west = value;
+  }
+}
+
+// The rows a run of cells reads: the row being coded and the two below
+// it; the hints of the row and (layer context) of the rows below and
+// above it, zero rows outside the tile.
+struct CellRows {
+  std::uint8_t* cur;
+  const std::uint8_t* n1;
+  const std::uint8_t* n2;
+  const std::uint8_t* hint_row;
+  const std::uint8_t* hint_below;
+  const std::uint8_t* hint_above;
+  int width;
+  LayerTerms terms;
+};
+
+template <bool kMix, bool kLayer, typename Io>
+void CodeCellsIn(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows,
+                 int begin, int end) {
+  if constexpr (kLayer) {
+    CodeLayerCellRun(io, models, rows.cur, rows.n1, rows.hint_below, rows.hint_row, rows.hint_above,
+                     rows.width, rows.terms, begin, end);
+  } else {
+    CodeCellRun<kMix>(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_row, begin, end);
+  }
+}
+
 // The decoder's state in a local for the run (see CodeTile): the cells
 // are stored as bytes, which may alias any object, so a decoder reached
 // through a reference would be reloaded from memory after every cell.
-template <bool kMix, typename Io>
-void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, std::uint8_t* cur,
-               const std::uint8_t* n1, const std::uint8_t* n2, const std::uint8_t* hint_row,
-               int begin, int end) {
+template <bool kMix, bool kLayer, typename Io>
+void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows, int begin,
+               int end) {
   if constexpr (Io::kEncoding) {
-    CodeCellRun<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
+    CodeCellsIn<kMix, kLayer>(io, models, mixer, rows, begin, end);
   } else {
     Io local = io;
-    CodeCellRun<kMix>(local, models, mixer, cur, n1, n2, hint_row, begin, end);
+    CodeCellsIn<kMix, kLayer>(local, models, mixer, rows, begin, end);
     io = local;
   }
 }
@@ -212,6 +329,27 @@ inline bool SameCells(const std::uint8_t* a, const std::uint8_t* b, std::size_t 
   return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
 }
 
+// Whether bit 0 (wall) is set in any of the `len` hints at `begin` of the
+// rows below, at and above the block's row (`full`: len == kBlockCells,
+// read as two 64-bit words per row).
+inline bool WallNearBlock(const std::uint8_t* below, const std::uint8_t* here,
+                          const std::uint8_t* above, int begin, std::size_t len, bool full) {
+  if (!full) {
+    unsigned any = 0;
+    for (std::size_t c = 0; c < len; ++c) {
+      any |= below[begin + c] | here[begin + c] | above[begin + c];
+    }
+    return (any & kHintWall) != 0;
+  }
+  std::uint64_t w[6];
+  static_assert(sizeof(w) == 3 * kBlockCells);
+  std::memcpy(w, below + begin, kBlockCells);
+  std::memcpy(w + 2, here + begin, kBlockCells);
+  std::memcpy(w + 4, above + begin, kBlockCells);
+  constexpr std::uint64_t kWallBytes = 0x0101010101010101u * kHintWall;
+  return ((w[0] | w[1] | w[2] | w[3] | w[4] | w[5]) & kWallBytes) != 0;
+}
+
 // A tile's rows as the scan reads and writes them (the encoder reads
 // `cells`, the decoder writes `canvas`; `hints` null = all zero).
 struct TileRows {
@@ -222,25 +360,27 @@ struct TileRows {
   std::ptrdiff_t canvas_stride = 0;
   const std::uint8_t* hints = nullptr;
   std::ptrdiff_t hint_stride = 0;
+  LayerTerms layer_terms;  // of the layer context (models 4-11)
 };
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
 // the encoder, `canvas` written by the decoder; `hints` is width*height.
-template <bool kMix, bool kFlags, typename Io>
+template <bool kMix, bool kFlags, bool kLayer, typename Io>
 void CodeTileScan(Io& io, const TileRows& t) {
   const int tw = t.width;
   const int th = t.height;
   const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
-  TileModelTable models(kModelCount);
+  TileModelTable models(kLayer ? kLayerModelCount : kModelCount);
   TileMixer<2> mixer(kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
       static_cast<std::size_t>((blocks + kSuperBlocks - 1) / kSuperBlocks), kStateNone);
-  // Without layers every hint is zero: both rows read this one.
-  const std::vector<std::uint8_t> zero_hints(hints == nullptr ? static_cast<std::size_t>(tw) : 0,
-                                             0);
+  // Without layers every hint is zero: all rows read this one (the layer
+  // context reads it for the rows outside the tile as well).
+  const std::vector<std::uint8_t> zero_hints(
+      hints == nullptr || kLayer ? static_cast<std::size_t>(tw) : 0, 0);
   unsigned row_state = kStateNone;
   for (int r = 0; r < th; ++r) {
     std::uint8_t* cur = ring.Row(r + 2);
@@ -252,6 +392,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
     if constexpr (Io::kEncoding) {
       std::memcpy(cur, t.cells + r * t.cell_stride, static_cast<std::size_t>(tw));
     }
+    const std::uint8_t* hint_above =
+        hints && r + 1 < th ? hint_row + t.hint_stride : zero_hints.data();
+    const CellRows cell_rows{cur, n1, n2, hint_row, hint_below, hint_above, tw, t.layer_terms};
     const bool hints_same =
         r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
@@ -263,7 +406,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
       std::fill(above_super.begin(), above_super.end(), kStateCopy);
       row_state = kStateCopy;
     } else if (!kFlags) {
-      CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, 0, tw);
+      CodeCells<kMix, kLayer>(io, models, mixer, cell_rows, 0, tw);
       row_state = kStateCoded;
     } else {
       unsigned left = kStateNone;
@@ -320,10 +463,15 @@ void CodeTileScan(Io& io, const TileRows& t) {
                uniform);
           // The super-block differs, so when every block before the last was
           // equal, the last one differs: no decision.
+          // Layer context: a block next to a drawn wall changes more often
+          // than one in the open (LBLOCK; 0.6 % smaller at the tuning median
+          // with the file's layers).
+          const bool wall_near =
+              kLayer && WallNearBlock(hint_below, hint_row, cell_rows.hint_above, begin, len, full);
           const int copy =
               b + 1 == sb_end && !changed
                   ? 0
-                  : io.Code(&models[kBlockModel + ctx],
+                  : io.Code(&models[(wall_near ? kLayerBlockModel : kBlockModel) + ctx],
                             Io::kEncoding && SameCells(cur + begin, n1 + begin, len, full));
           if (copy) {
             if constexpr (!Io::kEncoding) {
@@ -334,7 +482,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
               }
             }
           } else {
-            CodeCells<kMix>(io, models, mixer, cur, n1, n2, hint_row, begin, end);
+            CodeCells<kMix, kLayer>(io, models, mixer, cell_rows, begin, end);
             changed = true;
           }
           left = copy ? kStateCopy : kStateCoded;
@@ -354,13 +502,13 @@ void CodeTileScan(Io& io, const TileRows& t) {
 // a decoder reached through a reference would be reloaded from memory after
 // every cell; a local whose address is never taken stays in registers
 // (decode ~10 % faster).
-template <bool kMix, bool kFlags, typename Io>
+template <bool kMix, bool kFlags, bool kLayer, typename Io>
 void CodeTile(Io& io, const TileRows& t) {
   if constexpr (Io::kEncoding) {
-    CodeTileScan<kMix, kFlags>(io, t);
+    CodeTileScan<kMix, kFlags, kLayer>(io, t);
   } else {
     Io local = io;
-    CodeTileScan<kMix, kFlags>(local, t);
+    CodeTileScan<kMix, kFlags, kLayer>(local, t);
     io = local;
   }
 }
@@ -385,19 +533,23 @@ bool TileInside(CellRect t, int width, int height) {
          t.x1 <= width && t.y1 <= height;
 }
 
-// Runs the scan of `model` (bit 0: mixed; bit 1: every cell of a changed
-// row, no block flags).
+// Runs the scan of `model` (models 0-3: bit 0 mixed, bit 1 every cell of
+// a changed row, no block flags; models 4-11: block flags, layer context
+// with the terms model - 4 drops).
 template <typename Io>
-void CodeTileAs(Io& io, const TileRows& rows, unsigned model) {
+void CodeTileAs(Io& io, TileRows rows, unsigned model) {
   switch (model) {
     case 0:
-      return CodeTile<false, true>(io, rows);
+      return CodeTile<false, true, false>(io, rows);
     case 1:
-      return CodeTile<true, true>(io, rows);
+      return CodeTile<true, true, false>(io, rows);
     case 2:
-      return CodeTile<false, false>(io, rows);
+      return CodeTile<false, false, false>(io, rows);
+    case 3:
+      return CodeTile<true, false, false>(io, rows);
     default:
-      return CodeTile<true, false>(io, rows);
+      rows.layer_terms = LayerTermsOf(model);
+      return CodeTile<false, true, true>(io, rows);
   }
 }
 
@@ -422,7 +574,7 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
-  if (model > static_cast<unsigned>(TileModel::kMixedAllCells)) {
+  if (model > static_cast<unsigned>(TileModel::kLayerContextLast)) {
     return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);

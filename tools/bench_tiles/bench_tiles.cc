@@ -4,7 +4,8 @@
 // without segments codes them) and libpng level 9.
 //
 //   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
-//               [--dump-pgm DIR] [--jxl FILE]
+//               [--dump-pgm DIR] [--jxl FILE] [--file-layers]
+//               [--compare [--time]]
 //
 // --dump-pgm writes each map as a trinary PGM (map_saver's grey levels) for
 // running other codecs on it; --jxl reads "flat_name bytes" lines (e.g.
@@ -18,9 +19,19 @@
 // and their ratios to PNG-9; encode and decode CPU ns per cell (dec: no
 // hints, hdec: hints, hmdec: kMixed with hints, madec: kMixedAllCells
 // without hints) and decode time over libpng's. --sizes adds the kTemplate
-// bytes with 256 x 256 and 512 x 512 tiles. Tuning maps and held-out maps
-// are listed and summarised (medians) separately: the coder's parameters
-// were chosen on the tuning maps only. Every coding is decoded and compared
+// bytes with 256 x 256 and 512 x 512 tiles. hlay, hl/h, hl/png, hldec,
+// hld/hd: TileModel::kLayerContext with hints (bytes, over kTemplate's with
+// hints, over PNG-9; decode ns, over kTemplate's with hints).
+// --file-layers takes the hints from the layers a default 2.x file stores
+// (ExtractVectorLayers drawn by LayerIndex, what CELL is coded against)
+// instead of BuildLayerHints. --compare prints one line per map instead:
+// map, T(uning)/H(eld-out), cells, hinted kTemplate bytes, kLayerContext
+// bytes, their ratio, (with --time) both decode ns per cell and their
+// ratio, then the bytes of the CELL encoder's choice per tile
+// (EncodeCellTile: the smallest of three models) and their ratio to
+// kTemplate's. Tuning maps and
+// held-out maps are listed and summarised (medians) separately: the coder's
+// parameters were chosen on the tuning maps only. Every coding is decoded and compared
 // with the map (exit 1 if one differs).
 #include <time.h>
 
@@ -30,6 +41,9 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/cell_tiles.h"
+#include "codec/codec/layer_extraction.h"
+#include "codec/codec/layer_hints.h"
 #include "codec/codec/plane_coder.h"
 #include "codec/codec/tile_coder.h"
 #include "codec/codec/tile_hints.h"
@@ -125,6 +139,7 @@ struct Row {
   double cells = 0, png = 0, png_dec_ns = 0, planes = 0, t256 = 0, t512 = 0, jxl = 0;
   Coded plain, hinted, mixed, mixed_hinted;  // template / mixed model, without / with hints
   Coded smallest, smallest_hinted;           // kMixedAllCells without / with hints
+  Coded layered;                             // kLayerContext with hints
 };
 
 double Median(std::vector<double> v) {
@@ -165,6 +180,11 @@ const Column kColumns[] = {
     {"d/png", " %6.3f", [](const Row& r) { return r.plain.dec_ns / r.png_dec_ns; }},
     {"hd/png", " %6.3f", [](const Row& r) { return r.hinted.dec_ns / r.png_dec_ns; }},
     {"hmd/png", " %7.3f", [](const Row& r) { return r.mixed_hinted.dec_ns / r.png_dec_ns; }},
+    {"hlay", " %7.0f", [](const Row& r) { return r.layered.bytes; }},
+    {"hl/h", " %6.3f", [](const Row& r) { return r.layered.bytes / r.hinted.bytes; }},
+    {"hl/png", " %6.3f", [](const Row& r) { return r.layered.bytes / r.png; }},
+    {"hldec", " %6.2f", [](const Row& r) { return r.layered.dec_ns; }},
+    {"hld/hd", " %6.3f", [](const Row& r) { return r.layered.dec_ns / r.hinted.dec_ns; }},
 };
 const Column kSizeColumns[] = {
     {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
@@ -204,6 +224,16 @@ void PrintRows(const std::vector<Row>& rows, bool tuning, bool sizes, bool jxl) 
   std::printf("\n");
 }
 
+// --compare's values per map: cells, bytes of kTemplate and kLayerContext
+// with hints and their ratio, decode ns of both and their ratio, the bytes
+// of the smaller of the two per tile and their ratio to kTemplate's.
+constexpr int kCompareValues = 9;
+
+void PrintCompareValues(const double* v) {
+  std::printf(" %9.0f %7.0f %7.0f %6.3f %6.2f %6.2f %6.3f %7.0f %6.3f\n", v[0], v[1], v[2], v[3],
+              v[4], v[5], v[6], v[7], v[8]);
+}
+
 // "nav2/depot.yaml" -> "nav2__depot".
 std::string FlatName(std::string path) {
   path = path.substr(0, path.rfind('.'));
@@ -241,11 +271,26 @@ double JxlBytes(const std::string& file, const std::string& name) {
   return found;
 }
 
+// The hints a default .lmap 2.x file's tiles are coded against: the
+// layers the encoder extracts and stores, drawn by LayerIndex (spec 6.2).
+StatusOr<std::vector<std::uint8_t>> FileLayerHints(const Grid& g) {
+  LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractVectorLayers(g, EncodeOptions{}));
+  const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
+  return index.TileHints(CellRect{0, 0, g.width(), g.height()});
+}
+
 // Encodes and decodes `g` in tiles, timing both; false when the decode
 // fails or differs from `g`.
-bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out) {
+bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model, Coded* out,
+             bool timed = true) {
   const double cells = static_cast<double>(g.size());
   std::vector<std::vector<std::uint8_t>> data;
+  if (!timed) {
+    data = EncodeAll(g, hints, tile, model);
+    out->bytes = static_cast<double>(TotalBytes(data));
+    std::vector<Cell> decoded(g.size(), Cell::kFree);
+    return DecodeAll(data, hints, g.width(), g.height(), tile, &decoded) && decoded == g.cells();
+  }
   out->enc_ns =
       1e9 / cells * MinSeconds(g.size(), [&] { data = EncodeAll(g, hints, tile, model); });
   out->bytes = static_cast<double>(TotalBytes(data));
@@ -260,7 +305,7 @@ bool Measure(const Grid& g, const std::uint8_t* hints, int tile, TileModel model
 int Run(int argc, char** argv) {
   std::string dir = "/work/shared/maps";
   int tile = 1024;
-  bool sizes = false, hints_on = true;
+  bool sizes = false, hints_on = true, compare = false, timed = false, file_layers = false;
   std::string only, dump, jxl_file;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -270,6 +315,12 @@ int Run(int argc, char** argv) {
       tile = std::atoi(argv[++i]);
     } else if (a == "--sizes") {
       sizes = true;
+    } else if (a == "--compare") {
+      compare = true;
+    } else if (a == "--time") {
+      timed = true;
+    } else if (a == "--file-layers") {
+      file_layers = true;
     } else if (a == "--no-hints") {
       hints_on = false;
     } else if (a == "--only" && i + 1 < argc) {
@@ -281,7 +332,8 @@ int Run(int argc, char** argv) {
     } else {
       std::fprintf(stderr,
                    "usage: bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] "
-                   "[--only SUBSTR] [--dump-pgm DIR] [--jxl FILE]\n");
+                   "[--only SUBSTR] [--dump-pgm DIR] [--jxl FILE] [--file-layers] "
+                   "[--compare [--time]]\n");
       return 2;
     }
   }
@@ -290,6 +342,11 @@ int Run(int argc, char** argv) {
     return 2;
   }
   std::vector<Row> rows;
+  std::vector<double> compared[2][kCompareValues];  // tuning, held-out
+  if (compare) {
+    std::printf("%-44s %s %9s %7s %7s %6s %6s %6s %6s %7s %6s\n", "map", "T/H", "cells", "hinted",
+                "hlay", "hl/h", "hdec", "hldec", "ld/hd", "cell", "cell/h");
+  }
   for (const bench::SplitMap& m : bench::kTuningSplit) {
     if (!only.empty() && std::string(m.path).find(only) == std::string::npos) continue;
     const std::string path = dir + "/" + m.path;
@@ -305,6 +362,42 @@ int Run(int argc, char** argv) {
     r.name = m.path;
     r.tuning = m.tuning;
     r.cells = static_cast<double>(g.size());
+    if (compare) {
+      StatusOr<std::vector<std::uint8_t>> built =
+          file_layers ? FileLayerHints(g) : BuildLayerHints(g);
+      if (!built.ok()) return 1;
+      const std::uint8_t* compare_hints = hints_on ? built->data() : nullptr;
+      Coded a, b;
+      const bool ok = Measure(g, compare_hints, tile, TileModel::kTemplate, &a, timed) &&
+                      Measure(g, compare_hints, tile, TileModel::kLayerContext, &b, timed);
+      // What the CELL encoder writes (EncodeCellTile: the smallest model).
+      double best = 0;
+      for (const CellRect& t : Tiles(g.width(), g.height(), tile)) {
+        std::vector<std::uint8_t> tile_hints;
+        for (int y = t.y0; y < t.y1; ++y) {
+          for (int x = t.x0; x < t.x1; ++x) {
+            tile_hints.push_back(compare_hints ? compare_hints[g.Index(x, y)] : 0);
+          }
+        }
+        best += static_cast<double>(
+            EncodeCellTile(TileCells(g, t), tile_hints, t.x1 - t.x0, t.y1 - t.y0).size());
+      }
+      const double values[kCompareValues] = {r.cells,
+                                             a.bytes,
+                                             b.bytes,
+                                             b.bytes / a.bytes,
+                                             a.dec_ns,
+                                             b.dec_ns,
+                                             a.dec_ns > 0 ? b.dec_ns / a.dec_ns : 0,
+                                             best,
+                                             best / a.bytes};
+      std::printf("%-44s %s", m.path, m.tuning ? "T" : "H");
+      PrintCompareValues(values);
+      for (int k = 0; k < kCompareValues; ++k) compared[m.tuning ? 0 : 1][k].push_back(values[k]);
+      std::fflush(stdout);
+      if (!ok) return 1;
+      continue;
+    }
     std::string best_png;
     for (bench::PngLayout layout :
          {bench::PngLayout::kGrey8, bench::PngLayout::kPalette8, bench::PngLayout::kPalette2}) {
@@ -320,7 +413,8 @@ int Run(int argc, char** argv) {
 
     std::vector<std::uint8_t> hints;
     if (hints_on) {
-      StatusOr<std::vector<std::uint8_t>> built = BuildLayerHints(g);
+      StatusOr<std::vector<std::uint8_t>> built =
+          file_layers ? FileLayerHints(g) : BuildLayerHints(g);
       if (!built.ok()) {
         std::fprintf(stderr, "bench_tiles: %s: hints: %s\n", m.path,
                      built.status().ToString().c_str());
@@ -335,7 +429,8 @@ int Run(int argc, char** argv) {
     if (hints_on) {
       ok = ok && Measure(g, hint_ptr, tile, TileModel::kTemplate, &r.hinted) &&
            Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted) &&
-           Measure(g, hint_ptr, tile, TileModel::kMixedAllCells, &r.smallest_hinted);
+           Measure(g, hint_ptr, tile, TileModel::kMixedAllCells, &r.smallest_hinted) &&
+           Measure(g, hint_ptr, tile, TileModel::kLayerContext, &r.layered);
     }
     if (!ok) {
       std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
@@ -348,6 +443,15 @@ int Run(int argc, char** argv) {
     if (!jxl_file.empty()) r.jxl = JxlBytes(jxl_file, FlatName(m.path));
     rows.push_back(r);
     std::fprintf(stderr, "%s done\n", m.path);
+  }
+  if (compare) {
+    for (int set = 0; set < 2; ++set) {
+      double medians[kCompareValues];
+      for (int k = 0; k < kCompareValues; ++k) medians[k] = Median(compared[set][k]);
+      std::printf("%-44s %s", set == 0 ? "median (tuning)" : "median (held-out)", set ? "H" : "T");
+      PrintCompareValues(medians);
+    }
+    return 0;
   }
   std::printf(
       "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell)\n"

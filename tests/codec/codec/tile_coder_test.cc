@@ -99,7 +99,9 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
     }
     SCOPED_TRACE("iteration " + std::to_string(iter));
     for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kTemplateAllCells,
-                            TileModel::kMixedAllCells}) {
+                            TileModel::kMixedAllCells, TileModel::kLayerContext,
+                            LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange),
+                            TileModel::kLayerContextLast}) {
       const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
       ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
     }
@@ -169,7 +171,8 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
         local_hints[static_cast<std::size_t>(y) * stride + x] = hints[from];
       }
     }
-    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed}) {
+    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext,
+                            LayerContextWithout(kLayerTermNorthChange)}) {
       const Bytes data =
           EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
       ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
@@ -220,11 +223,11 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
-        // The four models in turn over the tiles: the decoder reads each.
+        // The twelve models in turn over the tiles: the decoder reads each.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          const TileModel model = static_cast<TileModel>(data.size() % 4);
+          const TileModel model = static_cast<TileModel>(data.size() % 12);
           data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
@@ -241,6 +244,25 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
       }
     }
   }
+}
+
+// The layer context pays where the layers are drawn: over the bundled
+// maps with their hints, model 4 codes fewer bytes than model 0.
+TEST(TileCoderTest, LayerContextIsSmallerThanTheTemplateWithHints) {
+  std::size_t template_bytes = 0, layer_bytes = 0;
+  for (const Grid& g : BundledMaps()) {
+    StatusOr<std::vector<std::uint8_t>> hints = BuildLayerHints(g);
+    ASSERT_TRUE(hints.ok()) << hints.status().ToString();
+    for (const CellRect& t : Tiles(g.width(), g.height(), 1024)) {
+      template_bytes += EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), t,
+                                        TileModel::kTemplate)
+                            .size();
+      layer_bytes += EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), t,
+                                     TileModel::kLayerContext)
+                         .size();
+    }
+  }
+  EXPECT_LT(layer_bytes, template_bytes);
 }
 
 // Every truncation and every appended byte is an error; random byte flips
@@ -270,11 +292,13 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                                  canvas.data())
                      .ok());
   }
-  Bytes bad_model = data;
-  bad_model[0] |= 4;  // model 4 and up do not exist
-  EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
-                               all, canvas.data())
-                   .ok());
+  for (std::uint8_t model : {12, 13, 31}) {  // models 12 and up do not exist
+    Bytes bad_model = data;
+    bad_model[0] = static_cast<std::uint8_t>((bad_model[0] & ~31) | model);
+    EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
+                                 all, canvas.data())
+                     .ok());
+  }
   std::mt19937 rng(99);
   for (int iter = 0; iter < 200; ++iter) {
     Bytes flipped = data;
@@ -290,7 +314,8 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
 // must equal it, so the spec and the code say the same thing.
 class SpecEncoder {
  public:
-  // `model` as the tile's model id: bit 0 mixed, bit 1 every cell.
+  // `model` as the tile's model id: for 0-3 bit 0 mixed, bit 1 every cell;
+  // 4-11 the layer context without the terms of the bits of model - 4.
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
               CellRect tile, int model)
       : cells_(cells),
@@ -298,8 +323,10 @@ class SpecEncoder {
         width_(width),
         t_(tile),
         model_(model),
-        mixed_((model & 1) != 0),
-        all_cells_((model & 2) != 0) {}
+        mixed_(model < 4 && (model & 1) != 0),
+        all_cells_(model < 4 && (model & 2) != 0),
+        layer_(model >= 4),
+        dropped_(model >= 4 ? model - 4 : 0) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
@@ -345,7 +372,9 @@ class SpecEncoder {
           if (b + 1 == b_end && !changed) {
             copy = false;  // implied
           } else {
-            Bit(kBlock +
+            // Model 4: LBLOCK (after LEQUAL and LOTHER) next to a drawn wall.
+            const int table = layer_ && WallNear(ba, be, r) ? kEqual + 2 * 3240 : kBlock;
+            Bit(table +
                     (((below_block[b] * 3 + left) * 3 + above_right) * 2 + HintsSame(ba, be, r)) *
                         4 +
                     Uniform(ba, be, r),
@@ -396,7 +425,42 @@ class SpecEncoder {
     }
     return 1 + V(a, r - 1);
   }
+  // Whether bit 0 is set in a hint of columns [a, e) of rows r - 1 .. r + 1
+  // (inside the tile).
+  bool WallNear(int a, int e, int r) const {
+    for (int rr = r - 1; rr <= r + 1; ++rr) {
+      for (int c = a; c < e; ++c) {
+        if (LayerH(c, rr) & 1) return true;
+      }
+    }
+    return false;
+  }
+  // Model 4's hint: bits 0-3 inside the tile, 0 outside it.
+  int LayerH(int c, int r) const {
+    if (c < 0 || r < 0 || c >= t_.x1 - t_.x0 || r >= t_.y1 - t_.y0) return 0;
+    return H(c, r) & 15;
+  }
+  // Model 4 ("Layer context"): class and pattern as the spec's table says.
+  void CodeLayerCell(int c, int r) {
+    const int h = LayerH(c, r);
+    const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
+    const bool wall_next =
+        ((LayerH(c - 1, r) | LayerH(c + 1, r) | LayerH(c, r - 1) | LayerH(c, r + 1)) & 1) != 0;
+    int other_class = hc;
+    if (!(dropped_ & 4) && hc != 1 && !wall_next) other_class += 20;
+    int layer_class = other_class;
+    if (!(dropped_ & 1) && LayerH(c - 1, r) != h) layer_class += 5;
+    if (!(dropped_ & 2) && LayerH(c, r - 1) != h) layer_class += 10;
+    const int w = V(c - 1, r), v = V(c, r);
+    const int pattern = ((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1);
+    const int ctx = pattern * 40 + layer_class;
+    Bit(kEqual + ctx, v == w);
+    if (v == w) return;
+    const int hi = w == 2 ? 1 : 2;
+    Bit(kEqual + 3240 + pattern * 40 + other_class, v == hi);
+  }
   void CodeCell(int c, int r) {
+    if (layer_) return CodeLayerCell(c, r);
     const int h = H(c, r);
     const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
     const int w = V(c - 1, r), v = V(c, r);
@@ -547,6 +611,8 @@ class SpecEncoder {
   int model_;
   bool mixed_;
   bool all_cells_;
+  bool layer_;
+  int dropped_;  // layer terms left out: 1 change from W, 2 from N, 4 wall
   std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
   std::vector<Model> models_ = std::vector<Model>(kNear + 405);
   std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
@@ -569,14 +635,17 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     std::vector<std::uint8_t> hints;
     if (iter % 2) {
       hints.resize(cells.size());
-      for (auto& h : hints) h = rng() % 4 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+      // Bits 4-7 are set in some tiles: they count in the flags' "hints same"
+      // and are ignored by model 4's layer class.
+      const unsigned values = iter % 4 == 1 ? 256 : 16;
+      for (auto& h : hints) h = rng() % 4 == 0 ? static_cast<std::uint8_t>(rng() % values) : 0;
     }
     const CellRect tile = iter % 3 ? RandomTile(rng, width, height) : CellRect{0, 0, width, height};
     SCOPED_TRACE("iteration " + std::to_string(iter));
     const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
     EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
               SpecEncoder(cells, hints, width, tile, 0).Encode());
-    for (int model = 0; model < 4; ++model) {
+    for (int model = 0; model <= 11; ++model) {
       EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(cells, hints, width, tile, model).Encode())
@@ -590,7 +659,7 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
               SpecEncoder(g.cells(), none, g.width(), all, 0).Encode());
-    for (int model = 1; model < 4; ++model) {
+    for (int model = 1; model <= 11; ++model) {
       EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(g.cells(), *hints, g.width(), all, model).Encode())

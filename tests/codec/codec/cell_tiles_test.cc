@@ -1,0 +1,122 @@
+// The CELL chunk's tiles: which model the encoder writes in each, that
+// threads do not change the bytes, and that files whose tiles use the
+// models before the layer context still decode.
+#include "codec/codec/cell_tiles.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "codec/codec/layer_extraction.h"
+#include "format/byte_io.h"
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
+#include "linemap/vector_layers.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+Grid Depot() {
+  StatusOr<Grid> g = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  EXPECT_TRUE(g.ok()) << g.status().ToString();
+  return g.ok() ? std::move(*g) : Grid();
+}
+
+// The first byte of each non-empty tile's data in a CELL body (its model
+// id in bits 0-4, spec/tile_coding.md section 2).
+std::vector<unsigned> TileModels(const std::vector<std::uint8_t>& body, const TileLayout& layout) {
+  ByteCursor cursor(body);
+  EXPECT_TRUE(cursor.ReadVarint("tile size").ok());
+  std::vector<std::uint64_t> lengths;
+  for (std::uint64_t i = 0; i < layout.count(); ++i) {
+    StatusOr<std::uint64_t> n = cursor.ReadVarint("length");
+    EXPECT_TRUE(n.ok());
+    lengths.push_back(n.ok() ? *n : 0);
+  }
+  std::vector<unsigned> models;
+  for (std::uint64_t n : lengths) {
+    StatusOr<const std::uint8_t*> data = cursor.ReadBytes(static_cast<std::size_t>(n), "tile");
+    EXPECT_TRUE(data.ok());
+    if (data.ok() && n > 0) models.push_back((*data)[0] & 31u);
+  }
+  return models;
+}
+
+// Each tile holds the smallest of the layer context, the layer context
+// with the wall term alone and the template (the template alone without
+// hints); threads change no byte; the chunk
+// decodes to the map on any number of threads.
+TEST(CellTilesTest, EachTileTakesTheSmallerModelWhateverTheThreads) {
+  const Grid g = Depot();
+  StatusOr<VectorLayers> extracted = ExtractVectorLayers(g, EncodeOptions{});
+  ASSERT_TRUE(extracted.ok()) << extracted.status().ToString();
+  const VectorLayers none;
+  const VectorLayers& with_layers = *extracted;
+  for (const VectorLayers* layers : {&none, &with_layers}) {
+    const LayerIndex index(layers->walls, layers->rooms, layers->furniture);
+    for (int tile_size : {16, 97, 256}) {
+      SCOPED_TRACE("tile size " + std::to_string(tile_size) +
+                   (layers == &none ? " without layers" : " with layers"));
+      const std::vector<std::uint8_t> one = EncodeCellChunk(g, index, tile_size, 1);
+      EXPECT_EQ(one, EncodeCellChunk(g, index, tile_size, 3));
+      const TileLayout layout(g.width(), g.height(), tile_size);
+      std::vector<unsigned> expected;
+      for (std::uint64_t i = 0; i < layout.count(); ++i) {
+        const CellRect t = layout.Tile(i);
+        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+        const std::vector<Cell> cells = TileCells(g, t);
+        const std::vector<std::uint8_t> hints = index.TileHints(t);
+        const auto size = [&](TileModel model) {
+          return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th}, model)
+              .size();
+        };
+        const bool any_hint =
+            std::any_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h != 0; });
+        // Model 4, then 7 (the wall term alone), then 0, each only when
+        // strictly smaller than the ones before.
+        unsigned model = 0;
+        if (any_hint) {
+          model = 4;
+          std::size_t best = size(TileModel::kLayerContext);
+          if (size(static_cast<TileModel>(7)) < best) {
+            model = 7;
+            best = size(static_cast<TileModel>(7));
+          }
+          if (size(TileModel::kTemplate) < best) model = 0;
+        }
+        expected.push_back(model);
+      }
+      EXPECT_EQ(TileModels(one, layout), expected);
+      if (layers == &none) {
+        EXPECT_EQ(static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 0u)),
+                  expected.size());
+      } else {
+        EXPECT_LT(static_cast<std::size_t>(std::count(expected.begin(), expected.end(), 0u)),
+                  expected.size());
+      }
+      std::vector<Cell> out(g.size(), Cell::kFree);
+      for (int threads : {1, 2}) {
+        const Status s =
+            DecodeCellChunk(one, index, g.width(), g.height(),
+                            CellRect{0, 0, g.width(), g.height()}, threads, out.data());
+        ASSERT_TRUE(s.ok()) << s.ToString();
+        EXPECT_EQ(out, g.cells()) << threads << " threads";
+      }
+    }
+  }
+}
+
+// Written by the encoder of 2.0 (tile model 0 in every tile, before the
+// layer context): it decodes to its map forever.
+TEST(CellTilesTest, TemplateModelFileDecodes) {
+  StatusOr<Grid> decoded =
+      LoadLmap(testing::SourceDir() + "/tests/data/lmap/depot_v2_0.lmap");
+  ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+  EXPECT_EQ(*decoded, Depot());
+}
+
+}  // namespace
+}  // namespace linemap
