@@ -5,6 +5,7 @@
 // PGM's first row is the grid's last), and each band is written to the PGM
 // before the next is decoded.
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,27 +72,45 @@ Status WriteUnknown(int width, int height, RosMapWriter* writer, CellCounts* cou
 // The cells of a 2.x file, band by band from the top of the map. Decoding
 // errors get `where` (the .lmap file) as context; writing errors name the
 // output already.
-Status WriteCellBands(const V2File& file, const DecodeLimits& limits, const std::string& where,
+Status WriteCellBands(V2File* file, const DecodeLimits& limits, const std::string& where,
                       RosMapWriter* writer, CellCounts* counts) {
-  const int width = file.header.width;
-  const int height = file.header.height;
-  if (!file.has_cells) return WriteUnknown(width, height, writer, counts);
-  const V2CellDecoder cells(file);
-  StatusOr<int> tile_size = cells.TileSize();
+  const int width = file->header.width;
+  const int height = file->header.height;
+  if (!file->has_cells) return WriteUnknown(width, height, writer, counts);
+  StatusOr<int> tile_size = V2CellDecoder(*file).TileSize();
   if (!tile_size.ok()) return tile_size.status().WithContext(where);
   const Bands bands = ChooseBands(width, height, *tile_size);
+  // The layers of LAYR's sections are read for one band of section rows at
+  // a time, and kept while the cell bands stay inside it.
+  int layer_rows = height;
+  if (file->has_layer_sections) {
+    StatusOr<int> rows = LayerBandRows(*file);
+    if (!rows.ok()) return rows.status().WithContext(where);
+    layer_rows = *rows;
+  }
+  int held_row0 = -1, held_row1 = -1;
+  std::optional<V2CellDecoder> cells;
   std::vector<Cell> band(static_cast<std::size_t>(bands.rows) * bands.cols);
   // Bands start on tile rows counted from row 0, so each decodes whole tiles:
   // the top band is the partial one.
   const int top_band_row0 = (height - 1) / bands.rows * bands.rows;
   for (int row0 = top_band_row0; row0 >= 0; row0 -= bands.rows) {
     const int row1 = std::min(height, row0 + bands.rows);
+    if (!cells || row0 < held_row0 || row1 > held_row1) {
+      held_row0 = row0 / layer_rows * layer_rows;
+      held_row1 = static_cast<int>(std::min<std::int64_t>(
+          height, (std::int64_t{row1} + layer_rows - 1) / layer_rows * layer_rows));
+      const Status read =
+          ReadLayersReaching(limits, CellRect{0, held_row0, width, held_row1}, file);
+      if (!read.ok()) return read.WithContext(where);
+      cells.emplace(*file);
+    }
     for (int col0 = 0; col0 < width; col0 += bands.cols) {
       const int col1 = std::min(width, col0 + bands.cols);
       const std::size_t n = static_cast<std::size_t>(col1 - col0) * (row1 - row0);
       // No fill first: the tiles cover the band, and each writes its cells.
       const Status decoded =
-          cells.Decode(CellRect{col0, row0, col1, row1}, limits.max_threads, band.data());
+          cells->Decode(CellRect{col0, row0, col1, row1}, limits.max_threads, band.data());
       if (!decoded.ok()) return decoded.WithContext(where);
       AddCounts(band.data(), n, counts);
       LINEMAP_RETURN_IF_ERROR(
@@ -123,7 +142,8 @@ StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
     summary.counts = grid->Count();
     return summary;
   }
-  StatusOr<V2File> file = ReadV2File(*view, limits, /*read_cells=*/true, /*expand_chains=*/false);
+  StatusOr<V2File> file = ReadV2File(*view, limits, /*read_cells=*/true, /*expand_chains=*/false,
+                                     /*window=*/nullptr, /*defer_sections=*/true);
   if (!file.ok()) return file.status().WithContext(where);
   summary.width = file->header.width;
   summary.height = file->header.height;
@@ -131,7 +151,7 @@ StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
   LINEMAP_ASSIGN_OR_RETURN(
       RosMapWriter writer,
       RosMapWriter::Open(yaml_path, summary.width, summary.height, summary.meta, durability));
-  LINEMAP_RETURN_IF_ERROR(WriteCellBands(*file, limits, where, &writer, &summary.counts));
+  LINEMAP_RETURN_IF_ERROR(WriteCellBands(&*file, limits, where, &writer, &summary.counts));
   LINEMAP_RETURN_IF_ERROR(writer.Commit());
   return summary;
 }

@@ -121,10 +121,8 @@ Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const C
   return Status::Ok();
 }
 
-// Rows of the bands a large window is decoded in: LAYR's section side
-// rounded up to whole tiles, so that a band's tiles draw only from the
-// sections of its rows (on the 282-Mcell map a quarter of the layers is
-// held at a time: about 16 MB less) and no tile is decoded twice.
+}  // namespace
+
 StatusOr<int> LayerBandRows(const V2File& file) {
   LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder(file).TileSize());
   ByteCursor cursor(file.layer_body);
@@ -134,7 +132,10 @@ StatusOr<int> LayerBandRows(const V2File& file) {
   return static_cast<int>(std::min<std::uint64_t>(rows, 1u << 30));
 }
 
-}  // namespace
+Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
+  if (!file->has_layer_sections) return Status::Ok();
+  return ReadLayerSections(limits, false, &rect, file);
+}
 
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
                             bool expand_chains, const CellRect* window, bool defer_sections) {
@@ -247,7 +248,7 @@ StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& windo
     const int y1 =
         static_cast<int>(std::min<std::int64_t>(rect.y1, (std::int64_t{y0} / band + 1) * band));
     const CellRect part{rect.x0, y0, rect.x1, y1};
-    LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, false, &part, &file));
+    LINEMAP_RETURN_IF_ERROR(ReadLayersReaching(limits, part, &file));
     Cell* out = grid.mutable_cells().data() + static_cast<std::size_t>(y0 - rect.y0) * width;
     LINEMAP_RETURN_IF_ERROR(V2CellDecoder(file).Decode(part, limits.max_threads, out));
     y0 = y1;

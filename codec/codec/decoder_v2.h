@@ -60,6 +60,17 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
                             bool expand_chains = true, const CellRect* window = nullptr,
                             bool defer_sections = false);
 
+// Reading a deferred LAYR (ReadV2File's `defer_sections`) part by part, so
+// that a decode holds the layers of one band of rows at a time (on the
+// 282-Mcell map a quarter of them):
+// the rows of such a band: LAYR's section side rounded up to whole tiles of
+// the cells' chunk, so that bands start on tile rows and no tile is decoded
+// twice;
+StatusOr<int> LayerBandRows(const V2File& file);
+// the layers of the sections that draw into the tiles meeting `rect`, in
+// place of those `file` held (nothing to do without LAYR).
+Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
+
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);
 
