@@ -56,36 +56,46 @@ bool TouchesEdge(const BoundingBox& box, int width, int height) {
          box.max_row == height - 1;
 }
 
+// One row of a chamfer pass: `row` relaxed from the row before it in the
+// pass (`prev`) and from its own cell before it in the pass (`step` -1 on
+// the forward pass, +1 on the backward one). The terms from `prev` do not
+// depend on the row being written, so they are taken first in a loop the
+// compiler vectorises; only the chain along the row stays serial. The
+// minimum is the same whichever order its terms come in.
+void ChamferRow(std::uint16_t* row, const std::uint16_t* prev, int pw, int step,
+                std::vector<std::uint16_t>* scratch) {
+  std::uint16_t* t = scratch->data();
+  for (int c = 1; c < pw - 1; ++c) {
+    int best = std::min(prev[c] + kSide, std::min(prev[c - 1], prev[c + 1]) + kDiagonal);
+    best = std::min<int>(best, row[c]);
+    t[c] = row[c] ? static_cast<std::uint16_t>(std::min(best, 0xfffe)) : 0;
+  }
+  if (step < 0) {
+    for (int c = 1; c < pw - 1; ++c) {
+      if (t[c]) t[c] = static_cast<std::uint16_t>(std::min<int>(t[c], t[c - 1] + kSide));
+      row[c] = t[c];
+    }
+  } else {
+    for (int c = pw - 2; c >= 1; --c) {
+      if (t[c]) t[c] = static_cast<std::uint16_t>(std::min<int>(t[c], t[c + 1] + kSide));
+      row[c] = t[c];
+    }
+  }
+}
+
 // Two-pass chamfer transform on the padded grid (its frame is wall, so
 // every room-space cell ends finite).
 void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph) {
   std::uint16_t* d = dist->data();
-  auto relax = [](std::uint16_t cur, int a) {
-    return static_cast<std::uint16_t>(std::min<int>(cur, std::min(a, 0xfffe)));
-  };
+  // The frame columns stay 0 in the scratch row, as in the grid.
+  std::vector<std::uint16_t> scratch(static_cast<std::size_t>(pw), 0);
   for (int r = 1; r < ph - 1; ++r) {
     std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    const std::uint16_t* up = row - pw;
-    for (int c = 1; c < pw - 1; ++c) {
-      if (!row[c]) continue;
-      int best = row[c - 1] + kSide;
-      best = std::min(best, up[c] + kSide);
-      best = std::min(best, up[c - 1] + kDiagonal);
-      best = std::min(best, up[c + 1] + kDiagonal);
-      row[c] = relax(row[c], best);
-    }
+    ChamferRow(row, row - pw, pw, -1, &scratch);
   }
   for (int r = ph - 2; r >= 1; --r) {
     std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    const std::uint16_t* down = row + pw;
-    for (int c = pw - 2; c >= 1; --c) {
-      if (!row[c]) continue;
-      int best = row[c + 1] + kSide;
-      best = std::min(best, down[c] + kSide);
-      best = std::min(best, down[c - 1] + kDiagonal);
-      best = std::min(best, down[c + 1] + kDiagonal);
-      row[c] = relax(row[c], best);
-    }
+    ChamferRow(row, row + pw, pw, +1, &scratch);
   }
 }
 
@@ -406,22 +416,26 @@ std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::
   const int w = grid.width(), h = grid.height();
   const std::size_t pw = static_cast<std::size_t>(w) + 2;
   std::vector<std::int32_t> room_of_piece(graph->size(), -1);
+  // Each piece's root once, not once per cell: the union-find is final.
+  std::vector<std::int32_t> root_of(graph->size());
+  for (std::int32_t k = 0; k < graph->size(); ++k) root_of[k] = graph->Root(k);
   flood->room_of_cell.assign(grid.size(), 0);
   std::int32_t rooms = 0;
   for (int r = 0; r < h; ++r) {
+    std::int32_t* out = flood->room_of_cell.data() + grid.Index(0, r);
     for (int c = 0; c < w; ++c) {
       const std::int32_t piece = graph->PieceOf((r + 1) * pw + (c + 1));
       if (piece < 0) continue;
-      const std::int32_t root = graph->Root(piece);
+      const std::int32_t root = root_of[piece];
       if (graph->Area(root) < min_cells) continue;
       if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
-      flood->room_of_cell[grid.Index(c, r)] = room_of_piece[root];
+      out[c] = room_of_piece[root];
     }
   }
   flood->room_count = rooms;
   flood->peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
   for (std::int32_t k = 0; k < graph->size(); ++k) {
-    const std::int32_t room = room_of_piece[graph->Root(k)];
+    const std::int32_t room = room_of_piece[root_of[k]];
     if (room > 0) flood->peak[room] = std::max(flood->peak[room], graph->Peak(k));
   }
   return room_of_piece;
