@@ -93,6 +93,7 @@ class BumpFinder {
   }
   void MarkRun(const Axis& axis, int line, int begin, int end);
   void MarkShortRuns(const Axis& axis);
+  bool BridgeLine(int r, int dc, int dr);
   bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
               WallPiece* piece) const;
 
@@ -175,16 +176,32 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
   const int dc = axis.rows ? 0 : 1, dr = axis.rows ? 1 : 0;
   for (int r = dr; r + dr < h; ++r) {
     if (!row_marked_[r - dr] || !row_marked_[r + dr]) continue;
-    for (int c = dc; c + dc < w; ++c) {
-      const std::size_t i = grid_.Index(c, r);
-      if (mark_[i] || !blocked_[i]) continue;
-      const std::int32_t before = mark_[grid_.Index(c - dc, r - dr)];
-      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) {
-        mark_[i] = before;
-        row_marked_[r] = 1;
-      }
+    if (BridgeLine(r, dc, dr)) row_marked_[r] = 1;
+  }
+}
+
+// The noise bridges of one row (MarkShortRuns): its unmarked blocked cells
+// between two cells of one room's marks, the row's neighbours across the
+// runs (`dc`, `dr`: one cell along the other axis). The row is read through
+// plain pointers, so the scan over the row's many unmarked cells stays a
+// tight loop. Returns whether it marked any cell.
+bool BumpFinder::BridgeLine(int r, int dc, int dr) {
+  const int w = grid_.width();
+  const std::size_t row = grid_.Index(0, r);
+  const std::ptrdiff_t before = -static_cast<std::ptrdiff_t>(dr) * w - dc;
+  const std::ptrdiff_t after = static_cast<std::ptrdiff_t>(dr) * w + dc;
+  std::int32_t* marks = mark_.data() + row;
+  const std::uint8_t* blocked = blocked_.data() + row;
+  bool marked = false;
+  for (int c = dc; c + dc < w; ++c) {
+    if (marks[c] || !blocked[c]) continue;
+    const std::int32_t room = marks[c + before];
+    if (room && room == marks[c + after]) {
+      marks[c] = room;
+      marked = true;
     }
   }
+  return marked;
 }
 
 // `cells`: one 4-connected set of cells marked with `room`.
@@ -306,9 +323,11 @@ void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
   std::vector<std::size_t> cells, stack;
   for (int r0 = 0; r0 < h; ++r0) {
     if (!row_marked_[r0]) continue;  // a row without marks
+    const std::int32_t* marks = mark_.data() + grid_.Index(0, r0);
     for (int c0 = 0; c0 < w; ++c0) {
+      if (!marks[c0]) continue;  // most cells of a marked row
       const std::size_t seed = grid_.Index(c0, r0);
-      if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
+      if (seen[seed] || claimed_[seed]) continue;
       const std::int32_t room = mark_[seed];
       cells.clear();
       stack.assign(1, seed);
