@@ -70,15 +70,18 @@ void ChamferRow(std::uint16_t* row, const std::uint16_t* prev, int pw, int step,
     best = std::min<int>(best, row[c]);
     t[c] = row[c] ? static_cast<std::uint16_t>(std::min(best, 0xfffe)) : 0;
   }
+  // The running value needs no test for walls: a wall's 0 is below
+  // anything the step could bring, and the frame cell before the row is 0.
+  int run = 0;
   if (step < 0) {
     for (int c = 1; c < pw - 1; ++c) {
-      if (t[c]) t[c] = static_cast<std::uint16_t>(std::min<int>(t[c], t[c - 1] + kSide));
-      row[c] = t[c];
+      run = std::min<int>(t[c], run + kSide);
+      row[c] = static_cast<std::uint16_t>(run);
     }
   } else {
     for (int c = pw - 2; c >= 1; --c) {
-      if (t[c]) t[c] = static_cast<std::uint16_t>(std::min<int>(t[c], t[c + 1] + kSide));
-      row[c] = t[c];
+      run = std::min<int>(t[c], run + kSide);
+      row[c] = static_cast<std::uint16_t>(run);
     }
   }
 }
@@ -141,6 +144,9 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
   return rule;
 }
 
+// Cells of the flood's order whose neighbours are fetched ahead.
+constexpr std::size_t kPrefetchAhead = 16;
+
 // Step 3a: the merge tree. Returns the contacts of pieces kept apart;
 // `parent` ends as a union-find forest over padded cells (-1: no room space).
 std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const DoorRule& rule,
@@ -169,7 +175,21 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
   const bool keep_wide_narrowings = rule.max_room_cells > 0;
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
-  for (const std::int32_t cell : order) {
+  // The clearance of the cells in order, from the buckets' ends (start[d]
+  // now ends bucket d; bucket `top` starts at 0): reading it from `dist`
+  // would be one more cache miss per cell.
+  int level = top;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    while (k >= static_cast<std::size_t>(start[level])) --level;
+    const std::int32_t cell = order[k];
+    // Cells of one clearance lie all over the map: on a large map their
+    // neighbours' entries are cache misses, fetched ahead here.
+    if (k + kPrefetchAhead < order.size()) {
+      const std::int32_t* ahead = parent.data() + order[k + kPrefetchAhead];
+      __builtin_prefetch(ahead - pw);
+      __builtin_prefetch(ahead);
+      __builtin_prefetch(ahead + pw);
+    }
     std::int32_t roots[4];
     int n = 0;
     for (const std::int32_t off : offsets) {
@@ -189,7 +209,7 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
       if (dist[roots[k]] > dist[primary]) primary = roots[k];
     }
     parent[cell] = primary;
-    const int s = dist[cell];
+    const int s = level;
     for (int k = 0; k < n; ++k) {
       const std::int32_t other = roots[k];
       if (other == primary) continue;
