@@ -40,13 +40,14 @@ bool IsWallPiece(std::size_t cells, std::size_t perimeter, const SegmentationOpt
 std::vector<std::size_t> Perimeters(const Labeling& labels,
                                     const std::vector<std::uint8_t>& enclosed) {
   std::vector<std::size_t> perimeter(labels.components.size() + 1, 0);
-  for (int r = 0; r < labels.height; ++r) {
-    for (int c = 0; c < labels.width; ++c) {
-      const std::int32_t k = labels.at(c, r);
-      if (!k || !enclosed[k]) continue;
-      perimeter[k] += (labels.get(c - 1, r) != k) + (labels.get(c + 1, r) != k) +
-                      (labels.get(c, r - 1) != k) + (labels.get(c, r + 1) != k);
-    }
+  // Enclosed components stay off the map edge (TouchesEdge), so their
+  // cells' neighbours are all on the map.
+  const std::size_t w = static_cast<std::size_t>(labels.width);
+  const std::int32_t* l = labels.labels.data();
+  for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+    const std::int32_t k = l[i];
+    if (!k || !enclosed[k]) continue;
+    perimeter[k] += (l[i - 1] != k) + (l[i + 1] != k) + (l[i - w] != k) + (l[i + w] != k);
   }
   return perimeter;
 }
