@@ -235,7 +235,10 @@ struct PieceEdge {
 // them (widest contact per pair), and their merging (steps 3b and 3c).
 class PieceGraph {
  public:
-  PieceGraph(std::vector<std::int32_t>* parent, const std::vector<std::uint16_t>& clearance,
+  // Takes over the flood's union-find forest (`parent`), whose storage
+  // becomes the piece of each cell: a large map holds one such array, not
+  // two.
+  PieceGraph(std::vector<std::int32_t> parent, const std::vector<std::uint16_t>& clearance,
              const std::vector<Contact>& contacts);
 
   // Step 3b: pieces joined by passages wider than a door are one room, as
@@ -249,6 +252,8 @@ class PieceGraph {
 
   // The piece of a padded cell (-1: no room space), and its final root.
   std::int32_t PieceOf(std::size_t padded_cell) const { return piece_of_[padded_cell]; }
+  // Hands over the pieces of the padded cells (PieceOf() is then void).
+  std::vector<std::int32_t> TakePieces() { return std::move(piece_of_); }
   std::int32_t Root(std::int32_t piece) { return Find(parent_, piece); }
   std::int32_t size() const { return static_cast<std::int32_t>(area_.size()); }
   std::size_t Area(std::int32_t root) const { return area_[root]; }
@@ -269,20 +274,36 @@ class PieceGraph {
   std::vector<std::unordered_map<std::int32_t, PieceEdge>> adjacency_;  // between roots
 };
 
-PieceGraph::PieceGraph(std::vector<std::int32_t>* parent,
+PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
                        const std::vector<std::uint16_t>& clearance,
                        const std::vector<Contact>& contacts)
-    : piece_of_(parent->size(), -1) {
-  for (std::size_t i = 0; i < parent->size(); ++i) {
-    if ((*parent)[i] < 0) continue;
-    const std::int32_t root = Find(*parent, static_cast<std::int32_t>(i));
-    if (piece_of_[root] < 0) {
-      piece_of_[root] = static_cast<std::int32_t>(area_.size());
+    : piece_of_(std::move(parent)) {
+  // Every cell straight to its root first (a root is its own parent, so
+  // the forest stays valid while it is rewritten).
+  std::vector<std::int32_t>& forest = piece_of_;
+  for (std::size_t i = 0; i < forest.size(); ++i) {
+    if (forest[i] >= 0) forest[i] = Find(forest, static_cast<std::int32_t>(i));
+  }
+  // Then, in cell order, pieces numbered as their first cells come: a root
+  // cell's entry turns into its piece, coded -2 - piece, when the piece's
+  // first cell is met (so later cells of the piece find it there), and
+  // every cell takes the same code.
+  constexpr auto code = [](std::int32_t piece) { return -2 - piece; };
+  for (std::size_t i = 0; i < forest.size(); ++i) {
+    const std::int32_t root = forest[i];
+    if (root < 0) continue;   // no room space, or a root coded already
+    if (forest[root] >= 0) {  // the piece's first cell
+      forest[root] = code(static_cast<std::int32_t>(area_.size()));
       area_.push_back(0);
       peak_.push_back(clearance[root]);  // a root is its piece's highest cell
     }
-    piece_of_[i] = piece_of_[root];
-    ++area_[piece_of_[i]];
+    forest[i] = forest[root];
+  }
+  for (std::int32_t& entry : forest) {
+    if (entry != -1) {
+      entry = code(entry);  // the code is its own inverse
+      ++area_[entry];
+    }
   }
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
@@ -410,15 +431,17 @@ void FindFurnitureCandidates(const Grid& grid, const SegmentationOptions& option
   }
 }
 
-// Step 2: clearance over room space (free cells and furniture candidates).
-void ComputeClearance(const Grid& grid, RoomFlood* flood) {
+// Step 2: clearance over room space (free cells and furniture
+// candidates): chamfer 3-4 units on the grid padded by one cell on every
+// side ((width + 2) x (height + 2)), 0 outside room space.
+std::vector<std::uint16_t> ComputeClearance(const Grid& grid, RoomFlood* flood) {
   const int w = grid.width(), h = grid.height();
   const int pw = w + 2, ph = h + 2;
   flood->width = w;
   flood->height = h;
-  flood->clearance.assign(static_cast<std::size_t>(pw) * ph, 0);
+  std::vector<std::uint16_t> clearance(static_cast<std::size_t>(pw) * ph, 0);
   for (int r = 0; r < h; ++r) {
-    std::uint16_t* out = flood->clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
+    std::uint16_t* out = clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
     for (int c = 0; c < w; ++c) {
       const std::size_t i = grid.Index(c, r);
       if (grid.cells()[i] == Cell::kFree || flood->furniture_candidate[flood->enclosed.labels[i]]) {
@@ -426,12 +449,16 @@ void ComputeClearance(const Grid& grid, RoomFlood* flood) {
       }
     }
   }
-  ChamferInPlace(&flood->clearance, pw, ph);
+  ChamferInPlace(&clearance, pw, ph);
+  return clearance;
 }
 
 // Room ids in raster order of the rooms' first cells; pieces still below
 // `min_cells` (free specks with no neighbour) are no rooms. Returns the room
-// of each root piece (-1: none).
+// of each root piece (-1: none). The graph's pieces of the cells are
+// rewritten into the rooms of the cells where they lie (a grid cell's index
+// is below its padded cell's, so raster order reads each entry before it is
+// overwritten): a large map holds one such array, not two.
 std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::size_t min_cells,
                                       RoomFlood* flood) {
   const int w = grid.width(), h = grid.height();
@@ -440,19 +467,26 @@ std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::
   // Each piece's root once, not once per cell: the union-find is final.
   std::vector<std::int32_t> root_of(graph->size());
   for (std::int32_t k = 0; k < graph->size(); ++k) root_of[k] = graph->Root(k);
-  flood->room_of_cell.assign(grid.size(), 0);
+  std::vector<std::int32_t> cells = graph->TakePieces();
   std::int32_t rooms = 0;
   for (int r = 0; r < h; ++r) {
-    std::int32_t* out = flood->room_of_cell.data() + grid.Index(0, r);
+    const std::int32_t* in = cells.data() + (r + 1) * pw + 1;
+    std::int32_t* out = cells.data() + grid.Index(0, r);
     for (int c = 0; c < w; ++c) {
-      const std::int32_t piece = graph->PieceOf((r + 1) * pw + (c + 1));
-      if (piece < 0) continue;
-      const std::int32_t root = root_of[piece];
-      if (graph->Area(root) < min_cells) continue;
-      if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
-      out[c] = room_of_piece[root];
+      const std::int32_t piece = in[c];
+      std::int32_t room = 0;
+      if (piece >= 0) {
+        const std::int32_t root = root_of[piece];
+        if (graph->Area(root) >= min_cells) {
+          if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
+          room = room_of_piece[root];
+        }
+      }
+      out[c] = room;
     }
   }
+  cells.resize(grid.size());
+  flood->room_of_cell = std::move(cells);
   flood->room_count = rooms;
   flood->peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
   for (std::int32_t k = 0; k < graph->size(); ++k) {
@@ -490,15 +524,17 @@ RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
   RoomFlood flood;
   double start = ThreadCpuMs();
   FindFurnitureCandidates(grid, options, &flood);
-  ComputeClearance(grid, &flood);
+  std::vector<std::uint16_t> clearance = ComputeClearance(grid, &flood);
   timings->clearance_ms += ThreadCpuMs() - start;
 
   start = ThreadCpuMs();
   const int pw = grid.width() + 2;
   const DoorRule rule = MakeDoorRule(options, res);
   std::vector<std::int32_t> parent;
-  const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
-  PieceGraph graph(&parent, flood.clearance, contacts);
+  const std::vector<Contact> contacts = Flood(clearance, pw, rule, &parent);
+  PieceGraph graph(std::move(parent), clearance, contacts);
+  // The pieces hold their peaks: the clearance's memory is given back.
+  std::vector<std::uint16_t>().swap(clearance);
   if (rule.max_room_cells > 0) graph.MergeWidePassages(rule.max_door, rule.max_room_cells);
   graph.MergeNarrowPassages(rule.min_door);
   const std::size_t min_cells =

@@ -77,9 +77,6 @@ struct RoomFlood {
   // furniture candidates (enclosed, small, not a wall piece), by label.
   Labeling enclosed;
   std::vector<std::uint8_t> furniture_candidate;
-  // Chamfer 3-4 clearance on the grid padded by one cell on every side
-  // ((width + 2) x (height + 2)); 0 outside room space.
-  std::vector<std::uint16_t> clearance;
   std::vector<std::int32_t> room_of_cell;  // grid cells, 0 = no room
   std::int32_t room_count = 0;
   std::vector<std::uint16_t> peak;  // by room id: largest clearance (chamfer units)
