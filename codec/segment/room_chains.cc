@@ -210,9 +210,10 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
   return parent;
 }
 
-std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
-                                      const SegmentationOptions& options,
-                                      const std::vector<std::uint8_t>& on_chain) {
+// Step 5a: blobs of the free-standing furniture.
+std::vector<FurnitureBlob> FreeStandingBlobs(const Grid& grid, const RoomFlood& flood,
+                                             const SegmentationOptions& options,
+                                             const std::vector<std::uint8_t>& on_chain) {
   const std::vector<Piece> pieces = FurniturePieces(grid, flood, on_chain);
   const int gap =
       std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
@@ -249,7 +250,13 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
                                     : BoxRing(blob.box);
     blobs.push_back(std::move(blob));
   }
-  for (WallPiece& piece : FindWallFurniture(grid, flood.room_of_cell, options)) {
+  return blobs;
+}
+
+// Step 5b: blobs of the furniture against walls, added to `blobs`.
+void AddWallBlobs(const Grid& grid, const std::vector<std::int32_t>& room_of_cell,
+                  const SegmentationOptions& options, std::vector<FurnitureBlob>* blobs) {
+  for (WallPiece& piece : FindWallFurniture(grid, room_of_cell, options)) {
     if (piece.occupied.size() < options.min_furniture_cells) continue;
     FurnitureBlob blob;
     blob.room = piece.room;
@@ -259,13 +266,8 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
     blob.cell_count = blob.cells.size();
     blob.first_cell = blob.cells.front();
     blob.outline = std::move(piece.outline);
-    blobs.push_back(std::move(blob));
+    blobs->push_back(std::move(blob));
   }
-  std::sort(blobs.begin(), blobs.end(), [](const FurnitureBlob& a, const FurnitureBlob& b) {
-    return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row
-                                                : a.first_cell.col < b.first_cell.col;
-  });
-  return blobs;
 }
 
 }  // namespace
@@ -318,7 +320,18 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
     result->rooms.push_back(std::move(room));
   }
   flood.room_of_cell = std::move(rooms.labels);
-  result->blobs = BuildBlobs(grid, flood, options, on_chain);
+  result->blobs = FreeStandingBlobs(grid, flood, options, on_chain);
+  // The obstacles' labels and the chains' cells are done with: given back
+  // before the wall furniture's grid-sized arrays are made (on a large map
+  // they are the segmentation's peak).
+  std::vector<std::int32_t>().swap(flood.enclosed.labels);
+  std::vector<std::uint8_t>().swap(on_chain);
+  AddWallBlobs(grid, flood.room_of_cell, options, &result->blobs);
+  std::sort(result->blobs.begin(), result->blobs.end(),
+            [](const FurnitureBlob& a, const FurnitureBlob& b) {
+              return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row
+                                                          : a.first_cell.col < b.first_cell.col;
+            });
   result->room_of_cell = std::move(flood.room_of_cell);
   result->doors = std::move(flood.doors);
   result->timings.chains_ms += ThreadCpuMs() - start;
