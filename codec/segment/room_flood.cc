@@ -291,20 +291,20 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
   constexpr auto code = [](std::int32_t piece) { return -2 - piece; };
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const std::int32_t root = forest[i];
-    if (root < 0) continue;   // no room space, or a root coded already
+    if (root == -1) continue;  // no room space
+    if (root < 0) {            // a root coded already
+      ++area_[code(root)];
+      continue;
+    }
     if (forest[root] >= 0) {  // the piece's first cell
       forest[root] = code(static_cast<std::int32_t>(area_.size()));
       area_.push_back(0);
       peak_.push_back(clearance[root]);  // a root is its piece's highest cell
     }
     forest[i] = forest[root];
+    ++area_[code(forest[i])];  // the code is its own inverse
   }
-  for (std::int32_t& entry : forest) {
-    if (entry != -1) {
-      entry = code(entry);  // the code is its own inverse
-      ++area_[entry];
-    }
-  }
+  for (std::int32_t& entry : forest) entry = entry == -1 ? -1 : code(entry);
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
   adjacency_.resize(area_.size());

@@ -25,6 +25,7 @@
 // a slanted wall is not found.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "codec/segment/segment_internal.h"
@@ -93,6 +94,9 @@ class BumpFinder {
   }
   void MarkRun(const Axis& axis, int line, int begin, int end);
   void MarkShortRuns(const Axis& axis);
+  void MarkColumnRuns(const Axis& axis);
+  void ColumnStep(const Axis& axis, std::uint8_t blocked, std::uint8_t blocked_above, int c, int r,
+                  std::vector<int>* start);
   bool BridgeLine(int r, int dc, int dr);
   bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
               WallPiece* piece) const;
@@ -156,19 +160,7 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
       }
     }
   } else {
-    std::vector<int> start(w, -1);
-    for (int r = 0; r <= h; ++r) {
-      const std::uint8_t* row = r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : nullptr;
-      for (int c = 0; c < w; ++c) {
-        const bool blocked = row && row[c];
-        if (blocked && start[c] < 0) {
-          start[c] = r;
-        } else if (!blocked && start[c] >= 0) {
-          MarkRun(axis, c, start[c], r);
-          start[c] = -1;
-        }
-      }
-    }
+    MarkColumnRuns(axis);
   }
   // A noise cell in the gap between a cabinet and a side wall joins one
   // line of the cabinet to the side wall, and that line's run goes on: its
@@ -202,6 +194,45 @@ bool BumpFinder::BridgeLine(int r, int dc, int dr) {
     }
   }
   return marked;
+}
+
+// The column runs of MarkShortRuns: a run of a column starts where its
+// cell turns blocked from the row above and ends where it turns free, so
+// only the cells that differ from the row above need a look. Rows are
+// compared eight cells at a time (blocked_ holds 0 or 1), and most words of
+// a map equal the row above.
+void BumpFinder::MarkColumnRuns(const Axis& axis) {
+  const int w = grid_.width(), h = grid_.height();
+  std::vector<int> start(w, -1);
+  const std::vector<std::uint8_t> none(static_cast<std::size_t>(w), 0);
+  const std::uint8_t* above = none.data();
+  for (int r = 0; r <= h; ++r) {
+    const std::uint8_t* row =
+        r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : none.data();
+    int c = 0;
+    for (; c + 8 <= w; c += 8) {
+      std::uint64_t a, b;
+      std::memcpy(&a, above + c, 8);
+      std::memcpy(&b, row + c, 8);
+      if (a == b) continue;
+      for (int k = c; k < c + 8; ++k) ColumnStep(axis, row[k], above[k], k, r, &start);
+    }
+    for (; c < w; ++c) ColumnStep(axis, row[c], above[c], c, r, &start);
+    above = row;
+  }
+}
+
+// Column c at row r: a run starts where the cell turns blocked and the
+// open run ends where it turns free.
+void BumpFinder::ColumnStep(const Axis& axis, std::uint8_t blocked, std::uint8_t blocked_above,
+                            int c, int r, std::vector<int>* start) {
+  if (blocked == blocked_above) return;
+  if (blocked) {
+    (*start)[c] = r;
+  } else {
+    MarkRun(axis, c, (*start)[c], r);
+    (*start)[c] = -1;
+  }
 }
 
 // `cells`: one 4-connected set of cells marked with `room`.
