@@ -36,6 +36,48 @@ bool IsWallPiece(std::size_t cells, std::size_t perimeter, const SegmentationOpt
          thickness * res <= options.wall_max_thickness_m;
 }
 
+// Cells in the boxes of the components flagged in `flagged`, or 0 when
+// those boxes hold more cells than the map: then a pass over the whole map
+// reads less.
+std::size_t CellsInFlaggedBoxes(const Labeling& labels, const std::vector<std::uint8_t>& flagged) {
+  std::size_t cells = 0;
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    cells += static_cast<std::size_t>(box.max_col - box.min_col + 1) *
+             static_cast<std::size_t>(box.max_row - box.min_row + 1);
+    if (cells > labels.labels.size()) return 0;
+  }
+  return cells;
+}
+
+// Calls visit(index) for every cell of the components flagged in
+// `flagged`, component by component (by their boxes) when their boxes are
+// small against the map (furniture candidates mostly are), else in one pass
+// over the map. Either way each such cell is visited once.
+template <typename Visit>
+void ForEachFlaggedCell(const Labeling& labels, const std::vector<std::uint8_t>& flagged,
+                        Visit visit) {
+  const std::int32_t* l = labels.labels.data();
+  if (CellsInFlaggedBoxes(labels, flagged) == 0) {
+    for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+      if (l[i] && flagged[l[i]]) visit(i);
+    }
+    return;
+  }
+  const std::size_t w = static_cast<std::size_t>(labels.width);
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    const std::int32_t label = static_cast<std::int32_t>(k);
+    for (int r = box.min_row; r <= box.max_row; ++r) {
+      for (std::size_t i = r * w + box.min_col; i <= r * w + box.max_col; ++i) {
+        if (l[i] == label) visit(i);
+      }
+    }
+  }
+}
+
 // Cell edges between each enclosed component and the cells around it.
 std::vector<std::size_t> Perimeters(const Labeling& labels,
                                     const std::vector<std::uint8_t>& enclosed) {
@@ -44,11 +86,10 @@ std::vector<std::size_t> Perimeters(const Labeling& labels,
   // cells' neighbours are all on the map.
   const std::size_t w = static_cast<std::size_t>(labels.width);
   const std::int32_t* l = labels.labels.data();
-  for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+  ForEachFlaggedCell(labels, enclosed, [&](std::size_t i) {
     const std::int32_t k = l[i];
-    if (!k || !enclosed[k]) continue;
     perimeter[k] += (l[i - 1] != k) + (l[i + 1] != k) + (l[i - w] != k) + (l[i + w] != k);
-  }
+  });
   return perimeter;
 }
 
@@ -146,7 +187,7 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
 }
 
 // Cells of the flood's order whose neighbours are fetched ahead.
-constexpr std::size_t kPrefetchAhead = 16;
+constexpr std::size_t kPrefetchAhead = 48;
 
 // Step 3a: the merge tree. Returns the contacts of pieces kept apart;
 // `parent` ends as a union-find forest over padded cells (-1: no room space).
@@ -440,15 +481,16 @@ std::vector<std::uint16_t> ComputeClearance(const Grid& grid, RoomFlood* flood) 
   flood->width = w;
   flood->height = h;
   std::vector<std::uint16_t> clearance(static_cast<std::size_t>(pw) * ph, 0);
+  const Cell* cells = grid.cells().data();
   for (int r = 0; r < h; ++r) {
     std::uint16_t* out = clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      if (grid.cells()[i] == Cell::kFree || flood->furniture_candidate[flood->enclosed.labels[i]]) {
-        out[c] = kFar;
-      }
-    }
+    const Cell* in = cells + grid.Index(0, r);
+    for (int c = 0; c < w; ++c) out[c] = in[c] == Cell::kFree ? kFar : 0;
   }
+  const std::size_t wide = static_cast<std::size_t>(w);
+  ForEachFlaggedCell(flood->enclosed, flood->furniture_candidate, [&](std::size_t i) {
+    clearance[(i / wide + 1) * pw + (i % wide + 1)] = kFar;
+  });
   ChamferInPlace(&clearance, pw, ph);
   return clearance;
 }
