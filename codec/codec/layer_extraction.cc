@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <optional>
 #include <system_error>
 #include <unordered_map>
 
@@ -88,18 +89,21 @@ constexpr double kNearCells = 1.5;
 // `linemap eval` measures the walls against (MeasureLayerFidelity).
 class EdgeCells {
  public:
+  // One pass over the map's rows through plain pointers (most cells are
+  // not occupied and cost one test).
   explicit EdgeCells(const Grid& grid) : grid_(grid), edge_(grid.cells().size(), 0) {
-    constexpr int kDc[4] = {1, -1, 0, 0}, kDr[4] = {0, 0, 1, -1};
-    for (int r = 0; r < grid.height(); ++r) {
-      for (int c = 0; c < grid.width(); ++c) {
-        if (grid.at(c, r) != Cell::kOccupied) continue;
-        for (int k = 0; k < 4; ++k) {
-          const int nc = c + kDc[k], nr = r + kDr[k];
-          if (grid.Contains(nc, nr) && grid.at(nc, nr) == Cell::kFree) {
-            edge_[grid.Index(c, r)] = kEdge;
-            break;
-          }
-        }
+    const int w = grid.width(), h = grid.height();
+    for (int r = 0; r < h; ++r) {
+      const Cell* row = grid.cells().data() + grid.Index(0, r);
+      const Cell* up = r > 0 ? row - w : nullptr;
+      const Cell* down = r + 1 < h ? row + w : nullptr;
+      std::uint8_t* out = edge_.data() + grid.Index(0, r);
+      for (int c = 0; c < w; ++c) {
+        if (row[c] != Cell::kOccupied) continue;
+        const bool free_beside = (c + 1 < w && row[c + 1] == Cell::kFree) ||
+                                 (c > 0 && row[c - 1] == Cell::kFree) ||
+                                 (down && down[c] == Cell::kFree) || (up && up[c] == Cell::kFree);
+        if (free_beside) out[c] = kEdge;
       }
     }
   }
@@ -300,14 +304,15 @@ void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* 
   *segments = std::move(kept);
 }
 
-StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const EncodeOptions& options) {
+StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const EdgeCells& edges,
+                                                   const EncodeOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
   std::vector<LatticeSegment> segments;
   segments.reserve(lines.size());
   for (const LineSegment& line : lines) {
     AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
-  StraightenSegments(grid, EdgeCells(grid), &segments);
+  StraightenSegments(grid, edges, &segments);
   return segments;
 }
 
@@ -515,13 +520,18 @@ namespace {
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options,
                                              bool order_walls) {
   VectorLayers layers;
-  auto walls_task =
-      StartTask(options.max_threads != 1, [&] { return WallSegments(grid, options); });
+  // The edge cells serve the walls' straightening (in the walls task) and
+  // then their pruning: made once, in the task.
+  std::optional<EdgeCells> edges;
+  auto walls_task = StartTask(options.max_threads != 1, [&] {
+    edges.emplace(grid);
+    return WallSegments(grid, *edges, options);
+  });
   const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
   StatusOr<std::vector<LatticeSegment>> segments = walls_task.get();
   LINEMAP_RETURN_IF_ERROR(rooms);
   if (!segments.ok()) return segments.status();
-  DropRedundantSegments(EdgeCells(grid), &*segments);
+  DropRedundantSegments(*edges, &*segments);
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;
 }
