@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <future>
-#include <optional>
 #include <system_error>
 #include <unordered_map>
 
@@ -304,15 +303,14 @@ void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* 
   *segments = std::move(kept);
 }
 
-StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const EdgeCells& edges,
-                                                   const EncodeOptions& options) {
+StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<LineSegment> lines, ExtractWallLines(grid, options));
   std::vector<LatticeSegment> segments;
   segments.reserve(lines.size());
   for (const LineSegment& line : lines) {
     AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
-  StraightenSegments(grid, edges, &segments);
+  StraightenSegments(grid, EdgeCells(grid), &segments);
   return segments;
 }
 
@@ -520,18 +518,15 @@ namespace {
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options,
                                              bool order_walls) {
   VectorLayers layers;
-  // The edge cells serve the walls' straightening (in the walls task) and
-  // then their pruning: made once, in the task.
-  std::optional<EdgeCells> edges;
-  auto walls_task = StartTask(options.max_threads != 1, [&] {
-    edges.emplace(grid);
-    return WallSegments(grid, *edges, options);
-  });
+  auto walls_task =
+      StartTask(options.max_threads != 1, [&] { return WallSegments(grid, options); });
   const Status rooms = RoomAndFurnitureLayers(grid, options, &layers);
   StatusOr<std::vector<LatticeSegment>> segments = walls_task.get();
   LINEMAP_RETURN_IF_ERROR(rooms);
   if (!segments.ok()) return segments.status();
-  DropRedundantSegments(*edges, &*segments);
+  // The edge cells are found anew rather than kept from the walls task: a
+  // large map's segmentation peaks while that task runs.
+  DropRedundantSegments(EdgeCells(grid), &*segments);
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;
 }

@@ -293,7 +293,8 @@ class PieceGraph {
 
   // The piece of a padded cell (-1: no room space), and its final root.
   std::int32_t PieceOf(std::size_t padded_cell) const { return piece_of_[padded_cell]; }
-  // Hands over the pieces of the padded cells (PieceOf() is then void).
+  // Hands over the pieces of the padded cells (PieceOf() is not to be
+  // called after).
   std::vector<std::int32_t> TakePieces() { return std::move(piece_of_); }
   std::int32_t Root(std::int32_t piece) { return Find(parent_, piece); }
   std::int32_t size() const { return static_cast<std::int32_t>(area_.size()); }
