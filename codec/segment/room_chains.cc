@@ -255,8 +255,9 @@ std::vector<FurnitureBlob> FreeStandingBlobs(const Grid& grid, const RoomFlood& 
 
 // Step 5b: blobs of the furniture against walls, added to `blobs`.
 void AddWallBlobs(const Grid& grid, const std::vector<std::int32_t>& room_of_cell,
-                  const SegmentationOptions& options, std::vector<FurnitureBlob>* blobs) {
-  for (WallPiece& piece : FindWallFurniture(grid, room_of_cell, options)) {
+                  const SegmentationOptions& options, WallFurnitureScratch scratch,
+                  std::vector<FurnitureBlob>* blobs) {
+  for (WallPiece& piece : FindWallFurniture(grid, room_of_cell, options, std::move(scratch))) {
     if (piece.occupied.size() < options.min_furniture_cells) continue;
     FurnitureBlob blob;
     blob.room = piece.room;
@@ -321,12 +322,11 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
   }
   flood.room_of_cell = std::move(rooms.labels);
   result->blobs = FreeStandingBlobs(grid, flood, options, on_chain);
-  // The obstacles' labels and the chains' cells are done with: given back
-  // before the wall furniture's grid-sized arrays are made (on a large map
-  // they are the segmentation's peak).
-  std::vector<std::int32_t>().swap(flood.enclosed.labels);
-  std::vector<std::uint8_t>().swap(on_chain);
-  AddWallBlobs(grid, flood.room_of_cell, options, &result->blobs);
+  // The obstacles' labels and the chains' cells are done with: their
+  // storage becomes the wall furniture's grid-sized arrays (on a large map
+  // those were the segmentation's peak, and fresh pages cost faults).
+  WallFurnitureScratch scratch{std::move(flood.enclosed.labels), std::move(on_chain)};
+  AddWallBlobs(grid, flood.room_of_cell, options, std::move(scratch), &result->blobs);
   std::sort(result->blobs.begin(), result->blobs.end(),
             [](const FurnitureBlob& a, const FurnitureBlob& b) {
               return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row

@@ -97,9 +97,17 @@ struct WallPiece {
   std::vector<CellIndex> occupied;
   std::vector<CellIndex> outline;
 };
+// The search's grid-sized arrays of marks and flags reuse the storage of
+// `mark_storage` and `flag_storage` (any contents; arrays the caller is
+// done with): on a large map fresh arrays cost a page fault every 4 kB.
+struct WallFurnitureScratch {
+  std::vector<std::int32_t> mark_storage;
+  std::vector<std::uint8_t> flag_storage;
+};
 std::vector<WallPiece> FindWallFurniture(const Grid& grid,
                                          const std::vector<std::int32_t>& room_of_cell,
-                                         const SegmentationOptions& options);
+                                         const SegmentationOptions& options,
+                                         WallFurnitureScratch scratch = {});
 
 // Room chains, kinds and furniture blobs from the flood (room_chains.cc).
 void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood flood,

@@ -79,16 +79,19 @@ int SkipFree(const std::uint8_t* row, int c, int w) {
 
 class BumpFinder {
  public:
-  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule)
+  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule,
+             WallFurnitureScratch scratch)
       : grid_(grid),
         room_of_(room_of_cell),
         rule_(rule),
         blocked_(grid.size()),
         claimed_(grid.size(), 0),
-        mark_(grid.size(), 0),
-        seen_(grid.size(), 0),
+        mark_(std::move(scratch.mark_storage)),
+        seen_(std::move(scratch.flag_storage)),
         span_lo_(grid.height(), grid.width()),
         span_hi_(grid.height(), 0) {
+    mark_.assign(grid.size(), 0);
+    seen_.assign(grid.size(), 0);
     for (std::size_t i = 0; i < grid.size(); ++i) {
       blocked_[i] = room_of_cell[i] == 0 && grid.cells()[i] != Cell::kFree;
     }
@@ -418,13 +421,15 @@ void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
 
 std::vector<WallPiece> FindWallFurniture(const Grid& grid,
                                          const std::vector<std::int32_t>& room_of_cell,
-                                         const SegmentationOptions& options) {
+                                         const SegmentationOptions& options,
+                                         WallFurnitureScratch scratch) {
   std::vector<WallPiece> pieces;
   if (grid.empty() || options.wall_furniture_max_depth_m <= 0 ||
       options.wall_furniture_max_width_m <= 0) {
     return pieces;
   }
-  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution));
+  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution),
+                    std::move(scratch));
   finder.Find(/*rows=*/true, &pieces);
   finder.Find(/*rows=*/false, &pieces);
   return pieces;
