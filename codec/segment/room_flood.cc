@@ -236,8 +236,11 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
     int n = 0;
     for (const std::int32_t off : offsets) {
       const std::int32_t nb = cell + off;
-      if (parent[nb] < 0) continue;
-      const std::int32_t root = Find(parent, nb);
+      const std::int32_t up = parent[nb];
+      if (up < 0) continue;
+      // Most cells point at their root already: found without the write of
+      // path halving, which would dirty the cache line all the same.
+      const std::int32_t root = parent[up] == up ? up : Find(parent, nb);
       if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
     }
     if (n == 0) {
