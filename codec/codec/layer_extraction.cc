@@ -88,22 +88,27 @@ constexpr double kNearCells = 1.5;
 // `linemap eval` measures the walls against (MeasureLayerFidelity).
 class EdgeCells {
  public:
-  // One pass over the map's rows through plain pointers (most cells are
-  // not occupied and cost one test).
+  // One pass over the map's rows through plain pointers; the columns off
+  // the map's sides are tested apart, so the loop over the others has no
+  // branch (most cells are not occupied and decide nothing).
   explicit EdgeCells(const Grid& grid) : grid_(grid), edge_(grid.cells().size(), 0) {
     const int w = grid.width(), h = grid.height();
+    const std::vector<Cell> outside(static_cast<std::size_t>(w), Cell::kUnknown);  // never free
     for (int r = 0; r < h; ++r) {
       const Cell* row = grid.cells().data() + grid.Index(0, r);
-      const Cell* up = r > 0 ? row - w : nullptr;
-      const Cell* down = r + 1 < h ? row + w : nullptr;
+      const Cell* up = r > 0 ? row - w : outside.data();
+      const Cell* down = r + 1 < h ? row + w : outside.data();
       std::uint8_t* out = edge_.data() + grid.Index(0, r);
-      for (int c = 0; c < w; ++c) {
-        if (row[c] != Cell::kOccupied) continue;
-        const bool free_beside = (c + 1 < w && row[c + 1] == Cell::kFree) ||
-                                 (c > 0 && row[c - 1] == Cell::kFree) ||
-                                 (down && down[c] == Cell::kFree) || (up && up[c] == Cell::kFree);
-        if (free_beside) out[c] = kEdge;
+      const auto edge = [&](int c, bool left_free, bool right_free) {
+        const bool free_beside =
+            left_free | right_free | (up[c] == Cell::kFree) | (down[c] == Cell::kFree);
+        return static_cast<std::uint8_t>((row[c] == Cell::kOccupied) & free_beside ? kEdge : 0);
+      };
+      for (int c = 1; c + 1 < w; ++c) {
+        out[c] = edge(c, row[c - 1] == Cell::kFree, row[c + 1] == Cell::kFree);
       }
+      out[0] = edge(0, false, w > 1 && row[1] == Cell::kFree);
+      if (w > 1) out[w - 1] = edge(w - 1, row[w - 2] == Cell::kFree, false);
     }
   }
 
