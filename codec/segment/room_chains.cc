@@ -67,33 +67,36 @@ std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
   std::vector<Piece> pieces;
   const int w = grid.width();
   const int h = grid.height();
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      const std::int32_t label = flood.enclosed.labels[i];
-      if (!label || !flood.furniture_candidate[label] || rejected[label]) continue;
-      bool touches = false;
-      for (int dr = -1; dr <= 1 && !touches; ++dr) {
-        for (int dc = -1; dc <= 1 && !touches; ++dc) {
-          const int nc = c + dc, nr = r + dr;
-          touches = nc >= 0 && nr >= 0 && nc < w && nr < h && on_chain[grid.Index(nc, nr)];
-        }
+  // Component by component in label order (the raster order of their first
+  // cells) or over the whole map: a kept piece (no cell rejected) is made
+  // at its first cell and gets its occupied cells in raster order either
+  // way.
+  ForEachFlaggedCell(flood.enclosed, flood.furniture_candidate, [&](std::size_t i) {
+    const std::int32_t label = flood.enclosed.labels[i];
+    if (rejected[label]) return;
+    const int c = static_cast<int>(i % static_cast<std::size_t>(w));
+    const int r = static_cast<int>(i / static_cast<std::size_t>(w));
+    bool touches = false;
+    for (int dr = -1; dr <= 1 && !touches; ++dr) {
+      for (int dc = -1; dc <= 1 && !touches; ++dc) {
+        const int nc = c + dc, nr = r + dr;
+        touches = nc >= 0 && nr >= 0 && nc < w && nr < h && on_chain[grid.Index(nc, nr)];
       }
-      if (touches || flood.room_of_cell[i] == 0) {
-        rejected[label] = 1;
-        continue;
-      }
-      if (piece_of[label] < 0) {
-        piece_of[label] = static_cast<std::int32_t>(pieces.size());
-        Piece piece;
-        piece.label = label;
-        piece.room = flood.room_of_cell[i];
-        piece.box = flood.enclosed.components[label - 1].box;
-        pieces.push_back(std::move(piece));
-      }
-      if (grid.cells()[i] == Cell::kOccupied) pieces[piece_of[label]].occupied.push_back({c, r});
     }
-  }
+    if (touches || flood.room_of_cell[i] == 0) {
+      rejected[label] = 1;
+      return;
+    }
+    if (piece_of[label] < 0) {
+      piece_of[label] = static_cast<std::int32_t>(pieces.size());
+      Piece piece;
+      piece.label = label;
+      piece.room = flood.room_of_cell[i];
+      piece.box = flood.enclosed.components[label - 1].box;
+      pieces.push_back(std::move(piece));
+    }
+    if (grid.cells()[i] == Cell::kOccupied) pieces[piece_of[label]].occupied.push_back({c, r});
+  });
   std::vector<Piece> kept;
   for (Piece& piece : pieces) {
     if (!rejected[piece.label] && !piece.occupied.empty()) kept.push_back(std::move(piece));

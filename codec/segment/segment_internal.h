@@ -67,6 +67,49 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
 // component, left to right. Two or more = a room border for the paper.
 int MidLineEntries(const Labeling& labels, std::int32_t label);
 
+// Cells in the boxes of the components flagged in `flagged`, or 0 when
+// those boxes hold more cells than the map: then a pass over the whole map
+// reads less.
+inline std::size_t CellsInFlaggedBoxes(const Labeling& labels,
+                                       const std::vector<std::uint8_t>& flagged) {
+  std::size_t cells = 0;
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    cells += static_cast<std::size_t>(box.max_col - box.min_col + 1) *
+             static_cast<std::size_t>(box.max_row - box.min_row + 1);
+    if (cells > labels.labels.size()) return 0;
+  }
+  return cells;
+}
+
+// Calls visit(index) for every cell of the components flagged in
+// `flagged`, component by component (by their boxes) when their boxes are
+// small against the map (furniture candidates mostly are), else in one pass
+// over the map. Either way each such cell is visited once.
+template <typename Visit>
+void ForEachFlaggedCell(const Labeling& labels, const std::vector<std::uint8_t>& flagged,
+                        Visit visit) {
+  const std::int32_t* l = labels.labels.data();
+  if (CellsInFlaggedBoxes(labels, flagged) == 0) {
+    for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+      if (l[i] && flagged[l[i]]) visit(i);
+    }
+    return;
+  }
+  const std::size_t w = static_cast<std::size_t>(labels.width);
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    const std::int32_t label = static_cast<std::int32_t>(k);
+    for (int r = box.min_row; r <= box.max_row; ++r) {
+      for (std::size_t i = r * w + box.min_col; i <= r * w + box.max_col; ++i) {
+        if (l[i] == label) visit(i);
+      }
+    }
+  }
+}
+
 // --- SegmentationMethod::kRooms ---
 
 // Rooms from flooding the clearance (room_flood.cc).
