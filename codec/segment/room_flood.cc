@@ -287,27 +287,33 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
   for (std::size_t i = 0; i < forest.size(); ++i) {
     if (forest[i] >= 0) forest[i] = Find(forest, static_cast<std::int32_t>(i));
   }
-  // Then, in cell order, pieces numbered as their first cells come: a root
-  // cell's entry turns into its piece, coded -2 - piece, when the piece's
-  // first cell is met (so later cells of the piece find it there), and
-  // every cell takes the same code.
-  constexpr auto code = [](std::int32_t piece) { return -2 - piece; };
+  // Then, in cell order, pieces numbered as their first cells come. A
+  // root's entry turns into its piece, coded -2 - piece, when the piece's
+  // first cell is met, so that the piece's later cells find it there; the
+  // other cells take their pieces as they go (no later cell reads them),
+  // and the roots last.
+  constexpr auto code = [](std::int32_t piece) { return -2 - piece; };  // its own inverse
+  std::vector<std::int32_t> root_cells;                                 // by piece
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const std::int32_t root = forest[i];
     if (root == -1) continue;  // no room space
-    if (root < 0) {            // a root coded already
+    if (root < 0) {            // a root, coded when its piece's first cell came
       ++area_[code(root)];
       continue;
     }
     if (forest[root] >= 0) {  // the piece's first cell
       forest[root] = code(static_cast<std::int32_t>(area_.size()));
+      root_cells.push_back(root);
       area_.push_back(0);
       peak_.push_back(clearance[root]);  // a root is its piece's highest cell
     }
-    forest[i] = forest[root];
-    ++area_[code(forest[i])];  // the code is its own inverse
+    const std::int32_t piece = code(forest[root]);
+    ++area_[piece];
+    if (static_cast<std::size_t>(root) != i) forest[i] = piece;
   }
-  for (std::int32_t& entry : forest) entry = entry == -1 ? -1 : code(entry);
+  for (std::size_t k = 0; k < root_cells.size(); ++k) {
+    forest[root_cells[k]] = static_cast<std::int32_t>(k);
+  }
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
   adjacency_.resize(area_.size());
