@@ -124,6 +124,7 @@ const double* Log2OnePlusTable() {
 // for 2 % less.
 constexpr int kNeighbours = 8;
 constexpr int kReach = 64;
+constexpr int kNearBucket = 16;  // cells: the buckets NearEnds reads (any size finds the same)
 constexpr int kMaxPasses = 4;
 // Longest run reversed, in walls: a reversal costs its length, and on a
 // map of 184,000 walls unbounded runs cost a second and a half.
@@ -308,11 +309,23 @@ class WallTour {
       max_col = std::max(max_col, EndPoint(e).col);
       max_row = std::max(max_row, EndPoint(e).row);
     }
-    const int bx = max_col / kReach + 1, by = max_row / kReach + 1;
-    std::vector<std::vector<std::size_t>> bucket(static_cast<std::size_t>(bx) * by);
-    for (std::size_t e = 0; e < m; ++e) {
-      const CellIndex p = EndPoint(e);
-      bucket[static_cast<std::size_t>(p.row / kReach) * bx + p.col / kReach].push_back(e);
+    // Ends in square buckets of kNearBucket cells, in one array (bucket b
+    // holds in_bucket[start[b], start[b + 1]), by increasing end). Buckets
+    // much smaller than kReach: a query reads the buckets that meet the
+    // square of side 2 kReach + 1 around its end, not 3 x 3 buckets of
+    // kReach (4 times the area). Which ends are found does not depend on
+    // the buckets.
+    const int bx = max_col / kNearBucket + 1, by = max_row / kNearBucket + 1;
+    const auto bucket_of = [&](CellIndex p) {
+      return static_cast<std::size_t>(p.row / kNearBucket) * bx + p.col / kNearBucket;
+    };
+    std::vector<std::size_t> start(static_cast<std::size_t>(bx) * by + 1, 0);
+    for (std::size_t e = 0; e < m; ++e) ++start[bucket_of(EndPoint(e)) + 1];
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    std::vector<std::size_t> in_bucket(m);
+    {
+      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      for (std::size_t e = 0; e < m; ++e) in_bucket[fill[bucket_of(EndPoint(e))]++] = e;
     }
     NearLists near;
     near.first.reserve(m + 1);
@@ -321,10 +334,15 @@ class WallTour {
     for (std::size_t e = 0; e < m; ++e) {
       const CellIndex p = EndPoint(e);
       found.clear();
-      for (int y = p.row / kReach - 1; y <= p.row / kReach + 1; ++y) {
-        for (int x = p.col / kReach - 1; x <= p.col / kReach + 1; ++x) {
-          if (x < 0 || y < 0 || x >= bx || y >= by) continue;
-          for (std::size_t f : bucket[static_cast<std::size_t>(y) * bx + x]) {
+      const int y0 = std::max(0, (p.row - kReach) / kNearBucket);
+      const int y1 = std::min(by - 1, (p.row + kReach) / kNearBucket);
+      const int x0 = std::max(0, (p.col - kReach) / kNearBucket);
+      const int x1 = std::min(bx - 1, (p.col + kReach) / kNearBucket);
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+          const std::size_t b = static_cast<std::size_t>(y) * bx + x;
+          for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+            const std::size_t f = in_bucket[k];
             if (f / 2 == e / 2) continue;
             const CellIndex q = EndPoint(f);
             const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
