@@ -89,19 +89,27 @@ constexpr double kNearCells = 1.5;
 // `linemap eval` measures the walls against (MeasureLayerFidelity).
 class EdgeCells {
  public:
+  // One pass over the map's rows through plain pointers; the columns off
+  // the map's sides are tested apart, so the loop over the others has no
+  // branch (most cells are not occupied and decide nothing).
   explicit EdgeCells(const Grid& grid) : grid_(grid), edge_(grid.cells().size(), 0) {
-    constexpr int kDc[4] = {1, -1, 0, 0}, kDr[4] = {0, 0, 1, -1};
-    for (int r = 0; r < grid.height(); ++r) {
-      for (int c = 0; c < grid.width(); ++c) {
-        if (grid.at(c, r) != Cell::kOccupied) continue;
-        for (int k = 0; k < 4; ++k) {
-          const int nc = c + kDc[k], nr = r + kDr[k];
-          if (grid.Contains(nc, nr) && grid.at(nc, nr) == Cell::kFree) {
-            edge_[grid.Index(c, r)] = kEdge;
-            break;
-          }
-        }
+    const int w = grid.width(), h = grid.height();
+    const std::vector<Cell> outside(static_cast<std::size_t>(w), Cell::kUnknown);  // never free
+    for (int r = 0; r < h; ++r) {
+      const Cell* row = grid.cells().data() + grid.Index(0, r);
+      const Cell* up = r > 0 ? row - w : outside.data();
+      const Cell* down = r + 1 < h ? row + w : outside.data();
+      std::uint8_t* out = edge_.data() + grid.Index(0, r);
+      const auto edge = [&](int c, bool left_free, bool right_free) {
+        const bool free_beside =
+            left_free | right_free | (up[c] == Cell::kFree) | (down[c] == Cell::kFree);
+        return static_cast<std::uint8_t>((row[c] == Cell::kOccupied) & free_beside ? kEdge : 0);
+      };
+      for (int c = 1; c + 1 < w; ++c) {
+        out[c] = edge(c, row[c - 1] == Cell::kFree, row[c + 1] == Cell::kFree);
       }
+      out[0] = edge(0, false, w > 1 && row[1] == Cell::kFree);
+      if (w > 1) out[w - 1] = edge(w - 1, row[w - 2] == Cell::kFree, false);
     }
   }
 
@@ -205,6 +213,45 @@ void StraightenSegments(const Grid& grid, const EdgeCells& edges,
   }
 }
 
+// An edge cell and a segment near it (EdgeCells::Near).
+struct NearPair {
+  std::size_t cell;
+  std::size_t segment;
+  double distance;
+};
+
+// Indices of `pairs` ordered by cell, then by index. The pairs come in
+// index order, so a stable sort by cell gives that order: counting-sort
+// passes over 12 bits of the cell at a time, on keys packed cell above
+// index (on a 16-Mcell map there are millions of pairs, and a comparison
+// sort of indices that reads the pairs took 3 % of the encode).
+std::vector<std::size_t> PairsByCell(const std::vector<NearPair>& pairs) {
+  std::vector<std::size_t> by_cell(pairs.size());
+  std::size_t max_cell = 0;
+  for (const NearPair& p : pairs) max_cell = std::max(max_cell, p.cell);
+  if (pairs.size() > 0xffffffffu || max_cell > 0xffffffffu) {
+    for (std::size_t k = 0; k < by_cell.size(); ++k) by_cell[k] = k;
+    std::stable_sort(by_cell.begin(), by_cell.end(),
+                     [&](std::size_t x, std::size_t y) { return pairs[x].cell < pairs[y].cell; });
+    return by_cell;
+  }
+  std::vector<std::uint64_t> keys(pairs.size()), sorted(pairs.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) {
+    keys[k] = (static_cast<std::uint64_t>(pairs[k].cell) << 32) | k;
+  }
+  constexpr int kDigitBits = 12;
+  constexpr std::uint64_t kDigitMask = (1u << kDigitBits) - 1;
+  for (int shift = 32; shift < 64 && (max_cell >> (shift - 32)) != 0; shift += kDigitBits) {
+    std::vector<std::size_t> start(kDigitMask + 2, 0);
+    for (const std::uint64_t key : keys) ++start[((key >> shift) & kDigitMask) + 1];
+    for (std::size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+    for (const std::uint64_t key : keys) sorted[start[(key >> shift) & kDigitMask]++] = key;
+    keys.swap(sorted);
+  }
+  for (std::size_t k = 0; k < keys.size(); ++k) by_cell[k] = keys[k] & 0xffffffffu;
+  return by_cell;
+}
+
 // Drops, fewest near edge cells first, each segment such that every edge
 // cell near it has another kept segment no more than kMoveSlack farther
 // than the nearest of all the segments was (and within one cell when that
@@ -216,23 +263,14 @@ void StraightenSegments(const Grid& grid, const EdgeCells& edges,
 void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
   // Every (edge cell, segment near it) pair, grouped by cell: flat arrays,
   // not hash maps, since a large map has millions of pairs.
-  struct Pair {
-    std::size_t cell;
-    std::size_t segment;
-    double distance;
-  };
-  std::vector<Pair> pairs;
+  std::vector<NearPair> pairs;
   std::vector<std::size_t> first(segments->size() + 1,
                                  0);  // segment i: pairs [first[i], first[i+1])
   for (std::size_t i = 0; i < segments->size(); ++i) {
     for (const auto& [c, d] : edges.Near((*segments)[i])) pairs.push_back({c, i, d});
     first[i + 1] = pairs.size();
   }
-  std::vector<std::size_t> by_cell(pairs.size());
-  for (std::size_t k = 0; k < by_cell.size(); ++k) by_cell[k] = k;
-  std::sort(by_cell.begin(), by_cell.end(), [&](std::size_t x, std::size_t y) {
-    return pairs[x].cell != pairs[y].cell ? pairs[x].cell < pairs[y].cell : x < y;
-  });
+  std::vector<std::size_t> by_cell = PairsByCell(pairs);
   // For each pair, its cell's run in by_cell and the nearest distance of
   // all the segments to that cell.
   std::vector<std::size_t> run_begin(pairs.size()), run_end(pairs.size());
@@ -266,7 +304,7 @@ void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* 
       const double limit = best <= 1.0 ? std::min(1.0, best + kMoveSlack) : best + kMoveSlack;
       redundant = false;
       for (std::size_t q = run_begin[k]; q < run_end[k] && !redundant; ++q) {
-        const Pair& other = pairs[by_cell[q]];
+        const NearPair& other = pairs[by_cell[q]];
         redundant = other.segment != i && keep[other.segment] && other.distance <= limit;
       }
     }
@@ -518,6 +556,8 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   StatusOr<std::vector<LatticeSegment>> segments = walls_task.get();
   LINEMAP_RETURN_IF_ERROR(rooms);
   if (!segments.ok()) return segments.status();
+  // The edge cells are found anew rather than kept from the walls task: a
+  // large map's segmentation peaks while that task runs.
   DropRedundantSegments(EdgeCells(grid), &*segments);
   AddCoveringSegments(grid, layers.furniture, &*segments);
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);

@@ -95,20 +95,17 @@ class NearestIndex {
 };
 
 // What a start offset of (dc, dr) costs, roughly, in bits: coded integers
-// take about 2 log2 of their magnitude.
-double Log2OnePlus(int d) {
-  // A table for the common short jumps: log2 is much of the tour's time.
+// take about 2 log2 of their magnitude. A table for the common short jumps
+// (log2 is much of the tour's time), made once; the tour keeps a pointer
+// to it so that the cost inlines into its loops.
+constexpr int kLog2Table = 4096;
+const double* Log2OnePlusTable() {
   static const std::vector<double> table = [] {
-    std::vector<double> t(4096);
+    std::vector<double> t(kLog2Table);
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = std::log2(1.0 + static_cast<double>(i));
     return t;
   }();
-  return d < static_cast<int>(table.size()) ? table[static_cast<std::size_t>(d)]
-                                            : std::log2(1.0 + d);
-}
-
-double JumpCost(CellIndex p, CellIndex q) {
-  return Log2OnePlus(std::abs(p.col - q.col)) + Log2OnePlus(std::abs(p.row - q.row));
+  return table.data();
 }
 
 // Improves the nearest-neighbour tour by 2-opt moves: reversing a run of
@@ -127,15 +124,37 @@ double JumpCost(CellIndex p, CellIndex q) {
 // for 2 % less.
 constexpr int kNeighbours = 8;
 constexpr int kReach = 64;
+constexpr int kNearBucket = 16;  // cells: the buckets NearEnds reads (any size finds the same)
 constexpr int kMaxPasses = 4;
 // Longest run reversed, in walls: a reversal costs its length, and on a
 // map of 184,000 walls unbounded runs cost a second and a half.
 constexpr std::size_t kMaxRun = 1000;
 
+// Each wall end's near ends (WallTour::NearEnds) in one array: end e's are
+// ends[first[e], first[e + 1]).
+struct NearLists {
+  struct Range {
+    const std::size_t* b;
+    const std::size_t* e;
+    const std::size_t* begin() const { return b; }
+    const std::size_t* end() const { return e; }
+  };
+  Range Of(std::size_t end) const {
+    return {ends.data() + first[end], ends.data() + first[end + 1]};
+  }
+  std::vector<std::size_t> ends;
+  std::vector<std::size_t> first;
+};
+
 class WallTour {
  public:
   explicit WallTour(std::vector<WallPolyline>* walls) : walls_(*walls) {
     const std::size_t n = walls_.size();
+    ends_.reserve(2 * n);
+    for (const WallPolyline& wall : walls_) {
+      ends_.push_back(wall.points.front());
+      ends_.push_back(wall.points.back());
+    }
     tour_.resize(n);
     reversed_.assign(n, 0);
     pos_.resize(n);
@@ -145,7 +164,7 @@ class WallTour {
   void Improve() {
     const std::size_t n = walls_.size();
     if (n < 3) return;
-    const std::vector<std::vector<std::size_t>> near = NearEnds();
+    const NearLists near = NearEnds();
     for (int pass = 0; pass < kMaxPasses; ++pass) {
       bool improved = false;
       for (std::size_t i = 0; i < n; ++i) {
@@ -155,7 +174,7 @@ class WallTour {
           // Side 0 looks for in(j+1) near in(i), side 1 for out(j) near
           // out(i-1) (before the first wall is (0, 0), no wall's end).
           if (side == 1 && i == 0) continue;
-          for (std::size_t e : near[side == 0 ? InEnd(i) : OutEnd(i - 1)]) {
+          for (std::size_t e : near.Of(side == 0 ? InEnd(i) : OutEnd(i - 1))) {
             const std::size_t k = pos_[e / 2];
             std::size_t j;
             if (side == 1) {
@@ -181,7 +200,7 @@ class WallTour {
 
   // Moves the wall at position i, either way round, between two walls next
   // to one of its ends where that saves more than taking it out costs.
-  bool MoveOne(std::size_t i, const std::vector<std::vector<std::size_t>>& near) {
+  bool MoveOne(std::size_t i, const NearLists& near) {
     const std::size_t n = tour_.size();
     const std::size_t w = tour_[i];
     const double removed =
@@ -193,7 +212,7 @@ class WallTour {
     for (const int end : {0, 1}) {
       const std::size_t e = 2 * w + static_cast<std::size_t>(end);
       const CellIndex here = EndPoint(e), there = EndPoint(e ^ 1);
-      for (std::size_t f : near[e]) {
+      for (std::size_t f : near.Of(e)) {
         const std::size_t k = pos_[f / 2];
         if (k == i) continue;
         // f = Out(k): insert after k, entering at e. f = In(k): insert
@@ -253,9 +272,12 @@ class WallTour {
 
  private:
   // Ends are numbered 2 w (the front of wall w as given) and 2 w + 1 (its back).
-  CellIndex EndPoint(std::size_t e) const {
-    const std::vector<CellIndex>& p = walls_[e / 2].points;
-    return e % 2 == 0 ? p.front() : p.back();
+  CellIndex EndPoint(std::size_t e) const { return ends_[e]; }
+  double Log2OnePlus(int d) const {
+    return d < kLog2Table ? log2_[d] : std::log2(1.0 + static_cast<double>(d));
+  }
+  double JumpCost(CellIndex p, CellIndex q) const {
+    return Log2OnePlus(std::abs(p.col - q.col)) + Log2OnePlus(std::abs(p.row - q.row));
   }
   std::size_t InEnd(std::size_t k) const { return 2 * tour_[k] + (reversed_[k] ? 1 : 0); }
   std::size_t OutEnd(std::size_t k) const { return 2 * tour_[k] + (reversed_[k] ? 0 : 1); }
@@ -280,28 +302,47 @@ class WallTour {
 
   // Each end's kNeighbours nearest ends of other walls within kReach (L1;
   // ties to the lower end number).
-  std::vector<std::vector<std::size_t>> NearEnds() const {
+  NearLists NearEnds() const {
     const std::size_t m = 2 * walls_.size();
     int max_col = 0, max_row = 0;
     for (std::size_t e = 0; e < m; ++e) {
       max_col = std::max(max_col, EndPoint(e).col);
       max_row = std::max(max_row, EndPoint(e).row);
     }
-    const int bx = max_col / kReach + 1, by = max_row / kReach + 1;
-    std::vector<std::vector<std::size_t>> bucket(static_cast<std::size_t>(bx) * by);
-    for (std::size_t e = 0; e < m; ++e) {
-      const CellIndex p = EndPoint(e);
-      bucket[static_cast<std::size_t>(p.row / kReach) * bx + p.col / kReach].push_back(e);
+    // Ends in square buckets of kNearBucket cells, in one array (bucket b
+    // holds in_bucket[start[b], start[b + 1]), by increasing end). Buckets
+    // much smaller than kReach: a query reads the buckets that meet the
+    // square of side 2 kReach + 1 around its end, not 3 x 3 buckets of
+    // kReach (4 times the area). Which ends are found does not depend on
+    // the buckets.
+    const int bx = max_col / kNearBucket + 1, by = max_row / kNearBucket + 1;
+    const auto bucket_of = [&](CellIndex p) {
+      return static_cast<std::size_t>(p.row / kNearBucket) * bx + p.col / kNearBucket;
+    };
+    std::vector<std::size_t> start(static_cast<std::size_t>(bx) * by + 1, 0);
+    for (std::size_t e = 0; e < m; ++e) ++start[bucket_of(EndPoint(e)) + 1];
+    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    std::vector<std::size_t> in_bucket(m);
+    {
+      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+      for (std::size_t e = 0; e < m; ++e) in_bucket[fill[bucket_of(EndPoint(e))]++] = e;
     }
-    std::vector<std::vector<std::size_t>> near(m);
+    NearLists near;
+    near.first.reserve(m + 1);
+    near.first.push_back(0);
     std::vector<std::pair<long, std::size_t>> found;
     for (std::size_t e = 0; e < m; ++e) {
       const CellIndex p = EndPoint(e);
       found.clear();
-      for (int y = p.row / kReach - 1; y <= p.row / kReach + 1; ++y) {
-        for (int x = p.col / kReach - 1; x <= p.col / kReach + 1; ++x) {
-          if (x < 0 || y < 0 || x >= bx || y >= by) continue;
-          for (std::size_t f : bucket[static_cast<std::size_t>(y) * bx + x]) {
+      const int y0 = std::max(0, (p.row - kReach) / kNearBucket);
+      const int y1 = std::min(by - 1, (p.row + kReach) / kNearBucket);
+      const int x0 = std::max(0, (p.col - kReach) / kNearBucket);
+      const int x1 = std::min(bx - 1, (p.col + kReach) / kNearBucket);
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+          const std::size_t b = static_cast<std::size_t>(y) * bx + x;
+          for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+            const std::size_t f = in_bucket[k];
             if (f / 2 == e / 2) continue;
             const CellIndex q = EndPoint(f);
             const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
@@ -311,12 +352,15 @@ class WallTour {
       }
       const std::size_t keep = std::min<std::size_t>(kNeighbours, found.size());
       std::partial_sort(found.begin(), found.begin() + keep, found.end());
-      for (std::size_t k = 0; k < keep; ++k) near[e].push_back(found[k].second);
+      for (std::size_t k = 0; k < keep; ++k) near.ends.push_back(found[k].second);
+      near.first.push_back(near.ends.size());
     }
     return near;
   }
 
   std::vector<WallPolyline>& walls_;
+  const double* log2_ = Log2OnePlusTable();
+  std::vector<CellIndex> ends_;         // by end (EndPoint): read far more often than the walls
   std::vector<std::size_t> tour_;       // wall at each position
   std::vector<std::uint8_t> reversed_;  // whether the wall at a position runs back to front
   std::vector<std::size_t> pos_;        // position of each wall

@@ -67,33 +67,36 @@ std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
   std::vector<Piece> pieces;
   const int w = grid.width();
   const int h = grid.height();
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      const std::int32_t label = flood.enclosed.labels[i];
-      if (!label || !flood.furniture_candidate[label] || rejected[label]) continue;
-      bool touches = false;
-      for (int dr = -1; dr <= 1 && !touches; ++dr) {
-        for (int dc = -1; dc <= 1 && !touches; ++dc) {
-          const int nc = c + dc, nr = r + dr;
-          touches = nc >= 0 && nr >= 0 && nc < w && nr < h && on_chain[grid.Index(nc, nr)];
-        }
+  // Component by component in label order (the raster order of their first
+  // cells) or over the whole map: a kept piece (no cell rejected) is made
+  // at its first cell and gets its occupied cells in raster order either
+  // way.
+  ForEachFlaggedCell(flood.enclosed, flood.furniture_candidate, [&](std::size_t i) {
+    const std::int32_t label = flood.enclosed.labels[i];
+    if (rejected[label]) return;
+    const int c = static_cast<int>(i % static_cast<std::size_t>(w));
+    const int r = static_cast<int>(i / static_cast<std::size_t>(w));
+    bool touches = false;
+    for (int dr = -1; dr <= 1 && !touches; ++dr) {
+      for (int dc = -1; dc <= 1 && !touches; ++dc) {
+        const int nc = c + dc, nr = r + dr;
+        touches = nc >= 0 && nr >= 0 && nc < w && nr < h && on_chain[grid.Index(nc, nr)];
       }
-      if (touches || flood.room_of_cell[i] == 0) {
-        rejected[label] = 1;
-        continue;
-      }
-      if (piece_of[label] < 0) {
-        piece_of[label] = static_cast<std::int32_t>(pieces.size());
-        Piece piece;
-        piece.label = label;
-        piece.room = flood.room_of_cell[i];
-        piece.box = flood.enclosed.components[label - 1].box;
-        pieces.push_back(std::move(piece));
-      }
-      if (grid.cells()[i] == Cell::kOccupied) pieces[piece_of[label]].occupied.push_back({c, r});
     }
-  }
+    if (touches || flood.room_of_cell[i] == 0) {
+      rejected[label] = 1;
+      return;
+    }
+    if (piece_of[label] < 0) {
+      piece_of[label] = static_cast<std::int32_t>(pieces.size());
+      Piece piece;
+      piece.label = label;
+      piece.room = flood.room_of_cell[i];
+      piece.box = flood.enclosed.components[label - 1].box;
+      pieces.push_back(std::move(piece));
+    }
+    if (grid.cells()[i] == Cell::kOccupied) pieces[piece_of[label]].occupied.push_back({c, r});
+  });
   std::vector<Piece> kept;
   for (Piece& piece : pieces) {
     if (!rejected[piece.label] && !piece.occupied.empty()) kept.push_back(std::move(piece));
@@ -210,9 +213,10 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
   return parent;
 }
 
-std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
-                                      const SegmentationOptions& options,
-                                      const std::vector<std::uint8_t>& on_chain) {
+// Step 5a: blobs of the free-standing furniture.
+std::vector<FurnitureBlob> FreeStandingBlobs(const Grid& grid, const RoomFlood& flood,
+                                             const SegmentationOptions& options,
+                                             const std::vector<std::uint8_t>& on_chain) {
   const std::vector<Piece> pieces = FurniturePieces(grid, flood, on_chain);
   const int gap =
       std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
@@ -249,7 +253,14 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
                                     : BoxRing(blob.box);
     blobs.push_back(std::move(blob));
   }
-  for (WallPiece& piece : FindWallFurniture(grid, flood.room_of_cell, options)) {
+  return blobs;
+}
+
+// Step 5b: blobs of the furniture against walls, added to `blobs`.
+void AddWallBlobs(const Grid& grid, const std::vector<std::int32_t>& room_of_cell,
+                  const SegmentationOptions& options, WallFurnitureScratch scratch,
+                  std::vector<FurnitureBlob>* blobs) {
+  for (WallPiece& piece : FindWallFurniture(grid, room_of_cell, options, std::move(scratch))) {
     if (piece.occupied.size() < options.min_furniture_cells) continue;
     FurnitureBlob blob;
     blob.room = piece.room;
@@ -259,13 +270,8 @@ std::vector<FurnitureBlob> BuildBlobs(const Grid& grid, const RoomFlood& flood,
     blob.cell_count = blob.cells.size();
     blob.first_cell = blob.cells.front();
     blob.outline = std::move(piece.outline);
-    blobs.push_back(std::move(blob));
+    blobs->push_back(std::move(blob));
   }
-  std::sort(blobs.begin(), blobs.end(), [](const FurnitureBlob& a, const FurnitureBlob& b) {
-    return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row
-                                                : a.first_cell.col < b.first_cell.col;
-  });
-  return blobs;
 }
 
 }  // namespace
@@ -318,7 +324,17 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
     result->rooms.push_back(std::move(room));
   }
   flood.room_of_cell = std::move(rooms.labels);
-  result->blobs = BuildBlobs(grid, flood, options, on_chain);
+  result->blobs = FreeStandingBlobs(grid, flood, options, on_chain);
+  // The obstacles' labels and the chains' cells are done with: their
+  // storage becomes the wall furniture's grid-sized arrays (on a large map
+  // those were the segmentation's peak, and fresh pages cost faults).
+  WallFurnitureScratch scratch{std::move(flood.enclosed.labels), std::move(on_chain)};
+  AddWallBlobs(grid, flood.room_of_cell, options, std::move(scratch), &result->blobs);
+  std::sort(result->blobs.begin(), result->blobs.end(),
+            [](const FurnitureBlob& a, const FurnitureBlob& b) {
+              return a.first_cell.row != b.first_cell.row ? a.first_cell.row < b.first_cell.row
+                                                          : a.first_cell.col < b.first_cell.col;
+            });
   result->room_of_cell = std::move(flood.room_of_cell);
   result->doors = std::move(flood.doors);
   result->timings.chains_ms += ThreadCpuMs() - start;

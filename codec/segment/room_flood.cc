@@ -40,14 +40,14 @@ bool IsWallPiece(std::size_t cells, std::size_t perimeter, const SegmentationOpt
 std::vector<std::size_t> Perimeters(const Labeling& labels,
                                     const std::vector<std::uint8_t>& enclosed) {
   std::vector<std::size_t> perimeter(labels.components.size() + 1, 0);
-  for (int r = 0; r < labels.height; ++r) {
-    for (int c = 0; c < labels.width; ++c) {
-      const std::int32_t k = labels.at(c, r);
-      if (!k || !enclosed[k]) continue;
-      perimeter[k] += (labels.get(c - 1, r) != k) + (labels.get(c + 1, r) != k) +
-                      (labels.get(c, r - 1) != k) + (labels.get(c, r + 1) != k);
-    }
-  }
+  // Enclosed components stay off the map edge (TouchesEdge), so their
+  // cells' neighbours are all on the map.
+  const std::size_t w = static_cast<std::size_t>(labels.width);
+  const std::int32_t* l = labels.labels.data();
+  ForEachFlaggedCell(labels, enclosed, [&](std::size_t i) {
+    const std::int32_t k = l[i];
+    perimeter[k] += (l[i - 1] != k) + (l[i + 1] != k) + (l[i - w] != k) + (l[i + w] != k);
+  });
   return perimeter;
 }
 
@@ -56,36 +56,49 @@ bool TouchesEdge(const BoundingBox& box, int width, int height) {
          box.max_row == height - 1;
 }
 
+// One row of a chamfer pass: `row` relaxed from the row before it in the
+// pass (`prev`) and from its own cell before it in the pass (`step` -1 on
+// the forward pass, +1 on the backward one). The terms from `prev` do not
+// depend on the row being written, so they are taken first in a loop the
+// compiler vectorises; only the chain along the row stays serial. The
+// minimum is the same whichever order its terms come in.
+void ChamferRow(std::uint16_t* row, const std::uint16_t* prev, int pw, int step,
+                std::vector<std::uint16_t>* scratch) {
+  std::uint16_t* t = scratch->data();
+  for (int c = 1; c < pw - 1; ++c) {
+    int best = std::min(prev[c] + kSide, std::min(prev[c - 1], prev[c + 1]) + kDiagonal);
+    best = std::min<int>(best, row[c]);
+    t[c] = row[c] ? static_cast<std::uint16_t>(std::min(best, 0xfffe)) : 0;
+  }
+  // The running value needs no test for walls: a wall's 0 is below
+  // anything the step could bring, and the frame cell before the row is 0.
+  int run = 0;
+  if (step < 0) {
+    for (int c = 1; c < pw - 1; ++c) {
+      run = std::min<int>(t[c], run + kSide);
+      row[c] = static_cast<std::uint16_t>(run);
+    }
+  } else {
+    for (int c = pw - 2; c >= 1; --c) {
+      run = std::min<int>(t[c], run + kSide);
+      row[c] = static_cast<std::uint16_t>(run);
+    }
+  }
+}
+
 // Two-pass chamfer transform on the padded grid (its frame is wall, so
 // every room-space cell ends finite).
 void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph) {
   std::uint16_t* d = dist->data();
-  auto relax = [](std::uint16_t cur, int a) {
-    return static_cast<std::uint16_t>(std::min<int>(cur, std::min(a, 0xfffe)));
-  };
+  // The frame columns stay 0 in the scratch row, as in the grid.
+  std::vector<std::uint16_t> scratch(static_cast<std::size_t>(pw), 0);
   for (int r = 1; r < ph - 1; ++r) {
     std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    const std::uint16_t* up = row - pw;
-    for (int c = 1; c < pw - 1; ++c) {
-      if (!row[c]) continue;
-      int best = row[c - 1] + kSide;
-      best = std::min(best, up[c] + kSide);
-      best = std::min(best, up[c - 1] + kDiagonal);
-      best = std::min(best, up[c + 1] + kDiagonal);
-      row[c] = relax(row[c], best);
-    }
+    ChamferRow(row, row - pw, pw, -1, &scratch);
   }
   for (int r = ph - 2; r >= 1; --r) {
     std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    const std::uint16_t* down = row + pw;
-    for (int c = pw - 2; c >= 1; --c) {
-      if (!row[c]) continue;
-      int best = row[c + 1] + kSide;
-      best = std::min(best, down[c] + kSide);
-      best = std::min(best, down[c - 1] + kDiagonal);
-      best = std::min(best, down[c + 1] + kDiagonal);
-      row[c] = relax(row[c], best);
-    }
+    ChamferRow(row, row + pw, pw, +1, &scratch);
   }
 }
 
@@ -131,6 +144,9 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
   return rule;
 }
 
+// Cells of the flood's order whose neighbours are fetched ahead.
+constexpr std::size_t kPrefetchAhead = 48;
+
 // Step 3a: the merge tree. Returns the contacts of pieces kept apart;
 // `parent` ends as a union-find forest over padded cells (-1: no room space).
 std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const DoorRule& rule,
@@ -159,13 +175,30 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
   const bool keep_wide_narrowings = rule.max_room_cells > 0;
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
-  for (const std::int32_t cell : order) {
+  // The clearance of the cells in order, from the buckets' ends (start[d]
+  // now ends bucket d; bucket `top` starts at 0): reading it from `dist`
+  // would be one more cache miss per cell.
+  int level = top;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    while (k >= static_cast<std::size_t>(start[level])) --level;
+    const std::int32_t cell = order[k];
+    // Cells of one clearance lie all over the map: on a large map their
+    // neighbours' entries are cache misses, fetched ahead here.
+    if (k + kPrefetchAhead < order.size()) {
+      const std::int32_t* ahead = parent.data() + order[k + kPrefetchAhead];
+      __builtin_prefetch(ahead - pw);
+      __builtin_prefetch(ahead);
+      __builtin_prefetch(ahead + pw);
+    }
     std::int32_t roots[4];
     int n = 0;
     for (const std::int32_t off : offsets) {
       const std::int32_t nb = cell + off;
-      if (parent[nb] < 0) continue;
-      const std::int32_t root = Find(parent, nb);
+      const std::int32_t up = parent[nb];
+      if (up < 0) continue;
+      // Most cells point at their root already: found without the write of
+      // path halving, which would dirty the cache line all the same.
+      const std::int32_t root = parent[up] == up ? up : Find(parent, nb);
       if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
     }
     if (n == 0) {
@@ -179,7 +212,7 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
       if (dist[roots[k]] > dist[primary]) primary = roots[k];
     }
     parent[cell] = primary;
-    const int s = dist[cell];
+    const int s = level;
     for (int k = 0; k < n; ++k) {
       const std::int32_t other = roots[k];
       if (other == primary) continue;
@@ -204,7 +237,10 @@ struct PieceEdge {
 // them (widest contact per pair), and their merging (steps 3b and 3c).
 class PieceGraph {
  public:
-  PieceGraph(std::vector<std::int32_t>* parent, const std::vector<std::uint16_t>& clearance,
+  // Takes over the flood's union-find forest (`parent`), whose storage
+  // becomes the piece of each cell: a large map holds one such array, not
+  // two.
+  PieceGraph(std::vector<std::int32_t> parent, const std::vector<std::uint16_t>& clearance,
              const std::vector<Contact>& contacts);
 
   // Step 3b: pieces joined by passages wider than a door are one room, as
@@ -218,6 +254,9 @@ class PieceGraph {
 
   // The piece of a padded cell (-1: no room space), and its final root.
   std::int32_t PieceOf(std::size_t padded_cell) const { return piece_of_[padded_cell]; }
+  // Hands over the pieces of the padded cells (PieceOf() is not to be
+  // called after).
+  std::vector<std::int32_t> TakePieces() { return std::move(piece_of_); }
   std::int32_t Root(std::int32_t piece) { return Find(parent_, piece); }
   std::int32_t size() const { return static_cast<std::int32_t>(area_.size()); }
   std::size_t Area(std::int32_t root) const { return area_[root]; }
@@ -238,20 +277,42 @@ class PieceGraph {
   std::vector<std::unordered_map<std::int32_t, PieceEdge>> adjacency_;  // between roots
 };
 
-PieceGraph::PieceGraph(std::vector<std::int32_t>* parent,
+PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
                        const std::vector<std::uint16_t>& clearance,
                        const std::vector<Contact>& contacts)
-    : piece_of_(parent->size(), -1) {
-  for (std::size_t i = 0; i < parent->size(); ++i) {
-    if ((*parent)[i] < 0) continue;
-    const std::int32_t root = Find(*parent, static_cast<std::int32_t>(i));
-    if (piece_of_[root] < 0) {
-      piece_of_[root] = static_cast<std::int32_t>(area_.size());
+    : piece_of_(std::move(parent)) {
+  // Every cell straight to its root first (a root is its own parent, so
+  // the forest stays valid while it is rewritten).
+  std::vector<std::int32_t>& forest = piece_of_;
+  for (std::size_t i = 0; i < forest.size(); ++i) {
+    if (forest[i] >= 0) forest[i] = Find(forest, static_cast<std::int32_t>(i));
+  }
+  // Then, in cell order, pieces numbered as their first cells come. A
+  // root's entry turns into its piece, coded -2 - piece, when the piece's
+  // first cell is met, so that the piece's later cells find it there; the
+  // other cells take their pieces as they go (no later cell reads them),
+  // and the roots last.
+  constexpr auto code = [](std::int32_t piece) { return -2 - piece; };  // its own inverse
+  std::vector<std::int32_t> root_cells;                                 // by piece
+  for (std::size_t i = 0; i < forest.size(); ++i) {
+    const std::int32_t root = forest[i];
+    if (root == -1) continue;  // no room space
+    if (root < 0) {            // a root, coded when its piece's first cell came
+      ++area_[code(root)];
+      continue;
+    }
+    if (forest[root] >= 0) {  // the piece's first cell
+      forest[root] = code(static_cast<std::int32_t>(area_.size()));
+      root_cells.push_back(root);
       area_.push_back(0);
       peak_.push_back(clearance[root]);  // a root is its piece's highest cell
     }
-    piece_of_[i] = piece_of_[root];
-    ++area_[piece_of_[i]];
+    const std::int32_t piece = code(forest[root]);
+    ++area_[piece];
+    if (static_cast<std::size_t>(root) != i) forest[i] = piece;
+  }
+  for (std::size_t k = 0; k < root_cells.size(); ++k) {
+    forest[root_cells[k]] = static_cast<std::int32_t>(k);
   }
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
@@ -379,49 +440,67 @@ void FindFurnitureCandidates(const Grid& grid, const SegmentationOptions& option
   }
 }
 
-// Step 2: clearance over room space (free cells and furniture candidates).
-void ComputeClearance(const Grid& grid, RoomFlood* flood) {
+// Step 2: clearance over room space (free cells and furniture
+// candidates): chamfer 3-4 units on the grid padded by one cell on every
+// side ((width + 2) x (height + 2)), 0 outside room space.
+std::vector<std::uint16_t> ComputeClearance(const Grid& grid, RoomFlood* flood) {
   const int w = grid.width(), h = grid.height();
   const int pw = w + 2, ph = h + 2;
   flood->width = w;
   flood->height = h;
-  flood->clearance.assign(static_cast<std::size_t>(pw) * ph, 0);
+  std::vector<std::uint16_t> clearance(static_cast<std::size_t>(pw) * ph, 0);
+  const Cell* cells = grid.cells().data();
   for (int r = 0; r < h; ++r) {
-    std::uint16_t* out = flood->clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      if (grid.cells()[i] == Cell::kFree || flood->furniture_candidate[flood->enclosed.labels[i]]) {
-        out[c] = kFar;
-      }
-    }
+    std::uint16_t* out = clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
+    const Cell* in = cells + grid.Index(0, r);
+    for (int c = 0; c < w; ++c) out[c] = in[c] == Cell::kFree ? kFar : 0;
   }
-  ChamferInPlace(&flood->clearance, pw, ph);
+  const std::size_t wide = static_cast<std::size_t>(w);
+  ForEachFlaggedCell(flood->enclosed, flood->furniture_candidate, [&](std::size_t i) {
+    clearance[(i / wide + 1) * pw + (i % wide + 1)] = kFar;
+  });
+  ChamferInPlace(&clearance, pw, ph);
+  return clearance;
 }
 
 // Room ids in raster order of the rooms' first cells; pieces still below
 // `min_cells` (free specks with no neighbour) are no rooms. Returns the room
-// of each root piece (-1: none).
+// of each root piece (-1: none). The graph's pieces of the cells are
+// rewritten into the rooms of the cells where they lie (a grid cell's index
+// is below its padded cell's, so raster order reads each entry before it is
+// overwritten): a large map holds one such array, not two.
 std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::size_t min_cells,
                                       RoomFlood* flood) {
   const int w = grid.width(), h = grid.height();
   const std::size_t pw = static_cast<std::size_t>(w) + 2;
   std::vector<std::int32_t> room_of_piece(graph->size(), -1);
-  flood->room_of_cell.assign(grid.size(), 0);
+  // Each piece's root once, not once per cell: the union-find is final.
+  std::vector<std::int32_t> root_of(graph->size());
+  for (std::int32_t k = 0; k < graph->size(); ++k) root_of[k] = graph->Root(k);
+  std::vector<std::int32_t> cells = graph->TakePieces();
   std::int32_t rooms = 0;
   for (int r = 0; r < h; ++r) {
+    const std::int32_t* in = cells.data() + (r + 1) * pw + 1;
+    std::int32_t* out = cells.data() + grid.Index(0, r);
     for (int c = 0; c < w; ++c) {
-      const std::int32_t piece = graph->PieceOf((r + 1) * pw + (c + 1));
-      if (piece < 0) continue;
-      const std::int32_t root = graph->Root(piece);
-      if (graph->Area(root) < min_cells) continue;
-      if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
-      flood->room_of_cell[grid.Index(c, r)] = room_of_piece[root];
+      const std::int32_t piece = in[c];
+      std::int32_t room = 0;
+      if (piece >= 0) {
+        const std::int32_t root = root_of[piece];
+        if (graph->Area(root) >= min_cells) {
+          if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
+          room = room_of_piece[root];
+        }
+      }
+      out[c] = room;
     }
   }
+  cells.resize(grid.size());
+  flood->room_of_cell = std::move(cells);
   flood->room_count = rooms;
   flood->peak.assign(static_cast<std::size_t>(rooms) + 1, 0);
   for (std::int32_t k = 0; k < graph->size(); ++k) {
-    const std::int32_t room = room_of_piece[graph->Root(k)];
+    const std::int32_t room = room_of_piece[root_of[k]];
     if (room > 0) flood->peak[room] = std::max(flood->peak[room], graph->Peak(k));
   }
   return room_of_piece;
@@ -455,15 +534,17 @@ RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
   RoomFlood flood;
   double start = ThreadCpuMs();
   FindFurnitureCandidates(grid, options, &flood);
-  ComputeClearance(grid, &flood);
+  std::vector<std::uint16_t> clearance = ComputeClearance(grid, &flood);
   timings->clearance_ms += ThreadCpuMs() - start;
 
   start = ThreadCpuMs();
   const int pw = grid.width() + 2;
   const DoorRule rule = MakeDoorRule(options, res);
   std::vector<std::int32_t> parent;
-  const std::vector<Contact> contacts = Flood(flood.clearance, pw, rule, &parent);
-  PieceGraph graph(&parent, flood.clearance, contacts);
+  const std::vector<Contact> contacts = Flood(clearance, pw, rule, &parent);
+  PieceGraph graph(std::move(parent), clearance, contacts);
+  // The pieces hold their peaks: the clearance's memory is given back.
+  std::vector<std::uint16_t>().swap(clearance);
   if (rule.max_room_cells > 0) graph.MergeWidePassages(rule.max_door, rule.max_room_cells);
   graph.MergeNarrowPassages(rule.min_door);
   const std::size_t min_cells =

@@ -67,6 +67,49 @@ BorderClosure CloseRoomBorder(const RoomLayout& layout, const HeavyBorder& borde
 // component, left to right. Two or more = a room border for the paper.
 int MidLineEntries(const Labeling& labels, std::int32_t label);
 
+// Cells in the boxes of the components flagged in `flagged`, or 0 when
+// those boxes hold more cells than the map: then a pass over the whole map
+// reads less.
+inline std::size_t CellsInFlaggedBoxes(const Labeling& labels,
+                                       const std::vector<std::uint8_t>& flagged) {
+  std::size_t cells = 0;
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    cells += static_cast<std::size_t>(box.max_col - box.min_col + 1) *
+             static_cast<std::size_t>(box.max_row - box.min_row + 1);
+    if (cells > labels.labels.size()) return 0;
+  }
+  return cells;
+}
+
+// Calls visit(index) for every cell of the components flagged in
+// `flagged`, component by component (by their boxes) when their boxes are
+// small against the map (furniture candidates mostly are), else in one pass
+// over the map. Either way each such cell is visited once.
+template <typename Visit>
+void ForEachFlaggedCell(const Labeling& labels, const std::vector<std::uint8_t>& flagged,
+                        Visit visit) {
+  const std::int32_t* l = labels.labels.data();
+  if (CellsInFlaggedBoxes(labels, flagged) == 0) {
+    for (std::size_t i = 0; i < labels.labels.size(); ++i) {
+      if (l[i] && flagged[l[i]]) visit(i);
+    }
+    return;
+  }
+  const std::size_t w = static_cast<std::size_t>(labels.width);
+  for (std::size_t k = 1; k < flagged.size(); ++k) {
+    if (!flagged[k]) continue;
+    const BoundingBox& box = labels.components[k - 1].box;
+    const std::int32_t label = static_cast<std::int32_t>(k);
+    for (int r = box.min_row; r <= box.max_row; ++r) {
+      for (std::size_t i = r * w + box.min_col; i <= r * w + box.max_col; ++i) {
+        if (l[i] == label) visit(i);
+      }
+    }
+  }
+}
+
 // --- SegmentationMethod::kRooms ---
 
 // Rooms from flooding the clearance (room_flood.cc).
@@ -77,9 +120,6 @@ struct RoomFlood {
   // furniture candidates (enclosed, small, not a wall piece), by label.
   Labeling enclosed;
   std::vector<std::uint8_t> furniture_candidate;
-  // Chamfer 3-4 clearance on the grid padded by one cell on every side
-  // ((width + 2) x (height + 2)); 0 outside room space.
-  std::vector<std::uint16_t> clearance;
   std::vector<std::int32_t> room_of_cell;  // grid cells, 0 = no room
   std::int32_t room_count = 0;
   std::vector<std::uint16_t> peak;  // by room id: largest clearance (chamfer units)
@@ -100,9 +140,17 @@ struct WallPiece {
   std::vector<CellIndex> occupied;
   std::vector<CellIndex> outline;
 };
+// The search's grid-sized arrays of marks and flags reuse the storage of
+// `mark_storage` and `flag_storage` (any contents; arrays the caller is
+// done with): on a large map fresh arrays cost a page fault every 4 kB.
+struct WallFurnitureScratch {
+  std::vector<std::int32_t> mark_storage;
+  std::vector<std::uint8_t> flag_storage;
+};
 std::vector<WallPiece> FindWallFurniture(const Grid& grid,
                                          const std::vector<std::int32_t>& room_of_cell,
-                                         const SegmentationOptions& options);
+                                         const SegmentationOptions& options,
+                                         WallFurnitureScratch scratch = {});
 
 // Room chains, kinds and furniture blobs from the flood (room_chains.cc).
 void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood flood,

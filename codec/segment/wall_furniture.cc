@@ -25,6 +25,7 @@
 // a slanted wall is not found.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 
 #include "codec/segment/segment_internal.h"
@@ -62,17 +63,35 @@ struct Axis {
   int length = 0;  // cells per line
 };
 
+// The first column >= c of a row of blocked_ that is blocked (or w), eight
+// cells at a time: most of a map's rows are open floor, walls or unknown
+// in long stretches.
+int SkipFree(const std::uint8_t* row, int c, int w) {
+  while (c + 8 <= w) {
+    std::uint64_t chunk;
+    std::memcpy(&chunk, row + c, 8);
+    if (chunk) break;
+    c += 8;
+  }
+  while (c < w && !row[c]) ++c;
+  return c;
+}
+
 class BumpFinder {
  public:
-  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule)
+  BumpFinder(const Grid& grid, const std::vector<std::int32_t>& room_of_cell, const BumpRule& rule,
+             WallFurnitureScratch scratch)
       : grid_(grid),
         room_of_(room_of_cell),
         rule_(rule),
         blocked_(grid.size()),
         claimed_(grid.size(), 0),
-        mark_(grid.size(), 0),
-        seen_(grid.size(), 0),
-        row_marked_(grid.height(), 0) {
+        mark_(std::move(scratch.mark_storage)),
+        seen_(std::move(scratch.flag_storage)),
+        span_lo_(grid.height(), grid.width()),
+        span_hi_(grid.height(), 0) {
+    mark_.assign(grid.size(), 0);
+    seen_.assign(grid.size(), 0);
     for (std::size_t i = 0; i < grid.size(); ++i) {
       blocked_[i] = room_of_cell[i] == 0 && grid.cells()[i] != Cell::kFree;
     }
@@ -93,6 +112,15 @@ class BumpFinder {
   }
   void MarkRun(const Axis& axis, int line, int begin, int end);
   void MarkShortRuns(const Axis& axis);
+  void MarkColumnRuns(const Axis& axis);
+  void ColumnStep(const Axis& axis, std::uint8_t blocked, std::uint8_t blocked_above, int c, int r,
+                  std::vector<int>* start);
+  bool BridgeLine(int r, int dc, int dr);
+  bool Marked(int r) const { return span_lo_[r] < span_hi_[r]; }
+  void Extend(int r, int lo, int hi) {
+    span_lo_[r] = std::min(span_lo_[r], lo);
+    span_hi_[r] = std::max(span_hi_[r], hi);
+  }
   bool Accept(const Axis& axis, std::int32_t room, const std::vector<std::size_t>& cells,
               WallPiece* piece) const;
 
@@ -105,9 +133,11 @@ class BumpFinder {
   std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
   std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
   std::vector<std::uint8_t> seen_;     // cells of components looked at
-  // Rows holding marks: the passes after the marking skip the others (most
-  // of a map: walls, unknown, open floor).
-  std::vector<std::uint8_t> row_marked_;
+  // Per row, the columns [span_lo_, span_hi_) that hold its marks (empty
+  // when span_lo_ >= span_hi_): the passes after the marking look only
+  // there, not at the rest of a map (walls, unknown, open floor).
+  std::vector<int> span_lo_;
+  std::vector<int> span_hi_;
 };
 
 // A run [begin, end) of blocked cells along the axis in one line: marked
@@ -122,9 +152,9 @@ void BumpFinder::MarkRun(const Axis& axis, int line, int begin, int end) {
   const std::int32_t room = std::max(a, b);
   for (int j = begin; j < end; ++j) mark_[Index(axis, line, j)] = room;
   if (axis.rows) {
-    row_marked_[line] = 1;
+    Extend(line, begin, end);
   } else {
-    std::fill(row_marked_.begin() + begin, row_marked_.begin() + end, 1);
+    for (int r = begin; r < end; ++r) Extend(r, line, line + 1);
   }
 }
 
@@ -132,58 +162,108 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
   const int w = grid_.width(), h = grid_.height();
   // Clear what the other axis marked.
   for (int r = 0; r < h; ++r) {
-    if (!row_marked_[r]) continue;
+    if (!Marked(r)) continue;
     const std::size_t row = static_cast<std::size_t>(r) * w;
-    std::fill(mark_.begin() + row, mark_.begin() + row + w, 0);
-    std::fill(seen_.begin() + row, seen_.begin() + row + w, 0);
-    row_marked_[r] = 0;
+    std::fill(mark_.begin() + row + span_lo_[r], mark_.begin() + row + span_hi_[r], 0);
+    std::fill(seen_.begin() + row + span_lo_[r], seen_.begin() + row + span_hi_[r], 0);
+    span_lo_[r] = w;
+    span_hi_[r] = 0;
   }
   // Both axes are scanned in raster order (columns keep their open run's
   // start), so the map is read in memory order.
   if (axis.rows) {
     for (int r = 0; r < h; ++r) {
       const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(r) * w;
-      int c = 0;
+      int c = SkipFree(row, 0, w);
       while (c < w) {
-        if (!row[c]) {
-          ++c;
-          continue;
-        }
         const int begin = c;
         while (c < w && row[c]) ++c;
         MarkRun(axis, r, begin, c);
+        c = SkipFree(row, c, w);
       }
     }
   } else {
-    std::vector<int> start(w, -1);
-    for (int r = 0; r <= h; ++r) {
-      const std::uint8_t* row = r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : nullptr;
-      for (int c = 0; c < w; ++c) {
-        const bool blocked = row && row[c];
-        if (blocked && start[c] < 0) {
-          start[c] = r;
-        } else if (!blocked && start[c] >= 0) {
-          MarkRun(axis, c, start[c], r);
-          start[c] = -1;
-        }
-      }
-    }
+    MarkColumnRuns(axis);
   }
   // A noise cell in the gap between a cabinet and a side wall joins one
   // line of the cabinet to the side wall, and that line's run goes on: its
   // cells between two marked lines (of one room) are marked all the same.
   const int dc = axis.rows ? 0 : 1, dr = axis.rows ? 1 : 0;
   for (int r = dr; r + dr < h; ++r) {
-    if (!row_marked_[r - dr] || !row_marked_[r + dr]) continue;
-    for (int c = dc; c + dc < w; ++c) {
-      const std::size_t i = grid_.Index(c, r);
-      if (mark_[i] || !blocked_[i]) continue;
-      const std::int32_t before = mark_[grid_.Index(c - dc, r - dr)];
-      if (before && before == mark_[grid_.Index(c + dc, r + dr)]) {
-        mark_[i] = before;
-        row_marked_[r] = 1;
-      }
+    if (!Marked(r - dr) || !Marked(r + dr)) continue;
+    BridgeLine(r, dc, dr);
+  }
+}
+
+// The noise bridges of one row (MarkShortRuns): its unmarked blocked cells
+// between two cells of one room's marks, the row's neighbours across the
+// runs (`dc`, `dr`: one cell along the other axis). Only the columns
+// where both neighbours lie in their rows' spans of marks are looked at;
+// the row is read through plain pointers, a tight loop. Returns whether it
+// marked any cell.
+bool BumpFinder::BridgeLine(int r, int dc, int dr) {
+  const int w = grid_.width();
+  const std::size_t row = grid_.Index(0, r);
+  const std::ptrdiff_t before = -static_cast<std::ptrdiff_t>(dr) * w - dc;
+  const std::ptrdiff_t after = static_cast<std::ptrdiff_t>(dr) * w + dc;
+  // The cell before c is in row r - dr at column c - dc, the one after in
+  // row r + dr at column c + dc. A mark made here in the same row (dr = 0)
+  // lies inside the row's span, so the range does not move under the loop.
+  const int lo = std::max({dc, span_lo_[r - dr] + dc, span_lo_[r + dr] - dc});
+  const int hi = std::min({w - dc, span_hi_[r - dr] + dc, span_hi_[r + dr] - dc});
+  std::int32_t* marks = mark_.data() + row;
+  const std::uint8_t* blocked = blocked_.data() + row;
+  int first = w, last = -1;
+  for (int c = lo; c < hi; ++c) {
+    if (marks[c] || !blocked[c]) continue;
+    const std::int32_t room = marks[c + before];
+    if (room && room == marks[c + after]) {
+      marks[c] = room;
+      first = std::min(first, c);
+      last = c;
     }
+  }
+  if (last < 0) return false;
+  Extend(r, first, last + 1);
+  return true;
+}
+
+// The column runs of MarkShortRuns: a run of a column starts where its
+// cell turns blocked from the row above and ends where it turns free, so
+// only the cells that differ from the row above need a look. Rows are
+// compared eight cells at a time (blocked_ holds 0 or 1), and most words of
+// a map equal the row above.
+void BumpFinder::MarkColumnRuns(const Axis& axis) {
+  const int w = grid_.width(), h = grid_.height();
+  std::vector<int> start(w, -1);
+  const std::vector<std::uint8_t> none(static_cast<std::size_t>(w), 0);
+  const std::uint8_t* above = none.data();
+  for (int r = 0; r <= h; ++r) {
+    const std::uint8_t* row =
+        r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : none.data();
+    int c = 0;
+    for (; c + 8 <= w; c += 8) {
+      std::uint64_t a, b;
+      std::memcpy(&a, above + c, 8);
+      std::memcpy(&b, row + c, 8);
+      if (a == b) continue;
+      for (int k = c; k < c + 8; ++k) ColumnStep(axis, row[k], above[k], k, r, &start);
+    }
+    for (; c < w; ++c) ColumnStep(axis, row[c], above[c], c, r, &start);
+    above = row;
+  }
+}
+
+// Column c at row r: a run starts where the cell turns blocked and the
+// open run ends where it turns free.
+void BumpFinder::ColumnStep(const Axis& axis, std::uint8_t blocked, std::uint8_t blocked_above,
+                            int c, int r, std::vector<int>* start) {
+  if (blocked == blocked_above) return;
+  if (blocked) {
+    (*start)[c] = r;
+  } else {
+    MarkRun(axis, c, (*start)[c], r);
+    (*start)[c] = -1;
   }
 }
 
@@ -305,10 +385,11 @@ void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
   std::vector<std::uint8_t>& seen = seen_;
   std::vector<std::size_t> cells, stack;
   for (int r0 = 0; r0 < h; ++r0) {
-    if (!row_marked_[r0]) continue;  // a row without marks
-    for (int c0 = 0; c0 < w; ++c0) {
+    const std::int32_t* marks = mark_.data() + grid_.Index(0, r0);
+    for (int c0 = span_lo_[r0]; c0 < span_hi_[r0]; ++c0) {
+      if (!marks[c0]) continue;  // most cells of a marked row
       const std::size_t seed = grid_.Index(c0, r0);
-      if (!mark_[seed] || seen[seed] || claimed_[seed]) continue;
+      if (seen[seed] || claimed_[seed]) continue;
       const std::int32_t room = mark_[seed];
       cells.clear();
       stack.assign(1, seed);
@@ -340,13 +421,15 @@ void BumpFinder::Find(bool rows, std::vector<WallPiece>* out) {
 
 std::vector<WallPiece> FindWallFurniture(const Grid& grid,
                                          const std::vector<std::int32_t>& room_of_cell,
-                                         const SegmentationOptions& options) {
+                                         const SegmentationOptions& options,
+                                         WallFurnitureScratch scratch) {
   std::vector<WallPiece> pieces;
   if (grid.empty() || options.wall_furniture_max_depth_m <= 0 ||
       options.wall_furniture_max_width_m <= 0) {
     return pieces;
   }
-  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution));
+  BumpFinder finder(grid, room_of_cell, MakeBumpRule(options, grid.meta.resolution),
+                    std::move(scratch));
   finder.Find(/*rows=*/true, &pieces);
   finder.Find(/*rows=*/false, &pieces);
   return pieces;
