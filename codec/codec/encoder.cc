@@ -30,6 +30,13 @@
 namespace linemap {
 namespace {
 
+// The side of the layers' sections on maps larger than it (cells): twice
+// the blocks the layers are extracted in, so no item crosses a section. On
+// the 282-Mcell office map sections of 2048 cells (77) made the file 1.5 %
+// larger than sections of 4096 (24), whose windows still read about 1/24 of
+// the layers.
+constexpr int kSectionCells = 2 * kLayerBlockCells;
+
 Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   const int w = grid.width();
   const int h = grid.height();
@@ -117,12 +124,12 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   // The layers are drawn from the map itself at every tolerance.
   VectorLayers layers;
   if (options.vector_layers) {
-    LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options));
+    LINEMAP_ASSIGN_OR_RETURN(layers, ExtractVectorLayers(grid, options, /*with_chains=*/false));
   }
   // The layers in the order LAYR lists them: the cells' hints are drawn
   // from them in that order, as the decoder draws them.
   const int section_side =
-      LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells, kLayerBlockCells);
+      LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells, kSectionCells);
   ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls, &layers.rooms,
                           &layers.furniture);
   std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);

@@ -569,20 +569,29 @@ void Shift(std::vector<CellIndex>* points, int dc, int dr) {
 }
 
 // The block's layers moved into map cells and appended to `all`, room ids
-// following the rooms already there.
-void AppendBlockLayers(VectorLayers block, int x0, int y0, VectorLayers* all) {
+// following the rooms already there; without `with_chains` the rooms'
+// chains and the objects' outlines are dropped (their polygons stay).
+void AppendBlockLayers(VectorLayers block, int x0, int y0, bool with_chains, VectorLayers* all) {
   std::uint32_t first_id = all->rooms.empty() ? 1 : all->rooms.back().id + 1;
   std::uint32_t base = first_id;
   for (RoomOutline& room : block.rooms) {
     Shift(&room.polygon, x0, y0);
-    Shift(&room.chain, x0, y0);
+    if (with_chains) {
+      Shift(&room.chain, x0, y0);
+    } else {
+      room.chain = {};
+    }
     room.id += base;
     first_id = room.id + 1;
     all->rooms.push_back(std::move(room));
   }
   for (FurnitureObject& object : block.furniture) {
     Shift(&object.polygon, x0, y0);
-    Shift(&object.outline, x0, y0);
+    if (with_chains) {
+      Shift(&object.outline, x0, y0);
+    } else {
+      object.outline = {};
+    }
     if (object.room_id >= 0) object.room_id += static_cast<std::int32_t>(base);
     all->furniture.push_back(std::move(object));
   }
@@ -594,7 +603,8 @@ void AppendBlockLayers(VectorLayers block, int x0, int y0, VectorLayers* all) {
 
 }  // namespace
 
-StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options) {
+StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options,
+                                           bool with_chains) {
   if (grid.empty()) return VectorLayers{};
   if (grid.width() <= kLayerBlockCells && grid.height() <= kLayerBlockCells) {
     return ExtractWholeMapLayers(grid, options, true);
@@ -617,7 +627,7 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
       }
       LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers,
                                ExtractWholeMapLayers(block, block_options, false));
-      AppendBlockLayers(std::move(layers), x0, y0, &all);
+      AppendBlockLayers(std::move(layers), x0, y0, with_chains, &all);
     }
   }
   CanonicalizeWalls(&all.walls);
