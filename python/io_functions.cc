@@ -47,7 +47,8 @@ EncodeOptions EncodeOptionsFor(int tolerance, bool vectors) {
 // them.
 CellWindow WindowCellsArgument(const py::handle& window) {
   const char* kWhat = "window_cells must be four whole numbers (col0, row0, col1, row1)";
-  if (!py::isinstance<py::sequence>(window) || py::isinstance<py::str>(window)) {
+  if (!py::isinstance<py::sequence>(window) || py::isinstance<py::str>(window) ||
+      py::isinstance<py::bytes>(window)) {
     throw py::type_error(kWhat);
   }
   const auto items = py::reinterpret_borrow<py::sequence>(window);
@@ -55,9 +56,16 @@ CellWindow WindowCellsArgument(const py::handle& window) {
   int v[4];
   for (std::size_t i = 0; i < 4; ++i) {
     const py::handle item = items[i];
-    if (py::isinstance<py::float_>(item) || !PyIndex_Check(item.ptr())) throw py::type_error(kWhat);
-    const long long x = py::int_(py::reinterpret_borrow<py::object>(item)).cast<long long>();
-    if (x < INT_MIN || x > INT_MAX) throw py::value_error("window_cells: a value is out of range");
+    if (py::isinstance<py::float_>(item) || py::isinstance<py::bool_>(item) ||
+        !PyIndex_Check(item.ptr())) {
+      throw py::type_error(kWhat);
+    }
+    int overflow = 0;
+    const long long x = PyLong_AsLongLongAndOverflow(
+        py::int_(py::reinterpret_borrow<py::object>(item)).ptr(), &overflow);
+    if (overflow != 0 || x < INT_MIN || x > INT_MAX) {
+      throw py::value_error("window_cells: a value is out of range");
+    }
     v[i] = static_cast<int>(x);
   }
   return {v[0], v[1], v[2], v[3]};
@@ -207,7 +215,7 @@ void BindIo(py::module_& module) {
              py::arg("window_cells") = py::none(), R"doc(
 Loads a map: an .lmap file (by its name or its signature), a ROS map YAML
 naming its image, or a bare PGM / PNG image (0.05 m/cell, origin 0, map_server's
-thresholds). ``max_cells`` (default 2^28) refuses larger maps before they are
+thresholds). ``max_cells`` (default 2^30) refuses larger maps before they are
 allocated (MemoryError). ``window_cells=(col0, row0, col1, row1)`` loads only
 the cells of columns col0..col1-1 and rows row0..row1-1 of an .lmap file
 (row 0 at the origin), as a map whose origin is the window's lower-left

@@ -100,6 +100,7 @@ Status WriteCellBands(V2File* file, const DecodeLimits& limits, const std::strin
       held_row0 = row0 / layer_rows * layer_rows;
       held_row1 = static_cast<int>(std::min<std::int64_t>(
           height, (std::int64_t{row1} + layer_rows - 1) / layer_rows * layer_rows));
+      cells.reset();  // its index points into the layers replaced next
       const Status read =
           ReadLayersReaching(limits, CellRect{0, held_row0, width, held_row1}, file);
       if (!read.ok()) return read.WithContext(where);

@@ -81,7 +81,10 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
     LINEMAP_ASSIGN_OR_RETURN(file->furniture, DecodeFurniture(body, w, h, limits, expand_chains));
   } else if (chunk.type == kLayerChunk) {
     file->has_layer_sections = true;
-    file->layer_body = std::move(body);  // read once the window is known
+    // The table is checked now, in file order; the streams are read once
+    // the window is known.
+    LINEMAP_ASSIGN_OR_RETURN(file->layer_table, ReadLayerSectionTable(body, w, h, limits));
+    file->layer_body = std::move(body);
   } else {
     file->cell_body = std::move(body);
   }
@@ -112,8 +115,8 @@ Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const C
     LINEMAP_ASSIGN_OR_RETURN(tiles, WindowTiles(*file, *window));
   }
   StatusOr<DecodedLayers> layers =
-      DecodeLayerSections(file->layer_body, file->header.width, file->header.height, limits,
-                          expand_chains, tiles ? &*tiles : nullptr);
+      DecodeLayerSections(file->layer_body, file->layer_table, file->header.width,
+                          file->header.height, limits, expand_chains, tiles ? &*tiles : nullptr);
   if (!layers.ok()) return layers.status().WithContext(std::string("chunk ") + kLayerChunk);
   file->walls = std::move(layers->walls);
   file->rooms = std::move(layers->rooms);
@@ -124,12 +127,14 @@ Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const C
 }  // namespace
 
 StatusOr<int> LayerBandRows(const V2File& file) {
-  LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder(file).TileSize());
-  ByteCursor cursor(file.layer_body);
-  StatusOr<std::uint64_t> side = cursor.ReadVarint("section side");
-  if (!side.ok()) return side.status().WithContext(std::string("chunk ") + kLayerChunk);
-  const std::uint64_t rows = (std::max<std::uint64_t>(*side, 1) + tile - 1) / tile * tile;
-  return static_cast<int>(std::min<std::uint64_t>(rows, 1u << 30));
+  constexpr std::int64_t kMaxBands = 16;
+  LINEMAP_ASSIGN_OR_RETURN(const int tile, V2CellDecoder(file).TileSize());
+  const std::int64_t height = std::max(file.header.height, 1);
+  // The side is checked (16..2^31-1) and a tile is 1..65536 cells: no sum
+  // here wraps.
+  const std::int64_t rows =
+      std::max<std::int64_t>(file.layer_table.side, (height + kMaxBands - 1) / kMaxBands);
+  return static_cast<int>(std::min<std::int64_t>((rows + tile - 1) / tile * tile, height));
 }
 
 Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
@@ -237,7 +242,8 @@ StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& windo
   LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false,
                                                    &rect, /*defer_sections=*/true));
   Grid grid = WindowGrid(file.header.meta, window);
-  if (!file.has_layer_sections) {
+  // Without cells the grid is all unknown, whatever the layers draw.
+  if (!file.has_layer_sections || !file.has_cells) {
     LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
     return grid;
   }

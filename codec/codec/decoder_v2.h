@@ -10,6 +10,7 @@
 
 #include "codec/codec/chunk_coding.h"
 #include "codec/codec/layer_hints.h"
+#include "codec/codec/layer_sections.h"
 #include "format/container.h"
 #include "linemap/codec.h"
 
@@ -28,6 +29,7 @@ struct V2File {
   std::vector<std::uint8_t> cell_body;   // only with read_cells
   bool has_layer_sections = false;       // the layers are LAYR's
   std::vector<std::uint8_t> layer_body;  // LAYR's, until read
+  LayerSectionTable layer_table;         // LAYR's, read with the chunk
 };
 
 // Windows of a file's cells (CELL or BLKS; all unknown without either).
@@ -63,9 +65,10 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
 // Reading a deferred LAYR (ReadV2File's `defer_sections`) part by part, so
 // that a decode holds the layers of one band of rows at a time (on the
 // 282-Mcell map a quarter of them):
-// the rows of such a band: LAYR's section side rounded up to whole tiles of
-// the cells' chunk, so that bands start on tile rows and no tile is decoded
-// twice;
+// the rows of such a band: LAYR's section side, or a sixteenth of the map if
+// more (a section's items may reach any band, so more bands could multiply
+// the work), rounded up to whole tiles of the cells' chunk, so that bands
+// start on tile rows and no tile is decoded twice;
 StatusOr<int> LayerBandRows(const V2File& file);
 // the layers of the sections that draw into the tiles meeting `rect`, in
 // place of those `file` held (nothing to do without LAYR).

@@ -94,6 +94,22 @@ std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options
   return writer.Finish();
 }
 
+// A file a decoder with the default limits refuses is not written: on a
+// huge map of scattered specks the covering walls alone could pass the
+// segment limit.
+Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
+  const DecodeLimits defaults;
+  std::uint64_t segments = 0;
+  for (const WallPolyline& wall : layers.walls) segments += wall.points.size() - 1;
+  if (layers.walls.size() > defaults.max_segments || segments > defaults.max_segments) {
+    return ResourceExhaustedError(
+        "the walls have " + std::to_string(segments) +
+        " segments, more than decoders read by default (2^24): save the cells only (vector "
+        "layers off, --raster-only)");
+  }
+  return Status::Ok();
+}
+
 // The exact cells: CELL tiles coded against the layers' hints.
 std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& options,
                                      const VectorLayers& layers) {
@@ -132,6 +148,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
       LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells, kSectionCells);
   ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls, &layers.rooms,
                           &layers.furniture);
+  LINEMAP_RETURN_IF_ERROR(CheckLayersWithinDefaultLimits(layers));
   std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);
   if (options.tolerance_cells == 0) {
     return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);

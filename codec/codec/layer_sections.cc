@@ -54,17 +54,8 @@ std::vector<std::size_t> RunStarts(const std::vector<std::int64_t>& sections, st
   return starts;
 }
 
-// One section's entry in the table, as read.
-struct SectionEntry {
-  std::uint64_t walls = 0, rooms = 0, objects = 0;
-  PointBox box;
-  std::uint64_t stream_bytes = 0;
-  std::uint64_t stream_offset = 0;  // from the end of the table
-  bool empty() const { return walls == 0 && rooms == 0 && objects == 0; }
-};
-
-bool Meets(const PointBox& box, const CellRect& region) {
-  return box.c0 < region.x1 && box.c1 >= region.x0 && box.r0 < region.y1 && box.r1 >= region.y0;
+bool Meets(const LayerSection& e, const CellRect& region) {
+  return e.c0 < region.x1 && e.c1 >= region.x0 && e.r0 < region.y1 && e.r1 >= region.y0;
 }
 
 }  // namespace
@@ -126,81 +117,102 @@ std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& w
 
 namespace {
 
-// The section table: every entry read and checked against the grid, the
-// limits and the bytes after it.
-StatusOr<std::vector<SectionEntry>> ReadSectionTable(ByteCursor* cursor, int width, int height,
-                                                     const DecodeLimits& limits,
-                                                     std::int64_t* side) {
-  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t s, cursor->ReadVarint("section side"));
+// A count of one section's items, at most the limit (summed with the
+// sections before: `*sum`) and 2^32 - 1.
+Status AddCount(std::uint64_t count, std::uint64_t limit, const char* items, const char* limit_name,
+                std::uint64_t* sum, std::uint32_t* out) {
+  // The sum stays below 2^64: each term is cut to limit + 1 first.
+  *sum += std::min<std::uint64_t>(count, limit == UINT64_MAX ? limit : limit + 1);
+  if (*sum > limit || count > UINT32_MAX) {
+    return ResourceExhaustedError(std::string(items) + " exceed the " + limit_name + " limit");
+  }
+  *out = static_cast<std::uint32_t>(count);
+  return Status::Ok();
+}
+
+// The box of section `k` (n > 1 sections), checked against the grid.
+Status ReadBox(ByteCursor* cursor, int width, int height, std::int64_t k, LayerSection* e) {
+  std::uint64_t c0 = 0, r0 = 0, dc = 0, dr = 0;
+  LINEMAP_ASSIGN_OR_RETURN(c0, cursor->ReadVarint("section box column"));
+  LINEMAP_ASSIGN_OR_RETURN(r0, cursor->ReadVarint("section box row"));
+  LINEMAP_ASSIGN_OR_RETURN(dc, cursor->ReadVarint("section box width"));
+  LINEMAP_ASSIGN_OR_RETURN(dr, cursor->ReadVarint("section box height"));
+  if (c0 >= static_cast<std::uint64_t>(width) || dc >= static_cast<std::uint64_t>(width) - c0 ||
+      r0 >= static_cast<std::uint64_t>(height) || dr >= static_cast<std::uint64_t>(height) - r0) {
+    return CorruptError("section " + std::to_string(k) + ": box outside the grid");
+  }
+  e->c0 = static_cast<int>(c0);
+  e->r0 = static_cast<int>(r0);
+  e->c1 = static_cast<int>(c0 + dc);
+  e->r1 = static_cast<int>(r0 + dr);
+  return Status::Ok();
+}
+
+}  // namespace
+
+StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t>& body, int width,
+                                                  int height, const DecodeLimits& limits) {
+  ByteCursor cursor(body);
+  LINEMAP_ASSIGN_OR_RETURN(std::uint64_t s, cursor.ReadVarint("section side"));
   if (s < static_cast<std::uint64_t>(kMinSectionSide) ||
       s > static_cast<std::uint64_t>(kMaxSectionSide)) {
     return CorruptError("section side " + std::to_string(s) + " outside 16..2^31-1");
   }
-  *side = static_cast<std::int64_t>(s);
-  const SectionGrid grid(width, height, *side);
+  LayerSectionTable table;
+  table.side = static_cast<std::int64_t>(s);
+  const SectionGrid grid(width, height, table.side);
   // An entry takes at least three bytes (its counts).
-  if (static_cast<std::uint64_t>(grid.count()) > cursor->remaining() / 3) {
+  if (static_cast<std::uint64_t>(grid.count()) > cursor.remaining() / 3) {
     return CorruptError(std::to_string(grid.count()) + " sections do not fit the chunk");
   }
-  std::vector<SectionEntry> entries(static_cast<std::size_t>(grid.count()));
-  std::uint64_t walls = 0, rooms = 0, objects = 0, stream_bytes = 0;
+  std::uint64_t rooms = 0, objects = 0, stream_bytes = 0;
   for (std::int64_t k = 0; k < grid.count(); ++k) {
-    SectionEntry& e = entries[static_cast<std::size_t>(k)];
-    LINEMAP_ASSIGN_OR_RETURN(e.walls, cursor->ReadVarint("section wall count"));
-    LINEMAP_ASSIGN_OR_RETURN(e.rooms, cursor->ReadVarint("section room count"));
-    LINEMAP_ASSIGN_OR_RETURN(e.objects, cursor->ReadVarint("section object count"));
-    // Each sum stays below 2^64: every term is checked against a limit of
-    // at most 2^64 - 1 before the next is added.
-    walls += std::min<std::uint64_t>(e.walls, limits.max_segments + 1);
-    rooms += std::min<std::uint64_t>(e.rooms, limits.max_chain_length + 1);
-    objects += std::min<std::uint64_t>(e.objects, limits.max_chain_length + 1);
-    if (walls > limits.max_segments)
-      return ResourceExhaustedError("walls exceed the segment limit");
-    if (rooms > limits.max_chain_length)
-      return ResourceExhaustedError("rooms exceed the chain limit");
-    if (objects > limits.max_chain_length) {
-      return ResourceExhaustedError("objects exceed the chain limit");
-    }
-    if (e.empty()) continue;
+    LayerSection e;
+    std::uint64_t w = 0, r = 0, o = 0;
+    LINEMAP_ASSIGN_OR_RETURN(w, cursor.ReadVarint("section wall count"));
+    LINEMAP_ASSIGN_OR_RETURN(r, cursor.ReadVarint("section room count"));
+    LINEMAP_ASSIGN_OR_RETURN(o, cursor.ReadVarint("section object count"));
+    LINEMAP_RETURN_IF_ERROR(
+        AddCount(w, limits.max_segments, "walls", "segment", &table.walls, &e.walls));
+    LINEMAP_RETURN_IF_ERROR(
+        AddCount(r, limits.max_chain_length, "rooms", "chain", &rooms, &e.rooms));
+    e.first_object = objects;
+    LINEMAP_RETURN_IF_ERROR(
+        AddCount(o, limits.max_chain_length, "objects", "chain", &objects, &e.objects));
+    if (w + r + o == 0) continue;  // no box, no stream: not kept
+    e.index = static_cast<std::uint64_t>(k);
     if (grid.count() == 1) {
-      e.box = PointBox{0, 0, width - 1, height - 1};
+      e.c1 = width - 1;
+      e.r1 = height - 1;
     } else {
-      std::uint64_t c0 = 0, r0 = 0, dc = 0, dr = 0;
-      LINEMAP_ASSIGN_OR_RETURN(c0, cursor->ReadVarint("section box column"));
-      LINEMAP_ASSIGN_OR_RETURN(r0, cursor->ReadVarint("section box row"));
-      LINEMAP_ASSIGN_OR_RETURN(dc, cursor->ReadVarint("section box width"));
-      LINEMAP_ASSIGN_OR_RETURN(dr, cursor->ReadVarint("section box height"));
-      if (c0 >= static_cast<std::uint64_t>(width) || dc >= static_cast<std::uint64_t>(width) - c0 ||
-          r0 >= static_cast<std::uint64_t>(height) ||
-          dr >= static_cast<std::uint64_t>(height) - r0) {
-        return CorruptError("section " + std::to_string(k) + ": box outside the grid");
-      }
-      e.box = PointBox{static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c0 + dc),
-                       static_cast<int>(r0 + dr)};
+      LINEMAP_RETURN_IF_ERROR(ReadBox(&cursor, width, height, k, &e));
     }
-    LINEMAP_ASSIGN_OR_RETURN(e.stream_bytes, cursor->ReadVarint("section stream length"));
-    if (e.stream_bytes > cursor->remaining()) {
+    LINEMAP_ASSIGN_OR_RETURN(e.stream_bytes, cursor.ReadVarint("section stream length"));
+    if (e.stream_bytes > cursor.remaining()) {
       return CorruptError("section " + std::to_string(k) + ": stream past the end of the chunk");
     }
-    e.stream_offset = stream_bytes;
+    e.stream_offset = stream_bytes;  // from the streams' start, for now
     stream_bytes += e.stream_bytes;
+    table.sections.push_back(e);
   }
-  if (stream_bytes != cursor->remaining()) {
+  if (stream_bytes != cursor.remaining()) {
     return CorruptError("the section streams do not fill the chunk");
   }
-  return entries;
+  for (LayerSection& e : table.sections) e.stream_offset += cursor.position();
+  return table;
 }
 
+namespace {
+
 // One section's stream into `out`.
-Status DecodeSection(const std::uint8_t* data, const SectionEntry& e, int width, int height,
+Status DecodeSection(const std::uint8_t* data, const LayerSection& e, int width, int height,
                      const DecodeLimits& limits, bool expand_chains, std::uint64_t max_points,
-                     std::uint64_t* points, LayerTotals* totals, std::uint32_t first_object,
-                     DecodedLayers* out) {
-  const LayerBounds bounds{e.box.c0, e.box.r0, std::int64_t{e.box.c1} + 1,
-                           std::int64_t{e.box.r1} + 1, std::max(width, height)};
+                     std::uint64_t* points, LayerTotals* totals, DecodedLayers* out) {
+  const LayerBounds bounds{e.c0, e.r0, std::int64_t{e.c1} + 1, std::int64_t{e.r1} + 1,
+                           std::max(width, height)};
   const std::size_t size = static_cast<std::size_t>(e.stream_bytes);
   RangeDecoder dec(data + e.stream_offset, size);
-  const CellIndex origin = e.box.lower();
+  const CellIndex origin{e.c0, e.r0};
   LINEMAP_RETURN_IF_ERROR(
       DecodeWallItems(&dec, e.walls, bounds, max_points, points, origin, &out->walls));
   const std::size_t first_room = out->rooms.size();
@@ -210,39 +222,33 @@ Status DecodeSection(const std::uint8_t* data, const SectionEntry& e, int width,
       out->rooms[first_room].id <= out->rooms[first_room - 1].id) {
     return CorruptError("room ids do not increase");
   }
-  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, e.objects, bounds, limits, totals, origin,
-                                               expand_chains, first_object, &out->furniture));
+  LINEMAP_RETURN_IF_ERROR(
+      DecodeFurnitureItems(&dec, e.objects, bounds, limits, totals, origin, expand_chains,
+                           static_cast<std::uint32_t>(e.first_object), &out->furniture));
   return CheckLayerStreamEnd(dec, size, "the section's");
 }
 
 }  // namespace
 
-StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& body, int width,
-                                            int height, const DecodeLimits& limits,
-                                            bool expand_chains, const CellRect* region) {
-  ByteCursor cursor(body);
-  std::int64_t side = 0;
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<SectionEntry> entries,
-                           ReadSectionTable(&cursor, width, height, limits, &side));
-  const std::uint8_t* streams = body.data() + cursor.position();
-  std::uint64_t all_walls = 0;
-  for (const SectionEntry& e : entries) all_walls += e.walls;
+StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& body,
+                                            const LayerSectionTable& table, int width, int height,
+                                            const DecodeLimits& limits, bool expand_chains,
+                                            const CellRect* region) {
   // Points against the segment limit plus one point per wall (a wall of
-  // k + 1 segments has k + 2 points).
-  const std::uint64_t max_points = limits.max_segments + all_walls;
+  // k + 1 segments has k + 2 points); the table kept the walls within the
+  // limit, so the sum does not wrap unless the limit is 2^64 - 1.
+  const std::uint64_t max_points = limits.max_segments > UINT64_MAX - table.walls
+                                       ? UINT64_MAX
+                                       : limits.max_segments + table.walls;
   std::uint64_t points = 0;
   LayerTotals totals;
   DecodedLayers out;
-  std::uint64_t first_object = 0;
-  for (std::size_t k = 0; k < entries.size(); ++k) {
-    const SectionEntry& e = entries[k];
-    if (!e.empty() && (region == nullptr || Meets(e.box, *region))) {
-      const Status status =
-          DecodeSection(streams, e, width, height, limits, expand_chains, max_points, &points,
-                        &totals, static_cast<std::uint32_t>(first_object), &out);
-      if (!status.ok()) return status.WithContext("section " + std::to_string(k));
-    }
-    first_object += e.objects;
+  for (std::size_t k = 0; k < table.sections.size(); ++k) {
+    const LayerSection& e = table.sections[k];
+    if (region != nullptr && !Meets(e, *region)) continue;
+    const Status status = DecodeSection(body.data(), e, width, height, limits, expand_chains,
+                                        max_points, &points, &totals, &out);
+    if (!status.ok()) return status.WithContext("section " + std::to_string(e.index));
   }
   return out;
 }

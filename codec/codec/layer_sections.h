@@ -35,19 +35,42 @@ std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& w
                                               const std::vector<FurnitureObject>& furniture,
                                               int width, int height, int side);
 
-// The layers of a LAYR body: of every section when `region` is null, else of
-// the sections whose box meets `region` (a rectangle of cells; what a
-// window's tiles need). Errors: corrupt (malformed table or stream, a point
-// outside its section's box, room ids not increasing), resource exhausted
-// (counts above the limits).
+// A LAYR body's table, read and checked once against the grid, the limits
+// and the bytes (spec 5.6): the sections that hold items, in order.
+struct LayerSection {
+  std::uint64_t index = 0;             // in the section grid, row-major
+  int c0 = 0, r0 = 0, c1 = 0, r1 = 0;  // the box of its points, inclusive
+  std::uint32_t walls = 0, rooms = 0, objects = 0;
+  std::uint64_t first_object = 0;   // objects in the sections before it
+  std::uint64_t stream_offset = 0;  // in the body
+  std::uint64_t stream_bytes = 0;
+};
+struct LayerSectionTable {
+  std::int64_t side = 0;
+  std::uint64_t walls = 0;  // over all sections
+  std::vector<LayerSection> sections;
+};
+// Corrupt: a side outside 16..2^31-1, a table or stream past the body's end,
+// streams that do not fill it, a box outside the grid; resource exhausted:
+// counts above the limits (summed over the sections).
+StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t>& body, int width,
+                                                  int height, const DecodeLimits& limits);
+
+// The layers of the sections of `table` (read from `body`) whose box meets
+// `region` (a rectangle of cells; what a window's tiles need), or of every
+// section when `region` is null. Points, vertices and chain cells count
+// against the limits, and room ids must increase, over the sections read
+// together. Errors: corrupt (a malformed stream, a point outside its
+// section's box, room ids not increasing), resource exhausted.
 struct DecodedLayers {
   std::vector<WallPolyline> walls;
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
 };
-StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& body, int width,
-                                            int height, const DecodeLimits& limits,
-                                            bool expand_chains, const CellRect* region);
+StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& body,
+                                            const LayerSectionTable& table, int width, int height,
+                                            const DecodeLimits& limits, bool expand_chains,
+                                            const CellRect* region);
 
 }  // namespace linemap
 

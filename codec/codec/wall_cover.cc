@@ -38,6 +38,7 @@ CellIndex Farthest(const std::vector<CellIndex>& cells, CellIndex from) {
 bool OnObstacles(const Grid& grid, CellIndex a, CellIndex b) {
   bool on = true;
   RasterizeSegment(a, b, [&](int c, int r) {
+    if (!on) return;
     bool near = false;
     for (int dr = -1; dr <= 1 && !near; ++dr) {
       for (int dc = -1; dc <= 1 && !near; ++dc) {
@@ -71,10 +72,11 @@ void Cover(const Grid& grid, std::vector<CellIndex> cells, std::vector<LatticeSe
   const CellIndex a = Farthest(cells, cells[0]);
   const CellIndex b = Farthest(cells, a);
   const LineSegment chord = AsLine(a, b);
-  bool holds = OnObstacles(grid, a, b);
+  bool holds = true;
   for (std::size_t i = 0; i < cells.size() && holds; ++i) {
     holds = lines_internal::PointSegmentDistance(cells[i].col, cells[i].row, chord) <= kNear;
   }
+  holds = holds && OnObstacles(grid, a, b);
   if (holds) {
     out->push_back({a, b});
     return;

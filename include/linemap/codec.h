@@ -174,10 +174,10 @@ StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,
 // (`yaml_path` and the PGM beside it), atomically, without holding the grid:
 // a 2.x file is decoded a band of tile rows at a time from the top of the
 // map (at most 24 Mi cells per band, column groups on wider maps) and each
-// band goes straight to the PGM. Memory: the file's bytes and its vector
-// layers as decoded, plus the band and one tile per thread, whatever the
-// map's size (a 20,768 x 13,612 map peaks at 33 MB without layers; its
-// room and furniture chains add about 210 MB). A 1.0 file is decoded whole
+// band goes straight to the PGM. Memory: the file's bytes and the vector
+// layers of one band of LAYR sections (their polygons and walls), plus the
+// band and one tile per thread, whatever the map's size (a 20,768 x 13,612
+// map peaks at 31 MB without layers, 48 MB with them). A 1.0 file is decoded whole
 // (its planes have no tiles) and saved. Returns the map's size, metadata
 // and cell counts.
 StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,

@@ -137,6 +137,9 @@ def with_layr(payload, extra=()):
 
 side, p = read_varint(layr[1], 1)
 open(bad + 'v2_2_section_side_8.lmap', 'wb').write(with_layr(b'\x00' + varint(8) + layr[1][p:]))
+# A side of 2^64 - 1: refused before a decoder cuts the map into bands of it.
+open(bad + 'v2_2_section_side_2_64_minus_1.lmap', 'wb').write(
+    with_layr(b'\x00' + varint((1 << 64) - 1) + layr[1][p:]))
 # The 2.0 file's WALL before LAYR: the layers twice.
 open(bad + 'v2_2_layr_and_wall.lmap', 'wb').write(with_layr(layr[1], [chunk(b'WALL')]))
 # The first section with items gets a box one column narrower than its

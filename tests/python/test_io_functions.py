@@ -289,3 +289,14 @@ def test_window_cells_are_checked(bundled, tmp_path):
         linemap.load(out, window_cells="0,0,1,1")
     with pytest.raises(ValueError, match="needs an .lmap file"):
         linemap.load(bundled, window_cells=(0, 0, 1, 1))
+
+
+def test_window_cells_out_of_range_or_of_the_wrong_type(bundled, tmp_path):
+    out = tmp_path / "map.lmap"
+    linemap.save(out, linemap.load(bundled))
+    with pytest.raises(ValueError):
+        linemap.load(out, window_cells=(0, 0, 2**70, 1))
+    with pytest.raises(TypeError):
+        linemap.load(out, window_cells=(0, 0, True, 1))
+    with pytest.raises(TypeError):
+        linemap.load(out, window_cells=b"\x00\x00\x01\x01")

@@ -295,6 +295,7 @@ struct ScalingMap {
   std::vector<std::uint8_t> lmap;
   std::vector<double> png_encode_ms, png_decode_ms, lmap_encode_ms, lmap_decode_ms;
   std::vector<double> lmap_window_ms;
+  bool window_failed = false;
   double rmline_ms = 0;
   double linemap_lines_ms = 0;
 };
@@ -349,7 +350,10 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
         map.lmap_encode_ms.push_back(once([&] { (void)EncodeLmap(map.grid, EncodeOptions()); }));
         map.lmap_decode_ms.push_back(once([&] { (void)DecodeLmap(map.lmap); }));
         const CellWindow window = OnePercentWindow(map.grid);
-        map.lmap_window_ms.push_back(once([&] { (void)DecodeLmapRegion(map.lmap, window); }));
+        bool window_ok = true;
+        map.lmap_window_ms.push_back(
+            once([&] { window_ok = DecodeLmapRegion(map.lmap, window).ok(); }));
+        map.window_failed = map.window_failed || !window_ok;
       }
     }
   }
@@ -367,8 +371,8 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     if (!map.lmap_encode_ms.empty()) {
       row.lmap_encode_ms_per_mcell = Median(map.lmap_encode_ms) / mcells;
       row.lmap_decode_ms_per_mcell = Median(map.lmap_decode_ms) / mcells;
-      row.lmap_window_ms = Median(map.lmap_window_ms);
-      if (*row.lmap_window_ms > 0) {
+      if (!map.window_failed) row.lmap_window_ms = Median(map.lmap_window_ms);
+      if (row.lmap_window_ms && *row.lmap_window_ms > 0) {
         row.lmap_window_speedup = Median(map.lmap_decode_ms) / *row.lmap_window_ms;
       }
     }

@@ -37,8 +37,9 @@ struct ScalingRow {
   std::optional<double> lmap_encode_ms_per_mcell;
   std::optional<double> lmap_decode_ms_per_mcell;
   // A window of 1 % of the map (a tenth of each side, from 30 % of each
-  // side: inside one section of the layers), decoded with DecodeLmapRegion,
-  // against decoding the whole map: ms (median) and how many times faster.
+  // side, away from the centre where the layers' sections of the 64-Mcell
+  // map meet), decoded with DecodeLmapRegion, against decoding the whole
+  // map: ms (median) and how many times faster; unset if a window failed.
   std::optional<double> lmap_window_ms;
   std::optional<double> lmap_window_speedup;
 };

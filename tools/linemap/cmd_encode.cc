@@ -105,6 +105,9 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {
     return InvalidArgumentError("--tolerance must be a whole number of cells from 0 to 4");
   }
+  if (args.Has("--png-ratio") && args.Has("--no-png-ratio")) {
+    return InvalidArgumentError("--png-ratio and --no-png-ratio exclude each other");
+  }
   LINEMAP_ASSIGN_OR_RETURN(options.max_threads, args.GetInt("--threads", 0));
   if (options.max_threads < 0) return InvalidArgumentError("--threads must be 0 or more");
   LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 1024));

@@ -78,6 +78,13 @@ Layers RandomLayers(std::mt19937* rng) {
   return l;
 }
 
+// The table read, then the sections meeting `region` (all when null).
+StatusOr<DecodedLayers> ReadAndDecode(const std::vector<std::uint8_t>& body,
+                                      const DecodeLimits& limits, const CellRect* region) {
+  LINEMAP_ASSIGN_OR_RETURN(LayerSectionTable table, ReadLayerSectionTable(body, kW, kH, limits));
+  return DecodeLayerSections(body, table, kW, kH, limits, true, region);
+}
+
 void Arrange(int side, Layers* l) {
   ArrangeLayersInSections(kW, kH, side, &l->walls, &l->rooms, &l->furniture);
 }
@@ -107,7 +114,7 @@ TEST(LayerSectionsTest, ArrangedLayersRoundTripInSectionsOfAnySide) {
     ASSERT_EQ(l.walls.size(), walls);
     ASSERT_EQ(l.rooms.size(), rooms);
     ASSERT_EQ(l.furniture.size(), objects);
-    auto decoded = DecodeLayerSections(Encode(l, side), kW, kH, DecodeLimits{}, true, nullptr);
+    auto decoded = ReadAndDecode(Encode(l, side), DecodeLimits{}, nullptr);
     ASSERT_TRUE(decoded.ok()) << side << ": " << decoded.status().ToString();
     EXPECT_EQ(decoded->walls, l.walls) << side;
     EXPECT_EQ(decoded->rooms, l.rooms) << side;
@@ -164,7 +171,7 @@ TEST(LayerSectionsTest, ARegionReadsEverySectionThatReachesIt) {
     r.y0 = static_cast<int>(rng() % kH);
     r.x1 = r.x0 + 1 + static_cast<int>(rng() % (kW - r.x0));
     r.y1 = r.y0 + 1 + static_cast<int>(rng() % (kH - r.y0));
-    auto part = DecodeLayerSections(body, kW, kH, DecodeLimits{}, true, &r);
+    auto part = ReadAndDecode(body, DecodeLimits{}, &r);
     ASSERT_TRUE(part.ok()) << part.status().ToString();
     for (const WallPolyline& w : l.walls) {
       if (PointsMeet(w.points, r)) {
@@ -190,7 +197,7 @@ TEST(LayerSectionsTest, ARegionReadsEverySectionThatReachesIt) {
   corner.walls = {WallPolyline{{{1, 1}, {5, 1}}}};
   Arrange(64, &corner);
   const CellRect far{200, 150, 300, 200};
-  auto none = DecodeLayerSections(Encode(corner, 64), kW, kH, DecodeLimits{}, true, &far);
+  auto none = ReadAndDecode(Encode(corner, 64), DecodeLimits{}, &far);
   ASSERT_TRUE(none.ok());
   EXPECT_TRUE(none->walls.empty());
 }
@@ -258,7 +265,7 @@ TEST(LayerSectionsTest, BodyIsLaidOutAsTheSpecSays) {
 }
 
 void ExpectCorrupt(const std::vector<std::uint8_t>& body, const std::string& what) {
-  auto decoded = DecodeLayerSections(body, kW, kH, DecodeLimits{}, true, nullptr);
+  auto decoded = ReadAndDecode(body, DecodeLimits{}, nullptr);
   ASSERT_FALSE(decoded.ok()) << what;
   EXPECT_EQ(decoded.status().code(), StatusCode::kCorrupt)
       << what << ": " << decoded.status().ToString();
@@ -271,7 +278,7 @@ TEST(LayerSectionsTest, MalformedBodiesAreCorrupt) {
   l.walls = {WallPolyline{{{10, 10}, {40, 10}}}, WallPolyline{{{200, 150}, {250, 150}}}};
   Arrange(128, &l);
   const std::vector<std::uint8_t> good = Encode(l, 128);
-  ASSERT_TRUE(DecodeLayerSections(good, kW, kH, DecodeLimits{}, true, nullptr).ok());
+  ASSERT_TRUE(ReadAndDecode(good, DecodeLimits{}, nullptr).ok());
   ExpectCorrupt({8}, "section side 8 outside");
   ExpectCorrupt({}, "section side");
   // Six sections need at least 18 bytes of table.
@@ -299,6 +306,34 @@ TEST(LayerSectionsTest, MalformedBodiesAreCorrupt) {
                 "room ids do not increase");
 }
 
+// A side near 2^64 is refused before anything divides by it or rounds it
+// up (decoders cut the map into bands of a side's rows).
+TEST(LayerSectionsTest, HugeSidesAreCorrupt) {
+  for (std::uint64_t side : {std::uint64_t{1} << 31, ~std::uint64_t{0}, ~std::uint64_t{0} - 5}) {
+    ByteWriter body;
+    body.PutVarint(side);
+    ExpectCorrupt(body.bytes(), "outside 16..2^31-1");
+  }
+}
+
+// Empty sections cost three bytes in the file and nothing in memory: the
+// table keeps the sections that hold items (a table of 2^16 empty sections,
+// as a deflated chunk could hold in a few hundred bytes).
+TEST(LayerSectionsTest, EmptySectionsAreNotKept) {
+  ByteWriter body;
+  body.PutVarint(16);
+  const int w = 16 * 256, h = 16 * 256;
+  for (int k = 0; k < 256 * 256; ++k) {
+    body.PutVarint(0);
+    body.PutVarint(0);
+    body.PutVarint(0);
+  }
+  auto table = ReadLayerSectionTable(body.bytes(), w, h, DecodeLimits{});
+  ASSERT_TRUE(table.ok()) << table.status().ToString();
+  EXPECT_TRUE(table->sections.empty());
+  EXPECT_EQ(table->side, 16);
+}
+
 TEST(LayerSectionsTest, CountsAboveTheLimitsAreResourceExhausted) {
   std::mt19937 rng(3);
   Layers l = RandomLayers(&rng);
@@ -306,12 +341,12 @@ TEST(LayerSectionsTest, CountsAboveTheLimitsAreResourceExhausted) {
   const std::vector<std::uint8_t> body = Encode(l, 64);
   DecodeLimits few_walls;
   few_walls.max_segments = 10;
-  auto w = DecodeLayerSections(body, kW, kH, few_walls, true, nullptr);
+  auto w = ReadAndDecode(body, few_walls, nullptr);
   ASSERT_FALSE(w.ok());
   EXPECT_EQ(w.status().code(), StatusCode::kResourceExhausted) << w.status().ToString();
   DecodeLimits short_chains;
   short_chains.max_chain_length = 50;
-  auto c = DecodeLayerSections(body, kW, kH, short_chains, true, nullptr);
+  auto c = ReadAndDecode(body, short_chains, nullptr);
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.status().code(), StatusCode::kResourceExhausted) << c.status().ToString();
 }
@@ -333,7 +368,7 @@ TEST(LayerSectionsTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
   };
   for (std::size_t n = 0; n < body.size(); ++n) {
     std::vector<std::uint8_t> cut(body.begin(), body.begin() + static_cast<std::ptrdiff_t>(n));
-    auto d = DecodeLayerSections(cut, kW, kH, DecodeLimits{}, true, nullptr);
+    auto d = ReadAndDecode(cut, DecodeLimits{}, nullptr);
     if (d.ok()) {
       EXPECT_TRUE(inside(*d));
     }
@@ -341,7 +376,7 @@ TEST(LayerSectionsTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
   for (int trial = 0; trial < 300; ++trial) {
     std::vector<std::uint8_t> bad = body;
     bad[rng() % bad.size()] ^= static_cast<std::uint8_t>(1 + rng() % 255);
-    auto d = DecodeLayerSections(bad, kW, kH, DecodeLimits{}, true, nullptr);
+    auto d = ReadAndDecode(bad, DecodeLimits{}, nullptr);
     if (d.ok()) {
       EXPECT_TRUE(inside(*d));
     }

@@ -58,6 +58,8 @@ const BadFile kBadFiles[] = {
     {"v2_1_cell_and_blks.lmap", "chunk BLKS: chunk out of order or repeated"},
     // Version 2.2 (the same script).
     {"v2_2_section_side_8.lmap", "chunk LAYR: section side 8 outside 16..2^31-1"},
+    {"v2_2_section_side_2_64_minus_1.lmap",
+     "chunk LAYR: section side 18446744073709551615 outside 16..2^31-1"},
     {"v2_2_layr_and_wall.lmap", "chunk LAYR: LAYR in a file with WALL, ROOM or FURN"},
     {"v2_2_item_outside_its_section_box.lmap",
      "chunk LAYR: section 0: point out of the grid (or its section's box) or malformed"},
