@@ -103,7 +103,7 @@ class EdgeCells {
       const auto edge = [&](int c, bool left_free, bool right_free) {
         const bool free_beside =
             left_free | right_free | (up[c] == Cell::kFree) | (down[c] == Cell::kFree);
-        return static_cast<std::uint8_t>((row[c] == Cell::kOccupied) & free_beside ? kEdge : 0);
+        return static_cast<std::uint8_t>(((row[c] == Cell::kOccupied) & free_beside) ? kEdge : 0);
       };
       for (int c = 1; c + 1 < w; ++c) {
         out[c] = edge(c, row[c - 1] == Cell::kFree, row[c + 1] == Cell::kFree);
