@@ -318,6 +318,23 @@ StatusOr<ChunkStream> OpenChunkStream(const std::vector<std::uint8_t>& body, con
   return stream;
 }
 
+// The items of a 2.0 layer chunk: its count (checked against `limit`),
+// then `decode(&decoder, count, &items)` over its stream, which must end
+// where the chunk does.
+template <class Item, class DecodeItems>
+StatusOr<std::vector<Item>> DecodeChunkBody(const std::vector<std::uint8_t>& body,
+                                            const char* chunk, const char* count_name,
+                                            const char* items, std::uint64_t limit,
+                                            const char* limit_name, DecodeItems decode) {
+  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
+                           OpenChunkStream(body, count_name, items, limit, limit_name));
+  RangeDecoder dec(stream.data, stream.size);
+  std::vector<Item> out;
+  LINEMAP_RETURN_IF_ERROR(decode(&dec, stream.count, &out));
+  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, chunk));
+  return out;
+}
+
 }  // namespace
 
 LayerBounds LayerBounds::Grid(int width, int height) {
@@ -458,18 +475,15 @@ std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
 
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
                                                 int height, const DecodeLimits& limits) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "wall count", "walls",
-                                                               limits.max_segments, "segment"));
-  RangeDecoder dec(stream.data, stream.size);
-  std::vector<WallPolyline> walls;
-  // Points, against the segment limit plus one point per wall (a wall of
-  // k + 1 segments has k + 2 points).
-  std::uint64_t points = 0;
-  LINEMAP_RETURN_IF_ERROR(DecodeWallItems(&dec, stream.count, LayerBounds::Grid(width, height),
-                                          limits.max_segments + stream.count, &points, {0, 0},
-                                          &walls));
-  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "WALL"));
-  return walls;
+  return DecodeChunkBody<WallPolyline>(
+      body, "WALL", "wall count", "walls", limits.max_segments, "segment",
+      [&](RangeDecoder* dec, std::uint64_t count, std::vector<WallPolyline>* walls) {
+        // Points, against the segment limit plus one point per wall (a wall
+        // of k + 1 segments has k + 2 points).
+        std::uint64_t points = 0;
+        return DecodeWallItems(dec, count, LayerBounds::Grid(width, height),
+                               limits.max_segments + count, &points, {0, 0}, walls);
+      });
 }
 
 bool IsStorableChain(const std::vector<CellIndex>& chain, int width, int height) {
@@ -490,15 +504,13 @@ std::vector<std::uint8_t> EncodeRooms(const std::vector<RoomOutline>& rooms) {
 StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& body, int width,
                                                int height, const DecodeLimits& limits,
                                                bool expand_chains) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "room count", "rooms",
-                                                               limits.max_chain_length, "chain"));
-  RangeDecoder dec(stream.data, stream.size);
-  std::vector<RoomOutline> rooms;
-  LayerTotals totals;
-  LINEMAP_RETURN_IF_ERROR(DecodeRoomItems(&dec, stream.count, LayerBounds::Grid(width, height),
-                                          limits, &totals, {0, 0}, expand_chains, &rooms));
-  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "ROOM"));
-  return rooms;
+  return DecodeChunkBody<RoomOutline>(
+      body, "ROOM", "room count", "rooms", limits.max_chain_length, "chain",
+      [&](RangeDecoder* dec, std::uint64_t count, std::vector<RoomOutline>* rooms) {
+        LayerTotals totals;
+        return DecodeRoomItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,
+                               {0, 0}, expand_chains, rooms);
+      });
 }
 
 std::vector<std::uint8_t> EncodeFurniture(const std::vector<FurnitureObject>& furniture) {
@@ -509,16 +521,13 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
                                                        int width, int height,
                                                        const DecodeLimits& limits,
                                                        bool expand_chains) {
-  LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream, OpenChunkStream(body, "furniture count", "objects",
-                                                               limits.max_chain_length, "chain"));
-  RangeDecoder dec(stream.data, stream.size);
-  std::vector<FurnitureObject> furniture;
-  LayerTotals totals;
-  LINEMAP_RETURN_IF_ERROR(DecodeFurnitureItems(&dec, stream.count, LayerBounds::Grid(width, height),
-                                               limits, &totals, {0, 0}, expand_chains, 0,
-                                               &furniture));
-  LINEMAP_RETURN_IF_ERROR(CheckLayerStreamEnd(dec, stream.size, "FURN"));
-  return furniture;
+  return DecodeChunkBody<FurnitureObject>(
+      body, "FURN", "furniture count", "objects", limits.max_chain_length, "chain",
+      [&](RangeDecoder* dec, std::uint64_t count, std::vector<FurnitureObject>* furniture) {
+        LayerTotals totals;
+        return DecodeFurnitureItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,
+                                    {0, 0}, expand_chains, 0, furniture);
+      });
 }
 
 std::vector<CellIndex> ChainOfPolygon(const std::vector<CellIndex>& polygon) {

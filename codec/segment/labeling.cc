@@ -8,7 +8,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
+
+#include "codec/segment/byte_scan.h"
 
 namespace linemap {
 namespace {
@@ -44,19 +45,6 @@ class UnionFind {
   std::vector<std::int32_t> parent_;
 };
 
-// The first column >= col whose byte is non-zero (or w), eight at a time:
-// maps are mostly empty space.
-inline int SkipZeros(const std::uint8_t* bits, int col, int w) {
-  while (col + 8 <= w) {
-    std::uint64_t chunk;
-    std::memcpy(&chunk, bits + col, 8);
-    if (chunk) break;
-    col += 8;
-  }
-  while (col < w && !bits[col]) ++col;
-  return col;
-}
-
 }  // namespace
 
 Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
@@ -79,7 +67,7 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
     const std::uint8_t* bits = &mask.bits[base];
     for (int col = 0; col < w; ++col) {
       if (!bits[col]) {
-        col = SkipZeros(bits, col, w) - 1;
+        col = FirstNonZeroByte(bits, col, w) - 1;
         continue;
       }
       const std::int32_t west = col > 0 ? cur[col - 1] : 0;
@@ -122,7 +110,7 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
     for (int col = 0; col < w; ++col) {
       const std::int32_t p = labels[col];
       if (!p) {
-        col = SkipZeros(bits, col, w) - 1;
+        col = FirstNonZeroByte(bits, col, w) - 1;
         continue;
       }
       const std::int32_t label = final_label[p - 1];

@@ -28,6 +28,7 @@
 #include <cstring>
 #include <utility>
 
+#include "codec/segment/byte_scan.h"
 #include "codec/segment/segment_internal.h"
 
 namespace linemap::segment_internal {
@@ -62,20 +63,6 @@ struct Axis {
   int lines = 0;   // rows (or columns)
   int length = 0;  // cells per line
 };
-
-// The first column >= c of a row of blocked_ that is blocked (or w), eight
-// cells at a time: most of a map's rows are open floor, walls or unknown
-// in long stretches.
-int SkipFree(const std::uint8_t* row, int c, int w) {
-  while (c + 8 <= w) {
-    std::uint64_t chunk;
-    std::memcpy(&chunk, row + c, 8);
-    if (chunk) break;
-    c += 8;
-  }
-  while (c < w && !row[c]) ++c;
-  return c;
-}
 
 class BumpFinder {
  public:
@@ -174,12 +161,12 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
   if (axis.rows) {
     for (int r = 0; r < h; ++r) {
       const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(r) * w;
-      int c = SkipFree(row, 0, w);
+      int c = FirstNonZeroByte(row, 0, w);
       while (c < w) {
         const int begin = c;
         while (c < w && row[c]) ++c;
         MarkRun(axis, r, begin, c);
-        c = SkipFree(row, c, w);
+        c = FirstNonZeroByte(row, c, w);
       }
     }
   } else {

@@ -1,0 +1,26 @@
+// Scanning rows of byte flags for the next set one, eight bytes at a time:
+// most rows of a map's masks are long runs of zeros (open floor, unknown
+// space), and the labelling and the wall-furniture search both walk them.
+#ifndef LINEMAP_CODEC_SEGMENT_BYTE_SCAN_H_
+#define LINEMAP_CODEC_SEGMENT_BYTE_SCAN_H_
+
+#include <cstdint>
+#include <cstring>
+
+namespace linemap {
+
+// The first index >= `col` of `bytes[0, w)` whose byte is non-zero, or `w`.
+inline int FirstNonZeroByte(const std::uint8_t* bytes, int col, int w) {
+  while (col + 8 <= w) {
+    std::uint64_t chunk;
+    std::memcpy(&chunk, bytes + col, 8);
+    if (chunk) break;
+    col += 8;
+  }
+  while (col < w && !bytes[col]) ++col;
+  return col;
+}
+
+}  // namespace linemap
+
+#endif  // LINEMAP_CODEC_SEGMENT_BYTE_SCAN_H_
