@@ -1,15 +1,19 @@
 #include "format/file_io.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <utility>
 
@@ -192,6 +196,42 @@ std::string TemporaryName(const std::string& target, std::uint64_t attempt) {
 
 std::string ProcFdPath(int fd) { return "/proc/self/fd/" + std::to_string(fd); }
 
+// True for `name` == `base` + ".tmp-" + 6 letters or digits: the names
+// TemporaryName and mkstemp give the temporaries of target `base`.
+bool IsTemporaryOf(const std::string& name, const std::string& base) {
+  const std::string prefix = base + ".tmp-";
+  if (name.size() != prefix.size() + 6 || name.compare(0, prefix.size(), prefix) != 0) {
+    return false;
+  }
+  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; });
+}
+
+// Removes the temporaries of `target` that a killed save left behind. A
+// save names its unnamed file just before the rename, so a kill in that
+// instant (or during a slow close or the flush of a YAML's image) leaves
+// one; a live save touches its temporary at least every few seconds, so
+// one untouched for kStaleTemporarySeconds belongs to no live save (a save
+// whose temporary is removed anyway fails its rename, leaving the target
+// as it was). Best effort: failures to list or remove are ignored.
+void RemoveStaleTemporaries(const std::string& target) {
+  const std::string dir = DirectoryOf(target);
+  const std::size_t slash = target.find_last_of('/');
+  const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+  DIR* listing = ::opendir(dir.c_str());
+  if (listing == nullptr) return;
+  const std::time_t now = std::time(nullptr);
+  while (const dirent* entry = ::readdir(listing)) {
+    const std::string name = entry->d_name;
+    if (!IsTemporaryOf(name, base)) continue;
+    const std::string path = dir + "/" + name;
+    struct stat st;
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (now - st.st_mtime >= kStaleTemporarySeconds) ::unlink(path.c_str());
+  }
+  ::closedir(listing);
+}
+
 void SyncDirectory(const std::string& dir) {
   const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd >= 0) {
@@ -214,6 +254,7 @@ StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durab
   writer.mode_ = existing.st.st_mode & 0777;
   writer.uid_ = existing.st.st_uid;
   writer.gid_ = existing.st.st_gid;
+  RemoveStaleTemporaries(writer.target_);
   const std::string dir = DirectoryOf(writer.target_);
   int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
   // The unnamed file is linked under a name through /proc at the end; with

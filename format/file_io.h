@@ -63,8 +63,15 @@ class InputFile {
 // `path.tmp-XXXXXX` from the start where the file system or a missing /proc
 // rules that out), is flushed (fsync, unless kUnsynced), gets the replaced
 // file's permission bits, and is renamed over the target by Commit(). A
-// writer destroyed without Commit() (an error on the way, a killed process)
-// leaves the old file and no temporary. Move-only.
+// writer destroyed without Commit() leaves the old file and no temporary.
+// A process killed while writing leaves the old file whole; killed in the
+// instant between naming the temporary and the rename, it leaves a
+// `path.tmp-XXXXXX` behind, which the next save of `path` removes once it
+// is kStaleTemporarySeconds old. Move-only.
+// Age after which a `path.tmp-XXXXXX` beside `path` is taken for the
+// leftover of a killed save and removed by the next save of `path`.
+inline constexpr long kStaleTemporarySeconds = 600;
+
 class AtomicFileWriter {
  public:
   // Resolves symlinks and refuses directories, non-regular and read-only
@@ -122,9 +129,10 @@ Status CommitFilesAtomic(const std::vector<AtomicFileWriter*>& writers);
 // `path` and syncs the directory. On any failure the temporary file is
 // removed and an existing `path` is untouched. The temporary file has no
 // name while it is written (O_TMPFILE, linked under a name just before the
-// rename), so a process killed meanwhile leaves nothing behind; where the
-// file system has no unnamed files (or /proc is missing), it is named
-// `path.tmp-XXXXXX` from the start.
+// rename), so a process killed while writing leaves nothing behind; where
+// the file system has no unnamed files (or /proc is missing), it is named
+// `path.tmp-XXXXXX` from the start. Either way the next save of `path`
+// removes such leftovers once they are kStaleTemporarySeconds old.
 Status WriteFileAtomic(const std::string& path, std::string_view data,
                        Durability durability = Durability::kSynced);
 

@@ -7,9 +7,12 @@
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <ctime>
 #include <random>
 #include <string>
 #include <vector>
@@ -245,6 +248,45 @@ TEST(FileIoTest, SaveKilledWhileWritingLeavesNoTemporaryFile) {
   // rename) the whole new one.
   const std::string data = ReadFile(target);
   EXPECT_TRUE(IsWholeVersion(data, 1024) || IsWholeVersion(data, std::size_t{96} << 20));
+}
+
+// Sets the modification time of `path` to `age_s` seconds ago.
+void AgeFile(const std::string& path, long age_s) {
+  const std::time_t then = std::time(nullptr) - age_s;
+  const struct timeval times[2] = {{then, 0}, {then, 0}};
+  ASSERT_EQ(::utimes(path.c_str(), times), 0) << path;
+}
+
+TEST(FileIoTest, SaveRemovesOnlyStaleTemporariesOfItsOwnTarget) {
+  // A save killed between naming its temporary and the rename leaves one;
+  // the next save of the same target removes it once it is old enough to
+  // belong to no live save, and leaves every other file alone.
+  const std::string dir = MakeTempDir("fio");
+  const std::string target = dir + "/map.lmap";
+  WriteFile(target, Version('a', 16));
+  const std::vector<std::string> stale = {"map.lmap.tmp-0a1b2c", "map.lmap.tmp-Xy9QzW"};
+  const std::vector<std::string> kept = {
+      "map.lmap.tmp-d4e5f6",    // fresh: may be a live save's
+      "map.lmap.tmp-0a1b2",     // 5 characters: not a name a save gives
+      "map.lmap.tmp-0a1b2c7",   // 7 characters
+      "map.lmap.tmp-0a1b-c",    // not a letter or digit
+      "other.lmap.tmp-0a1b2c",  // another target's
+      "map.lmap.bak",           // the user's
+  };
+  for (const std::string& name : stale) WriteFile(dir + "/" + name, "x");
+  for (const std::string& name : kept) WriteFile(dir + "/" + name, "x");
+  for (const std::string& name : stale) AgeFile(dir + "/" + name, kStaleTemporarySeconds + 5);
+  for (std::size_t i = 1; i < kept.size(); ++i) {
+    AgeFile(dir + "/" + kept[i], kStaleTemporarySeconds + 5);
+  }
+  AgeFile(dir + "/" + kept[0], kStaleTemporarySeconds - 60);
+  ASSERT_TRUE(WriteFileAtomic(target, Version('b', 16)).ok());
+  std::vector<std::string> expected = kept;
+  expected.push_back("map.lmap");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(testing::ListDir(dir), expected);
+  EXPECT_TRUE(IsWholeVersion(ReadFile(target), 16));
+  EXPECT_EQ(ReadFile(target)[0], 'b');
 }
 
 // Streamed saves (AtomicFileWriter): the pieces land where they were
