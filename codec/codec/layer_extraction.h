@@ -38,8 +38,9 @@ inline constexpr int kLayerBlockCells = 2048;
 StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options,
                                            bool with_chains = true);
 
-// The extractor's lines for the grid (StraightWalls(): one segment per
-// straight wall).
+// The extractor's lines for the grid: the pixel steps of slanted walls at a
+// tight distance budget (EncodeOptions::straight_walls false, the default),
+// or StraightWalls() (one segment per straight wall).
 StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid, const EncodeOptions& options);
 
 // Quantises an extracted line to the lattice: endpoints rounded to the
