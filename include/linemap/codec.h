@@ -39,7 +39,8 @@ struct EncodeOptions {
   // the map simplified within that distance with every guarantee of
   // codec/codec/tolerance.h checked on what it decodes to (obstacles and
   // free space within T both ways, no leaks, plans agree); other values are
-  // refused (invalid argument).
+  // refused (invalid argument). Within a tolerance the walls are straight,
+  // fitted within T cells, and leave the scan specks to the cells.
   int tolerance_cells = 0;
   // Store the vector layers (walls, rooms, furniture) besides the cells
   // (default true); false writes the smallest exact file, cells only.
@@ -85,7 +86,8 @@ struct EncodeOptions {
   int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
-  // linemap extractor tolerance in cells (default 1.0); see lines.h.
+  // linemap extractor tolerance in cells (default 1.0; raised to
+  // tolerance_cells within a tolerance); see lines.h.
   double epsilon_cells = 1.0;
   // The wall layer: false (the default) follows the pixel steps of slanted
   // walls and both faces of two-cell walls, so that the walls' DisPL_ave
