@@ -419,7 +419,13 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
   LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
   for (RoomBorder& room : seg.rooms) {
     if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;
-    std::vector<CellIndex> polygon = SimplifyClosedChain(room.chain, kRoomTolerance);
+    // Within a tolerance T the rooms' outlines may stray as far as their
+    // cells plus one: T = 3 files 4 % smaller over the 25 maps of
+    // ../shared/maps (T + 2 saved 1 % more; furniture within T instead of
+    // one cell saved nothing, its polygons must enclose its cells).
+    const double tolerance =
+        std::max(kRoomTolerance, static_cast<double>(options.tolerance_cells + 1));
+    std::vector<CellIndex> polygon = SimplifyClosedChain(room.chain, tolerance);
     std::vector<CellIndex> chain = ChainOfPolygon(polygon);
     layers->rooms.push_back(
         {static_cast<std::uint32_t>(room.id), room.kind, std::move(polygon), std::move(chain)});
