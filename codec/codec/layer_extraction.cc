@@ -591,6 +591,35 @@ void AddCoveringSegments(const Grid& grid, const std::vector<FurnitureObject>& f
   segments->insert(segments->end(), cover.begin(), cover.end());
 }
 
+// Drops the segments shorter than `min_cells` (Chebyshev length) that
+// share neither end with another segment. Within a tolerance T, a lone
+// piece shorter than 2T + 1 cells is clutter at the file's scale (a chair,
+// a scan artefact), which the cells keep within T; segments joined to
+// others stay, so no polyline is cut. Over the 25 maps of ../shared/maps:
+// T = 1 150,877 -> 145,772 bytes, T = 3 115,205 -> 108,436 (dropping
+// every short segment, joined or not, saved 0.3 % more).
+void DropShortLoneSegments(int min_cells, std::vector<LatticeSegment>* segments) {
+  const auto key = [](CellIndex c) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.row)) << 32) |
+           static_cast<std::uint32_t>(c.col);
+  };
+  std::vector<std::uint64_t> ends;
+  ends.reserve(2 * segments->size());
+  for (const LatticeSegment& s : *segments) {
+    ends.push_back(key(s.a));
+    if (!(s.a == s.b)) ends.push_back(key(s.b));
+  }
+  std::sort(ends.begin(), ends.end());
+  const auto shared = [&](CellIndex c) {
+    const auto [lo, hi] = std::equal_range(ends.begin(), ends.end(), key(c));
+    return hi - lo > 1;
+  };
+  std::erase_if(*segments, [&](const LatticeSegment& s) {
+    const int length = std::max(std::abs(s.a.col - s.b.col), std::abs(s.a.row - s.b.row));
+    return length < min_cells && !shared(s.a) && !shared(s.b);
+  });
+}
+
 // With `order_walls` false the walls are left unordered, zero-length steps
 // and all (the caller canonicalises them).
 StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptions& options,
@@ -608,7 +637,11 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   // Within a tolerance the cells keep the scan specks within T cells, and
   // the walls are the map's walls without them: 7,300 of 158,000 bytes at
   // T = 1 over the 25 maps.
-  if (options.tolerance_cells == 0) AddCoveringSegments(grid, layers.furniture, &*segments);
+  if (options.tolerance_cells == 0) {
+    AddCoveringSegments(grid, layers.furniture, &*segments);
+  } else {
+    DropShortLoneSegments(2 * options.tolerance_cells + 1, &*segments);
+  }
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;
 }

@@ -40,7 +40,8 @@ struct EncodeOptions {
   // codec/codec/tolerance.h checked on what it decodes to (obstacles and
   // free space within T both ways, no leaks, plans agree); other values are
   // refused (invalid argument). Within a tolerance the walls are straight,
-  // fitted within T cells, and leave the scan specks to the cells; room
+  // fitted within T cells, and leave the scan specks and lone pieces
+  // shorter than 2T + 1 cells to the cells; room
   // outlines are simplified within T + 1 cells (2 when exact).
   int tolerance_cells = 0;
   // Store the vector layers (walls, rooms, furniture) besides the cells

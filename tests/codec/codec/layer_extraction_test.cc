@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -134,6 +135,37 @@ TEST(LayerExtractionTest, StraightWallsDrawFewerSegmentsFartherFromTheWalls) {
   EXPECT_LT(lines.size(), steps.size());
   EXPECT_LT(MeanEdgeDistance(*grid, steps), MeanEdgeDistance(*grid, lines));
   EXPECT_TRUE(*DecodeLmap(*a) == *DecodeLmap(*b));  // both exact
+}
+
+// Single-segment polylines shorter than `min_cells` (Chebyshev): segments
+// that share no end with another.
+int ShortLoneWalls(const LmapVectors& vectors, int min_cells) {
+  int n = 0;
+  for (const WallPolyline& wall : vectors.walls) {
+    if (wall.points.size() > 2) continue;
+    const CellIndex a = wall.points.front(), b = wall.points.back();
+    n += std::max(std::abs(a.col - b.col), std::abs(a.row - b.row)) < min_cells;
+  }
+  return n;
+}
+
+TEST(LayerExtractionTest, WithinAToleranceLonePiecesShorterThanTwoTPlusOneAreLeftToTheCells) {
+  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(grid.ok()) << grid.status().message();
+  StatusOr<std::vector<std::uint8_t>> exact = EncodeLmap(*grid);
+  ASSERT_TRUE(exact.ok());
+  // The exact file keeps them (so the check below is not vacuous).
+  EXPECT_GT(ShortLoneWalls(*DecodeLmapVectors(*exact), 7), 0);
+  for (int t = 1; t <= 3; ++t) {
+    EncodeOptions options;
+    options.tolerance_cells = t;
+    StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
+    ASSERT_TRUE(bytes.ok());
+    StatusOr<LmapVectors> vectors = DecodeLmapVectors(*bytes);
+    ASSERT_TRUE(vectors.ok());
+    EXPECT_FALSE(vectors->walls.empty()) << "T = " << t;
+    EXPECT_EQ(ShortLoneWalls(*vectors, 2 * t + 1), 0) << "T = " << t;
+  }
 }
 
 }  // namespace
