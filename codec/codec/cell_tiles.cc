@@ -100,14 +100,20 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
   }
   const TileLayout layout(width, height, static_cast<int>(tile_size));
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
-  return DecodeTilesInWindow(body, layout, index, window, threads, out,
-                             [&](CellRect t, const std::uint8_t* data, std::size_t size,
-                                 Cell* cells, std::ptrdiff_t stride) {
-                               const int tw = t.x1 - t.x0;
-                               const std::vector<std::uint8_t> hints = layers.TileHints(t);
-                               return DecodeTileRows(data, size, hints.data(), tw, tw, t.y1 - t.y0,
-                                                     cells, stride);
-                             });
+  return DecodeTilesInWindow(
+      body, layout, index, window, threads, out,
+      [&](CellRect t, const std::uint8_t* data, std::size_t size, Cell* cells,
+          std::ptrdiff_t stride) {
+        const int tw = t.x1 - t.x0;
+        // Without layers every hint is zero: none to draw.
+        if (layers.empty()) {
+          return DecodeTileRows(data, size, nullptr, 0, tw, t.y1 - t.y0, cells, stride);
+        }
+        // The hints are drawn where the cells go, the decode reading each
+        // row's before writing its cells over them.
+        layers.DrawTileHints(t, reinterpret_cast<std::uint8_t*>(cells), stride);
+        return DecodeTileRowsOverHints(data, size, tw, t.y1 - t.y0, cells, stride);
+      });
 }
 
 }  // namespace linemap

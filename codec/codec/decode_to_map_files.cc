@@ -77,7 +77,7 @@ Status WriteCellBands(V2File* file, const DecodeLimits& limits, const std::strin
   const int width = file->header.width;
   const int height = file->header.height;
   if (!file->has_cells) return WriteUnknown(width, height, writer, counts);
-  StatusOr<int> tile_size = V2CellDecoder(*file).TileSize();
+  StatusOr<int> tile_size = V2CellDecoder::TileSizeOf(*file);
   if (!tile_size.ok()) return tile_size.status().WithContext(where);
   const Bands bands = ChooseBands(width, height, *tile_size);
   // The layers of LAYR's sections are read for one band of section rows at

@@ -97,7 +97,7 @@ namespace {
 
 // `window` grown to the tiles of the cells' chunk that meet it.
 StatusOr<CellRect> WindowTiles(const V2File& file, CellRect window) {
-  LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder(file).TileSize());
+  LINEMAP_ASSIGN_OR_RETURN(int tile, V2CellDecoder::TileSizeOf(file));
   const int w = file.header.width, h = file.header.height;
   return CellRect{window.x0 / tile * tile, window.y0 / tile * tile,
                   static_cast<int>(std::min<std::int64_t>(
@@ -128,7 +128,7 @@ Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const C
 
 StatusOr<int> LayerBandRows(const V2File& file) {
   constexpr std::int64_t kMaxBands = 16;
-  LINEMAP_ASSIGN_OR_RETURN(const int tile, V2CellDecoder(file).TileSize());
+  LINEMAP_ASSIGN_OR_RETURN(const int tile, V2CellDecoder::TileSizeOf(file));
   const std::int64_t height = std::max(file.header.height, 1);
   // The side is checked (16..2^31-1) and a tile is 1..65536 cells: no sum
   // here wraps.
@@ -187,21 +187,25 @@ Status DecodeCells(const V2File& file, const CellWindow& window, const DecodeLim
   return V2CellDecoder(file).Decode(rect, limits.max_threads, out->mutable_cells().data());
 }
 
+std::string CellChunkName(const V2File& file) {
+  return std::string("chunk ") + (file.cells_in_blocks ? kBlockChunk : kCellChunk);
+}
+
 }  // namespace
 
 V2CellDecoder::V2CellDecoder(const V2File& file)
     : file_(file), index_(file.walls, file.rooms, file.furniture) {}
 
-StatusOr<int> V2CellDecoder::TileSize() const {
-  if (!file_.has_cells) return 1;
-  ByteCursor cursor(file_.cell_body);
+StatusOr<int> V2CellDecoder::TileSizeOf(const V2File& file) {
+  if (!file.has_cells) return 1;
+  ByteCursor cursor(file.cell_body);
   // BLKS puts its block side first; both decoders check the side again.
-  if (file_.cells_in_blocks) LINEMAP_RETURN_IF_ERROR(cursor.ReadU8("block side").status());
+  if (file.cells_in_blocks) LINEMAP_RETURN_IF_ERROR(cursor.ReadU8("block side").status());
   StatusOr<std::uint64_t> tile_size = cursor.ReadVarint("tile size");
   if (tile_size.ok() && (*tile_size < kMinTileSize || *tile_size > kMaxTileSize)) {
     tile_size = CorruptError("tile size " + std::to_string(*tile_size) + " outside 16..65536");
   }
-  if (!tile_size.ok()) return tile_size.status().WithContext(ChunkName());
+  if (!tile_size.ok()) return tile_size.status().WithContext(CellChunkName(file));
   return static_cast<int>(*tile_size);
 }
 
@@ -214,9 +218,7 @@ Status V2CellDecoder::Decode(CellRect window, int threads, Cell* out) const {
   return status.ok() ? status : status.WithContext(ChunkName());
 }
 
-std::string V2CellDecoder::ChunkName() const {
-  return std::string("chunk ") + (file_.cells_in_blocks ? kBlockChunk : kCellChunk);
-}
+std::string V2CellDecoder::ChunkName() const { return CellChunkName(file_); }
 
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out) {
   LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true));

@@ -39,7 +39,10 @@ class V2CellDecoder {
  public:
   explicit V2CellDecoder(const V2File& file);
   // The tile side of the cells' chunk (1 without cells).
-  StatusOr<int> TileSize() const;
+  StatusOr<int> TileSize() const { return TileSizeOf(file_); }
+  // The same without a decoder, whose layers' index (its buckets over every
+  // wall segment and outline) the tile side does not need.
+  static StatusOr<int> TileSizeOf(const V2File& file);
   // The cells of `window` (inside the map, non-empty) into `out`, a
   // (x1 - x0) x (y1 - y0) array, row-major from y0; errors name the chunk.
   Status Decode(CellRect window, int threads, Cell* out) const;

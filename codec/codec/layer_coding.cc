@@ -148,7 +148,12 @@ bool CodePath(IO* io, PathModels* m, const LayerBounds& bounds, std::size_t min_
   if (!bounds.Holds(col, row)) return false;
   CellIndex p{static_cast<int>(col), static_cast<int>(row)};
   if constexpr (IO::kReading) {
+    // Room for the points at once rather than by doubling (a wall that
+    // follows a slanted wall's pixel steps has dozens): capped, as a
+    // corrupt count may pass the points limit's check.
+    constexpr std::uint64_t kMaxReserved = 4096;
     path->clear();
+    path->reserve(static_cast<std::size_t>(std::min(k + min_points, kMaxReserved)));
     path->push_back(p);
   }
   int heading = h;

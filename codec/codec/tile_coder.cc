@@ -360,6 +360,9 @@ struct TileRows {
   std::ptrdiff_t canvas_stride = 0;
   const std::uint8_t* hints = nullptr;
   std::ptrdiff_t hint_stride = 0;
+  // Decoder: `hints` are the canvas's own rows, each row's hints kept aside
+  // before its cells are written over them.
+  bool hints_in_canvas = false;
   LayerTerms layer_terms;  // of the layer context (models 4-11)
 };
 
@@ -381,6 +384,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
   // context reads it for the rows outside the tile as well).
   const std::vector<std::uint8_t> zero_hints(
       hints == nullptr || kLayer ? static_cast<std::size_t>(tw) : 0, 0);
+  // The hints of the row below, kept from the canvas (hints_in_canvas).
+  std::vector<std::uint8_t> hints_below_kept(t.hints_in_canvas ? static_cast<std::size_t>(tw) : 0);
   unsigned row_state = kStateNone;
   for (int r = 0; r < th; ++r) {
     std::uint8_t* cur = ring.Row(r + 2);
@@ -388,7 +393,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
     const std::uint8_t* n2 = ring.Row(r);
     const std::uint8_t* hint_row = hints ? hints + r * t.hint_stride : zero_hints.data();
     // The hints one row below (read only for r > 0: inside the tile).
-    const std::uint8_t* hint_below = hints && r > 0 ? hint_row - t.hint_stride : zero_hints.data();
+    const std::uint8_t* hint_below = !hints || r == 0    ? zero_hints.data()
+                                     : t.hints_in_canvas ? hints_below_kept.data()
+                                                         : hint_row - t.hint_stride;
     if constexpr (Io::kEncoding) {
       std::memcpy(cur, t.cells + r * t.cell_stride, static_cast<std::size_t>(tw));
     }
@@ -492,6 +499,9 @@ void CodeTileScan(Io& io, const TileRows& t) {
       row_state = kStateCoded;
     }
     if constexpr (!Io::kEncoding) {
+      if (t.hints_in_canvas) {
+        std::memcpy(hints_below_kept.data(), hint_row, static_cast<std::size_t>(tw));
+      }
       std::memcpy(t.canvas + r * t.canvas_stride, cur, static_cast<std::size_t>(tw));
     }
   }
@@ -657,6 +667,30 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
   rows.hints = hints;
   rows.hint_stride = hint_stride;
   return DecodeTile(data, size, rows);
+}
+
+Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
+                               int tile_height, Cell* canvas, std::ptrdiff_t canvas_stride) {
+  if (tile_width < 0 || tile_height < 0) {
+    return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
+                                std::to_string(tile_height) + " cells");
+  }
+  TileRows rows;
+  rows.width = tile_width;
+  rows.height = tile_height;
+  rows.canvas = canvas;
+  rows.canvas_stride = canvas_stride;
+  rows.hints = reinterpret_cast<const std::uint8_t*>(canvas);
+  rows.hint_stride = canvas_stride;
+  rows.hints_in_canvas = true;
+  const Status status = DecodeTile(data, size, rows);
+  if (!status.ok()) {
+    // Rows not reached still hold hints, which are no cells.
+    for (int r = 0; r < tile_height; ++r) {
+      std::fill_n(canvas + r * canvas_stride, tile_width, Cell::kUnknown);
+    }
+  }
+  return status;
 }
 
 }  // namespace linemap

@@ -112,6 +112,15 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
                       std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
                       std::ptrdiff_t canvas_stride);
 
+// The same with the hints already drawn into `canvas` (row r of the
+// tile's hints at canvas + r * canvas_stride, as bytes): each row's hints
+// are read before its cells are written over them, so a tile needs no
+// buffer of hints of its own (a megabyte for a 1024-cell tile, whose pages
+// cost more to fault in than drawing the hints). On an error every cell of
+// the tile is unknown.
+Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
+                               int tile_height, Cell* canvas, std::ptrdiff_t canvas_stride);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_TILE_CODER_H_

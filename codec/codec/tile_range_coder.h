@@ -6,6 +6,7 @@
 #ifndef LINEMAP_CODEC_CODEC_TILE_RANGE_CODER_H_
 #define LINEMAP_CODEC_CODEC_TILE_RANGE_CODER_H_
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -45,27 +46,47 @@ struct TileBitModel {
   std::uint16_t n;
 
   std::uint32_t p0() const { return ((fast_x ^ kHalf) + (slow_x ^ kHalf)) >> 1; }
-  void Update(int bit) {
-    // floor(log2(n + 2)) capped: rate ~1/(n+2), a running mean at first.
-    const int ss0 = 31 - __builtin_clz(static_cast<unsigned>(n) + 2u);
-    const int ss = ss0 < kSlowShift ? ss0 : kSlowShift;
-    const int fs = ss < kFastShift ? ss : kFastShift;
-    std::uint32_t fast = fast_x ^ kHalf;
-    std::uint32_t slow = slow_x ^ kHalf;
-    if (bit == 0) {
-      fast += (65536u - fast) >> fs;
-      slow += (65536u - slow) >> ss;
-    } else {
-      fast -= fast >> fs;
-      slow -= slow >> ss;
-    }
-    fast_x = static_cast<std::uint16_t>(fast ^ kHalf);
-    slow_x = static_cast<std::uint16_t>(slow ^ kHalf);
-    if (n < kCountLimit) ++n;
-  }
+  inline void Update(int bit);
 };
 static_assert(std::is_trivially_default_constructible_v<TileBitModel>);
 static_assert(sizeof(TileBitModel) == 6);
+
+// The shifts of an update after n updates, slow | fast << 4: the slow one
+// floor(log2(n + 2)) capped at kSlowShift (rate ~1/(n + 2), a running mean
+// at first), the fast one that capped at kFastShift.
+constexpr std::array<std::uint8_t, TileBitModel::kCountLimit + 1> TileBitShifts() {
+  std::array<std::uint8_t, TileBitModel::kCountLimit + 1> t{};
+  for (int n = 0; n <= TileBitModel::kCountLimit; ++n) {
+    int ss = 0;
+    while ((n + 2) >> (ss + 1)) ++ss;
+    ss = ss < TileBitModel::kSlowShift ? ss : TileBitModel::kSlowShift;
+    const int fs = ss < TileBitModel::kFastShift ? ss : TileBitModel::kFastShift;
+    t[static_cast<std::size_t>(n)] = static_cast<std::uint8_t>(ss | fs << 4);
+  }
+  return t;
+}
+inline constexpr std::array<std::uint8_t, TileBitModel::kCountLimit + 1> kTileBitShifts =
+    TileBitShifts();
+
+void TileBitModel::Update(int bit) {
+  // The two shifts of the n-th update, from a table: in a run of cells
+  // with one context the update lies on the path from one cell to the
+  // next, and the table is shorter than the bit scan and the two minima.
+  const int ss = kTileBitShifts[n] & 15;
+  const int fs = kTileBitShifts[n] >> 4;
+  std::uint32_t fast = fast_x ^ kHalf;
+  std::uint32_t slow = slow_x ^ kHalf;
+  if (bit == 0) {
+    fast += (65536u - fast) >> fs;
+    slow += (65536u - slow) >> ss;
+  } else {
+    fast -= fast >> fs;
+    slow -= slow >> ss;
+  }
+  fast_x = static_cast<std::uint16_t>(fast ^ kHalf);
+  slow_x = static_cast<std::uint16_t>(slow ^ kHalf);
+  if (n < kCountLimit) ++n;
+}
 
 // `size` models in their initial state, from calloc: fresh pages cost
 // nothing until a context is first used, which matters for small tiles.

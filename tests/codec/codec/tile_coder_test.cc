@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -186,6 +187,17 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
           ASSERT_EQ(out[i], x < tw ? local_cells[i] : Cell::kUnknown) << x << ", " << y;
         }
       }
+      // The same cells decoded over the hints drawn where they go.
+      std::vector<Cell> over(local_cells.size(), Cell::kUnknown);
+      for (int y = 0; y < th; ++y) {
+        for (int x = 0; x < tw; ++x) {
+          const std::size_t i = static_cast<std::size_t>(y) * stride + x;
+          std::memcpy(&over[i], &local_hints[i], 1);
+        }
+      }
+      ASSERT_TRUE(
+          DecodeTileRowsOverHints(data.data(), data.size(), tw, th, over.data(), stride).ok());
+      ASSERT_EQ(over, out);
     }
   }
 }
