@@ -311,10 +311,8 @@ class WallTour {
     }
     // Ends in square buckets of kNearBucket cells, in one array (bucket b
     // holds in_bucket[start[b], start[b + 1]), by increasing end). Buckets
-    // much smaller than kReach: a query reads the buckets that meet the
-    // square of side 2 kReach + 1 around its end, not 3 x 3 buckets of
-    // kReach (4 times the area). Which ends are found does not depend on
-    // the buckets.
+    // much smaller than kReach, so that the search below can stop after
+    // the few nearest. Which ends are found does not depend on the buckets.
     const int bx = max_col / kNearBucket + 1, by = max_row / kNearBucket + 1;
     const auto bucket_of = [&](CellIndex p) {
       return static_cast<std::size_t>(p.row / kNearBucket) * bx + p.col / kNearBucket;
@@ -330,29 +328,66 @@ class WallTour {
     NearLists near;
     near.first.reserve(m + 1);
     near.first.push_back(0);
-    std::vector<std::pair<long, std::size_t>> found;
+    // The kNeighbours least (distance, end) pairs so far, in increasing
+    // order: kept by insertion rather than collecting every end within
+    // kReach and sorting (on the fetch maps a dense cluster of wall ends
+    // puts hundreds within reach of each end). Buckets are read ring by
+    // ring around the end's own bucket and skipped when no cell of theirs
+    // can beat the worst kept pair, so the search mostly reads the nearest
+    // few buckets; the pairs kept are the same as a full scan's.
+    std::pair<long, std::size_t> best[kNeighbours];
+    const int rings = kReach / kNearBucket + 1;
     for (std::size_t e = 0; e < m; ++e) {
       const CellIndex p = EndPoint(e);
-      found.clear();
-      const int y0 = std::max(0, (p.row - kReach) / kNearBucket);
-      const int y1 = std::min(by - 1, (p.row + kReach) / kNearBucket);
-      const int x0 = std::max(0, (p.col - kReach) / kNearBucket);
-      const int x1 = std::min(bx - 1, (p.col + kReach) / kNearBucket);
-      for (int y = y0; y <= y1; ++y) {
-        for (int x = x0; x <= x1; ++x) {
-          const std::size_t b = static_cast<std::size_t>(y) * bx + x;
-          for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-            const std::size_t f = in_bucket[k];
-            if (f / 2 == e / 2) continue;
-            const CellIndex q = EndPoint(f);
-            const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
-            if (d <= kReach) found.push_back({d, f});
-          }
+      int kept = 0;
+      const auto offer = [&](long d, std::size_t f) {
+        const std::pair<long, std::size_t> item{d, f};
+        if (kept == kNeighbours && !(item < best[kept - 1])) return;
+        int k = kept < kNeighbours ? kept++ : kept - 1;
+        for (; k > 0 && item < best[k - 1]; --k) best[k] = best[k - 1];
+        best[k] = item;
+      };
+      // L1 distance from p to the nearest cell of bucket (x, y).
+      const auto bucket_distance = [&](int x, int y) {
+        const int lo_c = x * kNearBucket, lo_r = y * kNearBucket;
+        const int dc = std::max({0, lo_c - p.col, p.col - (lo_c + kNearBucket - 1)});
+        const int dr = std::max({0, lo_r - p.row, p.row - (lo_r + kNearBucket - 1)});
+        return static_cast<long>(dc) + dr;
+      };
+      const auto scan = [&](int x, int y) {
+        if (x < 0 || x >= bx || y < 0 || y >= by) return;
+        const long reach = kept == kNeighbours ? best[kept - 1].first : kReach;
+        if (bucket_distance(x, y) > reach) return;
+        const std::size_t b = static_cast<std::size_t>(y) * bx + x;
+        for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+          const std::size_t f = in_bucket[k];
+          if (f / 2 == e / 2) continue;
+          const CellIndex q = EndPoint(f);
+          const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
+          if (d <= kReach) offer(d, f);
+        }
+      };
+      const int cx = p.col / kNearBucket, cy = p.row / kNearBucket;
+      for (int ring = 0; ring <= rings; ++ring) {
+        // Every cell of ring `ring` is at least (ring - 1) kNearBucket + 1 away.
+        if (kept == kNeighbours &&
+            best[kept - 1].first < static_cast<long>(ring - 1) * kNearBucket + 1) {
+          break;
+        }
+        if (ring == 0) {
+          scan(cx, cy);
+          continue;
+        }
+        for (int x = cx - ring; x <= cx + ring; ++x) {
+          scan(x, cy - ring);
+          scan(x, cy + ring);
+        }
+        for (int y = cy - ring + 1; y <= cy + ring - 1; ++y) {
+          scan(cx - ring, y);
+          scan(cx + ring, y);
         }
       }
-      const std::size_t keep = std::min<std::size_t>(kNeighbours, found.size());
-      std::partial_sort(found.begin(), found.begin() + keep, found.end());
-      for (std::size_t k = 0; k < keep; ++k) near.ends.push_back(found[k].second);
+      for (int k = 0; k < kept; ++k) near.ends.push_back(best[k].second);
       near.first.push_back(near.ends.size());
     }
     return near;
