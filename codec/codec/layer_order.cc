@@ -28,6 +28,7 @@ class NearestIndex {
     for (const Candidate& c : points_) {
       max_col_ = std::max(max_col_, c.p.col);
       max_row_ = std::max(max_row_, c.p.row);
+      items_ = std::max(items_, static_cast<std::size_t>(c.item) + 1);
     }
     bx_ = max_col_ / kBucket + 1;
     by_ = max_row_ / kBucket + 1;
@@ -35,17 +36,57 @@ class NearestIndex {
     for (const Candidate& c : points_) ++start_[Bucket(c.p) + 1];
     for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
     order_.resize(points_.size());
+    slot_.resize(points_.size());
+    end_.assign(start_.begin() + 1, start_.end());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < points_.size(); ++i) order_[fill[Bucket(points_[i].p)]++] = i;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      slot_[i] = fill[Bucket(points_[i].p)]++;
+      order_[slot_[i]] = i;
+    }
+    // Each item's points, for Take().
+    item_first_.assign(items_ + 1, 0);
+    for (const Candidate& c : points_) ++item_first_[static_cast<std::size_t>(c.item) + 1];
+    for (std::size_t k = 1; k < item_first_.size(); ++k) item_first_[k] += item_first_[k - 1];
+    item_points_.resize(points_.size());
+    std::vector<std::size_t> next(item_first_.begin(), item_first_.end() - 1);
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      item_points_[next[static_cast<std::size_t>(points_[i].item)]++] = i;
+    }
+    alive_.resize(points_.size());
+    alive_slot_.resize(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) alive_[i] = alive_slot_[i] = i;
   }
 
-  // The nearest candidate of an item not yet taken (-1 when none is left).
-  int Nearest(CellIndex at, const std::vector<bool>& taken) const {
+  // Takes an item's points out of the index: later queries neither read
+  // nor skip them (the nearest is the least (distance, Before) pair over
+  // the points of items not taken, whatever order they are read in, so
+  // taking them out changes no answer). Without this, once the walls near
+  // the tour's end are used up, each query read every point taken before.
+  void Take(int item) {
+    const auto k = static_cast<std::size_t>(item);
+    for (std::size_t q = item_first_[k]; q < item_first_[k + 1]; ++q) {
+      const std::size_t i = item_points_[q];
+      const std::size_t b = Bucket(points_[i].p);
+      const std::size_t last = --end_[b];
+      const std::size_t moved = order_[last];
+      order_[slot_[i]] = moved;
+      slot_[moved] = slot_[i];
+      order_[last] = i;
+      slot_[i] = last;
+      const std::size_t alive_last = alive_.size() - 1;
+      const std::size_t alive_moved = alive_[alive_last];
+      alive_[alive_slot_[i]] = alive_moved;
+      alive_slot_[alive_moved] = alive_slot_[i];
+      alive_.pop_back();
+    }
+  }
+
+  // The nearest point of an item not yet taken (-1 when none is left).
+  int Nearest(CellIndex at) const {
     int best = -1;
     long best_d = 0;
     const auto consider = [&](std::size_t i) {
       const Candidate& c = points_[i];
-      if (taken[c.item]) return;
       const long d = std::labs(long{c.p.col} - at.col) + std::labs(long{c.p.row} - at.row);
       if (best < 0 || d < best_d || (d == best_d && Before(i, static_cast<std::size_t>(best)))) {
         best = static_cast<int>(i);
@@ -58,7 +99,7 @@ class NearestIndex {
       // Points in ring r are at least (r - 1) * kBucket + 1 away.
       if (best >= 0 && best_d <= static_cast<long>(ring - 1) * kBucket) break;
       if (ring > kMaxRings) {
-        for (std::size_t i = 0; i < points_.size(); ++i) consider(i);
+        for (const std::size_t i : alive_) consider(i);
         break;
       }
       for (int y = cy - ring; y <= cy + ring; ++y) {
@@ -67,7 +108,7 @@ class NearestIndex {
         for (int x = cx - ring; x <= cx + ring; x += edge_row ? 1 : 2 * ring) {
           if (x >= 0 && x < bx_) {
             const std::size_t b = static_cast<std::size_t>(y) * bx_ + x;
-            for (std::size_t k = start_[b]; k < start_[b + 1]; ++k) consider(order_[k]);
+            for (std::size_t k = start_[b]; k < end_[b]; ++k) consider(order_[k]);
           }
           if (ring == 0) break;
         }
@@ -91,6 +132,12 @@ class NearestIndex {
   std::vector<Candidate> points_;
   std::vector<std::size_t> order_;  // point indices grouped by bucket
   std::vector<std::size_t> start_;  // bucket b holds order_[start_[b], start_[b+1])
+  std::vector<std::size_t> end_;    // its points not taken: order_[start_[b], end_[b])
+  std::vector<std::size_t> slot_;   // each point's index in order_
+  std::vector<std::size_t> item_first_, item_points_;  // item k's points
+  std::vector<std::size_t> alive_;                     // the points not taken, in no order
+  std::vector<std::size_t> alive_slot_;                // each point's index in alive_
+  std::size_t items_ = 0;
   int max_col_ = 0, max_row_ = 0, bx_ = 1, by_ = 1;
 };
 
@@ -311,10 +358,8 @@ class WallTour {
     }
     // Ends in square buckets of kNearBucket cells, in one array (bucket b
     // holds in_bucket[start[b], start[b + 1]), by increasing end). Buckets
-    // much smaller than kReach: a query reads the buckets that meet the
-    // square of side 2 kReach + 1 around its end, not 3 x 3 buckets of
-    // kReach (4 times the area). Which ends are found does not depend on
-    // the buckets.
+    // much smaller than kReach, so that the search below can stop after
+    // the few nearest. Which ends are found does not depend on the buckets.
     const int bx = max_col / kNearBucket + 1, by = max_row / kNearBucket + 1;
     const auto bucket_of = [&](CellIndex p) {
       return static_cast<std::size_t>(p.row / kNearBucket) * bx + p.col / kNearBucket;
@@ -330,29 +375,66 @@ class WallTour {
     NearLists near;
     near.first.reserve(m + 1);
     near.first.push_back(0);
-    std::vector<std::pair<long, std::size_t>> found;
+    // The kNeighbours least (distance, end) pairs so far, in increasing
+    // order: kept by insertion rather than collecting every end within
+    // kReach and sorting (on the fetch maps a dense cluster of wall ends
+    // puts hundreds within reach of each end). Buckets are read ring by
+    // ring around the end's own bucket and skipped when no cell of theirs
+    // can beat the worst kept pair, so the search mostly reads the nearest
+    // few buckets; the pairs kept are the same as a full scan's.
+    std::pair<long, std::size_t> best[kNeighbours];
+    const int rings = kReach / kNearBucket + 1;
     for (std::size_t e = 0; e < m; ++e) {
       const CellIndex p = EndPoint(e);
-      found.clear();
-      const int y0 = std::max(0, (p.row - kReach) / kNearBucket);
-      const int y1 = std::min(by - 1, (p.row + kReach) / kNearBucket);
-      const int x0 = std::max(0, (p.col - kReach) / kNearBucket);
-      const int x1 = std::min(bx - 1, (p.col + kReach) / kNearBucket);
-      for (int y = y0; y <= y1; ++y) {
-        for (int x = x0; x <= x1; ++x) {
-          const std::size_t b = static_cast<std::size_t>(y) * bx + x;
-          for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
-            const std::size_t f = in_bucket[k];
-            if (f / 2 == e / 2) continue;
-            const CellIndex q = EndPoint(f);
-            const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
-            if (d <= kReach) found.push_back({d, f});
-          }
+      int kept = 0;
+      const auto offer = [&](long d, std::size_t f) {
+        const std::pair<long, std::size_t> item{d, f};
+        if (kept == kNeighbours && !(item < best[kept - 1])) return;
+        int k = kept < kNeighbours ? kept++ : kept - 1;
+        for (; k > 0 && item < best[k - 1]; --k) best[k] = best[k - 1];
+        best[k] = item;
+      };
+      // L1 distance from p to the nearest cell of bucket (x, y).
+      const auto bucket_distance = [&](int x, int y) {
+        const int lo_c = x * kNearBucket, lo_r = y * kNearBucket;
+        const int dc = std::max({0, lo_c - p.col, p.col - (lo_c + kNearBucket - 1)});
+        const int dr = std::max({0, lo_r - p.row, p.row - (lo_r + kNearBucket - 1)});
+        return static_cast<long>(dc) + dr;
+      };
+      const auto scan = [&](int x, int y) {
+        if (x < 0 || x >= bx || y < 0 || y >= by) return;
+        const long reach = kept == kNeighbours ? best[kept - 1].first : kReach;
+        if (bucket_distance(x, y) > reach) return;
+        const std::size_t b = static_cast<std::size_t>(y) * bx + x;
+        for (std::size_t k = start[b]; k < start[b + 1]; ++k) {
+          const std::size_t f = in_bucket[k];
+          if (f / 2 == e / 2) continue;
+          const CellIndex q = EndPoint(f);
+          const long d = std::labs(long{p.col} - q.col) + std::labs(long{p.row} - q.row);
+          if (d <= kReach) offer(d, f);
+        }
+      };
+      const int cx = p.col / kNearBucket, cy = p.row / kNearBucket;
+      for (int ring = 0; ring <= rings; ++ring) {
+        // Every cell of ring `ring` is at least (ring - 1) kNearBucket + 1 away.
+        if (kept == kNeighbours &&
+            best[kept - 1].first < static_cast<long>(ring - 1) * kNearBucket + 1) {
+          break;
+        }
+        if (ring == 0) {
+          scan(cx, cy);
+          continue;
+        }
+        for (int x = cx - ring; x <= cx + ring; ++x) {
+          scan(x, cy - ring);
+          scan(x, cy + ring);
+        }
+        for (int y = cy - ring + 1; y <= cy + ring - 1; ++y) {
+          scan(cx - ring, y);
+          scan(cx + ring, y);
         }
       }
-      const std::size_t keep = std::min<std::size_t>(kNeighbours, found.size());
-      std::partial_sort(found.begin(), found.begin() + keep, found.end());
-      for (std::size_t k = 0; k < keep; ++k) near.ends.push_back(found[k].second);
+      for (int k = 0; k < kept; ++k) near.ends.push_back(best[k].second);
       near.first.push_back(near.ends.size());
     }
     return near;
@@ -375,14 +457,13 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls) {
     points.push_back({p.front(), static_cast<int>(i), false, 0});
     points.push_back({p.back(), static_cast<int>(i), true, 0});
   }
-  const NearestIndex index(std::move(points));
-  std::vector<bool> taken(walls->size(), false);
+  NearestIndex index(std::move(points));
   std::vector<WallPolyline> ordered;
   ordered.reserve(walls->size());
   CellIndex at{0, 0};
-  for (int k = index.Nearest(at, taken); k >= 0; k = index.Nearest(at, taken)) {
+  for (int k = index.Nearest(at); k >= 0; k = index.Nearest(at)) {
     const Candidate& c = index.at(k);
-    taken[c.item] = true;
+    index.Take(c.item);
     WallPolyline wall = std::move((*walls)[c.item]);
     if (c.is_last) std::reverse(wall.points.begin(), wall.points.end());
     at = wall.points.back();
@@ -402,14 +483,13 @@ void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
       points.push_back({polygon[v], static_cast<int>(i), false, static_cast<int>(v)});
     }
   }
-  const NearestIndex index(std::move(points));
-  std::vector<bool> taken(furniture->size(), false);
+  NearestIndex index(std::move(points));
   std::vector<FurnitureObject> ordered;
   ordered.reserve(furniture->size());
   CellIndex at{0, 0};
-  for (int k = index.Nearest(at, taken); k >= 0; k = index.Nearest(at, taken)) {
+  for (int k = index.Nearest(at); k >= 0; k = index.Nearest(at)) {
     const Candidate& c = index.at(k);
-    taken[c.item] = true;
+    index.Take(c.item);
     FurnitureObject object = std::move((*furniture)[c.item]);
     // Start the polygon at the nearest vertex; it ends next to it.
     std::rotate(object.polygon.begin(), object.polygon.begin() + c.vertex, object.polygon.end());

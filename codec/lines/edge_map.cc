@@ -50,21 +50,35 @@ void FloodConnectedDomain(const Grid& grid, std::size_t seed, std::vector<std::u
   }
 }
 
-void MarkObstaclesNextToFree(const Grid& grid, std::vector<std::uint8_t>* aux) {
-  const int width = grid.width();
-  const int height = grid.height();
-  const std::vector<Cell>& cells = grid.cells();
-  for (int row = 0; row < height; ++row) {
-    const std::size_t base = static_cast<std::size_t>(row) * width;
-    for (int col = 0; col < width; ++col) {
-      if (cells[base + col] != Cell::kOccupied) continue;
-      const bool next_to_free = (col + 1 < width && cells[base + col + 1] == Cell::kFree) ||
-                                (col > 0 && cells[base + col - 1] == Cell::kFree) ||
-                                (row + 1 < height && cells[base + width + col] == Cell::kFree) ||
-                                (row > 0 && cells[base - width + col] == Cell::kFree);
-      if (next_to_free) (*aux)[base + col] = kEdgePoint;
+// The obstacle cells with a free 4-neighbour, straight into `is_edge`
+// (sized to the grid) with their count: one pass over the rows through
+// plain pointers, the columns off the map's sides tested apart so that the
+// loop over the others has no branch (most cells decide nothing).
+std::size_t MarkObstaclesNextToFree(const Grid& grid, std::vector<std::uint8_t>* is_edge) {
+  const int w = grid.width(), h = grid.height();
+  if (w == 0 || h == 0) return 0;
+  const std::vector<Cell> outside(static_cast<std::size_t>(w), Cell::kUnknown);  // never free
+  std::size_t count = 0;
+  for (int r = 0; r < h; ++r) {
+    const Cell* row = grid.cells().data() + grid.Index(0, r);
+    const Cell* up = r > 0 ? row - w : outside.data();
+    const Cell* down = r + 1 < h ? row + w : outside.data();
+    std::uint8_t* out = is_edge->data() + grid.Index(0, r);
+    const auto edge = [&](int c, bool left_free, bool right_free) {
+      const bool free_beside =
+          left_free | right_free | (up[c] == Cell::kFree) | (down[c] == Cell::kFree);
+      return static_cast<std::uint8_t>((row[c] == Cell::kOccupied) & free_beside);
+    };
+    std::size_t row_count = 0;
+    for (int c = 1; c + 1 < w; ++c) {
+      out[c] = edge(c, row[c - 1] == Cell::kFree, row[c + 1] == Cell::kFree);
+      row_count += out[c];
     }
+    out[0] = edge(0, false, w > 1 && row[1] == Cell::kFree);
+    if (w > 1) out[w - 1] = edge(w - 1, row[w - 2] == Cell::kFree, false);
+    count += row_count + out[0] + (w > 1 ? out[w - 1] : 0);
   }
+  return count;
 }
 
 }  // namespace
@@ -73,21 +87,22 @@ EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
   EdgeMap edges;
   edges.width = grid.width();
   edges.height = grid.height();
-  std::vector<std::uint8_t> aux(grid.size(), kNotReached);
-  std::vector<std::uint32_t> open;
-  if (robot) {
-    // The robot's cell; a position off the map or not on a free cell floods
-    // nothing (ExtractLines reports that case as an error).
-    const double col = std::floor(robot->col + 0.5);
-    const double row = std::floor(robot->row + 0.5);
-    if (col >= 0 && row >= 0 && col < grid.width() && row < grid.height()) {
-      const std::size_t seed = grid.Index(static_cast<int>(col), static_cast<int>(row));
-      if (grid.cells()[seed] == Cell::kFree) FloodConnectedDomain(grid, seed, &aux, &open);
-    }
-  } else {
+  if (!robot) {
     // Flooding every free component marks exactly the obstacle cells with a
     // free 4-neighbour, so one direct pass gives the same AuxMap edge points.
-    MarkObstaclesNextToFree(grid, &aux);
+    edges.is_edge.resize(grid.size());
+    edges.edge_count = MarkObstaclesNextToFree(grid, &edges.is_edge);
+    return edges;
+  }
+  std::vector<std::uint8_t> aux(grid.size(), kNotReached);
+  std::vector<std::uint32_t> open;
+  // The robot's cell; a position off the map or not on a free cell floods
+  // nothing (ExtractLines reports that case as an error).
+  const double col = std::floor(robot->col + 0.5);
+  const double row = std::floor(robot->row + 0.5);
+  if (col >= 0 && row >= 0 && col < grid.width() && row < grid.height()) {
+    const std::size_t seed = grid.Index(static_cast<int>(col), static_cast<int>(row));
+    if (grid.cells()[seed] == Cell::kFree) FloodConnectedDomain(grid, seed, &aux, &open);
   }
   edges.is_edge.assign(grid.size(), 0);
   for (std::size_t i = 0; i < aux.size(); ++i) {

@@ -70,8 +70,14 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
         col = FirstNonZeroByte(bits, col, w) - 1;
         continue;
       }
-      const std::int32_t west = col > 0 ? cur[col - 1] : 0;
       const std::int32_t north = up ? up[col] : 0;
+      // Inside a blob (most cells of a large one) the north label decides
+      // in 8-connectivity: taken before the other neighbours are read.
+      if (eight && north) {
+        cur[col] = north;
+        continue;
+      }
+      const std::int32_t west = col > 0 ? cur[col - 1] : 0;
       std::int32_t label = 0;
       if (eight) {
         const std::int32_t north_west = (up && col > 0) ? up[col - 1] : 0;
@@ -113,17 +119,23 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
         col = FirstNonZeroByte(bits, col, w) - 1;
         continue;
       }
+      // The run of cells with this provisional label is one component's:
+      // its statistics are updated once for the run, not once a cell.
+      int end = col + 1;
+      while (end < w && labels[end] == p) ++end;
       const std::int32_t label = final_label[p - 1];
-      labels[col] = label;
+      std::fill(labels + col, labels + end, label);
       ComponentStats& stats = result.components[label - 1];
-      if (stats.cell_count++ == 0) {
+      if (stats.cell_count == 0) {
         stats.first_cell = {col, row};
         stats.box = {col, row, col, row};
-        continue;
+      } else {
+        if (col < stats.box.min_col) stats.box.min_col = col;
+        stats.box.max_row = row;  // rows are visited in increasing order
       }
-      if (col < stats.box.min_col) stats.box.min_col = col;
-      if (col > stats.box.max_col) stats.box.max_col = col;
-      stats.box.max_row = row;  // rows are visited in increasing order
+      if (end - 1 > stats.box.max_col) stats.box.max_col = end - 1;
+      stats.cell_count += static_cast<std::size_t>(end - col);
+      col = end - 1;
     }
   }
   return result;
