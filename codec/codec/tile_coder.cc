@@ -652,9 +652,13 @@ std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_
   return EncodeTile(rows, model);
 }
 
-Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
-                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
-                      std::ptrdiff_t canvas_stride) {
+namespace {
+
+// The rows a decode writes into `canvas`, reading `hints`; refuses a
+// negative size.
+StatusOr<TileRows> CanvasRows(int tile_width, int tile_height, Cell* canvas,
+                              std::ptrdiff_t canvas_stride, const std::uint8_t* hints,
+                              std::ptrdiff_t hint_stride) {
   if (tile_width < 0 || tile_height < 0) {
     return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
                                 std::to_string(tile_height) + " cells");
@@ -666,22 +670,24 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
   rows.canvas_stride = canvas_stride;
   rows.hints = hints;
   rows.hint_stride = hint_stride;
+  return rows;
+}
+
+}  // namespace
+
+Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
+                      std::ptrdiff_t canvas_stride) {
+  LINEMAP_ASSIGN_OR_RETURN(TileRows rows, CanvasRows(tile_width, tile_height, canvas, canvas_stride,
+                                                     hints, hint_stride));
   return DecodeTile(data, size, rows);
 }
 
 Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
                                int tile_height, Cell* canvas, std::ptrdiff_t canvas_stride) {
-  if (tile_width < 0 || tile_height < 0) {
-    return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
-                                std::to_string(tile_height) + " cells");
-  }
-  TileRows rows;
-  rows.width = tile_width;
-  rows.height = tile_height;
-  rows.canvas = canvas;
-  rows.canvas_stride = canvas_stride;
-  rows.hints = reinterpret_cast<const std::uint8_t*>(canvas);
-  rows.hint_stride = canvas_stride;
+  LINEMAP_ASSIGN_OR_RETURN(
+      TileRows rows, CanvasRows(tile_width, tile_height, canvas, canvas_stride,
+                                reinterpret_cast<const std::uint8_t*>(canvas), canvas_stride));
   rows.hints_in_canvas = true;
   const Status status = DecodeTile(data, size, rows);
   if (!status.ok()) {
