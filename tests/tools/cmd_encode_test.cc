@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "linemap/codec.h"
+#include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -137,6 +139,28 @@ TEST(CmdEncodeTest, PoseOffTheMapIsRefused) {
     const CliResult r =
         RunCli({"encode", dir + "/free.pgm", "-o", dir + "/f.lmap", "--pose", pose});
     EXPECT_EQ(r.exit_code, 0) << pose << ": " << r.err;
+  }
+}
+
+// `exact` in the JSON says whether the file decodes to the map, which the
+// test checks by decoding it: within a tolerance depot is simplified, while
+// lse_arena (a clean 80 x 60 arena) gains nothing and keeps its exact file.
+TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
+  const std::string dir = MakeTempDir("encode_exact");
+  const std::string depot = CopyDepot(dir);
+  const std::string arena = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  for (const auto& [map, t] :
+       std::vector<std::pair<std::string, std::string>>{{depot, "1"}, {arena, "4"}, {depot, "0"}}) {
+    const std::string out = dir + "/t" + t + ".lmap";
+    const CliResult r = RunCli({"encode", map, "-o", out, "--tolerance", t, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    StatusOr<Grid> decoded = LoadLmap(out);
+    StatusOr<Grid> original = LoadRosMap(map);
+    ASSERT_TRUE(decoded.ok() && original.ok()) << map;
+    const bool decodes_exactly = decoded->cells() == original->cells();
+    const bool says_exact = r.out.find("\"exact\":true") != std::string::npos;
+    EXPECT_EQ(says_exact, decodes_exactly) << map << " T = " << t << ": " << r.out;
+    EXPECT_EQ(says_exact, t != "1") << map << " T = " << t;
   }
 }
 

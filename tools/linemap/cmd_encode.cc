@@ -1,8 +1,10 @@
 // linemap encode MAP -o OUT.lmap [--raster-only] [--tolerance 0] [--threads N]
 //                 [--lossy [--simplify-free]] [--method linemap|rmline] [--epsilon E]
 //                 [--pose X,Y[,YAW]] [--json]
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <future>
 #include <string_view>
@@ -238,11 +240,20 @@ int RunEncode(const std::vector<std::string>& args) {
   StatusOr<std::size_t> png = png_task.get();
   if (!png.ok()) return ReportError("encode", png.status());
   const double ratio = *png > 0 ? static_cast<double>(bytes->size()) / *png : 0.0;
+  // Within a tolerance the file is exact where nothing could be simplified
+  // (or the exact file was the smaller): which one, its decode says.
+  bool exact = !options->format_v1;
+  if (exact && options->tolerance_cells > 0) {
+    DecodeLimits limits;
+    limits.max_cells = std::max<std::uint64_t>(limits.max_cells, grid->size());
+    StatusOr<Grid> decoded = DecodeLmap(*bytes, limits);
+    exact = decoded.ok() && decoded->cells() == grid->cells();
+  }
   if (parsed->Has("--json")) {
     JsonObject json;
     json.Add("cells", std::uint64_t{grid->size()}).Add("bytes", std::uint64_t{bytes->size()});
     if (with_png) json.Add("png_bytes", std::uint64_t{*png}).Add("ratio_to_png", ratio);
-    json.Add("exact", !options->format_v1)
+    json.Add("exact", exact)
         .Add("vector_layers", !options->format_v1 && options->vector_layers)
         .Add("seconds", seconds);
     std::printf("%s\n", json.str().c_str());
@@ -250,10 +261,10 @@ int RunEncode(const std::vector<std::string>& args) {
   }
   std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
   std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
-              options->format_v1             ? "version 1.0, lossy"
-              : options->tolerance_cells > 0 ? "within the tolerance"
-              : options->vector_layers       ? "exact, with walls, rooms and furniture"
-                                             : "exact, cells only");
+              options->format_v1       ? "version 1.0, lossy"
+              : !exact                 ? "within the tolerance"
+              : options->vector_layers ? "exact, with walls, rooms and furniture"
+                                       : "exact, cells only");
   if (with_png) {
     std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
                 ratio > 0 ? 1.0 / ratio : 0.0);
