@@ -6,7 +6,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstddef>
@@ -182,29 +181,34 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   return existing;
 }
 
+constexpr char kTemporaryMarker[] = ".linemap-tmp-";
+
 // A name for a temporary beside `target` that no other save uses: the
 // clock and the process id, varied by `attempt` on a clash.
 std::string TemporaryName(const std::string& target, std::uint64_t attempt) {
   const std::uint64_t seed =
       static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
       (static_cast<std::uint64_t>(::getpid()) << 32);
-  char suffix[24];
-  std::snprintf(suffix, sizeof(suffix), ".tmp-%06llx",
+  char suffix[32];
+  std::snprintf(suffix, sizeof(suffix), ".linemap-tmp-%06llx",
                 static_cast<unsigned long long>((seed + attempt * 0x9e3779b9u) & 0xffffff));
   return target + suffix;
 }
 
 std::string ProcFdPath(int fd) { return "/proc/self/fd/" + std::to_string(fd); }
 
-// True for `name` == `base` + ".tmp-" + 6 letters or digits: the names
-// TemporaryName and mkstemp give the temporaries of target `base`.
+// True for `name` == `base` + ".linemap-tmp-" + 6 ASCII letters or digits:
+// the names TemporaryName and mkstemp give the temporaries of target
+// `base` (a marker no user file is likely to carry, unlike ".tmp-").
 bool IsTemporaryOf(const std::string& name, const std::string& base) {
-  const std::string prefix = base + ".tmp-";
+  const std::string prefix = base + kTemporaryMarker;
   if (name.size() != prefix.size() + 6 || name.compare(0, prefix.size(), prefix) != 0) {
     return false;
   }
-  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
-                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; });
+  return std::all_of(
+      name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(), [](char c) {
+        return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+      });
 }
 
 // Removes the temporaries of `target` that a killed save left behind. A
@@ -226,7 +230,10 @@ void RemoveStaleTemporaries(const std::string& target) {
     if (!IsTemporaryOf(name, base)) continue;
     const std::string path = dir + "/" + name;
     struct stat st;
-    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    // Only regular files of ours: never another user's save.
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != ::geteuid()) {
+      continue;
+    }
     if (now - st.st_mtime >= kStaleTemporarySeconds) ::unlink(path.c_str());
   }
   ::closedir(listing);
@@ -264,7 +271,7 @@ StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durab
     fd = -1;
   }
   if (fd < 0) {  // no unnamed files here (old kernel, some file systems)
-    writer.temp_name_ = writer.target_ + ".tmp-XXXXXX";
+    writer.temp_name_ = writer.target_ + kTemporaryMarker + "XXXXXX";
     fd = ::mkstemp(writer.temp_name_.data());
     if (fd < 0) {
       return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
@@ -374,6 +381,15 @@ Status AtomicFileWriter::Finish() {
     if (temp_name_.empty()) {
       return IoError("cannot name the new file for " + Quoted(path_) + ": every name taken");
     }
+  }
+  // A temporary named from the start and left untouched for
+  // kStaleTemporarySeconds (a long decode writes a map's YAML last) may have
+  // been removed by another save of the target: then no file of the set is
+  // renamed (CommitFilesAtomic finishes them all first).
+  struct stat named, open_file;
+  if (::fstat(fd_, &open_file) != 0 || ::stat(temp_name_.c_str(), &named) != 0 ||
+      named.st_ino != open_file.st_ino || named.st_dev != open_file.st_dev) {
+    return IoError("the new file for " + Quoted(path_) + " was removed while it was written");
   }
   const int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) {

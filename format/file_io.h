@@ -57,21 +57,24 @@ class InputFile {
   std::uint64_t size_ = 0;
 };
 
+// Age after which a `path.linemap-tmp-XXXXXX` of ours beside `path` is
+// taken for the leftover of a killed save and removed by the next save of
+// `path`.
+inline constexpr long kStaleTemporarySeconds = 600;
+
 // A new version of a file written piece by piece, replacing the old one only
 // when committed, with WriteFileAtomic's guarantees: the data goes to an
 // unnamed temporary file beside the target (O_TMPFILE; named
-// `path.tmp-XXXXXX` from the start where the file system or a missing /proc
-// rules that out), is flushed (fsync, unless kUnsynced), gets the replaced
-// file's permission bits, and is renamed over the target by Commit(). A
-// writer destroyed without Commit() leaves the old file and no temporary.
-// A process killed while writing leaves the old file whole; killed in the
-// instant between naming the temporary and the rename, it leaves a
-// `path.tmp-XXXXXX` behind, which the next save of `path` removes once it
-// is kStaleTemporarySeconds old. Move-only.
-// Age after which a `path.tmp-XXXXXX` beside `path` is taken for the
-// leftover of a killed save and removed by the next save of `path`.
-inline constexpr long kStaleTemporarySeconds = 600;
-
+// `path.linemap-tmp-XXXXXX` from the start where the file system or a
+// missing /proc rules that out), is flushed (fsync, unless kUnsynced), gets
+// the replaced file's permission bits, and is renamed over the target by
+// Commit(). A writer destroyed without Commit() leaves the old file and no
+// temporary. A process killed while writing leaves the old file whole;
+// killed in the instant between naming the temporary and the rename, it
+// leaves a `path.linemap-tmp-XXXXXX` behind, which the next save of `path`
+// removes once it is kStaleTemporarySeconds old (a temporary named from the
+// start and left untouched that long by a live save is removed too: that
+// save's Commit() then fails before any rename). Move-only.
 class AtomicFileWriter {
  public:
   // Resolves symlinks and refuses directories, non-regular and read-only
@@ -131,7 +134,7 @@ Status CommitFilesAtomic(const std::vector<AtomicFileWriter*>& writers);
 // name while it is written (O_TMPFILE, linked under a name just before the
 // rename), so a process killed while writing leaves nothing behind; where
 // the file system has no unnamed files (or /proc is missing), it is named
-// `path.tmp-XXXXXX` from the start. Either way the next save of `path`
+// `path.linemap-tmp-XXXXXX` from the start. Either way the next save of `path`
 // removes such leftovers once they are kStaleTemporarySeconds old.
 Status WriteFileAtomic(const std::string& path, std::string_view data,
                        Durability durability = Durability::kSynced);

@@ -509,7 +509,8 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   // ../shared/maps) and fitted within T cells of the wall cells rather than
   // one, as the cells themselves are (T = 3: 133,697 -> 120,172 bytes, with
   // the covering pass left out as ExtractWholeMapLayers says).
-  const bool straight = options.straight_walls || options.tolerance_cells > 0;
+  // The former lossy 1.0 file keeps the walls it always had.
+  const bool straight = options.straight_walls || options.tolerance_cells > 0 || options.format_v1;
   LineExtractionOptions line_options =
       straight ? StraightWalls(LineExtractionOptions{}) : FileWallOptions();
   line_options.method = options.method;
@@ -595,10 +596,12 @@ void AddCoveringSegments(const Grid& grid, const std::vector<FurnitureObject>& f
 // share neither end with another segment. Within a tolerance T, a lone
 // piece shorter than 2T + 1 cells is clutter at the file's scale (a chair,
 // a scan artefact), which the cells keep within T; segments joined to
-// others stay, so no polyline is cut. Over the 25 maps of ../shared/maps:
+// others stay, so no polyline is cut, and so do those with an end on the
+// border of `grid` (on a map over 2048 cells a side that is a block's, and
+// the piece may go on in the next block). Over the 25 maps of ../shared/maps:
 // T = 1 150,877 -> 145,772 bytes, T = 3 115,205 -> 108,436 (dropping
 // every short segment, joined or not, saved 0.3 % more).
-void DropShortLoneSegments(int min_cells, std::vector<LatticeSegment>* segments) {
+void DropShortLoneSegments(const Grid& grid, int min_cells, std::vector<LatticeSegment>* segments) {
   const auto key = [](CellIndex c) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.row)) << 32) |
            static_cast<std::uint32_t>(c.col);
@@ -611,6 +614,9 @@ void DropShortLoneSegments(int min_cells, std::vector<LatticeSegment>* segments)
   }
   std::sort(ends.begin(), ends.end());
   const auto shared = [&](CellIndex c) {
+    if (c.col == 0 || c.row == 0 || c.col == grid.width() - 1 || c.row == grid.height() - 1) {
+      return true;
+    }
     const auto [lo, hi] = std::equal_range(ends.begin(), ends.end(), key(c));
     return hi - lo > 1;
   };
@@ -640,7 +646,7 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   if (options.tolerance_cells == 0) {
     AddCoveringSegments(grid, layers.furniture, &*segments);
   } else {
-    DropShortLoneSegments(2 * options.tolerance_cells + 1, &*segments);
+    DropShortLoneSegments(grid, 2 * options.tolerance_cells + 1, &*segments);
   }
   layers.walls = order_walls ? JoinSegments(*segments) : JoinSegmentsUnordered(*segments);
   return layers;

@@ -264,14 +264,16 @@ TEST(FileIoTest, SaveRemovesOnlyStaleTemporariesOfItsOwnTarget) {
   const std::string dir = MakeTempDir("fio");
   const std::string target = dir + "/map.lmap";
   WriteFile(target, Version('a', 16));
-  const std::vector<std::string> stale = {"map.lmap.tmp-0a1b2c", "map.lmap.tmp-Xy9QzW"};
+  const std::vector<std::string> stale = {"map.lmap.linemap-tmp-0a1b2c",
+                                          "map.lmap.linemap-tmp-Xy9QzW"};
   const std::vector<std::string> kept = {
-      "map.lmap.tmp-d4e5f6",    // fresh: may be a live save's
-      "map.lmap.tmp-0a1b2",     // 5 characters: not a name a save gives
-      "map.lmap.tmp-0a1b2c7",   // 7 characters
-      "map.lmap.tmp-0a1b-c",    // not a letter or digit
-      "other.lmap.tmp-0a1b2c",  // another target's
-      "map.lmap.bak",           // the user's
+      "map.lmap.linemap-tmp-d4e5f6",    // fresh: may be a live save's
+      "map.lmap.linemap-tmp-0a1b2",     // 5 characters: not a name a save gives
+      "map.lmap.linemap-tmp-0a1b2c7",   // 7 characters
+      "map.lmap.linemap-tmp-0a1b-c",    // not a letter or digit
+      "other.lmap.linemap-tmp-0a1b2c",  // another target's
+      "map.lmap.tmp-backup",            // the user's, named like many tools' temporaries
+      "map.lmap.bak",                   // the user's
   };
   for (const std::string& name : stale) WriteFile(dir + "/" + name, "x");
   for (const std::string& name : kept) WriteFile(dir + "/" + name, "x");
@@ -393,7 +395,7 @@ TEST(AtomicFileWriterTest, KilledStreamedSaveLeavesOldOrNewCompleteFile) {
   // Only a kill in the instant between naming and renaming can leave a
   // temporary; the target itself is always whole (checked above).
   for (const std::string& name : testing::ListDir(dir)) {
-    EXPECT_TRUE(name == "map.pgm" || name.rfind("map.pgm.tmp-", 0) == 0) << name;
+    EXPECT_TRUE(name == "map.pgm" || name.rfind("map.pgm.linemap-tmp-", 0) == 0) << name;
   }
 }
 

@@ -189,7 +189,7 @@ TEST(LmapSaverTest, SaverKilledWhileWritingLeavesTheOldFileWhole) {
     // A kill in the instant between naming the temporary and the rename
     // leaves it beside the file; nothing else may be there.
     for (const std::string& name : ListDir(dir)) {
-      EXPECT_TRUE(name == "robot.lmap" || name.starts_with("robot.lmap.tmp-")) << name;
+      EXPECT_TRUE(name == "robot.lmap" || name.starts_with("robot.lmap.linemap-tmp-")) << name;
     }
     killed_while_writing += old_whole;
     std::printf("try %d: killed %s the rename\n", attempt, old_whole ? "before" : "after");

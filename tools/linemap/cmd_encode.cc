@@ -47,6 +47,7 @@ const CommandSpec kEncodeSpec = {
          "one wall segment per straight wall: exact files 1-14 % smaller, walls up to twice as "
          "far from the wall cells (by default they follow the pixel steps of slanted walls; "
          "files saved with --tolerance always draw straight walls)"},
+        {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
         {"--threads", "N",
          "threads to use (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
@@ -103,6 +104,9 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   if (args.Has("--no-segments")) options.store_segments = false;
   options.simplify_free_space = args.Has("--simplify-free");
   options.vector_layers = !args.Has("--raster-only");
+  if (args.Has("--straight-walls") && args.Has("--follow-steps")) {
+    return InvalidArgumentError("--straight-walls and --follow-steps exclude each other");
+  }
   options.straight_walls = args.Has("--straight-walls");
   LINEMAP_ASSIGN_OR_RETURN(options.tolerance_cells, args.GetInt("--tolerance", 0));
   if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {

@@ -137,13 +137,18 @@ TEST(LayerExtractionTest, StraightWallsDrawFewerSegmentsFartherFromTheWalls) {
   EXPECT_TRUE(*DecodeLmap(*a) == *DecodeLmap(*b));  // both exact
 }
 
-// Single-segment polylines shorter than `min_cells` (Chebyshev): segments
-// that share no end with another.
+// Single-segment polylines shorter than `min_cells` (Chebyshev) with no end
+// on the map's border: segments that share no end with another (a piece at
+// the border may go on in the next block of a large map, and stays).
 int ShortLoneWalls(const LmapVectors& vectors, int min_cells) {
+  const auto on_border = [&](CellIndex p) {
+    return p.col == 0 || p.row == 0 || p.col == vectors.width - 1 || p.row == vectors.height - 1;
+  };
   int n = 0;
   for (const WallPolyline& wall : vectors.walls) {
     if (wall.points.size() > 2) continue;
     const CellIndex a = wall.points.front(), b = wall.points.back();
+    if (on_border(a) || on_border(b)) continue;
     n += std::max(std::abs(a.col - b.col), std::abs(a.row - b.row)) < min_cells;
   }
   return n;
@@ -165,6 +170,29 @@ TEST(LayerExtractionTest, WithinAToleranceLonePiecesShorterThanTwoTPlusOneAreLef
     ASSERT_TRUE(vectors.ok());
     EXPECT_FALSE(vectors->walls.empty()) << "T = " << t;
     EXPECT_EQ(ShortLoneWalls(*vectors, 2 * t + 1), 0) << "T = " << t;
+  }
+}
+
+TEST(LayerExtractionTest, WithinAToleranceAWallAcrossALayerBlockBorderKeepsItsPieces) {
+  // The layers of maps over 2048 cells a side are extracted in blocks of
+  // 2048: a two-cell wall from column 2043 to 3000 has a 5-cell piece in the
+  // first block, which is no lone piece (it goes on in the next block).
+  Grid grid(4200, 60, Cell::kFree);
+  for (int c = 2043; c <= 3000; ++c) {
+    grid.set(c, 30, Cell::kOccupied);
+    grid.set(c, 31, Cell::kOccupied);
+  }
+  EncodeOptions options;
+  options.tolerance_cells = 3;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(grid, options);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().message();
+  StatusOr<LmapVectors> vectors = DecodeLmapVectors(*bytes);
+  ASSERT_TRUE(vectors.ok());
+  const std::vector<Segment> walls = FileWalls(*vectors);
+  for (int c = 2043; c <= 2047; ++c) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Segment& s : walls) nearest = std::min(nearest, Distance(c, 30, s));
+    EXPECT_LE(nearest, 1.0) << "column " << c;
   }
 }
 
