@@ -28,7 +28,6 @@ class NearestIndex {
     for (const Candidate& c : points_) {
       max_col_ = std::max(max_col_, c.p.col);
       max_row_ = std::max(max_row_, c.p.row);
-      items_ = std::max(items_, static_cast<std::size_t>(c.item) + 1);
     }
     bx_ = max_col_ / kBucket + 1;
     by_ = max_row_ / kBucket + 1;
@@ -36,57 +35,17 @@ class NearestIndex {
     for (const Candidate& c : points_) ++start_[Bucket(c.p) + 1];
     for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
     order_.resize(points_.size());
-    slot_.resize(points_.size());
-    end_.assign(start_.begin() + 1, start_.end());
     std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-      slot_[i] = fill[Bucket(points_[i].p)]++;
-      order_[slot_[i]] = i;
-    }
-    // Each item's points, for Take().
-    item_first_.assign(items_ + 1, 0);
-    for (const Candidate& c : points_) ++item_first_[static_cast<std::size_t>(c.item) + 1];
-    for (std::size_t k = 1; k < item_first_.size(); ++k) item_first_[k] += item_first_[k - 1];
-    item_points_.resize(points_.size());
-    std::vector<std::size_t> next(item_first_.begin(), item_first_.end() - 1);
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-      item_points_[next[static_cast<std::size_t>(points_[i].item)]++] = i;
-    }
-    alive_.resize(points_.size());
-    alive_slot_.resize(points_.size());
-    for (std::size_t i = 0; i < points_.size(); ++i) alive_[i] = alive_slot_[i] = i;
+    for (std::size_t i = 0; i < points_.size(); ++i) order_[fill[Bucket(points_[i].p)]++] = i;
   }
 
-  // Takes an item's points out of the index: later queries neither read
-  // nor skip them (the nearest is the least (distance, Before) pair over
-  // the points of items not taken, whatever order they are read in, so
-  // taking them out changes no answer). Without this, once the walls near
-  // the tour's end are used up, each query read every point taken before.
-  void Take(int item) {
-    const auto k = static_cast<std::size_t>(item);
-    for (std::size_t q = item_first_[k]; q < item_first_[k + 1]; ++q) {
-      const std::size_t i = item_points_[q];
-      const std::size_t b = Bucket(points_[i].p);
-      const std::size_t last = --end_[b];
-      const std::size_t moved = order_[last];
-      order_[slot_[i]] = moved;
-      slot_[moved] = slot_[i];
-      order_[last] = i;
-      slot_[i] = last;
-      const std::size_t alive_last = alive_.size() - 1;
-      const std::size_t alive_moved = alive_[alive_last];
-      alive_[alive_slot_[i]] = alive_moved;
-      alive_slot_[alive_moved] = alive_slot_[i];
-      alive_.pop_back();
-    }
-  }
-
-  // The nearest point of an item not yet taken (-1 when none is left).
-  int Nearest(CellIndex at) const {
+  // The nearest candidate of an item not yet taken (-1 when none is left).
+  int Nearest(CellIndex at, const std::vector<bool>& taken) const {
     int best = -1;
     long best_d = 0;
     const auto consider = [&](std::size_t i) {
       const Candidate& c = points_[i];
+      if (taken[c.item]) return;
       const long d = std::labs(long{c.p.col} - at.col) + std::labs(long{c.p.row} - at.row);
       if (best < 0 || d < best_d || (d == best_d && Before(i, static_cast<std::size_t>(best)))) {
         best = static_cast<int>(i);
@@ -99,7 +58,7 @@ class NearestIndex {
       // Points in ring r are at least (r - 1) * kBucket + 1 away.
       if (best >= 0 && best_d <= static_cast<long>(ring - 1) * kBucket) break;
       if (ring > kMaxRings) {
-        for (const std::size_t i : alive_) consider(i);
+        for (std::size_t i = 0; i < points_.size(); ++i) consider(i);
         break;
       }
       for (int y = cy - ring; y <= cy + ring; ++y) {
@@ -108,7 +67,7 @@ class NearestIndex {
         for (int x = cx - ring; x <= cx + ring; x += edge_row ? 1 : 2 * ring) {
           if (x >= 0 && x < bx_) {
             const std::size_t b = static_cast<std::size_t>(y) * bx_ + x;
-            for (std::size_t k = start_[b]; k < end_[b]; ++k) consider(order_[k]);
+            for (std::size_t k = start_[b]; k < start_[b + 1]; ++k) consider(order_[k]);
           }
           if (ring == 0) break;
         }
@@ -132,12 +91,6 @@ class NearestIndex {
   std::vector<Candidate> points_;
   std::vector<std::size_t> order_;  // point indices grouped by bucket
   std::vector<std::size_t> start_;  // bucket b holds order_[start_[b], start_[b+1])
-  std::vector<std::size_t> end_;    // its points not taken: order_[start_[b], end_[b])
-  std::vector<std::size_t> slot_;   // each point's index in order_
-  std::vector<std::size_t> item_first_, item_points_;  // item k's points
-  std::vector<std::size_t> alive_;                     // the points not taken, in no order
-  std::vector<std::size_t> alive_slot_;                // each point's index in alive_
-  std::size_t items_ = 0;
   int max_col_ = 0, max_row_ = 0, bx_ = 1, by_ = 1;
 };
 
@@ -457,13 +410,14 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls) {
     points.push_back({p.front(), static_cast<int>(i), false, 0});
     points.push_back({p.back(), static_cast<int>(i), true, 0});
   }
-  NearestIndex index(std::move(points));
+  const NearestIndex index(std::move(points));
+  std::vector<bool> taken(walls->size(), false);
   std::vector<WallPolyline> ordered;
   ordered.reserve(walls->size());
   CellIndex at{0, 0};
-  for (int k = index.Nearest(at); k >= 0; k = index.Nearest(at)) {
+  for (int k = index.Nearest(at, taken); k >= 0; k = index.Nearest(at, taken)) {
     const Candidate& c = index.at(k);
-    index.Take(c.item);
+    taken[c.item] = true;
     WallPolyline wall = std::move((*walls)[c.item]);
     if (c.is_last) std::reverse(wall.points.begin(), wall.points.end());
     at = wall.points.back();
@@ -483,13 +437,14 @@ void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
       points.push_back({polygon[v], static_cast<int>(i), false, static_cast<int>(v)});
     }
   }
-  NearestIndex index(std::move(points));
+  const NearestIndex index(std::move(points));
+  std::vector<bool> taken(furniture->size(), false);
   std::vector<FurnitureObject> ordered;
   ordered.reserve(furniture->size());
   CellIndex at{0, 0};
-  for (int k = index.Nearest(at); k >= 0; k = index.Nearest(at)) {
+  for (int k = index.Nearest(at, taken); k >= 0; k = index.Nearest(at, taken)) {
     const Candidate& c = index.at(k);
-    index.Take(c.item);
+    taken[c.item] = true;
     FurnitureObject object = std::move((*furniture)[c.item]);
     // Start the polygon at the nearest vertex; it ends next to it.
     std::rotate(object.polygon.begin(), object.polygon.begin() + c.vertex, object.polygon.end());
