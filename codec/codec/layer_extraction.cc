@@ -473,8 +473,9 @@ namespace {
 // wall) rewards: the extractor's defaults with a tighter distance budget
 // (0.03 cells instead of 0.05), a segment priced at half a cell of summed
 // distance instead of 0.95 (so a two-cell wall longer than one cell keeps
-// its two faces) and no specks handed to the furniture layer. Measured on the 25 maps of
-// ../shared/maps, default files, DisPL_ave of the file's walls against RM-Line's lines:
+// its two faces) and no specks handed to the furniture layer. Measured on
+// the 25 maps of ../shared/maps, default files, DisPL_ave of the file's
+// walls against that of RM-Line's lines:
 //   StraightWalls()        189,175 bytes; 5 maps above RM-Line's (f1tenth
 //                          columbia, levinelobby, mtl, nav2/map and
 //                          tb3_sandbox, up to 2.1x its value)
@@ -483,10 +484,10 @@ namespace {
 //   budget 0.04, price 0.5 191,606; none above, nav2/map at 0.85x
 //   budget 0.03, price 0.5 191,557 (+1.3 %); none above, the closest at
 //                          0.68x (f1tenth/columbia 0.078 against 0.114)
-// (the budgets measured without specks, as below). The last leaves a margin
-// for maps not measured here. Walls drawn more
-// exactly also make the cells a little cheaper (their context reads them),
-// which is why a tighter budget costs so little.
+// (the budgets measured without specks, as below). The last leaves a
+// margin for maps not measured here. Walls drawn more exactly also make
+// the cells a little cheaper (their context reads them), which is why a
+// tighter budget costs so little.
 LineExtractionOptions FileWallOptions() {
   LineExtractionOptions options;
   options.target_mean_distance_cells = 0.03;
