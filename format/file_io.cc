@@ -214,10 +214,12 @@ bool IsTemporaryOf(const std::string& name, const std::string& base) {
 // Removes the temporaries of `target` that a killed save left behind. A
 // save names its unnamed file just before the rename, so a kill in that
 // instant (or during a slow close or the flush of a YAML's image) leaves
-// one; a live save touches its temporary at least every few seconds, so
-// one untouched for kStaleTemporarySeconds belongs to no live save (a save
-// whose temporary is removed anyway fails its rename, leaving the target
-// as it was). Best effort: failures to list or remove are ignored.
+// one. A live save writes its temporary within seconds, so one untouched
+// for kStaleTemporarySeconds belongs to no live save, or to one that named
+// it at Open and writes it last (a map's YAML, after a long decode): that
+// save's Finish() sees its name gone and fails before any rename, leaving
+// every target as it was. Best effort: failures to list or remove are
+// ignored.
 void RemoveStaleTemporaries(const std::string& target) {
   const std::string dir = DirectoryOf(target);
   const std::size_t slash = target.find_last_of('/');
