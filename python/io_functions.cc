@@ -36,10 +36,11 @@ std::vector<std::uint8_t> BytesArgument(const py::handle& data) {
 // tolerance 0 asks for an exact file. The encoder of format 1.x keys
 // exactness on `lossless` (its default is lossy), so it is set here too;
 // other tolerances go to the library as they are.
-EncodeOptions EncodeOptionsFor(int tolerance, bool vectors) {
+EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls) {
   EncodeOptions options;
   options.tolerance_cells = tolerance;
   options.vector_layers = vectors;
+  options.straight_walls = straight_walls;
   return options;
 }
 
@@ -102,7 +103,8 @@ void CheckTolerance(int tolerance) {
   if (tolerance < 0) throw py::value_error("tolerance must be at least 0 cells");
 }
 
-void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors) {
+void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
+          bool straight_walls) {
   CheckTolerance(tolerance);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
@@ -113,19 +115,19 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   Status saved;
   {
     py::gil_scoped_release release;
-    saved =
-        yaml ? SaveRosMap(path, grid) : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors));
+    saved = yaml ? SaveRosMap(path, grid)
+                 : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors, straight_walls));
   }
   RaiseIfError(saved);
 }
 
-py::bytes Encode(const Map& map, int tolerance, bool vectors) {
+py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls) {
   CheckTolerance(tolerance);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
     py::gil_scoped_release release;
-    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors));
+    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors, straight_walls));
   }
   const std::vector<std::uint8_t> out = ValueOrRaise(std::move(bytes));
   return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
@@ -226,16 +228,21 @@ unreadable one OSError, a corrupt or malformed one ValueError; the message
 names the file.
 )doc");
   module.def("save", &Save, py::arg("path"), py::arg("map"), py::arg("tolerance") = 0,
-             py::arg("vectors") = true, R"doc(
+             py::arg("vectors") = true, py::arg("straight_walls") = false, R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
 ``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
 ends in .yaml or .yml; other names raise ValueError. ``tolerance`` (cells) is
 how far the decoded map may differ from ``map``; 0 is exact. ``vectors``
 stores the vector layers (walls, rooms, furniture) besides the cells.
+``straight_walls`` draws one wall segment per straight wall (smaller exact
+files, walls farther from the wall cells) instead of walls that follow the
+pixel steps; files saved within a tolerance always draw straight walls.
 Options the library refuses raise ValueError with its message.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
-             "The .lmap bytes of ``map`` (``tolerance`` and ``vectors`` as for save()).");
+             py::arg("straight_walls") = false,
+             "The .lmap bytes of ``map`` (``tolerance``, ``vectors`` and ``straight_walls`` as "
+             "for save()).");
   module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
              "ValueError, more than ``max_cells`` cells MemoryError.");

@@ -35,6 +35,21 @@ def test_lmap_save_load_is_exact(bundled, tmp_path):
     assert_same_map(linemap.load(str(out)), m)
 
 
+def test_straight_walls_match_the_cli_and_stay_exact(tmp_path, cli):
+    path = str(BUNDLED["depot"])
+    m = linemap.load(path)
+    out = tmp_path / "straight.lmap"
+    linemap.save(out, m, straight_walls=True)
+    assert_same_map(linemap.load(out), m)
+    subprocess.run([cli, "encode", path, "-o", str(tmp_path / "cli.lmap"), "--straight-walls"],
+                   check=True, capture_output=True)
+    assert out.read_bytes() == (tmp_path / "cli.lmap").read_bytes()
+    assert linemap.encode(m, straight_walls=True) == out.read_bytes()
+    # The default walls follow the pixel steps: more segments than straight ones.
+    steps = linemap.vectors(linemap.encode(m))["walls"].shape[0]
+    assert linemap.vectors(out)["walls"].shape[0] < steps
+
+
 def test_lmap_cells_only_is_exact(bundled, tmp_path):
     m = linemap.load(bundled)
     out = tmp_path / "map.lmap"
