@@ -36,11 +36,12 @@ std::vector<std::uint8_t> BytesArgument(const py::handle& data) {
 // tolerance 0 asks for an exact file. The encoder of format 1.x keys
 // exactness on `lossless` (its default is lossy), so it is set here too;
 // other tolerances go to the library as they are.
-EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls) {
+EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls, bool compact) {
   EncodeOptions options;
   options.tolerance_cells = tolerance;
   options.vector_layers = vectors;
   options.straight_walls = straight_walls;
+  options.compact = compact;
   return options;
 }
 
@@ -104,7 +105,7 @@ void CheckTolerance(int tolerance) {
 }
 
 void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
-          bool straight_walls) {
+          bool straight_walls, bool compact) {
   CheckTolerance(tolerance);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
@@ -116,18 +117,20 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   {
     py::gil_scoped_release release;
     saved = yaml ? SaveRosMap(path, grid)
-                 : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors, straight_walls));
+                 : SaveLmap(path, grid,
+                            EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
   }
   RaiseIfError(saved);
 }
 
-py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls) {
+py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls,
+                 bool compact) {
   CheckTolerance(tolerance);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
     py::gil_scoped_release release;
-    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors, straight_walls));
+    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
   }
   const std::vector<std::uint8_t> out = ValueOrRaise(std::move(bytes));
   return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
@@ -228,7 +231,8 @@ unreadable one OSError, a corrupt or malformed one ValueError; the message
 names the file.
 )doc");
   module.def("save", &Save, py::arg("path"), py::arg("map"), py::arg("tolerance") = 0,
-             py::arg("vectors") = true, py::arg("straight_walls") = false, R"doc(
+             py::arg("vectors") = true, py::arg("straight_walls") = false,
+             py::arg("compact") = false, R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
 ``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
 ends in .yaml or .yml; other names raise ValueError. ``tolerance`` (cells) is
@@ -237,12 +241,14 @@ stores the vector layers (walls, rooms, furniture) besides the cells.
 ``straight_walls`` draws one wall segment per straight wall (smaller exact
 files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
+``compact`` codes the cells for size (as ``linemap encode --compact``: about
+3.5 % smaller files, cells that decode about 5x slower; version 2.3).
 Options the library refuses raise ValueError with its message.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
-             py::arg("straight_walls") = false,
-             "The .lmap bytes of ``map`` (``tolerance``, ``vectors`` and ``straight_walls`` as "
-             "for save()).");
+             py::arg("straight_walls") = false, py::arg("compact") = false,
+             "The .lmap bytes of ``map`` (``tolerance``, ``vectors``, ``straight_walls`` and "
+             "``compact`` as for save()).");
   module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
              "ValueError, more than ``max_cells`` cells MemoryError.");

@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(build-essential cmake pkg-config libeigen3-dev zlib1g-dev libpng-dev libdraco-dev
           libyaml-cpp-dev libgtest-dev googletest libzstd-dev liblzma-dev netpbm jbigkit-bin)
 PACKAGES+=(libjxl-tools webp)  # bench anchors
+PACKAGES+=(clang libclang-rt-14-dev)  # the fuzz smoke (libFuzzer) that CI runs
 PACKAGES+=(pybind11-dev python3-dev python3-numpy python3-pytest)  # Python module
 PACKAGES+=(libroscpp-dev libnav-msgs-dev librosbag-dev ros-core python3-nav-msgs python3-geometry-msgs)  # ROS 1 nodes and tests
 # (rostopic echo needs the Python messages; python3-nav-msgs does not pull in geometry_msgs)

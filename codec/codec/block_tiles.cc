@@ -16,8 +16,24 @@ namespace {
 // 1/F^2 of the map's cells, and the cells' pass is mostly settled by the
 // blocks' hints. Files within a tolerance are for bandwidth, so a slower
 // decode than the exact file's is the right trade.
-constexpr TileModel kBlockModel = TileModel::kMixedAllCells;
-constexpr TileModel kCellModel = TileModel::kMixedAllCells;
+// Tolerance files are for bandwidth: the block grid and the cells are
+// coded with whichever of the two smallest codings is smaller for the tile
+// (spec/tile_coding.md models 3 and 12; 12 adds the layer context, which
+// the blocks have from the layers and the cells from their blocks).
+constexpr TileModel kSmallestModels[] = {TileModel::kMixedAllCells,
+                                         TileModel::kMixedLayerAllCells};
+
+// The smaller of the tile's codings with kSmallestModels (the first on a
+// tie).
+std::vector<std::uint8_t> EncodeSmallest(const Cell* cells, const std::uint8_t* hints, int w,
+                                         int h) {
+  std::vector<std::uint8_t> best;
+  for (TileModel model : kSmallestModels) {
+    std::vector<std::uint8_t> data = EncodeTileCells(cells, hints, w, h, CellRect{0, 0, w, h}, model);
+    if (best.empty() || data.size() < best.size()) best = std::move(data);
+  }
+  return best;
+}
 
 int CeilDiv(int a, int b) { return (a + b - 1) / b; }
 
@@ -90,14 +106,14 @@ std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cell
   const int w = t.x1 - t.x0, h = t.y1 - t.y0, f = cells.block_cells;
   const TileBlocks b = GatherBlocks(cells, t);
   const std::vector<std::uint8_t> block_hints = BlockHints(layers, t, b.bw, b.bh, f);
-  const std::vector<std::uint8_t> blocks = EncodeTileCells(
-      b.blocks.data(), block_hints.data(), b.bw, b.bh, CellRect{0, 0, b.bw, b.bh}, kBlockModel);
+  const std::vector<std::uint8_t> blocks =
+      EncodeSmallest(b.blocks.data(), block_hints.data(), b.bw, b.bh);
   const std::vector<Cell> tile = TileCells(decoded, t);
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
   ByteWriter out;
   out.PutVarint(blocks.size());
   out.PutBytes(blocks);
-  out.PutBytes(EncodeTileCells(tile.data(), hints.data(), w, h, CellRect{0, 0, w, h}, kCellModel));
+  out.PutBytes(EncodeSmallest(tile.data(), hints.data(), w, h));
   return std::move(out.mutable_bytes());
 }
 

@@ -59,25 +59,34 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
 }
 
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
-                                         const std::vector<std::uint8_t>& hints, int tw, int th) {
+                                         const std::vector<std::uint8_t>& hints, int tw, int th,
+                                         bool compact) {
   const CellRect all{0, 0, tw, th};
   const auto encode = [&](TileModel model) {
     return EncodeTileCells(cells.data(), hints.data(), tw, th, all, model);
   };
-  if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
-    return encode(TileModel::kTemplate);
-  }
-  std::vector<std::uint8_t> best = encode(TileModel::kLayerContext);
-  for (TileModel model :
-       {LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange), TileModel::kTemplate}) {
+  const auto keep_smaller = [&](std::vector<std::uint8_t>* best, TileModel model) {
     std::vector<std::uint8_t> data = encode(model);
-    if (data.size() < best.size()) best = std::move(data);
+    if (data.size() < best->size()) *best = std::move(data);
+  };
+  std::vector<std::uint8_t> best;
+  if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
+    best = encode(TileModel::kTemplate);
+    if (compact) keep_smaller(&best, TileModel::kMixedAllCells);
+    return best;
+  }
+  best = encode(TileModel::kLayerContext);
+  keep_smaller(&best, LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange));
+  keep_smaller(&best, TileModel::kTemplate);
+  if (compact) {
+    keep_smaller(&best, TileModel::kMixedLayerAllCells);
+    keep_smaller(&best, TileModel::kMixedAllCells);
   }
   return best;
 }
 
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
-                                          int threads) {
+                                          int threads, bool compact) {
   ByteWriter out;
   out.PutVarint(static_cast<std::uint64_t>(tile_size));
   WriteTiles(
@@ -85,7 +94,7 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
       [&](CellRect t) {
         const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
         const std::vector<Cell> cells = TileCells(grid, t);
-        return EncodeCellTile(cells, layers.TileHints(t), tw, th);
+        return EncodeCellTile(cells, layers.TileHints(t), tw, th, compact);
       },
       &out);
   return std::move(out.mutable_bytes());

@@ -56,11 +56,15 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 // smaller, and without hints (--raster-only, tiles no layer reaches) it
 // always is. The choice costs three encodings of the tile and nothing when
 // decoding.
+// With `compact`, kMixedLayerAllCells and kMixedAllCells (kMixedAllCells
+// alone for a tile without hints) join the choice, tried after the others:
+// the smallest exact coding, for files sent more often than they are read.
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
-                                         const std::vector<std::uint8_t>& hints, int tw, int th);
+                                         const std::vector<std::uint8_t>& hints, int tw, int th,
+                                         bool compact = false);
 
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
-                                          int threads);
+                                          int threads, bool compact = false);
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
 // `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.

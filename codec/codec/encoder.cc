@@ -67,8 +67,10 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
 // A 2.x file: header, metadata, the vector layers in sections (LAYR: what a
 // viewer reads without the raster) and the cells' chunk (`cells_type`: CELL
 // or BLKS). `exact`: the cells are the caller's map itself (the header's
-// lossless flag). The minor version names the newest chunk the file holds
-// (LAYR 2, BLKS 1), so that an older decoder's refusal of it says why.
+// lossless flag). The minor version names the newest feature the file may
+// hold (tiles of model 12: 3, in BLKS and in the compact mode's CELL;
+// LAYR 2; BLKS 1 before 2.3), so that an older decoder's refusal of it
+// says why.
 std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options,
                                   const VectorLayers& layers, int section_side, bool exact,
                                   const char* cells_type,
@@ -76,7 +78,8 @@ std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options
   const bool blocks = std::string_view(cells_type) == kBlockChunk;
   const bool has_layers =
       !layers.walls.empty() || !layers.rooms.empty() || !layers.furniture.empty();
-  ContainerWriter writer(kFormatMajor, has_layers ? 2 : blocks ? 1 : 0);
+  const int minor = options.compact || blocks ? 3 : has_layers ? 2 : 0;
+  ContainerWriter writer(kFormatMajor, static_cast<std::uint8_t>(minor));
   writer.AddChunk(kHeaderChunk,
                   WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, exact}));
   const auto metadata = MetadataOf(options);
@@ -114,7 +117,8 @@ Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
 std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& options,
                                      const VectorLayers& layers) {
   const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
-  return EncodeCellChunk(grid, index, options.tile_size_cells, options.max_threads);
+  return EncodeCellChunk(grid, index, options.tile_size_cells, options.max_threads,
+                         options.compact);
 }
 
 // The cells within a tolerance: BLKS tiles, the tile side the caller's

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "codec/codec/tile_mixer.h"
 #include "codec/codec/tile_range_coder.h"
@@ -58,6 +59,12 @@ constexpr unsigned kLayerEqualModel = kEqualModel;
 constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerClasses;
 constexpr unsigned kLayerBlockModel = kLayerOtherModel + kNearPatterns * kLayerClasses;
 constexpr unsigned kLayerModelCount = kLayerBlockModel + kBlockContexts;
+// The mixed layer context (model 12) codes every cell of a changed row, so
+// it has no block tables: EQUAL and OTHER of the template where models 0-3
+// have them, then its own LEQUAL and LOTHER.
+constexpr unsigned kMixedLayerEqualModel = kModelCount;
+constexpr unsigned kMixedLayerOtherModel = kMixedLayerEqualModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kMixedLayerModelCount = kMixedLayerOtherModel + kNearPatterns * kLayerClasses;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -194,6 +201,9 @@ constexpr std::uint32_t kSureLow = 65536 / 32;
 constexpr std::uint32_t kSureHigh = 65536 - 65536 / 32;
 // Mixer weight sets: hint class x (W == N).
 constexpr int kMixerSets = static_cast<int>(kHintClasses) * 2;
+// Model 12's weight sets: layer class without the change terms (0..24) x
+// (W == N).
+constexpr int kMixedLayerSets = 25 * 2;
 
 // The nearest-cells context of a cell (W, N, NW, NE and the hint class).
 inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsigned hint_class) {
@@ -204,8 +214,8 @@ inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsign
 // "equals W" and, if not, as which of the two other values it is. With
 // kMix (model 1), an unsure "equals W" is coded with the logistic mix of
 // the template's model and the nearest cells' model.
-template <bool kMix, typename Io>
-[[gnu::always_inline]] inline void CodeCellRun(Io& io, TileModelTable& models, TileMixer<2>& mixer,
+template <bool kMix, typename Io, typename Mixer>
+[[gnu::always_inline]] inline void CodeCellRun(Io& io, TileModelTable& models, Mixer& mixer,
                                                std::uint8_t* cur, const std::uint8_t* n1,
                                                const std::uint8_t* n2, const std::uint8_t* hint_row,
                                                int begin, int end) {
@@ -277,6 +287,56 @@ template <typename Io>
   }
 }
 
+// Codes cells [begin, end) of the row `cur` with the mixed layer context
+// (model 12): "equals W" is predicted by the 8-cell template x hint class
+// (as models 0-3) and by the nearest cells' pattern x layer class (as
+// models 4-11); where the template is unsure the two are mixed, with a
+// weight set per layer class (without the change terms) and W == N. The
+// template sees the shapes of the cells coded so far, the layer class
+// what they cannot: the walls, borders and fills ahead of the scan.
+template <typename Io>
+[[gnu::always_inline]] inline void CodeMixedLayerCellRun(
+    Io& io, TileModelTable& models, TileMixer<3>& mixer, std::uint8_t* cur, const std::uint8_t* n1,
+    const std::uint8_t* n2, const std::uint8_t* below, const std::uint8_t* here,
+    const std::uint8_t* above, int width, const LayerTerms& terms, int begin, int end) {
+  unsigned west = cur[begin - 1];
+  unsigned west2 = cur[begin - 2];
+  for (int i = begin; i < end; ++i) {
+    const unsigned hc = kHintClass[here[i] & 15];
+    const unsigned ctx = (west + 3u * (west2 + 3u * Below(n1, n2, i))) * kHintClasses + hc;
+    const unsigned pattern = ((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1];
+    const LayerClasses classes = LayerClassesOf(below, here, above, i, width, terms);
+    const unsigned v = Io::kEncoding ? cur[i] : 0;
+    TileBitModel& equal = models[kEqualModel + ctx];
+    TileBitModel& layer = models[kMixedLayerEqualModel + pattern * kLayerClasses + classes.equal];
+    int eq;
+    if (equal.p0() < kSureLow || equal.p0() > kSureHigh) {
+      eq = io.Code(&equal, v == west);
+      layer.Update(eq);
+    } else {
+      TileBitModel& near = models[kNearModel + NearContext(west, n1, i, hc)];
+      const std::uint32_t inputs[3] = {equal.p0(), layer.p0(), near.p0()};
+      const std::uint32_t pm =
+          mixer.Mix(inputs, static_cast<int>(classes.other * 2 + (west == n1[i])));
+      eq = io.CodeP(pm, v == west);
+      mixer.Update(eq);
+      equal.Update(eq);
+      layer.Update(eq);
+      near.Update(eq);
+    }
+    unsigned value = west;
+    if (!eq) {
+      const unsigned lo = west == 0 ? 1 : 0;
+      const unsigned hi = west == 2 ? 1 : 2;
+      const unsigned other_ctx = pattern * kLayerClasses + classes.other;
+      value = io.Code(&models[kMixedLayerOtherModel + other_ctx], v == hi) ? hi : lo;
+    }
+    cur[i] = static_cast<std::uint8_t>(value);
+    west2 = west;
+    west = value;
+  }
+}
+
 // The rows a run of cells reads: the row being coded and the two below
 // it; the hints of the row and (layer context) of the rows below and
 // above it, zero rows outside the tile.
@@ -291,10 +351,13 @@ struct CellRows {
   LayerTerms terms;
 };
 
-template <bool kMix, bool kLayer, typename Io>
-void CodeCellsIn(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows,
+template <bool kMix, bool kLayer, typename Io, typename Mixer>
+void CodeCellsIn(Io& io, TileModelTable& models, Mixer& mixer, const CellRows& rows,
                  int begin, int end) {
-  if constexpr (kLayer) {
+  if constexpr (kLayer && kMix) {
+    CodeMixedLayerCellRun(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_below,
+                          rows.hint_row, rows.hint_above, rows.width, rows.terms, begin, end);
+  } else if constexpr (kLayer) {
     CodeLayerCellRun(io, models, rows.cur, rows.n1, rows.hint_below, rows.hint_row, rows.hint_above,
                      rows.width, rows.terms, begin, end);
   } else {
@@ -305,8 +368,8 @@ void CodeCellsIn(Io& io, TileModelTable& models, TileMixer<2>& mixer, const Cell
 // The decoder's state in a local for the run (see CodeTile): the cells
 // are stored as bytes, which may alias any object, so a decoder reached
 // through a reference would be reloaded from memory after every cell.
-template <bool kMix, bool kLayer, typename Io>
-void CodeCells(Io& io, TileModelTable& models, TileMixer<2>& mixer, const CellRows& rows, int begin,
+template <bool kMix, bool kLayer, typename Io, typename Mixer>
+void CodeCells(Io& io, TileModelTable& models, Mixer& mixer, const CellRows& rows, int begin,
                int end) {
   if constexpr (Io::kEncoding) {
     CodeCellsIn<kMix, kLayer>(io, models, mixer, rows, begin, end);
@@ -374,8 +437,12 @@ void CodeTileScan(Io& io, const TileRows& t) {
   const int th = t.height;
   const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
-  TileModelTable models(kLayer ? kLayerModelCount : kModelCount);
-  TileMixer<2> mixer(kMix ? kMixerSets : 0);
+  TileModelTable models(kLayer && kMix ? kMixedLayerModelCount
+                        : kLayer      ? kLayerModelCount
+                                      : kModelCount);
+  // Model 12 mixes three predictions, models 1 and 3 two.
+  using Mixer = std::conditional_t<kLayer && kMix, TileMixer<3>, TileMixer<2>>;
+  Mixer mixer(kLayer && kMix ? kMixedLayerSets : kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);
   std::vector<std::uint8_t> above_super(
@@ -557,6 +624,8 @@ void CodeTileAs(Io& io, TileRows rows, unsigned model) {
       return CodeTile<false, false, false>(io, rows);
     case 3:
       return CodeTile<true, false, false>(io, rows);
+    case static_cast<unsigned>(TileModel::kMixedLayerAllCells):
+      return CodeTile<true, false, true>(io, rows);
     default:
       rows.layer_terms = LayerTermsOf(model);
       return CodeTile<false, true, true>(io, rows);
@@ -584,7 +653,7 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
-  if (model > static_cast<unsigned>(TileModel::kLayerContextLast)) {
+  if (model > static_cast<unsigned>(TileModel::kMixedLayerAllCells)) {
     return CorruptError("tile cells: unknown model " + std::to_string(model));
   }
   DecodeIo io(data + 1, size - 1);

@@ -62,6 +62,11 @@ enum class TileModel : std::uint8_t {
   // 4 + the LayerTerm bits dropped; LayerContextWithout). The encoder keeps
   // whichever codes a tile smallest: the terms that pay differ by map.
   kLayerContextLast = 11,
+  // Every cell of a row that differs from the row below is coded (as model
+  // 3), "equals W" by the mix of the 8-cell template and the layer context
+  // where the template is unsure: the smallest coding with layers, about
+  // 5x the decode time of kTemplate. Written by EncodeOptions::compact.
+  kMixedLayerAllCells = 12,
 };
 
 // The layer context's class terms a tile may drop (spec/tile_coding.md 5.2).

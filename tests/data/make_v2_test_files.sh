@@ -6,8 +6,9 @@
 # check the fixtures against the source maps, not against this script.
 # Files of earlier versions are kept as they were written and never
 # rewritten: depot_v2_0.lmap and lse_arena_v2_0.lmap (2.0: WALL, ROOM,
-# FURN), willow_v2_1_tolerance_1.lmap (2.1: BLKS); the 2.0 and 2.1
-# must-fail files are made from them.
+# FURN), willow_v2_1_tolerance_1.lmap (2.1: BLKS), willow_v2_2_tolerance_1.lmap
+# (2.2: BLKS in model 3 only); the 2.0 and 2.1 must-fail files are made from
+# them.
 set -euo pipefail
 BUILD=${1:-build}
 L=$BUILD/linemap
@@ -18,14 +19,20 @@ $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_raster_only.lmap --rast
   --no-sync >/dev/null
 $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_tiles_64.lmap --tile-size 64 \
   --no-sync >/dev/null
-# Cells in blocks (BLKS), within a tolerance of 1 cell.
+# Cells in blocks (BLKS), within a tolerance of 1 cell (2.3: models 3 and
+# 12).
 $L encode $M/turtlebot_apps/willow-2010-02-18-0.10.yaml \
-  -o tests/data/lmap/willow_v2_2_tolerance_1.lmap --tolerance 1 \
+  -o tests/data/lmap/willow_v2_3_tolerance_1.lmap --tolerance 1 \
   --no-sync >/dev/null
+# Cells coded for size (2.3), in tiles of 64 cells: models 12, 3 and 4
+# side by side (the script below checks that 12 and 3 occur).
+$L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_3_compact_tiles_64.lmap --compact \
+  --tile-size 64 --no-sync >/dev/null
 # The layers in several sections (LAYR with boxes), tiles of 64 cells.
 $L encode $M/nav2/depot.yaml -o tests/data/lmap/depot_v2_2_sections_64.lmap \
   --section-size 64 --tile-size 64 --no-sync >/dev/null
 cp tests/data/lmap/willow_v2_1_tolerance_1.lmap tests/data/lmap/willow_v2_2_tolerance_1.lmap \
+  tests/data/lmap/willow_v2_3_tolerance_1.lmap tests/data/lmap/depot_v2_3_compact_tiles_64.lmap \
   tests/data/lmap/depot_v2_0.lmap tests/data/lmap/depot_v2_2_sections_64.lmap \
   tests/fuzz/corpus/lmap_decode/
 cp tests/data/lmap/depot_v2_2_sections_64.lmap tests/fuzz/corpus/lmap_vectors/
@@ -160,4 +167,27 @@ assert dc > 0
 narrow = layr[1][:dc_at] + varint(dc - 1) + layr[1][q:]
 assert len(varint(dc - 1)) == len(varint(dc))
 open(bad + 'v2_2_item_outside_its_section_box.lmap', 'wb').write(with_layr(narrow))
+
+# Version 2.3: the compact file's tiles name models 12 and 3; one named 13
+# (reserved) must fail. CELL payload: coder byte 0, tile side, the index.
+import math
+head23, chunks23 = parse(open('tests/data/lmap/depot_v2_3_compact_tiles_64.lmap', 'rb').read())
+cell23 = [c for c in chunks23 if c[0] == b'CELL'][0]
+side, q = read_varint(cell23[1], 1)
+lengths = []
+for _ in range(math.ceil(604 / side) * math.ceil(307 / side)):
+    n, q = read_varint(cell23[1], q)
+    lengths.append(n)
+models, at = set(), q
+for n in lengths:
+    if n:
+        models.add(cell23[1][at] & 31)
+    at += n
+assert {3, 12} <= models, models
+first = q  # the first tile's model byte (depot's first tile has cells)
+assert lengths[0] > 0
+body13 = bytearray(cell23[1])
+body13[first] = (body13[first] & ~31) | 13
+open(bad + 'v2_3_tile_model_13.lmap', 'wb').write(
+    build(head23, [c if c[0] != b'CELL' else [b'CELL', bytes(body13)] for c in chunks23]))
 PY

@@ -50,6 +50,19 @@ def test_straight_walls_match_the_cli_and_stay_exact(tmp_path, cli):
     assert linemap.vectors(out)["walls"].shape[0] < steps
 
 
+def test_compact_matches_the_cli_stays_exact_and_is_no_larger(bundled, tmp_path, cli):
+    m = linemap.load(bundled)
+    out = tmp_path / "compact.lmap"
+    linemap.save(out, m, compact=True)
+    assert_same_map(linemap.load(out), m)
+    subprocess.run([cli, "encode", str(bundled), "-o", str(tmp_path / "cli.lmap"), "--compact"],
+                   check=True, capture_output=True)
+    assert out.read_bytes() == (tmp_path / "cli.lmap").read_bytes()
+    assert linemap.encode(m, compact=True) == out.read_bytes()
+    # Each tile keeps the smallest of more codings than the default's.
+    assert len(out.read_bytes()) <= len(linemap.encode(m))
+
+
 def test_lmap_cells_only_is_exact(bundled, tmp_path):
     m = linemap.load(bundled)
     out = tmp_path / "map.lmap"

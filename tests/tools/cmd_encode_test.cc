@@ -164,6 +164,24 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
   }
 }
 
+// --compact writes an exact version 2.3 file no larger than the default
+// one (each tile keeps the smallest of more codings); not with --lossy.
+TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
+  const std::string dir = MakeTempDir("encode_compact");
+  const std::string yaml = CopyDepot(dir);
+  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/d.lmap"}).exit_code, 0);
+  const CliResult r = RunCli({"encode", yaml, "-o", dir + "/c.lmap", "--compact"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(RunCli({"info", dir + "/c.lmap"}).out.find("version 2.3"), std::string::npos);
+  StatusOr<Grid> decoded = LoadLmap(dir + "/c.lmap");
+  StatusOr<Grid> original = LoadRosMap(yaml);
+  ASSERT_TRUE(decoded.ok() && original.ok());
+  EXPECT_EQ(*decoded, *original);
+  EXPECT_LT(ReadFile(dir + "/c.lmap").size(), ReadFile(dir + "/d.lmap").size());
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--compact", "--lossy"}, dir,
+                {"--compact", "--lossy"});
+}
+
 TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
   const CliResult r = RunCli({"encode", "--help"});
   ASSERT_EQ(r.exit_code, 0);

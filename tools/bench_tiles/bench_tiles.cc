@@ -140,6 +140,7 @@ struct Row {
   Coded plain, hinted, mixed, mixed_hinted;  // template / mixed model, without / with hints
   Coded smallest, smallest_hinted;           // kMixedAllCells without / with hints
   Coded layered;                             // kLayerContext with hints
+  Coded mixed_layered;                       // kMixedLayerAllCells with hints
 };
 
 double Median(std::vector<double> v) {
@@ -185,6 +186,11 @@ const Column kColumns[] = {
     {"hl/png", " %6.3f", [](const Row& r) { return r.layered.bytes / r.png; }},
     {"hldec", " %6.2f", [](const Row& r) { return r.layered.dec_ns; }},
     {"hld/hd", " %6.3f", [](const Row& r) { return r.layered.dec_ns / r.hinted.dec_ns; }},
+    {"hmlay", " %7.0f", [](const Row& r) { return r.mixed_layered.bytes; }},
+    {"hml/hma", " %7.3f",
+     [](const Row& r) { return r.mixed_layered.bytes / r.smallest_hinted.bytes; }},
+    {"hml/hl", " %6.3f", [](const Row& r) { return r.mixed_layered.bytes / r.layered.bytes; }},
+    {"hmldec", " %6.2f", [](const Row& r) { return r.mixed_layered.dec_ns; }},
 };
 const Column kSizeColumns[] = {
     {"t256", " %7.0f", [](const Row& r) { return r.t256; }},
@@ -430,7 +436,8 @@ int Run(int argc, char** argv) {
       ok = ok && Measure(g, hint_ptr, tile, TileModel::kTemplate, &r.hinted) &&
            Measure(g, hint_ptr, tile, TileModel::kMixed, &r.mixed_hinted) &&
            Measure(g, hint_ptr, tile, TileModel::kMixedAllCells, &r.smallest_hinted) &&
-           Measure(g, hint_ptr, tile, TileModel::kLayerContext, &r.layered);
+           Measure(g, hint_ptr, tile, TileModel::kLayerContext, &r.layered) &&
+           Measure(g, hint_ptr, tile, TileModel::kMixedLayerAllCells, &r.mixed_layered);
     }
     if (!ok) {
       std::fprintf(stderr, "bench_tiles: %s: round trip FAILED\n", m.path);
@@ -456,7 +463,7 @@ int Run(int argc, char** argv) {
   std::printf(
       "tile %d; bytes; ns = CPU ns per cell (least of 5 runs, 3 above 1 Mcell)\n"
       "tile/hinted: TileModel::kTemplate without/with hints; mix/hmix: TileModel::kMixed; "
-      "mall/hmall: TileModel::kMixedAllCells\n",
+      "mall/hmall: TileModel::kMixedAllCells; hlay: kLayerContext; hmlay: kMixedLayerAllCells\n",
       tile);
   PrintRows(rows, true, sizes, !jxl_file.empty());
   PrintRows(rows, false, sizes, !jxl_file.empty());

@@ -48,6 +48,10 @@ const CommandSpec kEncodeSpec = {
          "far from the wall cells (by default they follow the pixel steps of slanted walls; "
          "files saved with --tolerance always draw straight walls)"},
         {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
+        {"--compact", "",
+         "code the cells for size: default files about 3.5 % smaller (their cells 9 %), cells "
+         "decode about 5x slower and encode 3x slower (files saved with --tolerance code "
+         "their blocks that way already)"},
         {"--threads", "N",
          "threads to use (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
@@ -108,9 +112,13 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     return InvalidArgumentError("--straight-walls and --follow-steps exclude each other");
   }
   options.straight_walls = args.Has("--straight-walls");
+  options.compact = args.Has("--compact");
   LINEMAP_ASSIGN_OR_RETURN(options.tolerance_cells, args.GetInt("--tolerance", 0));
   if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {
     return InvalidArgumentError("--tolerance must be a whole number of cells from 0 to 4");
+  }
+  if (options.compact && options.format_v1) {
+    return InvalidArgumentError("--compact writes a version 2.3 file; not with --lossy");
   }
   if (args.Has("--png-ratio") && args.Has("--no-png-ratio")) {
     return InvalidArgumentError("--png-ratio and --no-png-ratio exclude each other");

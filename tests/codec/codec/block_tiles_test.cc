@@ -160,10 +160,20 @@ void ExpectBodyAsTheSpecSays(const std::vector<WallPolyline>& walls) {
           hints.push_back(b == Cell::kOccupied ? 1 : b == Cell::kFree ? 2 : 0);
         }
       }
-      const auto block_data = EncodeTileCells(blocks.data(), block_hints.data(), bw, bh,
-                                              CellRect{0, 0, bw, bh}, TileModel::kMixedAllCells);
-      const auto cell_data = EncodeTileCells(cells.data(), hints.data(), tw, th,
-                                             CellRect{0, 0, tw, th}, TileModel::kMixedAllCells);
+      // Each part with the smaller of models 3 and 12 (3 on a tie).
+      const auto smaller = [](std::vector<std::uint8_t> a, std::vector<std::uint8_t> b) {
+        return b.size() < a.size() ? b : a;
+      };
+      const auto block_data =
+          smaller(EncodeTileCells(blocks.data(), block_hints.data(), bw, bh, CellRect{0, 0, bw, bh},
+                                  TileModel::kMixedAllCells),
+                  EncodeTileCells(blocks.data(), block_hints.data(), bw, bh, CellRect{0, 0, bw, bh},
+                                  TileModel::kMixedLayerAllCells));
+      const auto cell_data =
+          smaller(EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th},
+                                  TileModel::kMixedAllCells),
+                  EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, th},
+                                  TileModel::kMixedLayerAllCells));
       ByteWriter t;
       t.PutVarint(block_data.size());
       t.PutBytes(block_data);

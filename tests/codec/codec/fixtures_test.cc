@@ -59,6 +59,7 @@ TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
       {"depot_v2_raster_only.lmap", "/nav2/depot.yaml", 0},
       {"depot_v2_tiles_64.lmap", "/nav2/depot.yaml", 2},
       {"depot_v2_2_sections_64.lmap", "/nav2/depot.yaml", 2},
+      {"depot_v2_3_compact_tiles_64.lmap", "/nav2/depot.yaml", 3},
   };
   for (const auto& [file, map, minor] : cases) {
     auto contents = LoadLmapContents(Fixture(file));
@@ -74,7 +75,7 @@ TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
 }
 
 // Files with cells in blocks, saved within 1 cell (version 2.1 with WALL,
-// ROOM, FURN; 2.2 with LAYR), decode to grids that keep every guarantee of
+// ROOM, FURN; 2.2 with LAYR; 2.3 with tiles of model 12), decode to grids that keep every guarantee of
 // tolerance 1 against their map, checked by CheckTolerance, whatever the
 // encoder's choices were when they were written.
 TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
@@ -82,7 +83,8 @@ TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
       LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
   ASSERT_TRUE(original.ok());
   for (const auto& [file, minor] : {std::pair{"willow_v2_1_tolerance_1.lmap", 1},
-                                    std::pair{"willow_v2_2_tolerance_1.lmap", 2}}) {
+                                    std::pair{"willow_v2_2_tolerance_1.lmap", 2},
+                                    std::pair{"willow_v2_3_tolerance_1.lmap", 3}}) {
     auto contents = LoadLmapContents(Fixture(file));
     ASSERT_TRUE(contents.ok()) << file << ": " << contents.status().ToString();
     EXPECT_EQ(contents->major, 2) << file;

@@ -63,6 +63,8 @@ const BadFile kBadFiles[] = {
     {"v2_2_layr_and_wall.lmap", "chunk LAYR: LAYR in a file with WALL, ROOM or FURN"},
     {"v2_2_item_outside_its_section_box.lmap",
      "chunk LAYR: section 0: point out of the grid (or its section's box) or malformed"},
+    // Version 2.3 (the same script).
+    {"v2_3_tile_model_13.lmap", "chunk CELL: tile 0: tile cells: unknown model 13"},
 };
 
 std::string BadDir() { return testing::SourceDir() + "/tests/data/bad/lmap_decode/"; }

@@ -102,7 +102,7 @@ TEST(TileCoderTest, RandomGridsAndTilesRoundTrip) {
     for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kTemplateAllCells,
                             TileModel::kMixedAllCells, TileModel::kLayerContext,
                             LayerContextWithout(kLayerTermWestChange | kLayerTermNorthChange),
-                            TileModel::kLayerContextLast}) {
+                            TileModel::kLayerContextLast, TileModel::kMixedLayerAllCells}) {
       const Bytes data = EncodeTileCells(cells.data(), hint_ptr, width, height, tile, model);
       ExpectDecodes(data, cells, background, hint_ptr, width, height, tile);
     }
@@ -173,7 +173,8 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
       }
     }
     for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext,
-                            LayerContextWithout(kLayerTermNorthChange)}) {
+                            LayerContextWithout(kLayerTermNorthChange),
+                            TileModel::kMixedLayerAllCells}) {
       const Bytes data =
           EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
       ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
@@ -235,11 +236,11 @@ TEST(TileCoderTest, BundledMapsRoundTripInTiles) {
     for (const std::uint8_t* hint_ptr : {static_cast<const std::uint8_t*>(nullptr),
                                          static_cast<const std::uint8_t*>(hints->data())}) {
       for (int size : {std::max(w, h), 1024, 256, 97}) {
-        // The twelve models in turn over the tiles: the decoder reads each.
+        // The thirteen models in turn over the tiles: the decoder reads each.
         const std::vector<CellRect> tiles = Tiles(w, h, size);
         std::vector<Bytes> data;
         for (const CellRect& t : tiles) {
-          const TileModel model = static_cast<TileModel>(data.size() % 12);
+          const TileModel model = static_cast<TileModel>(data.size() % 13);
           data.push_back(EncodeTileCells(g.cells().data(), hint_ptr, w, h, t, model));
         }
         std::vector<Cell> full(g.size(), Cell::kUnknown);
@@ -304,7 +305,7 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
                                  canvas.data())
                      .ok());
   }
-  for (std::uint8_t model : {12, 13, 31}) {  // models 12 and up do not exist
+  for (std::uint8_t model : {13, 14, 31}) {  // models 13 and up do not exist
     Bytes bad_model = data;
     bad_model[0] = static_cast<std::uint8_t>((bad_model[0] & ~31) | model);
     EXPECT_FALSE(DecodeTileCells(bad_model.data(), bad_model.size(), nullptr, g.width(), g.height(),
@@ -327,7 +328,8 @@ TEST(TileCoderTest, MalformedDataIsRefusedWithoutCrashing) {
 class SpecEncoder {
  public:
   // `model` as the tile's model id: for 0-3 bit 0 mixed, bit 1 every cell;
-  // 4-11 the layer context without the terms of the bits of model - 4.
+  // 4-11 the layer context without the terms of the bits of model - 4; 12
+  // every cell with the mixed layer context.
   SpecEncoder(const std::vector<Cell>& cells, const std::vector<std::uint8_t>& hints, int width,
               CellRect tile, int model)
       : cells_(cells),
@@ -336,9 +338,10 @@ class SpecEncoder {
         t_(tile),
         model_(model),
         mixed_(model < 4 && (model & 1) != 0),
-        all_cells_(model < 4 && (model & 2) != 0),
-        layer_(model >= 4),
-        dropped_(model >= 4 ? model - 4 : 0) {}
+        all_cells_((model < 4 && (model & 2) != 0) || model == 12),
+        layer_(model >= 4 && model <= 11),
+        mixed_layer_(model == 12),
+        dropped_(model >= 4 && model <= 11 ? model - 4 : 0) {}
 
   Bytes Encode() {
     const int tw = t_.x1 - t_.x0;
@@ -407,6 +410,8 @@ class SpecEncoder {
  private:
   static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
                        kOther = kEqual + 32805, kNear = kOther + 405;
+  // Model 12's LEQUAL and LOTHER (any place of their own will do).
+  static constexpr int kMixedLayer = kNear + 405;
   struct Model {
     std::uint32_t fast = 32768, slow = 32768, n = 0;
   };
@@ -471,8 +476,52 @@ class SpecEncoder {
     const int hi = w == 2 ? 1 : 2;
     Bit(kEqual + 3240 + pattern * 40 + other_class, v == hi);
   }
+  // The layer classes of section 5.2 (`dropped_` terms left out).
+  void LayerClasses(int c, int r, int* layer_class, int* other_class) const {
+    const int h = LayerH(c, r);
+    const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
+    const bool wall_next =
+        ((LayerH(c - 1, r) | LayerH(c + 1, r) | LayerH(c, r - 1) | LayerH(c, r + 1)) & 1) != 0;
+    *other_class = hc;
+    if (!(dropped_ & 4) && hc != 1 && !wall_next) *other_class += 20;
+    *layer_class = *other_class;
+    if (!(dropped_ & 1) && LayerH(c - 1, r) != h) *layer_class += 5;
+    if (!(dropped_ & 2) && LayerH(c, r - 1) != h) *layer_class += 10;
+  }
+  // Model 12 (section 5.3): EQUAL, LEQUAL and NEAR mixed where EQUAL is
+  // unsure; LEQUAL learns from every cell.
+  void CodeMixedLayerCell(int c, int r) {
+    const int h = H(c, r);
+    const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
+    int layer_class = 0, other_class = 0;
+    LayerClasses(c, r, &layer_class, &other_class);
+    const int w = V(c - 1, r), v = V(c, r);
+    const int t =
+        w + 3 * (V(c - 2, r) +
+                 3 * (V(c - 2, r - 1) +
+                      3 * (V(c - 1, r - 1) +
+                           3 * (V(c, r - 1) +
+                                3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+    const int pattern = ((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1);
+    const int a = kEqual + t * 5 + hc;
+    const int b = kMixedLayer + pattern * 40 + layer_class;
+    const int near = kNear + pattern * 5 + hc;
+    const std::uint32_t p_equal = P0(models_[a]);
+    if (p_equal < 2048 || p_equal > 63488) {
+      Bit(a, v == w);
+      Update(models_[b], v == w);
+    } else {
+      const int inputs[3] = {a, b, near};
+      const int set = other_class * 2 + (w == V(c, r - 1) ? 1 : 0);
+      MixedBitOf(inputs, 3, &weights12_[static_cast<std::size_t>(set) * 3], v == w);
+    }
+    if (v == w) return;
+    const int hi = w == 2 ? 1 : 2;
+    Bit(kMixedLayer + 3240 + pattern * 40 + other_class, v == hi);
+  }
   void CodeCell(int c, int r) {
     if (layer_) return CodeLayerCell(c, r);
+    if (mixed_layer_) return CodeMixedLayerCell(c, r);
     const int h = H(c, r);
     const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
     const int w = V(c - 1, r), v = V(c, r);
@@ -518,21 +567,27 @@ class SpecEncoder {
     return memo[p];
   }
   void MixedBit(int equal, int near, int set, bool one) {
-    std::int64_t* w = weights_[set];
-    const int st[2] = {Stretch(static_cast<int>((65535 - P0(models_[equal])) / 16)),
-                       Stretch(static_cast<int>((65535 - P0(models_[near])) / 16))};
-    const std::int64_t dot = w[0] * st[0] + w[1] * st[1];
+    const int inputs[2] = {equal, near};
+    MixedBitOf(inputs, 2, weights_[set], one);
+  }
+  // Section 5.1 with `n` inputs (the models at `inputs`) and weights `w`.
+  void MixedBitOf(const int* inputs, int n, std::int64_t* w, bool one) {
+    int st[3] = {};
+    std::int64_t dot = 0;
+    for (int k = 0; k < n; ++k) {
+      st[k] = Stretch(static_cast<int>((65535 - P0(models_[inputs[k]])) / 16));
+      dot += w[k] * st[k];
+    }
     const std::int64_t d = std::clamp<std::int64_t>(
         static_cast<std::int64_t>(std::floor(static_cast<double>(dot) / 65536.0)), -2047, 2047);
     const int p1 = std::clamp(Squash(static_cast<int>(d)), 1, 4095);
     Code(static_cast<std::uint32_t>(4096 - p1) * 16, one);
     const int err = ((one ? 4096 : 0) - p1) * 2;
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < n; ++k) {
       w[k] = std::clamp<std::int64_t>(
           w[k] + static_cast<std::int64_t>(std::floor(st[k] * err / 1024.0)), -(1 << 24), 1 << 24);
     }
-    Update(models_[equal], one);
-    Update(models_[near], one);
+    for (int k = 0; k < n; ++k) Update(models_[inputs[k]], one);
   }
   void Code(std::uint32_t p0, bool one) {
     const std::uint32_t bound = (range_ >> 16) * p0;
@@ -624,9 +679,11 @@ class SpecEncoder {
   bool mixed_;
   bool all_cells_;
   bool layer_;
+  bool mixed_layer_;
   int dropped_;  // layer terms left out: 1 change from W, 2 from N, 4 wall
   std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
-  std::vector<Model> models_ = std::vector<Model>(kNear + 405);
+  std::vector<Model> models_ = std::vector<Model>(kMixedLayer + 2 * 3240);
+  std::vector<std::int64_t> weights12_ = std::vector<std::int64_t>(50 * 3, 19661);  // model 12
   std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
                                   {19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
                                   {19661, 19661}, {19661, 19661}};
@@ -657,7 +714,7 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const std::uint8_t* hint_ptr = hints.empty() ? nullptr : hints.data();
     EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile),
               SpecEncoder(cells, hints, width, tile, 0).Encode());
-    for (int model = 0; model <= 11; ++model) {
+    for (int model = 0; model <= 12; ++model) {
       EXPECT_EQ(EncodeTileCells(cells.data(), hint_ptr, width, height, tile,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(cells, hints, width, tile, model).Encode())
@@ -671,7 +728,7 @@ TEST(TileCoderTest, BytesFollowTheSpec) {
     const CellRect all{0, 0, g.width(), g.height()};
     EXPECT_EQ(EncodeTileCells(g.cells().data(), nullptr, g.width(), g.height(), all),
               SpecEncoder(g.cells(), none, g.width(), all, 0).Encode());
-    for (int model = 1; model <= 11; ++model) {
+    for (int model = 1; model <= 12; ++model) {
       EXPECT_EQ(EncodeTileCells(g.cells().data(), hints->data(), g.width(), g.height(), all,
                                 static_cast<TileModel>(model)),
                 SpecEncoder(g.cells(), *hints, g.width(), all, model).Encode())
