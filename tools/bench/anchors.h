@@ -29,6 +29,11 @@ std::vector<Anchor> SizeAnchors();
 // included (not --raster-only, which would flatter the layers' cost away).
 Anchor AnchorSubject();
 
+// The files also compared with the anchors, for information: the --compact
+// file with its layers and without (the anchors are measured at their
+// highest efforts; --compact is ours).
+std::vector<Anchor> ComparedSubjects();
+
 struct AnchorOutcome {
   Anchor anchor;
   std::vector<const MapResult*> won;   // subject strictly smaller
@@ -36,12 +41,15 @@ struct AnchorOutcome {
 };
 
 // Per anchor, the maps of at least kAnchorMinCells cells that have both
-// sizes, split into won and lost.
-std::vector<AnchorOutcome> CheckAnchors(const std::vector<MapResult>& results);
+// sizes of `subject` and the anchor, split into won and lost.
+std::vector<AnchorOutcome> CheckAnchors(const std::vector<MapResult>& results,
+                                        const Anchor& subject = AnchorSubject());
 
 // A summary table (maps won per anchor, median and worst size ratio) and,
-// when any map is lost, a table of the losses with both sizes.
-std::vector<NamedTable> AnchorTables(const std::vector<MapResult>& results);
+// when any map is lost, a table of the losses with both sizes. `goal`: the
+// text calls winning every map the goal (else a comparison).
+std::vector<NamedTable> AnchorTables(const std::vector<MapResult>& results,
+                                     const Anchor& subject = AnchorSubject(), bool goal = true);
 
 }  // namespace linemap::bench
 

@@ -111,13 +111,45 @@ void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const Lma
   }
 }
 
+// An exact file written with `options`: its size under `bytes_key`, the
+// cells its decode gets wrong under `cells_key`; the file, if written.
+std::optional<std::vector<std::uint8_t>> AddExactFile(const Grid& grid, const EncodeOptions& options,
+                                                      const char* bytes_key, const char* cells_key,
+                                                      const std::string& label,
+                                                      MapResult* result) {
+  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
+  if (!file.ok()) {
+    result->figures[cells_key] = static_cast<double>(grid.size());
+    Note(result, label, file.status());
+    return std::nullopt;
+  }
+  result->figures[bytes_key] = static_cast<double>(file->size());
+  AddRoundTrip(grid, *file, cells_key, label, result);
+  return std::move(*file);
+}
+
 void AddRasterOnly(const Grid& grid, MapResult* result) {
   EncodeOptions options;
   options.vector_layers = false;
-  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
-  if (!file.ok()) return Note(result, ".lmap 2.0 --raster-only", file.status());
-  result->figures[key::kLmapRasterBytes] = static_cast<double>(file->size());
-  AddRoundTrip(grid, *file, key::kLmapRasterCellsWrong, ".lmap 2.0 --raster-only", result);
+  AddExactFile(grid, options, key::kLmapRasterBytes, key::kLmapRasterCellsWrong,
+               ".lmap 2.0 --raster-only", result);
+}
+
+// The files coded for size (--compact), with the layers and without, and
+// the decode time of the first (median of `repeats`).
+void AddCompact(const Grid& grid, int repeats, MapResult* result) {
+  EncodeOptions options;
+  options.compact = true;
+  const std::optional<std::vector<std::uint8_t>> file =
+      AddExactFile(grid, options, key::kLmapCompactBytes, key::kLmapCompactCellsWrong,
+                   ".lmap 2.3 --compact", result);
+  if (file) {
+    result->figures[key::kLmapCompactDecodeMs] =
+        Median(TimeRuns([&] { (void)DecodeLmap(*file); }, repeats));
+  }
+  options.vector_layers = false;
+  AddExactFile(grid, options, key::kLmapRasterCompactBytes, key::kLmapRasterCompactCellsWrong,
+               ".lmap 2.3 --compact --raster-only", result);
 }
 
 // The former lossy mode (`linemap encode --lossy`): its size and linemap
@@ -173,6 +205,7 @@ Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* resu
   if (!layers.ok()) Note(result, ".lmap 2.0 layers", layers);
   AddSpeed(grid, *file, what, result);
   AddRasterOnly(grid, result);
+  AddCompact(grid, what.repeats, result);
   Status lossy = AddLossy(grid, result);
   if (!lossy.ok()) Note(result, ".lmap 1.0 --lossy", lossy);
   return Status::Ok();

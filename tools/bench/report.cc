@@ -76,6 +76,9 @@ std::vector<SizeMethod> SizeMethods() {
       {".lmap 2.0 (default: exact, walls + rooms + furniture)", key::kLmapBytes, key::kLmapEncodeMs,
        key::kLmapDecodeMs, ""},
       {".lmap 2.0 --raster-only", key::kLmapRasterBytes, "", "", ""},
+      {".lmap 2.3 --compact (exact, layers, cells coded for size)", key::kLmapCompactBytes, "",
+       key::kLmapCompactDecodeMs, ""},
+      {".lmap 2.3 --compact --raster-only", key::kLmapRasterCompactBytes, "", "", ""},
       {".lmap 1.0 --lossy", key::kLmapLossyBytes, "", "", key::kEvalDisplCm},
   };
 }
@@ -100,8 +103,9 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
            CommandText(WebpCodec().encode) + "; " + CommandText(JpegXlCodec().encode) +
            "), each file decoded back (dwebp, djxl) and checked pixel for pixel. lmap 2.0 = "
            "`linemap encode` with no option (exact, walls + rooms + furniture); lmap raster = "
-           "--raster-only (exact, cells only); lmap 1.0 lossy = --lossy (the former lossy "
-           "encoder).",
+           "--raster-only (exact, cells only); compact and raster compact = the same with "
+           "--compact (cells coded for size, version 2.3); lmap 1.0 lossy = --lossy (the former "
+           "lossy encoder).",
        ColumnsTable(results, {{key::kCells, "cells"},
                               {key::kSourceBytes, "source"},
                               {key::kPng9Bytes, "PNG-9"},
@@ -115,6 +119,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kJxlBytes, "JPEG XL"},
                               {key::kLmapBytes, "lmap 2.0"},
                               {key::kLmapRasterBytes, "lmap raster"},
+                              {key::kLmapCompactBytes, "compact"},
+                              {key::kLmapRasterCompactBytes, "raster compact"},
                               {key::kLmapLossyBytes, "lmap 1.0 lossy"}})});
   tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
                     ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
@@ -128,6 +134,9 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                                            {key::kJxlBytes, "JPEG XL", 3, true},
                                            {key::kLmapBytes, "lmap 2.0", 3, true},
                                            {key::kLmapRasterBytes, "lmap raster", 3, true},
+                                           {key::kLmapCompactBytes, "compact", 3, true},
+                                           {key::kLmapRasterCompactBytes, "raster compact", 3,
+                                            true},
                                            {key::kLmapLossyBytes, "lmap 1.0 lossy", 3, true}})});
   tables.push_back(
       {"Line extraction",

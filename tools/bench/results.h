@@ -34,6 +34,11 @@ inline constexpr const char* kWebpBytes = "webp_bytes";  // cwebp -lossless -z 9
 inline constexpr const char* kLmapBytes = "lmap2_bytes";
 // .lmap 2.0 --raster-only: exact, cells only (the smallest exact file).
 inline constexpr const char* kLmapRasterBytes = "lmap2_raster_bytes";
+// .lmap 2.3 --compact, with the layers and --raster-only: exact, the cells
+// coded for size (EncodeOptions::compact); the decode time of the former.
+inline constexpr const char* kLmapCompactBytes = "lmap2_compact_bytes";
+inline constexpr const char* kLmapRasterCompactBytes = "lmap2_raster_compact_bytes";
+inline constexpr const char* kLmapCompactDecodeMs = "lmap2_compact_decode_ms";
 // .lmap 1.0 --lossy: the former lossy encoder (EncodeOptions::format_v1).
 inline constexpr const char* kLmapLossyBytes = "lmap1_lossy_bytes";
 inline constexpr const char* kPngEncodeMs = "png_encode_ms";
@@ -69,6 +74,8 @@ inline constexpr const char* kLinemapMs = "linemap_ms";
 // same for the --raster-only file.
 inline constexpr const char* kLmapCellsWrong = "lmap2_cells_wrong";
 inline constexpr const char* kLmapRasterCellsWrong = "lmap2_raster_cells_wrong";
+inline constexpr const char* kLmapCompactCellsWrong = "lmap2_compact_cells_wrong";
+inline constexpr const char* kLmapRasterCompactCellsWrong = "lmap2_raster_compact_cells_wrong";
 // The default file's layers (read with DecodeLmapVectors, no raster decode):
 // how many, and MeasureLayerFidelity() of them against the map.
 inline constexpr const char* kLmapWalls = "lmap2_walls";                 // polylines

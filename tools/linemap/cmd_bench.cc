@@ -204,6 +204,11 @@ int RunBench(const std::vector<std::string>& argv) {
   std::vector<bench::NamedTable> tables = bench::PerMapTables(results);
   tables.push_back(bench::MediansTable(results));
   for (bench::NamedTable& table : bench::AnchorTables(results)) tables.push_back(std::move(table));
+  for (const bench::Anchor& subject : bench::ComparedSubjects()) {
+    for (bench::NamedTable& table : bench::AnchorTables(results, subject, /*goal=*/false)) {
+      tables.push_back(std::move(table));
+    }
+  }
   tables.push_back(bench::LineMediansTable(results));
   if (!scaling.empty()) tables.push_back(bench::ScalingTable(scaling));
   for (bench::NamedTable& table : bench::GoalTables(results)) tables.push_back(std::move(table));
