@@ -23,10 +23,10 @@ namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
     "encode",
-    "MAP -o OUT.lmap [--raster-only] [--threads N] [--lossy [--simplify-free]] "
+    "MAP -o OUT.lmap [--raster-only] [--compact] [--threads N] [--lossy [--simplify-free]] "
     "[--method linemap|rmline] [--epsilon E] [--pose X,Y[,YAW]]",
     "save a map as an .lmap file (exact, with walls, rooms and furniture)",
-    "By default writes a version 2.0 file that decodes to the input cell for\n"
+    "By default writes a version 2.x file that decodes to the input cell for\n"
     "cell and carries the vector layers: walls as polylines, one border chain\n"
     "per room, furniture outlines. Prints the input cells, the output bytes,\n"
     "the ratio to the smallest PNG (zlib level 9, grey or palette) of the same\n"
@@ -42,7 +42,7 @@ const CommandSpec kEncodeSpec = {
          "where obstacles or free space would move more than T, two free regions would join "
          "or split, or a plan would change by more than 3 % or 2 steps"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
-        {"--raster-only", "", "leave the vector layers out: the smallest exact file"},
+        {"--raster-only", "", "leave the vector layers out (with --compact: the smallest exact file)"},
         {"--straight-walls", "",
          "one wall segment per straight wall: exact files 1-14 % smaller, walls up to twice as "
          "far from the wall cells (by default they follow the pixel steps of slanted walls; "
