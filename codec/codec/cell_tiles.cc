@@ -72,7 +72,10 @@ std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
   std::vector<std::uint8_t> best;
   if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
     best = encode(TileModel::kTemplate);
-    if (compact) keep_smaller(&best, TileModel::kMixedAllCells);
+    if (compact) {
+      keep_smaller(&best, TileModel::kMixedLayerAllCells);
+      keep_smaller(&best, TileModel::kMixedAllCells);
+    }
     return best;
   }
   best = encode(TileModel::kLayerContext);

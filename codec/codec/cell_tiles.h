@@ -56,9 +56,10 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 // smaller, and without hints (--raster-only, tiles no layer reaches) it
 // always is. The choice costs three encodings of the tile and nothing when
 // decoding.
-// With `compact`, kMixedLayerAllCells and kMixedAllCells (kMixedAllCells
-// alone for a tile without hints) join the choice, tried after the others:
-// the smallest exact coding, for files sent more often than they are read.
+// With `compact`, kMixedLayerAllCells and kMixedAllCells join the choice
+// (in every tile: model 12's WIDE input pays without hints too), tried
+// after the others: the smallest exact coding, for files sent more often
+// than they are read.
 std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
                                          const std::vector<std::uint8_t>& hints, int tw, int th,
                                          bool compact = false);

@@ -60,11 +60,13 @@ constexpr unsigned kLayerOtherModel = kLayerEqualModel + kNearPatterns * kLayerC
 constexpr unsigned kLayerBlockModel = kLayerOtherModel + kNearPatterns * kLayerClasses;
 constexpr unsigned kLayerModelCount = kLayerBlockModel + kBlockContexts;
 // The mixed layer context (model 12) codes every cell of a changed row, so
-// it has no block tables: EQUAL and OTHER of the template where models 0-3
-// have them, then its own LEQUAL and LOTHER.
+// it has no block tables: EQUAL, NEAR and OTHER of the template where
+// models 0-3 have them, then its own LEQUAL, LOTHER and WIDE (the 8-cell
+// template with the cells two rows below beside N, NNW and NNE).
 constexpr unsigned kMixedLayerEqualModel = kModelCount;
 constexpr unsigned kMixedLayerOtherModel = kMixedLayerEqualModel + kNearPatterns * kLayerClasses;
-constexpr unsigned kMixedLayerModelCount = kMixedLayerOtherModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kMixedLayerWideModel = kMixedLayerOtherModel + kNearPatterns * kLayerClasses;
+constexpr unsigned kMixedLayerModelCount = kMixedLayerWideModel + kTemplateValues * 9;
 
 // The hint byte's class in the cell context: the layer that predicts the
 // cell most strongly wins (a wall is drawn over room fills and furniture).
@@ -287,16 +289,26 @@ template <typename Io>
   }
 }
 
+// The 10-cell template of model 12's WIDE model: the 8-cell template and
+// NNW, NNE (two rows below), without the hint class. Alone it learns too
+// slowly within a tile (section 6 of the spec); in the mix it adds the
+// shape of a wall two rows back where it has been seen often enough.
+inline unsigned WideContext(unsigned west, unsigned west2, const std::uint8_t* n1,
+                            const std::uint8_t* n2, int i) {
+  return (west + 3u * (west2 + 3u * Below(n1, n2, i))) * 9u + n2[i - 1] * 3u + n2[i + 1];
+}
+
 // Codes cells [begin, end) of the row `cur` with the mixed layer context
 // (model 12): "equals W" is predicted by the 8-cell template x hint class
-// (as models 0-3) and by the nearest cells' pattern x layer class (as
-// models 4-11); where the template is unsure the two are mixed, with a
-// weight set per layer class (without the change terms) and W == N. The
-// template sees the shapes of the cells coded so far, the layer class
-// what they cannot: the walls, borders and fills ahead of the scan.
+// (as models 0-3); where that is unsure it is mixed with the nearest
+// cells' pattern x layer class (as models 4-11), the nearest cells x hint
+// class (NEAR) and the 10-cell template (WIDE), with a weight set per
+// layer class (without the change terms) and W == N. The template sees
+// the shapes of the cells coded so far, the layer class what they cannot:
+// the walls, borders and fills ahead of the scan.
 template <typename Io>
 [[gnu::always_inline]] inline void CodeMixedLayerCellRun(
-    Io& io, TileModelTable& models, TileMixer<3>& mixer, std::uint8_t* cur, const std::uint8_t* n1,
+    Io& io, TileModelTable& models, TileMixer<4>& mixer, std::uint8_t* cur, const std::uint8_t* n1,
     const std::uint8_t* n2, const std::uint8_t* below, const std::uint8_t* here,
     const std::uint8_t* above, int width, const LayerTerms& terms, int begin, int end) {
   unsigned west = cur[begin - 1];
@@ -315,7 +327,8 @@ template <typename Io>
       layer.Update(eq);
     } else {
       TileBitModel& near = models[kNearModel + NearContext(west, n1, i, hc)];
-      const std::uint32_t inputs[3] = {equal.p0(), layer.p0(), near.p0()};
+      TileBitModel& wide = models[kMixedLayerWideModel + WideContext(west, west2, n1, n2, i)];
+      const std::uint32_t inputs[4] = {equal.p0(), layer.p0(), near.p0(), wide.p0()};
       const std::uint32_t pm =
           mixer.Mix(inputs, static_cast<int>(classes.other * 2 + (west == n1[i])));
       eq = io.CodeP(pm, v == west);
@@ -323,6 +336,7 @@ template <typename Io>
       equal.Update(eq);
       layer.Update(eq);
       near.Update(eq);
+      wide.Update(eq);
     }
     unsigned value = west;
     if (!eq) {
@@ -440,8 +454,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
   TileModelTable models(kLayer && kMix ? kMixedLayerModelCount
                         : kLayer      ? kLayerModelCount
                                       : kModelCount);
-  // Model 12 mixes three predictions, models 1 and 3 two.
-  using Mixer = std::conditional_t<kLayer && kMix, TileMixer<3>, TileMixer<2>>;
+  // Model 12 mixes four predictions, models 1 and 3 two.
+  using Mixer = std::conditional_t<kLayer && kMix, TileMixer<4>, TileMixer<2>>;
   Mixer mixer(kLayer && kMix ? kMixedLayerSets : kMix ? kMixerSets : 0);
   RowRing ring(tw);
   std::vector<std::uint8_t> above_state(static_cast<std::size_t>(blocks), kStateNone);

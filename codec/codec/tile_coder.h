@@ -63,9 +63,10 @@ enum class TileModel : std::uint8_t {
   // whichever codes a tile smallest: the terms that pay differ by map.
   kLayerContextLast = 11,
   // Every cell of a row that differs from the row below is coded (as model
-  // 3), "equals W" by the mix of the 8-cell template and the layer context
-  // where the template is unsure: the smallest coding with layers, about
-  // 5x the decode time of kTemplate. Written by EncodeOptions::compact.
+  // 3), "equals W" by the mix of the 8-cell template, the layer context,
+  // the nearest cells and a 10-cell template where the 8-cell one is
+  // unsure: the smallest coding, with layers or without, about 7x the
+  // decode time of kTemplate. Written by EncodeOptions::compact.
   kMixedLayerAllCells = 12,
 };
 
@@ -83,7 +84,7 @@ constexpr TileModel LayerContextWithout(unsigned dropped) {
 }
 
 // Every call below allocates about 0.2 MB of model state (kLayerContext
-// 42 kB) and three rows of the tile, and shares nothing with other calls:
+// 42 kB, kMixedLayerAllCells 0.6 MB) and three rows of the tile, and shares nothing with other calls:
 // tiles may be coded on several threads at once.
 
 // Codes the cells of `cells` (width*height Cell values, grid-row order)

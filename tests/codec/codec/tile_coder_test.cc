@@ -410,8 +410,8 @@ class SpecEncoder {
  private:
   static constexpr int kBlock = 6, kSuper = kBlock + 216, kEqual = kSuper + 72,
                        kOther = kEqual + 32805, kNear = kOther + 405;
-  // Model 12's LEQUAL and LOTHER (any place of their own will do).
-  static constexpr int kMixedLayer = kNear + 405;
+  // Model 12's LEQUAL, LOTHER and WIDE (any place of their own will do).
+  static constexpr int kMixedLayer = kNear + 405, kWide = kMixedLayer + 2 * 3240;
   struct Model {
     std::uint32_t fast = 32768, slow = 32768, n = 0;
   };
@@ -488,8 +488,8 @@ class SpecEncoder {
     if (!(dropped_ & 1) && LayerH(c - 1, r) != h) *layer_class += 5;
     if (!(dropped_ & 2) && LayerH(c, r - 1) != h) *layer_class += 10;
   }
-  // Model 12 (section 5.3): EQUAL, LEQUAL and NEAR mixed where EQUAL is
-  // unsure; LEQUAL learns from every cell.
+  // Model 12 (section 5.3): EQUAL, LEQUAL, NEAR and WIDE mixed where EQUAL
+  // is unsure; LEQUAL learns from every cell.
   void CodeMixedLayerCell(int c, int r) {
     const int h = H(c, r);
     const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
@@ -506,14 +506,15 @@ class SpecEncoder {
     const int a = kEqual + t * 5 + hc;
     const int b = kMixedLayer + pattern * 40 + layer_class;
     const int near = kNear + pattern * 5 + hc;
+    const int wide = kWide + t * 9 + V(c - 1, r - 2) * 3 + V(c + 1, r - 2);
     const std::uint32_t p_equal = P0(models_[a]);
     if (p_equal < 2048 || p_equal > 63488) {
       Bit(a, v == w);
       Update(models_[b], v == w);
     } else {
-      const int inputs[3] = {a, b, near};
+      const int inputs[4] = {a, b, near, wide};
       const int set = other_class * 2 + (w == V(c, r - 1) ? 1 : 0);
-      MixedBitOf(inputs, 3, &weights12_[static_cast<std::size_t>(set) * 3], v == w);
+      MixedBitOf(inputs, 4, &weights12_[static_cast<std::size_t>(set) * 4], v == w);
     }
     if (v == w) return;
     const int hi = w == 2 ? 1 : 2;
@@ -572,7 +573,7 @@ class SpecEncoder {
   }
   // Section 5.1 with `n` inputs (the models at `inputs`) and weights `w`.
   void MixedBitOf(const int* inputs, int n, std::int64_t* w, bool one) {
-    int st[3] = {};
+    int st[4] = {};
     std::int64_t dot = 0;
     for (int k = 0; k < n; ++k) {
       st[k] = Stretch(static_cast<int>((65535 - P0(models_[inputs[k]])) / 16));
@@ -682,8 +683,8 @@ class SpecEncoder {
   bool mixed_layer_;
   int dropped_;  // layer terms left out: 1 change from W, 2 from N, 4 wall
   std::vector<int> stretch_memo_ = std::vector<int>(4096, 4096);  // 4096: not searched yet
-  std::vector<Model> models_ = std::vector<Model>(kMixedLayer + 2 * 3240);
-  std::vector<std::int64_t> weights12_ = std::vector<std::int64_t>(50 * 3, 19661);  // model 12
+  std::vector<Model> models_ = std::vector<Model>(kWide + 59049);
+  std::vector<std::int64_t> weights12_ = std::vector<std::int64_t>(50 * 4, 19661);  // model 12
   std::int64_t weights_[10][2] = {{19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
                                   {19661, 19661}, {19661, 19661}, {19661, 19661}, {19661, 19661},
                                   {19661, 19661}, {19661, 19661}};
