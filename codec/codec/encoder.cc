@@ -47,6 +47,9 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
     return InvalidArgumentError("grid resolution must be a positive number");
   }
   if (options.max_threads < 0) return InvalidArgumentError("max_threads must not be negative");
+  if (options.compact && options.format_v1) {
+    return InvalidArgumentError("compact cells are a 2.3 coding; a 1.0 file cannot hold them");
+  }
   if (options.min_segment_cells < 1) {
     return InvalidArgumentError("min_segment_cells must be at least 1");
   }

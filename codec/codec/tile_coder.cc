@@ -206,6 +206,7 @@ constexpr int kMixerSets = static_cast<int>(kHintClasses) * 2;
 // Model 12's weight sets: layer class without the change terms (0..24) x
 // (W == N).
 constexpr int kMixedLayerSets = 25 * 2;
+static_assert(kMixedLayerSets == 2 * (4 + 20 + 1), "the classes without change terms: 0..24");
 
 // The nearest-cells context of a cell (W, N, NW, NE and the hint class).
 inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsigned hint_class) {

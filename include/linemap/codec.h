@@ -45,7 +45,8 @@ struct EncodeOptions {
   // outlines are simplified within T + 1 cells (2 when exact).
   int tolerance_cells = 0;
   // Store the vector layers (walls, rooms, furniture) besides the cells
-  // (default true); false writes the smallest exact file, cells only.
+  // (default true); false writes the cells only (with `compact` too, the
+  // smallest exact file).
   bool vector_layers = true;
   // Side of the square tiles the cells are coded in (cells, 16..65536;
   // default 1024): each tile decodes on its own, so a window decodes only

@@ -59,8 +59,13 @@ def test_compact_matches_the_cli_stays_exact_and_is_no_larger(bundled, tmp_path,
                    check=True, capture_output=True)
     assert out.read_bytes() == (tmp_path / "cli.lmap").read_bytes()
     assert linemap.encode(m, compact=True) == out.read_bytes()
-    # Each tile keeps the smallest of more codings than the default's.
-    assert len(out.read_bytes()) <= len(linemap.encode(m))
+    # Each tile keeps the smallest of more codings than the default's; on
+    # maps of 100,000 cells and more the mixed ones win somewhere.
+    default = len(linemap.encode(m))
+    if m.cells.size >= 100000:
+        assert len(out.read_bytes()) < default
+    else:
+        assert len(out.read_bytes()) <= default
 
 
 def test_lmap_cells_only_is_exact(bundled, tmp_path):

@@ -38,7 +38,7 @@ const CommandSpec kEncodeSpec = {
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
          "largest distance (cells, 0..4) by which the decode may differ: 0 exact (the default); "
-         "1..4 draw the map in 2 x 2-cell blocks (a version 2.1 file), keeping cells exact "
+         "1..4 draw the map in 2 x 2-cell blocks (a version 2.3 file), keeping cells exact "
          "where obstacles or free space would move more than T, two free regions would join "
          "or split, or a plan would change by more than 3 % or 2 steps"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},

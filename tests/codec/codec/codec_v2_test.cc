@@ -78,13 +78,68 @@ TEST(CodecV2Test, BundledMapsRoundTripWithAndWithoutLayers) {
     auto grid = LoadRosMap(path);
     ASSERT_TRUE(grid.ok()) << path;
     for (bool layers : {true, false}) {
-      EncodeOptions options;
-      options.vector_layers = layers;
-      auto decoded = RoundTrip(*grid, options);
-      ASSERT_TRUE(decoded.ok()) << path << ": " << decoded.status().ToString();
-      EXPECT_EQ(*decoded, *grid) << path;
+      for (bool compact : {false, true}) {
+        EncodeOptions options;
+        options.vector_layers = layers;
+        options.compact = compact;
+        auto decoded = RoundTrip(*grid, options);
+        ASSERT_TRUE(decoded.ok()) << path << ": " << decoded.status().ToString();
+        EXPECT_EQ(*decoded, *grid) << path << (layers ? "" : " raster-only")
+                                   << (compact ? " compact" : "");
+      }
     }
   }
+}
+
+// The minor version names the newest feature a file may hold (spec 2):
+// 3 where tiles may use model 12 (compact cells, BLKS), 2 for LAYR, 0 for
+// cells alone; a tolerance file that falls back to the exact cells keeps
+// the exact file's minor version. Checked on freshly encoded files of each
+// path, by decoding the header.
+TEST(CodecV2Test, MinorVersionNamesTheNewestFeature) {
+  auto depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  auto arena = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  ASSERT_TRUE(depot.ok() && arena.ok());
+  struct Case {
+    const Grid* grid;
+    bool layers, compact;
+    int tolerance;
+    int minor;
+    bool blocks;
+  };
+  const Case cases[] = {
+      {&*depot, true, false, 0, 2, false}, {&*depot, false, false, 0, 0, false},
+      {&*depot, true, true, 0, 3, false},  {&*depot, false, true, 0, 3, false},
+      {&*depot, true, false, 1, 3, true},  {&*arena, true, false, 4, 2, false},
+      {&*arena, true, true, 4, 3, false},
+  };
+  for (const Case& c : cases) {
+    EncodeOptions options;
+    options.vector_layers = c.layers;
+    options.compact = c.compact;
+    options.tolerance_cells = c.tolerance;
+    auto bytes = EncodeLmap(*c.grid, options);
+    ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
+    auto contents = DecodeLmapContents(*bytes);
+    ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+    const std::string what = std::string(c.grid == &*depot ? "depot" : "lse_arena") +
+                             (c.layers ? "" : " raster-only") + (c.compact ? " compact" : "") +
+                             " T=" + std::to_string(c.tolerance);
+    EXPECT_EQ(contents->major, 2) << what;
+    EXPECT_EQ(contents->minor, c.minor) << what;
+    EXPECT_EQ(contents->lossless, !c.blocks) << what;
+  }
+}
+
+TEST(CodecV2Test, CompactCellsAreNotForVersionOneFiles) {
+  auto depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(depot.ok());
+  EncodeOptions options;
+  options.format_v1 = true;
+  options.compact = true;
+  auto bytes = EncodeLmap(*depot, options);
+  ASSERT_FALSE(bytes.ok());
+  EXPECT_EQ(bytes.status().code(), StatusCode::kInvalidArgument);
 }
 
 TEST(CodecV2Test, SharedMapsRoundTripExactly) {
@@ -94,9 +149,13 @@ TEST(CodecV2Test, SharedMapsRoundTripExactly) {
   for (const std::string& path : maps) {
     auto grid = LoadRosMap(path);
     if (!grid.ok()) continue;  // e.g. a YAML naming a missing image
-    auto decoded = RoundTrip(*grid, EncodeOptions{});
-    ASSERT_TRUE(decoded.ok()) << path << ": " << decoded.status().ToString();
-    EXPECT_EQ(*decoded, *grid) << path;
+    for (bool compact : {false, true}) {
+      EncodeOptions options;
+      options.compact = compact;
+      auto decoded = RoundTrip(*grid, options);
+      ASSERT_TRUE(decoded.ok()) << path << ": " << decoded.status().ToString();
+      EXPECT_EQ(*decoded, *grid) << path << (compact ? " compact" : "");
+    }
     ++tested;
   }
   EXPECT_GT(tested, 10);
