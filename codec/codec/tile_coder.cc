@@ -213,6 +213,16 @@ inline unsigned NearContext(unsigned west, const std::uint8_t* n1, int i, unsign
   return (((west * 3 + n1[i]) * 3 + n1[i - 1]) * 3 + n1[i + 1]) * kHintClasses + hint_class;
 }
 
+// The value of a cell that is not W: one of the two others, `lo` < `hi`,
+// decided with model `m` (bit 1 means hi).
+template <typename Io>
+[[gnu::always_inline]] inline unsigned CodeOtherValue(Io& io, TileBitModel* m, unsigned west,
+                                                      unsigned v) {
+  const unsigned lo = west == 0 ? 1 : 0;
+  const unsigned hi = west == 2 ? 1 : 2;
+  return io.Code(m, v == hi) ? hi : lo;
+}
+
 // Codes cells [begin, end) of the row `cur` one by one. Each is coded as
 // "equals W" and, if not, as which of the two other values it is. With
 // kMix (model 1), an unsure "equals W" is coded with the logistic mix of
@@ -246,13 +256,9 @@ template <bool kMix, typename Io, typename Mixer>
     }
     unsigned value = west;
     if (!eq) {
-      // The two values other than W, in increasing order.
-      const unsigned lo = west == 0 ? 1 : 0;
-      const unsigned hi = west == 2 ? 1 : 2;
-      // Which of the two is decided by the nearest neighbours alone (W, N,
-      // NW, NE and the hint): a smaller table, learned faster.
-      const unsigned octx = NearContext(west, n1, i, hc);
-      value = io.Code(&models[kOtherModel + octx], v == hi) ? hi : lo;
+      // Which of the two others is decided by the nearest neighbours alone
+      // (W, N, NW, NE and the hint): a smaller table, learned faster.
+      value = CodeOtherValue(io, &models[kOtherModel + NearContext(west, n1, i, hc)], west, v);
     }
     cur[i] = static_cast<std::uint8_t>(value);
     west2 = west;
@@ -280,10 +286,8 @@ template <typename Io>
     const unsigned v = Io::kEncoding ? cur[i] : 0;
     unsigned value = west;
     if (!io.Code(&models[kLayerEqualModel + ctx], v == west)) {
-      const unsigned lo = west == 0 ? 1 : 0;
-      const unsigned hi = west == 2 ? 1 : 2;
       const unsigned other_ctx = pattern * kLayerClasses + classes.other;
-      value = io.Code(&models[kLayerOtherModel + other_ctx], v == hi) ? hi : lo;
+      value = CodeOtherValue(io, &models[kLayerOtherModel + other_ctx], west, v);
     }
     cur[i] = static_cast<std::uint8_t>(value);
     west = value;
@@ -341,10 +345,8 @@ template <typename Io>
     }
     unsigned value = west;
     if (!eq) {
-      const unsigned lo = west == 0 ? 1 : 0;
-      const unsigned hi = west == 2 ? 1 : 2;
       const unsigned other_ctx = pattern * kLayerClasses + classes.other;
-      value = io.Code(&models[kMixedLayerOtherModel + other_ctx], v == hi) ? hi : lo;
+      value = CodeOtherValue(io, &models[kMixedLayerOtherModel + other_ctx], west, v);
     }
     cur[i] = static_cast<std::uint8_t>(value);
     west2 = west;

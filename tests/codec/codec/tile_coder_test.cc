@@ -488,6 +488,15 @@ class SpecEncoder {
     if (!(dropped_ & 1) && LayerH(c - 1, r) != h) *layer_class += 5;
     if (!(dropped_ & 2) && LayerH(c, r - 1) != h) *layer_class += 10;
   }
+  // Step 4's template T of cell (c, r) (W the least significant digit).
+  int Template(int c, int r) const {
+    return V(c - 1, r) +
+           3 * (V(c - 2, r) +
+                3 * (V(c - 2, r - 1) +
+                     3 * (V(c - 1, r - 1) +
+                          3 * (V(c, r - 1) +
+                               3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+  }
   // Model 12 (section 5.3): EQUAL, LEQUAL, NEAR and WIDE mixed where EQUAL
   // is unsure; LEQUAL learns from every cell.
   void CodeMixedLayerCell(int c, int r) {
@@ -496,12 +505,7 @@ class SpecEncoder {
     int layer_class = 0, other_class = 0;
     LayerClasses(c, r, &layer_class, &other_class);
     const int w = V(c - 1, r), v = V(c, r);
-    const int t =
-        w + 3 * (V(c - 2, r) +
-                 3 * (V(c - 2, r - 1) +
-                      3 * (V(c - 1, r - 1) +
-                           3 * (V(c, r - 1) +
-                                3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+    const int t = Template(c, r);
     const int pattern = ((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1);
     const int a = kEqual + t * 5 + hc;
     const int b = kMixedLayer + pattern * 40 + layer_class;
@@ -526,12 +530,7 @@ class SpecEncoder {
     const int h = H(c, r);
     const int hc = h & 1 ? 1 : h & 4 ? 2 : h & 8 ? 3 : h & 2 ? 4 : 0;
     const int w = V(c - 1, r), v = V(c, r);
-    const int t =
-        w + 3 * (V(c - 2, r) +
-                 3 * (V(c - 2, r - 1) +
-                      3 * (V(c - 1, r - 1) +
-                           3 * (V(c, r - 1) +
-                                3 * (V(c + 1, r - 1) + 3 * (V(c + 2, r - 1) + 3 * V(c, r - 2)))))));
+    const int t = Template(c, r);
     const int near = (((w * 3 + V(c, r - 1)) * 3 + V(c - 1, r - 1)) * 3 + V(c + 1, r - 1)) * 5 + hc;
     const std::uint32_t p_equal = P0(models_[kEqual + t * 5 + hc]);
     if (mixed_ && p_equal >= 2048 && p_equal <= 63488) {
