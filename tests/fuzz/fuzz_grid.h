@@ -3,7 +3,8 @@
 //
 // Input layout: byte 0 -> width (1..64), byte 1 -> height (1..64), byte 2 ->
 // encoder options (bit 0: residual lossless method, bit 1: store segments,
-// bit 2: store room chains, bit 3: two threads, bit 4: the other encoder
+// bit 2: store room chains, or in a 2.x file compact cells (tile models 12
+// and 3), bit 3: two threads, bit 4: the other encoder
 // (see OptionsFromByte), bit 5: no vector layers, bit 6: 16-cell tiles,
 // bits 6-7: the tolerance), then one byte per cell (value % 3 is the Cell,
 // row 0 first); cells past the end of the input are unknown. The height is
@@ -58,6 +59,7 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   options.store_segments = (flags & 2) != 0;
   options.store_room_chains = (flags & 4) != 0;
   options.max_threads = (flags & 8) ? 2 : 1;
+  options.compact = !options.format_v1 && (flags & 4) != 0;
   return options;
 }
 
