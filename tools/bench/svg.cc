@@ -86,6 +86,8 @@ const std::vector<PlotMethod>& PlotMethods() {
       {"JPEG XL", key::kJxlBytes, nullptr, "#17becf"},
       {".lmap 2.0 (default)", key::kLmapBytes, nullptr, "#2ca02c"},
       {".lmap 2.0 --raster-only", key::kLmapRasterBytes, nullptr, "#bcbd22"},
+      {".lmap 2.3 --compact", key::kLmapCompactBytes, nullptr, "#98df8a"},
+      {".lmap 2.3 --compact --raster-only", key::kLmapRasterCompactBytes, nullptr, "#dbdb8d"},
       {".lmap 1.0 --lossy", key::kLmapLossyBytes, key::kEvalDisplCm, "#d62728"},
   };
   return methods;
