@@ -242,7 +242,7 @@ stores the vector layers (walls, rooms, furniture) besides the cells.
 files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``: about
-3.5 % smaller files, cells that decode about 5x slower; version 2.3).
+4.5 % smaller files that decode in about 3.5x the time; version 2.3).
 Options the library refuses raise ValueError with its message.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,

@@ -104,10 +104,10 @@ struct EncodeOptions {
   // Code the exact cells for size rather than decode speed: each tile also
   // tries the two codings that code every cell of a changed row with mixed
   // predictions (spec/tile_coding.md models 3 and 12) and keeps the
-  // smallest. Over ../shared/maps the default files are about 3.5 % smaller
-  // (the cells about 9 %); their tiles decode about 5x slower (milliseconds
-  // for a building) and encode about 3x slower. Files are version 2.3.
-  // (Cells saved within a tolerance are always coded that way.)
+  // smallest. Over ../shared/maps the files are a median 4.5 % smaller
+  // (8.5 % without layers), decode in about 3.5x the time (up to 10x;
+  // milliseconds for a building) and encode in about 1.3x. Files are
+  // version 2.3. (Cells saved within a tolerance are always coded that way.)
   bool compact = false;
   // Robot position in map-frame metres, stored in the metadata and used to
   // seed the edge map when given.
