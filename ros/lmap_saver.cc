@@ -1,7 +1,7 @@
 // lmap_saver: map_saver writing .lmap files.
 //
 //   lmap_saver [-f NAME] [-t TOPIC] [--every] [--occ P] [--free P]
-//              [--tolerance T] [--raster-only] [--wait-master S]
+//              [--tolerance T] [--raster-only] [--compact] [--wait-master S]
 //
 // Subscribes to `map` (nav_msgs/OccupancyGrid; remap it with map:=/other or
 // name it with -t), writes NAME.lmap atomically when a map arrives and exits;
@@ -25,14 +25,16 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: lmap_saver [-f NAME] [-t TOPIC] [--every] [--occ P] [--free P]\n"
-    "                  [--tolerance T] [--raster-only] [--wait-master S]\n"
+    "                  [--tolerance T] [--raster-only] [--compact] [--wait-master S]\n"
     "  -f NAME          output file NAME.lmap (default map.lmap; .lmap is added when missing)\n"
     "  -t TOPIC         map topic (default map; also remappable as map:=TOPIC)\n"
     "  --every          keep running and rewrite the file on every new map\n"
     "  --occ P          occupancy in percent at or above which a cell is occupied (default 65)\n"
     "  --free P         occupancy in percent at or below which a cell is free (default 25)\n"
     "  --tolerance T    cells by which the stored map may differ (default 0: exact)\n"
-    "  --raster-only    store the cells only, no vector layers (smallest exact file)\n"
+    "  --raster-only    store the cells only, no vector layers\n"
+    "  --compact        code the cells for size: about 4.5 % smaller, 3.5x the decode time\n"
+    "                   (with --raster-only: the smallest exact file)\n"
     "  --wait-master S  seconds to wait for the ROS master (default 10)\n";
 
 struct SaverArgs {
@@ -83,6 +85,8 @@ StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
       parsed.encode.lossless = parsed.encode.tolerance_cells == 0;
     } else if (arg == "--raster-only") {
       parsed.encode.vector_layers = false;
+    } else if (arg == "--compact") {
+      parsed.encode.compact = true;
     } else if (arg == "--wait-master") {
       LINEMAP_ASSIGN_OR_RETURN(parsed.wait_master_seconds, ParseSeconds(arg, args[++i]));
     } else {

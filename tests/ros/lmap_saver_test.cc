@@ -82,6 +82,25 @@ TEST(LmapSaverTest, WritesThePublishedMapAndExits) {
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"saved.lmap"});
 }
 
+// --compact saves a version 2.3 file that still reads back as the map.
+TEST(LmapSaverTest, CompactSavesAVersionTwoThreeFileOfTheMap) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v6/map", 1, /*latch=*/true);
+  const OccupancyGridMsg message = MessageWithLevels(LoadBundledMap("nav2/depot.yaml"));
+  publisher.publish(message);
+  const std::string dir = MakeTempDir("saver_compact");
+  auto saver = StartSaver(master, "/v6/map", dir + "/saved", {"--compact", "--raster-only"});
+  const std::optional<int> code = saver->Wait(20);
+  ASSERT_TRUE(code.has_value()) << "lmap_saver did not exit";
+  EXPECT_EQ(*code, 0) << saver->Stderr();
+  StatusOr<LmapContents> contents = LoadLmapContents(dir + "/saved.lmap");
+  ASSERT_TRUE(contents.ok()) << contents.status().message();
+  EXPECT_EQ(contents->minor, 3);
+  EXPECT_TRUE(contents->walls.empty());
+  EXPECT_TRUE(FileHoldsCells(dir + "/saved.lmap", ExpectedGrid(message)));
+}
+
 TEST(LmapSaverTest, EveryRewritesTheFileAndLeavesTheLastMap) {
   RosMaster& master = SharedMaster();
   ros::NodeHandle nh;
