@@ -116,15 +116,14 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   Status saved;
   {
     py::gil_scoped_release release;
-    saved = yaml ? SaveRosMap(path, grid)
-                 : SaveLmap(path, grid,
-                            EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
+    saved =
+        yaml ? SaveRosMap(path, grid)
+             : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
   }
   RaiseIfError(saved);
 }
 
-py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls,
-                 bool compact) {
+py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls, bool compact) {
   CheckTolerance(tolerance);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");

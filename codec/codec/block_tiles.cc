@@ -20,8 +20,7 @@ namespace {
 // coded with whichever of the two smallest codings is smaller for the tile
 // (spec/tile_coding.md models 3 and 12; 12 adds the layer context, which
 // the blocks have from the layers and the cells from their blocks).
-constexpr TileModel kSmallestModels[] = {TileModel::kMixedAllCells,
-                                         TileModel::kMixedLayerAllCells};
+constexpr TileModel kSmallestModels[] = {TileModel::kMixedAllCells, TileModel::kMixedLayerAllCells};
 
 // The smaller of the tile's codings with kSmallestModels (the first on a
 // tie).
@@ -29,7 +28,8 @@ std::vector<std::uint8_t> EncodeSmallest(const Cell* cells, const std::uint8_t* 
                                          int h) {
   std::vector<std::uint8_t> best;
   for (TileModel model : kSmallestModels) {
-    std::vector<std::uint8_t> data = EncodeTileCells(cells, hints, w, h, CellRect{0, 0, w, h}, model);
+    std::vector<std::uint8_t> data =
+        EncodeTileCells(cells, hints, w, h, CellRect{0, 0, w, h}, model);
     if (best.empty() || data.size() < best.size()) best = std::move(data);
   }
   return best;

@@ -369,8 +369,8 @@ struct CellRows {
 };
 
 template <bool kMix, bool kLayer, typename Io, typename Mixer>
-void CodeCellsIn(Io& io, TileModelTable& models, Mixer& mixer, const CellRows& rows,
-                 int begin, int end) {
+void CodeCellsIn(Io& io, TileModelTable& models, Mixer& mixer, const CellRows& rows, int begin,
+                 int end) {
   if constexpr (kLayer && kMix) {
     CodeMixedLayerCellRun(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_below,
                           rows.hint_row, rows.hint_above, rows.width, rows.terms, begin, end);
@@ -455,8 +455,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
   const std::uint8_t* hints = t.hints;
   const int blocks = (tw + kBlockCells - 1) / kBlockCells;
   TileModelTable models(kLayer && kMix ? kMixedLayerModelCount
-                        : kLayer      ? kLayerModelCount
-                                      : kModelCount);
+                        : kLayer       ? kLayerModelCount
+                                       : kModelCount);
   // Model 12 mixes four predictions, models 1 and 3 two.
   using Mixer = std::conditional_t<kLayer && kMix, TileMixer<4>, TileMixer<2>>;
   Mixer mixer(kLayer && kMix ? kMixedLayerSets : kMix ? kMixerSets : 0);

@@ -84,8 +84,8 @@ constexpr TileModel LayerContextWithout(unsigned dropped) {
 }
 
 // Every call below allocates about 0.2 MB of model state (kLayerContext
-// 42 kB, kMixedLayerAllCells 0.6 MB) and three rows of the tile, and shares nothing with other calls:
-// tiles may be coded on several threads at once.
+// 42 kB, kMixedLayerAllCells 0.6 MB) and three rows of the tile, and shares nothing with other
+// calls: tiles may be coded on several threads at once.
 
 // Codes the cells of `cells` (width*height Cell values, grid-row order)
 // inside `tile` exactly. Reads cells only inside `tile` (hints may be read

@@ -87,7 +87,7 @@ TEST(BenchAnchorsTest, CompactFileIsComparedOnItsOwnSizeNotAsTheGoal) {
   EXPECT_EQ(subjects[0].figure, std::string(key::kLmapCompactBytes));
   EXPECT_EQ(subjects[1].figure, std::string(key::kLmapRasterCompactBytes));
   MapResult office = Map("office", 3400000, 1679, 3000, 1022);
-  office.figures[key::kLmapCompactBytes] = 1000;  // beats JPEG XL where the default does not
+  office.figures[key::kLmapCompactBytes] = 1000;    // beats JPEG XL where the default does not
   const std::vector<MapResult> results = {office};  // outcomes point into it
   const std::vector<AnchorOutcome> outcomes = CheckAnchors(results, subjects[0]);
   EXPECT_EQ(Names(Outcome(outcomes, key::kJxlBytes).won), (std::vector<std::string>{"office"}));

@@ -32,8 +32,7 @@ NamedTable SummaryTable(const std::vector<AnchorOutcome>& outcomes, const Anchor
   return {
       "Anchors: " + subject.name + " against each codec",
       "Maps of at least " + FormatCount(kAnchorMinCells) + " cells; " +
-          (goal ? "goal: " + subject.name +
-                      " strictly smaller than every anchor on every such map."
+          (goal ? "goal: " + subject.name + " strictly smaller than every anchor on every such map."
                 : "for comparison (not a goal), " + subject.name +
                       " coded for size, as the anchors are at their highest efforts.") +
           " size ratio = " + subject.name +

@@ -113,10 +113,10 @@ void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const Lma
 
 // An exact file written with `options`: its size under `bytes_key`, the
 // cells its decode gets wrong under `cells_key`; the file, if written.
-std::optional<std::vector<std::uint8_t>> AddExactFile(const Grid& grid, const EncodeOptions& options,
+std::optional<std::vector<std::uint8_t>> AddExactFile(const Grid& grid,
+                                                      const EncodeOptions& options,
                                                       const char* bytes_key, const char* cells_key,
-                                                      const std::string& label,
-                                                      MapResult* result) {
+                                                      const std::string& label, MapResult* result) {
   StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
   if (!file.ok()) {
     result->figures[cells_key] = static_cast<double>(grid.size());

@@ -122,22 +122,22 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kLmapCompactBytes, "compact"},
                               {key::kLmapRasterCompactBytes, "raster compact"},
                               {key::kLmapLossyBytes, "lmap 1.0 lossy"}})});
-  tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
-                    ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
-                                           {key::kPng8Bytes, "PNG 8b", 3, true},
-                                           {key::kPnmtopngBytes, "pnmtopng", 3, true},
-                                           {key::kPng2Bytes, "PNG 2b", 3, true},
-                                           {key::kZstdBytes, "zstd-19", 3, true},
-                                           {key::kXzBytes, "xz-9e", 3, true},
-                                           {key::kJbigBytes, "JBIG1", 3, true},
-                                           {key::kWebpBytes, "WebP", 3, true},
-                                           {key::kJxlBytes, "JPEG XL", 3, true},
-                                           {key::kLmapBytes, "lmap 2.0", 3, true},
-                                           {key::kLmapRasterBytes, "lmap raster", 3, true},
-                                           {key::kLmapCompactBytes, "compact", 3, true},
-                                           {key::kLmapRasterCompactBytes, "raster compact", 3,
-                                            true},
-                                           {key::kLmapLossyBytes, "lmap 1.0 lossy", 3, true}})});
+  tables.push_back(
+      {"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
+       ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
+                              {key::kPng8Bytes, "PNG 8b", 3, true},
+                              {key::kPnmtopngBytes, "pnmtopng", 3, true},
+                              {key::kPng2Bytes, "PNG 2b", 3, true},
+                              {key::kZstdBytes, "zstd-19", 3, true},
+                              {key::kXzBytes, "xz-9e", 3, true},
+                              {key::kJbigBytes, "JBIG1", 3, true},
+                              {key::kWebpBytes, "WebP", 3, true},
+                              {key::kJxlBytes, "JPEG XL", 3, true},
+                              {key::kLmapBytes, "lmap 2.0", 3, true},
+                              {key::kLmapRasterBytes, "lmap raster", 3, true},
+                              {key::kLmapCompactBytes, "compact", 3, true},
+                              {key::kLmapRasterCompactBytes, "raster compact", 3, true},
+                              {key::kLmapLossyBytes, "lmap 1.0 lossy", 3, true}})});
   tables.push_back(
       {"Line extraction",
        "Lines and DisPL_ave (RM-Line Eq. 5: mean distance from an edge cell to the nearest "

@@ -42,7 +42,8 @@ const CommandSpec kEncodeSpec = {
          "where obstacles or free space would move more than T, two free regions would join "
          "or split, or a plan would change by more than 3 % or 2 steps"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
-        {"--raster-only", "", "leave the vector layers out (with --compact: the smallest exact file)"},
+        {"--raster-only", "",
+         "leave the vector layers out (with --compact: the smallest exact file)"},
         {"--straight-walls", "",
          "one wall segment per straight wall: exact files 1-14 % smaller, walls up to twice as "
          "far from the wall cells (by default they follow the pixel steps of slanted walls; "

@@ -84,8 +84,8 @@ TEST(CodecV2Test, BundledMapsRoundTripWithAndWithoutLayers) {
         options.compact = compact;
         auto decoded = RoundTrip(*grid, options);
         ASSERT_TRUE(decoded.ok()) << path << ": " << decoded.status().ToString();
-        EXPECT_EQ(*decoded, *grid) << path << (layers ? "" : " raster-only")
-                                   << (compact ? " compact" : "");
+        EXPECT_EQ(*decoded, *grid)
+            << path << (layers ? "" : " raster-only") << (compact ? " compact" : "");
       }
     }
   }

@@ -75,16 +75,16 @@ TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
 }
 
 // Files with cells in blocks, saved within 1 cell (version 2.1 with WALL,
-// ROOM, FURN; 2.2 with LAYR; 2.3 with tiles of model 12), decode to grids that keep every guarantee of
-// tolerance 1 against their map, checked by CheckTolerance, whatever the
-// encoder's choices were when they were written.
+// ROOM, FURN; 2.2 with LAYR; 2.3 with tiles of model 12), decode to grids that keep every guarantee
+// of tolerance 1 against their map, checked by CheckTolerance, whatever the encoder's choices were
+// when they were written.
 TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
   auto original =
       LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
   ASSERT_TRUE(original.ok());
-  for (const auto& [file, minor] : {std::pair{"willow_v2_1_tolerance_1.lmap", 1},
-                                    std::pair{"willow_v2_2_tolerance_1.lmap", 2},
-                                    std::pair{"willow_v2_3_tolerance_1.lmap", 3}}) {
+  for (const auto& [file, minor] :
+       {std::pair{"willow_v2_1_tolerance_1.lmap", 1}, std::pair{"willow_v2_2_tolerance_1.lmap", 2},
+        std::pair{"willow_v2_3_tolerance_1.lmap", 3}}) {
     auto contents = LoadLmapContents(Fixture(file));
     ASSERT_TRUE(contents.ok()) << file << ": " << contents.status().ToString();
     EXPECT_EQ(contents->major, 2) << file;

@@ -172,9 +172,9 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
         local_hints[static_cast<std::size_t>(y) * stride + x] = hints[from];
       }
     }
-    for (TileModel model : {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext,
-                            LayerContextWithout(kLayerTermNorthChange),
-                            TileModel::kMixedLayerAllCells}) {
+    for (TileModel model :
+         {TileModel::kTemplate, TileModel::kMixed, TileModel::kLayerContext,
+          LayerContextWithout(kLayerTermNorthChange), TileModel::kMixedLayerAllCells}) {
       const Bytes data =
           EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
       ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
