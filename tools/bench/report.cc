@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <set>
+#include <string>
+#include <utility>
 
 #include "tools/bench/image_anchors.h"
 #include "tools/bench/opencv_lines.h"
@@ -89,6 +91,37 @@ std::string MedianText(const std::vector<MapResult>& results, const std::string&
   return FormatFixed(ColumnMedian(results, {figure, "", decimals, ratio}), decimals);
 }
 
+// The per-map size columns: the source, every comparator and every .lmap
+// file, in bytes (with the cells and PNG-9, the base) or as ratios to
+// PNG-9 (3 decimals).
+std::vector<Column> SizeColumns(bool as_ratio) {
+  const std::pair<const char*, const char*> sizes[] = {
+      {key::kSourceBytes, "source"},
+      {key::kPng8Bytes, "PNG 8b"},
+      {key::kPng2Bytes, "PNG 2b"},
+      {key::kPnmtopngBytes, "pnmtopng"},
+      {key::kZstdBytes, "zstd-19"},
+      {key::kXzBytes, "xz-9e"},
+      {key::kJbigBytes, "JBIG1"},
+      {key::kWebpBytes, "WebP"},
+      {key::kJxlBytes, "JPEG XL"},
+      {key::kLmapBytes, "lmap 2.0"},
+      {key::kLmapRasterBytes, "lmap raster"},
+      {key::kLmapCompactBytes, "compact"},
+      {key::kLmapRasterCompactBytes, "raster compact"},
+      {key::kLmapLossyBytes, "lmap 1.0 lossy"}};
+  std::vector<Column> columns;
+  if (!as_ratio) columns = {{key::kCells, "cells"}};
+  for (const auto& [figure, header] : sizes) {
+    columns.push_back(as_ratio ? Column{figure, header, 3, true} : Column{figure, header});
+    // PNG-9, the base of the ratios, follows the source among the sizes.
+    if (!as_ratio && std::string(figure) == key::kSourceBytes) {
+      columns.push_back({key::kPng9Bytes, "PNG-9"});
+    }
+  }
+  return columns;
+}
+
 }  // namespace
 
 std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
@@ -106,38 +139,9 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
            "--raster-only (exact, cells only); compact and raster compact = the same with "
            "--compact (cells coded for size, version 2.3); lmap 1.0 lossy = --lossy (the former "
            "lossy encoder).",
-       ColumnsTable(results, {{key::kCells, "cells"},
-                              {key::kSourceBytes, "source"},
-                              {key::kPng9Bytes, "PNG-9"},
-                              {key::kPng8Bytes, "PNG 8b"},
-                              {key::kPng2Bytes, "PNG 2b"},
-                              {key::kPnmtopngBytes, "pnmtopng"},
-                              {key::kZstdBytes, "zstd-19"},
-                              {key::kXzBytes, "xz-9e"},
-                              {key::kJbigBytes, "JBIG1"},
-                              {key::kWebpBytes, "WebP"},
-                              {key::kJxlBytes, "JPEG XL"},
-                              {key::kLmapBytes, "lmap 2.0"},
-                              {key::kLmapRasterBytes, "lmap raster"},
-                              {key::kLmapCompactBytes, "compact"},
-                              {key::kLmapRasterCompactBytes, "raster compact"},
-                              {key::kLmapLossyBytes, "lmap 1.0 lossy"}})});
-  tables.push_back(
-      {"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
-       ColumnsTable(results, {{key::kSourceBytes, "source", 3, true},
-                              {key::kPng8Bytes, "PNG 8b", 3, true},
-                              {key::kPnmtopngBytes, "pnmtopng", 3, true},
-                              {key::kPng2Bytes, "PNG 2b", 3, true},
-                              {key::kZstdBytes, "zstd-19", 3, true},
-                              {key::kXzBytes, "xz-9e", 3, true},
-                              {key::kJbigBytes, "JBIG1", 3, true},
-                              {key::kWebpBytes, "WebP", 3, true},
-                              {key::kJxlBytes, "JPEG XL", 3, true},
-                              {key::kLmapBytes, "lmap 2.0", 3, true},
-                              {key::kLmapRasterBytes, "lmap raster", 3, true},
-                              {key::kLmapCompactBytes, "compact", 3, true},
-                              {key::kLmapRasterCompactBytes, "raster compact", 3, true},
-                              {key::kLmapLossyBytes, "lmap 1.0 lossy", 3, true}})});
+       ColumnsTable(results, SizeColumns(/*as_ratio=*/false))});
+  tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
+                    ColumnsTable(results, SizeColumns(/*as_ratio=*/true))});
   tables.push_back(
       {"Line extraction",
        "Lines and DisPL_ave (RM-Line Eq. 5: mean distance from an edge cell to the nearest "
