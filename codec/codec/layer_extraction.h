@@ -29,8 +29,10 @@ inline constexpr int kLayerBlockCells = 2048;
 
 // Walls, rooms and furniture of `grid`; the line extraction and the
 // segmentation run on two threads unless options.max_threads is 1. On maps
-// larger than a block the layers are extracted block by block and end at
-// the block borders (a room across a border is two rooms). Without
+// larger than a block the layers are extracted block by block, the blocks
+// on up to options.max_threads threads (each block's walls and rooms in
+// turn), and end at the block borders (a room across a border is two
+// rooms); the result does not depend on the threads. Without
 // `with_chains`, the rooms' chains of a map larger than a block are left
 // empty (ChainOfPolygon makes one from the polygon): the encoder needs only
 // the polygons, and on the 282-Mcell office map the 20,000 rooms' chains held

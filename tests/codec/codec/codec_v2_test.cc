@@ -183,6 +183,36 @@ TEST(CodecV2Test, ThreadsAndTilesDoNotChangeTheCells) {
   EXPECT_EQ(*d, *grid);
 }
 
+TEST(CodecV2Test, LayerBlocksOnManyThreadsGiveTheBytesOfOne) {
+  // Maps over 2048 cells a side have their layers extracted block by block,
+  // the blocks on as many threads as allowed: 4100 x 700 cells of depot
+  // copies is three blocks (the last 4 cells wide), which threads may
+  // finish in any order.
+  auto depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(depot.ok());
+  Grid grid(4100, 700, Cell::kUnknown);
+  grid.meta = depot->meta;
+  for (int r = 0; r < grid.height(); ++r) {
+    for (int c = 0; c < grid.width(); ++c) {
+      grid.set(c, r, depot->at(c % depot->width(), r % depot->height()));
+    }
+  }
+  EncodeOptions one, three;
+  one.max_threads = 1;
+  three.max_threads = 3;
+  auto a = EncodeLmap(grid, one);
+  auto b = EncodeLmap(grid, three);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(*a, *b);
+  auto decoded = DecodeLmap(*b);
+  ASSERT_TRUE(decoded.ok());
+  EXPECT_EQ(*decoded, grid);
+  auto vectors = DecodeLmapVectors(*b);
+  ASSERT_TRUE(vectors.ok());
+  // Every block has rooms of its own: depot has 8 rooms a copy.
+  EXPECT_GT(vectors->rooms.size(), 24u);
+}
+
 // The layers against the map they were made from, checked cell by cell.
 void ExpectLayerInvariants(const Grid& grid, const LmapVectors& v, const std::string& path) {
   const auto occupied_near = [&](int c, int r) {
