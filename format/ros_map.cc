@@ -255,62 +255,96 @@ std::string YamlText(const std::string& image_name, const MapMetadata& meta) {
 
 }  // namespace
 
-StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
-                            std::uint64_t max_cells) {
+MapRowReader::MapRowReader(std::unique_ptr<ImageRowReader> image, const MapMetadata& meta)
+    : image_(std::move(image)),
+      meta_(meta),
+      samples_(static_cast<std::size_t>(image_->width()) * image_->channels()),
+      last_cell_(ClassifyPixel(&last_sample_, 1, meta)) {}
+
+MapRowReader::~MapRowReader() = default;
+
+int MapRowReader::width() const { return image_->width(); }
+int MapRowReader::height() const { return image_->height(); }
+
+StatusOr<std::unique_ptr<MapRowReader>> MapRowReader::OpenImage(const std::string& image_path,
+                                                                const MapMetadata& meta,
+                                                                std::uint64_t max_cells) {
   LINEMAP_RETURN_IF_ERROR(CheckResolution(meta.resolution, Quoted(image_path)));
   LINEMAP_RETURN_IF_ERROR(CheckThresholds(meta, Quoted(image_path)));
-  // Row by row: loading holds the grid and one row of samples, never the
-  // image (2 bytes per pixel per channel as quanta).
   LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<ImageRowReader> image,
                            OpenImageRows(image_path, max_cells));
-  const int width = image->width();
-  const int height = image->height();
-  const int channels = image->channels();
-  Grid grid(width, height);
-  grid.meta = meta;
-  std::vector<std::uint16_t> samples(static_cast<std::size_t>(width) * channels);
-  // A grey pixel's cell depends on its one sample only, and maps are long
-  // runs of equal samples: classify each new sample once.
-  std::uint16_t last_sample = 0;
-  Cell last_cell = ClassifyPixel(&last_sample, 1, meta);
-  for (int y = 0; y < height; ++y) {
-    LINEMAP_RETURN_IF_ERROR(image->ReadRow(samples.data()));
-    // Image row 0 is the top of the map.
-    Cell* cells = grid.mutable_cells().data() + grid.Index(0, height - 1 - y);
-    if (channels != 1) {
-      for (int x = 0; x < width; ++x) {
-        cells[x] =
-            ClassifyPixel(samples.data() + static_cast<std::size_t>(x) * channels, channels, meta);
-      }
-      continue;
-    }
-    for (int x = 0; x < width; ++x) {
-      if (samples[x] != last_sample) {
-        last_sample = samples[x];
-        last_cell = ClassifyPixel(&last_sample, 1, meta);
-      }
-      cells[x] = last_cell;
-    }
-  }
-  return grid;
+  return std::unique_ptr<MapRowReader>(new MapRowReader(std::move(image), meta));
 }
 
-StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options) {
+StatusOr<std::unique_ptr<MapRowReader>> MapRowReader::Open(const std::string& path,
+                                                           const MapLoadOptions& options) {
   if (path.empty()) return InvalidArgumentError("empty map file name");
   if (IsDirectory(path)) return InvalidArgumentError(Quoted(path) + " is a directory, not a map");
   if (!IsYamlPath(path)) {
     MapMetadata meta;
     ApplyOverrides(options, &meta);
-    return LoadMapImage(path, meta, options.max_cells);
+    return OpenImage(path, meta, options.max_cells);
   }
   LINEMAP_ASSIGN_OR_RETURN(YamlMap yaml, ParseMapYaml(path));
   ApplyOverrides(options, &yaml.meta);
-  StatusOr<Grid> grid = LoadMapImage(yaml.image_path, yaml.meta, options.max_cells);
-  if (!grid.ok() && grid.status().code() == StatusCode::kNotFound) {
+  StatusOr<std::unique_ptr<MapRowReader>> reader =
+      OpenImage(yaml.image_path, yaml.meta, options.max_cells);
+  if (!reader.ok() && reader.status().code() == StatusCode::kNotFound) {
     return NotFoundError(Quoted(path) + " names image " + Quoted(yaml.image_path) +
                          ", which does not exist");
   }
-  if (!grid.ok()) return grid.status().WithContext(Quoted(path));
+  if (!reader.ok()) return reader.status().WithContext(Quoted(path));
+  return reader;
+}
+
+Status MapRowReader::ReadRow(Cell* cells) {
+  LINEMAP_RETURN_IF_ERROR(image_->ReadRow(samples_.data()));
+  const int width = image_->width();
+  const int channels = image_->channels();
+  if (channels != 1) {
+    for (int x = 0; x < width; ++x) {
+      cells[x] =
+          ClassifyPixel(samples_.data() + static_cast<std::size_t>(x) * channels, channels, meta_);
+    }
+    return Status::Ok();
+  }
+  for (int x = 0; x < width; ++x) {
+    if (samples_[x] != last_sample_) {
+      last_sample_ = samples_[x];
+      last_cell_ = ClassifyPixel(&last_sample_, 1, meta_);
+    }
+    cells[x] = last_cell_;
+  }
+  return Status::Ok();
+}
+
+namespace {
+
+// Loading holds the grid and one row of samples, never the image (2 bytes
+// per pixel per channel as quanta).
+StatusOr<Grid> ReadAllRows(MapRowReader& reader) {
+  Grid grid(reader.width(), reader.height());
+  grid.meta = reader.meta();
+  // Image row 0 is the top of the map.
+  for (int row = reader.height() - 1; row >= 0; --row) {
+    LINEMAP_RETURN_IF_ERROR(reader.ReadRow(grid.mutable_cells().data() + grid.Index(0, row)));
+  }
+  return grid;
+}
+
+}  // namespace
+
+StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
+                            std::uint64_t max_cells) {
+  LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader,
+                           MapRowReader::OpenImage(image_path, meta, max_cells));
+  return ReadAllRows(*reader);
+}
+
+StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options) {
+  LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader, MapRowReader::Open(path, options));
+  StatusOr<Grid> grid = ReadAllRows(*reader);
+  if (!grid.ok() && IsYamlPath(path)) return grid.status().WithContext(Quoted(path));
   return grid;
 }
 

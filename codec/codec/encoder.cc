@@ -20,9 +20,11 @@
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
 #include "codec/codec/layer_sections.h"
+#include "codec/codec/row_encoder.h"
 #include "codec/codec/section_order.h"
 #include "codec/codec/tolerance.h"
 #include "codec/codec/tolerance_blocks.h"
+#include "codec/codec/v2_file.h"
 #include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
@@ -30,12 +32,7 @@
 namespace linemap {
 namespace {
 
-// The side of the layers' sections on maps larger than it (cells): twice
-// the blocks the layers are extracted in, so no item crosses a section. On
-// the 282-Mcell office map sections of 2048 cells (77) made the file 1.5 %
-// larger than sections of 4096 (24), whose windows still read about 1/24 of
-// the layers.
-constexpr int kSectionCells = 2 * kLayerBlockCells;
+Status CheckEncodeOptions(const EncodeOptions& options);
 
 Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   const int w = grid.width();
@@ -46,6 +43,10 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   if (!(grid.meta.resolution > 0) || !std::isfinite(grid.meta.resolution)) {
     return InvalidArgumentError("grid resolution must be a positive number");
   }
+  return CheckEncodeOptions(options);
+}
+
+Status CheckEncodeOptions(const EncodeOptions& options) {
   if (options.max_threads < 0) return InvalidArgumentError("max_threads must not be negative");
   if (options.compact && options.format_v1) {
     return InvalidArgumentError("compact cells are a 2.3 coding; a 1.0 file cannot hold them");
@@ -67,54 +68,7 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   return Status::Ok();
 }
 
-// A 2.x file: header, metadata, the vector layers in sections (LAYR: what a
-// viewer reads without the raster) and the cells' chunk (`cells_type`: CELL
-// or BLKS). `exact`: the cells are the caller's map itself (the header's
-// lossless flag). The minor version names the newest feature the file may
-// hold (tiles of model 12: 3, in BLKS and in the compact mode's CELL;
-// LAYR 2; BLKS 1 before 2.3), so that an older decoder's refusal of it
-// says why.
-std::vector<std::uint8_t> WriteV2(const Grid& grid, const EncodeOptions& options,
-                                  const VectorLayers& layers, int section_side, bool exact,
-                                  const char* cells_type,
-                                  const std::vector<std::uint8_t>& cells_body) {
-  const bool blocks = std::string_view(cells_type) == kBlockChunk;
-  const bool has_layers =
-      !layers.walls.empty() || !layers.rooms.empty() || !layers.furniture.empty();
-  const int minor = options.compact || blocks ? 3 : has_layers ? 2 : 0;
-  ContainerWriter writer(kFormatMajor, static_cast<std::uint8_t>(minor));
-  writer.AddChunk(kHeaderChunk,
-                  WriteHeader(HeaderFields{grid.width(), grid.height(), grid.meta, exact}));
-  const auto metadata = MetadataOf(options);
-  if (!metadata.empty()) {
-    writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
-  }
-  // Range-coded bodies gain nothing from deflate: stored raw.
-  if (has_layers) {
-    writer.AddChunk(kLayerChunk,
-                    WrapPayload(EncodeLayerSections(layers.walls, layers.rooms, layers.furniture,
-                                                    grid.width(), grid.height(), section_side),
-                                false));
-  }
-  writer.AddChunk(cells_type, WrapPayload(cells_body, false));
-  return writer.Finish();
-}
-
-// A file a decoder with the default limits refuses is not written: on a
-// huge map of scattered specks the covering walls alone could pass the
-// segment limit.
-Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
-  const DecodeLimits defaults;
-  std::uint64_t segments = 0;
-  for (const WallPolyline& wall : layers.walls) segments += wall.points.size() - 1;
-  if (layers.walls.size() > defaults.max_segments || segments > defaults.max_segments) {
-    return ResourceExhaustedError(
-        "the walls have " + std::to_string(segments) +
-        " segments, more than decoders read by default (2^24): save the cells only (vector "
-        "layers off, --raster-only)");
-  }
-  return Status::Ok();
-}
+MapFrame FrameOf(const Grid& grid) { return {grid.width(), grid.height(), grid.meta}; }
 
 // The exact cells: CELL tiles coded against the layers' hints.
 std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& options,
@@ -141,6 +95,11 @@ StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
 
 // A version 2 file at options.tolerance_cells.
 StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptions& options) {
+  // The exact file of a map of several layer sections is the one its rows
+  // code a band at a time (as SaveRosMapAsLmap codes it from an image).
+  if (EncodesByRows(grid.width(), grid.height(), options)) {
+    return EncodeGridByRows(grid, options);
+  }
   // The layers are drawn from the map itself at every tolerance.
   VectorLayers layers;
   if (options.vector_layers) {
@@ -155,7 +114,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   LINEMAP_RETURN_IF_ERROR(CheckLayersWithinDefaultLimits(layers));
   std::vector<std::uint8_t> exact_cells = ExactCells(grid, options, layers);
   if (options.tolerance_cells == 0) {
-    return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);
+    return WriteV2(FrameOf(grid), options, layers, section_side, true, kCellChunk, exact_cells);
   }
   // Within a tolerance the cells are the map drawn in blocks of T + 1
   // cells, with cells restored where a guarantee fails (FitBlockCells
@@ -166,9 +125,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> block_cells,
                            CellsWithinTolerance(grid, options, layers, &exact));
   if (block_cells.size() >= exact_cells.size()) {
-    return WriteV2(grid, options, layers, section_side, true, kCellChunk, exact_cells);
+    return WriteV2(FrameOf(grid), options, layers, section_side, true, kCellChunk, exact_cells);
   }
-  return WriteV2(grid, options, layers, section_side, exact, kBlockChunk, block_cells);
+  return WriteV2(FrameOf(grid), options, layers, section_side, exact, kBlockChunk, block_cells);
 }
 
 }  // namespace
@@ -187,6 +146,59 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   exact_options.tolerance_cells = 0;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, exact_options));
   return within.size() < exact.size() ? within : exact;
+}
+
+namespace {
+
+// A map file's rows as the row encoder takes them.
+class MapFileRows : public CellRowSource {
+ public:
+  explicit MapFileRows(MapRowReader* reader) : reader_(reader) {}
+  Status ReadRow(Cell* cells) override { return reader_->ReadRow(cells); }
+
+ private:
+  MapRowReader* reader_;
+};
+
+// The file of the map `map_path` names: coded as its rows are read when
+// the row encoder takes it, else from the loaded grid.
+StatusOr<std::vector<std::uint8_t>> EncodeMapFile(const std::string& map_path,
+                                                  const EncodeOptions& options,
+                                                  const MapLoadOptions& load,
+                                                  LmapSaveSummary* summary) {
+  LINEMAP_RETURN_IF_ERROR(CheckEncodeOptions(options));
+  LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader,
+                           MapRowReader::Open(map_path, load));
+  summary->width = reader->width();
+  summary->height = reader->height();
+  if (!EncodesByRows(reader->width(), reader->height(), options)) {
+    reader.reset();
+    LINEMAP_ASSIGN_OR_RETURN(Grid grid, LoadRosMap(map_path, load));
+    return EncodeLmap(grid, options);
+  }
+  MapFileRows rows(reader.get());
+  const MapFrame frame{reader->width(), reader->height(), reader->meta()};
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmapByRows(frame, options, &rows);
+  // A defect of the image met while coding names the image; the map file
+  // too, as LoadRosMap does.
+  if (!bytes.ok()) return bytes.status().WithContext("'" + map_path + "'");
+  return bytes;
+}
+
+}  // namespace
+
+StatusOr<LmapSaveSummary> SaveRosMapAsLmap(const std::string& map_path,
+                                           const std::string& lmap_path,
+                                           const EncodeOptions& options, const MapLoadOptions& load,
+                                           Durability durability) {
+  LmapSaveSummary summary;
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           EncodeMapFile(map_path, options, load, &summary));
+  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(
+      lmap_path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+      durability));
+  summary.bytes = bytes.size();
+  return summary;
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {

@@ -354,6 +354,11 @@ Status CheckLayerStreamEnd(const RangeDecoder& dec, std::size_t size, const std:
 }
 
 void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
+  DropRepeatedWallPoints(walls);
+  OrderWallsForCoding(walls);
+}
+
+void DropRepeatedWallPoints(std::vector<WallPolyline>* walls) {
   std::vector<WallPolyline> kept;
   for (WallPolyline& wall : *walls) {
     std::vector<CellIndex> points;
@@ -363,7 +368,6 @@ void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
     if (points.size() >= 2) kept.push_back({std::move(points)});
   }
   *walls = std::move(kept);
-  OrderWallsForCoding(walls);
 }
 
 void EncodeWallItems(RangeEncoder* enc, const WallPolyline* walls, std::size_t count,

@@ -74,6 +74,8 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
 // Drops zero-length steps and polylines left with fewer than two points,
 // then orders and orients the rest for coding (OrderWallsForCoding).
 void CanonicalizeWalls(std::vector<WallPolyline>* walls);
+// The first step alone: the walls keep their order and orientation.
+void DropRepeatedWallPoints(std::vector<WallPolyline>* walls);
 
 // Rooms must have strictly increasing ids and storable chains (8-adjacent
 // steps, closed, inside the grid).

@@ -683,31 +683,67 @@ void DropChains(VectorLayers* layers) {
   }
 }
 
-// The block's layers moved into map cells and appended to `all`, room ids
-// following the rooms already there.
-void AppendBlockLayers(VectorLayers block, int x0, int y0, VectorLayers* all) {
-  std::uint32_t first_id = all->rooms.empty() ? 1 : all->rooms.back().id + 1;
-  std::uint32_t base = first_id;
-  for (RoomOutline& room : block.rooms) {
+// Whether every point of `points` lies in the box [x0, x1) x [y0, y1).
+bool PointsWithin(const std::vector<CellIndex>& points, int x0, int y0, int x1, int y1) {
+  return std::all_of(points.begin(), points.end(), [&](const CellIndex& p) {
+    return p.col >= x0 && p.col < x1 && p.row >= y0 && p.row < y1;
+  });
+}
+
+// Whether every item of `layers` lies in the block's box (polygons and
+// walls are drawn inside their points' box, so their hints do too).
+bool LayersWithin(const VectorLayers& layers, int x0, int y0, int x1, int y1) {
+  for (const WallPolyline& wall : layers.walls) {
+    if (!PointsWithin(wall.points, x0, y0, x1, y1)) return false;
+  }
+  for (const RoomOutline& room : layers.rooms) {
+    if (!PointsWithin(room.polygon, x0, y0, x1, y1)) return false;
+  }
+  for (const FurnitureObject& object : layers.furniture) {
+    if (!PointsWithin(object.polygon, x0, y0, x1, y1)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+StatusOr<VectorLayers> ExtractBlockLayers(const Grid& block, int x0, int y0,
+                                          const EncodeOptions& options, bool with_chains) {
+  EncodeOptions block_options = options;
+  block_options.robot_pose.reset();  // it names one block's free space only
+  LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractWholeMapLayers(block, block_options, false));
+  DropRepeatedWallPoints(&layers.walls);
+  if (!with_chains) DropChains(&layers);
+  if (!LayersWithin(layers, 0, 0, block.width(), block.height())) {
+    return InternalError("a layer item leaves its block at (" + std::to_string(x0) + ", " +
+                         std::to_string(y0) + ")");
+  }
+  for (RoomOutline& room : layers.rooms) {
     Shift(&room.polygon, x0, y0);
     Shift(&room.chain, x0, y0);
+  }
+  for (FurnitureObject& object : layers.furniture) {
+    Shift(&object.polygon, x0, y0);
+    Shift(&object.outline, x0, y0);
+  }
+  for (WallPolyline& wall : layers.walls) Shift(&wall.points, x0, y0);
+  return layers;
+}
+
+void AppendBlockLayers(VectorLayers block, VectorLayers* all) {
+  std::uint32_t first_id = all->rooms.empty() ? 1 : all->rooms.back().id + 1;
+  const std::uint32_t base = first_id;
+  for (RoomOutline& room : block.rooms) {
     room.id += base;
     first_id = room.id + 1;
     all->rooms.push_back(std::move(room));
   }
   for (FurnitureObject& object : block.furniture) {
-    Shift(&object.polygon, x0, y0);
-    Shift(&object.outline, x0, y0);
     if (object.room_id >= 0) object.room_id += static_cast<std::int32_t>(base);
     all->furniture.push_back(std::move(object));
   }
-  for (WallPolyline& wall : block.walls) {
-    Shift(&wall.points, x0, y0);
-    all->walls.push_back(std::move(wall));
-  }
+  std::move(block.walls.begin(), block.walls.end(), std::back_inserter(all->walls));
 }
-
-}  // namespace
 
 StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options,
                                            bool with_chains) {
@@ -722,29 +758,23 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
   // other on its thread: two blocks at a time hold about what one block
   // held with its walls and rooms on two threads, and keep both cores busy
   // (on the 282-Mcell office map the walls task ended long before the rooms).
-  // They are appended in block order, so the file does not depend on the
+  // They are appended in block order, so the result does not depend on the
   // threads.
   const int blocks_x = (grid.width() + kLayerBlockCells - 1) / kLayerBlockCells;
   const int blocks_y = (grid.height() + kLayerBlockCells - 1) / kLayerBlockCells;
   const std::uint64_t blocks = static_cast<std::uint64_t>(blocks_x) * blocks_y;
   EncodeOptions block_options = options;
-  block_options.robot_pose.reset();  // it names one block's free space only
   block_options.max_threads = 1;
   std::vector<StatusOr<VectorLayers>> block_layers(blocks, VectorLayers{});
   ForEachIndexParallel(blocks, options.max_threads, [&](std::uint64_t k) {
     const int x0 = static_cast<int>(k % blocks_x) * kLayerBlockCells;
     const int y0 = static_cast<int>(k / blocks_x) * kLayerBlockCells;
-    StatusOr<VectorLayers> layers =
-        ExtractWholeMapLayers(BlockOf(grid, x0, y0), block_options, false);
-    if (layers.ok() && !with_chains) DropChains(&*layers);
-    block_layers[k] = std::move(layers);
+    block_layers[k] = ExtractBlockLayers(BlockOf(grid, x0, y0), x0, y0, block_options, with_chains);
   });
   VectorLayers all;
-  for (std::uint64_t k = 0; k < blocks; ++k) {
-    if (!block_layers[k].ok()) return block_layers[k].status();
-    AppendBlockLayers(std::move(*block_layers[k]),
-                      static_cast<int>(k % blocks_x) * kLayerBlockCells,
-                      static_cast<int>(k / blocks_x) * kLayerBlockCells, &all);
+  for (StatusOr<VectorLayers>& layers : block_layers) {
+    if (!layers.ok()) return layers.status();
+    AppendBlockLayers(std::move(*layers), &all);
   }
   CanonicalizeWalls(&all.walls);
   OrderFurnitureForCoding(&all.furniture);  // which makes each object's outline anew

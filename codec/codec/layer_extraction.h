@@ -40,6 +40,21 @@ inline constexpr int kLayerBlockCells = 2048;
 StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions& options,
                                            bool with_chains = true);
 
+// One block of a map larger than a block, as ExtractVectorLayers extracts
+// it: `block` holds the map's cells from (x0, y0) (at most kLayerBlockCells
+// a side, metadata included). The items come back in map cells, walls
+// without repeated points, room ids the block's own, on the
+// calling thread unless options.max_threads allows the walls a thread of
+// their own. Every item lies inside the block (an internal error
+// otherwise): the cells of a map coded a band of rows at a time are coded
+// against the hints of the bands' items alone (row_encoder.h).
+StatusOr<VectorLayers> ExtractBlockLayers(const Grid& block, int x0, int y0,
+                                          const EncodeOptions& options, bool with_chains);
+
+// Appends a block's items to `all`, its room ids (and its objects' room
+// ids) moved past the last room id there, so that ids stay unique.
+void AppendBlockLayers(VectorLayers block, VectorLayers* all);
+
 // The extractor's lines for the grid: the pixel steps of slanted walls at a
 // tight distance budget (EncodeOptions::straight_walls false, the default),
 // or StraightWalls() (one segment per straight wall).

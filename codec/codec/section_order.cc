@@ -55,11 +55,12 @@ void OrderRuns(const std::vector<std::int64_t>& sections, std::vector<Item>* ite
   }
 }
 
-// Room ids 1, 2, ... in list order when they do not increase already; the
-// objects' room ids follow.
-void RenumberRoomsIfNeeded(std::vector<RoomOutline>* rooms,
-                           std::vector<FurnitureObject>* furniture) {
-  bool increasing = true;
+// Room ids 1, 2, ... in list order when `always` or when they do not
+// increase already; the objects' room ids follow (-1 for an id no room
+// has).
+void RenumberRooms(bool always, std::vector<RoomOutline>* rooms,
+                   std::vector<FurnitureObject>* furniture) {
+  bool increasing = !always;
   for (std::size_t i = 1; i < rooms->size() && increasing; ++i) {
     increasing = (*rooms)[i].id > (*rooms)[i - 1].id;
   }
@@ -85,9 +86,9 @@ int LayerSectionSide(int width, int height, int requested, int block_side) {
   return block_side;
 }
 
-void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
-                             std::vector<RoomOutline>* rooms,
-                             std::vector<FurnitureObject>* furniture) {
+void OrderItemsInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
+                          std::vector<RoomOutline>* rooms,
+                          std::vector<FurnitureObject>* furniture) {
   const std::vector<std::int64_t> wall_sections = GroupBySection(width, side, walls);
   GroupBySection(width, side, rooms);
   const std::vector<std::int64_t> object_sections = GroupBySection(width, side, furniture);
@@ -97,10 +98,21 @@ void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPo
     OrderRuns(wall_sections, walls, OrderWallsForCoding);
     OrderRuns(object_sections, furniture, OrderFurnitureForCoding);
   }
-  RenumberRoomsIfNeeded(rooms, furniture);
+}
+
+void NumberItemsInOrder(bool renumber_rooms, std::vector<RoomOutline>* rooms,
+                        std::vector<FurnitureObject>* furniture) {
+  RenumberRooms(renumber_rooms, rooms, furniture);
   for (std::size_t i = 0; i < furniture->size(); ++i) {
     (*furniture)[i].id = static_cast<std::uint32_t>(i);
   }
+}
+
+void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
+                             std::vector<RoomOutline>* rooms,
+                             std::vector<FurnitureObject>* furniture) {
+  OrderItemsInSections(width, height, side, walls, rooms, furniture);
+  NumberItemsInOrder(false, rooms, furniture);
 }
 
 }  // namespace linemap

@@ -30,6 +30,17 @@ void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPo
                              std::vector<RoomOutline>* rooms,
                              std::vector<FurnitureObject>* furniture);
 
+// The two steps of ArrangeLayersInSections. The first groups and orders the
+// items of a list by section; its result for a row of sections depends on
+// that row's items alone, so a map coded a band of section rows at a time
+// (row_encoder.h) orders each band on its own. The second numbers them:
+// room ids 1, 2, ... in list order when `renumber_rooms` or when they do
+// not increase, object ids their place in the list.
+void OrderItemsInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
+                          std::vector<RoomOutline>* rooms, std::vector<FurnitureObject>* furniture);
+void NumberItemsInOrder(bool renumber_rooms, std::vector<RoomOutline>* rooms,
+                        std::vector<FurnitureObject>* furniture);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_SECTION_ORDER_H_

@@ -23,6 +23,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -67,6 +68,44 @@ StatusOr<std::string> RosMapImagePath(const std::string& path);
 // Classifies an image file with the given metadata (no YAML involved).
 StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& meta,
                             std::uint64_t max_cells = std::uint64_t{1} << 30);
+
+class ImageRowReader;
+
+// A map file opened to be read one row of cells at a time, top row first
+// (grid row height() - 1 first, as its image stores it), for callers that
+// never hold the whole grid (SaveRosMapAsLmap in codec.h). It opens as
+// LoadRosMap(path, options) loads, with the same errors, and classifies each
+// row as LoadRosMap does; it holds one row of samples and the image
+// decoder's buffers.
+class MapRowReader {
+ public:
+  static StatusOr<std::unique_ptr<MapRowReader>> Open(const std::string& path,
+                                                      const MapLoadOptions& options = {});
+  // The image file `image_path` with the given metadata (no YAML involved).
+  static StatusOr<std::unique_ptr<MapRowReader>> OpenImage(
+      const std::string& image_path, const MapMetadata& meta,
+      std::uint64_t max_cells = std::uint64_t{1} << 30);
+  ~MapRowReader();
+
+  int width() const;
+  int height() const;
+  const MapMetadata& meta() const { return meta_; }
+  // Fills `cells` (width() of them) with the next row; at most height()
+  // calls. A defect of the image (truncated, a sample above its maximum)
+  // fails naming the file.
+  Status ReadRow(Cell* cells);
+
+ private:
+  MapRowReader(std::unique_ptr<ImageRowReader> image, const MapMetadata& meta);
+
+  std::unique_ptr<ImageRowReader> image_;
+  MapMetadata meta_;
+  std::vector<std::uint16_t> samples_;
+  // A grey pixel's cell depends on its one sample only, and maps are long
+  // runs of equal samples: each new sample is classified once.
+  std::uint16_t last_sample_ = 0;
+  Cell last_cell_ = Cell::kUnknown;
+};
 
 // Writes `yaml_path` and an image next to it (same stem, .pgm), as nav2's
 // map_saver does in trinary mode: 0 occupied, 254 free, 205 unknown, and a

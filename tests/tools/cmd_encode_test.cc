@@ -182,6 +182,33 @@ TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
                 {"--compact", "--lossy"});
 }
 
+// Without the PNG ratio (--no-png-ratio, or a map above 2^26 cells) an
+// exact file is coded as the image is read (SaveRosMapAsLmap): the bytes
+// are those of the loaded map's file, and --json says the same.
+TEST(CmdEncodeTest, FileCodedAsTheImageIsReadIsTheLoadedMapsFile) {
+  const std::string dir = MakeTempDir("encode_rows");
+  StatusOr<Grid> depot = LoadRosMap(CopyDepot(dir));
+  ASSERT_TRUE(depot.ok());
+  // 4300 x 620 cells: two layer sections, read a block row at a time.
+  Grid grid(4300, 620, Cell::kUnknown);
+  grid.meta = depot->meta;
+  for (int r = 0; r < grid.height(); ++r) {
+    for (int c = 0; c < grid.width(); ++c) grid.set(c, r, depot->at(c % 604, r % 307));
+  }
+  ASSERT_TRUE(SaveRosMap(dir + "/wide.yaml", grid, Durability::kUnsynced).ok());
+  const CliResult rows =
+      RunCli({"encode", dir + "/wide.yaml", "-o", dir + "/rows.lmap", "--no-png-ratio", "--json"});
+  ASSERT_EQ(rows.exit_code, 0) << rows.err;
+  EXPECT_NE(rows.out.find("\"cells\":2666000"), std::string::npos) << rows.out;
+  const CliResult loaded = RunCli({"encode", dir + "/wide.yaml", "-o", dir + "/grid.lmap"});
+  ASSERT_EQ(loaded.exit_code, 0) << loaded.err;
+  EXPECT_NE(loaded.out.find("png-9:"), std::string::npos) << loaded.out;
+  EXPECT_EQ(ReadFile(dir + "/rows.lmap"), ReadFile(dir + "/grid.lmap"));
+  StatusOr<Grid> decoded = LoadLmap(dir + "/rows.lmap");
+  ASSERT_TRUE(decoded.ok());
+  EXPECT_EQ(decoded->cells(), grid.cells());
+}
+
 TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
   const CliResult r = RunCli({"encode", "--help"});
   ASSERT_EQ(r.exit_code, 0);

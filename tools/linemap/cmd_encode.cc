@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <future>
+#include <memory>
+#include <optional>
 #include <string_view>
 #include <system_error>
 
@@ -31,6 +33,10 @@ const CommandSpec kEncodeSpec = {
     "per room, furniture outlines. Prints the input cells, the output bytes,\n"
     "the ratio to the smallest PNG (zlib level 9, grey or palette) of the same\n"
     "trinary map, and the time.\n"
+    "Without that PNG (--no-png-ratio, or above 2^26 cells) an exact file of a\n"
+    "map over 4096 cells a side is coded as the image is read, a row of 2048-\n"
+    "cell blocks at a time, without holding the map: the same bytes (0.83\n"
+    "bytes of memory per cell on a 282-Mcell map, whose grid alone is 1).\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
     "map or the image its YAML names.",
@@ -200,6 +206,93 @@ Status CheckPoseOnMap(const Grid& grid, const Pose2D& pose, const std::string& m
   return InvalidArgumentError("'" + map_path + "'" + text);
 }
 
+// The PNG the ratio is reported against is made beside the encoding (it
+// is only a report; the .lmap does not depend on it). On a robot saving a
+// huge map it doubles the work and the memory (the 282-Mcell office map:
+// 5 s and 290 MB more), so above kPngRatioMaxCells it takes --png-ratio.
+constexpr std::uint64_t kPngRatioMaxCells = std::uint64_t{1} << 26;
+
+bool WantsPngRatio(std::uint64_t cells, const ParsedArgs& parsed) {
+  return !parsed.Has("--no-png-ratio") && (cells <= kPngRatioMaxCells || parsed.Has("--png-ratio"));
+}
+
+// What `linemap encode` prints of a saved file.
+struct EncodeReport {
+  int width = 0, height = 0;
+  std::uint64_t bytes = 0;
+  std::optional<std::size_t> png_bytes;  // when the PNG-9 was made
+  bool exact = true;
+  double seconds = 0;
+};
+
+int PrintReport(const EncodeReport& report, const std::string& out, const ParsedArgs& parsed,
+                const EncodeOptions& options) {
+  const std::uint64_t cells =
+      std::uint64_t{static_cast<std::uint64_t>(report.width)} * report.height;
+  const double ratio = report.png_bytes && *report.png_bytes > 0
+                           ? static_cast<double>(report.bytes) / *report.png_bytes
+                           : 0.0;
+  if (parsed.Has("--json")) {
+    JsonObject json;
+    json.Add("cells", cells).Add("bytes", report.bytes);
+    if (report.png_bytes) {
+      json.Add("png_bytes", std::uint64_t{*report.png_bytes}).Add("ratio_to_png", ratio);
+    }
+    json.Add("exact", report.exact)
+        .Add("vector_layers", !options.format_v1 && options.vector_layers)
+        .Add("seconds", report.seconds);
+    std::printf("%s\n", json.str().c_str());
+    return kExitOk;
+  }
+  std::printf("input:   %d x %d = %llu cells\n", report.width, report.height,
+              static_cast<unsigned long long>(cells));
+  std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
+              static_cast<unsigned long long>(report.bytes),
+              options.format_v1       ? "version 1.0, lossy"
+              : !report.exact         ? "within the tolerance"
+              : options.vector_layers ? "exact, with walls, rooms and furniture"
+                                      : "exact, cells only");
+  if (report.png_bytes) {
+    std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *report.png_bytes, ratio,
+                ratio > 0 ? 1.0 / ratio : 0.0);
+  } else if (!parsed.Has("--no-png-ratio")) {
+    std::printf("png-9:   not made above 2^26 cells (--png-ratio makes it)\n");
+  }
+  std::printf("time:    %.3f s\n", report.seconds);
+  return kExitOk;
+}
+
+// Saves an exact file of a map image without loading its grid
+// (SaveRosMapAsLmap) when nothing needs the grid: no PNG to compare with,
+// no pose to check on it. Returns the exit code, or nothing when the map
+// is to be loaded.
+std::optional<int> SaveAsRead(const std::string& map_path, const std::string& out,
+                              const ParsedArgs& parsed, const EncodeOptions& options,
+                              double start) {
+  if (IsLmapFile(map_path) || options.tolerance_cells != 0 || options.format_v1 ||
+      options.robot_pose) {
+    return std::nullopt;
+  }
+  StatusOr<MapLoadOptions> load = MapLoadOptionsFrom(parsed);
+  if (!load.ok()) return ReportError("encode", load.status());
+  StatusOr<std::unique_ptr<MapRowReader>> reader = MapRowReader::Open(map_path, *load);
+  if (!reader.ok()) return ReportError("encode", reader.status());
+  const std::uint64_t cells =
+      std::uint64_t{static_cast<std::uint64_t>((*reader)->width())} * (*reader)->height();
+  reader->reset();
+  if (WantsPngRatio(cells, parsed)) return std::nullopt;
+  StatusOr<LmapSaveSummary> saved =
+      SaveRosMapAsLmap(map_path, out, options, *load,
+                       parsed.Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
+  if (!saved.ok()) return ReportError("encode", saved.status());
+  EncodeReport report;
+  report.width = saved->width;
+  report.height = saved->height;
+  report.bytes = saved->bytes;
+  report.seconds = NowSeconds() - start;
+  return PrintReport(report, out, parsed, options);
+}
+
 }  // namespace
 
 int RunEncode(const std::vector<std::string>& args) {
@@ -220,19 +313,14 @@ int RunEncode(const std::vector<std::string>& args) {
   StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);
   if (!options.ok()) return ReportError("encode", options.status());
   const double start = NowSeconds();
+  if (std::optional<int> code = SaveAsRead(map_path, *out, *parsed, *options, start)) return *code;
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("encode", grid.status());
   if (options->robot_pose) {
     const Status pose_ok = CheckPoseOnMap(*grid, *options->robot_pose, map_path);
     if (!pose_ok.ok()) return ReportError("encode", pose_ok);
   }
-  // The PNG the ratio is reported against is made beside the encoding (it
-  // is only a report; the .lmap does not depend on it). On a robot saving a
-  // huge map it doubles the work and the memory (the 282-Mcell office map:
-  // 5 s and 290 MB more), so above kPngRatioMaxCells it takes --png-ratio.
-  constexpr std::size_t kPngRatioMaxCells = std::size_t{1} << 26;
-  const bool with_png = !parsed->Has("--no-png-ratio") &&
-                        (grid->size() <= kPngRatioMaxCells || parsed->Has("--png-ratio"));
+  const bool with_png = WantsPngRatio(grid->size(), *parsed);
   const auto make_png = [&grid, with_png]() -> StatusOr<std::size_t> {
     if (!with_png) return std::size_t{0};
     return SmallestTrinaryPngBytes(*grid);
@@ -252,7 +340,6 @@ int RunEncode(const std::vector<std::string>& args) {
   const double seconds = NowSeconds() - start;
   StatusOr<std::size_t> png = png_task.get();
   if (!png.ok()) return ReportError("encode", png.status());
-  const double ratio = *png > 0 ? static_cast<double>(bytes->size()) / *png : 0.0;
   // Within a tolerance the file is exact where nothing could be simplified
   // (or the exact file was the smaller): which one, its decode says.
   bool exact = !options->format_v1;
@@ -262,30 +349,14 @@ int RunEncode(const std::vector<std::string>& args) {
     StatusOr<Grid> decoded = DecodeLmap(*bytes, limits);
     exact = decoded.ok() && decoded->cells() == grid->cells();
   }
-  if (parsed->Has("--json")) {
-    JsonObject json;
-    json.Add("cells", std::uint64_t{grid->size()}).Add("bytes", std::uint64_t{bytes->size()});
-    if (with_png) json.Add("png_bytes", std::uint64_t{*png}).Add("ratio_to_png", ratio);
-    json.Add("exact", exact)
-        .Add("vector_layers", !options->format_v1 && options->vector_layers)
-        .Add("seconds", seconds);
-    std::printf("%s\n", json.str().c_str());
-    return kExitOk;
-  }
-  std::printf("input:   %d x %d = %zu cells\n", grid->width(), grid->height(), grid->size());
-  std::printf("output:  %s, %zu bytes (%s)\n", out->c_str(), bytes->size(),
-              options->format_v1       ? "version 1.0, lossy"
-              : !exact                 ? "within the tolerance"
-              : options->vector_layers ? "exact, with walls, rooms and furniture"
-                                       : "exact, cells only");
-  if (with_png) {
-    std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *png, ratio,
-                ratio > 0 ? 1.0 / ratio : 0.0);
-  } else if (!parsed->Has("--no-png-ratio")) {
-    std::printf("png-9:   not made above 2^26 cells (--png-ratio makes it)\n");
-  }
-  std::printf("time:    %.3f s\n", seconds);
-  return kExitOk;
+  EncodeReport report;
+  report.width = grid->width();
+  report.height = grid->height();
+  report.bytes = bytes->size();
+  if (with_png) report.png_bytes = *png;
+  report.exact = exact;
+  report.seconds = seconds;
+  return PrintReport(report, *out, *parsed, *options);
 }
 
 }  // namespace linemap::cli

@@ -1,0 +1,147 @@
+// Files of maps coded a row of layer blocks at a time (row_encoder.h):
+// SaveRosMapAsLmap, which reads the map's image row by row, writes the bytes
+// EncodeLmap writes for the loaded grid, and they decode to the map.
+#include "codec/codec/row_encoder.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+// A width x height map of nav2 depot copies (walls, rooms and furniture in
+// every layer block).
+Grid DepotCopies(int width, int height) {
+  const StatusOr<Grid> depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  EXPECT_TRUE(depot.ok());
+  Grid grid(width, height, Cell::kUnknown);
+  grid.meta = depot->meta;
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c)
+      grid.set(c, r, depot->at(c % depot->width(), r % depot->height()));
+  }
+  return grid;
+}
+
+std::vector<std::uint8_t> Bytes(const std::string& text) {
+  return std::vector<std::uint8_t>(text.begin(), text.end());
+}
+
+// Saves `grid` as a map YAML + PGM, saves that as an .lmap with
+// SaveRosMapAsLmap, and checks the file against EncodeLmap's of the saved
+// map and its decode against `grid`.
+void ExpectSavedAsEncoded(const Grid& grid, const EncodeOptions& options, const std::string& tag) {
+  const std::string dir = testing::MakeTempDir(tag);
+  ASSERT_TRUE(SaveRosMap(dir + "/map.yaml", grid, Durability::kUnsynced).ok());
+  StatusOr<LmapSaveSummary> saved =
+      SaveRosMapAsLmap(dir + "/map.yaml", dir + "/map.lmap", options, {}, Durability::kUnsynced);
+  ASSERT_TRUE(saved.ok()) << saved.status().ToString();
+  EXPECT_EQ(saved->width, grid.width());
+  EXPECT_EQ(saved->height, grid.height());
+  const std::vector<std::uint8_t> file = Bytes(testing::ReadFile(dir + "/map.lmap"));
+  EXPECT_EQ(saved->bytes, file.size());
+  // The saved YAML may carry other thresholds than `grid` (map_saver's).
+  StatusOr<Grid> loaded = LoadRosMap(dir + "/map.yaml");
+  ASSERT_TRUE(loaded.ok());
+  ASSERT_EQ(loaded->cells(), grid.cells());
+  StatusOr<std::vector<std::uint8_t>> encoded = EncodeLmap(*loaded, options);
+  ASSERT_TRUE(encoded.ok());
+  EXPECT_EQ(file, *encoded) << tag;
+  StatusOr<Grid> decoded = DecodeLmap(file);
+  ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+  EXPECT_EQ(decoded->cells(), grid.cells()) << tag;
+}
+
+TEST(RowEncoderTest, CodesMapsOfSeveralSectionsExactOnly) {
+  EncodeOptions options;
+  EXPECT_TRUE(EncodesByRows(4097, 10, options));
+  EXPECT_TRUE(EncodesByRows(10, 5000, options));
+  EXPECT_FALSE(EncodesByRows(4096, 4096, options));  // one section
+  options.layer_section_cells = 1024;
+  EXPECT_TRUE(EncodesByRows(2000, 1500, options));
+  options.tolerance_cells = 1;
+  EXPECT_FALSE(EncodesByRows(5000, 5000, options));
+  EncodeOptions v1;
+  v1.format_v1 = true;
+  EXPECT_FALSE(EncodesByRows(5000, 5000, v1));
+}
+
+TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
+  // 900 x 4300 cells: three rows of layer blocks (2048, 2048, 204 rows) and
+  // two of sections; 1024-cell tiles nest in the blocks.
+  const Grid grid = DepotCopies(900, 4300);
+  ExpectSavedAsEncoded(grid, EncodeOptions{}, "row_encoder_tall");
+  EncodeOptions raster_only;
+  raster_only.vector_layers = false;
+  ExpectSavedAsEncoded(grid, raster_only, "row_encoder_tall_cells");
+}
+
+TEST(RowEncoderTest, TilesAcrossBlockRowsAndThreadsGiveTheSameFile) {
+  // Tiles of 1000 and 3000 cells straddle the block rows (2048 cells): their
+  // hints come from the items of two block rows. Sections of 1024 cells split
+  // the blocks' items over several sections.
+  const Grid grid = DepotCopies(700, 4300);
+  for (const int tile : {1000, 3000}) {
+    EncodeOptions one;
+    one.tile_size_cells = tile;
+    one.max_threads = 1;
+    EncodeOptions three = one;
+    three.max_threads = 3;
+    ExpectSavedAsEncoded(grid, one, "row_encoder_tile_" + std::to_string(tile));
+    StatusOr<std::vector<std::uint8_t>> a = EncodeLmap(grid, one);
+    StatusOr<std::vector<std::uint8_t>> b = EncodeLmap(grid, three);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(*a, *b) << "tile " << tile;
+  }
+  EncodeOptions small_sections;
+  small_sections.layer_section_cells = 1024;
+  ExpectSavedAsEncoded(grid, small_sections, "row_encoder_sections_1024");
+}
+
+TEST(RowEncoderTest, RoomsAreNumberedInFileOrder) {
+  const Grid grid = DepotCopies(4200, 700);
+  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid);
+  ASSERT_TRUE(file.ok());
+  StatusOr<LmapVectors> vectors = DecodeLmapVectors(*file);
+  ASSERT_TRUE(vectors.ok());
+  ASSERT_GT(vectors->rooms.size(), 8u);
+  for (std::size_t i = 0; i < vectors->rooms.size(); ++i) {
+    EXPECT_EQ(vectors->rooms[i].id, i + 1);
+  }
+  for (const FurnitureObject& object : vectors->furniture) {
+    EXPECT_LE(object.room_id, static_cast<std::int32_t>(vectors->rooms.size()));
+  }
+}
+
+TEST(RowEncoderTest, SmallMapSavedFromItsFileIsTheEncodedFile) {
+  // One section: the grid is loaded and coded whole.
+  const StatusOr<Grid> depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(depot.ok());
+  ExpectSavedAsEncoded(*depot, EncodeOptions{}, "row_encoder_small");
+}
+
+TEST(RowEncoderTest, TruncatedImageFailsNamingItAndWritesNothing) {
+  const std::string dir = testing::MakeTempDir("row_encoder_truncated");
+  ASSERT_TRUE(SaveRosMap(dir + "/map.yaml", DepotCopies(4200, 300), Durability::kUnsynced).ok());
+  const std::string pgm = testing::ReadFile(dir + "/map.pgm");
+  // The last rows read (the map's lowest) are cut off.
+  testing::WriteFile(dir + "/map.pgm", pgm.substr(0, pgm.size() - 3 * 4200));
+  StatusOr<LmapSaveSummary> saved = SaveRosMapAsLmap(dir + "/map.yaml", dir + "/map.lmap");
+  ASSERT_FALSE(saved.ok());
+  EXPECT_NE(saved.status().message().find("map.pgm"), std::string::npos)
+      << saved.status().message();
+  EXPECT_FALSE(testing::FileExists(dir + "/map.lmap"));
+  StatusOr<LmapSaveSummary> missing = SaveRosMapAsLmap(dir + "/none.yaml", dir + "/map.lmap");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("none.yaml"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linemap
