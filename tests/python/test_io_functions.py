@@ -215,6 +215,28 @@ def test_save_refuses_other_suffixes_and_negative_tolerance(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+def test_convert_writes_the_file_save_writes(tmp_path):
+    # 620 x 4300 cells of depot copies: a map of two layer sections, coded
+    # as its image is read; the bundled depot itself is loaded whole.
+    depot = linemap.load(BUNDLED["depot"])
+    tall = np.tile(depot.cells, (3, 8))[:620, :4300].copy()
+    big = linemap.Map(tall, resolution=depot.resolution)
+    linemap.save(tmp_path / "tall.yaml", big)
+    for source in (tmp_path / "tall.yaml", BUNDLED["depot"]):
+        linemap.convert(source, tmp_path / "converted.lmap")
+        linemap.save(tmp_path / "saved.lmap", linemap.load(source))
+        assert (tmp_path / "converted.lmap").read_bytes() == (tmp_path / "saved.lmap").read_bytes()
+    assert np.array_equal(linemap.load(tmp_path / "converted.lmap").cells, depot.cells)
+    assert np.array_equal(linemap.load(tmp_path / "saved.lmap").cells, depot.cells)
+    linemap.convert(tmp_path / "tall.yaml", tmp_path / "tall.lmap")
+    assert np.array_equal(linemap.load(tmp_path / "tall.lmap").cells, tall)
+    with pytest.raises(ValueError, match="tall.png"):
+        linemap.convert(tmp_path / "tall.yaml", tmp_path / "tall.png")
+    with pytest.raises(FileNotFoundError, match="none.yaml"):
+        linemap.convert(tmp_path / "none.yaml", tmp_path / "none.lmap")
+    assert not (tmp_path / "none.lmap").exists()
+
+
 def test_decode_refuses_text():
     with pytest.raises(TypeError, match="bytes"):
         linemap.decode("LMAP")
