@@ -269,7 +269,7 @@ PGM / PNG image) as the .lmap file ``path``, without making a Map: the
 bytes ``save(path, load(source), ...)`` writes (options as for save()). An
 exact file of a map over 4096 cells a side is coded as the image is read,
 a row of 2048-cell blocks at a time, so the grid is never held whole (a
-282-Mcell map in 0.83 bytes of memory per cell). Errors as load() and
+282-Mcell map in 0.8-0.9 bytes of memory per cell). Errors as load() and
 save() raise them, naming the file.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,

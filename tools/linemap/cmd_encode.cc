@@ -35,7 +35,7 @@ const CommandSpec kEncodeSpec = {
     "trinary map, and the time.\n"
     "Without that PNG (--no-png-ratio, or above 2^26 cells) an exact file of a\n"
     "map over 4096 cells a side is coded as the image is read, a row of 2048-\n"
-    "cell blocks at a time, without holding the map: the same bytes (0.83\n"
+    "cell blocks at a time, without holding the map: the same bytes (0.8-0.9\n"
     "bytes of memory per cell on a 282-Mcell map, whose grid alone is 1).\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
