@@ -294,6 +294,7 @@ StatusOr<std::unique_ptr<MapRowReader>> MapRowReader::Open(const std::string& pa
                          ", which does not exist");
   }
   if (!reader.ok()) return reader.status().WithContext(Quoted(path));
+  (*reader)->bare_image_ = false;
   return reader;
 }
 

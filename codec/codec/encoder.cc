@@ -154,10 +154,17 @@ namespace {
 class MapFileRows : public CellRowSource {
  public:
   explicit MapFileRows(MapRowReader* reader) : reader_(reader) {}
-  Status ReadRow(Cell* cells) override { return reader_->ReadRow(cells); }
+  Status ReadRow(Cell* cells) override {
+    Status status = reader_->ReadRow(cells);
+    read_failed_ = !status.ok();
+    return status;
+  }
+  // Whether the last row could not be read (the error names the image).
+  bool read_failed() const { return read_failed_; }
 
  private:
   MapRowReader* reader_;
+  bool read_failed_ = false;
 };
 
 // The file of the map `map_path` names: coded as its rows are read when
@@ -171,18 +178,22 @@ StatusOr<std::vector<std::uint8_t>> EncodeMapFile(const std::string& map_path,
                            MapRowReader::Open(map_path, load));
   summary->width = reader->width();
   summary->height = reader->height();
+  const std::string where = "'" + map_path + "'";
   if (!EncodesByRows(reader->width(), reader->height(), options)) {
     reader.reset();
     LINEMAP_ASSIGN_OR_RETURN(Grid grid, LoadRosMap(map_path, load));
-    return EncodeLmap(grid, options);
+    StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(grid, options);
+    if (!bytes.ok()) return bytes.status().WithContext(where);
+    return bytes;
   }
   MapFileRows rows(reader.get());
   const MapFrame frame{reader->width(), reader->height(), reader->meta()};
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmapByRows(frame, options, &rows);
-  // A defect of the image met while coding names the image; the map file
-  // too, as LoadRosMap does.
-  if (!bytes.ok()) return bytes.status().WithContext("'" + map_path + "'");
-  return bytes;
+  if (bytes.ok()) return bytes;
+  // A defect of the image names the image; of a map YAML's image, the YAML
+  // too (as LoadRosMap says it).
+  const bool names_the_map = rows.read_failed() && reader->is_bare_image();
+  return names_the_map ? bytes.status() : bytes.status().WithContext(where);
 }
 
 }  // namespace

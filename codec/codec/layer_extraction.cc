@@ -431,25 +431,31 @@ Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
     layers->rooms.push_back(
         {static_cast<std::uint32_t>(room.id), room.kind, std::move(polygon), std::move(chain)});
   }
+  // The file lists rooms by increasing id (the paper's method numbers
+  // none), renumbered 1, 2, ... if two share one.
+  std::stable_sort(layers->rooms.begin(), layers->rooms.end(),
+                   [](const RoomOutline& a, const RoomOutline& b) { return a.id < b.id; });
+  bool increasing = true;
+  for (std::size_t i = 1; i < layers->rooms.size(); ++i) {
+    increasing = increasing && layers->rooms[i].id > layers->rooms[i - 1].id;
+  }
+  std::unordered_map<std::uint32_t, std::int32_t> stored_id;  // segmentation's id -> file's
+  for (std::size_t k = 0; k < layers->rooms.size(); ++k) {
+    const std::uint32_t id = layers->rooms[k].id;
+    if (!increasing) layers->rooms[k].id = static_cast<std::uint32_t>(k + 1);
+    stored_id.emplace(id, static_cast<std::int32_t>(layers->rooms[k].id));
+  }
   for (FurnitureBlob& blob : seg.blobs) {
     if (!IsStorableChain(blob.outline, grid.width(), grid.height())) continue;
     std::vector<CellIndex> polygon = FurniturePolygon(blob);
     std::vector<CellIndex> outline = ChainOfPolygon(polygon);
-    // Room ids start at 1; 0 is no room.
+    // Room ids start at 1; 0 is no room, and so is a room the file cannot
+    // store (an object naming it would name another room of a block after).
+    const auto room =
+        blob.room > 0 ? stored_id.find(static_cast<std::uint32_t>(blob.room)) : stored_id.end();
     layers->furniture.push_back({static_cast<std::uint32_t>(layers->furniture.size()),
-                                 blob.room > 0 ? blob.room : -1, std::move(polygon),
+                                 room == stored_id.end() ? -1 : room->second, std::move(polygon),
                                  std::move(outline)});
-  }
-  // The file lists rooms by increasing id (the paper's method numbers none).
-  std::stable_sort(layers->rooms.begin(), layers->rooms.end(),
-                   [](const RoomOutline& a, const RoomOutline& b) { return a.id < b.id; });
-  for (std::size_t i = 1; i < layers->rooms.size(); ++i) {
-    if (layers->rooms[i].id <= layers->rooms[i - 1].id) {
-      for (std::size_t k = 0; k < layers->rooms.size(); ++k) {
-        layers->rooms[k].id = static_cast<std::uint32_t>(k + 1);
-      }
-      break;
-    }
   }
   OrderFurnitureForCoding(&layers->furniture);
   return Status::Ok();

@@ -84,8 +84,10 @@ struct EncodeOptions {
   bool simplify_free_space = false;
   // Threads the encoder may use (the calling one included); 0 = one per
   // core (the default). 2.0 files code their tiles in parallel and extract
-  // the walls beside the rooms; the 1.0 lossy mode codes two candidate
-  // files at a time. The bytes are the same for any number.
+  // the walls beside the rooms, on maps over 4096 cells a side the layers
+  // of two 2048-cell blocks at a time (each holds some 55 MB meanwhile);
+  // the 1.0 lossy mode codes two candidate files at a time. The bytes are
+  // the same for any number.
   int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;

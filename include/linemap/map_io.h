@@ -90,6 +90,9 @@ class MapRowReader {
   int width() const;
   int height() const;
   const MapMetadata& meta() const { return meta_; }
+  // Whether the file opened is the image itself (no map YAML): its errors
+  // name it already.
+  bool is_bare_image() const { return bare_image_; }
   // Fills `cells` (width() of them) with the next row; at most height()
   // calls. A defect of the image (truncated, a sample above its maximum)
   // fails naming the file.
@@ -105,6 +108,7 @@ class MapRowReader {
   // runs of equal samples: each new sample is classified once.
   std::uint16_t last_sample_ = 0;
   Cell last_cell_ = Cell::kUnknown;
+  bool bare_image_ = true;
 };
 
 // Writes `yaml_path` and an image next to it (same stem, .pgm), as nav2's

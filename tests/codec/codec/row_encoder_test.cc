@@ -64,8 +64,14 @@ TEST(RowEncoderTest, CodesMapsOfSeveralSectionsExactOnly) {
   EXPECT_TRUE(EncodesByRows(4097, 10, options));
   EXPECT_TRUE(EncodesByRows(10, 5000, options));
   EXPECT_FALSE(EncodesByRows(4096, 4096, options));  // one section
+  // Sections must be whole blocks (2048 cells), and then the map is larger
+  // than a block.
+  options.layer_section_cells = 2048;
+  EXPECT_TRUE(EncodesByRows(5000, 10, options));
+  EXPECT_FALSE(EncodesByRows(2000, 1500, options));
   options.layer_section_cells = 1024;
-  EXPECT_TRUE(EncodesByRows(2000, 1500, options));
+  EXPECT_FALSE(EncodesByRows(5000, 5000, options));
+  options.layer_section_cells = 0;
   options.tolerance_cells = 1;
   EXPECT_FALSE(EncodesByRows(5000, 5000, options));
   EncodeOptions v1;
@@ -85,8 +91,8 @@ TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
 
 TEST(RowEncoderTest, TilesAcrossBlockRowsAndThreadsGiveTheSameFile) {
   // Tiles of 1000 and 3000 cells straddle the block rows (2048 cells): their
-  // hints come from the items of two block rows. Sections of 1024 cells split
-  // the blocks' items over several sections.
+  // hints come from the items of two block rows. Sections of 2048 cells hold
+  // one block each.
   const Grid grid = DepotCopies(700, 4300);
   for (const int tile : {1000, 3000}) {
     EncodeOptions one;
@@ -100,9 +106,37 @@ TEST(RowEncoderTest, TilesAcrossBlockRowsAndThreadsGiveTheSameFile) {
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_EQ(*a, *b) << "tile " << tile;
   }
-  EncodeOptions small_sections;
-  small_sections.layer_section_cells = 1024;
-  ExpectSavedAsEncoded(grid, small_sections, "row_encoder_sections_1024");
+  EncodeOptions block_sections;
+  block_sections.layer_section_cells = 2048;
+  ExpectSavedAsEncoded(grid, block_sections, "row_encoder_sections_2048");
+}
+
+TEST(RowEncoderTest, SectionsSmallerThanABlockDecodeExactly) {
+  // Sections that cut a block put its rooms in other orders than their
+  // extraction's (a room's chain clears the fill of rooms drawn before it):
+  // such files are coded from the whole grid. willow-2010 with sections of
+  // 16 or 1000 cells, and tiled past a section, once decoded 3 cells wrong.
+  const StatusOr<Grid> willow =
+      LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
+  ASSERT_TRUE(willow.ok());
+  Grid tiled(4300, 1200, Cell::kUnknown);
+  tiled.meta = willow->meta;
+  for (int r = 0; r < tiled.height(); ++r) {
+    for (int c = 0; c < tiled.width(); ++c) {
+      tiled.set(c, r, willow->at(c % willow->width(), r % willow->height()));
+    }
+  }
+  for (const Grid* grid : std::vector<const Grid*>{&*willow, &tiled}) {
+    for (const int side : {16, 700, 1000}) {
+      EncodeOptions options;
+      options.layer_section_cells = side;
+      StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(*grid, options);
+      ASSERT_TRUE(file.ok());
+      StatusOr<Grid> decoded = DecodeLmap(*file);
+      ASSERT_TRUE(decoded.ok()) << "sections of " << side << ": " << decoded.status().ToString();
+      EXPECT_EQ(decoded->cells(), grid->cells()) << "sections of " << side;
+    }
+  }
 }
 
 TEST(RowEncoderTest, RoomsAreNumberedInFileOrder) {
@@ -125,6 +159,31 @@ TEST(RowEncoderTest, SmallMapSavedFromItsFileIsTheEncodedFile) {
   const StatusOr<Grid> depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
   ASSERT_TRUE(depot.ok());
   ExpectSavedAsEncoded(*depot, EncodeOptions{}, "row_encoder_small");
+}
+
+TEST(RowEncoderTest, ImageDefectMetWhileCodingFailsNamingItAndWritesNothing) {
+  // A PGM whose last row (the map's lowest, read last) holds a sample above
+  // its maxval: the first rows are coded before it is met.
+  const std::string dir = testing::MakeTempDir("row_encoder_bad_sample");
+  const int w = 4200, h = 300;
+  std::string pgm = "P5\n" + std::to_string(w) + " " + std::to_string(h) + "\n254\n";
+  pgm += std::string(static_cast<std::size_t>(w) * h, static_cast<char>(254));
+  pgm.back() = static_cast<char>(255);
+  testing::WriteFile(dir + "/map.pgm", pgm);
+  testing::WriteFile(dir + "/map.yaml",
+                     "image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\n"
+                     "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  ASSERT_TRUE(EncodesByRows(w, h, EncodeOptions{}));
+  for (const std::string source : {"map.yaml", "map.pgm"}) {
+    StatusOr<LmapSaveSummary> saved = SaveRosMapAsLmap(dir + "/" + source, dir + "/map.lmap");
+    ASSERT_FALSE(saved.ok());
+    const std::string message = saved.status().message();
+    EXPECT_NE(message.find("map.pgm"), std::string::npos) << message;
+    EXPECT_NE(message.find(source), std::string::npos) << message;
+    // Named once: the image's own error names it.
+    EXPECT_EQ(message.find("map.pgm"), message.rfind("map.pgm")) << message;
+    EXPECT_FALSE(testing::FileExists(dir + "/map.lmap"));
+  }
 }
 
 TEST(RowEncoderTest, TruncatedImageFailsNamingItAndWritesNothing) {
