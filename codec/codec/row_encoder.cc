@@ -181,13 +181,19 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
   std::vector<std::vector<std::uint8_t>> tiles(layout.count());
   int next_tile_row = layout.tiles_y - 1;
   std::uint32_t last_room_id = 0;
+  std::uint64_t walls = 0, segments = 0;
   for (int j = block_rows - 1; j >= 0; --j) {
     const int y0 = j * kLayerBlockCells;
     const int y1 = std::min(frame.height, y0 + kLayerBlockCells);
     LINEMAP_RETURN_IF_ERROR(rows.ReadDownTo(y0));
     if (options.vector_layers) {
-      LINEMAP_ASSIGN_OR_RETURN(items[static_cast<std::size_t>(j)],
-                               BlockRowLayers(rows, frame, options, y0, y1, &last_room_id));
+      VectorLayers& row = items[static_cast<std::size_t>(j)];
+      LINEMAP_ASSIGN_OR_RETURN(row, BlockRowLayers(rows, frame, options, y0, y1, &last_room_id));
+      // A file the decoders' default limits refuse fails before the rest
+      // of the map is coded.
+      walls += row.walls.size();
+      segments += WallSegmentCount(row.walls);
+      LINEMAP_RETURN_IF_ERROR(CheckWallsWithinDefaultLimits(walls, segments));
     }
     for (; next_tile_row >= 0 && next_tile_row * layout.tile_size >= y0; --next_tile_row) {
       const int t0 = next_tile_row * layout.tile_size;
@@ -214,7 +220,6 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
   // Room ids from the blocks are unique but follow the reading order, top
   // first: numbered 1, 2, ... in file order.
   NumberItemsInOrder(/*renumber_rooms=*/true, &all.rooms, &all.furniture);
-  LINEMAP_RETURN_IF_ERROR(CheckLayersWithinDefaultLimits(all));
   return WriteV2(frame, options, all, side, /*exact=*/true, kCellChunk,
                  CellBody(layout.tile_size, tiles));
 }

@@ -3,8 +3,8 @@
 // read a row of layer blocks at a time (2048 rows); each block row's layers
 // are extracted block by block, and the tiles whose rows the read block
 // rows cover are coded at once; the layers are ordered by section at the
-// end. What it holds is a block row of cells, the tiles' coded bytes and
-// the layers.
+// end. What it holds is a block row of cells (or a tile row, with tiles
+// taller than a block), the tiles' coded bytes and the layers.
 //
 // The file is the one EncodeLmap writes for the same grid: EncodeLmap codes
 // every map that EncodesByRows() accepts through this encoder.

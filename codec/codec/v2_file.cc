@@ -37,10 +37,18 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
 }
 
 Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
-  const DecodeLimits defaults;
+  return CheckWallsWithinDefaultLimits(layers.walls.size(), WallSegmentCount(layers.walls));
+}
+
+std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls) {
   std::uint64_t segments = 0;
-  for (const WallPolyline& wall : layers.walls) segments += wall.points.size() - 1;
-  if (layers.walls.size() > defaults.max_segments || segments > defaults.max_segments) {
+  for (const WallPolyline& wall : walls) segments += wall.points.size() - 1;
+  return segments;
+}
+
+Status CheckWallsWithinDefaultLimits(std::uint64_t walls, std::uint64_t segments) {
+  const DecodeLimits defaults;
+  if (walls > defaults.max_segments || segments > defaults.max_segments) {
     return ResourceExhaustedError(
         "the walls have " + std::to_string(segments) +
         " segments, more than decoders read by default (2^24): save the cells only (vector "

@@ -44,6 +44,10 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
 // huge map of scattered specks the covering walls alone could pass the
 // segment limit.
 Status CheckLayersWithinDefaultLimits(const VectorLayers& layers);
+// The same for `walls` polylines of `segments` segments in all (a check
+// made as the walls are found, before the rest of the map is coded).
+Status CheckWallsWithinDefaultLimits(std::uint64_t walls, std::uint64_t segments);
+std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls);
 
 }  // namespace linemap
 
