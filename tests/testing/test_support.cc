@@ -65,6 +65,15 @@ std::vector<std::string> FindBareImages(const std::string& dir) {
   return out;
 }
 
+Grid TiledMap(const Grid& map, int width, int height) {
+  Grid tiled(width, height, Cell::kUnknown);
+  tiled.meta = map.meta;
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c) tiled.set(c, r, map.at(c % map.width(), r % map.height()));
+  }
+  return tiled;
+}
+
 std::string MakeTempDir(const std::string& tag) {
   static std::atomic<int> counter{0};
   const char* env = std::getenv("LINEMAP_TEST_TMP");

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "linemap/grid.h"
+
 namespace linemap::testing {
 
 // The project's source folder.
@@ -29,6 +31,11 @@ void WriteFile(const std::string& path, const std::string& contents);
 std::string ReadFile(const std::string& path);
 bool FileExists(const std::string& path);
 std::vector<std::string> ListDir(const std::string& dir);
+
+// A width x height map of copies of `map` side by side (its metadata):
+// maps larger than a layer block (2048 cells) or section (4096) with walls,
+// rooms and furniture in every block.
+Grid TiledMap(const Grid& map, int width, int height);
 
 struct CliResult {
   int exit_code = -1;

@@ -190,11 +190,7 @@ TEST(CmdEncodeTest, FileCodedAsTheImageIsReadIsTheLoadedMapsFile) {
   StatusOr<Grid> depot = LoadRosMap(CopyDepot(dir));
   ASSERT_TRUE(depot.ok());
   // 4300 x 620 cells: two layer sections, read a block row at a time.
-  Grid grid(4300, 620, Cell::kUnknown);
-  grid.meta = depot->meta;
-  for (int r = 0; r < grid.height(); ++r) {
-    for (int c = 0; c < grid.width(); ++c) grid.set(c, r, depot->at(c % 604, r % 307));
-  }
+  const Grid grid = testing::TiledMap(*depot, 4300, 620);
   ASSERT_TRUE(SaveRosMap(dir + "/wide.yaml", grid, Durability::kUnsynced).ok());
   const CliResult rows =
       RunCli({"encode", dir + "/wide.yaml", "-o", dir + "/rows.lmap", "--no-png-ratio", "--json"});

@@ -190,13 +190,7 @@ TEST(CodecV2Test, LayerBlocksOnManyThreadsGiveTheBytesOfOne) {
   // finish in any order.
   auto depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
   ASSERT_TRUE(depot.ok());
-  Grid grid(4100, 700, Cell::kUnknown);
-  grid.meta = depot->meta;
-  for (int r = 0; r < grid.height(); ++r) {
-    for (int c = 0; c < grid.width(); ++c) {
-      grid.set(c, r, depot->at(c % depot->width(), r % depot->height()));
-    }
-  }
+  const Grid grid = testing::TiledMap(*depot, 4100, 700);
   EncodeOptions one, three;
   one.max_threads = 1;
   three.max_threads = 3;

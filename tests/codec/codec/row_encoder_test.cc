@@ -21,13 +21,7 @@ namespace {
 Grid DepotCopies(int width, int height) {
   const StatusOr<Grid> depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
   EXPECT_TRUE(depot.ok());
-  Grid grid(width, height, Cell::kUnknown);
-  grid.meta = depot->meta;
-  for (int r = 0; r < height; ++r) {
-    for (int c = 0; c < width; ++c)
-      grid.set(c, r, depot->at(c % depot->width(), r % depot->height()));
-  }
-  return grid;
+  return testing::TiledMap(*depot, width, height);
 }
 
 std::vector<std::uint8_t> Bytes(const std::string& text) {
@@ -119,13 +113,7 @@ TEST(RowEncoderTest, SectionsSmallerThanABlockDecodeExactly) {
   const StatusOr<Grid> willow =
       LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
   ASSERT_TRUE(willow.ok());
-  Grid tiled(4300, 1200, Cell::kUnknown);
-  tiled.meta = willow->meta;
-  for (int r = 0; r < tiled.height(); ++r) {
-    for (int c = 0; c < tiled.width(); ++c) {
-      tiled.set(c, r, willow->at(c % willow->width(), r % willow->height()));
-    }
-  }
+  const Grid tiled = testing::TiledMap(*willow, 4300, 1200);
   for (const Grid* grid : std::vector<const Grid*>{&*willow, &tiled}) {
     for (const int side : {16, 700, 1000}) {
       EncodeOptions options;
