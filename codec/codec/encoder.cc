@@ -130,9 +130,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   return WriteV2(FrameOf(grid), options, layers, section_side, exact, kBlockChunk, block_cells);
 }
 
-}  // namespace
-
-StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
+// The file EncodeLmap returns (its progress reports aside).
+StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_RETURN_IF_ERROR(CheckEncodeInput(grid, options));
   if (options.format_v1) return EncodeLmapV1(grid, options);
   if (options.tolerance_cells == 0) return EncodeV2(grid, options);
@@ -146,6 +145,14 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOpt
   exact_options.tolerance_cells = 0;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> exact, EncodeV2(grid, exact_options));
   return within.size() < exact.size() ? within : exact;
+}
+
+}  // namespace
+
+StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options) {
+  StatusOr<std::vector<std::uint8_t>> file = EncodeFile(grid, options);
+  if (file.ok() && options.progress) options.progress(1.0);
+  return file;
 }
 
 namespace {
@@ -189,7 +196,10 @@ StatusOr<std::vector<std::uint8_t>> EncodeMapFile(const std::string& map_path,
   MapFileRows rows(reader.get());
   const MapFrame frame{reader->width(), reader->height(), reader->meta()};
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmapByRows(frame, options, &rows);
-  if (bytes.ok()) return bytes;
+  if (bytes.ok()) {
+    if (options.progress) options.progress(1.0);
+    return bytes;
+  }
   // A defect of the image names the image; of a map YAML's image, the YAML
   // too (as LoadRosMap says it).
   const bool names_the_map = rows.read_failed() && reader->is_bare_image();

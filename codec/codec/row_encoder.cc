@@ -212,6 +212,9 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
       }
       rows.FreeFrom(t0);
     }
+    if (options.progress) {
+      options.progress(static_cast<double>(block_rows - j) / (block_rows + 1));
+    }
   }
   VectorLayers all;
   for (VectorLayers& row : items) AppendItems(std::move(row), &all);

@@ -1,6 +1,8 @@
 // linemap encode MAP -o OUT.lmap [--raster-only] [--tolerance 0] [--threads N]
 //                 [--lossy [--simplify-free]] [--method linemap|rmline] [--epsilon E]
 //                 [--pose X,Y[,YAW]] [--json]
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -15,6 +17,7 @@
 #include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
+#include "tools/bench/progress.h"
 #include "tools/linemap/bag_input.h"
 #include "tools/linemap/commands.h"
 #include "tools/linemap/json.h"
@@ -267,8 +270,8 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
 // no pose to check on it. Returns the exit code, or nothing when the map
 // is to be loaded.
 std::optional<int> SaveAsRead(const std::string& map_path, const std::string& out,
-                              const ParsedArgs& parsed, const EncodeOptions& options,
-                              double start) {
+                              const ParsedArgs& parsed, const EncodeOptions& options, double start,
+                              bench::ProgressBar* bar) {
   if (IsLmapFile(map_path) || options.tolerance_cells != 0 || options.format_v1 ||
       options.robot_pose) {
     return std::nullopt;
@@ -284,7 +287,10 @@ std::optional<int> SaveAsRead(const std::string& map_path, const std::string& ou
   StatusOr<LmapSaveSummary> saved =
       SaveRosMapAsLmap(map_path, out, options, *load,
                        parsed.Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
-  if (!saved.ok()) return ReportError("encode", saved.status());
+  if (!saved.ok()) {
+    bar->Finish();
+    return ReportError("encode", saved.status());
+  }
   EncodeReport report;
   report.width = saved->width;
   report.height = saved->height;
@@ -312,8 +318,17 @@ int RunEncode(const std::vector<std::string>& args) {
   if (!output_ok.ok()) return ReportError("encode", output_ok);
   StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);
   if (!options.ok()) return ReportError("encode", options.status());
+  // A bar on stderr when it is a terminal (not with --json): a huge map
+  // takes seconds.
+  bench::ProgressBar bar(100, stderr, !parsed->Has("--json") && isatty(fileno(stderr)) != 0);
+  options->progress = [&bar](double done) {
+    bar.Update(static_cast<std::size_t>(done * 100), "encoding");
+    if (done >= 1.0) bar.Finish();  // before the report
+  };
   const double start = NowSeconds();
-  if (std::optional<int> code = SaveAsRead(map_path, *out, *parsed, *options, start)) return *code;
+  if (std::optional<int> code = SaveAsRead(map_path, *out, *parsed, *options, start, &bar)) {
+    return *code;
+  }
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("encode", grid.status());
   if (options->robot_pose) {
@@ -332,6 +347,7 @@ int RunEncode(const std::vector<std::string>& args) {
     png_task = std::async(std::launch::deferred, make_png);
   }
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *options);
+  bar.Finish();
   if (!bytes.ok()) return ReportError("encode", bytes.status().WithContext("'" + map_path + "'"));
   Status written = WriteFileAtomic(
       *out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),

@@ -127,6 +127,22 @@ TEST(RowEncoderTest, SectionsSmallerThanABlockDecodeExactly) {
   }
 }
 
+TEST(RowEncoderTest, ProgressRisesToOneAfterEachBlockRow) {
+  // 700 x 4300 cells: three block rows, then the file.
+  std::vector<double> reports;
+  EncodeOptions options;
+  options.progress = [&reports](double done) { reports.push_back(done); };
+  ASSERT_TRUE(EncodeLmap(DepotCopies(700, 4300), options).ok());
+  ASSERT_EQ(reports.size(), 4u);
+  for (std::size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i], reports[i - 1]);
+  EXPECT_GT(reports.front(), 0.0);
+  EXPECT_EQ(reports.back(), 1.0);
+  // A map of one section reports once, when its file is complete.
+  reports.clear();
+  ASSERT_TRUE(EncodeLmap(DepotCopies(300, 200), options).ok());
+  EXPECT_EQ(reports, std::vector<double>{1.0});
+}
+
 TEST(RowEncoderTest, RoomsAreNumberedInFileOrder) {
   const Grid grid = DepotCopies(4200, 700);
   StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid);
