@@ -40,6 +40,7 @@ const CommandSpec kEncodeSpec = {
     "map over 4096 cells a side is coded as the image is read, a row of 2048-\n"
     "cell blocks at a time, without holding the map: the same bytes (0.8-0.9\n"
     "bytes of memory per cell on a 282-Mcell map, whose grid alone is 1).\n"
+    "A progress bar is drawn on stderr when it is a terminal (not with --json).\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
     "map or the image its YAML names.",
