@@ -1,6 +1,6 @@
 // The exact 2.x encoder for maps given a row at a time (row_encoder.h).
 //
-// Why a band's tiles can be coded before the rest of the map is read: the
+// Why a block row's tiles can be coded before the rest of the map is read: the
 // hints a tile is coded against (spec/format.md 6.2) are drawn from the
 // items that reach it, and every item lies inside the layer block it was
 // extracted from (ExtractBlockLayers checks it), so only the items of the
@@ -11,7 +11,9 @@
 // either direction, spec 8.1, and an outline's whatever vertex it starts
 // at), and only rooms, whose chains clear the room fill of rooms drawn
 // before, are drawn in order; grouping keeps the rooms of a block in the
-// order they were extracted, and rooms of two blocks share no cell.
+// order they were extracted (a block lies in one section: EncodesByRows
+// takes sections of whole blocks only), and rooms of two blocks share no
+// cell.
 #include "codec/codec/row_encoder.h"
 
 #include <algorithm>
