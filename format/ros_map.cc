@@ -323,12 +323,12 @@ namespace {
 
 // Loading holds the grid and one row of samples, never the image (2 bytes
 // per pixel per channel as quanta).
-StatusOr<Grid> ReadAllRows(MapRowReader& reader) {
-  Grid grid(reader.width(), reader.height());
-  grid.meta = reader.meta();
+StatusOr<Grid> ReadAllRows(MapRowReader* reader) {
+  Grid grid(reader->width(), reader->height());
+  grid.meta = reader->meta();
   // Image row 0 is the top of the map.
-  for (int row = reader.height() - 1; row >= 0; --row) {
-    LINEMAP_RETURN_IF_ERROR(reader.ReadRow(grid.mutable_cells().data() + grid.Index(0, row)));
+  for (int row = reader->height() - 1; row >= 0; --row) {
+    LINEMAP_RETURN_IF_ERROR(reader->ReadRow(grid.mutable_cells().data() + grid.Index(0, row)));
   }
   return grid;
 }
@@ -339,12 +339,12 @@ StatusOr<Grid> LoadMapImage(const std::string& image_path, const MapMetadata& me
                             std::uint64_t max_cells) {
   LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader,
                            MapRowReader::OpenImage(image_path, meta, max_cells));
-  return ReadAllRows(*reader);
+  return ReadAllRows(reader.get());
 }
 
 StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options) {
   LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader, MapRowReader::Open(path, options));
-  StatusOr<Grid> grid = ReadAllRows(*reader);
+  StatusOr<Grid> grid = ReadAllRows(reader.get());
   if (!grid.ok() && IsYamlPath(path)) return grid.status().WithContext(Quoted(path));
   return grid;
 }
