@@ -173,7 +173,7 @@ bool EncodesByRows(int width, int height, const EncodeOptions& options) {
 namespace {
 
 StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const EncodeOptions& options,
-                                                RowStore& rows) {
+                                                RowStore* rows) {
   const int block_rows = (frame.height + kLayerBlockCells - 1) / kLayerBlockCells;
   const TileLayout layout(frame.width, frame.height, options.tile_size_cells);
   // Each block row's items in the order extracted; a tile row is coded
@@ -187,10 +187,10 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
   for (int j = block_rows - 1; j >= 0; --j) {
     const int y0 = j * kLayerBlockCells;
     const int y1 = std::min(frame.height, y0 + kLayerBlockCells);
-    LINEMAP_RETURN_IF_ERROR(rows.ReadDownTo(y0));
+    LINEMAP_RETURN_IF_ERROR(rows->ReadDownTo(y0));
     if (options.vector_layers) {
       VectorLayers& row = items[static_cast<std::size_t>(j)];
-      LINEMAP_ASSIGN_OR_RETURN(row, BlockRowLayers(rows, frame, options, y0, y1, &last_room_id));
+      LINEMAP_ASSIGN_OR_RETURN(row, BlockRowLayers(*rows, frame, options, y0, y1, &last_room_id));
       // A file the decoders' default limits refuse fails before the rest
       // of the map is coded.
       walls += row.walls.size();
@@ -205,14 +205,14 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
       const int j0 = t0 / kLayerBlockCells;
       const int j1 = (t1 - 1) / kLayerBlockCells;
       if (j0 == j1) {
-        CodeTileRow(rows, layout, next_tile_row, items[static_cast<std::size_t>(j0)], options,
+        CodeTileRow(*rows, layout, next_tile_row, items[static_cast<std::size_t>(j0)], options,
                     &tiles);
       } else {
         VectorLayers reaching;
         for (int k = j0; k <= j1; ++k) AppendItems(items[static_cast<std::size_t>(k)], &reaching);
-        CodeTileRow(rows, layout, next_tile_row, reaching, options, &tiles);
+        CodeTileRow(*rows, layout, next_tile_row, reaching, options, &tiles);
       }
-      rows.FreeFrom(t0);
+      rows->FreeFrom(t0);
     }
     if (options.progress) {
       options.progress(static_cast<double>(block_rows - j) / (block_rows + 1));
@@ -235,13 +235,13 @@ StatusOr<std::vector<std::uint8_t>> EncodeLmapByRows(const MapFrame& frame,
                                                      const EncodeOptions& options,
                                                      CellRowSource* source) {
   RowStore rows(frame.width, frame.height, source);
-  return EncodeBands(frame, options, rows);
+  return EncodeBands(frame, options, &rows);
 }
 
 StatusOr<std::vector<std::uint8_t>> EncodeGridByRows(const Grid& grid,
                                                      const EncodeOptions& options) {
   RowStore rows(&grid);
-  return EncodeBands(MapFrame{grid.width(), grid.height(), grid.meta}, options, rows);
+  return EncodeBands(MapFrame{grid.width(), grid.height(), grid.meta}, options, &rows);
 }
 
 }  // namespace linemap
