@@ -759,11 +759,12 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
   }
   // A map larger than a block: the line extractor and the segmentation need
   // tens of bytes per cell, so they run block by block, and walls, rooms and
-  // furniture end at the block borders. The blocks are extracted on the
-  // threads the options allow, each block's walls and rooms one after the
-  // other on its thread: two blocks at a time hold about what one block
-  // held with its walls and rooms on two threads, and keep both cores busy
-  // (on the 282-Mcell office map the walls task ended long before the rooms).
+  // furniture end at the block borders. The blocks are extracted
+  // kMaxBlocksAtOnce at a time (one with options.max_threads 1), each
+  // block's walls and rooms one after the other on its thread: two blocks
+  // at a time hold about what one block held with its walls and rooms on
+  // two threads, and keep both cores busy (on the 282-Mcell office map the
+  // walls task ended long before the rooms).
   // They are appended in block order, so the result does not depend on the
   // threads.
   const int blocks_x = (grid.width() + kLayerBlockCells - 1) / kLayerBlockCells;
@@ -772,7 +773,8 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
   EncodeOptions block_options = options;
   block_options.max_threads = 1;
   std::vector<StatusOr<VectorLayers>> block_layers(blocks, VectorLayers{});
-  ForEachIndexParallel(blocks, options.max_threads, [&](std::uint64_t k) {
+  const int threads = options.max_threads == 1 ? 1 : kMaxBlocksAtOnce;
+  ForEachIndexParallel(blocks, threads, [&](std::uint64_t k) {
     const int x0 = static_cast<int>(k % blocks_x) * kLayerBlockCells;
     const int y0 = static_cast<int>(k / blocks_x) * kLayerBlockCells;
     block_layers[k] = ExtractBlockLayers(BlockOf(grid, x0, y0), x0, y0, block_options, with_chains);

@@ -30,13 +30,6 @@
 namespace linemap {
 namespace {
 
-// Blocks whose layers are extracted at once. Each holds some 55 MB while
-// it is (a 2048 x 2048 block at about 13 bytes a cell), so that with one
-// per core a 12-core machine would hold 660 MB: two keep the peak of the
-// 282-Mcell office map under 0.9 bytes per cell on any machine, the
-// tiles still being coded on every core.
-constexpr int kMaxBlocksAtOnce = 2;
-
 int SectionSide(int width, int height, const EncodeOptions& options) {
   return LayerSectionSide(width, height, options.layer_section_cells, kSectionCells);
 }
