@@ -130,7 +130,7 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const LayerIndex& 
   LINEMAP_RETURN_IF_ERROR(DecodeTileCells(at, blocks_len, block_hints.data(), b.bw, b.bh,
                                           CellRect{0, 0, b.bw, b.bh}, b.blocks.data()));
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
-  return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h,
+  return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h, h,
                         cells, stride);
 }
 
@@ -187,7 +187,7 @@ Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, const LayerIndex&
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
   return DecodeTilesInWindow(
       body, layout, index, window, threads, out,
-      [&](CellRect t, const std::uint8_t* data, std::size_t size, Cell* cells,
+      [&](CellRect t, const std::uint8_t* data, std::size_t size, int /*rows*/, Cell* cells,
           std::ptrdiff_t stride) { return DecodeTile(data, size, layers, t, f, cells, stride); });
 }
 

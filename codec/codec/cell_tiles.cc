@@ -114,17 +114,20 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
   return DecodeTilesInWindow(
       body, layout, index, window, threads, out,
-      [&](CellRect t, const std::uint8_t* data, std::size_t size, Cell* cells,
+      [&](CellRect t, const std::uint8_t* data, std::size_t size, int rows, Cell* cells,
           std::ptrdiff_t stride) {
-        const int tw = t.x1 - t.x0;
+        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
         // Without layers every hint is zero: none to draw.
         if (layers.empty()) {
-          return DecodeTileRows(data, size, nullptr, 0, tw, t.y1 - t.y0, cells, stride);
+          return DecodeTileRows(data, size, nullptr, 0, tw, th, rows, cells, stride);
         }
         // The hints are drawn where the cells go, the decode reading each
-        // row's before writing its cells over them.
-        layers.DrawTileHints(t, reinterpret_cast<std::uint8_t*>(cells), stride);
-        return DecodeTileRowsOverHints(data, size, tw, t.y1 - t.y0, cells, stride);
+        // row's before writing its cells over them; the last row decoded
+        // reads the hints of the row after it.
+        CellRect drawn = t;
+        drawn.y1 = std::min(t.y1, t.y0 + rows + 1);
+        layers.DrawTileHints(drawn, reinterpret_cast<std::uint8_t*>(cells), stride);
+        return DecodeTileRowsOverHints(data, size, tw, th, rows, cells, stride);
       });
 }
 

@@ -108,7 +108,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   // The layers in the order LAYR lists them: the cells' hints are drawn
   // from them in that order, as the decoder draws them.
   const int section_side =
-      LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells, kSectionCells);
+      LayerSectionSide(grid.width(), grid.height(), options.layer_section_cells);
   ArrangeLayersInSections(grid.width(), grid.height(), section_side, &layers.walls, &layers.rooms,
                           &layers.furniture);
   LINEMAP_RETURN_IF_ERROR(CheckLayersWithinDefaultLimits(layers));

@@ -31,7 +31,7 @@ namespace linemap {
 namespace {
 
 int SectionSide(int width, int height, const EncodeOptions& options) {
-  return LayerSectionSide(width, height, options.layer_section_cells, kSectionCells);
+  return LayerSectionSide(width, height, options.layer_section_cells);
 }
 
 // The map's rows read so far and still needed, each held on its own so

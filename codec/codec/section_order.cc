@@ -79,11 +79,11 @@ void RenumberRooms(bool always, std::vector<RoomOutline>* rooms,
 
 }  // namespace
 
-int LayerSectionSide(int width, int height, int requested, int block_side) {
+int LayerSectionSide(int width, int height, int requested) {
   if (requested > 0) return requested;
   const int side = std::max(width, height);
-  if (side <= block_side) return std::max(side, static_cast<int>(kMinSectionSide));
-  return block_side;
+  if (side <= kOneSectionCells) return std::max(side, static_cast<int>(kMinSectionSide));
+  return kSectionCells;
 }
 
 void OrderItemsInSections(int width, int height, int side, std::vector<WallPolyline>* walls,

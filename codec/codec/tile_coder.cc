@@ -444,6 +444,10 @@ struct TileRows {
   // before its cells are written over them.
   bool hints_in_canvas = false;
   LayerTerms layer_terms;  // of the layer context (models 4-11)
+  // Decoder: the rows to decode, from the tile's first (1..height; a
+  // window that ends inside the tile needs no more). The scan is the same
+  // up to there, so those rows decode exactly as in a full decode.
+  int rows_wanted = 0;
 };
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
@@ -471,7 +475,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
   // The hints of the row below, kept from the canvas (hints_in_canvas).
   std::vector<std::uint8_t> hints_below_kept(t.hints_in_canvas ? static_cast<std::size_t>(tw) : 0);
   unsigned row_state = kStateNone;
-  for (int r = 0; r < th; ++r) {
+  const int rows_end = Io::kEncoding ? th : t.rows_wanted;
+  for (int r = 0; r < rows_end; ++r) {
     std::uint8_t* cur = ring.Row(r + 2);
     const std::uint8_t* n1 = ring.Row(r + 1);
     const std::uint8_t* n2 = ring.Row(r);
@@ -675,6 +680,9 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
   }
   DecodeIo io(data + 1, size - 1);
   CodeTileAs(io, rows, model);
+  // A tile decoded in part ends before its end marker: the chunk's CRC has
+  // checked its bytes, and the range decoder never reads past them.
+  if (rows.rows_wanted < rows.height) return Status::Ok();
   if (CodeEndMarker(io) != kEndMarker) {
     return CorruptError("tile cells: range-coded data is malformed or truncated");
   }
@@ -694,6 +702,7 @@ TileRows GridTile(int width, CellRect tile, const std::uint8_t* hints) {
   const std::size_t origin = static_cast<std::size_t>(tile.y0) * width + tile.x0;
   if (hints != nullptr) rows.hints = hints + origin;
   rows.hint_stride = rows.cell_stride = rows.canvas_stride = width;
+  rows.rows_wanted = rows.height;
   return rows;
 }
 
@@ -742,12 +751,16 @@ namespace {
 
 // The rows a decode writes into `canvas`, reading `hints`; refuses a
 // negative size.
-StatusOr<TileRows> CanvasRows(int tile_width, int tile_height, Cell* canvas,
+StatusOr<TileRows> CanvasRows(int tile_width, int tile_height, int rows_wanted, Cell* canvas,
                               std::ptrdiff_t canvas_stride, const std::uint8_t* hints,
                               std::ptrdiff_t hint_stride) {
   if (tile_width < 0 || tile_height < 0) {
     return InvalidArgumentError("tile of " + std::to_string(tile_width) + " x " +
                                 std::to_string(tile_height) + " cells");
+  }
+  if (rows_wanted < std::min(tile_height, 1) || rows_wanted > tile_height) {
+    return InvalidArgumentError("rows wanted " + std::to_string(rows_wanted) + " of a tile of " +
+                                std::to_string(tile_height));
   }
   TileRows rows;
   rows.width = tile_width;
@@ -756,23 +769,25 @@ StatusOr<TileRows> CanvasRows(int tile_width, int tile_height, Cell* canvas,
   rows.canvas_stride = canvas_stride;
   rows.hints = hints;
   rows.hint_stride = hint_stride;
+  rows.rows_wanted = rows_wanted;
   return rows;
 }
 
 }  // namespace
 
 Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
-                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
-                      std::ptrdiff_t canvas_stride) {
-  LINEMAP_ASSIGN_OR_RETURN(TileRows rows, CanvasRows(tile_width, tile_height, canvas, canvas_stride,
-                                                     hints, hint_stride));
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, int rows_wanted,
+                      Cell* canvas, std::ptrdiff_t canvas_stride) {
+  LINEMAP_ASSIGN_OR_RETURN(TileRows rows, CanvasRows(tile_width, tile_height, rows_wanted, canvas,
+                                                     canvas_stride, hints, hint_stride));
   return DecodeTile(data, size, rows);
 }
 
 Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
-                               int tile_height, Cell* canvas, std::ptrdiff_t canvas_stride) {
+                               int tile_height, int rows_wanted, Cell* canvas,
+                               std::ptrdiff_t canvas_stride) {
   LINEMAP_ASSIGN_OR_RETURN(
-      TileRows rows, CanvasRows(tile_width, tile_height, canvas, canvas_stride,
+      TileRows rows, CanvasRows(tile_width, tile_height, rows_wanted, canvas, canvas_stride,
                                 reinterpret_cast<const std::uint8_t*>(canvas), canvas_stride));
   rows.hints_in_canvas = true;
   const Status status = DecodeTile(data, size, rows);

@@ -109,14 +109,18 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
 // map too large to hold whole: row r of the tile (grid row y0 + r) starts at
 // cells + r * cell_stride, hints + r * hint_stride (hints null = all zero)
 // and canvas + r * canvas_stride. Gives and reads the same bytes as the
-// whole-grid calls for the same tile.
+// whole-grid calls for the same tile. The decoders write only the tile's
+// first `rows_wanted` rows (1..tile_height; 0 for an empty tile), as a
+// full decode would: a window that ends inside a tile stops there. A tile
+// decoded in part is not checked for its end (its chunk's CRC checks the
+// bytes); the rows it reads hints of are those rows and the one after.
 std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_stride,
                                          const std::uint8_t* hints, std::ptrdiff_t hint_stride,
                                          int tile_width, int tile_height,
                                          TileModel model = TileModel::kTemplate);
 Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uint8_t* hints,
-                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, Cell* canvas,
-                      std::ptrdiff_t canvas_stride);
+                      std::ptrdiff_t hint_stride, int tile_width, int tile_height, int rows_wanted,
+                      Cell* canvas, std::ptrdiff_t canvas_stride);
 
 // The same with the hints already drawn into `canvas` (row r of the
 // tile's hints at canvas + r * canvas_stride, as bytes): each row's hints
@@ -125,7 +129,8 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
 // cost more to fault in than drawing the hints). On an error every cell of
 // the tile is unknown.
 Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
-                               int tile_height, Cell* canvas, std::ptrdiff_t canvas_stride);
+                               int tile_height, int rows_wanted, Cell* canvas,
+                               std::ptrdiff_t canvas_stride);
 
 }  // namespace linemap
 

@@ -58,12 +58,15 @@ Status DecodeTilesInWindow(const std::vector<std::uint8_t>& body, const TileLayo
     if (t.x0 >= window.x0 && t.x1 <= window.x1 && t.y0 >= window.y0 && t.y1 <= window.y1) {
       // A tile inside the window decodes straight into it.
       status[k] =
-          decode(t, data, size,
+          decode(t, data, size, th,
                  out + static_cast<std::ptrdiff_t>(t.y0 - window.y0) * ww + (t.x0 - window.x0), ww);
       return;
     }
+    // Rows are coded from the tile's first: those after the window's last
+    // are not needed (a window near a tile's first rows decodes a fraction).
+    const int rows = std::min(t.y1, window.y1) - t.y0;
     std::vector<Cell> cells(static_cast<std::size_t>(tw) * th, Cell::kUnknown);
-    status[k] = decode(t, data, size, cells.data(), tw);
+    status[k] = decode(t, data, size, rows, cells.data(), tw);
     if (!status[k].ok()) return;
     const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);
     for (int r = std::max(t.y0, window.y0); r < std::min(t.y1, window.y1); ++r) {

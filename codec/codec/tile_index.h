@@ -37,9 +37,11 @@ StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const T
 std::vector<std::uint64_t> TilesMeeting(const TileLayout& layout, CellRect window);
 
 // Writes the cells of tile `tile` from its `size` bytes at `data`: row r of
-// the tile at cells + r * stride.
+// the tile at cells + r * stride, for at least its first `rows` rows (the
+// ones the window needs; a decoder may stop after them, as the scan codes
+// the rows of a tile in order).
 using TileDecoder = std::function<Status(CellRect tile, const std::uint8_t* data, std::size_t size,
-                                         Cell* cells, std::ptrdiff_t stride)>;
+                                         int rows, Cell* cells, std::ptrdiff_t stride)>;
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
 // `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0, on up to

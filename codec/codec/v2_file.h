@@ -14,13 +14,6 @@
 
 namespace linemap {
 
-// The side of the layers' sections on maps larger than it (cells): twice
-// the blocks the layers are extracted in, so no item crosses a section. On
-// the 282-Mcell office map sections of 2048 cells (77) made the file 1.5 %
-// larger than sections of 4096 (24), whose windows still read about 1/24 of
-// the layers.
-inline constexpr int kSectionCells = 2 * kLayerBlockCells;
-
 // A map's size and metadata, as the header stores them.
 struct MapFrame {
   int width = 0;

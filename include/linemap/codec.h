@@ -56,7 +56,7 @@ struct EncodeOptions {
   int tile_size_cells = 1024;
   // Side of the square sections the vector layers are stored in (cells;
   // 0, the default, picks it: one section up to 4096 cells a side, sections
-  // of 4096 beyond; else at least 16). A window decodes only the layers of
+  // of 2048 beyond; else at least 16). A window decodes only the layers of
   // the sections that reach its tiles; each section costs a few bytes and
   // starts its models afresh.
   int layer_section_cells = 0;
@@ -225,8 +225,8 @@ struct LmapSaveSummary {
 // Saves the ROS map at `map_path` (a map YAML or a bare PGM / PNG image,
 // read as LoadRosMap(map_path, load) reads it) as `lmap_path`: the bytes
 // EncodeLmap writes for that grid, written atomically (as SaveLmap, with
-// `durability`). An exact file (tolerance 0) of a map larger than one
-// layer section (4096 cells a side) is coded as the image is read, a row of
+// `durability`). An exact file (tolerance 0) of a map over 4096 cells a
+// side (more than one layer section) is coded as the image is read, a row of
 // 2048-cell layer blocks at a time, so the grid is never held whole: the 20,768 x
 // 13,612-cell office map (282 Mcells) saves with a peak of 0.8-0.9 bytes
 // per cell, where loading its grid alone takes 1. Other files are coded from

@@ -179,7 +179,7 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
           EncodeTileRows(local_cells.data(), stride, local_hints.data(), stride, tw, th, model);
       ASSERT_EQ(data, EncodeTileCells(cells.data(), hints.data(), width, height, t, model));
       std::vector<Cell> out(local_cells.size(), Cell::kUnknown);
-      ASSERT_TRUE(DecodeTileRows(data.data(), data.size(), local_hints.data(), stride, tw, th,
+      ASSERT_TRUE(DecodeTileRows(data.data(), data.size(), local_hints.data(), stride, tw, th, th,
                                  out.data(), stride)
                       .ok());
       for (int y = 0; y < th; ++y) {
@@ -197,8 +197,46 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
         }
       }
       ASSERT_TRUE(
-          DecodeTileRowsOverHints(data.data(), data.size(), tw, th, over.data(), stride).ok());
+          DecodeTileRowsOverHints(data.data(), data.size(), tw, th, th, over.data(), stride).ok());
       ASSERT_EQ(over, out);
+    }
+  }
+}
+
+// A window that ends inside a tile decodes only the tile's first rows: they
+// equal the tile's cells, and the hints of the rows after the one following
+// them are not read (they hold other bytes here).
+TEST(TileCoderTest, FirstRowsOfATileDecodeAsInTheWholeTile) {
+  std::mt19937 rng(23);
+  for (int iter = 0; iter < 80; ++iter) {
+    const int tw = 1 + static_cast<int>(rng() % 120);
+    const int th = 2 + static_cast<int>(rng() % 40);
+    const std::vector<Cell> cells = RandomGrid(rng, tw, th);
+    std::vector<std::uint8_t> hints(cells.size());
+    for (auto& h : hints) h = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    const int rows = 1 + static_cast<int>(rng() % static_cast<unsigned>(th - 1));
+    for (TileModel model : {TileModel::kTemplate, TileModel::kLayerContext,
+                            TileModel::kMixedAllCells, TileModel::kMixedLayerAllCells}) {
+      const Bytes data = EncodeTileRows(cells.data(), tw, hints.data(), tw, tw, th, model);
+      std::vector<Cell> part(cells.size(), Cell::kUnknown);
+      ASSERT_TRUE(
+          DecodeTileRows(data.data(), data.size(), hints.data(), tw, tw, th, rows, part.data(), tw)
+              .ok());
+      // Over hints drawn for the rows decoded and the one after only.
+      std::vector<Cell> over(cells.size(), Cell::kOccupied);
+      std::memcpy(over.data(), hints.data(), static_cast<std::size_t>(tw) * (rows + 1));
+      ASSERT_TRUE(
+          DecodeTileRowsOverHints(data.data(), data.size(), tw, th, rows, over.data(), tw).ok());
+      const auto first = cells.begin() + static_cast<std::ptrdiff_t>(tw) * rows;
+      ASSERT_TRUE(std::equal(cells.begin(), first, part.begin())) << iter;
+      ASSERT_TRUE(std::equal(cells.begin(), first, over.begin())) << iter;
+      // Rows past those wanted are refused, as is none of a non-empty tile.
+      EXPECT_FALSE(DecodeTileRows(data.data(), data.size(), hints.data(), tw, tw, th, th + 1,
+                                  part.data(), tw)
+                       .ok());
+      EXPECT_FALSE(
+          DecodeTileRows(data.data(), data.size(), hints.data(), tw, tw, th, 0, part.data(), tw)
+              .ok());
     }
   }
 }
