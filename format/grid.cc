@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "format/large_vector.h"
+
 namespace linemap {
 
 const char* MapModeName(MapMode mode) {
@@ -17,9 +19,9 @@ const char* MapModeName(MapMode mode) {
 }
 
 Grid::Grid(int width, int height, Cell fill)
-    : width_(width < 0 ? 0 : width),
-      height_(height < 0 ? 0 : height),
-      cells_(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), fill) {}
+    : width_(width < 0 ? 0 : width), height_(height < 0 ? 0 : height) {
+  AssignLarge(&cells_, static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), fill);
+}
 
 CellCounts Grid::Count() const {
   CellCounts counts;

@@ -10,6 +10,7 @@
 #include <array>
 
 #include "codec/segment/byte_scan.h"
+#include "format/large_vector.h"
 
 namespace linemap {
 namespace {
@@ -57,7 +58,7 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
   // Neighbours already labelled are copied without a find where the
   // neighbourhood guarantees they are joined already (in 8-connectivity N
   // touches NW, NE and W; NW touches W).
-  std::vector<std::int32_t> provisional(mask.bits.size(), 0);
+  std::vector<std::int32_t> provisional = LargeVector<std::int32_t>(mask.bits.size(), 0);
   UnionFind table;
   const bool eight = connectivity == Connectivity::kEight;
   for (int row = 0; row < h; ++row) {

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "codec/segment/segment_internal.h"
+#include "format/large_vector.h"
 
 namespace linemap::segment_internal {
 namespace {
@@ -164,12 +165,12 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
     start[d] = acc;
     acc += n;
   }
-  std::vector<std::int32_t> order(static_cast<std::size_t>(acc));
+  std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
   for (std::size_t i = 0; i < dist.size(); ++i) {
     if (dist[i]) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
   }
   std::vector<std::int32_t>& parent = *parent_out;
-  parent.assign(dist.size(), -1);
+  AssignLarge<std::int32_t>(&parent, dist.size(), -1);
   // With a maximum room area, spaces joined by a wide narrowing are also
   // kept apart here, to be joined afterwards while their full areas allow.
   const bool keep_wide_narrowings = rule.max_room_cells > 0;
@@ -448,7 +449,8 @@ std::vector<std::uint16_t> ComputeClearance(const Grid& grid, RoomFlood* flood) 
   const int pw = w + 2, ph = h + 2;
   flood->width = w;
   flood->height = h;
-  std::vector<std::uint16_t> clearance(static_cast<std::size_t>(pw) * ph, 0);
+  std::vector<std::uint16_t> clearance =
+      LargeVector<std::uint16_t>(static_cast<std::size_t>(pw) * ph, 0);
   const Cell* cells = grid.cells().data();
   for (int r = 0; r < h; ++r) {
     std::uint16_t* out = clearance.data() + static_cast<std::size_t>(r + 1) * pw + 1;
