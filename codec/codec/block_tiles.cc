@@ -117,9 +117,10 @@ std::vector<std::uint8_t> EncodeTile(const Grid& decoded, const BlockCells& cell
   return std::move(out.mutable_bytes());
 }
 
-// Decodes tile t's data: row r of its cells at cells + r * stride.
+// Decodes tile t's data: row r of its cells at cells + r * stride, for
+// its first `rows` rows (the blocks are decoded whole: they are few).
 Status DecodeTile(const std::uint8_t* data, std::size_t size, const LayerIndex& layers, CellRect t,
-                  int f, Cell* cells, std::ptrdiff_t stride) {
+                  int f, int rows, Cell* cells, std::ptrdiff_t stride) {
   const int w = t.x1 - t.x0, h = t.y1 - t.y0;
   ByteCursor cursor(data, size);
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t blocks_len, cursor.ReadVarint("block data length"));
@@ -130,8 +131,8 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const LayerIndex& 
   LINEMAP_RETURN_IF_ERROR(DecodeTileCells(at, blocks_len, block_hints.data(), b.bw, b.bh,
                                           CellRect{0, 0, b.bw, b.bh}, b.blocks.data()));
   const std::vector<std::uint8_t> hints = HintsOfBlocks(b, w, h, f);
-  return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h, h,
-                        cells, stride);
+  return DecodeTileRows(at + blocks_len, cursor.remaining() - blocks_len, hints.data(), w, w, h,
+                        rows, cells, stride);
 }
 
 }  // namespace
@@ -185,10 +186,11 @@ Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, const LayerIndex&
   }
   const TileLayout layout(width, height, static_cast<int>(tile_size));
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
-  return DecodeTilesInWindow(
-      body, layout, index, window, threads, out,
-      [&](CellRect t, const std::uint8_t* data, std::size_t size, int /*rows*/, Cell* cells,
-          std::ptrdiff_t stride) { return DecodeTile(data, size, layers, t, f, cells, stride); });
+  return DecodeTilesInWindow(body, layout, index, window, threads, out,
+                             [&](CellRect t, const std::uint8_t* data, std::size_t size, int rows,
+                                 Cell* cells, std::ptrdiff_t stride) {
+                               return DecodeTile(data, size, layers, t, f, rows, cells, stride);
+                             });
 }
 
 }  // namespace linemap

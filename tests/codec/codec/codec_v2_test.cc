@@ -346,6 +346,36 @@ TEST(CodecV2Test, WindowsEqualTheCropOfTheWholeDecode) {
   }
 }
 
+// A file saved within a tolerance keeps its cells in BLKS tiles, whose
+// windows also stop inside a tile after the window's last row.
+TEST(CodecV2Test, WindowsOfToleranceFilesEqualTheCropOfTheirWholeDecode) {
+  std::mt19937 rng(8);
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(grid.ok());
+  EncodeOptions options;
+  options.tolerance_cells = 3;  // where blocks beat the exact cells on depot
+  options.tile_size_cells = 64;
+  auto bytes = EncodeLmap(*grid, options);
+  ASSERT_TRUE(bytes.ok());
+  auto contents = DecodeLmapContents(*bytes);
+  ASSERT_TRUE(contents.ok());
+  ASSERT_TRUE(std::any_of(contents->chunks.begin(), contents->chunks.end(),
+                          [](const LmapChunkInfo& c) { return c.type == "BLKS"; }));
+  auto whole = DecodeLmap(*bytes);
+  ASSERT_TRUE(whole.ok());
+  for (int trial = 0; trial < 40; ++trial) {
+    CellWindow w;
+    w.col0 = static_cast<int>(rng() % grid->width());
+    w.row0 = static_cast<int>(rng() % grid->height());
+    w.col1 = w.col0 + 1 + static_cast<int>(rng() % (grid->width() - w.col0));
+    w.row1 = w.row0 + 1 + static_cast<int>(rng() % 80);
+    w.row1 = std::min(w.row1, grid->height());
+    auto region = DecodeLmapRegion(*bytes, w);
+    ASSERT_TRUE(region.ok()) << region.status().ToString();
+    EXPECT_EQ(region->cells(), Crop(*whole, w).cells()) << trial;
+  }
+}
+
 TEST(CodecV2Test, WindowsOfVersionOneFilesAreCropped) {
   auto grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
   ASSERT_TRUE(grid.ok());
