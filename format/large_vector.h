@@ -25,12 +25,13 @@ void AdviseHugePages(const void* data, std::size_t bytes);
 // when it had to grow.
 template <typename T>
 void AssignLarge(std::vector<T>* v, std::size_t n, const T& value) {
+  const T fill = value;  // `value` may be an element of *v, freed below
   if (v->capacity() < n) {
     std::vector<T>().swap(*v);
     v->reserve(n);
     AdviseHugePages(v->data(), n * sizeof(T));
   }
-  v->assign(n, value);
+  v->assign(n, fill);
 }
 
 // n copies of `value`, as AssignLarge.

@@ -445,9 +445,10 @@ struct TileRows {
   bool hints_in_canvas = false;
   LayerTerms layer_terms;  // of the layer context (models 4-11)
   // Decoder: the rows to decode, from the tile's first (1..height; a
-  // window that ends inside the tile needs no more). The scan is the same
-  // up to there, so those rows decode exactly as in a full decode.
-  int rows_wanted = 0;
+  // window that ends inside the tile needs no more; DecodeTile refuses
+  // others). The scan is the same up to there, so those rows decode
+  // exactly as in a full decode.
+  int rows_wanted = -1;
 };
 
 // The scan shared by encoder and decoder (spec "Scan"). `cells` is read by
@@ -673,6 +674,10 @@ Status DecodeTile(const std::uint8_t* data, std::size_t size, const TileRows& ro
     if (size != 0) return CorruptError("tile cells: an empty tile has data");
     return Status::Ok();
   }
+  if (rows.rows_wanted < 1 || rows.rows_wanted > rows.height) {
+    return InvalidArgumentError("tile cells: rows wanted " + std::to_string(rows.rows_wanted) +
+                                " of " + std::to_string(rows.height));
+  }
   if (size == 0) return CorruptError("tile cells: no data");
   const unsigned model = data[0] & kModelMask;
   if (model > static_cast<unsigned>(TileModel::kMixedLayerAllCells)) {
@@ -792,8 +797,9 @@ Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int t
   rows.hints_in_canvas = true;
   const Status status = DecodeTile(data, size, rows);
   if (!status.ok()) {
-    // Rows not reached still hold hints, which are no cells.
-    for (int r = 0; r < tile_height; ++r) {
+    // Rows not reached still hold hints, which are no cells: the rows
+    // wanted and the one after them, whose hints were read.
+    for (int r = 0; r < std::min(tile_height, rows_wanted + 1); ++r) {
       std::fill_n(canvas + r * canvas_stride, tile_width, Cell::kUnknown);
     }
   }

@@ -111,9 +111,10 @@ Status DecodeTileCells(const std::uint8_t* data, std::size_t size, const std::ui
 // and canvas + r * canvas_stride. Gives and reads the same bytes as the
 // whole-grid calls for the same tile. The decoders write only the tile's
 // first `rows_wanted` rows (1..tile_height; 0 for an empty tile), as a
-// full decode would: a window that ends inside a tile stops there. A tile
-// decoded in part is not checked for its end (its chunk's CRC checks the
-// bytes); the rows it reads hints of are those rows and the one after.
+// full decode would: a window that ends inside a tile stops there, and its
+// buffers need only those rows and the one after (whose hints are read). A
+// tile decoded in part is not checked for its end (its chunk's CRC checks
+// the bytes).
 std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_stride,
                                          const std::uint8_t* hints, std::ptrdiff_t hint_stride,
                                          int tile_width, int tile_height,
@@ -127,7 +128,7 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
 // are read before its cells are written over them, so a tile needs no
 // buffer of hints of its own (a megabyte for a 1024-cell tile, whose pages
 // cost more to fault in than drawing the hints). On an error every cell of
-// the tile is unknown.
+// the rows wanted (and of the row after them) is unknown.
 Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
                                int tile_height, int rows_wanted, Cell* canvas,
                                std::ptrdiff_t canvas_stride);

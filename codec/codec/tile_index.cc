@@ -65,7 +65,8 @@ Status DecodeTilesInWindow(const std::vector<std::uint8_t>& body, const TileLayo
     // Rows are coded from the tile's first: those after the window's last
     // are not needed (a window near a tile's first rows decodes a fraction).
     const int rows = std::min(t.y1, window.y1) - t.y0;
-    std::vector<Cell> cells(static_cast<std::size_t>(tw) * th, Cell::kUnknown);
+    // Room for those rows and the one after, whose hints the last reads.
+    std::vector<Cell> cells(static_cast<std::size_t>(tw) * std::min(th, rows + 1), Cell::kUnknown);
     status[k] = decode(t, data, size, rows, cells.data(), tw);
     if (!status[k].ok()) return;
     const int c0 = std::max(t.x0, window.x0), c1 = std::min(t.x1, window.x1);

@@ -37,9 +37,9 @@ StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const T
 std::vector<std::uint64_t> TilesMeeting(const TileLayout& layout, CellRect window);
 
 // Writes the cells of tile `tile` from its `size` bytes at `data`: row r of
-// the tile at cells + r * stride, for at least its first `rows` rows (the
-// ones the window needs; a decoder may stop after them, as the scan codes
-// the rows of a tile in order).
+// the tile at cells + r * stride, for its first `rows` rows (the ones the
+// window needs; the scan codes the rows of a tile in order, so a decoder
+// stops after them). `cells` holds min(rows + 1, tile height) rows.
 using TileDecoder = std::function<Status(CellRect tile, const std::uint8_t* data, std::size_t size,
                                          int rows, Cell* cells, std::ptrdiff_t stride)>;
 

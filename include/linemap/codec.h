@@ -189,8 +189,11 @@ struct CellWindow {
 
 // The cells of `window` (non-empty, inside the map; else invalid argument)
 // as a grid whose origin is the window's lower-left corner in the map frame.
-// A 2.0 file decodes only the tiles the window meets; a 1.0 file is decoded
-// whole and cropped.
+// A 2.0 file decodes only the tiles the window meets, each only up to the
+// window's last row, and the layer sections that reach them; a 1.0 file is
+// decoded whole and cropped. Every chunk's CRC is checked, but the parts of
+// a file a window does not decode are not: a file altered by design (CRCs
+// recomputed) past a window may decode there and fail as a whole.
 StatusOr<Grid> DecodeLmapRegion(const std::vector<std::uint8_t>& bytes, const CellWindow& window,
                                 const DecodeLimits& limits = {});
 StatusOr<Grid> LoadLmapRegion(const std::string& path, const CellWindow& window,

@@ -216,7 +216,7 @@ def test_save_refuses_other_suffixes_and_negative_tolerance(tmp_path):
 
 
 def test_convert_writes_the_file_save_writes(tmp_path):
-    # 620 x 4300 cells of depot copies: a map of two layer sections, coded
+    # 620 x 4300 cells of depot copies: a map of three layer sections, coded
     # as its image is read; the bundled depot itself is loaded whole.
     depot = linemap.load(BUNDLED["depot"])
     tall = np.tile(depot.cells, (3, 8))[:620, :4300].copy()

@@ -33,8 +33,8 @@ bool FileExists(const std::string& path);
 std::vector<std::string> ListDir(const std::string& dir);
 
 // A width x height map of copies of `map` side by side (its metadata):
-// maps larger than a layer block (2048 cells) or section (4096) with walls,
-// rooms and furniture in every block.
+// maps larger than a layer block (2048 cells, the side of their layer
+// sections) with walls, rooms and furniture in every block.
 Grid TiledMap(const Grid& map, int width, int height);
 
 struct CliResult {

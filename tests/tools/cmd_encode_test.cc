@@ -189,7 +189,7 @@ TEST(CmdEncodeTest, FileCodedAsTheImageIsReadIsTheLoadedMapsFile) {
   const std::string dir = MakeTempDir("encode_rows");
   StatusOr<Grid> depot = LoadRosMap(CopyDepot(dir));
   ASSERT_TRUE(depot.ok());
-  // 4300 x 620 cells: two layer sections, read a block row at a time.
+  // 4300 x 620 cells: three layer sections, read a block row at a time.
   const Grid grid = testing::TiledMap(*depot, 4300, 620);
   ASSERT_TRUE(SaveRosMap(dir + "/wide.yaml", grid, Durability::kUnsynced).ok());
   const CliResult rows =

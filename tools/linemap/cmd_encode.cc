@@ -69,7 +69,7 @@ const CommandSpec kEncodeSpec = {
          "side of the independently decodable tiles, 16..65536 (default 1024)"},
         {"--section-size", "CELLS",
          "side of the sections the vector layers are stored in, at least 16 (default 0: one "
-         "section up to 4096 cells a side, 4096 beyond); a window reads only the sections "
+         "section up to 4096 cells a side, 2048 beyond); a window reads only the sections "
          "reaching its tiles"},
         {"--lossy", "",
          "write a version 1.0 file with the former lossy encoder (obstacles within one cell, "

@@ -74,8 +74,8 @@ TEST(RowEncoderTest, CodesMapsOfSeveralSectionsExactOnly) {
 }
 
 TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
-  // 900 x 4300 cells: three rows of layer blocks (2048, 2048, 204 rows) and
-  // two of sections; 1024-cell tiles nest in the blocks.
+  // 900 x 4300 cells: three rows of layer blocks (2048, 2048, 204 rows),
+  // each a row of sections; 1024-cell tiles nest in the blocks.
   const Grid grid = DepotCopies(900, 4300);
   ExpectSavedAsEncoded(grid, EncodeOptions{}, "row_encoder_tall");
   EncodeOptions raster_only;
@@ -85,8 +85,8 @@ TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
 
 TEST(RowEncoderTest, TilesAcrossBlockRowsAndThreadsGiveTheSameFile) {
   // Tiles of 1000 and 3000 cells straddle the block rows (2048 cells): their
-  // hints come from the items of two block rows. Sections of 2048 cells hold
-  // one block each.
+  // hints come from the items of two block rows. Sections hold one block
+  // each (the default on maps over 4096 cells a side), or four.
   const Grid grid = DepotCopies(700, 4300);
   for (const int tile : {1000, 3000}) {
     EncodeOptions one;
@@ -100,9 +100,9 @@ TEST(RowEncoderTest, TilesAcrossBlockRowsAndThreadsGiveTheSameFile) {
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_EQ(*a, *b) << "tile " << tile;
   }
-  EncodeOptions block_sections;
-  block_sections.layer_section_cells = 2048;
-  ExpectSavedAsEncoded(grid, block_sections, "row_encoder_sections_2048");
+  EncodeOptions four_block_sections;
+  four_block_sections.layer_section_cells = 4096;
+  ExpectSavedAsEncoded(grid, four_block_sections, "row_encoder_sections_4096");
 }
 
 TEST(RowEncoderTest, SectionsSmallerThanABlockDecodeExactly) {
