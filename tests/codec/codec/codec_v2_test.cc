@@ -306,6 +306,17 @@ Grid Crop(const Grid& grid, const CellWindow& w) {
   return out;
 }
 
+// A window inside a width x height map at a random corner, at most
+// `max_rows` rows tall.
+CellWindow RandomWindow(std::mt19937& rng, int width, int height, int max_rows) {
+  CellWindow w;
+  w.col0 = static_cast<int>(rng() % width);
+  w.row0 = static_cast<int>(rng() % height);
+  w.col1 = w.col0 + 1 + static_cast<int>(rng() % (width - w.col0));
+  w.row1 = w.row0 + 1 + static_cast<int>(rng() % std::min(max_rows, height - w.row0));
+  return w;
+}
+
 TEST(CodecV2Test, WindowsEqualTheCropOfTheWholeDecode) {
   std::mt19937 rng(5);
   for (const std::string& path : testing::FindYamlFiles(testing::BundledMapsDir())) {
@@ -319,11 +330,7 @@ TEST(CodecV2Test, WindowsEqualTheCropOfTheWholeDecode) {
     auto bytes = EncodeLmap(*grid, options);
     ASSERT_TRUE(bytes.ok());
     for (int trial = 0; trial < 25; ++trial) {
-      CellWindow w;
-      w.col0 = static_cast<int>(rng() % grid->width());
-      w.row0 = static_cast<int>(rng() % grid->height());
-      w.col1 = w.col0 + 1 + static_cast<int>(rng() % (grid->width() - w.col0));
-      w.row1 = w.row0 + 1 + static_cast<int>(rng() % (grid->height() - w.row0));
+      CellWindow w = RandomWindow(rng, grid->width(), grid->height(), grid->height());
       if (trial == 0) w = {0, 0, grid->width(), grid->height()};
       if (trial == 1) w = {grid->width() - 1, grid->height() - 1, grid->width(), grid->height()};
       auto region = DecodeLmapRegion(*bytes, w);
@@ -364,12 +371,8 @@ TEST(CodecV2Test, WindowsOfToleranceFilesEqualTheCropOfTheirWholeDecode) {
   auto whole = DecodeLmap(*bytes);
   ASSERT_TRUE(whole.ok());
   for (int trial = 0; trial < 40; ++trial) {
-    CellWindow w;
-    w.col0 = static_cast<int>(rng() % grid->width());
-    w.row0 = static_cast<int>(rng() % grid->height());
-    w.col1 = w.col0 + 1 + static_cast<int>(rng() % (grid->width() - w.col0));
-    w.row1 = w.row0 + 1 + static_cast<int>(rng() % 80);
-    w.row1 = std::min(w.row1, grid->height());
+    // Short windows, most of them ending inside a 64-row tile.
+    const CellWindow w = RandomWindow(rng, grid->width(), grid->height(), 80);
     auto region = DecodeLmapRegion(*bytes, w);
     ASSERT_TRUE(region.ok()) << region.status().ToString();
     EXPECT_EQ(region->cells(), Crop(*whole, w).cells()) << trial;

@@ -26,6 +26,13 @@ Cell RandomCell(std::mt19937& rng) { return static_cast<Cell>(rng() % 3); }
 // (nothing to predict), rectangles of one value over a background (rows and
 // blocks equal to the row below, the copy paths), or rectangles with a
 // sprinkle of noise.
+// `n` hint bytes, a third of them with random bits.
+std::vector<std::uint8_t> RandomHints(std::mt19937& rng, std::size_t n) {
+  std::vector<std::uint8_t> hints(n);
+  for (auto& h : hints) h = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+  return hints;
+}
+
 std::vector<Cell> RandomGrid(std::mt19937& rng, int width, int height) {
   const std::size_t n = static_cast<std::size_t>(width) * height;
   std::vector<Cell> cells(n, RandomCell(rng));
@@ -159,8 +166,7 @@ TEST(TileCoderTest, TileRowsInBuffersOfTheirOwn) {
     const int width = 1 + static_cast<int>(rng() % 300);
     const int height = 1 + static_cast<int>(rng() % 30);
     const std::vector<Cell> cells = RandomGrid(rng, width, height);
-    std::vector<std::uint8_t> hints(cells.size());
-    for (auto& h : hints) h = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    const std::vector<std::uint8_t> hints = RandomHints(rng, cells.size());
     const CellRect t = RandomTile(rng, width, height);
     const int tw = t.x1 - t.x0, th = t.y1 - t.y0, stride = tw + 3;
     std::vector<Cell> local_cells(static_cast<std::size_t>(stride) * th + 1, Cell::kFree);
@@ -212,8 +218,7 @@ TEST(TileCoderTest, FirstRowsOfATileDecodeAsInTheWholeTile) {
     const int tw = 1 + static_cast<int>(rng() % 120);
     const int th = 2 + static_cast<int>(rng() % 40);
     const std::vector<Cell> cells = RandomGrid(rng, tw, th);
-    std::vector<std::uint8_t> hints(cells.size());
-    for (auto& h : hints) h = rng() % 3 == 0 ? static_cast<std::uint8_t>(rng() % 16) : 0;
+    const std::vector<std::uint8_t> hints = RandomHints(rng, cells.size());
     const int rows = 1 + static_cast<int>(rng() % static_cast<unsigned>(th - 1));
     for (TileModel model : {TileModel::kTemplate, TileModel::kLayerContext,
                             TileModel::kMixedAllCells, TileModel::kMixedLayerAllCells}) {
