@@ -755,7 +755,8 @@ std::vector<std::uint8_t> EncodeTileRows(const Cell* cells, std::ptrdiff_t cell_
 namespace {
 
 // The rows a decode writes into `canvas`, reading `hints`; refuses a
-// negative size.
+// negative size and rows wanted outside 1..tile_height (0 for an empty
+// tile).
 StatusOr<TileRows> CanvasRows(int tile_width, int tile_height, int rows_wanted, Cell* canvas,
                               std::ptrdiff_t canvas_stride, const std::uint8_t* hints,
                               std::ptrdiff_t hint_stride) {
