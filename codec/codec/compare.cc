@@ -1,4 +1,4 @@
-// CompareGrids(): the quality measures of issue 6 (cells equal, obstacle
+// CompareGrids(): the quality measures of a decoded map (cells equal, obstacle
 // recall / precision within one cell, free IoU, leaks, unknown turned free).
 #include <algorithm>
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Bad input to every command (issue 8, item 7), run against the built CLI:
+// Bad input to every command, run against the built CLI:
 // each row gives one command a broken input; the command must print exactly
 // one line on stderr that names the file, exit 2, and write nothing (the
 // output folder is listed before and after). Output into a missing folder

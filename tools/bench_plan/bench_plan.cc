@@ -1,4 +1,4 @@
-// bench_plan: speed and quality figures for the trajectory planner (issue 9),
+// bench_plan: speed and quality figures for the trajectory planner,
 // beside Table 1 of Kosteley et al. ("safe zone template" 29 ms, "safe zone
 // layout" 3 ms, "wave algorithm" 2 ms, "trajectory region layout" 1 ms,
 // "neighbourhood template" 404 ms, "trajectory scenario generation" 1.8 ms
