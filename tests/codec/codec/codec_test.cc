@@ -10,6 +10,7 @@
 
 #include "codec/codec/chunk_coding.h"
 #include "codec/codec/draco_segments.h"
+#include "format/byte_io.h"
 #include "format/container.h"
 #include "format/deflate.h"
 #include "linemap/labeling.h"
@@ -432,6 +433,49 @@ TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
   writer.AddChunk("LMHD", WriteHeader(header));
   writer.AddChunk("OCCP", draco);
   EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
+}
+
+// A chain body of 1.0 ROOM / BLOB (spec/format.md 11.2), written here from
+// the spec: one chain from `start`, each step a turn of the direction.
+std::vector<std::uint8_t> OneChainPayload(CellIndex start, const std::vector<std::uint8_t>& turns) {
+  ByteWriter body;
+  body.PutU8(0);  // payload coder: raw
+  body.PutVarint(1);
+  body.PutVarint(turns.size() + 1);
+  body.PutVarint(static_cast<std::uint64_t>(start.col));
+  body.PutVarint(static_cast<std::uint64_t>(start.row));
+  for (std::uint8_t turn : turns) body.PutU8(turn);
+  return body.bytes();
+}
+
+// No encoder wrote BLOB: a room filled as free, then a blob in it filled as
+// occupied, in the order of the file.
+TEST(CodecTest, VersionOneRoomAndBlobChainsAreFilled) {
+  HeaderFields header;
+  header.width = 8;
+  header.height = 7;
+  ContainerWriter writer(1, 0);
+  writer.AddChunk("LMHD", WriteHeader(header));
+  // The border of columns 1..5 x rows 1..5: 4 steps east, north, west, and
+  // 3 south back next to the start.
+  writer.AddChunk("ROOM", OneChainPayload({1, 1}, {0, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0}));
+  // The 2 x 2 cells from (2, 2): east, north, west.
+  writer.AddChunk("BLOB", OneChainPayload({2, 2}, {0, 2, 2}));
+  auto contents = DecodeLmapContents(writer.Finish());
+  ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+  Grid expected(8, 7, Cell::kUnknown);
+  for (int r = 1; r <= 5; ++r) {
+    for (int c = 1; c <= 5; ++c) expected.set(c, r, Cell::kFree);
+  }
+  for (int r = 2; r <= 3; ++r) {
+    for (int c = 2; c <= 3; ++c) expected.set(c, r, Cell::kOccupied);
+  }
+  EXPECT_EQ(contents->grid, expected);
+  ASSERT_EQ(contents->room_chains.size(), 1u);
+  EXPECT_EQ(contents->room_chains[0].size(), 16u);
+  ASSERT_EQ(contents->blob_outlines.size(), 1u);
+  const std::vector<CellIndex> blob = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+  EXPECT_EQ(contents->blob_outlines[0], blob);
 }
 
 }  // namespace
