@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "codec/codec/chunk_coding.h"
@@ -147,26 +148,28 @@ TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
   EXPECT_NE(bad.status().message().find("max_threads"), std::string::npos);
 }
 
-TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
-  ContainerWriter writer(1, 0);
+// A 1.0 file of a width x height map holding `chunks` (type, payload)
+// after its header.
+using ChunkList = std::vector<std::pair<std::string, std::vector<std::uint8_t>>>;
+std::vector<std::uint8_t> VersionOneFile(int width, int height, const ChunkList& chunks) {
   HeaderFields header;
-  header.width = 100000;
-  header.height = 100000;
+  header.width = width;
+  header.height = height;
+  ContainerWriter writer(1, 0);
   writer.AddChunk("LMHD", WriteHeader(header));
-  auto grid = DecodeLmap(writer.Finish());
+  for (const auto& [type, payload] : chunks) writer.AddChunk(type, payload);
+  return writer.Finish();
+}
+
+TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
+  auto grid = DecodeLmap(VersionOneFile(100000, 100000, {}));
   ASSERT_FALSE(grid.ok());
   EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted);
   EXPECT_NE(grid.status().message().find("LMHD"), std::string::npos);
 }
 
 std::vector<std::uint8_t> WithExtraChunk(const std::string& type) {
-  ContainerWriter writer(1, 0);
-  HeaderFields header;
-  header.width = 4;
-  header.height = 3;
-  writer.AddChunk("LMHD", WriteHeader(header));
-  writer.AddChunk(type, {0, 1, 2});
-  return writer.Finish();
+  return VersionOneFile(4, 3, {{type, {0, 1, 2}}});
 }
 
 TEST(CodecTest, UnknownAncillaryChunkIsSkippedUnknownCriticalRefused) {
@@ -263,14 +266,8 @@ TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
   // Canonical (a <= b by row, then column) and in the order of their a.
   const std::vector<LatticeSegment> segments = {
       {{0, 0}, {9, 0}}, {{2, 1}, {2, 7}}, {{8, 3}, {1, 6}}, {{5, 5}, {9, 9}}};
-  HeaderFields header;
-  header.width = 10;
-  header.height = 10;
-  auto file = [&](const std::vector<std::uint8_t>& segs_payload) {
-    ContainerWriter writer(1, 0);
-    writer.AddChunk("LMHD", WriteHeader(header));
-    writer.AddChunk("SEGS", segs_payload);
-    return writer.Finish();
+  auto file = [](const std::vector<std::uint8_t>& segs_payload) {
+    return VersionOneFile(10, 10, {{"SEGS", segs_payload}});
   };
   std::vector<std::uint8_t> draco = {static_cast<std::uint8_t>(PayloadCoder::kDraco)};
   const std::vector<std::uint8_t> body = EncodeSegmentsDraco(segments);
@@ -297,10 +294,7 @@ TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
   EXPECT_EQ(from_draco->grid, from_varint->grid);
   EXPECT_EQ(from_draco->chunks[1].coder, "draco");
   // Draco is accepted for SEGS only.
-  ContainerWriter writer(1, 0);
-  writer.AddChunk("LMHD", WriteHeader(header));
-  writer.AddChunk("OCCP", draco);
-  EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
+  EXPECT_FALSE(DecodeLmap(VersionOneFile(10, 10, {{"OCCP", draco}})).ok());
 }
 
 // A chain body of 1.0 ROOM / BLOB (spec/format.md 11.2), written here from
@@ -319,17 +313,12 @@ std::vector<std::uint8_t> OneChainPayload(CellIndex start, const std::vector<std
 // No encoder wrote BLOB: a room filled as free, then a blob in it filled as
 // occupied, in the order of the file.
 TEST(CodecTest, VersionOneRoomAndBlobChainsAreFilled) {
-  HeaderFields header;
-  header.width = 8;
-  header.height = 7;
-  ContainerWriter writer(1, 0);
-  writer.AddChunk("LMHD", WriteHeader(header));
   // The border of columns 1..5 x rows 1..5: 4 steps east, north, west, and
   // 3 south back next to the start.
-  writer.AddChunk("ROOM", OneChainPayload({1, 1}, {0, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0}));
+  const auto room = OneChainPayload({1, 1}, {0, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0});
   // The 2 x 2 cells from (2, 2): east, north, west.
-  writer.AddChunk("BLOB", OneChainPayload({2, 2}, {0, 2, 2}));
-  auto contents = DecodeLmapContents(writer.Finish());
+  const auto blob = OneChainPayload({2, 2}, {0, 2, 2});
+  auto contents = DecodeLmapContents(VersionOneFile(8, 7, {{"ROOM", room}, {"BLOB", blob}}));
   ASSERT_TRUE(contents.ok()) << contents.status().ToString();
   Grid expected(8, 7, Cell::kUnknown);
   for (int r = 1; r <= 5; ++r) {
@@ -342,8 +331,8 @@ TEST(CodecTest, VersionOneRoomAndBlobChainsAreFilled) {
   ASSERT_EQ(contents->room_chains.size(), 1u);
   EXPECT_EQ(contents->room_chains[0].size(), 16u);
   ASSERT_EQ(contents->blob_outlines.size(), 1u);
-  const std::vector<CellIndex> blob = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
-  EXPECT_EQ(contents->blob_outlines[0], blob);
+  const std::vector<CellIndex> outline = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+  EXPECT_EQ(contents->blob_outlines[0], outline);
 }
 
 }  // namespace
