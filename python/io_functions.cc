@@ -33,9 +33,8 @@ std::vector<std::uint8_t> BytesArgument(const py::handle& data) {
   return std::vector<std::uint8_t>(begin, begin + info.size);
 }
 
-// tolerance 0 asks for an exact file. The encoder of format 1.x keys
-// exactness on `lossless` (its default is lossy), so it is set here too;
-// other tolerances go to the library as they are.
+// linemap.encode()'s keywords as the library's options (tolerance 0: an
+// exact file).
 EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls, bool compact) {
   EncodeOptions options;
   options.tolerance_cells = tolerance;

@@ -56,9 +56,6 @@ StatusOr<double> ParsePercent(const std::string& option, const std::string& text
 
 StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
   SaverArgs parsed;
-  // A saved map reads back as the map that was published, cell for cell,
-  // unless a tolerance is asked for.
-  parsed.encode.lossless = true;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     const bool has_value = i + 1 < args.size();
@@ -82,7 +79,6 @@ StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
         return InvalidArgumentError("--tolerance must be a whole number of cells >= 0");
       }
       parsed.encode.tolerance_cells = static_cast<int>(cells);
-      parsed.encode.lossless = parsed.encode.tolerance_cells == 0;
     } else if (arg == "--raster-only") {
       parsed.encode.vector_layers = false;
     } else if (arg == "--compact") {

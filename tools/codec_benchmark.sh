@@ -1,7 +1,7 @@
 #!/bin/bash
 # The issue-6 benchmark: for every map under a folder (default ../shared/maps)
-# prints lossy / lossless .lmap sizes against netpbm's PNG-9 of the same
-# trinary map, the lossy quality measures (linemap eval), and the times of
+# prints the default (exact) .lmap size against netpbm's PNG-9 of the same
+# trinary map, and the times of
 # `linemap encode` / `linemap decode` against `pnmtopng -compression 9` /
 # `pngtopnm` (best of 5 wall-clock runs; pngtopnm writes its PGM to a file,
 # as decode does; dec_s is the default decode, which flushes both files to
@@ -19,27 +19,23 @@ best() {  # best-of-5 wall time in seconds of "$@" with stdout to $OUT (default 
   done
   echo "$b"
 }
-printf "%-36s %8s %7s %7s %6s %7s %6s %6s %6s %6s %5s %6s %6s %6s %6s %6s %6s %6s\n" map cells png9 lossy ratio lossless ll/png recall prec iou leaks u2f enc_s png_s dec_s dec_ns unpng_s dec_MB
+printf "%-36s %8s %7s %7s %6s %6s %6s %6s %6s %6s %6s\n" map cells png9 lmap lmap/png enc_s png_s dec_s dec_ns unpng_s dec_MB
 find "$MAPS" \( -name '*.yaml' -o -name '*.pgm' -o -name '*.png' \) | sort | while read -r m; do
   case "$m" in *.yaml) ;; *) [ -e "${m%.*}.yaml" ] && continue; grep -qs "$(basename "$m")" "$(dirname "$m")"/*.yaml && continue ;; esac
   n=$(echo "${m#$MAPS/}" | tr / _); n=${n%.*}
-  "$L" encode "$m" -o "$T/$n.ll.lmap" --lossless >/dev/null 2>&1 || continue
-  "$L" decode "$T/$n.ll.lmap" -o "$T/$n.tri.yaml" >/dev/null || continue
+  "$L" encode "$m" -o "$T/$n.lmap" >/dev/null 2>&1 || continue
+  "$L" decode "$T/$n.lmap" -o "$T/$n.tri.yaml" >/dev/null || continue
   pnmtopng -compression 9 "$T/$n.tri.pgm" > "$T/$n.png" 2>/dev/null
-  "$L" encode "$m" -o "$T/$n.lmap" >/dev/null 2>&1
   cells=$("$L" info "$m" --json | python3 -c 'import json,sys; d=json.load(sys.stdin); print(d["width"]*d["height"])')
-  ev=$("$L" eval "$m" "$T/$n.lmap" --json)
-  png=$(stat -c %s "$T/$n.png"); lossy=$(stat -c %s "$T/$n.lmap"); ll=$(stat -c %s "$T/$n.ll.lmap")
+  png=$(stat -c %s "$T/$n.png"); lmap=$(stat -c %s "$T/$n.lmap")
   enc=$(best "$L" encode "$m" -o "$T/$n.t.lmap")
   pngt=$(OUT="$T/$n.t.png" best pnmtopng -compression 9 "$T/$n.tri.pgm")
   dec=$(best "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml")
   decns=$(best "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml" --no-sync)
   unpng=$(OUT="$T/$n.unpng.pgm" best pngtopnm "$T/$n.png")
   mem=$( { /usr/bin/time -f "%M" "$L" decode "$T/$n.lmap" -o "$T/$n.dec.yaml" >/dev/null; } 2>&1 | tail -1)
-  echo "$ev" | python3 -c "
-import json,sys
-e=json.load(sys.stdin)
-print('%-36s %8d %7d %7d %6.2f %7d %6.3f %6.4f %6.4f %6.4f %5d %6.4f %6.3f %6.3f %6.3f %6.3f %6.3f %6.1f' % ('$n', $cells, $png, $lossy, $png/$lossy, $ll, $ll/$png,
-  e['obstacle_recall_1'], e['obstacle_precision_1'], e['free_iou'], e['leaks'], e['unknown_turned_free_share'], $enc, $pngt, $dec, $decns, $unpng, $mem/1024.0))"
+  python3 -c "
+print('%-36s %8d %7d %7d %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %6.1f' % ('$n', $cells, $png, $lmap, $lmap/$png,
+  $enc, $pngt, $dec, $decns, $unpng, $mem/1024.0))"
 done
 rm -rf "$T"

@@ -1,7 +1,7 @@
 #include "codec/codec/chunk_coding.h"
 
-#include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <tuple>
 
 #include "format/deflate.h"
@@ -13,13 +13,6 @@ namespace {
 // grow upwards, as grid rows do).
 constexpr int kStepCol[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kStepRow[8] = {0, 1, 1, 1, 0, -1, -1, -1};
-
-int DirectionOf(CellIndex from, CellIndex to) {
-  for (int d = 0; d < 8; ++d) {
-    if (from.col + kStepCol[d] == to.col && from.row + kStepRow[d] == to.row) return d;
-  }
-  return -1;
-}
 
 bool Before(CellIndex p, CellIndex q) { return std::tie(p.row, p.col) < std::tie(q.row, q.col); }
 
@@ -205,32 +198,6 @@ StatusOr<std::vector<std::pair<std::string, std::string>>> ReadMetadata(
   return entries;
 }
 
-void CanonicalizeSegments(std::vector<LatticeSegment>* segments) {
-  for (LatticeSegment& s : *segments) {
-    if (Before(s.b, s.a)) std::swap(s.a, s.b);
-  }
-  std::sort(segments->begin(), segments->end(),
-            [](const LatticeSegment& x, const LatticeSegment& y) {
-              return std::tie(x.a.row, x.a.col, x.b.row, x.b.col) <
-                     std::tie(y.a.row, y.a.col, y.b.row, y.b.col);
-            });
-}
-
-std::vector<std::uint8_t> WriteSegments(const std::vector<LatticeSegment>& segments) {
-  ByteWriter w;
-  w.PutVarint(segments.size());
-  CellIndex prev{0, 0};
-  for (const LatticeSegment& s : segments) {
-    const int drow = s.a.row - prev.row;
-    w.PutVarint(static_cast<std::uint64_t>(drow));
-    w.PutVarint(static_cast<std::uint64_t>(drow == 0 ? s.a.col - prev.col : s.a.col));
-    w.PutVarint(static_cast<std::uint64_t>(s.b.row - s.a.row));
-    w.PutSignedVarint(std::int64_t{s.b.col} - s.a.col);
-    prev = s.a;
-  }
-  return w.bytes();
-}
-
 StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_t>& body, int width,
                                                    int height, const DecodeLimits& limits) {
   ByteCursor c(body);
@@ -272,23 +239,6 @@ StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_
   }
   if (!c.empty()) return CorruptError("segment data has trailing bytes");
   return segments;
-}
-
-std::vector<std::uint8_t> WriteChains(const std::vector<std::vector<CellIndex>>& chains) {
-  ByteWriter w;
-  w.PutVarint(chains.size());
-  for (const std::vector<CellIndex>& chain : chains) {
-    w.PutVarint(chain.size());
-    w.PutVarint(static_cast<std::uint64_t>(chain[0].col));
-    w.PutVarint(static_cast<std::uint64_t>(chain[0].row));
-    int prev_dir = 0;
-    for (std::size_t i = 1; i < chain.size(); ++i) {
-      const int d = DirectionOf(chain[i - 1], chain[i]);
-      w.PutU8(static_cast<std::uint8_t>((d - prev_dir + 8) % 8));
-      prev_dir = d;
-    }
-  }
-  return w.bytes();
 }
 
 StatusOr<std::vector<std::vector<CellIndex>>> ReadChains(const std::vector<std::uint8_t>& body,

@@ -59,18 +59,12 @@ std::vector<std::uint8_t> WriteMetadata(
 StatusOr<std::vector<std::pair<std::string, std::string>>> ReadMetadata(
     const std::vector<std::uint8_t>& body);
 
-// Segments must be canonical (a <= b by (row, col)) and sorted.
-std::vector<std::uint8_t> WriteSegments(const std::vector<LatticeSegment>& segments);
 StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_t>& body, int width,
                                                    int height, const DecodeLimits& limits);
 
-std::vector<std::uint8_t> WriteChains(const std::vector<std::vector<CellIndex>>& chains);
 StatusOr<std::vector<std::vector<CellIndex>>> ReadChains(const std::vector<std::uint8_t>& body,
                                                          int width, int height,
                                                          const DecodeLimits& limits);
-
-// Puts segments in canonical order (a <= b) and sorts them.
-void CanonicalizeSegments(std::vector<LatticeSegment>* segments);
 
 }  // namespace linemap
 

@@ -32,8 +32,9 @@ Labeling LabelFree(const Grid& grid) {
   return LabelComponents(free, Connectivity::kFour);
 }
 
-GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
-                            const Grid& decoded) {
+}  // namespace codec_internal
+
+GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
   GridComparison out;
   out.same_geometry = original.width() == decoded.width() &&
                       original.height() == decoded.height() &&
@@ -79,9 +80,8 @@ GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
   // each decoded component lies inside one original component: no leaks,
   // and no labelling needed.
   if (free_only_decoded == 0) return out;
-  const Labeling own_labels = original_free ? Labeling() : LabelFree(original);
-  const Labeling& orig = original_free ? *original_free : own_labels;
-  const Labeling dec = LabelFree(decoded);
+  const Labeling orig = codec_internal::LabelFree(original);
+  const Labeling dec = codec_internal::LabelFree(decoded);
   std::vector<std::pair<std::int32_t, std::int32_t>> pairs;  // (decoded, original)
   for (std::size_t i = 0; i < orig.labels.size(); ++i) {
     const std::int32_t a = orig.labels[i];
@@ -97,12 +97,6 @@ GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   for (std::size_t i = 1; i < pairs.size(); ++i) out.leaks += pairs[i].first == pairs[i - 1].first;
   return out;
-}
-
-}  // namespace codec_internal
-
-GridComparison CompareGrids(const Grid& original, const Grid& decoded) {
-  return codec_internal::CompareGrids(original, nullptr, decoded);
 }
 
 }  // namespace linemap

@@ -1,9 +1,8 @@
-// CompareGrids() in parts, for the lossy encoder, which compares one map
-// with several candidate decodings and labels the map's free space once.
+// The free-space labelling CompareGrids() uses, shared with the tolerance
+// checks, which label the free space of a map and its decode too.
 #ifndef LINEMAP_CODEC_CODEC_COMPARE_INTERNAL_H_
 #define LINEMAP_CODEC_CODEC_COMPARE_INTERNAL_H_
 
-#include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/labeling.h"
 
@@ -12,11 +11,6 @@ namespace linemap::codec_internal {
 // The 4-connected free components of `grid` (two-pass labelling: linear and
 // cache-friendly on maps of any size).
 Labeling LabelFree(const Grid& grid);
-
-// CompareGrids(original, decoded); `original_free` is LabelFree(original)
-// when the caller has it, else null (it is then made when needed).
-GridComparison CompareGrids(const Grid& original, const Labeling* original_free,
-                            const Grid& decoded);
 
 }  // namespace linemap::codec_internal
 

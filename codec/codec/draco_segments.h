@@ -13,7 +13,8 @@
 
 namespace linemap {
 
-// Empty when Draco fails or there are no segments.
+// Empty when Draco fails or there are no segments. No file is written with
+// it any more (1.0 files are not); tests build Draco-coded SEGS with it.
 std::vector<std::uint8_t> EncodeSegmentsDraco(const std::vector<LatticeSegment>& segments);
 
 // Decodes and checks the segments as the varint form is checked (inside the

@@ -15,7 +15,6 @@
 #include "codec/codec/block_tiles.h"
 #include "codec/codec/cell_tiles.h"
 #include "codec/codec/chunk_coding.h"
-#include "codec/codec/encoder_v1.h"
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_hints.h"
@@ -48,12 +47,6 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
 
 Status CheckEncodeOptions(const EncodeOptions& options) {
   if (options.max_threads < 0) return InvalidArgumentError("max_threads must not be negative");
-  if (options.compact && options.format_v1) {
-    return InvalidArgumentError("compact cells are a 2.3 coding; a 1.0 file cannot hold them");
-  }
-  if (options.min_segment_cells < 1) {
-    return InvalidArgumentError("min_segment_cells must be at least 1");
-  }
   if (options.tolerance_cells < 0 || options.tolerance_cells > kMaxToleranceCells) {
     return InvalidArgumentError("tolerance " + std::to_string(options.tolerance_cells) +
                                 " cells: must be 0 (exact) to " +
@@ -133,7 +126,6 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
 // The file EncodeLmap returns (its progress reports aside).
 StatusOr<std::vector<std::uint8_t>> EncodeFile(const Grid& grid, const EncodeOptions& options) {
   LINEMAP_RETURN_IF_ERROR(CheckEncodeInput(grid, options));
-  if (options.format_v1) return EncodeLmapV1(grid, options);
   if (options.tolerance_cells == 0) return EncodeV2(grid, options);
   // Within a tolerance the walls differ from the exact file's (straight,
   // fitted within T cells), so where neither they nor the blocks save

@@ -517,8 +517,7 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   // ../shared/maps) and fitted within T cells of the wall cells rather than
   // one, as the cells themselves are (T = 3: 133,697 -> 120,172 bytes, with
   // the covering pass left out as ExtractWholeMapLayers says).
-  // The former lossy 1.0 file keeps the walls it always had.
-  const bool straight = options.straight_walls || options.tolerance_cells > 0 || options.format_v1;
+  const bool straight = options.straight_walls || options.tolerance_cells > 0;
   LineExtractionOptions line_options =
       straight ? StraightWalls(LineExtractionOptions{}) : FileWallOptions();
   line_options.method = options.method;

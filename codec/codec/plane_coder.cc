@@ -264,26 +264,6 @@ inline Cell Alternative(Cell predicted, int which) {
 
 }  // namespace
 
-std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
-                                              const std::vector<Cell>& canvas, int width,
-                                              int height) {
-  BitModelTable probs(2 * kResidualContexts);
-  RangeEncoder enc;
-  std::size_t cell = 0;
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col, ++cell) {
-      const unsigned ctx = ResidualContext(truth, canvas, width, height, col, row);
-      const bool differs = truth[cell] != canvas[cell];
-      enc.Encode(&probs[ctx], differs ? 1 : 0);
-      if (differs) {
-        enc.Encode(&probs[ctx + 1], truth[cell] == Alternative(canvas[cell], 1) ? 1 : 0);
-      }
-    }
-  }
-  enc.Finish();
-  return enc.bytes();
-}
-
 Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas) {
   BitModelTable probs(2 * kResidualContexts);

@@ -3,7 +3,9 @@
 // (ITU-T T.82, section 6.7): each cell's bit is coded with a probability
 // chosen by its already-coded neighbours and by the canvas decoded so far.
 // The templates and contexts are normative: spec/format.md sections
-// "FREE", "OCCP" and "RESD".
+// "FREE", "OCCP" and "RESD". These are the planes of 1.0 files, which are
+// decoded but no longer written; OCCP and FREE keep their encoders as
+// bench_tiles' baseline.
 #ifndef LINEMAP_CODEC_CODEC_PLANE_CODER_H_
 #define LINEMAP_CODEC_CODEC_PLANE_CODER_H_
 
@@ -30,10 +32,8 @@ std::vector<std::uint8_t> EncodeFreePlane(const std::vector<std::uint8_t>& targe
 Status DecodeFreePlane(const std::uint8_t* data, std::size_t size, int width, int height,
                        std::vector<Cell>* canvas);
 
-// Codes `truth` exactly, given the lossy canvas as prediction.
-std::vector<std::uint8_t> EncodeResidualPlane(const std::vector<Cell>& truth,
-                                              const std::vector<Cell>& canvas, int width,
-                                              int height);
+// RESD: makes `canvas` the exact grid, the canvas before it being the
+// prediction.
 Status DecodeResidualPlane(const std::uint8_t* data, std::size_t size, int width, int height,
                            std::vector<Cell>* canvas);
 

@@ -159,7 +159,7 @@ bool EncodesByRows(int width, int height, const EncodeOptions& options) {
   // 1000 cells willow-2010 decoded 3 cells wrong. They also make the map
   // larger than a block, whose layers are extracted block by block anyway.
   const int side = SectionSide(width, height, options);
-  return options.tolerance_cells == 0 && !options.format_v1 && side % kLayerBlockCells == 0 &&
+  return options.tolerance_cells == 0 && side % kLayerBlockCells == 0 &&
          (width > side || height > side);
 }
 

@@ -5,8 +5,10 @@
 // A 2.0 file (the default) decodes to the input cell for cell and carries
 // the map's vector layers: walls as polylines, one border chain per room,
 // furniture outlines; the cells are coded in tiles against what the layers
-// draw. The former lossy mode writes 1.0 files (EncodeOptions::format_v1);
-// 1.0 files keep decoding.
+// draw. Within a tolerance (EncodeOptions::tolerance_cells) the file is
+// smaller and every guarantee of the tolerance is checked on its decode.
+// Version 1.0 files (the former lossy mode) are no longer written but keep
+// decoding.
 #ifndef LINEMAP_CODEC_H_
 #define LINEMAP_CODEC_H_
 
@@ -25,14 +27,6 @@
 #include "linemap/vector_layers.h"
 
 namespace linemap {
-
-enum class LosslessMethod {
-  // The occupied and free layers are coded exactly (segments only on
-  // occupied cells); no residual is needed. The default: the smallest.
-  kExactLayers,
-  // The lossy layers plus a RESD residual plane (the difference).
-  kResidual,
-};
 
 struct EncodeOptions {
   // Largest distance, in cells (Chebyshev), by which the decoded map may
@@ -60,35 +54,11 @@ struct EncodeOptions {
   // the sections that reach its tiles; each section costs a few bytes and
   // starts its models afresh.
   int layer_section_cells = 0;
-  // Write a version 1.0 file with the 1.0 encoder instead (lossy unless
-  // `lossless`): the former lossy mode, kept until the tolerance mode
-  // replaces it. The fields below marked "1.0" apply only to it.
-  bool format_v1 = false;
-  bool lossless = false;  // 1.0
-  LosslessMethod lossless_method = LosslessMethod::kExactLayers;
-  // Store the extractor's wall segments (SEGS). Segments shorter than
-  // min_segment_cells (cells along the longer axis; default 16) are left to
-  // the OCCP plane, which codes short pieces more cheaply.
-  bool store_segments = true;
-  int min_segment_cells = 16;
-  // Store the room-border chains of SegmentMap() (ROOM), filled as free
-  // space before the FREE plane, which is then coded against them.
-  bool store_room_chains = false;
-  // Lossy mode: also fill small unknown holes in the free space and smooth
-  // the free/unknown boundary (a 3x3 majority rule). Files get smaller (about
-  // 10 % at the median of ../shared/maps), but a planner that treats unknown
-  // cells as obstacles (plan.h does) sees obstacles move by a cell, which
-  // changes plans through narrow passages. Off by default: apart from free
-  // specks of a few cells the lossy decode then keeps free space exactly
-  // (wall segments never cover a free cell either), and plans on it match
-  // the original's.
-  bool simplify_free_space = false;
   // Threads the encoder may use (the calling one included); 0 = one per
-  // core (the default). 2.0 files code their tiles in parallel and extract
+  // core (the default). 2.x files code their tiles in parallel and extract
   // the walls beside the rooms, on maps over 4096 cells a side the layers
-  // of two 2048-cell blocks at a time (each holds some 55 MB meanwhile);
-  // the 1.0 lossy mode codes two candidate files at a time. The bytes are
-  // the same for any number.
+  // of two 2048-cell blocks at a time (each holds some 55 MB meanwhile).
+  // The bytes are the same for any number.
   int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;

@@ -2,11 +2,10 @@
 // derived from the fuzzer's bytes.
 //
 // Input layout: byte 0 -> width (1..64), byte 1 -> height (1..64), byte 2 ->
-// encoder options (bit 0: residual lossless method, bit 1: store segments,
-// bit 2: store room chains, or in a 2.x file compact cells (tile models 12
-// and 3), bit 3: two threads, bit 4: the other encoder
-// (see OptionsFromByte), bit 5: no vector layers, bit 6: 16-cell tiles,
-// bits 6-7: the tolerance), then one byte per cell (value % 3 is the Cell,
+// encoder options (see OptionsFromByte: bit 2 compact cells (tile models 12
+// and 3), bit 3 two threads, bit 5 no vector layers, bit 6 16-cell tiles,
+// bits 6-7 the tolerance; bits 0, 1 and 4 chose 1.0 encoder options and
+// are unused now), then one byte per cell (value % 3 is the Cell,
 // row 0 first); cells past the end of the input are unknown. The height is
 // cut so that the grid holds at most 4 cells per input cell byte plus 64:
 // short inputs (which libFuzzer prefers) stay small grids, so executions
@@ -43,23 +42,16 @@ inline Grid GridFromBytes(const std::uint8_t* data, std::size_t size) {
   return grid;
 }
 
-inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
+inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool exact) {
   EncodeOptions options;
-  // Lossy: the 1.0 encoder, or with bit 4 a 2.x file within a tolerance of
-  // 1..4 cells (bits 6-7; BLKS where blocks pay). Exact: a 2.0 file (with or
-  // without its layers, in 16-cell or 1024-cell tiles), or with bit 4 the
-  // 1.0 lossless encoder.
-  const bool bit4 = (flags & 16) != 0;
-  options.format_v1 = lossless ? bit4 : !bit4;
-  if (!lossless && !options.format_v1) options.tolerance_cells = 1 + ((flags >> 6) & 3);
+  // Exact: a 2.x file (with or without its layers, in 16-cell or 1024-cell
+  // tiles). Else within a tolerance of 1..4 cells (bits 6-7; BLKS where
+  // blocks pay).
+  options.tolerance_cells = exact ? 0 : 1 + ((flags >> 6) & 3);
   options.vector_layers = (flags & 32) == 0;
   options.tile_size_cells = (flags & 64) ? 16 : 1024;
-  options.lossless = lossless;
-  options.lossless_method = (flags & 1) ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
-  options.store_segments = (flags & 2) != 0;
-  options.store_room_chains = (flags & 4) != 0;
   options.max_threads = (flags & 8) ? 2 : 1;
-  options.compact = !options.format_v1 && (flags & 4) != 0;
+  options.compact = (flags & 4) != 0;
   return options;
 }
 
@@ -69,11 +61,12 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool lossless) {
   std::abort();
 }
 
-// Encodes `grid` (lossy or lossless, options from `flags`) and decodes the
-// bytes; any error aborts, naming `target`. Returns the decoded grid.
+// Encodes `grid` (exact or within a tolerance, options from `flags`) and
+// decodes the bytes; any error aborts, naming `target`. Returns the decoded
+// grid.
 inline Grid EncodeDecodeOrFail(const char* target, const Grid& grid, std::uint8_t flags,
-                               bool lossless) {
-  auto encoded = EncodeLmap(grid, OptionsFromByte(flags, lossless));
+                               bool exact) {
+  auto encoded = EncodeLmap(grid, OptionsFromByte(flags, exact));
   if (!encoded.ok()) Fail(target, "encode failed", encoded.status());
   auto decoded = DecodeLmap(*encoded);
   if (!decoded.ok()) Fail(target, "decode failed", decoded.status());

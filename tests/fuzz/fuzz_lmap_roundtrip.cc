@@ -1,8 +1,9 @@
-// Fuzz target: lossless encode -> decode round trip on small grids derived
+// Fuzz target: exact encode -> decode round trip on small grids derived
 // from the input (layout in fuzz_grid.h). The decoded grid must equal the
 // input cell for cell, with the same metadata; anything else aborts (a
-// finding). The lossy path has its own target, fuzz_lmap_lossy.cc, because
-// its simplification search costs ten times as much per execution.
+// finding). Files within a tolerance have their own target,
+// fuzz_lmap_tolerance.cc, because checking their guarantees costs ten times
+// as much per execution.
 #include <cstddef>
 #include <cstdint>
 
@@ -14,10 +15,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace linemap;
   if (size < fuzz::kHeaderBytes) return 0;
   const Grid grid = fuzz::GridFromBytes(data, size);
-  const Grid decoded = fuzz::EncodeDecodeOrFail("lmap_roundtrip", grid, data[2], /*lossless=*/true);
+  const Grid decoded = fuzz::EncodeDecodeOrFail("lmap_roundtrip", grid, data[2], /*exact=*/true);
   if (decoded.width() != grid.width() || decoded.height() != grid.height() ||
       decoded.cells() != grid.cells() || !(decoded.meta == grid.meta)) {
-    fuzz::Fail("lmap_roundtrip", "lossless round trip changed the grid");
+    fuzz::Fail("lmap_roundtrip", "the exact round trip changed the grid");
   }
   return 0;
 }

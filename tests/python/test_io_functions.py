@@ -94,7 +94,7 @@ def test_encode_decode_is_exact(bundled):
 
 
 def test_cells_equal_what_the_cli_decode_writes(bundled, tmp_path, cli):
-    """The program encodes (lossy, its default) and decodes; the module
+    """The program encodes (exact, its default) and decodes; the module
     loads the same .lmap: the cells must be those of the program's PGM."""
     lmap = tmp_path / "map.lmap"
     linemap_cli.run(cli, "encode", bundled, "-o", lmap, "--no-sync")
@@ -271,7 +271,7 @@ def csv_layer(layers, names):
 @pytest.mark.parametrize("name", sorted(BUNDLED))
 def test_vectors_equal_the_cli_export(name, tmp_path, cli):
     lmap = tmp_path / "map.lmap"
-    # Lossy with wall segments and room chains: a file with vector layers.
+    # The default file: walls, rooms and furniture.
     linemap_cli.run(cli, "encode", BUNDLED[name], "-o", lmap, "--no-sync")
     linemap_cli.run(cli, "export", lmap, "-o", tmp_path / "layers.csv")
     layers = linemap_cli.read_csv_rows(tmp_path / "layers.csv")

@@ -35,7 +35,7 @@ std::vector<std::string> Names(const std::vector<const MapResult*>& maps) {
 }
 
 TEST(BenchAnchorsTest, SubjectIsTheDefault2FileAndAllSixAnchorsAreChecked) {
-  // The default file, layers included: not --raster-only, not the 1.0 lossy.
+  // The default file, layers included: not --raster-only.
   EXPECT_EQ(AnchorSubject().figure, std::string(key::kLmapBytes));
   EXPECT_EQ(std::string(key::kLmapBytes), "lmap2_bytes");
   std::vector<std::string> figures;

@@ -34,13 +34,14 @@ TEST(BenchCliTest, WritesCsvMarkdownAndSvgForAOneMapCorpus) {
   EXPECT_EQ(csv.rfind("map,path,", 0), 0u);
   EXPECT_NE(csv.find("\nlse_arena,"), std::string::npos);
   EXPECT_NE(csv.find(",4800.000000,"), std::string::npos);
-  // The .lmap columns are the 2.0 default, --raster-only and 1.0 --lossy
-  // files, and the goals are printed.
-  for (const char* column : {",lmap2_bytes,", ",lmap2_raster_bytes,", ",lmap1_lossy_bytes,",
+  // The .lmap columns are the 2.0 default, --raster-only and --compact
+  // files (no 1.0 file: none is written any more), and the goals are printed.
+  for (const char* column : {",lmap2_bytes,", ",lmap2_raster_bytes,", ",lmap2_compact_bytes,",
                              ",lmap2_cells_wrong,", ",lmap2_covered_share,"}) {
     EXPECT_NE(csv.find(column), std::string::npos) << column;
   }
   EXPECT_EQ(csv.find("lmap_lossless_bytes"), std::string::npos);
+  EXPECT_EQ(csv.find("lmap1_"), std::string::npos);
   EXPECT_NE(r.out.find("== .lmap 2.0 goals =="), std::string::npos);
   EXPECT_NE(ReadFile(out + "/b.md").find("| map |"), std::string::npos);
   EXPECT_TRUE(FileExists(out + "/svg/lse_arena.svg"));

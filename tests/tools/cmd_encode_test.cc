@@ -105,21 +105,31 @@ TEST(CmdEncodeTest, WritesThroughACurrentMapSymlinkAndRefusesReadOnlyFiles) {
   ::chmod((dir + "/ro.lmap").c_str(), 0644);
 }
 
-// The exact 2.0 file is the default; the former lossy encoder is reached
-// only through --lossy, and its options are refused without it.
-TEST(CmdEncodeTest, LossyOptionsNeedLossy) {
+// The former lossy 1.0 file is no longer written: --lossy says what
+// replaced it, and its options are unknown. --lossless names the default,
+// --tolerance 0, and gives its bytes.
+TEST(CmdEncodeTest, LossyIsRemovedAndLosslessIsToleranceZero) {
   const std::string dir = MakeTempDir("encode_modes");
   const std::string yaml = CopyDepot(dir);
-  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--simplify-free"}, dir,
-                {"--simplify-free", "--lossy"});
-  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--rooms"}, dir, {"--rooms", "--lossy"});
-  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossy", "--lossless"}, dir,
-                {"--lossy", "--lossless"});
-  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/y.lmap", "--lossy", "--simplify-free"}).exit_code,
-            0);
-  EXPECT_NE(RunCli({"info", dir + "/y.lmap"}).out.find("version 1.0"), std::string::npos);
-  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/z.lmap"}).exit_code, 0);
-  EXPECT_NE(RunCli({"info", dir + "/z.lmap"}).out.find("version 2."), std::string::npos);
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossy"}, dir,
+                {"--lossy", "removed", "--tolerance T"});
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--tolerance", "1", "--lossy"}, dir,
+                {"--lossy", "removed"});
+  for (const char* option : {"--simplify-free", "--rooms", "--no-segments"}) {
+    ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", option}, dir, {"unknown option", option});
+  }
+  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--lossless", "--tolerance", "2"}, dir,
+                {"--lossless", "--tolerance"});
+  ASSERT_EQ(RunCli({"encode", yaml, "-o", dir + "/default.lmap", "--no-sync"}).exit_code, 0);
+  for (const char* exact : {"--lossless", "--tolerance=0"}) {
+    const CliResult r = RunCli({"encode", yaml, "-o", dir + "/exact.lmap", exact, "--no-sync"});
+    ASSERT_EQ(r.exit_code, 0) << exact << ": " << r.err;
+    EXPECT_EQ(ReadFile(dir + "/exact.lmap"), ReadFile(dir + "/default.lmap")) << exact;
+  }
+  const CliResult both =
+      RunCli({"encode", yaml, "-o", dir + "/exact.lmap", "--lossless", "--tolerance", "0"});
+  EXPECT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_NE(RunCli({"info", dir + "/default.lmap"}).out.find("version 2."), std::string::npos);
 }
 
 // --pose must fall on the map; its lower edge (0,0 with origin 0,0) is on it.
@@ -165,7 +175,7 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
 }
 
 // --compact writes an exact version 2.3 file no larger than the default
-// one (each tile keeps the smallest of more codings); not with --lossy.
+// one (each tile keeps the smallest of more codings).
 TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
   const std::string dir = MakeTempDir("encode_compact");
   const std::string yaml = CopyDepot(dir);
@@ -178,8 +188,6 @@ TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
   ASSERT_TRUE(decoded.ok() && original.ok());
   EXPECT_EQ(*decoded, *original);
   EXPECT_LT(ReadFile(dir + "/c.lmap").size(), ReadFile(dir + "/d.lmap").size());
-  ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--compact", "--lossy"}, dir,
-                {"--compact", "--lossy"});
 }
 
 // Without the PNG ratio (--no-png-ratio, or a map above 2^26 cells) an
@@ -210,7 +218,8 @@ TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
   ASSERT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("--origin X,Y[,YAW]"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("[--pose X,Y[,YAW]]"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("[--lossy [--simplify-free]]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("[--tolerance T]"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("--lossy"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("X,Y,YAW"), std::string::npos) << r.out;
 }
 

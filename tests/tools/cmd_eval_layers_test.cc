@@ -169,17 +169,18 @@ TEST(CmdEvalLayersTest, DepotMatchesBruteForce) {
   ExpectEvalMatchesBruteForce(map, dir + "/d.lmap", /*need_layers=*/true);
 }
 
-// A 1.0 lossy file: its segments are the walls.
+// A 1.0 lossy file (a fixture: 1.0 files are no longer written): its
+// segments are the walls.
 TEST(CmdEvalLayersTest, Version1FileMatchesBruteForce) {
-  const std::string dir = testing::MakeTempDir("eval_layers_v1");
   const std::string map = testing::BundledMapsDir() + "/nav2/depot.yaml";
-  ASSERT_EQ(RunCli({"encode", map, "--lossy", "-o", dir + "/d1.lmap"}).exit_code, 0);
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap";
   StatusOr<Grid> g = LoadRosMap(map);
-  StatusOr<LmapVectors> v = LoadLmapVectors(dir + "/d1.lmap");
+  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
   ASSERT_TRUE(g.ok() && v.ok());
   ASSERT_EQ(v->major, 1);
+  ASSERT_FALSE(v->walls.empty());
   const Reference ref = BruteForce(*g, *v);
-  const CliResult r = RunCli({"eval", map, dir + "/d1.lmap", "--json"});
+  const CliResult r = RunCli({"eval", map, lmap, "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const YAML::Node j = YAML::Load(r.out);
   EXPECT_NEAR(j["displ_ave_cells"].as<double>(), ref.displ_ave, 1e-9);

@@ -152,34 +152,6 @@ void AddCompact(const Grid& grid, int repeats, MapResult* result) {
                ".lmap 2.3 --compact --raster-only", result);
 }
 
-// The former lossy mode (`linemap encode --lossy`): its size and linemap
-// eval's figures of its decode.
-Status AddLossy(const Grid& grid, MapResult* result) {
-  EncodeOptions options;
-  options.format_v1 = true;
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> file, EncodeLmap(grid, options));
-  result->figures[key::kLmapLossyBytes] = static_cast<double>(file.size());
-  LINEMAP_ASSIGN_OR_RETURN(LmapContents contents, DecodeLmapContents(file));
-  const GridComparison eval = CompareGrids(grid, contents.grid);
-  auto& f = result->figures;
-  f[key::kEvalRecall] = eval.obstacle_recall_1;
-  f[key::kEvalPrecision] = eval.obstacle_precision_1;
-  f[key::kEvalFreeIou] = eval.free_iou;
-  f[key::kEvalLeaks] = static_cast<double>(eval.leaks);
-  f[key::kEvalUnknownFreed] = eval.unknown_turned_free_share;
-  f[key::kEvalLines] = static_cast<double>(contents.segments.size());
-  if (!contents.segments.empty()) {
-    std::vector<LineSegment> segments;
-    for (const LatticeSegment& s : contents.segments) {
-      segments.push_back({static_cast<double>(s.a.col), static_cast<double>(s.a.row),
-                          static_cast<double>(s.b.col), static_cast<double>(s.b.row)});
-    }
-    const LineFidelity fidelity = MeasureLineFidelity(ComputeEdgeMap(grid), segments);
-    f[key::kEvalDisplCm] = fidelity.displ_ave_cells * grid.meta.resolution * 100.0;
-  }
-  return Status::Ok();
-}
-
 }  // namespace
 
 std::size_t CellsWrong(const Grid& original, const Grid& decoded) {
@@ -206,8 +178,6 @@ Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* resu
   AddSpeed(grid, *file, what, result);
   AddRasterOnly(grid, result);
   AddCompact(grid, what.repeats, result);
-  Status lossy = AddLossy(grid, result);
-  if (!lossy.ok()) Note(result, ".lmap 1.0 --lossy", lossy);
   return Status::Ok();
 }
 

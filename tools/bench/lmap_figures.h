@@ -1,7 +1,6 @@
 // The .lmap columns of `linemap bench`: the default 2.0 file (exact, with
 // walls, rooms and furniture) with its speed, memory, round-trip check and
-// layer fidelity; the --raster-only 2.0 file; the former 1.0 lossy file with
-// the eval figures of its decode.
+// layer fidelity; the --raster-only 2.0 file; the --compact 2.3 files.
 #ifndef LINEMAP_TOOLS_BENCH_LMAP_FIGURES_H_
 #define LINEMAP_TOOLS_BENCH_LMAP_FIGURES_H_
 
@@ -18,10 +17,10 @@ struct LmapMeasure {
   bool memory = true;  // peak memory of its encode and decode (forks)
 };
 
-// Adds the kLmap* and kEval* figures of `grid` to `result`. A file that
-// cannot be written or read back adds a note; a default file that cannot be
-// written or decoded counts every cell as wrong (kLmapCellsWrong), so the
-// round-trip goal fails rather than skips the map.
+// Adds the kLmap* figures of `grid` to `result`. A file that cannot be
+// written or read back adds a note; a default file that cannot be written or
+// decoded counts every cell as wrong (kLmapCellsWrong), so the round-trip
+// goal fails rather than skips the map.
 Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* result);
 
 // Cells of `decoded` that differ from `original`, compared one by one; every

@@ -46,7 +46,6 @@ struct SizeMethod {
   std::string figure;  // size in bytes
   std::string encode_ms;
   std::string decode_ms;
-  std::string displ_cm;  // empty: lossless (DisPL 0 by construction)
 };
 
 // The encoder's command line as a user would type it, without the paths.
@@ -64,24 +63,22 @@ std::string WebpLabel() { return "WebP lossless (" + CommandText(WebpCodec().enc
 
 std::vector<SizeMethod> SizeMethods() {
   return {
-      {"source image (as stored)", key::kSourceBytes, "", "", ""},
-      {"PNG-9, smallest of the four below", key::kPng9Bytes, key::kPngEncodeMs, key::kPngDecodeMs,
-       ""},
-      {"PNG 8-bit (grey or palette, libpng z9)", key::kPng8Bytes, "", "", ""},
-      {"PNG 2-bit palette (libpng z9)", key::kPng2Bytes, "", "", ""},
-      {"pnmtopng -compression 9", key::kPnmtopngBytes, "", "", ""},
-      {"zstd -19 (raw cells)", key::kZstdBytes, "", "", ""},
-      {"xz -9e (raw cells)", key::kXzBytes, "", "", ""},
-      {"JBIG1 two planes (pbmtojbg -q)", key::kJbigBytes, "", "", ""},
-      {WebpLabel(), key::kWebpBytes, key::kWebpEncodeMs, key::kWebpDecodeMs, ""},
-      {JxlLabel(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs, ""},
+      {"source image (as stored)", key::kSourceBytes, "", ""},
+      {"PNG-9, smallest of the four below", key::kPng9Bytes, key::kPngEncodeMs, key::kPngDecodeMs},
+      {"PNG 8-bit (grey or palette, libpng z9)", key::kPng8Bytes, "", ""},
+      {"PNG 2-bit palette (libpng z9)", key::kPng2Bytes, "", ""},
+      {"pnmtopng -compression 9", key::kPnmtopngBytes, "", ""},
+      {"zstd -19 (raw cells)", key::kZstdBytes, "", ""},
+      {"xz -9e (raw cells)", key::kXzBytes, "", ""},
+      {"JBIG1 two planes (pbmtojbg -q)", key::kJbigBytes, "", ""},
+      {WebpLabel(), key::kWebpBytes, key::kWebpEncodeMs, key::kWebpDecodeMs},
+      {JxlLabel(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs},
       {".lmap 2.0 (default: exact, walls + rooms + furniture)", key::kLmapBytes, key::kLmapEncodeMs,
-       key::kLmapDecodeMs, ""},
-      {".lmap 2.0 --raster-only", key::kLmapRasterBytes, "", "", ""},
+       key::kLmapDecodeMs},
+      {".lmap 2.0 --raster-only", key::kLmapRasterBytes, "", ""},
       {".lmap 2.3 --compact (exact, layers, cells coded for size)", key::kLmapCompactBytes, "",
-       key::kLmapCompactDecodeMs, ""},
-      {".lmap 2.3 --compact --raster-only", key::kLmapRasterCompactBytes, "", "", ""},
-      {".lmap 1.0 --lossy", key::kLmapLossyBytes, "", "", key::kEvalDisplCm},
+       key::kLmapCompactDecodeMs},
+      {".lmap 2.3 --compact --raster-only", key::kLmapRasterCompactBytes, "", ""},
   };
 }
 
@@ -108,8 +105,7 @@ std::vector<Column> SizeColumns(bool as_ratio) {
       {key::kLmapBytes, "lmap 2.0"},
       {key::kLmapRasterBytes, "lmap raster"},
       {key::kLmapCompactBytes, "compact"},
-      {key::kLmapRasterCompactBytes, "raster compact"},
-      {key::kLmapLossyBytes, "lmap 1.0 lossy"}};
+      {key::kLmapRasterCompactBytes, "raster compact"}};
   std::vector<Column> columns;
   if (!as_ratio) columns = {{key::kCells, "cells"}};
   for (const auto& [figure, header] : sizes) {
@@ -137,8 +133,7 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
            "), each file decoded back (dwebp, djxl) and checked pixel for pixel. lmap 2.0 = "
            "`linemap encode` with no option (exact, walls + rooms + furniture); lmap raster = "
            "--raster-only (exact, cells only); compact and raster compact = the same with "
-           "--compact (cells coded for size, version 2.3); lmap 1.0 lossy = --lossy (the former "
-           "lossy encoder).",
+           "--compact (cells coded for size, version 2.3).",
        ColumnsTable(results, SizeColumns(/*as_ratio=*/false))});
   tables.push_back({"Size ratio to PNG-9", "Below 1 = smaller than the smallest PNG.",
                     ColumnsTable(results, SizeColumns(/*as_ratio=*/true))});
@@ -185,24 +180,12 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
                               {key::kPngDecodeMcellsPerS, "PNG dec Mcells/s", 1},
                               {key::kLmapEncodeMcellsPerS, "lmap2 enc Mcells/s", 1},
                               {key::kLmapDecodeMcellsPerS, "lmap2 dec Mcells/s", 1}})});
-  tables.push_back(
-      {"Fidelity of .lmap 1.0 --lossy",
-       "linemap eval of the 1.0 lossy decode against the map: obstacle recall and precision "
-       "within 1 cell, free-space IoU, leaks, unknown cells turned free (share of free), "
-       "DisPL_ave of the stored segments.",
-       ColumnsTable(results, {{key::kEvalRecall, "recall", 4},
-                              {key::kEvalPrecision, "precision", 4},
-                              {key::kEvalFreeIou, "free IoU", 4},
-                              {key::kEvalLeaks, "leaks"},
-                              {key::kEvalUnknownFreed, "unk->free", 4},
-                              {key::kEvalDisplCm, "DisPL cm", 2},
-                              {key::kEvalLines, "lines"}})});
   return tables;
 }
 
 NamedTable MediansTable(const std::vector<MapResult>& results) {
   Table table({"method", "maps", "median bytes", "median ratio", "worst ratio", "maps < PNG-9",
-               "DisPL cm", "enc ms", "dec ms"});
+               "enc ms", "dec ms"});
   for (const SizeMethod& method : SizeMethods()) {
     std::size_t maps = 0, smaller = 0;
     double worst = 0;
@@ -217,15 +200,12 @@ NamedTable MediansTable(const std::vector<MapResult>& results) {
     table.AddRow({method.name, std::to_string(maps), MedianText(results, method.figure, 0),
                   MedianText(results, method.figure, 3, true), any ? FormatFixed(worst, 3) : "n/a",
                   any ? std::to_string(smaller) + "/" + std::to_string(maps) : "n/a",
-                  method.displ_cm.empty() ? "0 (exact)" : MedianText(results, method.displ_cm, 2),
                   MedianText(results, method.encode_ms, 1),
                   MedianText(results, method.decode_ms, 1)});
   }
   return {"Medians over the corpus",
           "Ratio = size / PNG-9 per map, then the median (not the ratio of the medians). "
-          "Exact methods reproduce every cell, so their DisPL is 0; the lossy row's DisPL is "
-          "that of the segments it stores (the 2.0 file's own walls: see the goals tables). "
-          "n/a = not measured in "
+          "Every method is exact. n/a = not measured in "
           "this build (see the notes). WebP and JPEG XL times are the CPU time of the "
           "cwebp / dwebp / cjxl / djxl process, one run, start-up and file I/O included.",
           table};

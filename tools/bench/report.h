@@ -18,12 +18,11 @@ struct NamedTable {
   Table table;
 };
 
-// Per map: sizes, ratios to PNG-9, line extraction, speed and memory, and
-// the lossy .lmap fidelity.
+// Per map: sizes, ratios to PNG-9, line extraction, speed and memory.
 std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results);
 
 // One row per method: median size and ratio to PNG-9, worst ratio, maps
-// smaller than PNG-9, median DisPL, encode / decode time.
+// smaller than PNG-9, encode / decode time.
 NamedTable MediansTable(const std::vector<MapResult>& results);
 
 // One row per line extractor: median lines, DisPL_ave, time.

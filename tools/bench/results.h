@@ -39,8 +39,6 @@ inline constexpr const char* kLmapRasterBytes = "lmap2_raster_bytes";
 inline constexpr const char* kLmapCompactBytes = "lmap2_compact_bytes";
 inline constexpr const char* kLmapRasterCompactBytes = "lmap2_raster_compact_bytes";
 inline constexpr const char* kLmapCompactDecodeMs = "lmap2_compact_decode_ms";
-// .lmap 1.0 --lossy: the former lossy encoder (EncodeOptions::format_v1).
-inline constexpr const char* kLmapLossyBytes = "lmap1_lossy_bytes";
 inline constexpr const char* kPngEncodeMs = "png_encode_ms";
 inline constexpr const char* kPngDecodeMs = "png_decode_ms";
 inline constexpr const char* kPngEncodePeakMb = "png_encode_peak_mb";
@@ -91,14 +89,6 @@ inline constexpr const char* kLmapDisplCm = "lmap2_displ_cm";
 inline constexpr const char* kLmapLayerCost = "lmap2_layer_cost";  // default / raster-only - 1
 inline constexpr const char* kLmapDecodeSpeedupVsPng = "lmap2_decode_speedup_vs_png";
 inline constexpr const char* kLmapEncodeTimeVsPng = "lmap2_encode_time_vs_png";
-// linemap eval of the 1.0 --lossy decode against the map.
-inline constexpr const char* kEvalRecall = "lmap1_lossy_recall_1";
-inline constexpr const char* kEvalPrecision = "lmap1_lossy_precision_1";
-inline constexpr const char* kEvalFreeIou = "lmap1_lossy_free_iou";
-inline constexpr const char* kEvalLeaks = "lmap1_lossy_leaks";
-inline constexpr const char* kEvalUnknownFreed = "lmap1_lossy_unknown_to_free_share";
-inline constexpr const char* kEvalDisplCm = "lmap1_lossy_displ_cm";
-inline constexpr const char* kEvalLines = "lmap1_lossy_lines";
 }  // namespace key
 
 struct MapResult {

@@ -24,8 +24,8 @@ std::string MapOverlaySvg(const Grid& grid, const std::vector<LineSegment>& segm
 // and furniture outlines.
 Status WriteMapOverlaySvg(const std::string& dir, const Grid& grid, const MapResult& result);
 
-// Size ratio to PNG-9 (log scale) against DisPL_ave (cm), one point per map
-// and method, the medians as large markers. Lossless methods sit at DisPL 0.
+// Size ratio to PNG-9 (log scale), a column per method (all exact), one
+// point per map, the medians as large markers.
 std::string SummaryPlotSvg(const std::vector<MapResult>& results);
 
 std::string Base64(const std::string& bytes);

@@ -1,7 +1,7 @@
 // bench_tiles: sizes and speed of the .lmap 2.0 tile cell coder
 // (codec/codec/tile_coder.h) on the maps of ../shared/maps, against the 1.0
-// lossless planes (OCCP + FREE over an empty canvas, as `--lossless`
-// without segments codes them) and libpng level 9.
+// lossless planes (OCCP + FREE over an empty canvas, as the 1.0 encoder
+// coded them without segments) and libpng level 9.
 //
 //   bench_tiles [--maps DIR] [--tile N] [--sizes] [--no-hints] [--only SUBSTR]
 //               [--dump-pgm DIR] [--jxl FILE] [--file-layers]

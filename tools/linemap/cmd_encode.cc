@@ -1,6 +1,5 @@
-// linemap encode MAP -o OUT.lmap [--raster-only] [--tolerance 0] [--threads N]
-//                 [--lossy [--simplify-free]] [--method linemap|rmline] [--epsilon E]
-//                 [--pose X,Y[,YAW]] [--json]
+// linemap encode MAP -o OUT.lmap [--raster-only] [--tolerance T] [--threads N]
+//                 [--method linemap|rmline] [--epsilon E] [--pose X,Y[,YAW]] [--json]
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,7 +27,7 @@ namespace linemap::cli {
 
 const CommandSpec kEncodeSpec = {
     "encode",
-    "MAP -o OUT.lmap [--raster-only] [--compact] [--threads N] [--lossy [--simplify-free]] "
+    "MAP -o OUT.lmap [--tolerance T] [--raster-only] [--compact] [--threads N] "
     "[--method linemap|rmline] [--epsilon E] [--pose X,Y[,YAW]]",
     "save a map as an .lmap file (exact, with walls, rooms and furniture)",
     "By default writes a version 2.x file that decodes to the input cell for\n"
@@ -71,9 +70,6 @@ const CommandSpec kEncodeSpec = {
          "side of the sections the vector layers are stored in, at least 16 (default 0: one "
          "section up to 4096 cells a side, 2048 beyond); a window reads only the sections "
          "reaching its tiles"},
-        {"--lossy", "",
-         "write a version 1.0 file with the former lossy encoder (obstacles within one cell, "
-         "free space kept; it can drop wall surfaces: --tolerance keeps them)"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
         {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
         {"--pose", "X,Y[,YAW]",
@@ -82,11 +78,6 @@ const CommandSpec kEncodeSpec = {
         {"--time", "TEXT",
          "creation time stored as metadata (default: none, for reproducible output)"},
         {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
-        {"--rooms", "", "with --lossy: also store the room-border chains (ROOM)"},
-        {"--no-segments", "", "with --lossy: store no wall segments (SEGS)"},
-        {"--simplify-free", "",
-         "with --lossy: also fill small unknown holes and smooth the free/unknown boundary "
-         "(smaller files; plans through narrow passages may change)"},
         {"--no-png-ratio", "",
          "skip making the PNG-9 the ratio is printed against (skipped anyway above 2^26 "
          "cells, where it costs as much time and memory as the save)"},
@@ -104,20 +95,6 @@ namespace {
 
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   EncodeOptions options;
-  options.format_v1 = args.Has("--lossy");
-  for (const char* v1_only : {"--rooms", "--no-segments", "--simplify-free"}) {
-    if (args.Has(v1_only) && !options.format_v1) {
-      return InvalidArgumentError(std::string(v1_only) + " applies to --lossy files only");
-    }
-  }
-  if (options.format_v1 && (args.Has("--lossless") || args.Get("--tolerance"))) {
-    return InvalidArgumentError(
-        "--lossy writes a lossy file; --lossless / --tolerance 0 an exact "
-        "one; give one of them");
-  }
-  options.store_room_chains = args.Has("--rooms");
-  if (args.Has("--no-segments")) options.store_segments = false;
-  options.simplify_free_space = args.Has("--simplify-free");
   options.vector_layers = !args.Has("--raster-only");
   if (args.Has("--straight-walls") && args.Has("--follow-steps")) {
     return InvalidArgumentError("--straight-walls and --follow-steps exclude each other");
@@ -128,8 +105,8 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   if (options.tolerance_cells < 0 || options.tolerance_cells > 4) {
     return InvalidArgumentError("--tolerance must be a whole number of cells from 0 to 4");
   }
-  if (options.compact && options.format_v1) {
-    return InvalidArgumentError("--compact writes a version 2.3 file; not with --lossy");
+  if (args.Has("--lossless") && options.tolerance_cells != 0) {
+    return InvalidArgumentError("--lossless is --tolerance 0; give one of them");
   }
   if (args.Has("--png-ratio") && args.Has("--no-png-ratio")) {
     return InvalidArgumentError("--png-ratio and --no-png-ratio exclude each other");
@@ -243,7 +220,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
       json.Add("png_bytes", std::uint64_t{*report.png_bytes}).Add("ratio_to_png", ratio);
     }
     json.Add("exact", report.exact)
-        .Add("vector_layers", !options.format_v1 && options.vector_layers)
+        .Add("vector_layers", options.vector_layers)
         .Add("seconds", report.seconds);
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
@@ -252,8 +229,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
               static_cast<unsigned long long>(cells));
   std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
               static_cast<unsigned long long>(report.bytes),
-              options.format_v1       ? "version 1.0, lossy"
-              : !report.exact         ? "within the tolerance"
+              !report.exact           ? "within the tolerance"
               : options.vector_layers ? "exact, with walls, rooms and furniture"
                                       : "exact, cells only");
   if (report.png_bytes) {
@@ -273,8 +249,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
 std::optional<int> SaveAsRead(const std::string& map_path, const std::string& out,
                               const ParsedArgs& parsed, const EncodeOptions& options, double start,
                               bench::ProgressBar* bar) {
-  if (IsLmapFile(map_path) || options.tolerance_cells != 0 || options.format_v1 ||
-      options.robot_pose) {
+  if (IsLmapFile(map_path) || options.tolerance_cells != 0 || options.robot_pose) {
     return std::nullopt;
   }
   StatusOr<MapLoadOptions> load = MapLoadOptionsFrom(parsed);
@@ -303,6 +278,12 @@ std::optional<int> SaveAsRead(const std::string& map_path, const std::string& ou
 }  // namespace
 
 int RunEncode(const std::vector<std::string>& args) {
+  // Scripts written for the former lossy 1.0 file learn what replaced it.
+  if (std::find(args.begin(), args.end(), "--lossy") != args.end()) {
+    return ReportError("encode",
+                       InvalidArgumentError("--lossy (the former lossy 1.0 file) was removed; use "
+                                            "--tolerance T (1..4 cells) for a smaller file"));
+  }
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kEncodeSpec, args, &exit_code);
   if (!parsed) return exit_code;
@@ -359,8 +340,8 @@ int RunEncode(const std::vector<std::string>& args) {
   if (!png.ok()) return ReportError("encode", png.status());
   // Within a tolerance the file is exact where nothing could be simplified
   // (or the exact file was the smaller): which one, its decode says.
-  bool exact = !options->format_v1;
-  if (exact && options->tolerance_cells > 0) {
+  bool exact = true;
+  if (options->tolerance_cells > 0) {
     DecodeLimits limits;
     limits.max_cells = std::max<std::uint64_t>(limits.max_cells, grid->size());
     StatusOr<Grid> decoded = DecodeLmap(*bytes, limits);

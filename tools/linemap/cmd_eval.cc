@@ -1,6 +1,6 @@
 // linemap eval ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]: the
 // quality measures of a decoded map against the original, and with
-// --tolerance the guarantees of a lossy save within T cells.
+// --tolerance the guarantees of a save within T cells.
 #include <cstdio>
 #include <optional>
 #include <string>

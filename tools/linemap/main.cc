@@ -38,11 +38,12 @@ void PrintUsage(std::FILE* out) {
                "bad input.\n");
 }
 
-// The codec allocates a few grid-sized arrays per candidate file and frees
-// them again. glibc serves arrays over 32 MB (a 32-Mcell grid) by mmap and
-// returns them to the kernel when freed, so every such array of a large map
-// is faulted in and zeroed afresh: 64-Mcell encodes spent about 7 % of their
-// time in page faults. Raising the mmap and trim thresholds keeps freed
+// The codec allocates grid-sized arrays and frees them again (the former
+// lossy 1.0 encoder, where this was measured, a few per candidate file).
+// glibc serves arrays over 32 MB (a 32-Mcell grid) by mmap and returns them
+// to the kernel when freed, so every such array of a large map is faulted in
+// and zeroed afresh: 64-Mcell encodes with that encoder spent about 7 % of
+// their time in page faults. Raising the mmap and trim thresholds keeps freed
 // arrays in the heap for reuse; one arena keeps the encoder's second thread
 // from mapping its own (a thread arena's heaps hold at most 64 MB, so larger
 // arrays were mapped afresh there whatever the threshold). Process-wide

@@ -1,18 +1,23 @@
-// Round trips, edge cases, determinism, limits and corruption handling of
-// the .lmap encoder and decoder.
+// Edge cases, metadata, determinism and saving of the .lmap encoder and
+// decoder, and the 1.0 decoder on files built here and on the 1.0 fixtures
+// (1.0 files are no longer written): limits, corruption handling, chains
+// and Draco-coded segments. Version 2.x files are tested in
+// codec_v2_test.cc.
 #include "linemap/codec.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "codec/codec/chunk_coding.h"
 #include "codec/codec/draco_segments.h"
+#include "format/byte_io.h"
 #include "format/container.h"
 #include "format/deflate.h"
-#include "linemap/labeling.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
@@ -47,44 +52,17 @@ Grid RoundTrip(const Grid& grid, const EncodeOptions& options) {
   return decoded.ok() ? *decoded : Grid();
 }
 
-// The 1.0 encoder, lossy (EncodeOptions::format_v1): what most tests here
-// check. Version 2.0 files are tested in codec_v2_test.cc.
-EncodeOptions LossyV1() {
+EncodeOptions WithinOneCell() {
   EncodeOptions options;
-  options.format_v1 = true;
+  options.tolerance_cells = 1;
   return options;
 }
 
-EncodeOptions Lossless(LosslessMethod method) {
-  EncodeOptions options = LossyV1();
-  options.lossless = true;
-  options.lossless_method = method;
-  return options;
-}
-
-TEST(CodecTest, LosslessRoundTripOnRandomGrids) {
-  std::mt19937 rng(1);
-  for (int trial = 0; trial < 60; ++trial) {
-    const int w = 1 + static_cast<int>(rng() % 70);
-    const int h = 1 + static_cast<int>(rng() % 50);
-    const Grid grid = RandomGrid(rng, w, h, static_cast<int>(trial % 10));
-    for (LosslessMethod method : {LosslessMethod::kExactLayers, LosslessMethod::kResidual}) {
-      const Grid decoded = RoundTrip(grid, Lossless(method));
-      ASSERT_EQ(decoded, grid) << "trial " << trial << " " << w << "x" << h;
-    }
-  }
-}
-
-TEST(CodecTest, ResidualAloneRebuildsAnyGrid) {
-  // Lossy layers off: RESD codes the whole grid against an all-unknown base.
-  std::mt19937 rng(2);
-  EncodeOptions options = Lossless(LosslessMethod::kResidual);
-  options.store_segments = false;
-  for (int trial = 0; trial < 20; ++trial) {
-    const Grid grid =
-        RandomGrid(rng, 1 + static_cast<int>(rng() % 40), 1 + static_cast<int>(rng() % 40), 5);
-    ASSERT_EQ(RoundTrip(grid, options), grid) << "trial " << trial;
-  }
+// A 1.0 fixture's bytes (tests/data/lmap; fixtures_test.cc says how they
+// were made).
+std::vector<std::uint8_t> VersionOneFixture(const std::string& name) {
+  const std::string text = testing::ReadFile(testing::SourceDir() + "/tests/data/lmap/" + name);
+  return std::vector<std::uint8_t>(text.begin(), text.end());
 }
 
 TEST(CodecTest, EdgeCases) {
@@ -99,12 +77,11 @@ TEST(CodecTest, EdgeCases) {
   for (int i = 0; i < 20; ++i) no_free.set(i, i, Cell::kOccupied);
   grids.push_back(no_free);
   for (const Grid& grid : grids) {
-    EXPECT_EQ(RoundTrip(grid, Lossless(LosslessMethod::kExactLayers)), grid)
-        << grid.width() << "x" << grid.height();
-    const Grid lossy = RoundTrip(grid, LossyV1());
-    EXPECT_EQ(lossy.width(), grid.width());
-    EXPECT_EQ(lossy.height(), grid.height());
-    EXPECT_EQ(lossy.meta, grid.meta);
+    EXPECT_EQ(RoundTrip(grid, EncodeOptions{}), grid) << grid.width() << "x" << grid.height();
+    const Grid within = RoundTrip(grid, WithinOneCell());
+    EXPECT_EQ(within.width(), grid.width());
+    EXPECT_EQ(within.height(), grid.height());
+    EXPECT_EQ(within.meta, grid.meta);
   }
 }
 
@@ -116,12 +93,13 @@ TEST(CodecTest, HeaderKeepsMetadataBitForBit) {
   grid.meta.free_thresh = 0.25;
   grid.meta.negate = true;
   grid.meta.mode = MapMode::kScale;
-  const Grid decoded = RoundTrip(grid, LossyV1());
-  EXPECT_EQ(decoded.meta, grid.meta);
+  for (const EncodeOptions& options : {EncodeOptions{}, WithinOneCell()}) {
+    EXPECT_EQ(RoundTrip(grid, options).meta, grid.meta);
+  }
 }
 
 TEST(CodecTest, MetadataChunkIsReadBack) {
-  EncodeOptions options = LossyV1();
+  EncodeOptions options;
   options.creator = "unit test";
   options.time = "2026-11-22T04:00:00Z";
   options.frame_id = "map";
@@ -140,9 +118,7 @@ TEST(CodecTest, EncodingIsDeterministic) {
   const std::string map = testing::BundledMapsDir() + "/nav2/depot.yaml";
   auto grid = LoadRosMap(map);
   ASSERT_TRUE(grid.ok());
-  for (bool lossless : {false, true}) {
-    EncodeOptions options = LossyV1();
-    options.lossless = lossless;
+  for (const EncodeOptions& options : {EncodeOptions{}, WithinOneCell()}) {
     auto a = EncodeLmap(*grid, options);
     auto b = EncodeLmap(*grid, options);
     ASSERT_TRUE(a.ok() && b.ok());
@@ -150,22 +126,19 @@ TEST(CodecTest, EncodingIsDeterministic) {
   }
 }
 
-// The candidates coded on a second thread give the same bytes as coding all
-// on the calling thread.
+// The work done on a second thread gives the same bytes as doing all on
+// the calling thread.
 TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
   for (const std::string& path : testing::FindYamlFiles(testing::BundledMapsDir())) {
     auto grid = LoadRosMap(path);
     ASSERT_TRUE(grid.ok()) << path;
-    for (bool v1 : {false, true}) {
-      EncodeOptions one, two;
-      one.format_v1 = two.format_v1 = v1;
-      one.max_threads = 1;
-      two.max_threads = 2;
-      auto a = EncodeLmap(*grid, one);
-      auto b = EncodeLmap(*grid, two);
-      ASSERT_TRUE(a.ok() && b.ok()) << path;
-      EXPECT_EQ(*a, *b) << path;
-    }
+    EncodeOptions one, two;
+    one.max_threads = 1;
+    two.max_threads = 2;
+    auto a = EncodeLmap(*grid, one);
+    auto b = EncodeLmap(*grid, two);
+    ASSERT_TRUE(a.ok() && b.ok()) << path;
+    EXPECT_EQ(*a, *b) << path;
   }
   EncodeOptions none;
   none.max_threads = -1;
@@ -175,139 +148,28 @@ TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
   EXPECT_NE(bad.status().message().find("max_threads"), std::string::npos);
 }
 
-// The lossy goals, on the bundled maps.
-TEST(CodecTest, LossyGoalsOnBundledMaps) {
-  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
-  ASSERT_FALSE(maps.empty());
-  for (const std::string& path : maps) {
-    auto grid = LoadRosMap(path);
-    ASSERT_TRUE(grid.ok()) << path;
-    const Grid decoded = RoundTrip(*grid, LossyV1());
-    const GridComparison m = CompareGrids(*grid, decoded);
-    EXPECT_TRUE(m.same_geometry) << path;
-    EXPECT_EQ(m.leaks, 0u) << path;
-    EXPECT_GE(m.obstacle_recall_1, 0.98) << path;
-    EXPECT_GE(m.obstacle_precision_1, 0.98) << path;
-    EXPECT_GE(m.free_iou, 0.95) << path;
-    EXPECT_LE(m.unknown_turned_free_share, 0.02) << path;
-  }
-}
-
-// Without segments the exact layers compete with the lossy candidates, so a
-// lossy file is never larger than the lossless one; with segments it may be
-// up to 10 % larger than without (the walls as lines are worth that much).
-TEST(CodecTest, LossyIsNoLargerThanLosslessBeyondTheSegmentAllowanceOnBundledMaps) {
-  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
-  ASSERT_FALSE(maps.empty());
-  EncodeOptions plain_lossy = LossyV1();
-  plain_lossy.store_segments = false;
-  EncodeOptions plain_lossless = plain_lossy;
-  plain_lossless.lossless = true;
-  for (const std::string& path : maps) {
-    auto grid = LoadRosMap(path);
-    ASSERT_TRUE(grid.ok()) << path;
-    auto lossy_bytes = EncodeLmap(*grid, plain_lossy);
-    auto lossless_bytes = EncodeLmap(*grid, plain_lossless);
-    auto default_bytes = EncodeLmap(*grid, LossyV1());
-    ASSERT_TRUE(lossy_bytes.ok() && lossless_bytes.ok() && default_bytes.ok()) << path;
-    EXPECT_LE(lossy_bytes->size(), lossless_bytes->size()) << path;
-    EXPECT_LE(static_cast<double>(default_bytes->size()),
-              1.10 * static_cast<double>(lossy_bytes->size()))
-        << path;
-  }
-}
-
-// By default the lossy decode keeps the free space a planner sees: no cell
-// turns free, and every free cell of a free region of 24+ cells (the largest
-// speck the boldest tuning drops) stays free. Checked independently of the
-// encoder, with the paper's labelling.
-void ExpectFreeSpaceKept(const std::string& path) {
-  auto grid = LoadRosMap(path);
-  ASSERT_TRUE(grid.ok()) << path;
-  auto bytes = EncodeLmap(*grid, LossyV1());
-  ASSERT_TRUE(bytes.ok()) << path;
-  auto decoded = DecodeLmap(*bytes);
-  ASSERT_TRUE(decoded.ok()) << path;
-  BinaryMask free(grid->width(), grid->height());
-  for (std::size_t i = 0; i < free.bits.size(); ++i) {
-    free.bits[i] = grid->cells()[i] == Cell::kFree;
-  }
-  const Labeling regions = LabelComponents(free, Connectivity::kFour);
-  std::size_t turned_free = 0, lost = 0;
-  for (std::size_t i = 0; i < free.bits.size(); ++i) {
-    const bool was_free = free.bits[i] != 0;
-    const bool is_free = decoded->cells()[i] == Cell::kFree;
-    turned_free += is_free && !was_free;
-    lost += was_free && !is_free && regions.components[regions.labels[i] - 1].cell_count >= 24;
-  }
-  EXPECT_EQ(turned_free, 0u) << path;
-  EXPECT_EQ(lost, 0u) << path;
-}
-
-TEST(CodecTest, LossyKeepsFreeSpaceOnBundledMaps) {
-  const std::vector<std::string> maps = testing::FindYamlFiles(testing::BundledMapsDir());
-  ASSERT_FALSE(maps.empty());
-  for (const std::string& path : maps) ExpectFreeSpaceKept(path);
-}
-
-TEST(CodecTest, SimplifyFreeSpaceChangesFreeCellsOnARaggedMap) {
-  // The option is what trades the free space for size: on a scanned map it
-  // must actually move the free boundary.
-  auto grid = LoadRosMap(testing::BundledMapsDir() + "/strands/kth/map.yaml");
-  ASSERT_TRUE(grid.ok());
-  EncodeOptions simplify = LossyV1();
-  simplify.simplify_free_space = true;
-  auto plain = EncodeLmap(*grid, LossyV1());
-  auto simplified = EncodeLmap(*grid, simplify);
-  ASSERT_TRUE(plain.ok() && simplified.ok());
-  EXPECT_LT(simplified->size(), plain->size());
-  auto decoded = DecodeLmap(*simplified);
-  ASSERT_TRUE(decoded.ok());
-  std::size_t turned_free = 0;
-  for (std::size_t i = 0; i < grid->size(); ++i) {
-    turned_free += decoded->cells()[i] == Cell::kFree && grid->cells()[i] != Cell::kFree;
-  }
-  EXPECT_GT(turned_free, 0u);
-}
-
-TEST(CodecTest, LosslessRoundTripOnSharedMaps) {
-  const std::string dir = testing::SharedMapsDir();
-  if (dir.empty()) GTEST_SKIP() << "../shared/maps is absent";
-  std::vector<std::string> maps = testing::FindYamlFiles(dir);
-  for (const std::string& image : testing::FindBareImages(dir)) maps.push_back(image);
-  int tested = 0;
-  for (const std::string& path : maps) {
-    auto grid = LoadRosMap(path);
-    if (!grid.ok()) continue;  // e.g. a YAML naming a missing image
-    EncodeOptions options = LossyV1();
-    options.lossless = true;
-    options.store_segments = false;  // the segments do not change exactness; keep the test fast
-    EXPECT_EQ(RoundTrip(*grid, options), *grid) << path;
-    ++tested;
-  }
-  EXPECT_GT(tested, 10);
+// A 1.0 file of a width x height map holding `chunks` (type, payload)
+// after its header.
+using ChunkList = std::vector<std::pair<std::string, std::vector<std::uint8_t>>>;
+std::vector<std::uint8_t> VersionOneFile(int width, int height, const ChunkList& chunks) {
+  HeaderFields header;
+  header.width = width;
+  header.height = height;
+  ContainerWriter writer(1, 0);
+  writer.AddChunk("LMHD", WriteHeader(header));
+  for (const auto& [type, payload] : chunks) writer.AddChunk(type, payload);
+  return writer.Finish();
 }
 
 TEST(CodecTest, DecoderRefusesHugeDimensionsBeforeAllocating) {
-  ContainerWriter writer(1, 0);
-  HeaderFields header;
-  header.width = 100000;
-  header.height = 100000;
-  writer.AddChunk("LMHD", WriteHeader(header));
-  auto grid = DecodeLmap(writer.Finish());
+  auto grid = DecodeLmap(VersionOneFile(100000, 100000, {}));
   ASSERT_FALSE(grid.ok());
   EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted);
   EXPECT_NE(grid.status().message().find("LMHD"), std::string::npos);
 }
 
 std::vector<std::uint8_t> WithExtraChunk(const std::string& type) {
-  ContainerWriter writer(1, 0);
-  HeaderFields header;
-  header.width = 4;
-  header.height = 3;
-  writer.AddChunk("LMHD", WriteHeader(header));
-  writer.AddChunk(type, {0, 1, 2});
-  return writer.Finish();
+  return VersionOneFile(4, 3, {{type, {0, 1, 2}}});
 }
 
 TEST(CodecTest, UnknownAncillaryChunkIsSkippedUnknownCriticalRefused) {
@@ -320,26 +182,25 @@ TEST(CodecTest, UnknownAncillaryChunkIsSkippedUnknownCriticalRefused) {
   EXPECT_NE(refused.status().message().find("ZZZZ"), std::string::npos);
 }
 
-TEST(CodecTest, EveryBitFlipOfASmallFileIsDetectedOrHarmless) {
-  std::mt19937 rng(9);
-  Grid grid = RandomGrid(rng, 24, 16, 8);
-  EncodeOptions options = LossyV1();
-  options.lossless = true;
-  options.creator = "x";
-  auto bytes = EncodeLmap(grid, options);
-  ASSERT_TRUE(bytes.ok());
-  for (std::size_t i = 0; i < bytes->size(); ++i) {
+TEST(CodecTest, EveryBitFlipOfASmallVersionOneFileIsDetectedOrHarmless) {
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  ASSERT_TRUE(grid.ok());
+  const std::vector<std::uint8_t> bytes = VersionOneFixture("lse_arena_lossless.lmap");
+  auto whole = DecodeLmap(bytes);
+  ASSERT_TRUE(whole.ok()) << whole.status().ToString();
+  ASSERT_EQ(*whole, *grid);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
     for (int bit = 0; bit < 8; ++bit) {
-      std::vector<std::uint8_t> bad = *bytes;
+      std::vector<std::uint8_t> bad = bytes;
       bad[i] ^= static_cast<std::uint8_t>(1 << bit);
       auto decoded = DecodeLmap(bad);
       if (decoded.ok()) {
-        EXPECT_EQ(*decoded, grid) << "byte " << i << " bit " << bit;
+        EXPECT_EQ(*decoded, *grid) << "byte " << i << " bit " << bit;
       }
     }
   }
-  for (std::size_t n = 0; n < bytes->size(); ++n) {
-    EXPECT_FALSE(DecodeLmap(std::vector<std::uint8_t>(bytes->begin(), bytes->begin() + n)).ok());
+  for (std::size_t n = 0; n < bytes.size(); ++n) {
+    EXPECT_FALSE(DecodeLmap(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + n)).ok());
   }
 }
 
@@ -348,8 +209,7 @@ TEST(CodecTest, SaveAndLoad) {
   const std::string path = dir + "/map.lmap";
   std::mt19937 rng(4);
   const Grid grid = RandomGrid(rng, 30, 20, 7);
-  EncodeOptions options = LossyV1();
-  options.lossless = true;
+  const EncodeOptions options;
   ASSERT_TRUE(SaveLmap(path, grid, options).ok());
   auto loaded = LoadLmap(path);
   ASSERT_TRUE(loaded.ok()) << loaded.status().ToString();
@@ -403,35 +263,76 @@ namespace {
 // A SEGS chunk may be Draco-coded (payload coder 2); it must decode to the
 // same grid as the varint form.
 TEST(CodecTest, DracoCodedSegmentsDecodeLikeVarints) {
+  // Canonical (a <= b by row, then column) and in the order of their a.
   const std::vector<LatticeSegment> segments = {
       {{0, 0}, {9, 0}}, {{2, 1}, {2, 7}}, {{8, 3}, {1, 6}}, {{5, 5}, {9, 9}}};
-  HeaderFields header;
-  header.width = 10;
-  header.height = 10;
-  auto file = [&](const std::vector<std::uint8_t>& segs_payload) {
-    ContainerWriter writer(1, 0);
-    writer.AddChunk("LMHD", WriteHeader(header));
-    writer.AddChunk("SEGS", segs_payload);
-    return writer.Finish();
+  auto file = [](const std::vector<std::uint8_t>& segs_payload) {
+    return VersionOneFile(10, 10, {{"SEGS", segs_payload}});
   };
-  std::vector<LatticeSegment> canonical = segments;
-  CanonicalizeSegments(&canonical);
   std::vector<std::uint8_t> draco = {static_cast<std::uint8_t>(PayloadCoder::kDraco)};
-  const std::vector<std::uint8_t> body = EncodeSegmentsDraco(canonical);
+  const std::vector<std::uint8_t> body = EncodeSegmentsDraco(segments);
   ASSERT_FALSE(body.empty());
   draco.insert(draco.end(), body.begin(), body.end());
   auto from_draco = DecodeLmapContents(file(draco));
   ASSERT_TRUE(from_draco.ok()) << from_draco.status().ToString();
-  auto from_varint = DecodeLmapContents(file(WrapPayload(WriteSegments(canonical), false)));
-  ASSERT_TRUE(from_varint.ok());
-  EXPECT_EQ(from_draco->segments, canonical);
+  // The varint form (spec/format.md 11.3): row step, column (relative on
+  // the same row), rows and signed columns to b.
+  ByteWriter varints;
+  varints.PutU8(0);  // payload coder: raw
+  varints.PutVarint(segments.size());
+  for (const auto& [dr, c, h, w] : {std::tuple{0, 0, 0, 9}, std::tuple{1, 2, 6, 0},
+                                    std::tuple{2, 8, 3, -7}, std::tuple{2, 5, 4, 4}}) {
+    varints.PutVarint(static_cast<std::uint64_t>(dr));
+    varints.PutVarint(static_cast<std::uint64_t>(c));
+    varints.PutVarint(static_cast<std::uint64_t>(h));
+    varints.PutSignedVarint(w);
+  }
+  auto from_varint = DecodeLmapContents(file(varints.bytes()));
+  ASSERT_TRUE(from_varint.ok()) << from_varint.status().ToString();
+  EXPECT_EQ(from_varint->segments, segments);
+  EXPECT_EQ(from_draco->segments, segments);
   EXPECT_EQ(from_draco->grid, from_varint->grid);
   EXPECT_EQ(from_draco->chunks[1].coder, "draco");
   // Draco is accepted for SEGS only.
-  ContainerWriter writer(1, 0);
-  writer.AddChunk("LMHD", WriteHeader(header));
-  writer.AddChunk("OCCP", draco);
-  EXPECT_FALSE(DecodeLmap(writer.Finish()).ok());
+  EXPECT_FALSE(DecodeLmap(VersionOneFile(10, 10, {{"OCCP", draco}})).ok());
+}
+
+// A chain body of 1.0 ROOM / BLOB (spec/format.md 11.2), written here from
+// the spec: one chain from `start`, each step a turn of the direction.
+std::vector<std::uint8_t> OneChainPayload(CellIndex start, const std::vector<std::uint8_t>& turns) {
+  ByteWriter body;
+  body.PutU8(0);  // payload coder: raw
+  body.PutVarint(1);
+  body.PutVarint(turns.size() + 1);
+  body.PutVarint(static_cast<std::uint64_t>(start.col));
+  body.PutVarint(static_cast<std::uint64_t>(start.row));
+  for (std::uint8_t turn : turns) body.PutU8(turn);
+  return body.bytes();
+}
+
+// No encoder wrote BLOB: a room filled as free, then a blob in it filled as
+// occupied, in the order of the file.
+TEST(CodecTest, VersionOneRoomAndBlobChainsAreFilled) {
+  // The border of columns 1..5 x rows 1..5: 4 steps east, north, west, and
+  // 3 south back next to the start.
+  const auto room = OneChainPayload({1, 1}, {0, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0, 0, 2, 0, 0});
+  // The 2 x 2 cells from (2, 2): east, north, west.
+  const auto blob = OneChainPayload({2, 2}, {0, 2, 2});
+  auto contents = DecodeLmapContents(VersionOneFile(8, 7, {{"ROOM", room}, {"BLOB", blob}}));
+  ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+  Grid expected(8, 7, Cell::kUnknown);
+  for (int r = 1; r <= 5; ++r) {
+    for (int c = 1; c <= 5; ++c) expected.set(c, r, Cell::kFree);
+  }
+  for (int r = 2; r <= 3; ++r) {
+    for (int c = 2; c <= 3; ++c) expected.set(c, r, Cell::kOccupied);
+  }
+  EXPECT_EQ(contents->grid, expected);
+  ASSERT_EQ(contents->room_chains.size(), 1u);
+  EXPECT_EQ(contents->room_chains[0].size(), 16u);
+  ASSERT_EQ(contents->blob_outlines.size(), 1u);
+  const std::vector<CellIndex> outline = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+  EXPECT_EQ(contents->blob_outlines[0], outline);
 }
 
 }  // namespace
@@ -445,22 +346,14 @@ namespace {
 // must give an error or a grid, never a crash (run under the sanitizers).
 TEST(CodecTest, RandomlyDamagedChunksNeverCrash) {
   std::mt19937 rng(21);
+  // Between them every chunk type a 1.0 encoder wrote: meta, ROOM, SEGS,
+  // OCCP, FREE, RESD.
   std::vector<std::vector<std::uint8_t>> files;
-  for (int k = 0; k < 3; ++k) {
-    const Grid grid = RandomGrid(rng, 12 + k * 9, 10 + k * 5, 8);
-    EncodeOptions options = LossyV1();
-    options.lossless = k != 1;
-    options.lossless_method = k == 2 ? LosslessMethod::kResidual : LosslessMethod::kExactLayers;
-    options.creator = "t";
-    auto bytes = EncodeLmap(grid, options);
-    ASSERT_TRUE(bytes.ok());
-    files.push_back(*bytes);
+  for (const char* name :
+       {"lse_arena_lossless.lmap", "lse_arena_lossy.lmap", "depot_lossy.lmap",
+        "depot_v1_residual.lmap", "depot_v1_room_chains.lmap", "depot_lossy_rooms.lmap"}) {
+    files.push_back(VersionOneFixture(name));
   }
-  const std::string depot = testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap";
-  files.push_back([&] {
-    const std::string text = testing::ReadFile(depot);
-    return std::vector<std::uint8_t>(text.begin(), text.end());
-  }());
   int decoded_ok = 0;
   for (int trial = 0; trial < 1200; ++trial) {
     const std::vector<std::uint8_t>& file = files[trial % files.size()];

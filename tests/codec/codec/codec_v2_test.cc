@@ -131,17 +131,6 @@ TEST(CodecV2Test, MinorVersionNamesTheNewestFeature) {
   }
 }
 
-TEST(CodecV2Test, CompactCellsAreNotForVersionOneFiles) {
-  auto depot = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
-  ASSERT_TRUE(depot.ok());
-  EncodeOptions options;
-  options.format_v1 = true;
-  options.compact = true;
-  auto bytes = EncodeLmap(*depot, options);
-  ASSERT_FALSE(bytes.ok());
-  EXPECT_EQ(bytes.status().code(), StatusCode::kInvalidArgument);
-}
-
 TEST(CodecV2Test, SharedMapsRoundTripExactly) {
   const std::vector<std::string> maps = SharedMaps();
   if (maps.empty()) GTEST_SKIP() << "../shared/maps is absent";

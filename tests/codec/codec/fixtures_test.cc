@@ -4,7 +4,9 @@
 // grid-row order, computed from the decoded PGM by a separate script).
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "codec/codec/tolerance.h"
@@ -27,17 +29,66 @@ std::uint32_t CellsCrc(const Grid& grid) {
   return Crc32(0, values.data(), values.size());
 }
 
+// The chunk types of a file, in file order, separated by spaces.
+std::string ChunkTypes(const LmapContents& contents) {
+  std::string types;
+  for (const LmapChunkInfo& chunk : contents.chunks) {
+    types += (types.empty() ? "" : " ") + chunk.type;
+  }
+  return types;
+}
+
+// Version 1.0 files are no longer written (2.x replaced them), so the 1.0
+// decoder is tested on these files alone. They were written by the 1.0
+// encoder and are never rewritten: the *_lossless and *_lossy ones with its
+// defaults; before it was removed, depot_v1_residual (lossless, the lossy
+// planes plus RESD), depot_v1_room_chains (lossless, room-border chains and
+// metadata), depot_lossy_simplify_free (free space simplified) and
+// depot_lossy_rooms (room chains and wall segments). Together they hold
+// every 1.0 chunk but BLOB, which no encoder wrote, and Draco-coded SEGS:
+// codec_test.cc builds files with both.
 TEST(FixturesTest, LosslessFixturesDecodeToTheirMaps) {
-  const std::pair<const char*, const char*> cases[] = {
-      {"lse_arena_lossless.lmap", "/navtut/lse_arena.yaml"},
-      {"depot_lossless.lmap", "/nav2/depot.yaml"},
+  const struct {
+    const char* file;
+    const char* map;
+    const char* chunks;
+  } cases[] = {
+      {"lse_arena_lossless.lmap", "/navtut/lse_arena.yaml", "LMHD OCCP FREE"},
+      {"depot_lossless.lmap", "/nav2/depot.yaml", "LMHD OCCP FREE"},
+      {"depot_v1_residual.lmap", "/nav2/depot.yaml", "LMHD OCCP FREE RESD"},
+      {"depot_v1_room_chains.lmap", "/nav2/depot.yaml", "LMHD meta ROOM OCCP FREE"},
   };
-  for (const auto& [file, map] : cases) {
-    auto decoded = LoadLmap(Fixture(file));
-    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+  for (const auto& [file, map, chunks] : cases) {
+    auto contents = LoadLmapContents(Fixture(file));
+    ASSERT_TRUE(contents.ok()) << file << ": " << contents.status().ToString();
+    EXPECT_EQ(contents->major, 1) << file;
+    EXPECT_TRUE(contents->lossless) << file;
+    EXPECT_EQ(ChunkTypes(*contents), chunks) << file;
     auto original = LoadRosMap(testing::BundledMapsDir() + map);
     ASSERT_TRUE(original.ok());
-    EXPECT_EQ(*decoded, *original) << file;
+    EXPECT_EQ(contents->grid, *original) << file;
+  }
+}
+
+// The metadata and room chains were given to the encoder: what the file
+// holds beside the cells.
+TEST(FixturesTest, VersionOneRoomChainsAndMetadataAreReadBack) {
+  auto contents = LoadLmapContents(Fixture("depot_v1_room_chains.lmap"));
+  ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+  const std::vector<std::pair<std::string, std::string>> metadata = {
+      {"creator", "linemap 1.0 fixture"},
+      {"time", "2026-11-27T00:00:00Z"},
+      {"frame_id", "map"},
+      {"robot_pose", "10 5 0.5"}};
+  EXPECT_EQ(contents->metadata, metadata);
+  EXPECT_EQ(contents->room_chains.size(), 8u);
+  EXPECT_TRUE(contents->segments.empty());
+  // Every chain's cells were filled as free before the planes: cells of the
+  // map's free space.
+  for (const auto& chain : contents->room_chains) {
+    for (const CellIndex& p : chain) {
+      EXPECT_EQ(contents->grid.at(p.col, p.row), Cell::kFree) << p.col << "," << p.row;
+    }
   }
 }
 
@@ -96,27 +147,40 @@ TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
   }
 }
 
+// The lossy 1.0 files decode to the grids recorded when they were written
+// (see above for how they were made): `linemap decode FILE -o X.yaml`, then
+// the CRC-32 (zlib) and counts of X.pgm's pixels read as cells (254 free 0,
+// 0 occupied 1, 205 unknown 2), bottom row first, by a separate script.
 TEST(FixturesTest, LossyFixturesDecodeToTheRecordedGrids) {
   struct Case {
     const char* file;
+    const char* chunks;
     int width, height;
     std::uint32_t crc;
     std::size_t free, occupied, unknown;
   };
   const Case cases[] = {
-      {"lse_arena_lossy.lmap", 80, 60, 0x6305db6fu, 4455, 339, 6},
-      {"depot_lossy.lmap", 604, 307, 0x6afc8617u, 180014, 4942, 472},
+      {"lse_arena_lossy.lmap", "LMHD SEGS OCCP FREE", 80, 60, 0x6305db6fu, 4455, 339, 6},
+      {"depot_lossy.lmap", "LMHD SEGS OCCP FREE", 604, 307, 0x6afc8617u, 180014, 4942, 472},
+      {"depot_lossy_simplify_free.lmap", "LMHD SEGS OCCP FREE", 604, 307, 0xde577afcu, 179759, 4711,
+       958},
+      {"depot_lossy_rooms.lmap", "LMHD ROOM SEGS OCCP FREE", 604, 307, 0x037ce4b7u, 179165, 4564,
+       1699},
   };
   for (const Case& c : cases) {
-    auto decoded = LoadLmap(Fixture(c.file));
-    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
-    EXPECT_EQ(decoded->width(), c.width);
-    EXPECT_EQ(decoded->height(), c.height);
-    const CellCounts counts = decoded->Count();
+    auto contents = LoadLmapContents(Fixture(c.file));
+    ASSERT_TRUE(contents.ok()) << c.file << ": " << contents.status().ToString();
+    EXPECT_EQ(contents->major, 1) << c.file;
+    EXPECT_FALSE(contents->lossless) << c.file;
+    EXPECT_EQ(ChunkTypes(*contents), c.chunks) << c.file;
+    const Grid& decoded = contents->grid;
+    EXPECT_EQ(decoded.width(), c.width);
+    EXPECT_EQ(decoded.height(), c.height);
+    const CellCounts counts = decoded.Count();
     EXPECT_EQ(counts.free, c.free) << c.file;
     EXPECT_EQ(counts.occupied, c.occupied) << c.file;
     EXPECT_EQ(counts.unknown, c.unknown) << c.file;
-    EXPECT_EQ(CellsCrc(*decoded), c.crc) << c.file;
+    EXPECT_EQ(CellsCrc(decoded), c.crc) << c.file;
   }
 }
 

@@ -68,9 +68,6 @@ TEST(RowEncoderTest, CodesMapsOfSeveralSectionsExactOnly) {
   options.layer_section_cells = 0;
   options.tolerance_cells = 1;
   EXPECT_FALSE(EncodesByRows(5000, 5000, options));
-  EncodeOptions v1;
-  v1.format_v1 = true;
-  EXPECT_FALSE(EncodesByRows(5000, 5000, v1));
 }
 
 TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
