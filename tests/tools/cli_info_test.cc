@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "linemap/lmap_vectors.h"
 #include "tests/testing/test_support.h"
@@ -65,6 +66,29 @@ TEST(CliInfoTest, LmapCountsTheVectorLayers) {
                            std::to_string(v->furniture.size()) + " furniture\n";
   EXPECT_NE(text.out.find(line), std::string::npos) << line << text.out;
   EXPECT_NE(text.out.find("chunk:      CELL"), std::string::npos) << text.out;
+}
+
+// What the first line says a file is: exact, within a tolerance (2.x cells
+// in blocks), or the former lossy 1.0 file (a fixture: 1.0 is no longer
+// written).
+TEST(CliInfoTest, FirstLineSaysHowExactTheFileIs) {
+  const std::string dir = MakeTempDir("cli_info_fidelity");
+  const std::string map =
+      testing::SourceDir() + "/tests/data/maps/turtlebot_apps/" + "willow-2010-02-18-0.10.yaml";
+  ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/exact.lmap"}).exit_code, 0);
+  ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/t2.lmap", "--tolerance", "2"}).exit_code, 0);
+  const std::string lossy_v1 = testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap";
+  const std::pair<std::string, std::string> cases[] = {
+      {dir + "/exact.lmap", ", lossless)\n"},
+      {dir + "/t2.lmap", ", within a tolerance)\n"},
+      {lossy_v1, "(.lmap version 1.0, lossy)\n"},
+  };
+  for (const auto& [file, label] : cases) {
+    const CliResult r = RunCli({"info", file});
+    ASSERT_EQ(r.exit_code, 0) << file << ": " << r.err;
+    EXPECT_NE(r.out.substr(0, r.out.find('\n') + 1).find(label), std::string::npos) << file << "\n"
+                                                                                    << r.out;
+  }
 }
 
 TEST(CliInfoTest, TextOutputOnABundledMap) {

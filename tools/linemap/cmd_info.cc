@@ -101,8 +101,13 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
+  // A 2.x file that is not exact was saved within a tolerance (its cells
+  // in blocks); only the former 1.0 mode wrote lossy files without one.
+  const char* fidelity = contents->lossless    ? "lossless"
+                         : contents->major > 1 ? "within a tolerance"
+                                               : "lossy";
   std::printf("file:       %s (.lmap version %d.%d, %s)\n", path.c_str(), contents->major,
-              contents->minor, contents->lossless ? "lossless" : "lossy");
+              contents->minor, fidelity);
   std::printf("size:       %d x %d cells\n", grid.width(), grid.height());
   std::printf("resolution: %g m/cell\n", grid.meta.resolution);
   std::printf("origin:     x %g m, y %g m, yaw %g rad\n", grid.meta.origin.x, grid.meta.origin.y,
