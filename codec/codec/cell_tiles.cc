@@ -88,6 +88,11 @@ std::vector<std::uint8_t> EncodeCellTile(const std::vector<Cell>& cells,
   return best;
 }
 
+int TileSide(int width, int height, int requested) {
+  if (requested > 0) return requested;
+  return std::max(width, height) <= 4 * kTileCells ? kTileCells : kLargeMapTileCells;
+}
+
 std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& layers, int tile_size,
                                           int threads, bool compact) {
   ByteWriter out;

@@ -21,6 +21,23 @@ namespace linemap {
 inline constexpr int kMinTileSize = 16;
 inline constexpr int kMaxTileSize = 1 << 16;
 
+// The tile side the encoder picks for a map of at most 4096 cells a side
+// (one tile for most maps of ../shared/maps: each tile starts its models
+// afresh, so fewer tiles code smaller).
+inline constexpr int kTileCells = 1024;
+// The tile side of larger maps, whose users read them by windows: a window
+// decodes every tile it meets from the tile's first row and across its
+// whole width. On a generated 8192 x 8192 office map a 1 % window decodes
+// in 5.7-5.9 ms with tiles of 512 rather than 6.6 (the whole map: about
+// 150 ms of CPU), for files 2.2 % larger (2.6 % on the 282-Mcell office
+// map: 1,496,415 against 1,458,314 bytes); tiles of 256 would cost 8 %.
+inline constexpr int kLargeMapTileCells = 512;
+
+// The tile side the encoder writes: `requested` when positive (the caller
+// checked it is kMinTileSize..kMaxTileSize), else kTileCells for a map of
+// at most 4096 cells a side and kLargeMapTileCells beyond.
+int TileSide(int width, int height, int requested);
+
 struct TileLayout {
   int width = 0;
   int height = 0;

@@ -52,8 +52,9 @@ Status CheckEncodeOptions(const EncodeOptions& options) {
                                 " cells: must be 0 (exact) to " +
                                 std::to_string(kMaxToleranceCells));
   }
-  if (options.tile_size_cells < kMinTileSize || options.tile_size_cells > kMaxTileSize) {
-    return InvalidArgumentError("tile size must be 16..65536 cells");
+  if (options.tile_size_cells != 0 &&
+      (options.tile_size_cells < kMinTileSize || options.tile_size_cells > kMaxTileSize)) {
+    return InvalidArgumentError("tile size must be 0 (automatic) or 16..65536 cells");
   }
   if (options.layer_section_cells != 0 && options.layer_section_cells < kMinSectionSide) {
     return InvalidArgumentError("layer section side must be 0 (automatic) or at least 16 cells");
@@ -67,8 +68,9 @@ MapFrame FrameOf(const Grid& grid) { return {grid.width(), grid.height(), grid.m
 std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& options,
                                      const VectorLayers& layers) {
   const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
-  return EncodeCellChunk(grid, index, options.tile_size_cells, options.max_threads,
-                         options.compact);
+  return EncodeCellChunk(grid, index,
+                         TileSide(grid.width(), grid.height(), options.tile_size_cells),
+                         options.max_threads, options.compact);
 }
 
 // The cells within a tolerance: BLKS tiles, the tile side the caller's
@@ -80,7 +82,7 @@ StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
   *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
                        [](std::uint8_t r) { return r != 0; });
   const int f = blocks.block_cells;
-  int tile = options.tile_size_cells / f * f;
+  int tile = TileSide(grid.width(), grid.height(), options.tile_size_cells) / f * f;
   if (tile < kMinTileSize) tile += f;  // a side of 16 with blocks of 3 or 5
   const LayerIndex index(layers.walls, layers.rooms, layers.furniture);
   return EncodeBlockChunk(grid, blocks, index, tile, options.max_threads);

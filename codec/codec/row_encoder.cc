@@ -168,7 +168,8 @@ namespace {
 StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const EncodeOptions& options,
                                                 RowStore* rows) {
   const int block_rows = (frame.height + kLayerBlockCells - 1) / kLayerBlockCells;
-  const TileLayout layout(frame.width, frame.height, options.tile_size_cells);
+  const TileLayout layout(frame.width, frame.height,
+                          TileSide(frame.width, frame.height, options.tile_size_cells));
   // Each block row's items in the order extracted; a tile row is coded
   // once every block row its rows meet is read (top first), against their
   // items.

@@ -43,11 +43,12 @@ struct EncodeOptions {
   // (default true); false writes the cells only (with `compact` too, the
   // smallest exact file).
   bool vector_layers = true;
-  // Side of the square tiles the cells are coded in (cells, 16..65536;
-  // default 1024): each tile decodes on its own, so a window decodes only
-  // the tiles it meets, and tiles are coded on several threads. Smaller
-  // tiles make windows cheaper and files a little larger.
-  int tile_size_cells = 1024;
+  // Side of the square tiles the cells are coded in (cells, 16..65536; 0,
+  // the default, picks it: 1024 up to 4096 cells a side, 512 beyond): each
+  // tile decodes on its own, so a window decodes only the tiles it meets,
+  // and tiles are coded on several threads. Smaller tiles make windows
+  // cheaper and files a little larger.
+  int tile_size_cells = 0;
   // Side of the square sections the vector layers are stored in (cells;
   // 0, the default, picks it: one section up to 4096 cells a side, sections
   // of 2048 beyond; else at least 16). A window decodes only the layers of

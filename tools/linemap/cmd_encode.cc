@@ -65,7 +65,8 @@ const CommandSpec kEncodeSpec = {
         {"--threads", "N",
          "threads to use (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
-         "side of the independently decodable tiles, 16..65536 (default 1024)"},
+         "side of the independently decodable tiles, 16..65536 (default 0: 1024 up to 4096 "
+         "cells a side, 512 beyond); smaller tiles make windows cheaper and files larger"},
         {"--section-size", "CELLS",
          "side of the sections the vector layers are stored in, at least 16 (default 0: one "
          "section up to 4096 cells a side, 2048 beyond); a window reads only the sections "
@@ -113,9 +114,10 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   }
   LINEMAP_ASSIGN_OR_RETURN(options.max_threads, args.GetInt("--threads", 0));
   if (options.max_threads < 0) return InvalidArgumentError("--threads must be 0 or more");
-  LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 1024));
-  if (options.tile_size_cells < 16 || options.tile_size_cells > 65536) {
-    return InvalidArgumentError("--tile-size must be 16..65536 cells");
+  LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 0));
+  if (options.tile_size_cells != 0 &&
+      (options.tile_size_cells < 16 || options.tile_size_cells > 65536)) {
+    return InvalidArgumentError("--tile-size must be 0 (automatic) or 16..65536 cells");
   }
   LINEMAP_ASSIGN_OR_RETURN(options.layer_section_cells, args.GetInt("--section-size", 0));
   if (options.layer_section_cells != 0 && options.layer_section_cells < 16) {

@@ -9,8 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "codec/codec/chunk_coding.h"
 #include "codec/codec/layer_extraction.h"
 #include "format/byte_io.h"
+#include "format/container.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "linemap/vector_layers.h"
@@ -111,9 +113,73 @@ TEST(CellTilesTest, EachTileTakesTheSmallerModelWhateverTheThreads) {
 
 // Written by the encoder of 2.0 (tile model 0 in every tile, before the
 // layer context): it decodes to its map forever.
+// The tile side a file's cells chunk (CELL, or BLKS after its block side)
+// declares; 0 when the file has neither.
+int TileSideInFile(const std::vector<std::uint8_t>& file) {
+  StatusOr<ContainerView> view = ParseContainer(file, std::uint64_t{1} << 30);
+  EXPECT_TRUE(view.ok()) << view.status().ToString();
+  if (!view.ok()) return 0;
+  for (const Chunk& chunk : view->chunks) {
+    const bool blocks = chunk.type == kBlockChunk;
+    if (chunk.type != kCellChunk && !blocks) continue;
+    PayloadCoder coder;
+    StatusOr<std::vector<std::uint8_t>> body =
+        UnwrapPayload(chunk.payload, chunk.size, DecodeLimits{}, &coder);
+    EXPECT_TRUE(body.ok()) << body.status().ToString();
+    if (!body.ok()) return 0;
+    ByteCursor cursor(*body);
+    if (blocks) EXPECT_TRUE(cursor.ReadU8("block side").ok());
+    StatusOr<std::uint64_t> side = cursor.ReadVarint("tile side");
+    EXPECT_TRUE(side.ok());
+    return side.ok() ? static_cast<int>(*side) : 0;
+  }
+  return 0;
+}
+
+// A strip of free space under a wall, `width` cells long: cheap to code
+// however wide.
+Grid Corridor(int width) {
+  Grid g(width, 40, Cell::kUnknown);
+  for (int c = 0; c < width; ++c) {
+    g.set(c, 10, Cell::kOccupied);
+    for (int r = 11; r < 30; ++r) g.set(c, r, Cell::kFree);
+    g.set(c, 30, Cell::kOccupied);
+  }
+  return g;
+}
+
+// Tiles of 1024 cells up to 4096 a side and of 512 beyond (windows of huge
+// maps read less), exact or within a tolerance; a side the caller asks for
+// is kept.
+TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
+  const struct {
+    int width;
+    int tolerance;
+    int requested;
+    int expected;
+  } cases[] = {
+      {4096, 0, 0, 1024}, {4097, 0, 0, 512},   {4097, 1, 0, 512},
+      {4096, 1, 0, 1024}, {4097, 0, 300, 300}, {100, 0, 64, 64},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE("width " + std::to_string(c.width) + " tolerance " + std::to_string(c.tolerance) +
+                 " requested " + std::to_string(c.requested));
+    const Grid grid = Corridor(c.width);
+    EncodeOptions options;
+    options.tolerance_cells = c.tolerance;
+    options.tile_size_cells = c.requested;
+    options.vector_layers = false;
+    StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
+    ASSERT_TRUE(file.ok()) << file.status().ToString();
+    EXPECT_EQ(TileSideInFile(*file), c.expected);
+    StatusOr<Grid> decoded = DecodeLmap(*file);
+    ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+    if (c.tolerance == 0) EXPECT_EQ(*decoded, grid);
+  }
+}
+
 TEST(CellTilesTest, TemplateModelFileDecodes) {
-  StatusOr<Grid> decoded =
-      LoadLmap(testing::SourceDir() + "/tests/data/lmap/depot_v2_0.lmap");
+  StatusOr<Grid> decoded = LoadLmap(testing::SourceDir() + "/tests/data/lmap/depot_v2_0.lmap");
   ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
   EXPECT_EQ(*decoded, Depot());
 }
