@@ -128,7 +128,9 @@ int TileSideInFile(const std::vector<std::uint8_t>& file) {
     EXPECT_TRUE(body.ok()) << body.status().ToString();
     if (!body.ok()) return 0;
     ByteCursor cursor(*body);
-    if (blocks) EXPECT_TRUE(cursor.ReadU8("block side").ok());
+    if (blocks) {
+      EXPECT_TRUE(cursor.ReadU8("block side").ok());
+    }
     StatusOr<std::uint64_t> side = cursor.ReadVarint("tile side");
     EXPECT_TRUE(side.ok());
     return side.ok() ? static_cast<int>(*side) : 0;
@@ -174,7 +176,9 @@ TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
     EXPECT_EQ(TileSideInFile(*file), c.expected);
     StatusOr<Grid> decoded = DecodeLmap(*file);
     ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
-    if (c.tolerance == 0) EXPECT_EQ(*decoded, grid);
+    if (c.tolerance == 0) {
+      EXPECT_EQ(*decoded, grid);
+    }
   }
 }
 
