@@ -1,11 +1,13 @@
-// Small helpers for the planner tests: grids drawn as text, an independent
-// brute-force safe zone, and a dense-sampling segment check.
+// Small helpers for the planner tests: grids drawn as text, cells as
+// printable pairs, an independent brute-force safe zone, and a
+// dense-sampling segment check.
 #ifndef LINEMAP_TESTS_CODEC_PLAN_PLAN_TEST_UTIL_H_
 #define LINEMAP_TESTS_CODEC_PLAN_PLAN_TEST_UTIL_H_
 
 #include <cmath>
 #include <deque>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linemap/grid.h"
@@ -43,6 +45,13 @@ inline Grid GappedWallsGrid() {
       "..####..######..",
       "................",
   });
+}
+
+// (col, row) pairs, which EXPECT_EQ prints when cells differ.
+inline std::vector<std::pair<int, int>> Pairs(const std::vector<CellIndex>& cells) {
+  std::vector<std::pair<int, int>> out;
+  for (const CellIndex& c : cells) out.emplace_back(c.col, c.row);
+  return out;
 }
 
 // Independent of the planner: 8-connected breadth-first step counts from

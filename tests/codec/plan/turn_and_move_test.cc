@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
-#include <set>
+#include <cstdlib>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "linemap/plan.h"
@@ -14,72 +14,8 @@ namespace linemap {
 namespace {
 
 using plan_test::GridFromText;
+using plan_test::Pairs;
 using plan_test::SampledSegmentSafe;
-
-std::vector<std::pair<int, int>> Pairs(const std::vector<CellIndex>& cells) {
-  std::vector<std::pair<int, int>> out;
-  for (const CellIndex& c : cells) out.emplace_back(c.col, c.row);
-  return out;
-}
-
-TEST(SegmentCellsTest, KnownLines) {
-  using P = std::vector<std::pair<int, int>>;
-  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {2, 0})), (P{{0, 0}, {1, 0}, {2, 0}}));
-  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {0, -2})), (P{{0, 0}, {0, -1}, {0, -2}}));
-  // Through the corner at (0.5, 0.5): both side cells are touched.
-  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {1, 1})), (P{{0, 0}, {1, 0}, {0, 1}, {1, 1}}));
-  // y = x / 2 crosses x = 0.5 at y = 0.25, y = 0.5 at x = 1, x = 1.5 at 0.75.
-  EXPECT_EQ(Pairs(SegmentCells({0, 0}, {2, 1})), (P{{0, 0}, {1, 0}, {1, 1}, {2, 1}}));
-  EXPECT_EQ(Pairs(SegmentCells({3, 3}, {3, 3})), (P{{3, 3}}));
-}
-
-// Every cell a dense sampling of the segment meets is in SegmentCells.
-TEST(SegmentCellsTest, CoversDenseSampling) {
-  std::mt19937 rng(7);
-  std::uniform_int_distribution<int> coord(-12, 12);
-  for (int trial = 0; trial < 300; ++trial) {
-    const CellIndex a{coord(rng), coord(rng)}, b{coord(rng), coord(rng)};
-    const std::vector<CellIndex> cells = SegmentCells(a, b);
-    std::set<std::pair<int, int>> set;
-    for (const CellIndex& c : cells) set.insert({c.col, c.row});
-    const int steps = 4000;
-    for (int i = 0; i <= steps; ++i) {
-      const double t = static_cast<double>(i) / steps;
-      const int c = static_cast<int>(std::floor(a.col + t * (b.col - a.col) + 0.5));
-      const int r = static_cast<int>(std::floor(a.row + t * (b.row - a.row) + 0.5));
-      ASSERT_TRUE(set.count({c, r})) << a.col << "," << a.row << " -> " << b.col << "," << b.row;
-    }
-    // 4-connected walk from a to b: no cell twice.
-    EXPECT_EQ(set.size(), cells.size());
-  }
-}
-
-TEST(MoveTemplateTest, RaysCoverTheDisk) {
-  const MoveTemplate moves = MoveTemplate::Build(10.0);
-  EXPECT_EQ(moves.rays.size() % 8, 0u);
-  EXPECT_GE(moves.rays.size(), 63u);  // angular step <= 1 / D_max
-  const std::vector<CellOffset> east = {{1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0},
-                                        {6, 0}, {7, 0}, {8, 0}, {9, 0}, {10, 0}};
-  EXPECT_EQ(moves.rays[0].cells, east);
-  std::set<std::pair<int, int>> seen;
-  for (const TemplateRay& ray : moves.rays) {
-    for (std::size_t k = 0; k < ray.cells.size(); ++k) {
-      seen.insert({ray.cells[k].dx, ray.cells[k].dy});
-      EXPECT_LE(std::hypot(ray.cells[k].dx, ray.cells[k].dy), 10.0 + 1e-9);
-      if (k > 0) {  // consecutive cells are 8-adjacent
-        EXPECT_LE(std::abs(ray.cells[k].dx - ray.cells[k - 1].dx), 1);
-        EXPECT_LE(std::abs(ray.cells[k].dy - ray.cells[k - 1].dy), 1);
-      }
-    }
-  }
-  for (int dy = -10; dy <= 10; ++dy) {
-    for (int dx = -10; dx <= 10; ++dx) {
-      if ((dx || dy) && dx * dx + dy * dy <= 100) {
-        EXPECT_TRUE(seen.count({dx, dy})) << dx << "," << dy;
-      }
-    }
-  }
-}
 
 struct Planned {
   SafeZone zone;
