@@ -9,7 +9,6 @@
 #include <tuple>
 
 #include "codec/codec/int_coding.h"
-#include "codec/codec/layer_order.h"
 #include "codec/codec/raster.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
@@ -351,11 +350,6 @@ Status CheckLayerStreamEnd(const RangeDecoder& dec, std::size_t size, const std:
     return CorruptError(what + " range-coded data is malformed or truncated");
   }
   return Status::Ok();
-}
-
-void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
-  DropRepeatedWallPoints(walls);
-  OrderWallsForCoding(walls);
 }
 
 void DropRepeatedWallPoints(std::vector<WallPolyline>* walls) {

@@ -62,7 +62,7 @@ Status DecodeFurnitureItems(RangeDecoder* dec, std::uint64_t count, const LayerB
 // the implied zero tail); else `what`'s data is corrupt.
 Status CheckLayerStreamEnd(const RangeDecoder& dec, std::size_t size, const std::string& what);
 
-// Walls must be canonical (CanonicalizeWalls): inside the grid, at least two
+// Walls must be canonical (CanonicalizeWalls, layer_order.h): inside the grid, at least two
 // points each, no zero-length step; any order (CanonicalizeWalls picks the
 // cheap one).
 std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls);
@@ -71,10 +71,9 @@ std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls);
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
                                                 int height, const DecodeLimits& limits);
 
-// Drops zero-length steps and polylines left with fewer than two points,
-// then orders and orients the rest for coding (OrderWallsForCoding).
-void CanonicalizeWalls(std::vector<WallPolyline>* walls);
-// The first step alone: the walls keep their order and orientation.
+// Drops zero-length steps and polylines left with fewer than two points;
+// the walls keep their order and orientation (CanonicalizeWalls, in
+// layer_order.h, also orders them for coding).
 void DropRepeatedWallPoints(std::vector<WallPolyline>* walls);
 
 // Rooms must have strictly increasing ids and storable chains (8-adjacent

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "codec/codec/layer_coding.h"
+
 namespace linemap {
 namespace {
 
@@ -454,6 +456,11 @@ void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture) {
     ordered.push_back(std::move(object));
   }
   *furniture = std::move(ordered);
+}
+
+void CanonicalizeWalls(std::vector<WallPolyline>* walls) {
+  DropRepeatedWallPoints(walls);
+  OrderWallsForCoding(walls);
 }
 
 }  // namespace linemap

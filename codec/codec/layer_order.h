@@ -25,6 +25,11 @@ void OrderWallsForCoding(std::vector<WallPolyline>* walls);
 // start there (its outline recomputed); ids follow the new order.
 void OrderFurnitureForCoding(std::vector<FurnitureObject>* furniture);
 
+// Drops zero-length steps and polylines left with fewer than two points
+// (DropRepeatedWallPoints), then orders and orients the rest for coding
+// (OrderWallsForCoding): the form EncodeWalls takes.
+void CanonicalizeWalls(std::vector<WallPolyline>* walls);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_LAYER_ORDER_H_

@@ -9,6 +9,7 @@
 #include "codec/codec/layer_coding.h"
 #include "codec/codec/layer_extraction.h"
 #include "codec/codec/layer_extraction_internal.h"
+#include "codec/codec/layer_order.h"
 
 namespace linemap {
 namespace layer_extraction_internal {

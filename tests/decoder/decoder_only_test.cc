@@ -1,0 +1,75 @@
+// The decoder's objects alone (CMake target linemap_decoder: format/ and the
+// decoders of codec/codec, no encoder source, no line extractor, no
+// segmentation): this program links nothing else, so a decoder that comes to
+// need an encoder source fails to build here. The fixtures, written by
+// earlier encoders, decode to their maps.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
+
+namespace linemap {
+namespace {
+
+std::string Source(const std::string& path) { return std::string(LINEMAP_SOURCE_DIR) + path; }
+
+Grid Map(const std::string& yaml) {
+  StatusOr<Grid> map = LoadRosMap(Source("/tests/data/maps/" + yaml));
+  EXPECT_TRUE(map.ok()) << map.status().ToString();
+  return map.ok() ? std::move(*map) : Grid();
+}
+
+TEST(DecoderOnlyTest, FixturesOfEveryVersionDecodeToTheirMaps) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"depot_v2.lmap", "nav2/depot.yaml"},
+      {"depot_v2_tiles_64.lmap", "nav2/depot.yaml"},
+      {"depot_v2_2_sections_64.lmap", "nav2/depot.yaml"},
+      {"depot_v2_3_compact_tiles_64.lmap", "nav2/depot.yaml"},
+      {"lse_arena_v2_0.lmap", "navtut/lse_arena.yaml"},
+      {"depot_lossless.lmap", "nav2/depot.yaml"},     // version 1.0
+      {"depot_v1_residual.lmap", "nav2/depot.yaml"},  // version 1.0, RESD
+  };
+  for (const auto& [file, map] : cases) {
+    StatusOr<Grid> decoded = LoadLmap(Source("/tests/data/lmap/") + file);
+    ASSERT_TRUE(decoded.ok()) << file << ": " << decoded.status().ToString();
+    EXPECT_EQ(*decoded, Map(map)) << file;
+  }
+}
+
+TEST(DecoderOnlyTest, LayersReadWithoutTheCells) {
+  StatusOr<LmapVectors> layers = LoadLmapVectors(Source("/tests/data/lmap/depot_v2.lmap"));
+  ASSERT_TRUE(layers.ok()) << layers.status().ToString();
+  EXPECT_EQ(layers->width, 604);
+  EXPECT_EQ(layers->height, 307);
+  EXPECT_FALSE(layers->walls.empty());
+  EXPECT_FALSE(layers->rooms.empty());
+  EXPECT_FALSE(layers->furniture.empty());
+}
+
+TEST(DecoderOnlyTest, WindowIsTheCropOfTheMap) {
+  const Grid map = Map("nav2/depot.yaml");
+  const CellWindow window{70, 33, 301, 150};  // across tiles of 64 cells
+  StatusOr<Grid> part = LoadLmapRegion(Source("/tests/data/lmap/depot_v2_tiles_64.lmap"), window);
+  ASSERT_TRUE(part.ok()) << part.status().ToString();
+  ASSERT_EQ(part->width(), window.col1 - window.col0);
+  ASSERT_EQ(part->height(), window.row1 - window.row0);
+  for (int r = window.row0; r < window.row1; ++r) {
+    for (int c = window.col0; c < window.col1; ++c) {
+      ASSERT_EQ(part->at(c - window.col0, r - window.row0), map.at(c, r)) << c << "," << r;
+    }
+  }
+}
+
+TEST(DecoderOnlyTest, FileWithinAToleranceDecodes) {
+  const Grid map = Map("turtlebot_apps/willow-2010-02-18-0.10.yaml");
+  StatusOr<Grid> decoded = LoadLmap(Source("/tests/data/lmap/willow_v2_3_tolerance_1.lmap"));
+  ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+  EXPECT_EQ(decoded->width(), map.width());
+  EXPECT_EQ(decoded->height(), map.height());
+}
+
+}  // namespace
+}  // namespace linemap
