@@ -1,5 +1,5 @@
 #!/bin/bash
-# The issue-6 benchmark: for every map under a folder (default ../shared/maps)
+# The size-and-speed benchmark against netpbm: for every map under a folder (default ../shared/maps)
 # prints the default (exact) .lmap size against netpbm's PNG-9 of the same
 # trinary map, and the times of
 # `linemap encode` / `linemap decode` against `pnmtopng -compression 9` /

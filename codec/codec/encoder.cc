@@ -4,7 +4,7 @@
 // vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the
 // exact cells, each tile coded against the hints the layers draw into it (a cell on a wall is cheap
 // to confirm as occupied, one inside a room as free), or, within a tolerance, BLKS, the map drawn
-// in blocks of T + 1 cells.
+// in blocks of 2 x 2 cells (tolerance_blocks.cc says why 2 at every T).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -73,7 +73,7 @@ std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& opti
                          options.max_threads, options.compact);
 }
 
-// The cells within a tolerance: BLKS tiles, the tile side the caller's
+// The cells within a tolerance: BLKS tiles, the tile side of TileSide()
 // down to a multiple of the block side (spec/format.md 6.4).
 StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
                                                          const EncodeOptions& options,

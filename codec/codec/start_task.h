@@ -1,5 +1,6 @@
-// Runs a task beside the caller when a thread can be had (the encoders code
-// candidate files and extract layers two at a time).
+// Runs a task beside the caller when a thread can be had (the encoder
+// extracts the walls beside the rooms, and the layers of two blocks of a
+// large map at a time).
 #ifndef LINEMAP_CODEC_CODEC_START_TASK_H_
 #define LINEMAP_CODEC_CODEC_START_TASK_H_
 

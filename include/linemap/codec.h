@@ -216,7 +216,7 @@ StatusOr<LmapContents> LoadLmapContents(const std::string& path, const DecodeLim
 // True when `bytes` start with the .lmap signature.
 bool LooksLikeLmap(const std::vector<std::uint8_t>& bytes);
 
-// The quality measures of a decoded grid against the original.
+// Quality measures of a decoded grid against the original.
 struct GridComparison {
   bool same_geometry = false;  // width, height, resolution, origin
   std::size_t cells = 0;

@@ -297,8 +297,9 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
           "smallest - 1 (goal: "
           "within 25%). 1 % window: a tenth of each side from 30 % of it, decoded with "
           "DecodeLmapRegion (median ms), and how many times faster than the whole map "
-          "(goal: 20x; the window meets at least one 1024-cell tile, so it cannot gain on "
-          "maps of a few tiles).",
+          "(goal: 20x; the window meets at least one tile, 1024 cells a side up to 4096 and "
+          "512 beyond, and on maps up to 4096 cells a side it reads all the layers, which "
+          "are one section there, so it cannot gain much on those).",
           table};
 }
 

@@ -1,5 +1,6 @@
 // Pictures for people: per-map overlays of the extracted geometry on the map
-// (as the papers' figures), and a summary plot of size ratio vs DisPL.
+// (as the papers' figures), and a summary plot of every exact method's size
+// against PNG-9.
 #ifndef LINEMAP_TOOLS_BENCH_SVG_H_
 #define LINEMAP_TOOLS_BENCH_SVG_H_
 

@@ -38,8 +38,10 @@ void PrintUsage(std::FILE* out) {
                "bad input.\n");
 }
 
-// The codec allocates grid-sized arrays and frees them again (the former
-// lossy 1.0 encoder, where this was measured, a few per candidate file).
+// The codec allocates grid-sized arrays and frees them again (measured with
+// the former lossy 1.0 encoder, a few per candidate file; not re-measured
+// with the 2.x encoder, which codes maps over 4096 cells a side a band at a
+// time).
 // glibc serves arrays over 32 MB (a 32-Mcell grid) by mmap and returns them
 // to the kernel when freed, so every such array of a large map is faulted in
 // and zeroed afresh: 64-Mcell encodes with that encoder spent about 7 % of

@@ -88,6 +88,7 @@ TEST(DecodeToMapFilesTest, WideMapCutIntoColumnGroups) {
   const std::string dir = MakeTempDir("decode_files_wide");
   EncodeOptions options;
   options.vector_layers = false;
+  options.tile_size_cells = 1024;  // the encoder would pick 512 here, whose rows fit a band
   ASSERT_TRUE(SaveLmap(dir + "/wide.lmap", grid, options).ok());
   ExpectSameFilesAsWholeDecode(dir, dir + "/wide.lmap", grid);
 }

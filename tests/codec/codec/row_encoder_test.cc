@@ -72,7 +72,8 @@ TEST(RowEncoderTest, CodesMapsOfSeveralSectionsExactOnly) {
 
 TEST(RowEncoderTest, TallMapSavedAsItsImageIsReadIsTheEncodedFile) {
   // 900 x 4300 cells: three rows of layer blocks (2048, 2048, 204 rows),
-  // each a row of sections; 1024-cell tiles nest in the blocks.
+  // each a row of sections; the tiles (512 cells: the map is over 4096 a
+  // side) nest in the blocks.
   const Grid grid = DepotCopies(900, 4300);
   ExpectSavedAsEncoded(grid, EncodeOptions{}, "row_encoder_tall");
   EncodeOptions raster_only;
