@@ -284,7 +284,7 @@ files are read whole: their layers sit between raster chunks). A dict, geometry 
 ``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
 consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays,
 ``rooms`` a list of {id, kind, outline: (K, 2) closed chain},
-``furniture`` a list of {id, room_id or None, outline: (K, 2), cells: (M, 2)},
+``furniture`` a list of {id, room_id or None, outline: (K, 2) closed chain},
 and the file's ``version``, ``width``, ``height``, ``resolution``, ``origin``.
 )doc");
 }
