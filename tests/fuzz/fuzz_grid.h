@@ -62,14 +62,19 @@ inline EncodeOptions OptionsFromByte(std::uint8_t flags, bool exact) {
 }
 
 // Encodes `grid` (exact or within a tolerance, options from `flags`) and
-// decodes the bytes; any error aborts, naming `target`. Returns the decoded
-// grid.
+// decodes the bytes; any error, or a decode of other dimensions or
+// metadata (which no tolerance allows), aborts, naming `target`. Returns
+// the decoded grid.
 inline Grid EncodeDecodeOrFail(const char* target, const Grid& grid, std::uint8_t flags,
                                bool exact) {
   auto encoded = EncodeLmap(grid, OptionsFromByte(flags, exact));
   if (!encoded.ok()) Fail(target, "encode failed", encoded.status());
   auto decoded = DecodeLmap(*encoded);
   if (!decoded.ok()) Fail(target, "decode failed", decoded.status());
+  if (decoded->width() != grid.width() || decoded->height() != grid.height() ||
+      !(decoded->meta == grid.meta)) {
+    Fail(target, "the decode changed the dimensions or metadata");
+  }
   return *std::move(decoded);
 }
 
