@@ -148,38 +148,94 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
 // Cells of the flood's order whose neighbours are fetched ahead.
 constexpr std::size_t kPrefetchAhead = 48;
 
+// The flood above `floor`, when every piece that meets there joins: the
+// pieces at level `floor` are then the 4-connected components of the cells
+// above it, each rooted at one of its highest cells, which is all the
+// flood below reads of them (a piece's peak, and which piece a cell is in).
+// A raster pass finds them reading the grid in order, where the flood
+// would visit those cells level by level all over the map: in the open
+// halls of a warehouse most free cells lie more than a door's half-width
+// from any wall. Cells at `floor` and below keep parent -1.
+void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t floor,
+                  std::vector<std::int32_t>* parent_out) {
+  std::vector<std::int32_t>& parent = *parent_out;
+  const auto plateau = [&](std::size_t i) { return dist[i] > floor; };
+  // 1. Components rooted at their first cell in raster order: a root
+  //    changes only where two components meet, so paths stay short. The
+  //    padded frame is 0, so the left and lower neighbours exist.
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (!plateau(i)) continue;
+    std::int32_t root = static_cast<std::int32_t>(i);
+    for (const std::size_t nb : {i - 1, i - static_cast<std::size_t>(pw)}) {
+      if (!plateau(nb)) continue;
+      std::int32_t other = Find(parent, static_cast<std::int32_t>(nb));
+      if (other < root) std::swap(root, other);
+      if (other != root && other != static_cast<std::int32_t>(i)) parent[other] = root;
+    }
+    parent[i] = root;
+  }
+  // 2. Each cell takes its component's number, coded -2 - k in place (a
+  //    cell's parent comes before it, and is numbered by then), and each
+  //    component its highest cell, the first of them in raster order.
+  constexpr auto code = [](std::int32_t k) { return -2 - k; };  // its own inverse
+  std::vector<std::int32_t> highest;
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (!plateau(i)) continue;
+    const std::int32_t up = parent[i];
+    std::int32_t k;
+    if (up == static_cast<std::int32_t>(i)) {
+      k = static_cast<std::int32_t>(highest.size());
+      highest.push_back(up);
+    } else {
+      k = code(parent[up]);
+      if (dist[i] > dist[highest[k]]) highest[k] = static_cast<std::int32_t>(i);
+    }
+    parent[i] = code(k);
+  }
+  // 3. Every cell points at its component's highest cell, the root.
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (plateau(i)) parent[i] = highest[code(parent[i])];
+  }
+}
+
 // Step 3a: the merge tree. Returns the contacts of pieces kept apart;
 // `parent` ends as a union-find forest over padded cells (-1: no room space).
 std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const DoorRule& rule,
-                           std::vector<std::int32_t>* parent_out) {
+                           bool join_plateaus, std::vector<std::int32_t>* parent_out) {
+  // With a maximum room area, spaces joined by a wide narrowing are also
+  // kept apart here, to be joined afterwards while their full areas allow.
+  const bool keep_wide_narrowings = rule.max_room_cells > 0;
   std::uint16_t top = 0;
   for (const std::uint16_t d : dist) top = std::max(top, d);
-  std::vector<std::int32_t> start(static_cast<std::size_t>(top) + 2, 0);
+  // Above a door's clearance every contact joins (unless wide narrowings
+  // are kept): those levels are joined by JoinPlateaus, not flooded.
+  const std::uint16_t floor = keep_wide_narrowings || !join_plateaus
+                                  ? top
+                                  : static_cast<std::uint16_t>(std::min<int>(top, rule.max_door));
+  std::vector<std::int32_t> start(static_cast<std::size_t>(floor) + 2, 0);
   for (const std::uint16_t d : dist) {
-    if (d) ++start[d];
+    if (d && d <= floor) ++start[d];
   }
-  // Cells in descending clearance: bucket `top` first.
+  // Cells in descending clearance: bucket `floor` first.
   std::int32_t acc = 0;
-  for (int d = top; d >= 1; --d) {
+  for (int d = floor; d >= 1; --d) {
     const std::int32_t n = start[d];
     start[d] = acc;
     acc += n;
   }
   std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
   for (std::size_t i = 0; i < dist.size(); ++i) {
-    if (dist[i]) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
+    if (dist[i] && dist[i] <= floor) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
   }
   std::vector<std::int32_t>& parent = *parent_out;
   AssignLarge<std::int32_t>(&parent, dist.size(), -1);
-  // With a maximum room area, spaces joined by a wide narrowing are also
-  // kept apart here, to be joined afterwards while their full areas allow.
-  const bool keep_wide_narrowings = rule.max_room_cells > 0;
+  if (floor < top) JoinPlateaus(dist, pw, floor, &parent);
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
   // The clearance of the cells in order, from the buckets' ends (start[d]
-  // now ends bucket d; bucket `top` starts at 0): reading it from `dist`
+  // now ends bucket d; bucket `floor` starts at 0): reading it from `dist`
   // would be one more cache miss per cell.
-  int level = top;
+  int level = floor;
   for (std::size_t k = 0; k < order.size(); ++k) {
     while (k >= static_cast<std::size_t>(start[level])) --level;
     const std::int32_t cell = order[k];
@@ -206,8 +262,8 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
       parent[cell] = cell;  // a new piece; its root is its highest cell
       continue;
     }
-    // The root of a piece is its first (highest) cell, so dist[root] is
-    // the piece's peak clearance.
+    // The root of a piece is one of its highest cells (its first, or the
+    // one JoinPlateaus picked), so dist[root] is the piece's peak clearance.
     std::int32_t primary = roots[0];
     for (int k = 1; k < n; ++k) {
       if (dist[roots[k]] > dist[primary]) primary = roots[k];
@@ -531,7 +587,7 @@ void ListDoors(PieceGraph* graph, const std::vector<std::int32_t>& room_of_piece
 }  // namespace
 
 RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
-                     SegmentationTimings* timings) {
+                     SegmentationTimings* timings, bool join_plateaus) {
   const double res = grid.meta.resolution;
   RoomFlood flood;
   double start = ThreadCpuMs();
@@ -543,7 +599,7 @@ RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
   const int pw = grid.width() + 2;
   const DoorRule rule = MakeDoorRule(options, res);
   std::vector<std::int32_t> parent;
-  const std::vector<Contact> contacts = Flood(clearance, pw, rule, &parent);
+  const std::vector<Contact> contacts = Flood(clearance, pw, rule, join_plateaus, &parent);
   PieceGraph graph(std::move(parent), clearance, contacts);
   // The pieces hold their peaks: the clearance's memory is given back.
   std::vector<std::uint16_t>().swap(clearance);

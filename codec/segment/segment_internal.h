@@ -125,8 +125,11 @@ struct RoomFlood {
   std::vector<std::uint16_t> peak;  // by room id: largest clearance (chamfer units)
   std::vector<Doorway> doors;
 };
+// `join_plateaus` false floods every clearance level cell by cell instead
+// of joining the levels above a door's in one raster pass: the same rooms,
+// doors and peaks, more slowly (the reference the tests hold the pass to).
 RoomFlood FloodRooms(const Grid& grid, const SegmentationOptions& options,
-                     SegmentationTimings* timings);
+                     SegmentationTimings* timings, bool join_plateaus = true);
 // Chamfer units to cells.
 double ClearanceCells(std::uint16_t chamfer);
 
