@@ -15,16 +15,16 @@
 #include <unordered_map>
 #include <utility>
 
+#include "codec/segment/chamfer.h"
 #include "codec/segment/segment_internal.h"
 #include "format/large_vector.h"
 
 namespace linemap::segment_internal {
 namespace {
 
-// Chamfer 3-4 steps: 3 per side step, 4 per diagonal step (error < 8 %).
-constexpr int kSide = 3;
-constexpr int kDiagonal = 4;
-constexpr std::uint16_t kFar = 0xffff;
+// Clearances are in chamfer units (chamfer.h): 3 per side step.
+constexpr int kSide = kChamferSide;
+constexpr std::uint16_t kFar = kChamferFar;
 
 // A thin shape of area A and perimeter P (cell edges) is about P / 2 long
 // and 2 A / P thick, whatever its bends (an L or a T of wall between doors).
@@ -55,52 +55,6 @@ std::vector<std::size_t> Perimeters(const Labeling& labels,
 bool TouchesEdge(const BoundingBox& box, int width, int height) {
   return box.min_col == 0 || box.min_row == 0 || box.max_col == width - 1 ||
          box.max_row == height - 1;
-}
-
-// One row of a chamfer pass: `row` relaxed from the row before it in the
-// pass (`prev`) and from its own cell before it in the pass (`step` -1 on
-// the forward pass, +1 on the backward one). The terms from `prev` do not
-// depend on the row being written, so they are taken first in a loop the
-// compiler vectorises; only the chain along the row stays serial. The
-// minimum is the same whichever order its terms come in.
-void ChamferRow(std::uint16_t* row, const std::uint16_t* prev, int pw, int step,
-                std::vector<std::uint16_t>* scratch) {
-  std::uint16_t* t = scratch->data();
-  for (int c = 1; c < pw - 1; ++c) {
-    int best = std::min(prev[c] + kSide, std::min(prev[c - 1], prev[c + 1]) + kDiagonal);
-    best = std::min<int>(best, row[c]);
-    t[c] = row[c] ? static_cast<std::uint16_t>(std::min(best, 0xfffe)) : 0;
-  }
-  // The running value needs no test for walls: a wall's 0 is below
-  // anything the step could bring, and the frame cell before the row is 0.
-  int run = 0;
-  if (step < 0) {
-    for (int c = 1; c < pw - 1; ++c) {
-      run = std::min<int>(t[c], run + kSide);
-      row[c] = static_cast<std::uint16_t>(run);
-    }
-  } else {
-    for (int c = pw - 2; c >= 1; --c) {
-      run = std::min<int>(t[c], run + kSide);
-      row[c] = static_cast<std::uint16_t>(run);
-    }
-  }
-}
-
-// Two-pass chamfer transform on the padded grid (its frame is wall, so
-// every room-space cell ends finite).
-void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph) {
-  std::uint16_t* d = dist->data();
-  // The frame columns stay 0 in the scratch row, as in the grid.
-  std::vector<std::uint16_t> scratch(static_cast<std::size_t>(pw), 0);
-  for (int r = 1; r < ph - 1; ++r) {
-    std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    ChamferRow(row, row - pw, pw, -1, &scratch);
-  }
-  for (int r = ph - 2; r >= 1; --r) {
-    std::uint16_t* row = d + static_cast<std::size_t>(r) * pw;
-    ChamferRow(row, row + pw, pw, +1, &scratch);
-  }
 }
 
 std::int32_t Find(std::vector<std::int32_t>& parent, std::int32_t x) {

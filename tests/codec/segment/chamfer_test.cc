@@ -1,0 +1,92 @@
+// The chamfer transform (codec/segment/chamfer.h) against plain reference
+// code written here: the row scan against its defining minimum, the whole
+// transform against a brute-force minimum over every wall cell.
+#include "codec/segment/chamfer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+namespace linemap::segment_internal {
+namespace {
+
+// row[c] = min over k in [1, c] (forward) or [c, pw - 2] (backward) of
+// t[k] + 3 |c - k|, and the frame cell beyond the row: 0 + 3 times its
+// distance.
+std::vector<std::uint16_t> ReferenceScan(const std::vector<std::uint16_t>& t, int pw,
+                                         bool forward) {
+  std::vector<std::uint16_t> row(t.size(), 0);
+  for (int c = 1; c < pw - 1; ++c) {
+    long best = forward ? 3L * c : 3L * (pw - 1 - c);
+    for (int k = 1; k < pw - 1; ++k) {
+      if (forward ? k <= c : k >= c) best = std::min(best, t[k] + 3L * std::abs(c - k));
+    }
+    row[c] = static_cast<std::uint16_t>(best);
+  }
+  return row;
+}
+
+TEST(ChamferTest, RowScanIsThePrefixMinimumAtEveryWidth) {
+  std::mt19937 rng(7);
+  for (int pw = 3; pw <= 70; ++pw) {
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<std::uint16_t> t(static_cast<std::size_t>(pw), 0);
+      for (int c = 1; c < pw - 1; ++c) {
+        const unsigned kind = rng() % 4;
+        // Walls, far cells, values near the top of the range, small ones.
+        t[c] = kind == 0   ? 0
+               : kind == 1 ? 0xfffe
+               : kind == 2 ? static_cast<std::uint16_t>(0xfffe - rng() % 40)
+                           : static_cast<std::uint16_t>(rng() % 200);
+      }
+      for (const bool forward : {true, false}) {
+        std::vector<std::uint16_t> row(t.size(), 0);
+        ChamferScanRow(t.data(), row.data(), pw, forward);
+        EXPECT_EQ(row, ReferenceScan(t, pw, forward)) << "width " << pw << (forward ? " >" : " <");
+      }
+    }
+  }
+}
+
+// The 3-4 chamfer distance between two cells: 4 per diagonal step, 3 per
+// straight step of the rest.
+int ChamferDistance(int dc, int dr) {
+  const int a = std::abs(dc), b = std::abs(dr);
+  return 4 * std::min(a, b) + 3 * (std::max(a, b) - std::min(a, b));
+}
+
+TEST(ChamferTest, TransformIsTheDistanceToTheNearestWall) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int pw = 3 + static_cast<int>(rng() % 40), ph = 3 + static_cast<int>(rng() % 30);
+    std::vector<std::uint16_t> dist(static_cast<std::size_t>(pw) * ph, 0);
+    for (int r = 1; r < ph - 1; ++r) {
+      for (int c = 1; c < pw - 1; ++c) {
+        if (rng() % 10 != 0) dist[static_cast<std::size_t>(r) * pw + c] = kChamferFar;
+      }
+    }
+    std::vector<std::uint16_t> expected = dist;
+    for (int r = 0; r < ph; ++r) {
+      for (int c = 0; c < pw; ++c) {
+        if (dist[static_cast<std::size_t>(r) * pw + c] == 0) continue;
+        int best = 0xfffe;
+        for (int r2 = 0; r2 < ph; ++r2) {
+          for (int c2 = 0; c2 < pw; ++c2) {
+            if (dist[static_cast<std::size_t>(r2) * pw + c2] == 0) {
+              best = std::min(best, ChamferDistance(c - c2, r - r2));
+            }
+          }
+        }
+        expected[static_cast<std::size_t>(r) * pw + c] = static_cast<std::uint16_t>(best);
+      }
+    }
+    ChamferInPlace(&dist, pw, ph);
+    EXPECT_EQ(dist, expected) << pw << " x " << ph;
+  }
+}
+
+}  // namespace
+}  // namespace linemap::segment_internal
