@@ -489,23 +489,25 @@ std::vector<std::int32_t> NumberRooms(const Grid& grid, PieceGraph* graph, std::
   // Each piece's root once, not once per cell: the union-find is final.
   std::vector<std::int32_t> root_of(graph->size());
   for (std::int32_t k = 0; k < graph->size(); ++k) root_of[k] = graph->Root(k);
-  std::vector<std::int32_t> cells = graph->TakePieces();
+  // Pieces are numbered in raster order of their first cells (PieceGraph),
+  // so a room's lowest piece holds the room's first cell: numbered as their
+  // pieces come, the rooms are numbered in raster order of their first cells.
   std::int32_t rooms = 0;
+  for (std::int32_t k = 0; k < graph->size(); ++k) {
+    const std::int32_t root = root_of[k];
+    if (graph->Area(root) >= min_cells && room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
+  }
+  // The room of each piece, one entry up, so that "no room space" (-1)
+  // reads 0 without a test per cell.
+  std::vector<std::int32_t> room_of(static_cast<std::size_t>(graph->size()) + 1, 0);
+  for (std::int32_t k = 0; k < graph->size(); ++k) {
+    room_of[static_cast<std::size_t>(k) + 1] = std::max(room_of_piece[root_of[k]], 0);
+  }
+  std::vector<std::int32_t> cells = graph->TakePieces();
   for (int r = 0; r < h; ++r) {
     const std::int32_t* in = cells.data() + (r + 1) * pw + 1;
     std::int32_t* out = cells.data() + grid.Index(0, r);
-    for (int c = 0; c < w; ++c) {
-      const std::int32_t piece = in[c];
-      std::int32_t room = 0;
-      if (piece >= 0) {
-        const std::int32_t root = root_of[piece];
-        if (graph->Area(root) >= min_cells) {
-          if (room_of_piece[root] < 0) room_of_piece[root] = ++rooms;
-          room = room_of_piece[root];
-        }
-      }
-      out[c] = room;
-    }
+    for (int c = 0; c < w; ++c) out[c] = room_of[static_cast<std::size_t>(in[c] + 1)];
   }
   cells.resize(grid.size());
   flood->room_of_cell = std::move(cells);
