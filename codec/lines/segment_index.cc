@@ -110,4 +110,24 @@ double SegmentIndex::NearestDistance(double x, double y, const std::vector<std::
   return best;
 }
 
+// A segment within `radius` has a point q at most `radius` from (x, y) in
+// each coordinate; q lies in the tile TileOf gives it, which is within the
+// tiles scanned (TileOf is monotone), and the segment is in that tile's
+// list (AddToTiles: the tile's square holds q, so its centre is within half
+// a diagonal of the segment; clamped points fall in border tiles, which
+// own every segment of their range).
+bool SegmentIndex::AnyWithin(double x, double y, double radius) const {
+  const int tx0 = TileOf(x - radius, tiles_x_), tx1 = TileOf(x + radius, tiles_x_);
+  const int ty0 = TileOf(y - radius, tiles_y_), ty1 = TileOf(y + radius, tiles_y_);
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const std::size_t tile = static_cast<std::size_t>(ty) * tiles_x_ + tx;
+      for (std::uint32_t k = bucket_begin_[tile]; k < bucket_begin_[tile + 1]; ++k) {
+        if (PointSegmentDistance(x, y, (*segments_)[bucket_ids_[k]]) <= radius) return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace linemap::lines_internal

@@ -28,6 +28,11 @@ class SegmentIndex {
   double NearestDistance(double x, double y, const std::vector<std::uint8_t>* skip = nullptr,
                          std::uint32_t* nearest_id = nullptr);
 
+  // Whether some segment lies within `radius` of (x, y): the same answer as
+  // NearestDistance(x, y) <= radius, from the tiles that square of side
+  // 2 radius meets, stopping at the first segment found.
+  bool AnyWithin(double x, double y, double radius) const;
+
  private:
   // Appends (tile, id) for every tile segment s may touch.
   void AddToTiles(std::uint32_t id, const LineSegment& s,
