@@ -288,19 +288,30 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
   rooms.components.resize(flood.room_count);
   std::vector<std::size_t> free_cells(flood.room_count, 0);
   for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < w; ++c) {
-      const std::size_t i = grid.Index(c, r);
-      const std::int32_t id = flood.room_of_cell[i];
-      if (!id) continue;
+    const std::int32_t* ids = flood.room_of_cell.data() + grid.Index(0, r);
+    const Cell* cells = grid.cells().data() + grid.Index(0, r);
+    for (int c = 0; c < w;) {
+      const std::int32_t id = ids[c];
+      if (!id) {
+        ++c;
+        continue;
+      }
+      // A run of one room's cells (a room crosses a row in a few long
+      // runs): its statistics updated once for the run, not once a cell.
+      int end = c;
+      std::size_t free = 0;
+      for (; end < w && ids[end] == id; ++end) free += cells[end] == Cell::kFree;
       ComponentStats& stats = rooms.components[id - 1];
-      if (stats.cell_count++ == 0) {
+      if (stats.cell_count == 0) {
         stats.first_cell = {c, r};
         stats.box = {c, r, c, r};
       }
+      stats.cell_count += static_cast<std::size_t>(end - c);
       stats.box.min_col = std::min(stats.box.min_col, c);
-      stats.box.max_col = std::max(stats.box.max_col, c);
+      stats.box.max_col = std::max(stats.box.max_col, end - 1);
       stats.box.max_row = r;
-      free_cells[id - 1] += grid.cells()[i] == Cell::kFree;
+      free_cells[id - 1] += free;
+      c = end;
     }
   }
   rooms.labels = std::move(flood.room_of_cell);
