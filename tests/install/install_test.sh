@@ -10,5 +10,11 @@ cmake -S "$source_dir/tests/install/consumer" -B "$scratch/build" \
 cmake --build "$scratch/build" >/dev/null
 out=$("$scratch/build/consumer" "$source_dir/tests/data/maps/navtut/lse_arena.yaml")
 [ "$out" = "80 x 60" ] || { echo "consumer printed '$out'"; exit 1; }
+out=$("$scratch/build/decode_consumer" "$source_dir/tests/data/lmap/depot_v2.lmap")
+[ "$out" = "604 x 307" ] || { echo "decode_consumer printed '$out'"; exit 1; }
+# The decoder library holds no encoder: no line extractor, no segmentation.
+if nm -C "$scratch/prefix/lib"*/liblinemap_decode.a | grep -E " T linemap::(EncodeLmap|ExtractLines|SegmentMap)\("; then
+  echo "liblinemap_decode.a defines encoder functions"; exit 1
+fi
 test -x "$scratch/prefix/bin/linemap"
-echo "install + find_package(linemap) OK"
+echo "install + find_package(linemap), linemap::linemap_decode OK"
