@@ -128,27 +128,32 @@ void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t 
     }
     parent[i] = root;
   }
-  // 2. Each cell takes its component's number, coded -2 - k in place (a
-  //    cell's parent comes before it, and is numbered by then), and each
-  //    component its highest cell, the first of them in raster order.
+  // 2. Each cell points at its component's first cell, whose entry holds
+  //    the component's number coded -2 - k meanwhile (a cell's parent comes
+  //    before it, so it is final by then); each component keeps its
+  //    highest cell, the first of them in raster order.
   constexpr auto code = [](std::int32_t k) { return -2 - k; };  // its own inverse
-  std::vector<std::int32_t> highest;
+  std::vector<std::int32_t> first, highest;
   for (std::size_t i = 0; i < dist.size(); ++i) {
     if (!plateau(i)) continue;
     const std::int32_t up = parent[i];
-    std::int32_t k;
     if (up == static_cast<std::int32_t>(i)) {
-      k = static_cast<std::int32_t>(highest.size());
+      parent[i] = code(static_cast<std::int32_t>(first.size()));
+      first.push_back(up);
       highest.push_back(up);
-    } else {
-      k = code(parent[up]);
-      if (dist[i] > dist[highest[k]]) highest[k] = static_cast<std::int32_t>(i);
+      continue;
     }
-    parent[i] = code(k);
+    const std::int32_t root = parent[up] < 0 ? up : parent[up];
+    const std::int32_t k = code(parent[root]);
+    if (dist[i] > dist[highest[k]]) highest[k] = static_cast<std::int32_t>(i);
+    parent[i] = root;
   }
-  // 3. Every cell points at its component's highest cell, the root.
-  for (std::size_t i = 0; i < dist.size(); ++i) {
-    if (plateau(i)) parent[i] = highest[code(parent[i])];
+  // 3. The highest cell becomes the root, the first cell points at it: a
+  //    cell is at most two steps from its root, which the flood's finds
+  //    and the piece graph's shorten as they pass.
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    parent[first[k]] = highest[k];
+    parent[highest[k]] = highest[k];
   }
 }
 
