@@ -31,60 +31,54 @@ void ScanRowScalar(const std::uint16_t* t, std::uint16_t* row, int begin, int en
 // Unsigned 16-bit minimum from SSE2 alone (pminuw is SSE4.1): a - (a -sat b).
 __m128i MinU16(__m128i a, __m128i b) { return _mm_sub_epi16(a, _mm_subs_epu16(a, b)); }
 
+// Lane j of the result: min(x[j], x[j - lanes] + 3 lanes) in the direction
+// of the scan (x[j + lanes] backwards); the lanes shifted in are 0xffff,
+// above every value, so they never win.
+template <bool kForward, int kLanes>
+__m128i MinWithShifted(__m128i x) {
+  const __m128i all = _mm_set1_epi16(-1);
+  __m128i shifted;
+  if constexpr (kForward) {
+    shifted = _mm_or_si128(_mm_slli_si128(x, 2 * kLanes), _mm_srli_si128(all, 16 - 2 * kLanes));
+  } else {
+    shifted = _mm_or_si128(_mm_srli_si128(x, 2 * kLanes), _mm_slli_si128(all, 16 - 2 * kLanes));
+  }
+  return MinU16(x, _mm_adds_epu16(shifted, _mm_set1_epi16(kChamferSide * kLanes)));
+}
+
 // The serial chain run = min(t[c], run + 3) costs an add and a min per cell
 // one after the other (about 3 cycles a cell, 2-3 % of an encode). Written
 // as a prefix minimum, row[c] = min over k of t[k] + 3 |c - k|, it is taken
 // 8 cells at a time: within a block by three shifted minimums (lanes 1, 2
 // and 4 apart, so that each lane has seen the 7 before it), then against
-// the block before it through one carried value. Additions saturate at
-// 0xffff, above any value of `t`, so a saturated term never wins and the
-// result equals the serial chain's.
-int ScanBlocksForward(const std::uint16_t* t, std::uint16_t* row, int end, int* run) {
-  const __m128i ramp = _mm_setr_epi16(3, 6, 9, 12, 15, 18, 21, 24);
-  const __m128i all = _mm_set1_epi16(-1);
+// the block before it through one carried value, entering at lane 0
+// forwards and at lane 7 backwards. Additions saturate at 0xffff, above any
+// value of `t`, so a saturated term never wins and the result equals the
+// serial chain's. Returns where the scalar scan takes over: forwards the
+// first cell after the blocks, backwards the first cell of the last block
+// (the scalar scan covers the cells before it).
+template <bool kForward>
+int ScanBlocks(const std::uint16_t* t, std::uint16_t* row, int end, int* run) {
+  const __m128i ramp = kForward ? _mm_setr_epi16(3, 6, 9, 12, 15, 18, 21, 24)
+                                : _mm_setr_epi16(24, 21, 18, 15, 12, 9, 6, 3);
   __m128i carry = _mm_set1_epi16(static_cast<short>(*run));
-  int c = 1;
-  for (; c + 8 <= end; c += 8) {
+  int c = kForward ? 1 : end - 8;  // the block's first cell
+  for (; kForward ? c + 8 <= end : c >= 1; c += kForward ? 8 : -8) {
     __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(t + c));
-    // Lane j takes lane j - s, the lanes shifted in are 0xffff.
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_slli_si128(x, 2), _mm_srli_si128(all, 14)),
-                                 _mm_set1_epi16(3)));
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_slli_si128(x, 4), _mm_srli_si128(all, 12)),
-                                 _mm_set1_epi16(6)));
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_slli_si128(x, 8), _mm_srli_si128(all, 8)),
-                                 _mm_set1_epi16(12)));
+    x = MinWithShifted<kForward, 4>(MinWithShifted<kForward, 2>(MinWithShifted<kForward, 1>(x)));
     x = MinU16(x, _mm_adds_epu16(carry, ramp));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(row + c), x);
-    const __m128i high = _mm_shufflehi_epi16(x, 0xff);  // lanes 4-7: lane 7
-    carry = _mm_unpackhi_epi64(high, high);
+    // Broadcast the block's last cell in the scan: lane 7 forwards, 0 back.
+    if constexpr (kForward) {
+      const __m128i high = _mm_shufflehi_epi16(x, 0xff);
+      carry = _mm_unpackhi_epi64(high, high);
+    } else {
+      const __m128i low = _mm_shufflelo_epi16(x, 0);
+      carry = _mm_unpacklo_epi64(low, low);
+    }
   }
   *run = static_cast<std::uint16_t>(_mm_extract_epi16(carry, 0));
-  return c;
-}
-
-// The same from the right: blocks [c - 7, c] from c = end - 1 down, lane j
-// taking lane j + s, the carry entering at lane 7.
-int ScanBlocksBackward(const std::uint16_t* t, std::uint16_t* row, int end, int* run) {
-  const __m128i ramp = _mm_setr_epi16(24, 21, 18, 15, 12, 9, 6, 3);
-  const __m128i all = _mm_set1_epi16(-1);
-  __m128i carry = _mm_set1_epi16(static_cast<short>(*run));
-  int c = end - 1;
-  for (; c - 7 >= 1; c -= 8) {
-    std::uint16_t* out = row + c - 7;
-    __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(t + c - 7));
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_srli_si128(x, 2), _mm_slli_si128(all, 14)),
-                                 _mm_set1_epi16(3)));
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_srli_si128(x, 4), _mm_slli_si128(all, 12)),
-                                 _mm_set1_epi16(6)));
-    x = MinU16(x, _mm_adds_epu16(_mm_or_si128(_mm_srli_si128(x, 8), _mm_slli_si128(all, 8)),
-                                 _mm_set1_epi16(12)));
-    x = MinU16(x, _mm_adds_epu16(carry, ramp));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), x);
-    const __m128i low = _mm_shufflelo_epi16(x, 0);  // lanes 0-3: lane 0
-    carry = _mm_unpacklo_epi64(low, low);
-  }
-  *run = static_cast<std::uint16_t>(_mm_extract_epi16(carry, 0));
-  return c + 1;
+  return kForward ? c : c + 8;
 }
 #endif
 
@@ -133,10 +127,10 @@ void ChamferScanRow(const std::uint16_t* t, std::uint16_t* row, int pw, bool for
   int run = 0;  // the frame cell before the row
 #if defined(__SSE2__)
   if (forward) {
-    const int c = ScanBlocksForward(t, row, pw - 1, &run);
+    const int c = ScanBlocks<true>(t, row, pw - 1, &run);
     ScanRowScalar(t, row, c, pw - 1, run, true);
   } else {
-    const int c = ScanBlocksBackward(t, row, pw - 1, &run);
+    const int c = ScanBlocks<false>(t, row, pw - 1, &run);
     ScanRowScalar(t, row, 1, c, run, false);
   }
 #else

@@ -10,20 +10,11 @@
 
 #include "linemap/lines.h"
 #include "linemap/map_io.h"
+#include "tests/testing/reference_geometry.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
 namespace {
-
-double BruteDistance(double px, double py, const LineSegment& s) {
-  // Closest point by projection, clamped to the segment.
-  const double vx = s.x2 - s.x1, vy = s.y2 - s.y1;
-  const double len2 = vx * vx + vy * vy;
-  double t = len2 > 0 ? ((px - s.x1) * vx + (py - s.y1) * vy) / len2 : 0;
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  const double dx = px - (s.x1 + t * vx), dy = py - (s.y1 + t * vy);
-  return std::sqrt(dx * dx + dy * dy);
-}
 
 LineFidelity BruteFidelity(const EdgeMap& edges, const std::vector<LineSegment>& segments) {
   LineFidelity f;
@@ -33,7 +24,8 @@ LineFidelity BruteFidelity(const EdgeMap& edges, const std::vector<LineSegment>&
     for (int col = 0; col < edges.width; ++col) {
       if (!edges.is_edge[row * edges.width + col]) continue;
       double best = std::numeric_limits<double>::infinity();
-      for (const LineSegment& s : segments) best = std::min(best, BruteDistance(col, row, s));
+      for (const LineSegment& s : segments)
+        best = std::min(best, testing::ReferencePointSegmentDistance(col, row, s));
       ++f.edge_cells;
       sum += best;
       f.displ_max_cells = std::max(f.displ_max_cells, best);

@@ -14,6 +14,7 @@
 #include "linemap/lines.h"
 #include "linemap/map_io.h"
 #include "tests/codec/lines/test_maps.h"
+#include "tests/testing/reference_geometry.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -27,14 +28,6 @@ LineExtractionOptions LinemapOptions(double epsilon) {
   options.method = LineMethod::kLinemap;
   options.epsilon_cells = epsilon;
   return options;
-}
-
-double BruteDistance(double px, double py, const LineSegment& s) {
-  const double vx = s.x2 - s.x1, vy = s.y2 - s.y1;
-  const double len2 = vx * vx + vy * vy;
-  double t = len2 > 0 ? ((px - s.x1) * vx + (py - s.y1) * vy) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(px - (s.x1 + t * vx), py - (s.y1 + t * vy));
 }
 
 // Sizes of the 8-connected components of the edge map, per cell (an
@@ -88,7 +81,7 @@ void ExpectBoundHolds(const LineExtraction& result, const LineExtractionOptions&
       }
       double best = std::numeric_limits<double>::infinity();
       for (const LineSegment& s : result.segments)
-        best = std::min(best, BruteDistance(col, row, s));
+        best = std::min(best, testing::ReferencePointSegmentDistance(col, row, s));
       if (result.left_to_blobs[i]) {
         ++left;
         EXPECT_LE(sizes[i], std::max(options.min_component_cells - 1, options.speck_max_cells))
@@ -156,7 +149,8 @@ Grid RoomWithASpeck(bool noisy) {
 // True when a segment lies within 1 cell of the speck's cells.
 bool SpeckHasASegment(const LineExtraction& result) {
   return std::any_of(result.segments.begin(), result.segments.end(), [](const LineSegment& s) {
-    return BruteDistance(30, 20, s) <= 1 && BruteDistance(31, 20, s) <= 1;
+    return testing::ReferencePointSegmentDistance(30, 20, s) <= 1 &&
+           testing::ReferencePointSegmentDistance(31, 20, s) <= 1;
   });
 }
 

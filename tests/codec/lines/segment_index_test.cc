@@ -11,17 +11,10 @@
 #include <random>
 #include <vector>
 
+#include "tests/testing/reference_geometry.h"
+
 namespace linemap::lines_internal {
 namespace {
-
-// Distance from (x, y) to the segment, by projection onto it.
-double BruteDistance(double x, double y, const LineSegment& s) {
-  const double dx = s.x2 - s.x1, dy = s.y2 - s.y1;
-  const double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((x - s.x1) * dx + (y - s.y1) * dy) / len2 : 0;
-  t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(x - (s.x1 + t * dx), y - (s.y1 + t * dy));
-}
 
 std::vector<LineSegment> RandomSegments(std::mt19937* rng, int n, int w, int h) {
   std::uniform_real_distribution<double> x(-20.0, w + 20.0), y(-20.0, h + 20.0);
@@ -54,7 +47,8 @@ TEST(SegmentIndexTest, NearestDistanceAndAnyWithinMatchTheBruteForce) {
           static_cast<double>(static_cast<int>(rng() % (w + 20)) - 10) + (q % 3 == 0 ? 0.37 : 0.0);
       const double y = static_cast<double>(static_cast<int>(rng() % (h + 20)) - 10);
       double best = std::numeric_limits<double>::infinity();
-      for (const LineSegment& s : segments) best = std::min(best, BruteDistance(x, y, s));
+      for (const LineSegment& s : segments)
+        best = std::min(best, testing::ReferencePointSegmentDistance(x, y, s));
       EXPECT_NEAR(index.NearestDistance(x, y), best, 1e-9) << x << ", " << y;
       for (const double radius : {0.0, 0.5, 1.0, 1.5, 3.0, 17.0}) {
         // Away from the boundary, where rounding could tip either way.
