@@ -1,8 +1,9 @@
 // Exact nearest-segment distance queries over many segments: segments are
 // bucketed into square tiles, and a query scans rings of tiles outwards until
 // no unscanned tile can hold a closer segment. Used by MeasureLineFidelity
-// (Eq. 5 over every edge cell) and by linemap's bound check, where a brute
-// force over all pairs would be quadratic.
+// (Eq. 5 over every edge cell), by linemap's bound check and by the wall
+// cover (whether a wall lies within a cell of each edge cell, AnyWithin),
+// where a brute force over all pairs would be quadratic.
 #ifndef LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_
 #define LINEMAP_CODEC_LINES_SEGMENT_INDEX_H_
 

@@ -138,6 +138,10 @@ void ChamferScanRow(const std::uint16_t* t, std::uint16_t* row, int pw, bool for
 #endif
 }
 
+void ChamferScanRowSerial(const std::uint16_t* t, std::uint16_t* row, int pw, bool forward) {
+  ScanRowScalar(t, row, 1, pw - 1, 0, forward);
+}
+
 void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph) {
   std::uint16_t* d = dist->data();
   // The frame columns stay 0 in the scratch row, as in the grid.

@@ -27,6 +27,9 @@ void ChamferInPlace(std::vector<std::uint16_t>* dist, int pw, int ph);
 // the row counts as 0), or the same from the right (k >= c). Values of `t`
 // at most 0xfffe. In the header for the tests.
 void ChamferScanRow(const std::uint16_t* t, std::uint16_t* row, int pw, bool forward);
+// The same, one cell after the other: what ChamferScanRow runs where SSE2 is
+// not available, and the reference its blocks must equal.
+void ChamferScanRowSerial(const std::uint16_t* t, std::uint16_t* row, int pw, bool forward);
 
 }  // namespace linemap::segment_internal
 

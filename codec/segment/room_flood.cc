@@ -3,7 +3,9 @@
 //   2. clearance: chamfer 3-4 distance of every room-space cell to the
 //      nearest wall or unknown cell (the map edge counts as wall);
 //   3. flooding from the highest clearance down with a union-find (a merge
-//      tree): pieces that meet at a doorway stay apart, all others join;
+//      tree): pieces that meet at a doorway stay apart, all others join
+//      (above a door's clearance all join, so those levels are joined in
+//      one raster pass);
 //      then pieces joined only through passages narrower than a door, and
 //      pieces smaller than a room, are merged into their neighbours.
 // The work is done on a copy of the grid padded by one wall cell on every
@@ -102,21 +104,23 @@ DoorRule MakeDoorRule(const SegmentationOptions& options, double res) {
 // Cells of the flood's order whose neighbours are fetched ahead.
 constexpr std::size_t kPrefetchAhead = 48;
 
-// The flood above `floor`, when every piece that meets there joins: the
-// pieces at level `floor` are then the 4-connected components of the cells
-// above it, each rooted at one of its highest cells, which is all the
-// flood below reads of them (a piece's peak, and which piece a cell is in).
-// A raster pass finds them reading the grid in order, where the flood
-// would visit those cells level by level all over the map: in the open
-// halls of a warehouse most free cells lie more than a door's half-width
-// from any wall. Cells at `floor` and below keep parent -1.
-void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t floor,
+// The flood above `flooded_top` (the highest level the flood visits cell by
+// cell), where every piece that meets another joins it: the pieces at that
+// level are then the 4-connected components of the cells above it, each
+// rooted at one of its highest cells, which is all the flood below reads
+// of them (a piece's peak, and which piece a cell is in). A raster pass
+// finds them reading the grid in order, where the flood would visit those
+// cells level by level all over the map: in the open halls of a warehouse
+// most free cells lie more than a door's half-width from any wall. Cells at
+// `flooded_top` and below keep parent -1.
+void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t flooded_top,
                   std::vector<std::int32_t>* parent_out) {
   std::vector<std::int32_t>& parent = *parent_out;
-  const auto plateau = [&](std::size_t i) { return dist[i] > floor; };
+  const auto plateau = [&](std::size_t i) { return dist[i] > flooded_top; };
   // 1. Components rooted at their first cell in raster order: a root
   //    changes only where two components meet, so paths stay short. The
-  //    padded frame is 0, so the left and lower neighbours exist.
+  //    padded frame is 0, so the left neighbour and the one in the previous
+  //    row exist.
   for (std::size_t i = 0; i < dist.size(); ++i) {
     if (!plateau(i)) continue;
     std::int32_t root = static_cast<std::int32_t>(i);
@@ -168,33 +172,34 @@ std::vector<Contact> Flood(const std::vector<std::uint16_t>& dist, int pw, const
   for (const std::uint16_t d : dist) top = std::max(top, d);
   // Above a door's clearance every contact joins (unless wide narrowings
   // are kept): those levels are joined by JoinPlateaus, not flooded.
-  const std::uint16_t floor = keep_wide_narrowings || !join_plateaus
-                                  ? top
-                                  : static_cast<std::uint16_t>(std::min<int>(top, rule.max_door));
-  std::vector<std::int32_t> start(static_cast<std::size_t>(floor) + 2, 0);
+  const std::uint16_t flooded_top =
+      keep_wide_narrowings || !join_plateaus
+          ? top
+          : static_cast<std::uint16_t>(std::min<int>(top, rule.max_door));
+  std::vector<std::int32_t> start(static_cast<std::size_t>(flooded_top) + 2, 0);
   for (const std::uint16_t d : dist) {
-    if (d && d <= floor) ++start[d];
+    if (d && d <= flooded_top) ++start[d];
   }
-  // Cells in descending clearance: bucket `floor` first.
+  // Cells in descending clearance: bucket `flooded_top` first.
   std::int32_t acc = 0;
-  for (int d = floor; d >= 1; --d) {
+  for (int d = flooded_top; d >= 1; --d) {
     const std::int32_t n = start[d];
     start[d] = acc;
     acc += n;
   }
   std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
   for (std::size_t i = 0; i < dist.size(); ++i) {
-    if (dist[i] && dist[i] <= floor) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
+    if (dist[i] && dist[i] <= flooded_top) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
   }
   std::vector<std::int32_t>& parent = *parent_out;
   AssignLarge<std::int32_t>(&parent, dist.size(), -1);
-  if (floor < top) JoinPlateaus(dist, pw, floor, &parent);
+  if (flooded_top < top) JoinPlateaus(dist, pw, flooded_top, &parent);
   std::vector<Contact> contacts;
   const std::int32_t offsets[4] = {-1, 1, -pw, pw};
   // The clearance of the cells in order, from the buckets' ends (start[d]
-  // now ends bucket d; bucket `floor` starts at 0): reading it from `dist`
+  // now ends bucket d; bucket `flooded_top` starts at 0): reading it from `dist`
   // would be one more cache miss per cell.
-  int level = floor;
+  int level = flooded_top;
   for (std::size_t k = 0; k < order.size(); ++k) {
     while (k >= static_cast<std::size_t>(start[level])) --level;
     const std::int32_t cell = order[k];

@@ -12,9 +12,12 @@ out=$("$scratch/build/consumer" "$source_dir/tests/data/maps/navtut/lse_arena.ya
 [ "$out" = "80 x 60" ] || { echo "consumer printed '$out'"; exit 1; }
 out=$("$scratch/build/decode_consumer" "$source_dir/tests/data/lmap/depot_v2.lmap")
 [ "$out" = "604 x 307" ] || { echo "decode_consumer printed '$out'"; exit 1; }
-# The decoder library holds no encoder: no line extractor, no segmentation.
-if nm -C "$scratch/prefix/lib"*/liblinemap_decode.a | grep -E " T linemap::(EncodeLmap|ExtractLines|SegmentMap)\("; then
+# The decoder library holds no encoder: no line extractor, no segmentation
+# (the full library defines all three; a failing nm fails the test).
+symbols=$(nm -C "$scratch/prefix/lib"*/liblinemap_decode.a)
+if grep -E " T linemap::(EncodeLmap|ExtractLines|SegmentMap)\(" <<<"$symbols"; then
   echo "liblinemap_decode.a defines encoder functions"; exit 1
 fi
+grep -q " T linemap::DecodeLmap(" <<<"$symbols" || { echo "liblinemap_decode.a lacks DecodeLmap"; exit 1; }
 test -x "$scratch/prefix/bin/linemap"
 echo "install + find_package(linemap), linemap::linemap_decode OK"

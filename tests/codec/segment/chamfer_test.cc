@@ -1,6 +1,7 @@
 // The chamfer transform (codec/segment/chamfer.h) against plain reference
-// code written here: the row scan against its defining minimum, the whole
-// transform against a brute-force minimum over every wall cell.
+// code written here: the row scan (with SSE2 and without) against its
+// defining minimum, the whole transform against a brute-force minimum over
+// every wall cell.
 #include "codec/segment/chamfer.h"
 
 #include <gtest/gtest.h>
@@ -43,10 +44,34 @@ TEST(ChamferTest, RowScanIsThePrefixMinimumAtEveryWidth) {
                            : static_cast<std::uint16_t>(rng() % 200);
       }
       for (const bool forward : {true, false}) {
+        const std::vector<std::uint16_t> expected = ReferenceScan(t, pw, forward);
         std::vector<std::uint16_t> row(t.size(), 0);
         ChamferScanRow(t.data(), row.data(), pw, forward);
-        EXPECT_EQ(row, ReferenceScan(t, pw, forward)) << "width " << pw << (forward ? " >" : " <");
+        EXPECT_EQ(row, expected) << "width " << pw << (forward ? " >" : " <");
+        std::vector<std::uint16_t> serial(t.size(), 0);
+        ChamferScanRowSerial(t.data(), serial.data(), pw, forward);
+        EXPECT_EQ(serial, expected) << "serial, width " << pw << (forward ? " >" : " <");
       }
+    }
+  }
+}
+
+// A row of open space longer than 0xfffe / 3 cells (a map some 22,000 cells
+// wide, within the default limit of 2^30 cells): the distance from the frame
+// passes 0xfffe and stays there, where a running value that wrapped around
+// would start again from 1.
+TEST(ChamferTest, RowScanSaturatesOnLongOpenRows) {
+  const int pw = 22000;
+  const std::vector<std::uint16_t> t(static_cast<std::size_t>(pw), 0xfffe);
+  for (const bool forward : {true, false}) {
+    std::vector<std::uint16_t> row(t.size(), 0), serial(t.size(), 0);
+    ChamferScanRow(t.data(), row.data(), pw, forward);
+    ChamferScanRowSerial(t.data(), serial.data(), pw, forward);
+    for (int c = 1; c < pw - 1; ++c) {
+      const long from_frame = 3L * (forward ? c : pw - 1 - c);
+      const auto expected = static_cast<std::uint16_t>(std::min(from_frame, 0xfffeL));
+      ASSERT_EQ(row[c], expected) << "cell " << c << (forward ? " >" : " <");
+      ASSERT_EQ(serial[c], expected) << "serial, cell " << c << (forward ? " >" : " <");
     }
   }
 }
