@@ -223,7 +223,9 @@ void MergeGroups(std::vector<Group>* groups, int width, int height, const MergeL
     for (std::size_t i = 0; i < n; ++i) {
       const SegmentShape& shape_b = shapes[batch[i]];
       batch[kept] = batch[i];
-      kept += EndsWithinGap(shape_a, shape_b, gap) & DirectionsCompatible(shape_a, shape_b);
+      // Both tests, without a branch between them (most pairs pass both).
+      kept += static_cast<unsigned>(EndsWithinGap(shape_a, shape_b, gap)) &
+              static_cast<unsigned>(DirectionsCompatible(shape_a, shape_b));
     }
     for (std::size_t i = 0; i < kept; ++i) {
       const std::uint32_t h = batch[i];
