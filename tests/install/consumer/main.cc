@@ -1,15 +1,7 @@
-#include <cstdio>
-
-#include "linemap/grid.h"
 #include "linemap/map_io.h"
+#include "print_size.h"
 
+// Loads a ROS map with the full library and prints its size.
 int main(int argc, char** argv) {
-  if (argc < 2) return 2;
-  linemap::StatusOr<linemap::Grid> grid = linemap::LoadRosMap(argv[1]);
-  if (!grid.ok()) {
-    std::fprintf(stderr, "%s\n", grid.status().message().c_str());
-    return 1;
-  }
-  std::printf("%d x %d\n", grid->width(), grid->height());
-  return 0;
+  return PrintSize(argc, argv, [](const char* path) { return linemap::LoadRosMap(path); });
 }
