@@ -148,22 +148,24 @@ struct Mender {
 // Cells where a distance guarantee fails. With blocks built as above only
 // "an original free cell with no decoded free cell within T" can fail (a
 // free cell in an occupied block); the other three are checked too, so
-// that a change to BlocksOf() cannot slip through.
-std::vector<std::size_t> DistanceFaults(const Grid& original, const Grid& decoded, int t) {
+// that a change to BlocksOf() cannot slip through. The first kind goes to
+// `lost_free`, the others to `faults`.
+void DistanceFaults(const Grid& original, const Grid& decoded, int t,
+                    std::vector<std::size_t>* faults, std::vector<std::size_t>* lost_free) {
   const int w = original.width(), h = original.height();
   const auto o_occ = ChebyshevDistance(w, h, CellMask(original, Cell::kOccupied));
   const auto o_free = ChebyshevDistance(w, h, CellMask(original, Cell::kFree));
   const auto s_occ = ChebyshevDistance(w, h, CellMask(decoded, Cell::kOccupied));
   const auto s_free = ChebyshevDistance(w, h, CellMask(decoded, Cell::kFree));
-  std::vector<std::size_t> faults;
   for (std::size_t i = 0; i < original.size(); ++i) {
     const Cell a = original.cells()[i], b = decoded.cells()[i];
     if ((b == Cell::kOccupied && o_occ[i] > t) || (a == Cell::kOccupied && s_occ[i] > t) ||
-        (b == Cell::kFree && o_free[i] > t) || (a == Cell::kFree && s_free[i] > t)) {
-      faults.push_back(i);
+        (b == Cell::kFree && o_free[i] > t)) {
+      faults->push_back(i);
+    } else if (a == Cell::kFree && s_free[i] > t) {
+      lost_free->push_back(i);
     }
   }
-  return faults;
 }
 
 // Where blocks join two free regions of the original (each of
@@ -208,9 +210,11 @@ std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) 
 // One round of checks: true when every guarantee holds on `decoded`;
 // otherwise mends what fails first (distances, then topology, then plans).
 bool MendRound(Mender* m, int t) {
-  const std::vector<std::size_t> faults = DistanceFaults(m->original, m->decoded, t);
-  if (!faults.empty()) {
+  std::vector<std::size_t> faults, lost_free;
+  DistanceFaults(m->original, m->decoded, t, &faults, &lost_free);
+  if (!faults.empty() || !lost_free.empty()) {
     m->Restore(faults);
+    m->Restore(tolerance_internal::FreeCover(m->original, m->decoded, lost_free, t));
     return false;
   }
   const auto topology = tolerance_internal::FindTopologyFaults(m->original, m->decoded, true);

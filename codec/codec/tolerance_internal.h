@@ -28,16 +28,27 @@ std::vector<std::int32_t> ChebyshevDistance(int width, int height,
 // regions). `leaks` as CompareGrids counts them (original regions of
 // kLeakRegionCells+ cells joined by a decoded component); `splits`: original
 // regions of kLeakRegionCells+ cells whose cells free in the decode lie in
-// several decoded components. `culprits` (when asked for): changed cells
-// whose undoing removes a fault: new free cells of a joining component, and
-// cells that were free and are no longer, beside a split-off piece.
+// several decoded components. `split_culprits` (when asked for): cells
+// free in the original and not in the decode whose return joins every
+// split-off piece to the main piece of its region again, the fewest a
+// breadth-first search finds for each piece.
 struct TopologyFaults {
   std::size_t leaks = 0;
   std::size_t splits = 0;
-  std::vector<std::size_t> culprits;
-  std::vector<std::size_t> split_culprits;  // those of splits alone
+  std::vector<std::size_t> split_culprits;
 };
 TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, bool want_culprits);
+
+// Cells to give back (free in `original`, not in `decoded`) so that every
+// cell of `lost` (free in the original, more than t cells from every
+// decoded free cell; raster order) is within t of a decoded free cell or
+// one given back. Each lost cell not yet within t of one gives back the
+// cell within t of it that serves the most lost cells not yet served,
+// preferring one 4-adjacent to free space on a tie (a cell alone would
+// split its region); so a wall the blocks thickened by a cell gets one
+// cell in every 2t + 1 back, not every cell.
+std::vector<std::size_t> FreeCover(const Grid& original, const Grid& decoded,
+                                   const std::vector<std::size_t>& lost, int t);
 
 // Plans compared from sampled start cells to every goal cell free in both
 // grids (deterministic: the same grids give the same pairs). `paths` (when
