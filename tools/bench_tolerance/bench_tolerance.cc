@@ -11,7 +11,8 @@
 // smallest trinary PNG (zlib 9) of the map made 2x and 4x coarser (a block
 // is occupied if any cell is, else unknown if any is, else free). Medians
 // are printed for the tuning maps and for the others separately.
-// --cells-only skips the files with vector layers (much faster).
+// Plans from starts the checks never sample are counted too (cells-only
+// files). --cells-only skips the files with vector layers (much faster).
 // --coarse-lmap also prints the exact file of the coarser maps and of them
 // drawn back at full size. --dump writes PNGs of the decodes. --svg draws
 // the curve of bytes against T beside the anchors.
@@ -108,6 +109,62 @@ Saved SaveWithin(const Grid& g, int t, bool layers) {
   return out;
 }
 
+// Plans between cells the encoder's checks never sampled: starts strided
+// over the cells free in both maps (CheckTolerance draws its own by a fixed
+// random sequence), every ~1000th such cell a goal. The guarantee is
+// checked on the encoder's starts; these say how far it carries to others.
+struct OtherPlans {
+  long pairs = 0;
+  long gone_or_new = 0;  // a plan on one map and none on the other
+  long longer = 0;       // lengths beyond 3 % and 2 steps apart
+  int worst_steps = 0;   // the largest length difference among those
+};
+
+std::vector<int> PlanSteps(const Grid& g, std::size_t from) {
+  std::vector<int> steps(g.size(), -1);
+  std::vector<std::size_t> queue{from};
+  steps[from] = 0;
+  const std::size_t w = static_cast<std::size_t>(g.width());
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t i = queue[head];
+    const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+      if (!g.Contains(c + dc[k], r + dr[k])) continue;
+      const std::size_t n = g.Index(c + dc[k], r + dr[k]);
+      if (steps[n] >= 0 || g.cells()[n] != Cell::kFree) continue;
+      steps[n] = steps[i] + 1;
+      queue.push_back(n);
+    }
+  }
+  return steps;
+}
+
+void AddOtherPlans(const Grid& original, const Grid& decoded, OtherPlans* out) {
+  constexpr std::size_t kStarts = 24, kGoals = 1000;
+  std::vector<std::size_t> both;
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    if (original.cells()[i] == Cell::kFree && decoded.cells()[i] == Cell::kFree) both.push_back(i);
+  }
+  if (both.empty()) return;
+  const std::size_t start_stride = std::max<std::size_t>(1, both.size() / kStarts);
+  const std::size_t goal_stride = std::max<std::size_t>(1, both.size() / kGoals);
+  for (std::size_t a = start_stride / 3; a < both.size(); a += start_stride) {
+    const std::vector<int> lo = PlanSteps(original, both[a]);
+    const std::vector<int> ls = PlanSteps(decoded, both[a]);
+    for (std::size_t b = 0; b < both.size(); b += goal_stride) {
+      const int x = lo[both[b]], y = ls[both[b]];
+      ++out->pairs;
+      if ((x < 0) != (y < 0)) {
+        ++out->gone_or_new;
+      } else if (x >= 0 && std::abs(x - y) > 2 && std::abs(x - y) > 0.03 * x) {
+        ++out->longer;
+        out->worst_steps = std::max(out->worst_steps, std::abs(x - y));
+      }
+    }
+  }
+}
+
 struct Row {
   std::string name;
   bool tuning = false;
@@ -115,6 +172,7 @@ struct Row {
   long cells[kMaxT + 1] = {};   // vector_layers = false
   long layers[kMaxT + 1] = {};  // default options
   bool holds[kMaxT + 1] = {};
+  OtherPlans other[kMaxT + 1];  // of the cells-only files
 };
 
 double Median(std::vector<double> v) {
@@ -147,6 +205,29 @@ void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
                   kind ? "layers" : "cells", Median(e), mx(e), Median(p2), mx(p2), Median(p4),
                   mx(p4), held, n);
     }
+  }
+}
+
+// The plans of OtherPlans over all maps, by T.
+void PrintOtherPlans(const std::vector<Row>& rows) {
+  std::printf(
+      "\nplans from starts the encoder did not sample (24 strided starts x ~1000 goals per "
+      "map, cells-only files):\n"
+      "  T     pairs  gone/new  beyond 3 %% and 2 steps  maps with any  largest difference\n");
+  for (int t = 1; t <= kMaxT; ++t) {
+    OtherPlans all;
+    int maps = 0;
+    for (const Row& r : rows) {
+      const OtherPlans& o = r.other[t];
+      all.pairs += o.pairs;
+      all.gone_or_new += o.gone_or_new;
+      all.longer += o.longer;
+      all.worst_steps = std::max(all.worst_steps, o.worst_steps);
+      maps += o.gone_or_new + o.longer > 0;
+    }
+    std::printf("  %d  %8ld  %8ld  %10ld (%.3f %%)  %13d  %9d steps\n", t, all.pairs,
+                all.gone_or_new, all.longer, all.pairs ? 100.0 * all.longer / all.pairs : 0.0, maps,
+                all.worst_steps);
   }
 }
 
@@ -280,6 +361,7 @@ int Run(int argc, char** argv) {
       const Saved cells = SaveWithin(g, t, false);
       row.holds[t] = cells.bytes >= 0 && CheckTolerance(g, cells.decoded, t).Holds();
       row.cells[t] = cells.bytes;
+      if (t > 0 && cells.bytes >= 0) AddOtherPlans(g, cells.decoded, &row.other[t]);
       if (with_layers) {
         const Saved layers = SaveWithin(g, t, true);
         row.holds[t] =
@@ -312,6 +394,7 @@ int Run(int argc, char** argv) {
   }
   PrintSummary(rows, true, with_layers);
   PrintSummary(rows, false, with_layers);
+  PrintOtherPlans(rows);
   if (!svg_path.empty() && !rows.empty()) {
     std::FILE* f = std::fopen(svg_path.c_str(), "w");
     const std::string svg = CurveSvg(rows);
