@@ -35,6 +35,10 @@ constexpr int kMaxRounds = 96;
 // start / goal pairs on 2 of 12 random plans and on kth.
 constexpr int kBlockSide = 2;
 
+// Plans between cells this many steps apart or less, on either side of a
+// change, are checked for every such pair (LocalDetourCulprits).
+constexpr int kDetourRadius = 8;
+
 // Whether the free cells of the block at (x0, y0) (side f) and of the ring
 // of cells around it are one 4-connected piece inside that window. If so,
 // filling the block's unknown cells opens no new way through it (a plan
@@ -209,7 +213,9 @@ std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) 
 
 // One round of checks: true when every guarantee holds on `decoded`;
 // otherwise mends what fails first (distances, then topology, then plans).
-bool MendRound(Mender* m, int t) {
+// `checked`: the decode the local plan check last ran on (empty before the
+// first), which the round updates when it runs it.
+bool MendRound(Mender* m, int t, Grid* checked) {
   std::vector<std::size_t> faults, lost_free;
   DistanceFaults(m->original, m->decoded, t, &faults, &lost_free);
   if (!faults.empty() || !lost_free.empty()) {
@@ -232,8 +238,11 @@ bool MendRound(Mender* m, int t) {
   // original plan that is no longer free (restored), a shortcut takes a
   // cell the blocks made free (its block unfilled). Either is on one of the
   // two plans.
-  const std::vector<std::size_t> culprits =
-      tolerance_internal::PlanCulprits(m->original, m->decoded);
+  std::vector<std::size_t> culprits = tolerance_internal::PlanCulprits(m->original, m->decoded);
+  const std::vector<std::size_t> local = tolerance_internal::LocalDetourCulprits(
+      m->original, m->decoded, kDetourRadius, checked->empty() ? nullptr : checked);
+  *checked = m->decoded;
+  culprits.insert(culprits.end(), local.begin(), local.end());
   if (culprits.empty()) return true;
   for (const std::size_t i : culprits) m->Unfill(i);
   return false;
@@ -247,10 +256,11 @@ StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells) {
                                 " cells is outside 1.." + std::to_string(kMaxToleranceCells));
   }
   BlockCells b = BlocksOf(grid, kBlockSide);
+  Grid checked;
   for (int round = 0; round < kMaxRounds; ++round) {
     const Grid decoded = ComposeBlockCells(grid, b);
     Mender mender{grid, decoded, &b};
-    if (MendRound(&mender, tolerance_cells)) return b;
+    if (MendRound(&mender, tolerance_cells, &checked)) return b;
     if (mender.mended == 0) break;  // nothing left to mend: the exact map below
   }
   std::fill(b.restored.begin(), b.restored.end(), 1);

@@ -50,6 +50,19 @@ TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, boo
 std::vector<std::size_t> FreeCover(const Grid& original, const Grid& decoded,
                                    const std::vector<std::size_t>& lost, int t);
 
+// The plan guarantee between nearby cells, which the sampled starts of
+// PlanCulprits rarely try: from every cell free in both maps beside a cell
+// free in one only, the plans of up to `radius` steps on either map must
+// be on the other within kPlanSlackSteps more. Where one is not, the cells
+// on its plan that are not free on the other map (of the shortest plans,
+// one with the fewest); a blocked passage between two rooms that no sampled
+// start plans through is found this way. With `checked` (a decode this
+// check found nothing on, or whose culprits were all mended since), only
+// the cells near a cell that differs from it are searched from: the plans
+// of the others are as they were.
+std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
+                                             const Grid* checked = nullptr);
+
 // Plans compared from sampled start cells to every goal cell free in both
 // grids (deterministic: the same grids give the same pairs). `paths` (when
 // asked for): the cells of both plans of the worst disagreeing pair of each

@@ -30,22 +30,25 @@ std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source,
   queue.reserve(1024);
   steps[source] = 0;
   queue.push_back(source);
+  // The neighbours by index, the map's edges tested by column and row (no
+  // per-neighbour Contains: these searches are most of the fitting's time).
   const std::size_t w = static_cast<std::size_t>(grid.width());
+  const std::size_t h = static_cast<std::size_t>(grid.height());
+  const Cell* cells = grid.cells().data();
+  auto visit = [&](std::size_t n, std::int32_t s) {
+    if (steps[n] < 0 && cells[n] == Cell::kFree) {
+      steps[n] = s;
+      queue.push_back(n);
+    }
+  };
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t i = queue[head];
-    const int c = static_cast<int>(i % w);
-    const int r = static_cast<int>(i / w);
-    auto visit = [&](int nc, int nr) {
-      if (!grid.Contains(nc, nr)) return;
-      const std::size_t n = grid.Index(nc, nr);
-      if (steps[n] >= 0 || grid.cells()[n] != Cell::kFree) return;
-      steps[n] = steps[i] + 1;
-      queue.push_back(n);
-    };
-    visit(c + 1, r);
-    visit(c - 1, r);
-    visit(c, r + 1);
-    visit(c, r - 1);
+    const std::size_t c = i % w;
+    const std::int32_t s = steps[i] + 1;
+    if (c + 1 < w) visit(i + 1, s);
+    if (c > 0) visit(i - 1, s);
+    if (i + w < w * h) visit(i + w, s);
+    if (i >= w) visit(i - w, s);
   }
   return steps;
 }
@@ -88,25 +91,29 @@ class FewestChangesPlans {
       : previous_(grid.size(), kNone) {
     std::vector<std::int32_t> changes(grid.size(), 0);
     const std::size_t w = static_cast<std::size_t>(grid.width());
+    const std::size_t n = grid.size();
+    const Cell* other_cells = other.cells().data();
     for (const std::size_t i : order) {
-      const std::int32_t own = other.cells()[i] != Cell::kFree ? 1 : 0;
-      if (steps[i] == 0) {
+      const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
+      const std::int32_t before = steps[i] - 1;
+      if (before < 0) {
         changes[i] = own;
         continue;
       }
-      const int c = static_cast<int>(i % w);
-      const int r = static_cast<int>(i / w);
-      const int dc[4] = {1, -1, 0, 0};
-      const int dr[4] = {0, 0, 1, -1};
+      // The neighbours one step nearer, in the order +col, -col, +row,
+      // -row (ties to the first).
+      const std::size_t c = i % w;
       std::int32_t best = INT32_MAX;
-      for (int k = 0; k < 4; ++k) {
-        if (!grid.Contains(c + dc[k], r + dr[k])) continue;
-        const std::size_t n = grid.Index(c + dc[k], r + dr[k]);
-        if (steps[n] == steps[i] - 1 && changes[n] < best) {
-          best = changes[n];
-          previous_[i] = n;
+      auto consider = [&](std::size_t j) {
+        if (steps[j] == before && changes[j] < best) {
+          best = changes[j];
+          previous_[i] = j;
         }
-      }
+      };
+      if (c + 1 < w) consider(i + 1);
+      if (c > 0) consider(i - 1);
+      if (i + w < n) consider(i + w);
+      if (i >= w) consider(i - w);
       changes[i] = own + best;
     }
   }
@@ -160,8 +167,9 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
     std::vector<std::uint8_t> walked_a, walked_b;
     std::unique_ptr<FewestChangesPlans> plans_a, plans_b;  // made on the first use
     for (std::size_t g = 0; g < a.size(); ++g) {
-      if (g == source || original.cells()[g] != Cell::kFree || decoded.cells()[g] != Cell::kFree ||
-          PlansAgree(a[g], b[g])) {
+      // Equal steps (most cells) agree, and so do cells neither reaches.
+      if (a[g] == b[g] || g == source || original.cells()[g] != Cell::kFree ||
+          decoded.cells()[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
         continue;
       }
       // Longer or gone on the decode: the original plan crosses a cell that

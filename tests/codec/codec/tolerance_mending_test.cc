@@ -4,7 +4,8 @@
 // guarantees on its results); these tests hold the steps to giving back
 // few: one doorway rather than a plan's whole wall side, one gap rather
 // than a split-off piece's whole edge, one cell in three along a
-// thickened wall.
+// thickened wall; and the local plan check to finding a closed doorway
+// that sampled starts miss, without flagging a wall one cell thicker.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,6 +79,46 @@ TEST(TopologyFaultsTest, SplitCulpritsAreOneGapThroughTheBand) {
 
   for (const std::size_t i : faults.split_culprits) decoded.mutable_cells()[i] = Cell::kFree;
   EXPECT_EQ(FindTopologyFaults(original, decoded, false).splits, 0u);
+}
+
+// Two rooms joined by a doorway (column 20 of a wall on row 10) and, far
+// round, by a corridor down the left edge. The decode closes the doorway:
+// every plan still exists, but between the cells on either side of it the
+// plan is 40 steps longer. Plans from starts far from the doorway never
+// pass it, so only a check around each change finds it.
+TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 2; c < 40; ++c) {
+    if (c != 20) original.set(c, 10, Cell::kOccupied);
+  }
+  Grid decoded = original;
+  decoded.set(20, 10, Cell::kOccupied);
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
+            std::set<std::size_t>{original.Index(20, 10)});
+}
+
+// The same with an unknown cell in the wall that the decode makes free: a
+// shortcut, whose culprit is that cell.
+TEST(LocalDetourCulpritsTest, FindsAShortcutThroughAWall) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 2; c < 40; ++c) original.set(c, 10, Cell::kOccupied);
+  original.set(30, 10, Cell::kUnknown);
+  Grid decoded = original;
+  decoded.set(30, 10, Cell::kFree);
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
+            std::set<std::size_t>{original.Index(30, 10)});
+}
+
+// A wall thickened by a cell along its length and at its tip: plans along
+// it keep their length, and round the tip they gain 2 steps, which the
+// guarantee allows. Nothing to give back.
+TEST(LocalDetourCulpritsTest, AWallThickenedByACellNeedsNothing) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 0; c <= 25; ++c) original.set(c, 10, Cell::kOccupied);
+  Grid decoded = original;
+  for (int c = 0; c <= 26; ++c) decoded.set(c, 11, Cell::kOccupied);
+  decoded.set(26, 10, Cell::kOccupied);
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
 }
 
 // Whether `grid` or `extra` has a free cell within Chebyshev t of cell i
