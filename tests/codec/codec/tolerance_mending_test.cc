@@ -97,6 +97,21 @@ TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
             std::set<std::size_t>{original.Index(20, 10)});
 }
 
+// Given the decode it last checked, the check searches only near cells
+// that changed since: the closed doorway is found again when the doorway
+// changed since (checked against the original), not when nothing did.
+TEST(LocalDetourCulpritsTest, SearchesOnlyNearChangesSinceTheLastCheck) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 2; c < 40; ++c) {
+    if (c != 20) original.set(c, 10, Cell::kOccupied);
+  }
+  Grid decoded = original;
+  decoded.set(20, 10, Cell::kOccupied);
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8, &decoded).empty());
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8, &original)),
+            std::set<std::size_t>{original.Index(20, 10)});
+}
+
 // The same with an unknown cell in the wall that the decode makes free: a
 // shortcut, whose culprit is that cell.
 TEST(LocalDetourCulpritsTest, FindsAShortcutThroughAWall) {
