@@ -44,7 +44,10 @@ struct BitModel {
     const std::uint32_t next =
         bit == 0 ? old + (((1u << kProbBits) - old) >> shift) : old - (old >> shift);
     p_xor_half = static_cast<std::uint16_t>(next ^ kHalf);
-    if (n < kAdaptSteps) ++n;
+    // Added rather than branched on: fresh and settled models take turns
+    // (an integer's unary prefix, a path's turns), and a branch on which
+    // was mispredicted often.
+    n = static_cast<std::uint16_t>(n + (n < kAdaptSteps ? 1 : 0));
   }
 };
 static_assert(std::is_trivially_default_constructible_v<BitModel>);

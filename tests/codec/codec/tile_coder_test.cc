@@ -235,6 +235,16 @@ TEST(TileCoderTest, FirstRowsOfATileDecodeAsInTheWholeTile) {
       const auto first = cells.begin() + static_cast<std::ptrdiff_t>(tw) * rows;
       ASSERT_TRUE(std::equal(cells.begin(), first, part.begin())) << iter;
       ASSERT_TRUE(std::equal(cells.begin(), first, over.begin())) << iter;
+      // Nothing is written past the rows wanted (the decoder writes each
+      // row's cells one row late, over hints the row above has read): the
+      // row after them keeps its hints, the others their bytes.
+      const std::ptrdiff_t done = first - cells.begin();
+      ASSERT_TRUE(
+          std::all_of(part.begin() + done, part.end(), [](Cell c) { return c == Cell::kUnknown; }));
+      ASSERT_EQ(std::memcmp(over.data() + done, hints.data() + done, static_cast<std::size_t>(tw)),
+                0);
+      ASSERT_TRUE(std::all_of(over.begin() + done + tw, over.end(),
+                              [](Cell c) { return c == Cell::kOccupied; }));
       // Rows past those wanted are refused, as is none of a non-empty tile.
       EXPECT_FALSE(DecodeTileRows(data.data(), data.size(), hints.data(), tw, tw, th, th + 1,
                                   part.data(), tw)
