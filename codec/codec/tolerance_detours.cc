@@ -12,82 +12,104 @@
 namespace linemap::tolerance_internal {
 namespace {
 
-constexpr std::size_t kNone = SIZE_MAX;
-
 // A breadth-first search over the free cells of `grid` from one cell, at
 // most `depth` steps, that keeps, of the shortest plans to each cell, the
 // one crossing the fewest cells not free in `other` (as FewestChangesPlans
-// does for the whole map). Its arrays span the grid and are reset cell by
-// cell, so one search costs what it visits.
+// does for the whole map). A search of `depth` steps stays within `depth`
+// cells of its source in each axis, so its arrays span that window only
+// ((2 depth + 1)^2 cells, reset cell by cell): a map of 36 Mcells would
+// otherwise need some 1.2 GB for them.
 class LocalPlans {
  public:
-  LocalPlans(const Grid& grid, const Grid& other)
+  LocalPlans(const Grid& grid, const Grid& other, int depth)
       : grid_(grid),
         other_(other),
-        steps_(grid.size(), -1),
-        changes_(grid.size(), 0),
-        previous_(grid.size(), kNone),
-        walked_(grid.size(), 0) {}
+        depth_(depth),
+        side_(2 * depth + 1),
+        steps_(static_cast<std::size_t>(side_) * side_, -1),
+        changes_(steps_.size(), 0),
+        previous_(steps_.size(), -1),
+        walked_(steps_.size(), 0) {}
 
-  void Run(std::size_t source, int depth) {
-    for (const std::size_t i : order_) {
-      steps_[i] = -1;
-      previous_[i] = kNone;
-      walked_[i] = 0;
+  void Run(std::size_t source) {
+    for (const int k : order_) {
+      steps_[k] = -1;
+      previous_[k] = -1;
+      walked_[k] = 0;
     }
-    order_.assign(1, source);
-    steps_[source] = 0;
-    changes_[source] = Changed(source);
     const std::size_t w = static_cast<std::size_t>(grid_.width());
+    c0_ = static_cast<int>(source % w) - depth_;
+    r0_ = static_cast<int>(source / w) - depth_;
+    const int centre = depth_ * side_ + depth_;
+    order_.assign(1, centre);
+    reached_.assign(1, source);
+    steps_[centre] = 0;
+    changes_[centre] = Changed(source);
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
     for (std::size_t head = 0; head < order_.size(); ++head) {
-      const std::size_t i = order_[head];
-      const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
-      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-      if (steps_[i] > 0) {
+      const int k = order_[head];
+      const int lc = k % side_, lr = k / side_;
+      const int c = c0_ + lc, r = r0_ + lr;
+      if (steps_[k] > 0) {
         // Every cell one step nearer was reached before this one left the
         // queue: the fewest changes through any of them are final.
         std::int32_t best = INT32_MAX;
-        for (int k = 0; k < 4; ++k) {
-          if (!grid_.Contains(c + dc[k], r + dr[k])) continue;
-          const std::size_t n = grid_.Index(c + dc[k], r + dr[k]);
-          if (steps_[n] == steps_[i] - 1 && changes_[n] < best) {
+        for (int d = 0; d < 4; ++d) {
+          const int n = Local(c + dc[d], r + dr[d]);
+          if (n >= 0 && steps_[n] == steps_[k] - 1 && changes_[n] < best) {
             best = changes_[n];
-            previous_[i] = n;
+            previous_[k] = n;
           }
         }
-        changes_[i] = Changed(i) + best;
+        changes_[k] = Changed(grid_.Index(c, r)) + best;
       }
-      if (steps_[i] == depth) continue;
-      for (int k = 0; k < 4; ++k) {
-        if (!grid_.Contains(c + dc[k], r + dr[k])) continue;
-        const std::size_t n = grid_.Index(c + dc[k], r + dr[k]);
-        if (steps_[n] >= 0 || grid_.cells()[n] != Cell::kFree) continue;
-        steps_[n] = steps_[i] + 1;
+      if (steps_[k] == depth_) continue;
+      for (int d = 0; d < 4; ++d) {
+        const int n = Local(c + dc[d], r + dr[d]);
+        if (n < 0 || steps_[n] >= 0 || grid_.at(c + dc[d], r + dr[d]) != Cell::kFree) continue;
+        steps_[n] = steps_[k] + 1;
         order_.push_back(n);
+        reached_.push_back(grid_.Index(c + dc[d], r + dr[d]));
       }
     }
   }
-  // The cells reached, nearest first, and their steps (-1: not reached).
-  const std::vector<std::size_t>& reached() const { return order_; }
-  std::int32_t steps(std::size_t i) const { return steps_[i]; }
+  // The cells reached (map indices), nearest first, and their steps (-1:
+  // not reached).
+  const std::vector<std::size_t>& reached() const { return reached_; }
+  std::int32_t steps(std::size_t i) const {
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    const int k = Local(static_cast<int>(i % w), static_cast<int>(i / w));
+    return k < 0 ? -1 : steps_[k];
+  }
   // Appends the cells not free in `other` on the plan to `goal`, back to
   // where a plan of this search walked before.
   void AppendChanged(std::size_t goal, std::vector<std::size_t>* out) {
-    for (std::size_t i = goal; i != kNone && !walked_[i]; i = previous_[i]) {
-      walked_[i] = 1;
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    for (int k = Local(static_cast<int>(goal % w), static_cast<int>(goal / w));
+         k >= 0 && !walked_[k]; k = previous_[k]) {
+      walked_[k] = 1;
+      const std::size_t i = grid_.Index(c0_ + k % side_, r0_ + k / side_);
       if (Changed(i)) out->push_back(i);
     }
   }
 
  private:
+  // The window index of map cell (c, r); -1 outside the window or the map.
+  int Local(int c, int r) const {
+    const int lc = c - c0_, lr = r - r0_;
+    if (lc < 0 || lr < 0 || lc >= side_ || lr >= side_ || !grid_.Contains(c, r)) return -1;
+    return lr * side_ + lc;
+  }
   std::int32_t Changed(std::size_t i) const { return other_.cells()[i] != Cell::kFree ? 1 : 0; }
 
   const Grid& grid_;
   const Grid& other_;
-  std::vector<std::int32_t> steps_, changes_;
-  std::vector<std::size_t> previous_;
+  int depth_, side_;
+  int c0_ = 0, r0_ = 0;  // the window's first cell
+  std::vector<std::int32_t> steps_, changes_, previous_;
   std::vector<std::uint8_t> walked_;
-  std::vector<std::size_t> order_;
+  std::vector<int> order_;            // window indices, nearest first
+  std::vector<std::size_t> reached_;  // the same cells as map indices
 };
 
 // Cells free in both maps with a 4-neighbour free in one map only.
@@ -126,13 +148,14 @@ std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& d
     }
     near_change = ChebyshevDistance(decoded.width(), decoded.height(), changed);
   }
-  LocalPlans on_original(original, decoded), on_decoded(decoded, original);
+  const int depth = radius + kPlanSlackSteps;
+  LocalPlans on_original(original, decoded, depth), on_decoded(decoded, original, depth);
   for (const std::size_t source : ChangeSides(original, decoded)) {
-    if (checked != nullptr && near_change[source] > radius + kPlanSlackSteps) continue;
+    if (checked != nullptr && near_change[source] > depth) continue;
     // A plan up to `radius` steps on one map must be there within the
     // slack on the other: search that much deeper.
-    on_original.Run(source, radius + kPlanSlackSteps);
-    on_decoded.Run(source, radius + kPlanSlackSteps);
+    on_original.Run(source);
+    on_decoded.Run(source);
     for (const std::size_t goal : on_original.reached()) {
       const std::int32_t a = on_original.steps(goal);
       if (a > radius) break;

@@ -88,9 +88,9 @@ class FewestChangesPlans {
  public:
   FewestChangesPlans(const Grid& grid, const std::vector<std::int32_t>& steps,
                      const std::vector<std::size_t>& order, const Grid& other)
-      : previous_(grid.size(), kNone) {
+      : width_(static_cast<std::size_t>(grid.width())), toward_(grid.size(), kSource) {
     std::vector<std::int32_t> changes(grid.size(), 0);
-    const std::size_t w = static_cast<std::size_t>(grid.width());
+    const std::size_t w = width_;
     const std::size_t n = grid.size();
     const Cell* other_cells = other.cells().data();
     for (const std::size_t i : order) {
@@ -104,25 +104,44 @@ class FewestChangesPlans {
       // -row (ties to the first).
       const std::size_t c = i % w;
       std::int32_t best = INT32_MAX;
-      auto consider = [&](std::size_t j) {
+      auto consider = [&](std::size_t j, std::uint8_t direction) {
         if (steps[j] == before && changes[j] < best) {
           best = changes[j];
-          previous_[i] = j;
+          toward_[i] = direction;
         }
       };
-      if (c + 1 < w) consider(i + 1);
-      if (c > 0) consider(i - 1);
-      if (i + w < n) consider(i + w);
-      if (i >= w) consider(i - w);
+      if (c + 1 < w) consider(i + 1, 0);
+      if (c > 0) consider(i - 1, 1);
+      if (i + w < n) consider(i + w, 2);
+      if (i >= w) consider(i - w, 3);
       changes[i] = own + best;
     }
   }
   // The cell before `i` on its plan; kNone at the source.
-  std::size_t Previous(std::size_t i) const { return previous_[i]; }
+  std::size_t Previous(std::size_t i) const {
+    switch (toward_[i]) {
+      case 0:
+        return i + 1;
+      case 1:
+        return i - 1;
+      case 2:
+        return i + width_;
+      case 3:
+        return i - width_;
+      default:
+        return kNone;
+    }
+  }
   static constexpr std::size_t kNone = SIZE_MAX;
 
  private:
-  std::vector<std::size_t> previous_;
+  // Which neighbour comes before each cell (+col, -col, +row, -row as
+  // 0-3; kSource at the source and unreached cells): a byte a cell rather
+  // than an index of 8, as one of these is made for the whole map per
+  // sampled start.
+  static constexpr std::uint8_t kSource = 4;
+  std::size_t width_;
+  std::vector<std::uint8_t> toward_;
 };
 
 // Walks the plan from `goal` back towards the source until a cell already

@@ -84,8 +84,8 @@ TEST(TopologyFaultsTest, SplitCulpritsAreOneGapThroughTheBand) {
 // Two rooms joined by a doorway (column 20 of a wall on row 10) and, far
 // round, by a corridor down the left edge. The decode closes the doorway:
 // every plan still exists, but between the cells on either side of it the
-// plan is 40 steps longer. Plans from starts far from the doorway never
-// pass it, so only a check around each change finds it.
+// plan is 40 steps longer. (On this small map the sampled starts find it
+// too; on a large one they may all lie in other rooms.)
 TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
   Grid original(40, 21, Cell::kFree);
   for (int c = 2; c < 40; ++c) {
@@ -134,6 +134,34 @@ TEST(LocalDetourCulpritsTest, AWallThickenedByACellNeedsNothing) {
   for (int c = 0; c <= 26; ++c) decoded.set(c, 11, Cell::kOccupied);
   decoded.set(26, 10, Cell::kOccupied);
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
+}
+
+// Lost cells cost what they are, not how far they lie: below a band of
+// lost rows (5-7) the decode splits the room's lower part into A (columns
+// 0-9) and B (12-19, and (11, 18)) by lost columns 10 and 11, and leaves a
+// way from the main piece to A through one lost cell, (2, 7). B is nearest
+// the main piece straight up through the band (3 lost cells); through A it
+// is 2 (with (10, 18), where the columns are one cell thick). A search by
+// lost cells gives back those 2; one by steps would give back 4.
+TEST(TopologyFaultsTest, SplitCulpritsCountLostCellsNotSteps) {
+  const Grid original(20, 20, Cell::kFree);
+  Grid decoded = original;
+  for (int c = 0; c < 20; ++c) {
+    for (int r = 5; r <= 7; ++r) decoded.set(c, r, Cell::kOccupied);
+  }
+  decoded.set(2, 5, Cell::kFree);
+  decoded.set(2, 6, Cell::kFree);
+  for (int r = 8; r < 20; ++r) {
+    decoded.set(10, r, Cell::kOccupied);
+    if (r != 18) decoded.set(11, r, Cell::kOccupied);
+  }
+
+  const TopologyFaults faults = FindTopologyFaults(original, decoded, true);
+  ASSERT_EQ(faults.splits, 1u);
+  EXPECT_EQ(AsSet(faults.split_culprits),
+            std::set<std::size_t>({original.Index(2, 7), original.Index(10, 18)}));
+  for (const std::size_t i : faults.split_culprits) decoded.mutable_cells()[i] = Cell::kFree;
+  EXPECT_EQ(FindTopologyFaults(original, decoded, false).splits, 0u);
 }
 
 // Whether `grid` or `extra` has a free cell within Chebyshev t of cell i

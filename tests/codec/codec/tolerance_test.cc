@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <deque>
+#include <map>
 #include <random>
 #include <set>
 #include <string>
@@ -160,6 +161,61 @@ void ExpectPlansAgree(const Grid& o, const Grid& s, int sources) {
   EXPECT_EQ(disagreements, 0) << "of " << pairs << " pairs";
 }
 
+// Steps from `from` over free cells up to `depth` (cells not reached are
+// absent).
+std::map<int, int> NearSteps(const Grid& g, int from, int depth) {
+  std::map<int, int> steps{{from, 0}};
+  std::deque<int> queue{from};
+  while (!queue.empty()) {
+    const int i = queue.front();
+    queue.pop_front();
+    const int d = steps[i];
+    if (d == depth) continue;
+    const int c = i % g.width(), r = i / g.width();
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+      if (!g.Contains(c + dc[k], r + dr[k]) || g.at(c + dc[k], r + dr[k]) != Cell::kFree) continue;
+      const int n = static_cast<int>(g.Index(c + dc[k], r + dr[k]));
+      if (steps.emplace(n, d + 1).second) queue.push_back(n);
+    }
+  }
+  return steps;
+}
+
+// The encoder's local plan check, by its definition: from every cell free
+// in both maps beside a cell free in one only, each plan of up to 8 steps
+// on one map is on the other within 2 more.
+void ExpectLocalPlansAgree(const Grid& o, const Grid& s) {
+  auto free_in = [](const Grid& g, int i) { return g.cells()[i] == Cell::kFree; };
+  int bad = 0;
+  for (int r = 0; r < o.height(); ++r) {
+    for (int c = 0; c < o.width(); ++c) {
+      const int i = static_cast<int>(o.Index(c, r));
+      if (!free_in(o, i) || !free_in(s, i)) continue;
+      bool beside_change = false;
+      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+      for (int k = 0; k < 4; ++k) {
+        if (!o.Contains(c + dc[k], r + dr[k])) continue;
+        const int n = static_cast<int>(o.Index(c + dc[k], r + dr[k]));
+        beside_change = beside_change || free_in(o, n) != free_in(s, n);
+      }
+      if (!beside_change) continue;
+      const std::map<int, int> a = NearSteps(o, i, 10), b = NearSteps(s, i, 10);
+      for (const auto& [goal, steps] : a) {
+        if (steps > 8 || !free_in(s, goal)) continue;
+        const auto it = b.find(goal);
+        bad += it == b.end() || it->second > steps + 2;
+      }
+      for (const auto& [goal, steps] : b) {
+        if (steps > 8 || !free_in(o, goal)) continue;
+        const auto it = a.find(goal);
+        bad += it == a.end() || it->second > steps + 2;
+      }
+    }
+  }
+  EXPECT_EQ(bad, 0) << "plans of up to 8 steps beside a change more than 2 steps apart";
+}
+
 // Every guarantee of tolerance t, by the references above.
 void ExpectGuarantees(const Grid& o, const Grid& s, int t, const std::string& what) {
   SCOPED_TRACE(what + " T=" + std::to_string(t));
@@ -183,6 +239,7 @@ void ExpectGuarantees(const Grid& o, const Grid& s, int t, const std::string& wh
   EXPECT_EQ(topo.leaks, 0);
   EXPECT_EQ(topo.splits, 0);
   ExpectPlansAgree(o, s, 6);
+  ExpectLocalPlansAgree(o, s);
 }
 
 // ---------------------------------------------------------------------------
