@@ -25,6 +25,10 @@ struct FittedLine {
 
 // The TLS line through `centroid` given the 2x2 covariance of the points.
 FittedLine FitFromCovariance(const Eigen::Vector2d& centroid, const Eigen::Matrix2d& covariance);
+// The same through Eigen's solver (SelfAdjointEigenSolver::computeDirect),
+// for tests: FitFromCovariance must give the same bits.
+FittedLine FitFromCovarianceReference(const Eigen::Vector2d& centroid,
+                                      const Eigen::Matrix2d& covariance);
 
 // The smallest eigenvalue of a 2x2 covariance in closed form: the mean
 // squared distance of the points to their TLS line, for quick rejections.
