@@ -15,6 +15,17 @@ namespace linemap::tolerance_internal {
 // Distance used for "no such cell in the map".
 inline constexpr std::int32_t kFar = INT32_MAX / 2;
 
+// Calls f(j) for each 4-neighbour j of cell i (row-major index) of a
+// width x height grid, in the order +col, -col, +row, -row.
+template <typename F>
+void ForEachNeighbour(std::size_t width, std::size_t height, std::size_t i, F f) {
+  const std::size_t c = i % width;
+  if (c + 1 < width) f(i + 1);
+  if (c > 0) f(i - 1);
+  if (i + width < width * height) f(i + width);
+  if (i >= width) f(i - width);
+}
+
 // 1 where grid's cell equals `value`.
 std::vector<std::uint8_t> CellMask(const Grid& grid, Cell value);
 

@@ -35,20 +35,15 @@ std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source,
   const std::size_t w = static_cast<std::size_t>(grid.width());
   const std::size_t h = static_cast<std::size_t>(grid.height());
   const Cell* cells = grid.cells().data();
-  auto visit = [&](std::size_t n, std::int32_t s) {
-    if (steps[n] < 0 && cells[n] == Cell::kFree) {
-      steps[n] = s;
-      queue.push_back(n);
-    }
-  };
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t i = queue[head];
-    const std::size_t c = i % w;
     const std::int32_t s = steps[i] + 1;
-    if (c + 1 < w) visit(i + 1, s);
-    if (c > 0) visit(i - 1, s);
-    if (i + w < w * h) visit(i + w, s);
-    if (i >= w) visit(i - w, s);
+    ForEachNeighbour(w, h, i, [&](std::size_t n) {
+      if (steps[n] < 0 && cells[n] == Cell::kFree) {
+        steps[n] = s;
+        queue.push_back(n);
+      }
+    });
   }
   return steps;
 }
@@ -57,21 +52,15 @@ std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source,
 void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::size_t goal,
                 std::vector<std::size_t>* out) {
   const std::size_t w = static_cast<std::size_t>(grid.width());
+  const std::size_t h = static_cast<std::size_t>(grid.height());
   std::size_t i = goal;
   out->push_back(i);
   while (steps[i] > 0) {
-    const int c = static_cast<int>(i % w);
-    const int r = static_cast<int>(i / w);
-    const int dc[4] = {1, -1, 0, 0};
-    const int dr[4] = {0, 0, 1, -1};
-    for (int k = 0; k < 4; ++k) {
-      if (!grid.Contains(c + dc[k], r + dr[k])) continue;
-      const std::size_t n = grid.Index(c + dc[k], r + dr[k]);
-      if (steps[n] == steps[i] - 1) {
-        i = n;
-        break;
-      }
-    }
+    std::size_t next = i;
+    ForEachNeighbour(w, h, i, [&](std::size_t n) {
+      if (next == i && steps[n] == steps[i] - 1) next = n;
+    });
+    i = next;
     out->push_back(i);
   }
 }
@@ -91,7 +80,7 @@ class FewestChangesPlans {
       : width_(static_cast<std::size_t>(grid.width())), toward_(grid.size(), kSource) {
     std::vector<std::int32_t> changes(grid.size(), 0);
     const std::size_t w = width_;
-    const std::size_t n = grid.size();
+    const std::size_t h = static_cast<std::size_t>(grid.height());
     const Cell* other_cells = other.cells().data();
     for (const std::size_t i : order) {
       const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
@@ -102,18 +91,13 @@ class FewestChangesPlans {
       }
       // The neighbours one step nearer, in the order +col, -col, +row,
       // -row (ties to the first).
-      const std::size_t c = i % w;
       std::int32_t best = INT32_MAX;
-      auto consider = [&](std::size_t j, std::uint8_t direction) {
+      ForEachNeighbour(w, h, i, [&](std::size_t j) {
         if (steps[j] == before && changes[j] < best) {
           best = changes[j];
-          toward_[i] = direction;
+          toward_[i] = Direction(i, j);
         }
-      };
-      if (c + 1 < w) consider(i + 1, 0);
-      if (c > 0) consider(i - 1, 1);
-      if (i + w < n) consider(i + w, 2);
-      if (i >= w) consider(i - w, 3);
+      });
       changes[i] = own + best;
     }
   }
@@ -140,6 +124,10 @@ class FewestChangesPlans {
   // than an index of 8, as one of these is made for the whole map per
   // sampled start.
   static constexpr std::uint8_t kSource = 4;
+  // Which neighbour of i the 4-neighbour j is, in the order Previous reads.
+  std::uint8_t Direction(std::size_t i, std::size_t j) const {
+    return j == i + 1 ? 0 : j + 1 == i ? 1 : j == i + width_ ? 2 : 3;
+  }
   std::size_t width_;
   std::vector<std::uint8_t> toward_;
 };

@@ -92,6 +92,7 @@ std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig
   constexpr std::int32_t kUnreached = INT32_MAX;
   const std::size_t n = orig.size();
   const std::size_t w = static_cast<std::size_t>(grid.width());
+  const std::size_t h = static_cast<std::size_t>(grid.height());
   std::vector<std::int32_t> cost(n, kUnreached);
   std::vector<std::size_t> from(n, kNone);
   std::deque<std::size_t> queue;
@@ -113,17 +114,11 @@ std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig
       piece_seen[dec[i]] = 1;
       piece_first.push_back(i);
     }
-    const int c = static_cast<int>(i % w);
-    const int r = static_cast<int>(i / w);
-    const int dc[4] = {1, -1, 0, 0};
-    const int dr[4] = {0, 0, 1, -1};
-    for (int k = 0; k < 4; ++k) {
-      if (!grid.Contains(c + dc[k], r + dr[k])) continue;
-      const std::size_t j = grid.Index(c + dc[k], r + dr[k]);
-      if (orig[j] != orig[i]) continue;
+    ForEachNeighbour(w, h, i, [&](std::size_t j) {
+      if (orig[j] != orig[i]) return;
       // A decoded free cell costs nothing (front of the queue), a lost one 1.
       const std::int32_t step = dec[j] ? 0 : 1;
-      if (cost[i] + step >= cost[j]) continue;
+      if (cost[i] + step >= cost[j]) return;
       cost[j] = cost[i] + step;
       from[j] = i;
       if (step == 0) {
@@ -131,7 +126,7 @@ std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig
       } else {
         queue.push_back(j);
       }
-    }
+    });
   }
   std::vector<std::size_t> out;
   std::vector<std::uint8_t> walked(n, 0);

@@ -86,11 +86,16 @@ TEST(TopologyFaultsTest, SplitCulpritsAreOneGapThroughTheBand) {
 // every plan still exists, but between the cells on either side of it the
 // plan is 40 steps longer. (On this small map the sampled starts find it
 // too; on a large one they may all lie in other rooms.)
-TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
-  Grid original(40, 21, Cell::kFree);
+Grid TwoRoomsWithADoorway() {
+  Grid g(40, 21, Cell::kFree);
   for (int c = 2; c < 40; ++c) {
-    if (c != 20) original.set(c, 10, Cell::kOccupied);
+    if (c != 20) g.set(c, 10, Cell::kOccupied);
   }
+  return g;
+}
+
+TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
+  const Grid original = TwoRoomsWithADoorway();
   Grid decoded = original;
   decoded.set(20, 10, Cell::kOccupied);
   EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
@@ -101,10 +106,7 @@ TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
 // that changed since: the closed doorway is found again when the doorway
 // changed since (checked against the original), not when nothing did.
 TEST(LocalDetourCulpritsTest, SearchesOnlyNearChangesSinceTheLastCheck) {
-  Grid original(40, 21, Cell::kFree);
-  for (int c = 2; c < 40; ++c) {
-    if (c != 20) original.set(c, 10, Cell::kOccupied);
-  }
+  const Grid original = TwoRoomsWithADoorway();
   Grid decoded = original;
   decoded.set(20, 10, Cell::kOccupied);
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8, &decoded).empty());
