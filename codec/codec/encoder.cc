@@ -42,6 +42,16 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   if (!(grid.meta.resolution > 0) || !std::isfinite(grid.meta.resolution)) {
     return InvalidArgumentError("grid resolution must be a positive number");
   }
+  if (options.tolerance_cells > 0 && options.max_tolerance_cells != 0 &&
+      grid.size() > options.max_tolerance_cells) {
+    return ResourceExhaustedError(
+        "a map of " + std::to_string(grid.size()) + " cells is over the limit of " +
+        std::to_string(options.max_tolerance_cells) +
+        " cells for saving within a tolerance (its checks hold about 34 bytes a cell, " +
+        std::to_string(grid.size() * 34 / 1000000) +
+        " MB here): save it exact (tolerance 0) or raise the limit (max_tolerance_cells, "
+        "--max-tolerance-cells)");
+  }
   return CheckEncodeOptions(options);
 }
 

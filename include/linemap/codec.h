@@ -39,6 +39,14 @@ struct EncodeOptions {
   // shorter than 2T + 1 cells to the cells; room
   // outlines are simplified within T + 1 cells (2 when exact).
   int tolerance_cells = 0;
+  // Largest map (cells) saved within a tolerance; 0: no limit. The
+  // tolerance checks hold the whole grid and some of its distance maps,
+  // about 34 bytes a cell at their peak (a 6000 x 6000 map: 1.2 GB and a
+  // minute), so a larger map is refused with kResourceExhausted before any
+  // of them is made. The default, 2^26 cells (about 2.3 GB), keeps a
+  // robot's save from exhausting its memory; an exact save of any size
+  // needs about 1 byte a cell.
+  std::uint64_t max_tolerance_cells = std::uint64_t{1} << 26;
   // Store the vector layers (walls, rooms, furniture) besides the cells
   // (default true); false writes the cells only (with `compact` too, the
   // smallest exact file).

@@ -132,6 +132,20 @@ TEST(CmdEncodeTest, LossyIsRemovedAndLosslessIsToleranceZero) {
   EXPECT_NE(RunCli({"info", dir + "/default.lmap"}).out.find("version 2."), std::string::npos);
 }
 
+// --max-tolerance-cells bounds the maps saved within a tolerance (depot has
+// 185,428 cells): over it, one line naming the map, its size and the
+// option, exit 2, nothing written; 0 lifts it.
+TEST(CmdEncodeTest, ToleranceOverTheCellLimitIsRefused) {
+  const std::string dir = MakeTempDir("encode_tolerance_limit");
+  const std::string yaml = CopyDepot(dir);
+  ExpectRefused(
+      {"encode", yaml, "-o", dir + "/x.lmap", "--tolerance", "1", "--max-tolerance-cells", "1000"},
+      dir, {"depot.yaml", "185428 cells", "--max-tolerance-cells"});
+  const CliResult r = RunCli({"encode", yaml, "-o", dir + "/x.lmap", "--tolerance", "1",
+                              "--max-tolerance-cells", "0", "--no-sync"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 // --pose must fall on the map; its lower edge (0,0 with origin 0,0) is on it.
 TEST(CmdEncodeTest, PoseOffTheMapIsRefused) {
   const std::string dir = MakeTempDir("encode_pose");

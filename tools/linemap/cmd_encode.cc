@@ -51,6 +51,9 @@ const CommandSpec kEncodeSpec = {
          "where obstacles or free space would move more than T, two free regions would join "
          "or split, or a plan would change by more than 3 % or 2 steps"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
+        {"--max-tolerance-cells", "N",
+         "refuse to save a map of more than N cells within a tolerance (default 67108864 = "
+         "2^26; 0: no limit): the checks hold about 34 bytes a cell"},
         {"--raster-only", "",
          "leave the vector layers out (with --compact: the smallest exact file)"},
         {"--straight-walls", "",
@@ -109,6 +112,9 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   if (args.Has("--lossless") && options.tolerance_cells != 0) {
     return InvalidArgumentError("--lossless is --tolerance 0; give one of them");
   }
+  LINEMAP_ASSIGN_OR_RETURN(options.max_tolerance_cells,
+                           args.GetUint64("--max-tolerance-cells", options.max_tolerance_cells,
+                                          /*min=*/0));
   if (args.Has("--png-ratio") && args.Has("--no-png-ratio")) {
     return InvalidArgumentError("--png-ratio and --no-png-ratio exclude each other");
   }

@@ -423,5 +423,31 @@ TEST(CodecV2Test, ToleranceOutsideZeroToFourIsRefused) {
   EXPECT_FALSE(EncodeLmap(Grid(4, 4, Cell::kFree), options).ok());
 }
 
+// Saving within a tolerance holds the whole grid and its distance maps, so
+// maps over EncodeOptions::max_tolerance_cells (2^26 unless set; 0: no
+// limit) are refused before any work, with the map's size and the option
+// named; exact saves are not limited by it.
+TEST(CodecV2Test, ToleranceRefusesMapsOverItsCellLimit) {
+  EXPECT_EQ(EncodeOptions{}.max_tolerance_cells, 67108864u);
+  Grid grid(20, 20, Cell::kFree);
+  for (int c = 0; c < 20; ++c) grid.set(c, 10, Cell::kOccupied);
+  EncodeOptions options;
+  options.tolerance_cells = 1;
+  options.max_tolerance_cells = 399;
+  const auto refused = EncodeLmap(grid, options);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(refused.status().message().find("400 cells"), std::string::npos)
+      << refused.status().message();
+  EXPECT_NE(refused.status().message().find("max_tolerance_cells"), std::string::npos);
+  for (const std::uint64_t limit : {std::uint64_t{400}, std::uint64_t{0}}) {
+    options.max_tolerance_cells = limit;
+    EXPECT_TRUE(EncodeLmap(grid, options).ok()) << limit;
+  }
+  options.tolerance_cells = 0;
+  options.max_tolerance_cells = 1;
+  EXPECT_TRUE(EncodeLmap(grid, options).ok());
+}
+
 }  // namespace
 }  // namespace linemap
