@@ -132,6 +132,20 @@ std::vector<std::size_t> ChangeSides(const Grid& original, const Grid& decoded) 
   return out;
 }
 
+// The plans of `plans` up to `radius` steps to cells free in `other` that
+// `other_plans` (the same source on `other`) makes more than the slack
+// longer or cannot make: the changed cells on them go to *out.
+void AppendDetours(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
+                   std::vector<std::size_t>* out) {
+  for (const std::size_t goal : plans->reached()) {
+    const std::int32_t here = plans->steps(goal);
+    if (here > radius) break;
+    if (other.cells()[goal] != Cell::kFree) continue;
+    const std::int32_t there = other_plans.steps(goal);
+    if (there < 0 || there > here + kPlanSlackSteps) plans->AppendChanged(goal, out);
+  }
+}
+
 }  // namespace
 
 std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
@@ -156,20 +170,9 @@ std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& d
     // slack on the other: search that much deeper.
     on_original.Run(source);
     on_decoded.Run(source);
-    for (const std::size_t goal : on_original.reached()) {
-      const std::int32_t a = on_original.steps(goal);
-      if (a > radius) break;
-      if (decoded.cells()[goal] != Cell::kFree) continue;
-      const std::int32_t b = on_decoded.steps(goal);
-      if (b < 0 || b > a + kPlanSlackSteps) on_original.AppendChanged(goal, &out);
-    }
-    for (const std::size_t goal : on_decoded.reached()) {
-      const std::int32_t b = on_decoded.steps(goal);
-      if (b > radius) break;
-      if (original.cells()[goal] != Cell::kFree) continue;
-      const std::int32_t a = on_original.steps(goal);
-      if (a < 0 || a > b + kPlanSlackSteps) on_decoded.AppendChanged(goal, &out);
-    }
+    // Longer on the decode (a detour), then shorter (a shortcut).
+    AppendDetours(radius, decoded, on_decoded, &on_original, &out);
+    AppendDetours(radius, original, on_original, &on_decoded, &out);
   }
   return out;
 }
