@@ -35,9 +35,11 @@ std::vector<std::uint8_t> BytesArgument(const py::handle& data) {
 
 // linemap.encode()'s keywords as the library's options (tolerance 0: an
 // exact file).
-EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls, bool compact) {
+EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls, bool compact,
+                               std::uint64_t max_tolerance_cells) {
   EncodeOptions options;
   options.tolerance_cells = tolerance;
+  options.max_tolerance_cells = max_tolerance_cells;
   options.vector_layers = vectors;
   options.straight_walls = straight_walls;
   options.compact = compact;
@@ -103,9 +105,23 @@ void CheckTolerance(int tolerance) {
   if (tolerance < 0) throw py::value_error("tolerance must be at least 0 cells");
 }
 
+// max_tolerance_cells: a whole number of cells, 0 for no limit (as
+// EncodeOptions::max_tolerance_cells).
+std::uint64_t MaxToleranceCellsArgument(const py::object& value) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+    throw py::type_error("max_tolerance_cells must be an int (cells; 0 for no limit)");
+  }
+  if (value < py::int_(0)) throw py::value_error("max_tolerance_cells must be at least 0");
+  if (value > py::int_(UINT64_MAX)) {
+    throw py::value_error("max_tolerance_cells must be below 2^64");
+  }
+  return value.cast<std::uint64_t>();
+}
+
 void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
-          bool straight_walls, bool compact) {
+          bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
   CheckTolerance(tolerance);
+  const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
   if (!yaml && !EndsWith(path, ".lmap")) {
@@ -117,14 +133,17 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
     py::gil_scoped_release release;
     saved =
         yaml ? SaveRosMap(path, grid)
-             : SaveLmap(path, grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
+             : SaveLmap(path, grid,
+                        EncodeOptionsFor(tolerance, vectors, straight_walls, compact,
+                                         max_tolerance_cells));
   }
   RaiseIfError(saved);
 }
 
 void Convert(const py::object& source_arg, const py::object& path_arg, int tolerance, bool vectors,
-             bool straight_walls, bool compact) {
+             bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
   CheckTolerance(tolerance);
+  const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string source = PathArgument(source_arg);
   const std::string path = PathArgument(path_arg);
   if (!EndsWith(path, ".lmap")) {
@@ -133,19 +152,23 @@ void Convert(const py::object& source_arg, const py::object& path_arg, int toler
   StatusOr<LmapSaveSummary> saved = InvalidArgumentError("not saved");
   {
     py::gil_scoped_release release;
-    saved = SaveRosMapAsLmap(source, path,
-                             EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
+    saved = SaveRosMapAsLmap(
+        source, path,
+        EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
   }
   RaiseIfError(saved.status());
 }
 
-py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls, bool compact) {
+py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls, bool compact,
+                 const py::object& max_tolerance_cells_arg) {
   CheckTolerance(tolerance);
+  const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
     py::gil_scoped_release release;
-    bytes = EncodeLmap(grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact));
+    bytes = EncodeLmap(
+        grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
   }
   const std::vector<std::uint8_t> out = ValueOrRaise(std::move(bytes));
   return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
@@ -245,9 +268,11 @@ empty or reaches past the map raises ValueError. A missing file raises FileNotFo
 unreadable one OSError, a corrupt or malformed one ValueError; the message
 names the file.
 )doc");
+  const py::int_ default_max_tolerance_cells(EncodeOptions{}.max_tolerance_cells);
   module.def("save", &Save, py::arg("path"), py::arg("map"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,
-             py::arg("compact") = false, R"doc(
+             py::arg("compact") = false,
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
 ``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
 ends in .yaml or .yml; other names raise ValueError. ``tolerance`` (cells) is
@@ -258,11 +283,16 @@ files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``: about
 4.5 % smaller files that decode in about 3.5x the time; version 2.3).
-Options the library refuses raise ValueError with its message.
+``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
+tolerance of a larger map before any work, with MemoryError: its checks need
+about 34 bytes a cell (the default, 2^26 cells, about 2.3 GB); exact saves
+are not limited. Options the library refuses raise ValueError with its
+message.
 )doc");
   module.def("convert", &Convert, py::arg("source"), py::arg("path"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,
-             py::arg("compact") = false, R"doc(
+             py::arg("compact") = false,
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
 Saves the ROS map file ``source`` (a map YAML naming its image, or a bare
 PGM / PNG image) as the .lmap file ``path``, without making a Map: the
 bytes ``save(path, load(source), ...)`` writes (options as for save()). An
@@ -273,8 +303,9 @@ save() raise them, naming the file.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
              py::arg("straight_walls") = false, py::arg("compact") = false,
-             "The .lmap bytes of ``map`` (``tolerance``, ``vectors``, ``straight_walls`` and "
-             "``compact`` as for save()).");
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells,
+             "The .lmap bytes of ``map`` (``tolerance``, ``vectors``, ``straight_walls``, "
+             "``compact`` and ``max_tolerance_cells`` as for save()).");
   module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
              "ValueError, more than ``max_cells`` cells MemoryError.");

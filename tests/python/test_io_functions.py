@@ -355,3 +355,26 @@ def test_window_cells_out_of_range_or_of_the_wrong_type(bundled, tmp_path):
         linemap.load(out, window_cells=(0, 0, True, 1))
     with pytest.raises(TypeError):
         linemap.load(out, window_cells=b"\x00\x00\x01\x01")
+
+
+def test_tolerance_saves_over_max_tolerance_cells_raise_memory_error(tmp_path):
+    # depot is 604 x 307 = 185,428 cells.
+    m = linemap.load(BUNDLED["depot"])
+    out = tmp_path / "depot.lmap"
+    with pytest.raises(MemoryError, match="max_tolerance_cells"):
+        linemap.save(out, m, tolerance=1, max_tolerance_cells=185_427)
+    assert not out.exists()
+    with pytest.raises(MemoryError, match="max_tolerance_cells"):
+        linemap.encode(m, tolerance=1, max_tolerance_cells=1000)
+    with pytest.raises(MemoryError, match="max_tolerance_cells"):
+        linemap.convert(BUNDLED["depot"], out, tolerance=2, max_tolerance_cells=1000)
+    assert not out.exists()
+    # At the map's size, with no limit, and for exact saves it goes ahead.
+    at_limit = linemap.encode(m, tolerance=1, max_tolerance_cells=185_428)
+    assert linemap.encode(m, tolerance=1, max_tolerance_cells=0) == at_limit
+    exact = linemap.encode(m, max_tolerance_cells=1)
+    assert np.array_equal(linemap.decode(exact).cells, m.cells)
+    with pytest.raises(ValueError, match="max_tolerance_cells"):
+        linemap.encode(m, tolerance=1, max_tolerance_cells=-1)
+    with pytest.raises(TypeError, match="max_tolerance_cells"):
+        linemap.encode(m, tolerance=1, max_tolerance_cells=1.5)
