@@ -292,20 +292,27 @@ inline unsigned HintClassOf(unsigned h) {
   std::memcpy(row + 1, here + begin, static_cast<std::size_t>(len));
   row[len + 1] = begin + len < width ? here[begin + len] : 0;
   const std::uint8_t* n = n1 + begin;
+  // In bytes (the class is below 40, the pattern below 27), so that a
+  // vector holds 16 cells rather than 4: a third of the vector code, and
+  // whole default files decode about 2 % faster than with `unsigned`.
+  const auto far = static_cast<std::uint8_t>(terms.far_from_walls);
+  const auto west_change = static_cast<std::uint8_t>(terms.west_change);
+  const auto north_change = static_cast<std::uint8_t>(terms.north_change);
   for (int k = 0; k < len; ++k) {
-    const unsigned h = row[k + 1] & 15u;
-    const unsigned west = row[k] & 15u;
-    const unsigned north = below[begin + k] & 15u;
-    const unsigned wall_near =
-        (h | west | row[k + 2] | north | above[begin + k]) & static_cast<unsigned>(kHintWall);
+    const std::uint8_t h = row[k + 1] & 15;
+    const std::uint8_t west = row[k] & 15;
+    const std::uint8_t north = below[begin + k] & 15;
+    const std::uint8_t walls = (h | west | row[k + 2] | north | above[begin + k]) & kHintWall;
     // LayerClassesOf: the wall term where neither the cell nor a
     // neighbour is on a wall.
-    const unsigned cls = HintClassOf(h) + (wall_near ? 0u : terms.far_from_walls);
-    const unsigned pattern = (n[k] * 3u + n[k - 1]) * 3u + n[k + 1];
-    other[k] = static_cast<std::uint16_t>(pattern * kLayerClasses + cls);
-    equal[k] = static_cast<std::uint16_t>(pattern * kLayerClasses + cls +
-                                          (west != h ? terms.west_change : 0u) +
-                                          (north != h ? terms.north_change : 0u));
+    const std::uint8_t cls = static_cast<std::uint8_t>(
+        static_cast<std::uint8_t>(HintClassOf(h)) + (walls != 0 ? 0 : far));
+    const std::uint8_t changes = static_cast<std::uint8_t>((west != h ? west_change : 0) +
+                                                           (north != h ? north_change : 0));
+    const std::uint8_t pattern = static_cast<std::uint8_t>(n[k] * 9 + n[k - 1] * 3 + n[k + 1]);
+    const std::uint16_t base = static_cast<std::uint16_t>(pattern * kLayerClasses + cls);
+    other[k] = base;
+    equal[k] = static_cast<std::uint16_t>(base + changes);
   }
 }
 
