@@ -16,6 +16,7 @@
 #include "linemap/lines.h"
 #include "linemap/plan.h"
 #include "linemap/segmentation.h"
+#include "linemap/vector_layers.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
 #include "python/errors.h"
@@ -105,6 +106,28 @@ py::tuple BoxTuple(const Grid& grid, const BoundingBox& box) {
   return py::make_tuple(x0, y0, x1, y1);
 }
 
+// One room as `linemap segment` writes it: with the rooms method its id,
+// kind, area and width; with the paper's border its free cells, those the
+// chain encloses and whether the Lee wave closed it.
+py::dict RoomDict(const Grid& grid, const RoomBorder& room, bool by_rooms) {
+  py::dict r;
+  if (by_rooms) {
+    r["id"] = room.id;
+    r["kind"] = RoomKindName(room.kind);
+    r["area_m2"] = room.area_m2;
+    r["cells"] = room.cells;
+    r["free_cells"] = room.free_cells;
+    r["width_m"] = room.width_m;
+  } else {
+    r["free_cells"] = room.free_cells;
+    r["enclosed_free_cells"] = room.enclosed_free_cells;
+    r["closed_by_lee"] = room.closed_by_lee;
+  }
+  r["chain_cells"] = room.chain.size();
+  r["chain"] = WorldPoints(grid, room.chain);
+  return r;
+}
+
 py::dict Segment(const Map& map, const py::object& pose) {
   const Grid grid = GridFromMap(map);
   SegmentationOptions options;
@@ -118,16 +141,21 @@ py::dict Segment(const Map& map, const py::object& pose) {
     segmentation = SegmentMap(grid, options);
   }
   const Segmentation seg = ValueOrRaise(std::move(segmentation));
+  const bool by_rooms = options.method == SegmentationMethod::kRooms;
   py::list rooms;
-  for (const RoomBorder& room : seg.rooms) {
-    py::dict r;
-    r["chain_cells"] = room.chain.size();
-    r["chain"] = WorldPoints(grid, room.chain);
-    rooms.append(r);
+  for (const RoomBorder& room : seg.rooms) rooms.append(RoomDict(grid, room, by_rooms));
+  py::list doors;
+  for (const Doorway& door : seg.doors) {
+    py::dict d;
+    d["rooms"] = py::make_tuple(door.room_a, door.room_b);
+    d["width_m"] = door.width_m;
+    d["at"] = WorldPoint(grid, door.cell);
+    doors.append(d);
   }
   py::list blobs;
   for (const FurnitureBlob& blob : seg.blobs) {
     py::dict b;
+    if (by_rooms) b["room"] = blob.room;
     b["cell_count"] = blob.cells.size();
     b["against_wall"] = blob.against_wall;
     // Cells are in raster order, so the first is the CLI's first_cell.
@@ -139,7 +167,9 @@ py::dict Segment(const Map& map, const py::object& pose) {
   }
   py::dict out;
   out["resolution"] = grid.meta.resolution;
+  out["method"] = by_rooms ? "rooms" : "paper";
   out["rooms"] = rooms;
+  if (by_rooms) out["doors"] = doors;
   out["blobs"] = blobs;
   return out;
 }
@@ -327,12 +357,18 @@ in metres floods only the robot's free space.
 )doc");
   module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("pose") = py::none(),
              R"doc(
-Room-border chains and furniture blobs, as ``linemap segment`` writes them:
-{resolution, rooms: [{chain: (K, 2) closed chain of cell centres, chain_cells}],
-blobs: [{cell_count, against_wall (a cabinet or shelf standing against a
-wall, else free-standing), first_cell, bbox (x0, y0, x1, y1 cell edges),
-outline: (K, 2), cells: (M, 2)}]}, map-frame metres. ``pose`` (x, y) picks
-the robot's room; without it every free component of 400+ cells is a room.
+Rooms, doorways and furniture blobs, as ``linemap segment -o OUT.json``
+writes them (without its timings), in map-frame metres. Without ``pose`` the
+free space is split into rooms and corridors at doorways:
+{resolution, method: "rooms", rooms: [{id, kind ("room" or "corridor"),
+area_m2, cells, free_cells, width_m, chain: (K, 2) closed chain of cell
+centres, chain_cells}], doors: [{rooms: (id, id), width_m, at: (x, y)}],
+blobs: [{room, cell_count, against_wall (a cabinet or shelf standing against
+a wall, else free-standing), first_cell, bbox (x0, y0, x1, y1 cell edges),
+outline: (K, 2), cells: (M, 2)}]}. With ``pose`` (x, y), the paper's border
+of the robot's free component (``linemap segment --pose``): method "paper",
+rooms [{free_cells, enclosed_free_cells, closed_by_lee, chain, chain_cells}],
+no doors, blobs without room.
 )doc");
   module.def("plan", &Plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::kw_only(),
              py::arg("robot_width") = 0.4, py::arg("robot_length") = 0.4, py::arg("margin") = 0.05,

@@ -282,7 +282,7 @@ stores the vector layers (walls, rooms, furniture) besides the cells.
 files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``: about
-4.5 % smaller files that decode in about 3.5x the time; version 2.3).
+4.5 % smaller files that decode in about 3x the time; version 2.3).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 34 bytes a cell (the default, 2^26 cells, about 2.3 GB); exact saves

@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "  --free P         occupancy in percent at or below which a cell is free (default 25)\n"
     "  --tolerance T    cells by which the stored map may differ (default 0: exact)\n"
     "  --raster-only    store the cells only, no vector layers\n"
-    "  --compact        code the cells for size: about 4.5 % smaller, 3.5x the decode time\n"
+    "  --compact        code the cells for size: about 4.5 % smaller, 3x the decode time\n"
     "                   (with --raster-only: the smallest exact file)\n"
     "  --wait-master S  seconds to wait for the ROS master (default 10)\n";
 

@@ -130,6 +130,7 @@ std::string PlainJson(const Grid& grid, const Segmentation& seg) {
       .Add("total", t.total_ms);
   JsonObject top;
   top.Add("resolution", grid.meta.resolution)
+      .Add("method", "paper")
       .AddRaw("timings_ms", timings.str())
       .AddRaw("rooms", rooms + "]")
       .AddRaw("blobs", blobs);
