@@ -21,7 +21,7 @@ bool ToleranceReport::Holds() const {
          hausdorff_original_to_decoded <= tolerance_cells && hausdorff_decoded_to_original >= 0 &&
          hausdorff_decoded_to_original <= tolerance_cells && free_moved_beyond == 0 &&
          free_lost_beyond == 0 && unknown_turned_free_beyond == 0 && leaks == 0 && splits == 0 &&
-         plan_disagreements == 0;
+         plan_disagreements == 0 && local_plan_disagreements == 0;
 }
 
 StatusOr<Grid> SimplifyWithinTolerance(const Grid& grid, int tolerance_cells) {
@@ -82,6 +82,9 @@ ToleranceReport CheckTolerance(const Grid& original, const Grid& decoded, int to
   const auto plans = tolerance_internal::ComparePlans(original, decoded, false);
   out.plan_pairs = plans.pairs;
   out.plan_disagreements = plans.disagreements;
+  const auto local = tolerance_internal::CountLocalPlans(original, decoded, kLocalPlanSteps);
+  out.local_plans = local.plans;
+  out.local_plan_disagreements = local.disagreements;
   return out;
 }
 

@@ -15,7 +15,11 @@
 //      both maps, a
 //      4-connected path over free cells exists on S exactly when it exists
 //      on O, and its length is within kPlanLengthTolerance of O's or
-//      kPlanSlackSteps steps of it, whichever is more.
+//      kPlanSlackSteps steps of it, whichever is more; and from every cell
+//      free in both maps beside a cell free in one only, every plan of up
+//      to kLocalPlanSteps steps on either map is on the other within
+//      kPlanSlackSteps more (a doorway closed or a wall opened where no
+//      sampled start plans through).
 #ifndef LINEMAP_CODEC_CODEC_TOLERANCE_H_
 #define LINEMAP_CODEC_CODEC_TOLERANCE_H_
 
@@ -35,6 +39,9 @@ inline constexpr double kPlanLengthTolerance = 0.03;
 // passes (an unknown speck filled, the tip of a spur of unknown cut) moves
 // its length by two steps, which is more than 3 % of a plan under 67 steps.
 inline constexpr int kPlanSlackSteps = 2;
+// The local plans of guarantee 4 reach this many steps: a doorway between
+// two rooms, a corridor's end.
+inline constexpr int kLocalPlanSteps = 8;
 
 // The grid a file saved within `tolerance_cells` (0..kMaxToleranceCells;
 // else invalid argument) decodes to when its cells are in blocks: the map
@@ -76,6 +83,11 @@ struct ToleranceReport {
   // kPlanLengthTolerance and kPlanSlackSteps).
   std::size_t plan_pairs = 0;
   std::size_t plan_disagreements = 0;
+  // The local plans of guarantee 4 (from each cell free in both maps beside
+  // a change, on each map, up to kLocalPlanSteps steps), and those not on
+  // the other map within kPlanSlackSteps more.
+  std::size_t local_plans = 0;
+  std::size_t local_plan_disagreements = 0;
 
   double WallSurfaceShare() const {
     return wall_surface_cells ? static_cast<double>(wall_surface_kept) / wall_surface_cells : 1.0;

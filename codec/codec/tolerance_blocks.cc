@@ -35,10 +35,6 @@ constexpr int kMaxRounds = 96;
 // start / goal pairs on 2 of 12 random plans and on kth.
 constexpr int kBlockSide = 2;
 
-// Plans between cells this many steps apart or less, on either side of a
-// change, are checked for every such pair (LocalDetourCulprits).
-constexpr int kDetourRadius = 8;
-
 // Whether the free cells of the block at (x0, y0) (side f) and of the ring
 // of cells around it are one 4-connected piece inside that window. If so,
 // filling the block's unknown cells opens no new way through it (a plan
@@ -244,7 +240,7 @@ bool MendRound(Mender* m, int t, Grid* checked) {
   // something (tsc at T = 1: 5.1 s against 4.3 in the same build).
   std::vector<std::size_t> culprits = tolerance_internal::PlanCulprits(m->original, m->decoded);
   const std::vector<std::size_t> local = tolerance_internal::LocalDetourCulprits(
-      m->original, m->decoded, kDetourRadius, checked->empty() ? nullptr : checked);
+      m->original, m->decoded, kLocalPlanSteps, checked->empty() ? nullptr : checked);
   *checked = m->decoded;
   culprits.insert(culprits.end(), local.begin(), local.end());
   if (culprits.empty()) return true;

@@ -1,6 +1,6 @@
-// LocalDetourCulprits(): plans between nearby cells on either side of a
-// change, for the plan guarantee between starts the sampled check never
-// tries.
+// LocalDetourCulprits(), CountLocalPlans(): plans between nearby cells on
+// either side of a change, for the plan guarantee between starts the
+// sampled check never tries.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -132,25 +132,27 @@ std::vector<std::size_t> ChangeSides(const Grid& original, const Grid& decoded) 
   return out;
 }
 
-// The plans of `plans` up to `radius` steps to cells free in `other` that
-// `other_plans` (the same source on `other`) makes more than the slack
-// longer or cannot make: the changed cells on them go to *out.
-void AppendDetours(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
-                   std::vector<std::size_t>* out) {
+// Calls visit(plans, goal, holds) for each plan of `plans` up to `radius`
+// steps to a cell free in `other`; it holds when `other_plans` (the same
+// source on `other`) makes it within the slack.
+template <typename Visit>
+void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
+                Visit&& visit) {
   for (const std::size_t goal : plans->reached()) {
     const std::int32_t here = plans->steps(goal);
     if (here > radius) break;
     if (other.cells()[goal] != Cell::kFree) continue;
     const std::int32_t there = other_plans.steps(goal);
-    if (there < 0 || there > here + kPlanSlackSteps) plans->AppendChanged(goal, out);
+    visit(plans, goal, there >= 0 && there <= here + kPlanSlackSteps);
   }
 }
 
-}  // namespace
-
-std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
-                                             const Grid* checked) {
-  std::vector<std::size_t> out;
+// Calls visit(plans, goal, holds) for every plan of up to `radius` steps
+// on either map from a cell free in both beside a change (see
+// LocalDetourCulprits; with `checked`, only from cells near a change since).
+template <typename Visit>
+void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, const Grid* checked,
+                     Visit&& visit) {
   // A search from a cell reaches radius + slack steps, so no farther in
   // Chebyshev distance: where nothing changed that near since `checked`,
   // every plan it makes is as it was then.
@@ -171,10 +173,31 @@ std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& d
     on_original.Run(source);
     on_decoded.Run(source);
     // Longer on the decode (a detour), then shorter (a shortcut).
-    AppendDetours(radius, decoded, on_decoded, &on_original, &out);
-    AppendDetours(radius, original, on_original, &on_decoded, &out);
+    VisitPlans(radius, decoded, on_decoded, &on_original, visit);
+    VisitPlans(radius, original, on_original, &on_decoded, visit);
   }
+}
+
+}  // namespace
+
+std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
+                                             const Grid* checked) {
+  std::vector<std::size_t> out;
+  VisitLocalPlans(original, decoded, radius, checked,
+                  [&out](LocalPlans* plans, std::size_t goal, bool holds) {
+                    if (!holds) plans->AppendChanged(goal, &out);
+                  });
   return out;
+}
+
+LocalPlanCount CountLocalPlans(const Grid& original, const Grid& decoded, int radius) {
+  LocalPlanCount count;
+  VisitLocalPlans(original, decoded, radius, nullptr,
+                  [&count](LocalPlans*, std::size_t, bool holds) {
+                    ++count.plans;
+                    count.disagreements += holds ? 0 : 1;
+                  });
+  return count;
 }
 
 }  // namespace linemap::tolerance_internal

@@ -74,6 +74,15 @@ std::vector<std::size_t> FreeCover(const Grid& original, const Grid& decoded,
 std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
                                              const Grid* checked = nullptr);
 
+// The plans LocalDetourCulprits checks (from each cell beside a change, on
+// each map, to every cell free on the other within `radius` steps), and
+// those not within kPlanSlackSteps on the other map.
+struct LocalPlanCount {
+  std::size_t plans = 0;
+  std::size_t disagreements = 0;
+};
+LocalPlanCount CountLocalPlans(const Grid& original, const Grid& decoded, int radius);
+
 // Plans compared from sampled start cells to every goal cell free in both
 // grids (deterministic: the same grids give the same pairs). `paths` (when
 // asked for): the cells of both plans of the worst disagreeing pair of each

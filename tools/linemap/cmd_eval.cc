@@ -41,7 +41,9 @@ const CommandSpec kEvalSpec = {
     "from the original free space, free regions joined (leaks) or split, and\n"
     "plans (4-connected, over free cells, from 16 sampled starts to every cell\n"
     "free in both) that exist on one map only or differ in length by more than\n"
-    "3 % and 2 steps; and whether all hold (exit status 0 either way).",
+    "3 % and 2 steps, and plans of up to 8 steps from every cell beside a change\n"
+    "that are not on the other map within 2 steps more; and whether all hold\n"
+    "(exit status 0 either way).",
     WithMapLoadOptions(
         {{"--json", "", "print one JSON object"},
          {"--tolerance", "T", "also check the guarantees of a save within T cells (0..4)"}}),
@@ -69,6 +71,8 @@ void PrintToleranceReport(const ToleranceReport& t) {
   std::printf("  unknown->free > T:  %zu\n", t.unknown_turned_free_beyond);
   std::printf("  leaks / splits:     %zu / %zu\n", t.leaks, t.splits);
   std::printf("  plans disagreeing:  %zu of %zu pairs\n", t.plan_disagreements, t.plan_pairs);
+  std::printf("  local plans:        %zu of %zu disagree (up to %d steps, beside a change)\n",
+              t.local_plan_disagreements, t.local_plans, kLocalPlanSteps);
   std::printf("  guarantees:         %s\n", t.Holds() ? "hold" : "BROKEN");
 }
 
@@ -162,6 +166,8 @@ int RunEval(const std::vector<std::string>& args) {
           .Add("tolerance_splits", std::uint64_t{tol->splits})
           .Add("plan_pairs", std::uint64_t{tol->plan_pairs})
           .Add("plan_disagreements", std::uint64_t{tol->plan_disagreements})
+          .Add("local_plans", std::uint64_t{tol->local_plans})
+          .Add("local_plan_disagreements", std::uint64_t{tol->local_plan_disagreements})
           .Add("tolerance_holds", tol->Holds());
     }
     std::printf("%s\n", json.str().c_str());

@@ -184,10 +184,15 @@ std::map<int, int> NearSteps(const Grid& g, int from, int depth) {
 
 // The encoder's local plan check, by its definition: from every cell free
 // in both maps beside a cell free in one only, each plan of up to 8 steps
-// on one map is on the other within 2 more.
-void ExpectLocalPlansAgree(const Grid& o, const Grid& s) {
+// on one map to a cell free on the other is there within 2 more. The plans
+// counted and those that are not.
+struct LocalPlanFigures {
+  std::size_t plans = 0;
+  std::size_t bad = 0;
+};
+LocalPlanFigures BruteLocalPlans(const Grid& o, const Grid& s) {
   auto free_in = [](const Grid& g, int i) { return g.cells()[i] == Cell::kFree; };
-  int bad = 0;
+  LocalPlanFigures out;
   for (int r = 0; r < o.height(); ++r) {
     for (int c = 0; c < o.width(); ++c) {
       const int i = static_cast<int>(o.Index(c, r));
@@ -204,16 +209,23 @@ void ExpectLocalPlansAgree(const Grid& o, const Grid& s) {
       for (const auto& [goal, steps] : a) {
         if (steps > 8 || !free_in(s, goal)) continue;
         const auto it = b.find(goal);
-        bad += it == b.end() || it->second > steps + 2;
+        ++out.plans;
+        out.bad += it == b.end() || it->second > steps + 2;
       }
       for (const auto& [goal, steps] : b) {
         if (steps > 8 || !free_in(o, goal)) continue;
         const auto it = a.find(goal);
-        bad += it == a.end() || it->second > steps + 2;
+        ++out.plans;
+        out.bad += it == a.end() || it->second > steps + 2;
       }
     }
   }
-  EXPECT_EQ(bad, 0) << "plans of up to 8 steps beside a change more than 2 steps apart";
+  return out;
+}
+
+void ExpectLocalPlansAgree(const Grid& o, const Grid& s) {
+  EXPECT_EQ(BruteLocalPlans(o, s).bad, 0u)
+      << "plans of up to 8 steps beside a change more than 2 steps apart";
 }
 
 // Every guarantee of tolerance t, by the references above.
@@ -403,6 +415,7 @@ TEST(ToleranceTest, KeepsOneCellDoorwayOpenAndWallGapClosed) {
 // random (so that the guarantees fail in many ways).
 TEST(ToleranceTest, CheckToleranceFiguresMatchReferences) {
   std::mt19937 rng(42);
+  std::size_t local_bad = 0;
   for (std::uint32_t seed = 1; seed <= 8; ++seed) {
     const Grid o = RandomFloorPlan(seed, 44, 38);
     Grid d = o;
@@ -443,8 +456,14 @@ TEST(ToleranceTest, CheckToleranceFiguresMatchReferences) {
       const TopologyCount topo = BruteTopology(o, d);
       EXPECT_EQ(rep.leaks, static_cast<std::size_t>(topo.leaks));
       EXPECT_EQ(rep.splits, static_cast<std::size_t>(topo.splits));
+      const LocalPlanFigures local = BruteLocalPlans(o, d);
+      local_bad += local.bad;
+      EXPECT_EQ(rep.local_plans, local.plans);
+      EXPECT_EQ(rep.local_plan_disagreements, local.bad);
     }
   }
+  // Some of the random changes close or open a passage near them.
+  EXPECT_GT(local_bad, 0u);
 }
 
 TEST(ToleranceTest, CheckToleranceSeesAPlanThatNoLongerExists) {
@@ -454,6 +473,7 @@ TEST(ToleranceTest, CheckToleranceSeesAPlanThatNoLongerExists) {
   const ToleranceReport rep = CheckTolerance(o, d, 2);
   EXPECT_EQ(rep.splits, 1u);
   EXPECT_GT(rep.plan_pairs, 0u);
+  EXPECT_GT(rep.local_plan_disagreements, 0u);
   EXPECT_FALSE(rep.Holds());
   EXPECT_TRUE(CheckTolerance(o, o, 2).Holds());
 }
