@@ -363,14 +363,22 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     ScalingRow row;
     row.mcells = mcells;
     row.repeats = map.runs;
+    const auto fastest = [](const std::vector<double>& v) {
+      return *std::min_element(v.begin(), v.end());
+    };
     row.png_encode_ms_per_mcell = Median(map.png_encode_ms) / mcells;
-    if (!map.png_decode_ms.empty())
+    row.png_encode_fastest_ms_per_mcell = fastest(map.png_encode_ms) / mcells;
+    if (!map.png_decode_ms.empty()) {
       row.png_decode_ms_per_mcell = Median(map.png_decode_ms) / mcells;
+      row.png_decode_fastest_ms_per_mcell = fastest(map.png_decode_ms) / mcells;
+    }
     row.rmline_ms_per_mcell = map.rmline_ms / mcells;
     row.linemap_lines_ms_per_mcell = map.linemap_lines_ms / mcells;
     if (!map.lmap_encode_ms.empty()) {
       row.lmap_encode_ms_per_mcell = Median(map.lmap_encode_ms) / mcells;
       row.lmap_decode_ms_per_mcell = Median(map.lmap_decode_ms) / mcells;
+      row.lmap_encode_fastest_ms_per_mcell = fastest(map.lmap_encode_ms) / mcells;
+      row.lmap_decode_fastest_ms_per_mcell = fastest(map.lmap_decode_ms) / mcells;
       if (!map.window_failed) row.lmap_window_ms = Median(map.lmap_window_ms);
       if (row.lmap_window_ms && *row.lmap_window_ms > 0) {
         row.lmap_window_speedup = Median(map.lmap_decode_ms) / *row.lmap_window_ms;

@@ -36,6 +36,13 @@ struct ScalingRow {
   double linemap_lines_ms_per_mcell = 0;  // ExtractLines() with the defaults
   std::optional<double> lmap_encode_ms_per_mcell;
   std::optional<double> lmap_decode_ms_per_mcell;
+  // The same from the fastest run of each: a shared machine only ever adds
+  // time, so the fastest runs say what the code costs when a noisy phase
+  // moved the medians of one size.
+  double png_encode_fastest_ms_per_mcell = 0;
+  double png_decode_fastest_ms_per_mcell = 0;
+  std::optional<double> lmap_encode_fastest_ms_per_mcell;
+  std::optional<double> lmap_decode_fastest_ms_per_mcell;
   // A window of 1 % of the map (a tenth of each side, from 30 % of each
   // side, away from the centre where the layers' sections of the 64-Mcell
   // map meet), decoded with DecodeLmapRegion, against decoding the whole
