@@ -16,6 +16,7 @@
 #include "linemap/lines.h"
 #include "linemap/plan.h"
 #include "linemap/segmentation.h"
+#include "linemap/tolerance.h"
 #include "linemap/vector_layers.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
@@ -285,8 +286,43 @@ std::optional<LmapVectors> StoredLayers(const py::object& decoded, std::uint64_t
   return ValueOrRaise(std::move(vectors));
 }
 
+// eval()'s tolerance: None, or a whole number of cells 0..kMaxToleranceCells.
+std::optional<int> ToleranceArgument(const py::object& tolerance) {
+  if (tolerance.is_none()) return std::nullopt;
+  const std::string range = "0.." + std::to_string(kMaxToleranceCells);
+  if (!py::isinstance<py::int_>(tolerance) || py::isinstance<py::bool_>(tolerance)) {
+    throw py::type_error("tolerance must be a whole number of cells, " + range + ", or None");
+  }
+  if (tolerance < py::int_(0) || tolerance > py::int_(kMaxToleranceCells)) {
+    throw py::value_error("tolerance must be " + range + " cells");
+  }
+  return tolerance.cast<int>();
+}
+
+// The guarantees' figures, with the keys of `linemap eval --tolerance T --json`.
+void AddToleranceReport(const ToleranceReport& t, py::dict* out) {
+  py::dict& o = *out;
+  o["tolerance_cells"] = t.tolerance_cells;
+  o["hausdorff_original_to_decoded"] = t.hausdorff_original_to_decoded;
+  o["hausdorff_decoded_to_original"] = t.hausdorff_decoded_to_original;
+  o["wall_surface_cells"] = t.wall_surface_cells;
+  o["wall_surface_within_t"] = t.wall_surface_kept;
+  o["wall_surface_share_within_t"] = t.WallSurfaceShare();
+  o["free_moved_beyond_t"] = t.free_moved_beyond;
+  o["free_lost_beyond_t"] = t.free_lost_beyond;
+  o["unknown_turned_free_beyond_t"] = t.unknown_turned_free_beyond;
+  o["tolerance_leaks"] = t.leaks;
+  o["tolerance_splits"] = t.splits;
+  o["plan_pairs"] = t.plan_pairs;
+  o["plan_disagreements"] = t.plan_disagreements;
+  o["local_plans"] = t.local_plans;
+  o["local_plan_disagreements"] = t.local_plan_disagreements;
+  o["tolerance_holds"] = t.Holds();
+}
+
 py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
-              const py::object& max_cells_arg) {
+              const py::object& max_cells_arg, const py::object& tolerance_arg) {
+  const std::optional<int> tolerance = ToleranceArgument(tolerance_arg);
   const std::uint64_t max_cells = MaxCellsArgument(max_cells_arg, DecodeLimits{}.max_cells);
   const Grid original = GridArgument(original_arg, max_cells);
   const Grid decoded = GridArgument(decoded_arg, max_cells);
@@ -300,10 +336,12 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, max_cells);
   GridComparison m;
   StatusOr<LayerFidelity> fidelity = InternalError("not measured");
+  std::optional<ToleranceReport> guarantees;
   {
     py::gil_scoped_release release;
     m = CompareGrids(original, decoded);
     if (layers) fidelity = MeasureLayerFidelity(original, *layers);
+    if (tolerance) guarantees = CheckTolerance(original, decoded, *tolerance);
   }
   py::dict out;
   out["same_geometry"] = m.same_geometry;
@@ -338,6 +376,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     out["edge_share_in_furniture"] = share(f.in_furniture);
     out["edge_share_within_1_or_furniture"] = share(f.covered);
   }
+  if (guarantees) AddToleranceReport(*guarantees, &out);
   return out;
 }
 
@@ -382,11 +421,16 @@ Robot size, margin and the shortest / longest move are in metres;
 options the planner refuses raise ValueError.
 )doc");
   module.def("eval", &Eval, py::arg("original"), py::arg("decoded"), py::kw_only(),
-             py::arg("max_cells") = py::none(), R"doc(
+             py::arg("max_cells") = py::none(), py::arg("tolerance") = py::none(), R"doc(
 The quality figures of ``decoded`` against ``original``, as
 ``linemap eval --json``. Each is a Map or a path (loaded as load() does);
-when ``decoded`` is the path of an .lmap file with wall segments, also
-displ_ave_cells, displ_ave_m and edge_share_within_1. Maps of different
+when ``decoded`` is the path of an .lmap file with vector layers, also
+edge_cells, displ_ave_cells, displ_ave_cm, displ_max_cells and the
+edge_share_* figures. With ``tolerance`` (cells, 0..4) also the guarantees
+of a save within that tolerance, as ``linemap eval --tolerance T --json``:
+the Hausdorff distances both ways, the wall surface kept, free cells moved
+or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
+and local plans that disagree, and tolerance_holds. Maps of different
 sizes raise ValueError.
 )doc");
 }

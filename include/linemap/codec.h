@@ -32,7 +32,7 @@ struct EncodeOptions {
   // Largest distance, in cells (Chebyshev), by which the decoded map may
   // differ from the input; 0 (the default) is an exact file, 1..4 a file of
   // the map simplified within that distance with every guarantee of
-  // codec/codec/tolerance.h checked on what it decodes to (obstacles and
+  // linemap/tolerance.h checked on what it decodes to (obstacles and
   // free space within T both ways, no leaks, plans agree); other values are
   // refused (invalid argument). Within a tolerance the walls are straight,
   // fitted within T cells, and leave the scan specks and lone pieces

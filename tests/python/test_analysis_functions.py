@@ -160,6 +160,39 @@ def test_eval_equals_the_cli(name, tmp_path, cli):
     assert linemap.eval(original, decoded) == cells_only
 
 
+@pytest.mark.parametrize("t", [1, 3])
+def test_eval_with_a_tolerance_equals_the_cli(t, tmp_path, cli):
+    path = BUNDLED["depot"]
+    lmap = tmp_path / "map.lmap"
+    linemap_cli.run(cli, "encode", path, "-o", lmap, "--tolerance", str(t), "--no-sync")
+    expected = linemap_cli.run_json(cli, "eval", path, lmap, "--tolerance", str(t), "--json")
+    got = linemap.eval(path, lmap, tolerance=t)
+    assert got == expected
+    assert got["tolerance_holds"] is True and got["local_plans"] > 0
+    # A block of obstacles far from every wall breaks the guarantees: both
+    # say so, with the same figures.
+    broken = linemap.load(lmap)
+    free = np.argwhere(broken.cells == linemap.FREE)
+    row, col = free[len(free) // 2]
+    broken.cells[row - 2:row + 3, col - 2:col + 3] = linemap.OCCUPIED
+    linemap.save(tmp_path / "broken.yaml", broken)
+    expected = linemap_cli.run_json(cli, "eval", path, tmp_path / "broken.yaml", "--tolerance",
+                                    str(t), "--json")
+    got = linemap.eval(path, broken, tolerance=t)
+    assert got == expected
+    assert got["tolerance_holds"] is False
+
+
+def test_eval_tolerance_must_be_a_whole_number_of_cells_up_to_4():
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match="0..4"):
+        linemap.eval(m, m, tolerance=5)
+    with pytest.raises(TypeError, match="tolerance"):
+        linemap.eval(m, m, tolerance=1.5)
+    assert linemap.eval(m, m, tolerance=0)["tolerance_holds"] is True
+    assert "tolerance_holds" not in linemap.eval(m, m)
+
+
 def test_eval_refuses_maps_of_different_sizes():
     with pytest.raises(ValueError, match="same size"):
         linemap.eval(BUNDLED["depot"], BUNDLED["kth"])

@@ -54,9 +54,13 @@ TEST(BenchCliTest, ScalingTableHasARowPerSizeAndTheSpread) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::size_t table = r.out.find("== Scaling ==");
   ASSERT_NE(table, std::string::npos) << r.out;
-  // The 1-Mcell row has its 9 interleaved runs, then the spread row.
-  EXPECT_NE(r.out.find("\n1            9 ", table), std::string::npos) << r.out.substr(table);
-  EXPECT_NE(r.out.find("\nspread %", table), std::string::npos);
+  // The 1-Mcell row has its 9 interleaved runs, then the two spread rows.
+  const std::size_t row = r.out.find("\n1 ", table);
+  ASSERT_NE(row, std::string::npos) << r.out.substr(table);
+  const std::size_t runs = r.out.find_first_not_of(' ', row + 2);
+  EXPECT_EQ(r.out.compare(runs, 2, "9 "), 0) << r.out.substr(row, 80);
+  EXPECT_NE(r.out.find("\nspread % ", table), std::string::npos);
+  EXPECT_NE(r.out.find("\nspread % of the fastest runs ", table), std::string::npos);
 }
 
 // Finds `tool` in the test's own PATH, or "".

@@ -1,0 +1,95 @@
+// Whether a map decoded from a file saved within a tolerance keeps the
+// guarantees of that tolerance (EncodeOptions::tolerance_cells), measured
+// against the original map: what `linemap eval --tolerance T` prints. The
+// encoder checks them on its own decode before it writes a file; a caller
+// that receives a map can check them again here.
+//
+// The guarantees, for a tolerance of T cells, between an original grid O
+// and a simplified (decoded) grid S of the same size:
+//   1. every occupied cell of O has an occupied cell of S within T, and
+//      every occupied cell of S has one of O within T (Hausdorff <= T);
+//   2. every free cell of S is within T of a free cell of O and every free
+//      cell of O within T of a free cell of S (so unknown never turns free
+//      further than T from the original free space);
+//   3. no leak: free regions of O (4-connected, kLeakRegionCells+ cells,
+//      linemap/codec.h)
+//      that are apart stay apart in S; and no free region of O is split;
+//   4. plans agree: from 16 sampled start cells to every goal cell free
+//      in both maps, a 4-connected path over free cells exists on S exactly
+//      when it exists on O, and its length is within kPlanLengthTolerance of O's or
+//      kPlanSlackSteps steps of it, whichever is more; and from every cell
+//      free in both maps beside a cell free in one only, every plan of up
+//      to kLocalPlanSteps steps on either map is on the other within
+//      kPlanSlackSteps more (a doorway closed or a wall opened where no
+//      sampled start plans through).
+#ifndef LINEMAP_TOLERANCE_H_
+#define LINEMAP_TOLERANCE_H_
+
+#include <cstddef>
+
+#include "linemap/grid.h"
+
+namespace linemap {
+
+// Largest tolerance the encoder accepts, in cells.
+inline constexpr int kMaxToleranceCells = 4;
+// Plans agree when the decoded path length is within this share of the
+// original's (0.03 = 3 %).
+inline constexpr double kPlanLengthTolerance = 0.03;
+// ... or within this many steps: any change to free space that a plan
+// passes (an unknown speck filled, the tip of a spur of unknown cut) moves
+// its length by two steps, which is more than 3 % of a plan under 67 steps.
+inline constexpr int kPlanSlackSteps = 2;
+// The local plans of guarantee 4 reach this many steps: a doorway between
+// two rooms, a corridor's end.
+inline constexpr int kLocalPlanSteps = 8;
+
+// The guarantees' figures of `decoded` against `original` (same size; a
+// report of mismatched sizes has same_size false and nothing else set).
+struct ToleranceReport {
+  bool same_size = false;
+  int tolerance_cells = 0;
+  // Hausdorff distance (Chebyshev, cells) from the original's occupied cells
+  // to the decoded ones, and back; -1 when the other map has no occupied
+  // cell but this one has (infinitely far); 0 when this one has none.
+  int hausdorff_original_to_decoded = 0;
+  int hausdorff_decoded_to_original = 0;
+  // Occupied cells of the original with a free 4-neighbour, and how many of
+  // them have a decoded occupied cell within T.
+  std::size_t wall_surface_cells = 0;
+  std::size_t wall_surface_kept = 0;
+  // Decoded free cells further than T from every original free cell, and
+  // original free cells further than T from every decoded free cell.
+  std::size_t free_moved_beyond = 0;
+  std::size_t free_lost_beyond = 0;
+  // Original unknown cells decoded free further than T from original free.
+  std::size_t unknown_turned_free_beyond = 0;
+  // Free regions (kLeakRegionCells+ cells) of the original that the decode
+  // joins (sum over decoded components of regions touched - 1), and
+  // original free regions whose decoded cells fall in several components.
+  std::size_t leaks = 0;
+  std::size_t splits = 0;
+  // Start / goal pairs (sampled starts, every goal) free in both maps, and
+  // those whose plans
+  // disagree (one exists and not the other, or lengths differ by more than
+  // kPlanLengthTolerance and kPlanSlackSteps).
+  std::size_t plan_pairs = 0;
+  std::size_t plan_disagreements = 0;
+  // The local plans of guarantee 4 (from each cell free in both maps beside
+  // a change, on each map, up to kLocalPlanSteps steps), and those not on
+  // the other map within kPlanSlackSteps more.
+  std::size_t local_plans = 0;
+  std::size_t local_plan_disagreements = 0;
+
+  double WallSurfaceShare() const {
+    return wall_surface_cells ? static_cast<double>(wall_surface_kept) / wall_surface_cells : 1.0;
+  }
+  // True when every guarantee holds.
+  bool Holds() const;
+};
+
+ToleranceReport CheckTolerance(const Grid& original, const Grid& decoded, int tolerance_cells);
+
+}  // namespace linemap
+
+#endif  // LINEMAP_TOLERANCE_H_
