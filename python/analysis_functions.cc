@@ -129,13 +129,38 @@ py::dict RoomDict(const Grid& grid, const RoomBorder& room, bool by_rooms) {
   return r;
 }
 
-py::dict Segment(const Map& map, const py::object& pose) {
-  const Grid grid = GridFromMap(map);
+// segment()'s options as `linemap segment` reads its flags: the paper's
+// method when asked for or implied by a pose or paper_border, else rooms
+// split at doorways (whose widths and area limit the library checks).
+SegmentationOptions SegmentOptionsFor(const Grid& grid, const py::object& method_arg,
+                                      const py::object& pose, const py::object& doors,
+                                      double max_room_area, bool paper_border) {
   SegmentationOptions options;
   options.robot = PoseArgument(grid, pose);
-  // As `linemap segment`: rooms split at doorways, or with a pose the
-  // paper's border of the robot's free component.
-  if (options.robot) options.method = SegmentationMethod::kPaperBorder;
+  const bool implied = options.robot.has_value() || paper_border;
+  std::string method = implied ? "paper" : "rooms";
+  if (!method_arg.is_none()) method = method_arg.cast<std::string>();
+  if (method != "rooms" && method != "paper") {
+    throw py::value_error("method must be \"rooms\" or \"paper\", not \"" + method + "\"");
+  }
+  if (method == "rooms" && implied) {
+    throw py::value_error("pose and paper_border need method=\"paper\"");
+  }
+  options.method =
+      method == "paper" ? SegmentationMethod::kPaperBorder : SegmentationMethod::kRooms;
+  const std::vector<double> widths = FiniteFloats(doors, "doors (min, max) in metres", 2, 2);
+  options.min_door_width_m = widths[0];
+  options.max_door_width_m = widths[1];
+  options.max_room_area_m2 = max_room_area;
+  options.protect_room_interior = !paper_border;
+  return options;
+}
+
+py::dict Segment(const Map& map, const py::object& method, const py::object& pose,
+                 const py::object& door_widths, double max_room_area, bool paper_border) {
+  const Grid grid = GridFromMap(map);
+  const SegmentationOptions options =
+      SegmentOptionsFor(grid, method, pose, door_widths, max_room_area, paper_border);
   StatusOr<Segmentation> segmentation = InternalError("not segmented");
   {
     py::gil_scoped_release release;
@@ -394,8 +419,9 @@ float64 array x1, y1, x2, y2 in map-frame metres. ``method`` is "linemap"
 tolerance; ``straight_walls`` one segment per straight wall; ``pose`` (x, y)
 in metres floods only the robot's free space.
 )doc");
-  module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("pose") = py::none(),
-             R"doc(
+  module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("method") = py::none(),
+             py::arg("pose") = py::none(), py::arg("doors") = py::make_tuple(0.5, 1.2),
+             py::arg("max_room_area") = 0.0, py::arg("paper_border") = false, R"doc(
 Rooms, doorways and furniture blobs, as ``linemap segment -o OUT.json``
 writes them (without its timings), in map-frame metres. Without ``pose`` the
 free space is split into rooms and corridors at doorways:
@@ -407,7 +433,13 @@ a wall, else free-standing), first_cell, bbox (x0, y0, x1, y1 cell edges),
 outline: (K, 2), cells: (M, 2)}]}. With ``pose`` (x, y), the paper's border
 of the robot's free component (``linemap segment --pose``): method "paper",
 rooms [{free_cells, enclosed_free_cells, closed_by_lee, chain, chain_cells}],
-no doors, blobs without room.
+no doors, blobs without room. Options as ``linemap segment``'s flags:
+``method`` "rooms" or "paper" (default rooms, paper with ``pose`` or
+``paper_border``); ``doors`` (min, max) doorway widths in metres (default
+(0.5, 1.2)); ``max_room_area`` square metres above which spaces joined by a
+wide opening stay apart (0 = no limit); ``paper_border`` the paper's heavy
+border exactly (its shortest path may cut across narrow parts of a room).
+Values the library refuses raise ValueError.
 )doc");
   module.def("plan", &Plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::kw_only(),
              py::arg("robot_width") = 0.4, py::arg("robot_length") = 0.4, py::arg("margin") = 0.05,

@@ -92,6 +92,37 @@ def test_segment_with_a_pose_equals_the_cli(tmp_path, cli):
     assert_same_items(got["blobs"], expected["blobs"], python_only={"cells"})
 
 
+@pytest.mark.parametrize("flags,kwargs", [
+    (["--doors", "0.6,1.0", "--max-room-area", "30"], {"doors": (0.6, 1.0), "max_room_area": 30}),
+    (["--method", "paper"], {"method": "paper"}),
+    (["--paper-border"], {"paper_border": True}),
+])
+def test_segment_options_equal_the_cli_flags(flags, kwargs, tmp_path, cli):
+    out = tmp_path / "seg.json"
+    linemap_cli.run(cli, "segment", BUNDLED["kth"], "-o", out, *flags)
+    import json
+    expected = json.loads(out.read_text())
+    got = linemap.segment(linemap.load(BUNDLED["kth"]), **kwargs)
+    assert set(got) == set(expected) - {"timings_ms"}
+    assert got["method"] == expected["method"]
+    assert_same_items(got["rooms"], expected["rooms"])
+    assert_same_items(got["blobs"], expected["blobs"], python_only={"cells"})
+    if "doors" in expected:
+        assert_same_items(got["doors"], expected["doors"])
+
+
+def test_segment_refuses_options_the_cli_refuses():
+    m = linemap.load(BUNDLED["depot"])
+    with pytest.raises(ValueError, match="method"):
+        linemap.segment(m, method="watershed")
+    with pytest.raises(ValueError, match="paper"):
+        linemap.segment(m, method="rooms", pose=(1, 1))
+    with pytest.raises(ValueError, match="doors"):
+        linemap.segment(m, doors=(0.5,))
+    with pytest.raises(ValueError):
+        linemap.segment(m, doors=(1.2, 0.5))
+
+
 def compare_plans(got, expected):
     assert set(got) == set(expected)
     for key, value in without_timings(expected).items():
