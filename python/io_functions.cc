@@ -131,11 +131,10 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   Status saved;
   {
     py::gil_scoped_release release;
-    saved =
-        yaml ? SaveRosMap(path, grid)
-             : SaveLmap(path, grid,
-                        EncodeOptionsFor(tolerance, vectors, straight_walls, compact,
-                                         max_tolerance_cells));
+    saved = yaml ? SaveRosMap(path, grid)
+                 : SaveLmap(path, grid,
+                            EncodeOptionsFor(tolerance, vectors, straight_walls, compact,
+                                             max_tolerance_cells));
   }
   RaiseIfError(saved);
 }

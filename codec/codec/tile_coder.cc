@@ -269,9 +269,11 @@ template <bool kMix, typename Io, typename Mixer>
 // The hint class of `h` (kHintClass) by selects rather than a table
 // lookup, so that LayerBases' loop over a block vectorises.
 inline unsigned HintClassOf(unsigned h) {
-  return (h & kHintWall) ? 1u : (h & kHintRoomBorder) ? 2u : (h & kHintFurniture) ? 3u
-         : (h & kHintRoomInside)                      ? 4u
-                                                      : 0u;
+  return (h & kHintWall)         ? 1u
+         : (h & kHintRoomBorder) ? 2u
+         : (h & kHintFurniture)  ? 3u
+         : (h & kHintRoomInside) ? 4u
+                                 : 0u;
 }
 
 // The layer context of cells [begin, begin + len) without W: the LEQUAL
@@ -284,8 +286,7 @@ inline unsigned HintClassOf(unsigned h) {
 [[gnu::always_inline]] inline void LayerBases(const std::uint8_t* n1, const std::uint8_t* below,
                                               const std::uint8_t* here, const std::uint8_t* above,
                                               int width, const LayerTerms& terms, int begin,
-                                              int len, std::uint16_t* equal,
-                                              std::uint16_t* other) {
+                                              int len, std::uint16_t* equal, std::uint16_t* other) {
   // The row's hints with W's and E's beside them: zero outside the tile.
   std::uint8_t row[kBlockCells + 2];
   row[0] = begin > 0 ? here[begin - 1] : 0;
@@ -305,10 +306,10 @@ inline unsigned HintClassOf(unsigned h) {
     const std::uint8_t walls = (h | west | row[k + 2] | north | above[begin + k]) & kHintWall;
     // LayerClassesOf: the wall term where neither the cell nor a
     // neighbour is on a wall.
-    const std::uint8_t cls = static_cast<std::uint8_t>(
-        static_cast<std::uint8_t>(HintClassOf(h)) + (walls != 0 ? 0 : far));
-    const std::uint8_t changes = static_cast<std::uint8_t>((west != h ? west_change : 0) +
-                                                           (north != h ? north_change : 0));
+    const std::uint8_t cls = static_cast<std::uint8_t>(static_cast<std::uint8_t>(HintClassOf(h)) +
+                                                       (walls != 0 ? 0 : far));
+    const std::uint8_t changes =
+        static_cast<std::uint8_t>((west != h ? west_change : 0) + (north != h ? north_change : 0));
     const std::uint8_t pattern = static_cast<std::uint8_t>(n[k] * 9 + n[k - 1] * 3 + n[k + 1]);
     const std::uint16_t base = static_cast<std::uint16_t>(pattern * kLayerClasses + cls);
     other[k] = base;

@@ -236,8 +236,8 @@ void PrintOtherPlans(const std::vector<Row>& rows) {
     }
     const auto share = [&all](long n) { return all.pairs ? 100.0 * n / all.pairs : 0.0; };
     std::printf("  %d  %8ld  %8ld  %10ld (%.3f %%)  %13d  %9d steps  %7ld (%.3f %%)\n", t,
-                all.pairs, all.gone_or_new, all.longer, share(all.longer), maps,
-                all.worst_steps, all.beyond_percent, share(all.beyond_percent));
+                all.pairs, all.gone_or_new, all.longer, share(all.longer), maps, all.worst_steps,
+                all.beyond_percent, share(all.beyond_percent));
   }
 }
 

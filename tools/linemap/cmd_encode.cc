@@ -64,7 +64,8 @@ const CommandSpec kEncodeSpec = {
         {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
         {"--compact", "",
          "code the cells for size (a version 2.3 file): about 4.5 % smaller (8.5 % with "
-         "--raster-only), about 3x the decode time (up to 11x) and 1.3x the encode time (files saved "
+         "--raster-only), about 3x the decode time (up to 11x) and 1.3x the encode time (files "
+         "saved "
          "with --tolerance code their blocks that way already)"},
         {"--threads", "N",
          "threads to use (default 0: one per core); the bytes do not depend on it"},

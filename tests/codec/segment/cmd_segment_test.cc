@@ -60,7 +60,8 @@ TEST(CmdSegmentTest, WritesPaperJsonAndPrintsCounts) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_NE(result.out.find("rooms: 1"), std::string::npos) << result.out;
   const std::string json = testing::ReadFile(out);
-  EXPECT_EQ(json.rfind("{\"resolution\":0.05,\"method\":\"paper\",\"timings_ms\":{\"layout\":", 0), 0u)
+  EXPECT_EQ(json.rfind("{\"resolution\":0.05,\"method\":\"paper\",\"timings_ms\":{\"layout\":", 0),
+            0u)
       << json.substr(0, 80);
   // 4455 = the map's free cells (`linemap info`), all in one component.
   EXPECT_NE(json.find("\"rooms\":[{\"free_cells\":4455,"), std::string::npos);
