@@ -139,7 +139,12 @@ SegmentationOptions SegmentOptionsFor(const Grid& grid, const py::object& method
   options.robot = PoseArgument(grid, pose);
   const bool implied = options.robot.has_value() || paper_border;
   std::string method = implied ? "paper" : "rooms";
-  if (!method_arg.is_none()) method = method_arg.cast<std::string>();
+  if (!method_arg.is_none()) {
+    if (!py::isinstance<py::str>(method_arg)) {
+      throw py::type_error("method must be \"rooms\", \"paper\" or None");
+    }
+    method = method_arg.cast<std::string>();
+  }
   if (method != "rooms" && method != "paper") {
     throw py::value_error("method must be \"rooms\" or \"paper\", not \"" + method + "\"");
   }

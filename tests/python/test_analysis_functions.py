@@ -115,6 +115,8 @@ def test_segment_refuses_options_the_cli_refuses():
     m = linemap.load(BUNDLED["depot"])
     with pytest.raises(ValueError, match="method"):
         linemap.segment(m, method="watershed")
+    with pytest.raises(TypeError, match="method"):
+        linemap.segment(m, method=1)
     with pytest.raises(ValueError, match="paper"):
         linemap.segment(m, method="rooms", pose=(1, 1))
     with pytest.raises(ValueError, match="doors"):
