@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "linemap/codec.h"
-#include "linemap/lmap_vectors.h"
 #include "linemap/lines.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/plan.h"
 #include "linemap/segmentation.h"
 #include "linemap/tolerance.h"
@@ -329,27 +329,6 @@ std::optional<int> ToleranceArgument(const py::object& tolerance) {
   return tolerance.cast<int>();
 }
 
-// The guarantees' figures, with the keys of `linemap eval --tolerance T --json`.
-void AddToleranceReport(const ToleranceReport& t, py::dict* out) {
-  py::dict& o = *out;
-  o["tolerance_cells"] = t.tolerance_cells;
-  o["hausdorff_original_to_decoded"] = t.hausdorff_original_to_decoded;
-  o["hausdorff_decoded_to_original"] = t.hausdorff_decoded_to_original;
-  o["wall_surface_cells"] = t.wall_surface_cells;
-  o["wall_surface_within_t"] = t.wall_surface_kept;
-  o["wall_surface_share_within_t"] = t.WallSurfaceShare();
-  o["free_moved_beyond_t"] = t.free_moved_beyond;
-  o["free_lost_beyond_t"] = t.free_lost_beyond;
-  o["unknown_turned_free_beyond_t"] = t.unknown_turned_free_beyond;
-  o["tolerance_leaks"] = t.leaks;
-  o["tolerance_splits"] = t.splits;
-  o["plan_pairs"] = t.plan_pairs;
-  o["plan_disagreements"] = t.plan_disagreements;
-  o["local_plans"] = t.local_plans;
-  o["local_plan_disagreements"] = t.local_plan_disagreements;
-  o["tolerance_holds"] = t.Holds();
-}
-
 py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
               const py::object& max_cells_arg, const py::object& tolerance_arg) {
   const std::optional<int> tolerance = ToleranceArgument(tolerance_arg);
@@ -406,7 +385,9 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     out["edge_share_in_furniture"] = share(f.in_furniture);
     out["edge_share_within_1_or_furniture"] = share(f.covered);
   }
-  if (guarantees) AddToleranceReport(*guarantees, &out);
+  if (guarantees) {
+    VisitToleranceFigures(*guarantees, [&out](const char* key, auto value) { out[key] = value; });
+  }
   return out;
 }
 

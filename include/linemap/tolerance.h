@@ -26,6 +26,7 @@
 #define LINEMAP_TOLERANCE_H_
 
 #include <cstddef>
+#include <cstdint>
 
 #include "linemap/grid.h"
 
@@ -89,6 +90,29 @@ struct ToleranceReport {
 };
 
 ToleranceReport CheckTolerance(const Grid& original, const Grid& decoded, int tolerance_cells);
+
+// Calls visit(key, value) for each figure of `t` under the name `linemap
+// eval --tolerance T --json` prints it with (and Python's eval() returns),
+// in that order; values are std::int64_t, std::uint64_t, double or bool.
+template <typename Visit>
+void VisitToleranceFigures(const ToleranceReport& t, Visit&& visit) {
+  visit("tolerance_cells", std::int64_t{t.tolerance_cells});
+  visit("hausdorff_original_to_decoded", std::int64_t{t.hausdorff_original_to_decoded});
+  visit("hausdorff_decoded_to_original", std::int64_t{t.hausdorff_decoded_to_original});
+  visit("wall_surface_cells", std::uint64_t{t.wall_surface_cells});
+  visit("wall_surface_within_t", std::uint64_t{t.wall_surface_kept});
+  visit("wall_surface_share_within_t", t.WallSurfaceShare());
+  visit("free_moved_beyond_t", std::uint64_t{t.free_moved_beyond});
+  visit("free_lost_beyond_t", std::uint64_t{t.free_lost_beyond});
+  visit("unknown_turned_free_beyond_t", std::uint64_t{t.unknown_turned_free_beyond});
+  visit("tolerance_leaks", std::uint64_t{t.leaks});
+  visit("tolerance_splits", std::uint64_t{t.splits});
+  visit("plan_pairs", std::uint64_t{t.plan_pairs});
+  visit("plan_disagreements", std::uint64_t{t.plan_disagreements});
+  visit("local_plans", std::uint64_t{t.local_plans});
+  visit("local_plan_disagreements", std::uint64_t{t.local_plan_disagreements});
+  visit("tolerance_holds", t.Holds());
+}
 
 }  // namespace linemap
 

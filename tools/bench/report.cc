@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "tools/bench/image_anchors.h"
 #include "tools/bench/opencv_lines.h"
@@ -242,6 +245,42 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results) {
           table};
 }
 
+namespace {
+
+// One figure of a scaling row, per Mcell; unset where it was not measured.
+using ScalingFigure = std::function<std::optional<double>(const ScalingRow&)>;
+
+std::optional<double> Figure(double value) { return value; }
+
+// largest / smallest - 1 of a figure over the sizes, in %; unset when a size
+// lacks it or one is not positive.
+std::optional<double> Spread(const std::vector<ScalingRow>& rows, const ScalingFigure& figure) {
+  std::optional<double> lo, hi;
+  for (const ScalingRow& row : rows) {
+    const std::optional<double> v = figure(row);
+    if (!v) return std::nullopt;
+    lo = lo ? std::min(*lo, *v) : *v;
+    hi = hi ? std::max(*hi, *v) : *v;
+  }
+  if (!lo || *lo <= 0) return std::nullopt;
+  return 100.0 * (*hi / *lo - 1.0);
+}
+
+// A spread row of the scaling table: the spread of each timed column's
+// figure (PNG encode and decode, RM-Line, linemap lines, lmap2 encode and
+// decode), blank where `columns` holds no figure, and none for the window.
+std::vector<std::string> SpreadRow(const std::string& label, const std::vector<ScalingRow>& rows,
+                                   const std::vector<ScalingFigure>& columns) {
+  std::vector<std::string> cells = {label, ""};
+  for (const ScalingFigure& figure : columns) {
+    cells.push_back(figure ? FormatFixed(Spread(rows, figure), 0) : "");
+  }
+  cells.insert(cells.end(), {"", ""});
+  return cells;
+}
+
+}  // namespace
+
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
                "linemap lines ms/Mcell", "lmap2 enc ms/Mcell", "lmap2 dec ms/Mcell",
@@ -254,56 +293,20 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
          FormatFixed(row.lmap_encode_ms_per_mcell, 1), FormatFixed(row.lmap_decode_ms_per_mcell, 1),
          FormatFixed(row.lmap_window_ms, 2), FormatFixed(row.lmap_window_speedup, 1)});
   }
-  auto spread = [&](auto get) -> std::optional<double> {
-    double lo = 0, hi = 0;
-    bool any = false;
-    for (const ScalingRow& row : rows) {
-      const std::optional<double> v = get(row);
-      if (!v) return std::nullopt;
-      lo = any ? std::min(lo, *v) : *v;
-      hi = any ? std::max(hi, *v) : *v;
-      any = true;
-    }
-    if (!any || lo <= 0) return std::nullopt;
-    return 100.0 * (hi / lo - 1.0);
-  };
-  table.AddRow(
-      {"spread %", "",
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.png_encode_ms_per_mcell);
-                   }),
-                   0),
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.png_decode_ms_per_mcell);
-                   }),
-                   0),
-       FormatFixed(
-           spread([](const ScalingRow& r) { return std::optional<double>(r.rmline_ms_per_mcell); }),
-           0),
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.linemap_lines_ms_per_mcell);
-                   }),
-                   0),
-       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; }), 0),
-       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }), 0), "",
-       ""});
+  table.AddRow(SpreadRow("spread %", rows,
+                         {[](const ScalingRow& r) { return Figure(r.png_encode_ms_per_mcell); },
+                          [](const ScalingRow& r) { return Figure(r.png_decode_ms_per_mcell); },
+                          [](const ScalingRow& r) { return Figure(r.rmline_ms_per_mcell); },
+                          [](const ScalingRow& r) { return Figure(r.linemap_lines_ms_per_mcell); },
+                          [](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; },
+                          [](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; }}));
   // The same over each size's fastest run (the line extractors run once).
-  table.AddRow(
-      {"spread % of the fastest runs", "",
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.png_encode_fastest_ms_per_mcell);
-                   }),
-                   0),
-       FormatFixed(spread([](const ScalingRow& r) {
-                     return std::optional<double>(r.png_decode_fastest_ms_per_mcell);
-                   }),
-                   0),
-       "", "",
-       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_encode_fastest_ms_per_mcell; }),
-                   0),
-       FormatFixed(spread([](const ScalingRow& r) { return r.lmap_decode_fastest_ms_per_mcell; }),
-                   0),
-       "", ""});
+  table.AddRow(SpreadRow(
+      "spread % of the fastest runs", rows,
+      {[](const ScalingRow& r) { return Figure(r.png_encode_fastest_ms_per_mcell); },
+       [](const ScalingRow& r) { return Figure(r.png_decode_fastest_ms_per_mcell); }, nullptr,
+       nullptr, [](const ScalingRow& r) { return r.lmap_encode_fastest_ms_per_mcell; },
+       [](const ScalingRow& r) { return r.lmap_decode_fastest_ms_per_mcell; }}));
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "

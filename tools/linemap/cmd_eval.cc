@@ -153,22 +153,7 @@ int RunEval(const std::vector<std::string>& args) {
           .Add("edge_share_within_1_or_furniture", share(fidelity->covered, fidelity->edge_cells));
     }
     if (tol) {
-      json.Add("tolerance_cells", std::int64_t{tol->tolerance_cells})
-          .Add("hausdorff_original_to_decoded", std::int64_t{tol->hausdorff_original_to_decoded})
-          .Add("hausdorff_decoded_to_original", std::int64_t{tol->hausdorff_decoded_to_original})
-          .Add("wall_surface_cells", std::uint64_t{tol->wall_surface_cells})
-          .Add("wall_surface_within_t", std::uint64_t{tol->wall_surface_kept})
-          .Add("wall_surface_share_within_t", tol->WallSurfaceShare())
-          .Add("free_moved_beyond_t", std::uint64_t{tol->free_moved_beyond})
-          .Add("free_lost_beyond_t", std::uint64_t{tol->free_lost_beyond})
-          .Add("unknown_turned_free_beyond_t", std::uint64_t{tol->unknown_turned_free_beyond})
-          .Add("tolerance_leaks", std::uint64_t{tol->leaks})
-          .Add("tolerance_splits", std::uint64_t{tol->splits})
-          .Add("plan_pairs", std::uint64_t{tol->plan_pairs})
-          .Add("plan_disagreements", std::uint64_t{tol->plan_disagreements})
-          .Add("local_plans", std::uint64_t{tol->local_plans})
-          .Add("local_plan_disagreements", std::uint64_t{tol->local_plan_disagreements})
-          .Add("tolerance_holds", tol->Holds());
+      VisitToleranceFigures(*tol, [&json](const char* key, auto value) { json.Add(key, value); });
     }
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
