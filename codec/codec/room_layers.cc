@@ -35,9 +35,10 @@ std::vector<CellIndex> SimplifyClosedChain(const std::vector<CellIndex>& chain,
   const std::size_t n = chain.size();
   if (n <= 3) return chain;
   std::size_t far = 0;
-  double far_d = -1;
+  std::int64_t far_d = -1;  // squared distance, exact in integers
   for (std::size_t i = 1; i < n; ++i) {
-    const double d = std::hypot(chain[i].col - chain[0].col, chain[i].row - chain[0].row);
+    const std::int64_t dc = chain[i].col - chain[0].col, dr = chain[i].row - chain[0].row;
+    const std::int64_t d = dc * dc + dr * dr;
     if (d > far_d) {
       far_d = d;
       far = i;
