@@ -111,6 +111,67 @@ TEST(CellTilesTest, EachTileTakesTheSmallerModelWhateverTheThreads) {
   }
 }
 
+// A tile of more than 256 rows picks its model on its first 128 rows:
+// every model whose coding of them is within 2 % of the smallest there is
+// coded whole, and the smallest of those is kept (4, then 7, then 0 on a
+// tie), so a model that only wins further down is never tried. The
+// reference below follows that rule with the tile coder alone, on depot's
+// tall tiles (one 604 x 307 tile; tiles of 300 rows and one of 7) and on
+// depot transposed (604 rows).
+TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
+  const Grid depot = Depot();
+  Grid transposed(depot.height(), depot.width());
+  transposed.meta = depot.meta;
+  for (int r = 0; r < depot.height(); ++r) {
+    for (int c = 0; c < depot.width(); ++c) transposed.set(r, c, depot.at(c, r));
+  }
+  int prefix_choices_unlike_whole = 0;
+  for (const Grid* g : {static_cast<const Grid*>(&depot), static_cast<const Grid*>(&transposed)}) {
+    StatusOr<VectorLayers> layers = ExtractVectorLayers(*g, EncodeOptions{});
+    ASSERT_TRUE(layers.ok()) << layers.status().ToString();
+    const LayerIndex index(layers->walls, layers->rooms, layers->furniture);
+    for (int tile_size : {300, 1024}) {
+      const TileLayout layout(g->width(), g->height(), tile_size);
+      std::vector<unsigned> expected;
+      for (std::uint64_t i = 0; i < layout.count(); ++i) {
+        const CellRect t = layout.Tile(i);
+        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+        const std::vector<Cell> cells = TileCells(*g, t);
+        const std::vector<std::uint8_t> hints = index.TileHints(t);
+        const auto size = [&](unsigned model, int rows) {
+          return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, rows},
+                                 static_cast<TileModel>(model))
+              .size();
+        };
+        const unsigned order[3] = {4, 7, 0};
+        std::vector<unsigned> tried(order, order + 3);
+        if (th > 256) {
+          std::size_t least = size(4, 128);
+          for (unsigned m : order) least = std::min(least, size(m, 128));
+          std::erase_if(tried, [&](unsigned m) {
+            return static_cast<double>(size(m, 128)) > 1.02 * static_cast<double>(least);
+          });
+        }
+        const auto smallest_whole = [&](const std::vector<unsigned>& models) {
+          unsigned best = models[0];
+          for (unsigned m : models) {
+            if (size(m, th) < size(best, th)) best = m;
+          }
+          return best;
+        };
+        expected.push_back(smallest_whole(tried));
+        prefix_choices_unlike_whole +=
+            smallest_whole(tried) != smallest_whole({order, order + 3}) ? 1 : 0;
+      }
+      SCOPED_TRACE((g == &depot ? "depot, tile size " : "depot transposed, tile size ") +
+                   std::to_string(tile_size));
+      EXPECT_EQ(TileModels(EncodeCellChunk(*g, index, tile_size, 1), layout), expected);
+    }
+  }
+  // Else the rule above would not be told from coding every model whole.
+  EXPECT_GT(prefix_choices_unlike_whole, 0);
+}
+
 // A file's cells chunk: its type (CELL or BLKS) and the tile side it
 // declares (BLKS: after its block side); empty and 0 when it has neither.
 struct CellsChunk {
