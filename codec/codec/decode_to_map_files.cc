@@ -76,7 +76,11 @@ Status WriteCellBands(V2File* file, const DecodeLimits& limits, const std::strin
                       RosMapWriter* writer, CellCounts* counts) {
   const int width = file->header.width;
   const int height = file->header.height;
-  if (!file->has_cells) return WriteUnknown(width, height, writer, counts);
+  if (!file->has_cells) {
+    const Status layers = CheckLayersReaching(limits, CellRect{0, 0, width, height}, file);
+    if (!layers.ok()) return layers.WithContext(where);
+    return WriteUnknown(width, height, writer, counts);
+  }
   StatusOr<int> tile_size = V2CellDecoder::TileSizeOf(*file);
   if (!tile_size.ok()) return tile_size.status().WithContext(where);
   const Bands bands = ChooseBands(width, height, *tile_size);

@@ -142,6 +142,18 @@ Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2Fi
   return ReadLayerSections(limits, false, &rect, file);
 }
 
+Status CheckLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
+  if (!file->has_layer_sections || rect.x0 >= rect.x1 || rect.y0 >= rect.y1) return Status::Ok();
+  LINEMAP_ASSIGN_OR_RETURN(const int band, LayerBandRows(*file));
+  for (int y0 = rect.y0; y0 < rect.y1;) {
+    const int y1 =
+        static_cast<int>(std::min<std::int64_t>(rect.y1, (std::int64_t{y0} / band + 1) * band));
+    LINEMAP_RETURN_IF_ERROR(ReadLayersReaching(limits, CellRect{rect.x0, y0, rect.x1, y1}, file));
+    y0 = y1;
+  }
+  return Status::Ok();
+}
+
 StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limits, bool read_cells,
                             bool expand_chains, const CellRect* window, bool defer_sections) {
   if (view.chunks.empty() || view.chunks[0].type != kHeaderChunk) {
@@ -226,10 +238,11 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
   out->grid = Grid(h.width, h.height, Cell::kUnknown);
   out->grid.meta = h.meta;
   out->lossless = h.lossless;
-  if (h.width > 0 && h.height > 0) {
-    LINEMAP_RETURN_IF_ERROR(
-        DecodeCells(file, CellWindow{0, 0, h.width, h.height}, limits, &out->grid));
-  }
+  // Also on a grid without cells (0 columns or rows): the cells' chunk
+  // must still be well formed (its tile side, an empty index), as for a
+  // decoder that reads it before knowing the grid is empty.
+  LINEMAP_RETURN_IF_ERROR(
+      DecodeCells(file, CellWindow{0, 0, h.width, h.height}, limits, &out->grid));
   out->walls = std::move(file.walls);
   out->rooms = std::move(file.rooms);
   out->furniture = std::move(file.furniture);
@@ -244,8 +257,11 @@ StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& windo
   LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false,
                                                    &rect, /*defer_sections=*/true));
   Grid grid = WindowGrid(file.header.meta, window);
-  // Without cells the grid is all unknown, whatever the layers draw.
+  // Without cells the grid is all unknown, whatever the layers draw; the
+  // layers reaching the window are read all the same, as a decoder that
+  // draws them would (a corrupt stream is a corrupt file either way).
   if (!file.has_layer_sections || !file.has_cells) {
+    LINEMAP_RETURN_IF_ERROR(CheckLayersReaching(limits, rect, &file));
     LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
     return grid;
   }

@@ -77,6 +77,10 @@ StatusOr<int> LayerBandRows(const V2File& file);
 // place of those `file` held (nothing to do without LAYR).
 Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
 
+// Reads the layers of the sections reaching `rect` as ReadLayersReaching
+// does, a band of LayerBandRows rows at a time, and keeps none: the layers
+// of a file without cells, which draw nothing but must be valid (spec 7.1).
+Status CheckLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);
 

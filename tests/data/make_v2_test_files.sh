@@ -190,4 +190,30 @@ body13 = bytearray(cell23[1])
 body13[first] = (body13[first] & ~31) | 13
 open(bad + 'v2_3_tile_model_13.lmap', 'wb').write(
     build(head23, [c if c[0] != b'CELL' else [b'CELL', bytes(body13)] for c in chunks23]))
+
+# A file without cells must still hold valid layers: the 2.2 file's LAYR
+# with the last byte of its stream set to 0 (a stream may not end in a zero
+# byte), and no CELL chunk.
+head2, chunks2 = parse(open('tests/data/lmap/depot_v2.lmap', 'rb').read())
+nocell = []
+for t, payload in chunks2:
+    if t == b'CELL':
+        continue
+    nocell.append([t, payload[:-1] + b'\x00' if t == b'LAYR' else payload])
+open(bad + 'v2_2_layr_stream_corrupt_without_cells.lmap', 'wb').write(build(head2, nocell))
+
+# A grid of 0 columns by 5 rows has no tiles, but its cells' chunk must
+# still be well formed. LMHD payload (no coder byte): width varint, height
+# varint, the rest; the layers are left out (nothing lies in such a grid).
+def empty_grid(head_chunk):
+    width, q = read_varint(head_chunk[1], 0)
+    height, q = read_varint(head_chunk[1], q)
+    return [b'LMHD', varint(0) + varint(5) + head_chunk[1][q:]]
+
+open(bad + 'v2_empty_grid_tile_size_5.lmap', 'wb').write(
+    build(head2, [empty_grid(chunks2[0]), [b'CELL', b'\x00' + varint(5) + b'garbage'],
+                  [b'LEND', b'']]))
+open(bad + 'v2_1_empty_grid_block_side_0.lmap', 'wb').write(
+    build(head21, [empty_grid(chunks21[0]), [b'BLKS', b'\x00\x00' + varint(16)],
+                   [b'LEND', b'']]))
 PY

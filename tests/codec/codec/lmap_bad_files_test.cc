@@ -65,12 +65,22 @@ const BadFile kBadFiles[] = {
      "chunk LAYR: section 0: point out of the grid (or its section's box) or malformed"},
     // Version 2.3 (the same script).
     {"v2_3_tile_model_13.lmap", "chunk CELL: tile 0: tile cells: unknown model 13"},
+    // Checked whatever a decoder has to draw (the same script): layers in a
+    // file without cells, the cells' chunk of a grid without cells.
+    {"v2_2_layr_stream_corrupt_without_cells.lmap",
+     "chunk LAYR: section 0: the section's range-coded data is malformed or truncated"},
+    {"v2_empty_grid_tile_size_5.lmap", "chunk CELL: tile size 5 outside 16..65536"},
+    {"v2_1_empty_grid_block_side_0.lmap", "chunk BLKS: block side 0 outside 2..5"},
 };
 
 std::string BadDir() { return testing::SourceDir() + "/tests/data/bad/lmap_decode/"; }
 
 class LmapBadFileTest : public ::testing::TestWithParam<BadFile> {};
 
+// Refused by every way in: the whole file (what `linemap info` reads), the
+// grid alone (LoadLmap, which reads LAYR band by band and skips what it
+// need not draw), and the decode to a map YAML + PGM (`linemap decode`),
+// which leaves no file behind.
 TEST_P(LmapBadFileTest, FailsNamingTheProblem) {
   const BadFile& bad = GetParam();
   auto bytes = ReadFileBytes(BadDir() + bad.name, std::uint64_t{1} << 20);
@@ -79,6 +89,15 @@ TEST_P(LmapBadFileTest, FailsNamingTheProblem) {
   ASSERT_FALSE(decoded.ok()) << bad.name << " decoded without error";
   EXPECT_NE(decoded.status().ToString().find(bad.expected), std::string::npos)
       << bad.name << ": " << decoded.status().ToString();
+  auto grid = DecodeLmap(*bytes);
+  ASSERT_FALSE(grid.ok()) << bad.name << " decoded by DecodeLmap without error";
+  EXPECT_NE(grid.status().ToString().find(bad.expected), std::string::npos)
+      << bad.name << ": " << grid.status().ToString();
+  const std::string dir = testing::MakeTempDir("lmap_bad_files");
+  auto saved = DecodeLmapToRosMap(BadDir() + bad.name, dir + "/out.yaml", DecodeLimits{},
+                                  Durability::kUnsynced);
+  EXPECT_FALSE(saved.ok()) << bad.name << " decoded to a map without error";
+  EXPECT_TRUE(testing::ListDir(dir).empty()) << bad.name << " left a file behind";
 }
 
 INSTANTIATE_TEST_SUITE_P(AllBadFiles, LmapBadFileTest, ::testing::ValuesIn(kBadFiles),
