@@ -22,8 +22,8 @@ namespace linemap {
 namespace {
 
 // Cells decoded at a time: 24 MB of band, so that a 20,768-cell-wide map
-// takes its tile rows whole (512 rows, or 1024 when it was saved so) (one write per band, all tiles of the
-// row spread over the threads) and a wider one is cut into column groups.
+// takes its tile rows whole (512 rows, or 1024 when it was saved so) (one write per band, all tiles
+// of the row spread over the threads) and a wider one is cut into column groups.
 constexpr std::uint64_t kBandCells = std::uint64_t{24} << 20;
 // Rows per band at least: with small tiles (16 cells) a band of one tile row
 // would re-read the tile index once per 16 rows.
