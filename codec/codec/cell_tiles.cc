@@ -62,21 +62,24 @@ namespace {
 
 // A tile of more than 2 kChoiceRows rows picks its model on its first
 // kChoiceRows rows: each candidate codes them, and only the candidates
-// within kChoiceSlack of the smallest there code the whole tile. Why: the
-// three whole codings were a tenth of an exact encode (the layers aside,
-// nearly all of it), and which context function fits a tile shows in its
-// first rows. Over ../shared/maps (1024-cell tiles, encode CPU time on one
-// thread, best of 5 runs, 4 alternating rounds): 4.5 % less time in all,
-// 2.5 % at the median map, for 43 more bytes of 87,759 in the CELL chunks
-// of the 16 tuning maps and 9 of 21,293 in the 9 held-out ones. Choosing on
-// those rows alone (no slack) saved 6 % for 178 bytes; a slack of 10 % gave
-// the same bytes as coding every candidate whole and saved 1.7 %.
+// within kChoiceSlack or kChoiceSlackBytes (whichever is more) of the
+// smallest there code the whole tile. Why: the three whole codings were a
+// tenth of an exact encode (the layers aside, nearly all of it), and which
+// context function fits a tile shows in its first rows, unless those rows
+// hold little (a map's empty top: 66 against 70 bytes there on
+// levinelobby, whose whole tile then took 673 bytes against 630), which
+// the bytes' slack covers. Over ../shared/maps (1024-cell tiles, encode
+// CPU time on one thread, best of 7 runs, 4 alternating rounds): 2.7 %
+// less time in all, 3.1 % at the median map, and the same bytes as coding
+// every candidate whole on all 25 maps (the 2 % alone cost 52 bytes,
+// nearly all on levinelobby and avz5floor_plan, for 0.3 % more time saved).
 constexpr int kChoiceRows = 128;
 constexpr double kChoiceSlack = 0.02;
+constexpr double kChoiceSlackBytes = 8;
 
 // The candidates of `models` worth coding whole: all of them for a tile of
 // at most 2 kChoiceRows rows, else those whose coding of the first
-// kChoiceRows rows is within kChoiceSlack of the smallest.
+// kChoiceRows rows is within the slack of the smallest.
 std::vector<TileModel> ModelsToTry(const std::vector<Cell>& cells,
                                    const std::vector<std::uint8_t>& hints, int tw, int th,
                                    const std::vector<TileModel>& models) {
@@ -86,8 +89,8 @@ std::vector<TileModel> ModelsToTry(const std::vector<Cell>& cells,
   for (TileModel model : models) {
     sizes.push_back(EncodeTileCells(cells.data(), hints.data(), tw, th, top, model).size());
   }
-  const double limit =
-      static_cast<double>(*std::min_element(sizes.begin(), sizes.end())) * (1.0 + kChoiceSlack);
+  const double least = static_cast<double>(*std::min_element(sizes.begin(), sizes.end()));
+  const double limit = std::max(least * (1.0 + kChoiceSlack), least + kChoiceSlackBytes);
   std::vector<TileModel> kept;
   for (std::size_t i = 0; i < models.size(); ++i) {
     if (static_cast<double>(sizes[i]) <= limit) kept.push_back(models[i]);

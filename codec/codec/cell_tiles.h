@@ -73,7 +73,8 @@ std::vector<Cell> TileCells(const Grid& grid, CellRect t);
 // smaller, and without hints (--raster-only, tiles no layer reaches) it
 // always is. The choice costs three encodings of the tile (of a tile of
 // more than 256 rows: three of its first 128 rows, then whole only the
-// models within 2 % of the smallest on them) and nothing when decoding.
+// models within 2 % or 8 bytes of the smallest on them) and nothing when
+// decoding.
 // With `compact`, kMixedLayerAllCells and kMixedAllCells join the choice
 // (in every tile: model 12's WIDE input pays without hints too), tried
 // after the others: the smallest exact coding, for files sent more often

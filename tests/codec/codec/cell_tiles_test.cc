@@ -111,13 +111,57 @@ TEST(CellTilesTest, EachTileTakesTheSmallerModelWhateverTheThreads) {
   }
 }
 
+// The model of each tile by the rule below, from the tile coder alone.
+// Counts in *unlike_whole the tiles whose model differs from the smallest
+// whole coding of 4, 7 and 0.
+std::vector<unsigned> ModelsByFirstRows(const Grid& g, const LayerIndex& index,
+                                        const TileLayout& layout, int* unlike_whole) {
+  std::vector<unsigned> models;
+  for (std::uint64_t i = 0; i < layout.count(); ++i) {
+    const CellRect t = layout.Tile(i);
+    const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+    const std::vector<Cell> cells = TileCells(g, t);
+    const std::vector<std::uint8_t> hints = index.TileHints(t);
+    const auto size = [&](unsigned model, int rows) {
+      return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, rows},
+                             static_cast<TileModel>(model))
+          .size();
+    };
+    const std::vector<unsigned> all = {4, 7, 0};
+    std::vector<unsigned> tried = all;
+    if (th > 256) {
+      std::size_t least = size(4, 128);
+      for (unsigned m : all) least = std::min(least, size(m, 128));
+      std::erase_if(tried, [&](unsigned m) {
+        return static_cast<double>(size(m, 128)) >
+               std::max(1.02 * static_cast<double>(least), static_cast<double>(least) + 8);
+      });
+    }
+    const auto smallest_whole = [&](const std::vector<unsigned>& candidates) {
+      unsigned best = candidates[0];
+      for (unsigned m : candidates) {
+        if (size(m, th) < size(best, th)) best = m;
+      }
+      return best;
+    };
+    models.push_back(smallest_whole(tried));
+    *unlike_whole += models.back() != smallest_whole(all) ? 1 : 0;
+  }
+  return models;
+}
+
 // A tile of more than 256 rows picks its model on its first 128 rows:
-// every model whose coding of them is within 2 % of the smallest there is
-// coded whole, and the smallest of those is kept (4, then 7, then 0 on a
-// tie), so a model that only wins further down is never tried. The
-// reference below follows that rule with the tile coder alone, on depot's
-// tall tiles (one 604 x 307 tile; tiles of 300 rows and one of 7) and on
-// depot transposed (604 rows).
+// every model whose coding of them is within 2 % or 8 bytes (whichever is
+// more) of the smallest there is coded whole, and the smallest of those is
+// kept (4, then 7, then 0 on a tie), so a model that only wins further down
+// is never tried. The reference (ModelsByFirstRows) follows that rule with
+// the tile coder alone, on depot's tall tiles (one 604 x 307 tile; tiles of
+// 300 rows and one of 7) and on depot transposed (604 rows), where it picks
+// what coding every model whole would; and on a tile made for the rule to
+// bite: 128 rows of noise, which the four-cell contexts of models 4 and 7
+// code smaller than model 0's 8-cell template, then 472 rows that repeat
+// every other row, which only model 0 sees (its template holds the cell two
+// rows below), so that coding every model whole would have taken model 0.
 TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
   const Grid depot = Depot();
   Grid transposed(depot.height(), depot.width());
@@ -125,51 +169,40 @@ TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
   for (int r = 0; r < depot.height(); ++r) {
     for (int c = 0; c < depot.width(); ++c) transposed.set(r, c, depot.at(c, r));
   }
-  int prefix_choices_unlike_whole = 0;
   for (const Grid* g : {static_cast<const Grid*>(&depot), static_cast<const Grid*>(&transposed)}) {
     StatusOr<VectorLayers> layers = ExtractVectorLayers(*g, EncodeOptions{});
     ASSERT_TRUE(layers.ok()) << layers.status().ToString();
     const LayerIndex index(layers->walls, layers->rooms, layers->furniture);
     for (int tile_size : {300, 1024}) {
-      const TileLayout layout(g->width(), g->height(), tile_size);
-      std::vector<unsigned> expected;
-      for (std::uint64_t i = 0; i < layout.count(); ++i) {
-        const CellRect t = layout.Tile(i);
-        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
-        const std::vector<Cell> cells = TileCells(*g, t);
-        const std::vector<std::uint8_t> hints = index.TileHints(t);
-        const auto size = [&](unsigned model, int rows) {
-          return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, rows},
-                                 static_cast<TileModel>(model))
-              .size();
-        };
-        const unsigned order[3] = {4, 7, 0};
-        std::vector<unsigned> tried(order, order + 3);
-        if (th > 256) {
-          std::size_t least = size(4, 128);
-          for (unsigned m : order) least = std::min(least, size(m, 128));
-          std::erase_if(tried, [&](unsigned m) {
-            return static_cast<double>(size(m, 128)) > 1.02 * static_cast<double>(least);
-          });
-        }
-        const auto smallest_whole = [&](const std::vector<unsigned>& models) {
-          unsigned best = models[0];
-          for (unsigned m : models) {
-            if (size(m, th) < size(best, th)) best = m;
-          }
-          return best;
-        };
-        expected.push_back(smallest_whole(tried));
-        prefix_choices_unlike_whole +=
-            smallest_whole(tried) != smallest_whole({order, order + 3}) ? 1 : 0;
-      }
       SCOPED_TRACE((g == &depot ? "depot, tile size " : "depot transposed, tile size ") +
                    std::to_string(tile_size));
-      EXPECT_EQ(TileModels(EncodeCellChunk(*g, index, tile_size, 1), layout), expected);
+      const TileLayout layout(g->width(), g->height(), tile_size);
+      int unlike_whole = 0;
+      EXPECT_EQ(TileModels(EncodeCellChunk(*g, index, tile_size, 1), layout),
+                ModelsByFirstRows(*g, index, layout, &unlike_whole));
     }
   }
-  // Else the rule above would not be told from coding every model whole.
-  EXPECT_GT(prefix_choices_unlike_whole, 0);
+
+  Grid made(64, 600);
+  std::uint32_t state = 12345;
+  const auto noise = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<Cell>((state >> 24) % 3);
+  };
+  std::vector<Cell> pair(2 * 64);
+  for (Cell& c : pair) c = noise();
+  for (int r = 0; r < 600; ++r) {
+    for (int c = 0; c < 64; ++c) made.set(c, r, r < 128 ? noise() : pair[(r % 2) * 64 + c]);
+  }
+  // One wall along the last row: a tile without any hint takes model 0 alone.
+  const std::vector<WallPolyline> walls = {{{{0, 599}, {63, 599}}}};
+  const LayerIndex index(walls, {}, {});
+  const TileLayout layout(64, 600, 1024);
+  int unlike_whole = 0;
+  const std::vector<unsigned> expected = ModelsByFirstRows(made, index, layout, &unlike_whole);
+  EXPECT_EQ(TileModels(EncodeCellChunk(made, index, 1024, 1), layout), expected);
+  EXPECT_EQ(unlike_whole, 1) << "the made tile does not tell the rule from coding every model";
+  EXPECT_NE(expected[0], 0u);
 }
 
 // A file's cells chunk: its type (CELL or BLKS) and the tile side it
