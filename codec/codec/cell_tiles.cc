@@ -65,14 +65,13 @@ namespace {
 // within kChoiceSlack or kChoiceSlackBytes (whichever is more) of the
 // smallest there code the whole tile. Why: the three whole codings were a
 // tenth of an exact encode (the layers aside, nearly all of it), and which
-// context function fits a tile shows in its first rows, unless those rows
-// hold little (a map's empty top: 66 against 70 bytes there on
-// levinelobby, whose whole tile then took 673 bytes against 630), which
-// the bytes' slack covers. Over ../shared/maps (1024-cell tiles, encode
-// CPU time on one thread, best of 7 runs, 4 alternating rounds): 2.7 %
-// less time in all, 3.1 % at the median map, and the same bytes as coding
-// every candidate whole on all 25 maps (the 2 % alone cost 52 bytes,
-// nearly all on levinelobby and avz5floor_plan, for 0.3 % more time saved).
+// context function fits a tile shows in its first rows (from row 0, the
+// map's bottom edge), unless those rows hold little (levinelobby's are
+// nearly empty: 66 against 70 bytes there, and the whole tile then took
+// 673 bytes against 630), which the bytes' slack covers. Over ../shared/maps (1024-cell tiles,
+// encode CPU time on one thread, best of 7 runs, 4 alternating rounds): 2.7 % less time in all, 3.1
+// % at the median map, and the same bytes as coding every candidate whole on all 25 maps (the 2 %
+// alone cost 52 bytes, nearly all on levinelobby and avz5floor_plan, for 0.3 % more time saved).
 constexpr int kChoiceRows = 128;
 constexpr double kChoiceSlack = 0.02;
 constexpr double kChoiceSlackBytes = 8;

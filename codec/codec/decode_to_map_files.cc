@@ -77,7 +77,7 @@ Status WriteCellBands(V2File* file, const DecodeLimits& limits, const std::strin
   const int width = file->header.width;
   const int height = file->header.height;
   if (!file->has_cells) {
-    const Status layers = CheckLayersReaching(limits, CellRect{0, 0, width, height}, file);
+    const Status layers = CheckLayersWithoutCells(limits, file);
     if (!layers.ok()) return layers.WithContext(where);
     return WriteUnknown(width, height, writer, counts);
   }
@@ -153,6 +153,13 @@ StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
   summary.width = file->header.width;
   summary.height = file->header.height;
   summary.meta = file->header.meta;
+  // A grid of no cells cannot be saved as an image, but a defect of the
+  // file comes first: its cells' chunk is checked (it has no tiles).
+  if (summary.width == 0 || summary.height == 0) {
+    const Status cells = V2CellDecoder(*file).Decode(CellRect{0, 0, summary.width, summary.height},
+                                                     limits.max_threads, nullptr);
+    if (!cells.ok()) return cells.WithContext(where);
+  }
   LINEMAP_ASSIGN_OR_RETURN(
       RosMapWriter writer,
       RosMapWriter::Open(yaml_path, summary.width, summary.height, summary.meta, durability));

@@ -142,15 +142,12 @@ Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2Fi
   return ReadLayerSections(limits, false, &rect, file);
 }
 
-Status CheckLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
-  if (!file->has_layer_sections || rect.x0 >= rect.x1 || rect.y0 >= rect.y1) return Status::Ok();
-  LINEMAP_ASSIGN_OR_RETURN(const int band, LayerBandRows(*file));
-  for (int y0 = rect.y0; y0 < rect.y1;) {
-    const int y1 =
-        static_cast<int>(std::min<std::int64_t>(rect.y1, (std::int64_t{y0} / band + 1) * band));
-    LINEMAP_RETURN_IF_ERROR(ReadLayersReaching(limits, CellRect{rect.x0, y0, rect.x1, y1}, file));
-    y0 = y1;
-  }
+Status CheckLayersWithoutCells(const DecodeLimits& limits, V2File* file) {
+  if (!file->has_layer_sections || file->has_cells) return Status::Ok();
+  LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, /*expand_chains=*/false, nullptr, file));
+  std::vector<WallPolyline>().swap(file->walls);
+  std::vector<RoomOutline>().swap(file->rooms);
+  std::vector<FurnitureObject>().swap(file->furniture);
   return Status::Ok();
 }
 
@@ -257,11 +254,10 @@ StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& windo
   LINEMAP_ASSIGN_OR_RETURN(V2File file, ReadV2File(view, limits, true, /*expand_chains=*/false,
                                                    &rect, /*defer_sections=*/true));
   Grid grid = WindowGrid(file.header.meta, window);
-  // Without cells the grid is all unknown, whatever the layers draw; the
-  // layers reaching the window are read all the same, as a decoder that
-  // draws them would (a corrupt stream is a corrupt file either way).
+  // Without cells the grid is all unknown, whatever the layers draw; they
+  // are read all the same (a corrupt stream is a corrupt file either way).
   if (!file.has_layer_sections || !file.has_cells) {
-    LINEMAP_RETURN_IF_ERROR(CheckLayersReaching(limits, rect, &file));
+    LINEMAP_RETURN_IF_ERROR(CheckLayersWithoutCells(limits, &file));
     LINEMAP_RETURN_IF_ERROR(DecodeCells(file, window, limits, &grid));
     return grid;
   }

@@ -77,10 +77,14 @@ StatusOr<int> LayerBandRows(const V2File& file);
 // place of those `file` held (nothing to do without LAYR).
 Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
 
-// Reads the layers of the sections reaching `rect` as ReadLayersReaching
-// does, a band of LayerBandRows rows at a time, and keeps none: the layers
-// of a file without cells, which draw nothing but must be valid (spec 7.1).
-Status CheckLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
+// For a file with LAYR and no CELL or BLKS: reads every section (which is
+// what ReadLayersReaching reads for any window when there are no tiles)
+// and keeps none of their items. Such a file decodes to all unknown cells,
+// but its layers must be valid all the same (spec 7.1). The items of the
+// whole map are held meanwhile: the reference encoder never writes LAYR
+// without CELL.
+Status CheckLayersWithoutCells(const DecodeLimits& limits, V2File* file);
+
 // The whole file into `out` (grid, layers, metadata, chunk list).
 Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, LmapContents* out);
 

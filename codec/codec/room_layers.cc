@@ -35,7 +35,7 @@ std::vector<CellIndex> SimplifyClosedChain(const std::vector<CellIndex>& chain,
   const std::size_t n = chain.size();
   if (n <= 3) return chain;
   std::size_t far = 0;
-  std::int64_t far_d = -1;  // squared distance, exact in integers
+  std::int64_t far_d = -1;  // squared distance: exact, and 2 (2^31)^2 < 2^63
   for (std::size_t i = 1; i < n; ++i) {
     const std::int64_t dc = chain[i].col - chain[0].col, dr = chain[i].row - chain[0].row;
     const std::int64_t d = dc * dc + dr * dr;

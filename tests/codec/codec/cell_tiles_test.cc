@@ -122,6 +122,10 @@ std::vector<unsigned> ModelsByFirstRows(const Grid& g, const LayerIndex& index,
     const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
     const std::vector<Cell> cells = TileCells(g, t);
     const std::vector<std::uint8_t> hints = index.TileHints(t);
+    if (std::all_of(hints.begin(), hints.end(), [](std::uint8_t h) { return h == 0; })) {
+      models.push_back(0);  // a tile without any hint: model 0 alone
+      continue;
+    }
     const auto size = [&](unsigned model, int rows) {
       return EncodeTileCells(cells.data(), hints.data(), tw, th, CellRect{0, 0, tw, rows},
                              static_cast<TileModel>(model))
@@ -178,8 +182,10 @@ TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
                    std::to_string(tile_size));
       const TileLayout layout(g->width(), g->height(), tile_size);
       int unlike_whole = 0;
-      EXPECT_EQ(TileModels(EncodeCellChunk(*g, index, tile_size, 1), layout),
-                ModelsByFirstRows(*g, index, layout, &unlike_whole));
+      const std::vector<std::uint8_t> one = EncodeCellChunk(*g, index, tile_size, 1);
+      EXPECT_EQ(one, EncodeCellChunk(*g, index, tile_size, 3));
+      EXPECT_EQ(TileModels(one, layout), ModelsByFirstRows(*g, index, layout, &unlike_whole));
+      EXPECT_EQ(unlike_whole, 0);
     }
   }
 
@@ -200,7 +206,9 @@ TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
   const TileLayout layout(64, 600, 1024);
   int unlike_whole = 0;
   const std::vector<unsigned> expected = ModelsByFirstRows(made, index, layout, &unlike_whole);
-  EXPECT_EQ(TileModels(EncodeCellChunk(made, index, 1024, 1), layout), expected);
+  const std::vector<std::uint8_t> one = EncodeCellChunk(made, index, 1024, 1);
+  EXPECT_EQ(one, EncodeCellChunk(made, index, 1024, 2));
+  EXPECT_EQ(TileModels(one, layout), expected);
   EXPECT_EQ(unlike_whole, 1) << "the made tile does not tell the rule from coding every model";
   EXPECT_NE(expected[0], 0u);
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "codec/codec/draco_segments.h"
+#include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
 #include "tests/testing/test_support.h"
@@ -96,7 +97,9 @@ TEST_P(LmapBadFileTest, FailsNamingTheProblem) {
   const std::string dir = testing::MakeTempDir("lmap_bad_files");
   auto saved = DecodeLmapToRosMap(BadDir() + bad.name, dir + "/out.yaml", DecodeLimits{},
                                   Durability::kUnsynced);
-  EXPECT_FALSE(saved.ok()) << bad.name << " decoded to a map without error";
+  ASSERT_FALSE(saved.ok()) << bad.name << " decoded to a map without error";
+  EXPECT_NE(saved.status().ToString().find(bad.expected), std::string::npos)
+      << bad.name << ": " << saved.status().ToString();
   EXPECT_TRUE(testing::ListDir(dir).empty()) << bad.name << " left a file behind";
 }
 
@@ -114,6 +117,54 @@ TEST(LmapBadFiles, EveryFileInTheFolderHasARow) {
     for (const BadFile& bad : kBadFiles) listed = listed || file.ends_with(bad.name);
     EXPECT_TRUE(listed) << file << " has no row in kBadFiles";
   }
+}
+
+// The valid counterparts of the must-fail files without cells: the
+// bundled 2.2 file without its CELL chunk decodes, whole and in a window,
+// to all unknown cells (its layers read and valid); a grid of 0 x 5 cells
+// with a well-formed CELL body (a tile side and no tiles) decodes to an
+// empty grid. Each file is rebuilt from depot_v2.lmap's chunks.
+std::vector<std::uint8_t> RebuiltDepot(bool keep_cells, bool empty_grid) {
+  StatusOr<std::vector<std::uint8_t>> bytes =
+      ReadFileBytes(testing::SourceDir() + "/tests/data/lmap/depot_v2.lmap", 1 << 20);
+  EXPECT_TRUE(bytes.ok());
+  if (!bytes.ok()) return {};
+  StatusOr<ContainerView> view = ParseContainer(*bytes, 1 << 20);
+  EXPECT_TRUE(view.ok());
+  if (!view.ok()) return {};
+  ContainerWriter out(view->major, view->minor);
+  for (const Chunk& chunk : view->chunks) {
+    std::vector<std::uint8_t> payload(chunk.payload, chunk.payload + chunk.size);
+    if (empty_grid && chunk.type == "LMHD") {
+      // Width and height are the first two varints (604 and 307: 2 bytes each).
+      payload.erase(payload.begin(), payload.begin() + 4);
+      payload.insert(payload.begin(), {0, 5});
+    }
+    if (empty_grid && chunk.type == "LAYR") continue;  // nothing lies in such a grid
+    if (empty_grid && chunk.type == "CELL") payload = {0, 0x80, 0x08};  // coder 0, tile side 1024
+    if (!keep_cells && chunk.type == "CELL") continue;
+    out.AddChunk(chunk.type, payload);
+  }
+  return out.Finish();
+}
+
+TEST(LmapBadFiles, ValidFilesWithoutCellsDecode) {
+  const std::vector<std::uint8_t> no_cells = RebuiltDepot(false, false);
+  StatusOr<LmapContents> contents = DecodeLmapContents(no_cells);
+  ASSERT_TRUE(contents.ok()) << contents.status().ToString();
+  EXPECT_GT(contents->walls.size(), 0u);
+  EXPECT_EQ(contents->grid.Count().unknown, std::size_t{604} * 307);
+  StatusOr<Grid> grid = DecodeLmap(no_cells);
+  ASSERT_TRUE(grid.ok()) << grid.status().ToString();
+  EXPECT_EQ(grid->Count().unknown, std::size_t{604} * 307);
+  StatusOr<Grid> window = DecodeLmapRegion(no_cells, CellWindow{10, 20, 110, 70});
+  ASSERT_TRUE(window.ok()) << window.status().ToString();
+  EXPECT_EQ(window->Count().unknown, std::size_t{100} * 50);
+
+  StatusOr<LmapContents> empty = DecodeLmapContents(RebuiltDepot(true, true));
+  ASSERT_TRUE(empty.ok()) << empty.status().ToString();
+  EXPECT_EQ(empty->grid.width(), 0);
+  EXPECT_EQ(empty->grid.height(), 5);
 }
 
 // A Draco SEGS body whose header claims 2^31 - 1 points: refused from the
