@@ -158,21 +158,6 @@ StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes
   return contents;
 }
 
-namespace {
-
-Status CheckWindow(const CellWindow& w, int width, int height) {
-  if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height || w.col0 >= w.col1 ||
-      w.row0 >= w.row1) {
-    return InvalidArgumentError("window [" + std::to_string(w.col0) + ", " +
-                                std::to_string(w.col1) + ") x [" + std::to_string(w.row0) + ", " +
-                                std::to_string(w.row1) + ") is empty or not inside the map's " +
-                                std::to_string(width) + " x " + std::to_string(height) + " cells");
-  }
-  return Status::Ok();
-}
-
-}  // namespace
-
 StatusOr<Grid> DecodeLmapRegion(const std::vector<std::uint8_t>& bytes, const CellWindow& window,
                                 const DecodeLimits& limits) {
   LINEMAP_ASSIGN_OR_RETURN(ContainerView view, ParseContainer(bytes, limits.max_chunk_bytes));

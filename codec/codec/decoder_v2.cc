@@ -106,22 +106,29 @@ StatusOr<CellRect> WindowTiles(const V2File& file, CellRect window) {
                       (std::int64_t{window.y1} + tile - 1) / tile * tile, h))};
 }
 
+// LAYR's layers into `file`: those of the sections whose box meets
+// `region`, or all of them. The body stays for other regions.
+Status ReadSectionsMeeting(const DecodeLimits& limits, bool expand_chains, const CellRect* region,
+                           V2File* file) {
+  StatusOr<DecodedLayers> layers =
+      DecodeLayerSections(file->layer_body, file->layer_table, file->header.width,
+                          file->header.height, limits, expand_chains, region);
+  if (!layers.ok()) return layers.status().WithContext(std::string("chunk ") + kLayerChunk);
+  file->walls = std::move(layers->walls);
+  file->rooms = std::move(layers->rooms);
+  file->furniture = std::move(layers->furniture);
+  return Status::Ok();
+}
+
 // LAYR's layers into `file`: all of them, or those that draw into the
-// tiles meeting `window`. The body stays for other windows.
+// tiles meeting `window`.
 Status ReadLayerSections(const DecodeLimits& limits, bool expand_chains, const CellRect* window,
                          V2File* file) {
   std::optional<CellRect> tiles;
   if (window != nullptr && file->has_cells && !file->cell_body.empty()) {
     LINEMAP_ASSIGN_OR_RETURN(tiles, WindowTiles(*file, *window));
   }
-  StatusOr<DecodedLayers> layers =
-      DecodeLayerSections(file->layer_body, file->layer_table, file->header.width,
-                          file->header.height, limits, expand_chains, tiles ? &*tiles : nullptr);
-  if (!layers.ok()) return layers.status().WithContext(std::string("chunk ") + kLayerChunk);
-  file->walls = std::move(layers->walls);
-  file->rooms = std::move(layers->rooms);
-  file->furniture = std::move(layers->furniture);
-  return Status::Ok();
+  return ReadSectionsMeeting(limits, expand_chains, tiles ? &*tiles : nullptr, file);
 }
 
 }  // namespace
@@ -140,6 +147,11 @@ StatusOr<int> LayerBandRows(const V2File& file) {
 Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
   if (!file->has_layer_sections) return Status::Ok();
   return ReadLayerSections(limits, false, &rect, file);
+}
+
+Status ReadLayersMeeting(const DecodeLimits& limits, const CellRect& rect, V2File* file) {
+  if (!file->has_layer_sections) return Status::Ok();
+  return ReadSectionsMeeting(limits, /*expand_chains=*/true, &rect, file);
 }
 
 Status CheckLayersWithoutCells(const DecodeLimits& limits, V2File* file) {
@@ -173,6 +185,17 @@ StatusOr<V2File> ReadV2File(const ContainerView& view, const DecodeLimits& limit
     file.layer_body = {};
   }
   return file;
+}
+
+Status CheckWindow(const CellWindow& w, int width, int height) {
+  if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height || w.col0 >= w.col1 ||
+      w.row0 >= w.row1) {
+    return InvalidArgumentError("window [" + std::to_string(w.col0) + ", " +
+                                std::to_string(w.col1) + ") x [" + std::to_string(w.row0) + ", " +
+                                std::to_string(w.row1) + ") is empty or not inside the map's " +
+                                std::to_string(width) + " x " + std::to_string(height) + " cells");
+  }
+  return Status::Ok();
 }
 
 Grid WindowGrid(const MapMetadata& meta, const CellWindow& window) {

@@ -77,6 +77,12 @@ StatusOr<int> LayerBandRows(const V2File& file);
 // place of those `file` held (nothing to do without LAYR).
 Status ReadLayersReaching(const DecodeLimits& limits, const CellRect& rect, V2File* file);
 
+// The layers of the LAYR sections whose box meets `rect` (chains
+// expanded), in place of those `file` held: what a reader of the items near
+// a window needs, with no tiles involved (nothing to do without LAYR; the
+// layers of older files were read whole by ReadV2File).
+Status ReadLayersMeeting(const DecodeLimits& limits, const CellRect& rect, V2File* file);
+
 // For a file with LAYR and no CELL or BLKS: reads every section (which is
 // what ReadLayersReaching reads for any window when there are no tiles)
 // and keeps none of their items. Such a file decodes to all unknown cells,
@@ -91,6 +97,10 @@ Status DecodeV2Contents(const ContainerView& view, const DecodeLimits& limits, L
 // The cells of `window` (already checked to lie inside the map).
 StatusOr<Grid> DecodeV2Region(const ContainerView& view, const CellWindow& window,
                               const DecodeLimits& limits);
+
+// Invalid argument unless `window` is non-empty and inside a width x height
+// map; the message names both.
+Status CheckWindow(const CellWindow& window, int width, int height);
 
 // The grid of a window's cells with the window's origin in the map frame.
 Grid WindowGrid(const MapMetadata& meta, const CellWindow& window);

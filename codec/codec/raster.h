@@ -66,6 +66,26 @@ void FillChain(const std::vector<CellIndex>& chain, Visit&& visit) {
   }
 }
 
+// Whether the closed chain encloses `cell` (FillChain's cells, one cell
+// tested): on the chain, or an odd number of its steps cross the line
+// row + 1/2 at a column right of the cell.
+inline bool ChainEncloses(const std::vector<CellIndex>& chain, CellIndex cell) {
+  bool inside = false;
+  const std::size_t n = chain.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CellIndex p = chain[i];
+    const CellIndex q = chain[(i + 1) % n];
+    if (p == cell) return true;
+    // A step crossing row + 1/2 joins rows r and r + 1; its end on row r
+    // is where it crosses.
+    const bool crosses = (p.row == cell.row && q.row == cell.row + 1) ||
+                         (q.row == cell.row && p.row == cell.row + 1);
+    const int x = p.row == cell.row ? p.col : q.col;
+    if (crosses && x > cell.col) inside = !inside;
+  }
+  return inside;
+}
+
 }  // namespace linemap
 
 #endif  // LINEMAP_CODEC_CODEC_RASTER_H_

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "linemap/cells.h"
 #include "linemap/lines.h"
 
 namespace linemap::testing {
@@ -18,6 +20,23 @@ inline double ReferencePointSegmentDistance(double x, double y, const LineSegmen
   const double t =
       std::clamp(len2 > 0 ? ((x - s.x1) * vx + (y - s.y1) * vy) / len2 : 0.0, 0.0, 1.0);
   return std::hypot(x - (s.x1 + t * vx), y - (s.y1 + t * vy));
+}
+
+// Spec/format.md section 8.2 as written: cell (c, r) is enclosed by the
+// closed chain when it is a chain cell, or when an odd number of steps
+// p -> q (the last closing the chain) have (p.row > r) != (q.row > r) and
+// x > c, x the column of whichever of p, q lies on row r.
+inline bool ReferenceChainEncloses(const std::vector<CellIndex>& chain, int c, int r) {
+  int crossings = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const CellIndex p = chain[i];
+    const CellIndex q = chain[(i + 1) % chain.size()];
+    if (p.col == c && p.row == r) return true;
+    if ((p.row > r) == (q.row > r)) continue;
+    const int x = p.row == r ? p.col : q.col;
+    if (x > c) ++crossings;
+  }
+  return crossings % 2 == 1;
 }
 
 }  // namespace linemap::testing

@@ -1,7 +1,8 @@
-// `linemap decode --window / --window-cells / --threads` through the built
-// CLI: a window's PGM equals the same cells of the whole decode, its YAML
-// origin puts it where it lay in the map, and windows that are empty or
-// reach past the border are refused with exit 2 and nothing written.
+// `linemap decode --window / --window-cells / --room-at / --threads` through
+// the built CLI: a window's PGM equals the same cells of the whole decode,
+// its YAML origin puts it where it lay in the map, and windows that are
+// empty or reach past the border are refused with exit 2 and nothing
+// written.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,10 +10,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
@@ -214,12 +218,59 @@ TEST(CmdDecodeWindowTest, EmptyOrOutOfMapWindowsAreRefused) {
   ExpectRefused(lmap, dir, {"--window", "1.01,1,1.02,2"}, "holds no cell centre");
   ExpectRefused(lmap, dir, {"--window", "2,1,1,2"}, "X0 must not exceed X1");
   ExpectRefused(lmap, dir, {"--window", "0,0,nan,1"}, "--window");
-  ExpectRefused(lmap, dir, {"--window", "0,0,1,1", "--window-cells", "0,0,1,1"}, "not both");
+  ExpectRefused(lmap, dir, {"--window", "0,0,1,1", "--window-cells", "0,0,1,1"}, "give one of");
+  ExpectRefused(lmap, dir, {"--window", "0,0,1,1", "--room-at", "1,1"}, "give one of");
   // Past the map by less than half a cell holds no outside centre: accepted.
   const CliResult edge =
       RunCli({"decode", lmap, "-o", dir + "/e.yaml", "--window", "-0.02,-0.02,4.02,3.02"});
   EXPECT_EQ(edge.exit_code, 0) << edge.err;
   EXPECT_NE(edge.out.find("80 x 60 cells"), std::string::npos) << edge.out;
+}
+
+// --room-at X,Y writes the window LoadLmapRoomAt gives for the cell holding
+// the point: the same cells as the whole decode there, origin at the
+// window's corner; points off the map or outside every room are refused.
+TEST(CmdDecodeWindowTest, RoomAtWritesTheRoomsWindow) {
+  const std::string dir = testing::MakeTempDir("decode_room_at");
+  std::filesystem::create_directories(dir + "/out");
+  const std::string lmap = dir + "/d.lmap";
+  ASSERT_EQ(
+      RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", lmap}).exit_code, 0);
+  const Grid whole = DecodeWhole(lmap, dir);
+  // Cells of several rooms, and one outside every room's border.
+  std::set<std::uint32_t> rooms_seen;
+  std::optional<CellIndex> roomless;
+  for (int r = 3; r < whole.height(); r += 29) {
+    for (int c = 5; c < whole.width(); c += 31) {
+      StatusOr<std::optional<LmapRoom>> room = LoadLmapRoomAt(lmap, {c, r});
+      ASSERT_TRUE(room.ok()) << room.status().message();
+      if (!room->has_value()) {
+        roomless = CellIndex{c, r};
+        continue;
+      }
+      if (!rooms_seen.insert((*room)->room.id).second) continue;
+      const CellWindow& w = (*room)->window;
+      // The point: the cell's centre, a little off it.
+      const double x = whole.meta.origin.x + (c + 0.3) * whole.meta.resolution;
+      const double y = whole.meta.origin.y + (r + 0.6) * whole.meta.resolution;
+      char point[64];
+      std::snprintf(point, sizeof(point), "%.6f,%.6f", x, y);
+      ExpectWindow(lmap, dir, whole, {"--room-at", point}, {w.col0, w.row0, w.col1, w.row1});
+      const CliResult out = RunCli({"decode", lmap, "-o", dir + "/w.yaml", "--room-at", point});
+      EXPECT_NE(out.out.find(", room " + std::to_string((*room)->room.id) + " ("),
+                std::string::npos)
+          << out.out;
+    }
+  }
+  EXPECT_GE(rooms_seen.size(), 3u);
+  ASSERT_TRUE(roomless.has_value());
+  char point[64];
+  std::snprintf(point, sizeof(point), "%.6f,%.6f", (roomless->col + 0.5) * 0.05,
+                (roomless->row + 0.5) * 0.05);
+  ExpectRefused(lmap, dir, {"--room-at", point}, "outside every room's border");
+  ExpectRefused(lmap, dir, {"--room-at", "-0.1,1"}, "lies outside the map's 604 x 307 cells");
+  ExpectRefused(lmap, dir, {"--room-at", "30.3,1"}, "lies outside the map's 604 x 307 cells");
+  ExpectRefused(lmap, dir, {"--room-at", "1"}, "2 comma-separated numbers");
 }
 
 // The tiles decode on any number of threads to the same files; a 1.0 file

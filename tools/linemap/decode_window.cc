@@ -87,12 +87,39 @@ StatusOr<CellWindow> WindowFromMetres(const MetreBox& box, const MapMetadata& me
   return w;
 }
 
+StatusOr<std::optional<CellIndex>> RoomCellFromArgs(const ParsedArgs& args,
+                                                    const std::string& lmap_path,
+                                                    const DecodeLimits& limits) {
+  if (!args.Get("--room-at").has_value()) return std::optional<CellIndex>();
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<double> v, args.GetDoubleList("--room-at", 2));
+  if (!std::isfinite(v[0]) || !std::isfinite(v[1])) {
+    return InvalidArgumentError("--room-at takes finite metres X,Y");
+  }
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader file, LoadLmapHeader(lmap_path, limits));
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = file.meta;
+  double col = 0, row = 0;
+  frame.WorldToCell(v[0], v[1], &col, &row);
+  // The cell whose square holds the point: the nearest centre.
+  const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
+  if (!(c >= 0 && r >= 0 && c < file.width && r < file.height)) {
+    char text[160];
+    std::snprintf(text, sizeof(text), "--room-at %g,%g m lies outside the map's %d x %d cells",
+                  v[0], v[1], file.width, file.height);
+    return InvalidArgumentError(std::string(text) + " ('" + lmap_path + "')");
+  }
+  return std::optional<CellIndex>(CellIndex{static_cast<int>(c), static_cast<int>(r)});
+}
+
 StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,
                                                    const std::string& lmap_path,
                                                    const DecodeLimits& limits) {
   const bool metres = args.Get("--window").has_value();
   const bool cells = args.Get("--window-cells").has_value();
-  if (metres && cells) return InvalidArgumentError("give --window or --window-cells, not both");
+  const bool room = args.Get("--room-at").has_value();
+  if (metres + cells + room > 1) {
+    return InvalidArgumentError("give one of --window, --window-cells and --room-at");
+  }
   if (cells) {
     LINEMAP_ASSIGN_OR_RETURN(std::vector<double> v, args.GetDoubleList("--window-cells", 4));
     LINEMAP_ASSIGN_OR_RETURN(CellWindow w, WindowFromCellList(v));
@@ -103,7 +130,7 @@ StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,
   for (double x : v) {
     if (!std::isfinite(x)) return InvalidArgumentError("--window takes finite metres X0,Y0,X1,Y1");
   }
-  LINEMAP_ASSIGN_OR_RETURN(LmapVectors file, LoadLmapVectors(lmap_path, limits));
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader file, LoadLmapHeader(lmap_path, limits));
   StatusOr<CellWindow> w =
       WindowFromMetres(MetreBox{v[0], v[1], v[2], v[3]}, file.meta, file.width, file.height);
   if (!w.ok()) return w.status().WithContext("'" + lmap_path + "'");

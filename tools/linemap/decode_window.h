@@ -29,11 +29,18 @@ StatusOr<CellWindow> WindowFromMetres(const MetreBox& box, const MapMetadata& me
                                       int height);
 
 // --window / --window-cells from the arguments (nullopt when neither is
-// given). Reads the map's size and metadata from `lmap_path` (its vector
-// layers, not its cells) only for --window.
+// given). Reads the map's size and metadata from `lmap_path` (its header
+// alone) only for --window.
 StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,
                                                    const std::string& lmap_path,
                                                    const DecodeLimits& limits);
+
+// --room-at X,Y (map-frame metres) from the arguments: the cell holding the
+// point (nullopt without the option). Reads the map's header from
+// `lmap_path`; a point off the map is an invalid argument naming it.
+StatusOr<std::optional<CellIndex>> RoomCellFromArgs(const ParsedArgs& args,
+                                                    const std::string& lmap_path,
+                                                    const DecodeLimits& limits);
 
 }  // namespace linemap::cli
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "tests/testing/reference_geometry.h"
+
 namespace linemap {
 namespace {
 
@@ -92,10 +94,9 @@ std::set<std::pair<int, int>> Fill(const std::vector<CellIndex>& chain) {
   return out;
 }
 
-// The spec's rule cell by cell: on the chain, or an odd number of steps
-// p -> q with (p.row > r) != (q.row > r) whose row-r endpoint lies at a
-// column greater than c.
-std::set<std::pair<int, int>> SlowFill(const std::vector<CellIndex>& chain) {
+// The cells of `chain`'s box and one cell around it that `encloses`.
+template <typename Encloses>
+std::set<std::pair<int, int>> CellsAround(const std::vector<CellIndex>& chain, Encloses encloses) {
   int min_c = chain[0].col, max_c = chain[0].col, min_r = chain[0].row, max_r = chain[0].row;
   for (const CellIndex& p : chain) {
     min_c = std::min(min_c, p.col);
@@ -103,27 +104,19 @@ std::set<std::pair<int, int>> SlowFill(const std::vector<CellIndex>& chain) {
     min_r = std::min(min_r, p.row);
     max_r = std::max(max_r, p.row);
   }
-  std::set<std::pair<int, int>> on_chain;
-  for (const CellIndex& p : chain) on_chain.emplace(p.col, p.row);
   std::set<std::pair<int, int>> out;
   for (int r = min_r - 1; r <= max_r + 1; ++r) {
     for (int c = min_c - 1; c <= max_c + 1; ++c) {
-      if (on_chain.count({c, r})) {
-        out.emplace(c, r);
-        continue;
-      }
-      int crossings = 0;
-      for (std::size_t i = 0; i < chain.size(); ++i) {
-        const CellIndex p = chain[i];
-        const CellIndex q = chain[(i + 1) % chain.size()];
-        if ((p.row > r) == (q.row > r)) continue;
-        const int x = p.row == r ? p.col : q.col;
-        if (x > c) ++crossings;
-      }
-      if (crossings % 2 == 1) out.emplace(c, r);
+      if (encloses(c, r)) out.emplace(c, r);
     }
   }
   return out;
+}
+
+// The spec's rule cell by cell (ReferenceChainEncloses).
+std::set<std::pair<int, int>> SlowFill(const std::vector<CellIndex>& chain) {
+  return CellsAround(chain,
+                     [&](int c, int r) { return testing::ReferenceChainEncloses(chain, c, r); });
 }
 
 TEST(FillChainTest, KnownAnswerSquareRing) {
@@ -183,6 +176,20 @@ TEST(FillChainTest, AgreesWithSlowVersionOnRandomChains) {
     const std::vector<CellIndex> chain = RandomChain(rng);
     ASSERT_GE(chain.size(), 1u);
     ASSERT_EQ(Fill(chain), SlowFill(chain)) << "trial " << trial;
+  }
+}
+
+// ChainEncloses tests one cell: the cells it accepts around each random
+// chain are exactly the spec's.
+TEST(ChainEnclosesTest, AgreesWithSlowVersionOnRandomChains) {
+  std::mt19937 rng(6);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const std::vector<CellIndex> chain = RandomChain(rng);
+    const std::set<std::pair<int, int>> want = SlowFill(chain);
+    const std::set<std::pair<int, int>> got = CellsAround(chain, [&](int c, int r) {
+      return ChainEncloses(chain, {c, r});
+    });
+    ASSERT_EQ(got, want) << "trial " << trial;
   }
 }
 

@@ -1,0 +1,269 @@
+// What a viewer reads without the rest of a file: the header, the layers'
+// items near a window (equal to filtering the whole file's items by their
+// boxes, on files of every layer layout), and the room at a cell (checked
+// against a transcription of spec 8.2's even-odd rule, the smallest
+// enclosing polygon, and the crop of the whole decode).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <climits>
+#include <optional>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "format/file_io.h"
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
+#include "tests/testing/reference_geometry.h"
+#include "tests/testing/test_support.h"
+
+namespace linemap {
+namespace {
+
+std::vector<std::uint8_t> Fixture(const std::string& name) {
+  StatusOr<std::vector<std::uint8_t>> bytes =
+      ReadFileBytes(testing::SourceDir() + "/tests/data/lmap/" + name, std::uint64_t{1} << 30);
+  EXPECT_TRUE(bytes.ok()) << name;
+  return bytes.ok() ? *bytes : std::vector<std::uint8_t>();
+}
+
+// depot as the default encoder writes it, with layer sections of `side`
+// cells (0: the encoder's choice, one section on depot).
+std::vector<std::uint8_t> Depot(int side) {
+  StatusOr<Grid> map = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  EXPECT_TRUE(map.ok());
+  EncodeOptions options;
+  options.layer_section_cells = side;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*map, options);
+  EXPECT_TRUE(bytes.ok());
+  return *bytes;
+}
+
+// Whether the box of `points` shares a cell with the half-open window.
+bool MeetsWindow(const std::vector<CellIndex>& points, const CellWindow& w) {
+  int c0 = INT_MAX, r0 = INT_MAX, c1 = INT_MIN, r1 = INT_MIN;
+  for (const CellIndex& p : points) {
+    c0 = std::min(c0, p.col);
+    c1 = std::max(c1, p.col);
+    r0 = std::min(r0, p.row);
+    r1 = std::max(r1, p.row);
+  }
+  return !points.empty() && c1 >= w.col0 && c0 <= w.col1 - 1 && r1 >= w.row0 && r0 <= w.row1 - 1;
+}
+
+// The whole file's items that meet `w`, by the test's own box test.
+LmapVectors Filtered(const LmapVectors& all, const CellWindow& w) {
+  LmapVectors out = all;
+  out.walls.clear();
+  out.rooms.clear();
+  out.furniture.clear();
+  for (const WallPolyline& x : all.walls) {
+    if (MeetsWindow(x.points, w)) out.walls.push_back(x);
+  }
+  for (const RoomOutline& x : all.rooms) {
+    if (MeetsWindow(x.polygon, w)) out.rooms.push_back(x);
+  }
+  for (const FurnitureObject& x : all.furniture) {
+    if (MeetsWindow(x.polygon, w)) out.furniture.push_back(x);
+  }
+  return out;
+}
+
+// Corners, single cells, edge rows and columns, the whole map, random
+// windows.
+std::vector<CellWindow> Windows(int w, int h, unsigned seed) {
+  std::vector<CellWindow> out = {{0, 0, 1, 1},
+                                 {w - 1, h - 1, w, h},
+                                 {0, 0, w, h},
+                                 {0, h / 2, w, h / 2 + 1},
+                                 {w / 2, 0, w / 2 + 1, h}};
+  std::mt19937 rng(seed);
+  for (int k = 0; k < 40; ++k) {
+    const int c0 = static_cast<int>(rng() % w), r0 = static_cast<int>(rng() % h);
+    const int side = 1 + static_cast<int>(rng() % 120);
+    out.push_back(
+        {c0, r0, std::min(w, c0 + side), std::min(h, r0 + 1 + static_cast<int>(rng() % 80))});
+  }
+  return out;
+}
+
+void ExpectSameItems(const LmapVectors& got, const LmapVectors& want) {
+  EXPECT_EQ(got.width, want.width);
+  EXPECT_EQ(got.height, want.height);
+  EXPECT_EQ(got.major, want.major);
+  EXPECT_EQ(got.minor, want.minor);
+  EXPECT_EQ(got.meta.resolution, want.meta.resolution);
+  EXPECT_EQ(got.meta.origin.x, want.meta.origin.x);
+  ASSERT_EQ(got.walls.size(), want.walls.size());
+  for (std::size_t i = 0; i < got.walls.size(); ++i) EXPECT_EQ(got.walls[i], want.walls[i]);
+  ASSERT_EQ(got.rooms.size(), want.rooms.size());
+  for (std::size_t i = 0; i < got.rooms.size(); ++i) EXPECT_EQ(got.rooms[i], want.rooms[i]);
+  ASSERT_EQ(got.furniture.size(), want.furniture.size());
+  for (std::size_t i = 0; i < got.furniture.size(); ++i) {
+    EXPECT_EQ(got.furniture[i], want.furniture[i]);
+  }
+}
+
+TEST(VectorQueriesTest, HeaderGivesTheDecodedMapsSizeAndFrame) {
+  for (const char* name : {"depot_v2.lmap", "depot_v2_0.lmap", "depot_v2_raster_only.lmap",
+                           "depot_lossless.lmap", "willow_v2_2_tolerance_1.lmap"}) {
+    SCOPED_TRACE(name);
+    const std::vector<std::uint8_t> bytes = Fixture(name);
+    StatusOr<LmapHeader> header = DecodeLmapHeader(bytes);
+    ASSERT_TRUE(header.ok()) << header.status().message();
+    StatusOr<LmapContents> whole = DecodeLmapContents(bytes);
+    ASSERT_TRUE(whole.ok());
+    EXPECT_EQ(header->major, whole->major);
+    EXPECT_EQ(header->minor, whole->minor);
+    EXPECT_EQ(header->lossless, whole->lossless);
+    EXPECT_EQ(header->width, whole->grid.width());
+    EXPECT_EQ(header->height, whole->grid.height());
+    EXPECT_EQ(header->meta.resolution, whole->grid.meta.resolution);
+    EXPECT_EQ(header->meta.origin.x, whole->grid.meta.origin.x);
+    EXPECT_EQ(header->meta.origin.y, whole->grid.meta.origin.y);
+    EXPECT_EQ(header->meta.origin.yaw, whole->grid.meta.origin.yaw);
+  }
+  EXPECT_FALSE(DecodeLmapHeader(Fixture("truncated.lmap")).ok());
+  const StatusOr<LmapHeader> missing = LoadLmapHeader("/nonexistent/dir/map.lmap");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("/nonexistent/dir/map.lmap"), std::string::npos);
+}
+
+TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
+  // One section, sections of 64 and of 16 cells (LAYR), the 2.0 layer
+  // chunks, and a 1.0 file whose chains are its layers.
+  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files = {
+      {"one section", Depot(0)},
+      {"sections of 64", Fixture("depot_v2_2_sections_64.lmap")},
+      {"sections of 16", Depot(16)},
+      {"2.0 chunks", Fixture("depot_v2_0.lmap")},
+      {"1.0", Fixture("depot_v1_room_chains.lmap")}};
+  for (const auto& [name, bytes] : files) {
+    SCOPED_TRACE(name);
+    StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
+    ASSERT_TRUE(all.ok()) << all.status().message();
+    ASSERT_FALSE(all->rooms.empty());
+    for (const CellWindow& w : Windows(all->width, all->height, 7)) {
+      SCOPED_TRACE(std::to_string(w.col0) + "," + std::to_string(w.row0) + "," +
+                   std::to_string(w.col1) + "," + std::to_string(w.row1));
+      StatusOr<LmapVectors> got = DecodeLmapVectorsInWindow(bytes, w);
+      ASSERT_TRUE(got.ok()) << got.status().message();
+      ExpectSameItems(*got, Filtered(*all, w));
+    }
+  }
+}
+
+TEST(VectorQueriesTest, WindowsEmptyOrPastTheBorderAreRefused) {
+  const std::vector<std::uint8_t> bytes = Depot(0);  // 604 x 307
+  for (const CellWindow& w : std::vector<CellWindow>{
+           {0, 0, 0, 5}, {3, 3, 3, 4}, {-1, 0, 5, 5}, {0, 0, 605, 5}, {0, 300, 5, 308}}) {
+    const StatusOr<LmapVectors> got = DecodeLmapVectorsInWindow(bytes, w);
+    ASSERT_FALSE(got.ok());
+    EXPECT_EQ(got.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(got.status().message().find("604 x 307"), std::string::npos)
+        << got.status().message();
+  }
+}
+
+// |shoelace sum| of a polygon: twice its area.
+long long TwiceArea(const std::vector<CellIndex>& v) {
+  long long sum = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const CellIndex p = v[i], q = v[(i + 1) % v.size()];
+    sum += static_cast<long long>(p.col) * q.row - static_cast<long long>(q.col) * p.row;
+  }
+  return sum < 0 ? -sum : sum;
+}
+
+TEST(VectorQueriesTest, RoomAtIsTheSmallestRoomWhoseBorderEnclosesTheCell) {
+  const std::vector<std::uint8_t> bytes = Depot(64);
+  StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
+  ASSERT_TRUE(all.ok());
+  ASSERT_GE(all->rooms.size(), 2u);
+  StatusOr<Grid> whole = DecodeLmap(bytes);
+  ASSERT_TRUE(whole.ok());
+  // Random cells, and cells of each room's border and just inside it
+  // (where rooms meet).
+  std::mt19937 rng(3);
+  std::vector<CellIndex> cells;
+  for (int k = 0; k < 150; ++k) {
+    cells.push_back({static_cast<int>(rng() % all->width), static_cast<int>(rng() % all->height)});
+  }
+  for (const RoomOutline& room : all->rooms) {
+    for (std::size_t i = 0; i < room.chain.size(); i += 1 + room.chain.size() / 6) {
+      const CellIndex p = room.chain[i];
+      cells.push_back(p);
+      if (p.col + 1 < all->width) cells.push_back({p.col + 1, p.row});
+    }
+  }
+  int found = 0;
+  std::set<std::uint32_t> ids;
+  for (const CellIndex& cell : cells) {
+    SCOPED_TRACE(std::to_string(cell.col) + "," + std::to_string(cell.row));
+    const RoomOutline* want = nullptr;
+    for (const RoomOutline& room : all->rooms) {
+      if (testing::ReferenceChainEncloses(room.chain, cell.col, cell.row) &&
+          (want == nullptr || TwiceArea(room.polygon) < TwiceArea(want->polygon))) {
+        want = &room;
+      }
+    }
+    StatusOr<std::optional<LmapRoom>> got = DecodeLmapRoomAt(bytes, cell);
+    ASSERT_TRUE(got.ok()) << got.status().message();
+    ASSERT_EQ(got->has_value(), want != nullptr);
+    if (want == nullptr) continue;
+    ++found;
+    ids.insert(want->id);
+    const LmapRoom& room = **got;
+    EXPECT_EQ(room.room, *want);
+    // The window is the box of the border's cells, and the grid its crop.
+    int c0 = INT_MAX, r0 = INT_MAX, c1 = INT_MIN, r1 = INT_MIN;
+    for (const CellIndex& p : want->chain) {
+      c0 = std::min(c0, p.col);
+      c1 = std::max(c1, p.col);
+      r0 = std::min(r0, p.row);
+      r1 = std::max(r1, p.row);
+    }
+    EXPECT_EQ(room.window.col0, c0);
+    EXPECT_EQ(room.window.row0, r0);
+    EXPECT_EQ(room.window.col1, c1 + 1);
+    EXPECT_EQ(room.window.row1, r1 + 1);
+    ASSERT_EQ(room.grid.width(), c1 + 1 - c0);
+    ASSERT_EQ(room.grid.height(), r1 + 1 - r0);
+    std::size_t differ = 0;
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) differ += room.grid.at(c - c0, r - r0) != whole->at(c, r);
+    }
+    EXPECT_EQ(differ, 0u);
+    EXPECT_NEAR(room.grid.meta.origin.x, whole->meta.origin.x + c0 * whole->meta.resolution, 1e-9);
+    EXPECT_NEAR(room.grid.meta.origin.y, whole->meta.origin.y + r0 * whole->meta.resolution, 1e-9);
+  }
+  // depot's corridor encloses most of the map and the rooms off it: most
+  // cells have a room, and every room is the answer somewhere.
+  EXPECT_GT(found, static_cast<int>(cells.size()) / 2);
+  EXPECT_EQ(ids.size(), all->rooms.size());
+}
+
+TEST(VectorQueriesTest, RoomAtHasNoRoomWithoutRoomsAndRefusesCellsOffTheMap) {
+  const StatusOr<std::optional<LmapRoom>> none =
+      DecodeLmapRoomAt(Fixture("depot_v2_raster_only.lmap"), {300, 150});
+  ASSERT_TRUE(none.ok()) << none.status().message();
+  EXPECT_FALSE(none->has_value());
+  const std::vector<std::uint8_t> bytes = Depot(0);
+  for (const CellIndex cell : {CellIndex{-1, 0}, CellIndex{0, 307}, CellIndex{604, 10}}) {
+    const StatusOr<std::optional<LmapRoom>> off = DecodeLmapRoomAt(bytes, cell);
+    ASSERT_FALSE(off.ok());
+    EXPECT_EQ(off.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(off.status().message().find("outside the map's 604 x 307 cells"), std::string::npos)
+        << off.status().message();
+  }
+  const StatusOr<std::optional<LmapRoom>> missing =
+      LoadLmapRoomAt("/nonexistent/dir/map.lmap", {1, 1});
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find("/nonexistent/dir/map.lmap"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace linemap
