@@ -22,11 +22,22 @@ Quaternion QuaternionFromYaw(double yaw) {
 
 namespace {
 
+// The thresholds in whole percent, as map_saver rounds them
+// (std::rint(thresh * 100.0)): compared as doubles, 0.29 * 100 is
+// 28.999999999999996 and a cell of 29 would not be free.
+struct PercentThresholds {
+  double free;
+  double occupied;
+};
+PercentThresholds InPercent(const OccupancyThresholds& thresholds) {
+  return {std::rint(thresholds.free * 100.0), std::rint(thresholds.occupied * 100.0)};
+}
+
 // map_saver's rule for one int8 value (see the header).
-Cell CellFromOccupancy(std::int8_t value, const OccupancyThresholds& thresholds) {
+Cell CellFromOccupancy(std::int8_t value, const PercentThresholds& percent) {
   if (value < 0 || value > 100) return Cell::kUnknown;
-  if (value <= thresholds.free * 100.0) return Cell::kFree;
-  if (value >= thresholds.occupied * 100.0) return Cell::kOccupied;
+  if (value <= percent.free) return Cell::kFree;
+  if (value >= percent.occupied) return Cell::kOccupied;
   return Cell::kUnknown;
 }
 
@@ -71,8 +82,9 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
   }
   Grid grid(static_cast<int>(message.width), static_cast<int>(message.height));
   std::vector<Cell>& out = grid.mutable_cells();
+  const PercentThresholds percent = InPercent(thresholds);
   for (std::size_t i = 0; i < out.size(); ++i) {
-    out[i] = CellFromOccupancy(message.data[i], thresholds);
+    out[i] = CellFromOccupancy(message.data[i], percent);
   }
   // The float32 resolution widened as it is (0.05f reads 0.0500000007...);
   // rounding it to the nearest short decimal would invent precision the

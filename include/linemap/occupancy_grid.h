@@ -6,9 +6,9 @@
 // Grid), -1 unknown and 0..100 the occupancy probability in percent;
 // `info.origin` is a 3-D pose whose yaw is read from the quaternion.
 // Reading it as a trinary grid follows nav2's and ROS 1's map_saver: a value
-// v in 0..100 is free when v <= free_thresh * 100, occupied when
-// v >= occupied_thresh * 100, else unknown; -1 and anything outside 0..100
-// is unknown. Writing a grid follows map_server in trinary mode: free 0,
+// v in 0..100 is free when v <= rint(free_thresh * 100), occupied when
+// v >= rint(occupied_thresh * 100) (whole percents), else unknown; -1 and
+// anything outside 0..100 is unknown. Writing a grid follows map_server in trinary mode: free 0,
 // occupied 100, unknown -1.
 #ifndef LINEMAP_OCCUPANCY_GRID_H_
 #define LINEMAP_OCCUPANCY_GRID_H_

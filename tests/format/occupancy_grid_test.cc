@@ -28,8 +28,8 @@ TEST(OccupancyGridTest, ReadsValuesAsMapSaverDoes) {
   OccupancyGridMessage m = Message(8, 1, {-1, 0, 25, 26, 64, 65, 100, 101 - 128});
   StatusOr<Grid> grid = GridFromOccupancyGrid(m);
   ASSERT_TRUE(grid.ok()) << grid.status().message();
-  const std::vector<Cell> expected = {Cell::kUnknown, Cell::kFree,     Cell::kFree,
-                                      Cell::kUnknown, Cell::kUnknown,  Cell::kOccupied,
+  const std::vector<Cell> expected = {Cell::kUnknown,  Cell::kFree,    Cell::kFree,
+                                      Cell::kUnknown,  Cell::kUnknown, Cell::kOccupied,
                                       Cell::kOccupied, Cell::kUnknown};
   EXPECT_EQ(grid->cells(), expected);
 }
@@ -48,6 +48,31 @@ TEST(OccupancyGridTest, CustomThresholds) {
   StatusOr<Grid> grid = GridFromOccupancyGrid(m, {.occupied = 0.5, .free = 0.05});
   ASSERT_TRUE(grid.ok());
   EXPECT_EQ(grid->cells(), (std::vector<Cell>{Cell::kUnknown, Cell::kOccupied, Cell::kOccupied}));
+}
+
+// map_saver compares whole percents, std::rint(thresh * 100): with free
+// 0.29 a value of 29 is free, though 0.29 * 100.0 is 28.999999999999996 in
+// doubles; likewise occupied 0.07, 0.14, 0.28, 0.55, 0.56 and free 0.57,
+// 0.58 (every such threshold of 0.01 .. 0.99 is checked against the rule
+// written with integers).
+TEST(OccupancyGridTest, ThresholdsAreWholePercentsAsMapSaverRoundsThem) {
+  std::vector<std::int8_t> all;
+  for (int v = 0; v <= 100; ++v) all.push_back(static_cast<std::int8_t>(v));
+  const OccupancyGridMessage m = Message(101, 1, all);
+  for (int free = 1; free < 99; ++free) {
+    for (int occupied : {free + 1, 99}) {
+      const OccupancyThresholds t{.occupied = occupied / 100.0, .free = free / 100.0};
+      StatusOr<Grid> grid = GridFromOccupancyGrid(m, t);
+      ASSERT_TRUE(grid.ok());
+      for (int v = 0; v <= 100; ++v) {
+        const Cell want = v <= free       ? Cell::kFree
+                          : v >= occupied ? Cell::kOccupied
+                                          : Cell::kUnknown;
+        ASSERT_EQ(grid->at(v, 0), want)
+            << "free " << free << " occupied " << occupied << " value " << v;
+      }
+    }
+  }
 }
 
 TEST(OccupancyGridTest, OriginYawFromQuaternion) {
