@@ -75,6 +75,14 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
   if (!(message.resolution > 0.0f) || !std::isfinite(message.resolution)) {
     return InvalidArgumentError("occupancy grid: resolution must be positive and finite");
   }
+  // map_saver's whole percents: a free threshold at or above the occupied
+  // one would make the values between them free and occupied at once.
+  const PercentThresholds percent = InPercent(thresholds);
+  if (!(thresholds.free >= 0.0 && thresholds.occupied <= 1.0 && percent.free < percent.occupied)) {
+    return InvalidArgumentError("occupancy grid: thresholds must satisfy 0 <= free (" +
+                                std::to_string(thresholds.free) + ") < occupied (" +
+                                std::to_string(thresholds.occupied) + ") <= 1, in whole percents");
+  }
   const Quaternion& q = message.origin_orientation;
   if (!std::isfinite(message.origin_x) || !std::isfinite(message.origin_y) || !std::isfinite(q.x) ||
       !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w)) {
@@ -82,7 +90,6 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
   }
   Grid grid(static_cast<int>(message.width), static_cast<int>(message.height));
   std::vector<Cell>& out = grid.mutable_cells();
-  const PercentThresholds percent = InPercent(thresholds);
   for (std::size_t i = 0; i < out.size(); ++i) {
     out[i] = CellFromOccupancy(message.data[i], percent);
   }

@@ -158,13 +158,26 @@ StatusOr<YamlMap> ParseMapYaml(const std::string& yaml_path) {
   return out;
 }
 
-void ApplyOverrides(const MapLoadOptions& options, MapMetadata* meta) {
+// The caller's values over the YAML's (or the defaults of a bare image),
+// checked as a YAML's are. A threshold the caller sets must also leave the
+// free one below the occupied one; a YAML's own pair is taken as it is, as
+// map_server takes it.
+Status ApplyOverrides(const MapLoadOptions& options, const std::string& where, MapMetadata* meta) {
   if (options.resolution) meta->resolution = *options.resolution;
   if (options.origin) meta->origin = *options.origin;
   if (options.negate) meta->negate = *options.negate;
   if (options.occupied_thresh) meta->occupied_thresh = *options.occupied_thresh;
   if (options.free_thresh) meta->free_thresh = *options.free_thresh;
   if (options.mode) meta->mode = *options.mode;
+  LINEMAP_RETURN_IF_ERROR(CheckResolution(meta->resolution, where));
+  LINEMAP_RETURN_IF_ERROR(CheckThresholds(*meta, where));
+  if ((options.occupied_thresh || options.free_thresh) &&
+      !(meta->free_thresh < meta->occupied_thresh)) {
+    return InvalidArgumentError(where + ": free threshold " + FormatDouble(meta->free_thresh) +
+                                " must be below the occupied threshold " +
+                                FormatDouble(meta->occupied_thresh));
+  }
+  return Status::Ok();
 }
 
 // True when map_saver's three grey values read back as their own states
@@ -282,11 +295,11 @@ StatusOr<std::unique_ptr<MapRowReader>> MapRowReader::Open(const std::string& pa
   if (IsDirectory(path)) return InvalidArgumentError(Quoted(path) + " is a directory, not a map");
   if (!IsYamlPath(path)) {
     MapMetadata meta;
-    ApplyOverrides(options, &meta);
+    LINEMAP_RETURN_IF_ERROR(ApplyOverrides(options, Quoted(path), &meta));
     return OpenImage(path, meta, options.max_cells);
   }
   LINEMAP_ASSIGN_OR_RETURN(YamlMap yaml, ParseMapYaml(path));
-  ApplyOverrides(options, &yaml.meta);
+  LINEMAP_RETURN_IF_ERROR(ApplyOverrides(options, Quoted(path), &yaml.meta));
   StatusOr<std::unique_ptr<MapRowReader>> reader =
       OpenImage(yaml.image_path, yaml.meta, options.max_cells);
   if (!reader.ok() && reader.status().code() == StatusCode::kNotFound) {

@@ -57,6 +57,11 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
 
 Status CheckEncodeOptions(const EncodeOptions& options) {
   if (options.max_threads < 0) return InvalidArgumentError("max_threads must not be negative");
+  // As ExtractLines asks of its epsilon: under half a cell no lattice line
+  // holds a wall's cells.
+  if (!(options.epsilon_cells >= 0.5)) {
+    return InvalidArgumentError("epsilon must be at least 0.5 cells");
+  }
   if (options.tolerance_cells < 0 || options.tolerance_cells > kMaxToleranceCells) {
     return InvalidArgumentError("tolerance " + std::to_string(options.tolerance_cells) +
                                 " cells: must be 0 (exact) to " +

@@ -71,8 +71,8 @@ struct EncodeOptions {
   int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;
-  // linemap extractor tolerance in cells (default 1.0; raised to
-  // tolerance_cells within a tolerance); see lines.h.
+  // linemap extractor tolerance in cells, at least 0.5 (default 1.0; raised
+  // to tolerance_cells within a tolerance); see lines.h.
   double epsilon_cells = 1.0;
   // The wall layer: false (the default) follows the pixel steps of slanted
   // walls and both faces of two-cell walls, so that the walls' DisPL_ave

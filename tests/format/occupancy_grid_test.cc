@@ -75,6 +75,24 @@ TEST(OccupancyGridTest, ThresholdsAreWholePercentsAsMapSaverRoundsThem) {
   }
 }
 
+// A free threshold at or above the occupied one (in whole percents), or
+// thresholds outside 0..1, are refused rather than read with one of the two
+// rules winning.
+TEST(OccupancyGridTest, ThresholdsOutOfOrderAreRefused) {
+  const OccupancyGridMessage m = Message(2, 1, {10, 70});
+  for (const OccupancyThresholds t : {OccupancyThresholds{.occupied = 0.1, .free = 0.9},
+                                      OccupancyThresholds{.occupied = 0.5, .free = 0.5},
+                                      OccupancyThresholds{.occupied = 0.501, .free = 0.499},
+                                      OccupancyThresholds{.occupied = 1.5, .free = 0.25},
+                                      OccupancyThresholds{.occupied = 0.65, .free = -0.1}}) {
+    const StatusOr<Grid> grid = GridFromOccupancyGrid(m, t);
+    ASSERT_FALSE(grid.ok()) << t.free << " " << t.occupied;
+    EXPECT_EQ(grid.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(grid.status().message().find("thresholds"), std::string::npos);
+  }
+  EXPECT_TRUE(GridFromOccupancyGrid(m, {.occupied = 0.51, .free = 0.5}).ok());
+}
+
 TEST(OccupancyGridTest, OriginYawFromQuaternion) {
   OccupancyGridMessage m = Message(1, 1, {0});
   m.origin_x = -12.5;

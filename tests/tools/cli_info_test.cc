@@ -110,6 +110,43 @@ TEST(CliInfoTest, BareImageTakesCommandLineOverrides) {
       << r.out;
 }
 
+// The map options read images and YAMLs: given with an .lmap file (which
+// keeps its own values) they are refused, not silently dropped; a threshold
+// override that puts free at or above occupied is refused too.
+TEST(CliInfoTest, MapOptionsThatCannotApplyAreRefused) {
+  const std::string dir = MakeTempDir("cli_map_options");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/d.lmap", "--no-png-ratio"}).exit_code, 0);
+  const std::vector<std::vector<std::string>> refused = {
+      {"info", dir + "/d.lmap", "--resolution", "0.1"},
+      {"info", dir + "/d.lmap", "--negate"},
+      {"encode", dir + "/d.lmap", "-o", dir + "/e.lmap", "--origin", "1,2"},
+      {"lines", dir + "/d.lmap", "--mode", "raw"},
+      {"eval", dir + "/d.lmap", depot, "--free-thresh", "0.2"}};
+  for (const std::vector<std::string>& args : refused) {
+    const CliResult r = RunCli(args);
+    SCOPED_TRACE(args[0] + " " + args[2] + ": " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("keeps its own resolution, origin and cells"), std::string::npos);
+    EXPECT_NE(r.err.find(dir + "/d.lmap"), std::string::npos);
+  }
+  EXPECT_FALSE(testing::FileExists(dir + "/e.lmap"));
+  EXPECT_EQ(RunCli({"info", dir + "/d.lmap", "--max-cells", "1000000"}).exit_code, 0);
+  const CliResult order = RunCli({"info", depot, "--free-thresh", "0.9"});
+  EXPECT_EQ(order.exit_code, 2);
+  EXPECT_NE(order.err.find("free threshold 0.9 must be below the occupied threshold 0.65"),
+            std::string::npos)
+      << order.err;
+  const CliResult range = RunCli({"info", depot, "--occupied-thresh", "1.5"});
+  EXPECT_EQ(range.exit_code, 2);
+  EXPECT_NE(range.err.find("occupied_thresh must be within 0..1"), std::string::npos) << range.err;
+  const CliResult epsilon =
+      RunCli({"encode", depot, "-o", dir + "/x.lmap", "--epsilon", "0.3", "--no-png-ratio"});
+  EXPECT_EQ(epsilon.exit_code, 2);
+  EXPECT_NE(epsilon.err.find("--epsilon must be at least 0.5 cells"), std::string::npos)
+      << epsilon.err;
+}
+
 TEST(CliInfoTest, HelpAndVersion) {
   CliResult r = RunCli({"--version"});
   EXPECT_EQ(r.exit_code, 0);

@@ -156,8 +156,11 @@ struct EncodeVisit {
   Status status;
 };
 
+// With --all, the folder is made when its first map is written, so that a
+// bag that cannot be read, or holds no map, leaves nothing behind.
 StatusOr<std::string> OutputPath(EncodeVisit* visit, const std::string& stamp) {
   if (!visit->selection->all) return visit->selection->out;
+  if (visit->names.empty()) LINEMAP_RETURN_IF_ERROR(EnsureFolder(visit->selection->out));
   // Two maps with one stamp get _1, _2, ... after the first.
   std::string name = stamp;
   for (int n = 1; visit->names.count(name) > 0; ++n) name = stamp + "_" + std::to_string(n);
@@ -212,11 +215,6 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
   if (!reader.ok()) return ReportError("encode", reader.status().WithContext("'" + bag_path + "'"));
   StatusOr<BagSelection> selection = BagSelectionFrom(args);
   if (!selection.ok()) return ReportError("encode", selection.status());
-  if (selection->all) {
-    if (const Status made = EnsureFolder(selection->out); !made.ok()) {
-      return ReportError("encode", made);
-    }
-  }
   EncodeVisit visit{&*selection, &options, bag_path, {}, Status::Ok()};
   ros_bridge::BagMapRequest request;
   request.bag_path = bag_path;

@@ -84,6 +84,8 @@ int RunEval(const std::vector<std::string>& args) {
   if (!parsed) return exit_code;
   const std::string& original_path = parsed->positional[0];
   const std::string& decoded_path = parsed->positional[1];
+  const Status applies = CheckMapOptionsApplyTo(original_path, *parsed);
+  if (!applies.ok()) return ReportError("eval", applies);
   StatusOr<MapLoadOptions> original_options = MapLoadOptionsFrom(*parsed);
   if (!original_options.ok()) return ReportError("eval", original_options.status());
   StatusOr<Grid> original = LoadMapWithOptions(original_path, *original_options);

@@ -59,6 +59,8 @@ LayerCounts CountLayers(const LmapContents& c) {
 // `linemap info X.lmap`: the header fields, each chunk with its size and
 // coder, and the counts of the vector layers.
 int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
+  const Status applies = CheckMapOptionsApplyTo(path, args);
+  if (!applies.ok()) return ReportError("info", applies);
   StatusOr<MapLoadOptions> options = MapLoadOptionsFrom(args);
   if (!options.ok()) return ReportError("info", options.status());
   DecodeLimits limits;

@@ -45,8 +45,8 @@ void PrintUsage(std::FILE* out) {
 // `encode --tolerance 1` of a generated 6000 x 6000 office map takes 81 s
 // (24 s of it in the kernel) without the settings below and 56 s with them.
 // (An exact file of a map over 4096 cells a side is coded a band at a time
-// and gains nothing: 8.4-8.6 s either way on the 282-Mcell office map.) Raising the mmap and trim thresholds keeps freed
-// arrays in the heap for reuse; one arena keeps the encoder's second thread
+// and gains nothing: 8.4-8.6 s either way on the 282-Mcell office map.) Raising the mmap and trim
+// thresholds keeps freed arrays in the heap for reuse; one arena keeps the encoder's second thread
 // from mapping its own (a thread arena's heaps hold at most 64 MB, so larger
 // arrays were mapped afresh there whatever the threshold). Process-wide
 // settings, so they belong to the program, not the library (README: "Large

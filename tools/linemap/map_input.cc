@@ -59,7 +59,21 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
   return options;
 }
 
+Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
+  if (!IsLmapFile(path)) return Status::Ok();
+  for (const char* option :
+       {"--resolution", "--origin", "--negate", "--occupied-thresh", "--free-thresh", "--mode"}) {
+    if (args.Has(option)) {
+      return InvalidArgumentError(std::string(option) +
+                                  " reads map images and YAMLs; the .lmap file '" + path +
+                                  "' keeps its own resolution, origin and cells");
+    }
+  }
+  return Status::Ok();
+}
+
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
+  LINEMAP_RETURN_IF_ERROR(CheckMapOptionsApplyTo(path, args));
   LINEMAP_ASSIGN_OR_RETURN(MapLoadOptions options, MapLoadOptionsFrom(args));
   return LoadMapWithOptions(path, options);
 }

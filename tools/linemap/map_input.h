@@ -19,7 +19,13 @@ std::vector<OptionSpec> MapLoadOptionSpecs();
 
 StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args);
 
-// Loads `path` as a map (YAML or image) with the overrides in `args`.
+// Invalid argument when `path` is an .lmap file and `args` hold an option
+// that only reading an image gives a meaning (all but --max-cells): the
+// file's own values stand, and silently ignoring the option would hide it.
+Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args);
+
+// Loads `path` as a map (.lmap, YAML or image) with the overrides in `args`
+// (CheckMapOptionsApplyTo first).
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args);
 
 // Loads `path` (.lmap, YAML or image) with `options`; for an .lmap file only

@@ -148,6 +148,22 @@ TEST(CodecTest, ThreadsDoNotChangeTheBytes) {
   EXPECT_NE(bad.status().message().find("max_threads"), std::string::npos);
 }
 
+// The walls' epsilon obeys ExtractLines' own bound (0.5 cells): under it no
+// lattice line holds a wall's cells, and `linemap lines` refuses it too.
+TEST(CodecTest, EpsilonUnderHalfACellIsRefused) {
+  for (const double epsilon : {0.3, 0.0, -1.0}) {
+    EncodeOptions options;
+    options.epsilon_cells = epsilon;
+    const auto bad = EncodeLmap(Grid(4, 4, Cell::kFree), options);
+    ASSERT_FALSE(bad.ok()) << epsilon;
+    EXPECT_EQ(bad.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(bad.status().message().find("at least 0.5 cells"), std::string::npos);
+  }
+  EncodeOptions half;
+  half.epsilon_cells = 0.5;
+  EXPECT_TRUE(EncodeLmap(Grid(4, 4, Cell::kFree), half).ok());
+}
+
 // A 1.0 file of a width x height map holding `chunks` (type, payload)
 // after its header.
 using ChunkList = std::vector<std::pair<std::string, std::vector<std::uint8_t>>>;
