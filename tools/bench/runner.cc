@@ -1,6 +1,7 @@
 #include "tools/bench/runner.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "tools/bench/corpus.h"
 #include "tools/bench/general_codecs.h"
@@ -296,9 +298,30 @@ struct ScalingMap {
   std::vector<double> png_encode_ms, png_decode_ms, lmap_encode_ms, lmap_decode_ms;
   std::vector<double> lmap_window_ms;
   bool window_failed = false;
+  std::optional<CellIndex> room_cell;
+  std::vector<double> lmap_room_ms;
+  bool room_failed = false;
   double rmline_ms = 0;
   double linemap_lines_ms = 0;
 };
+
+// The cell nearest the centre of `window` (rings of growing Chebyshev
+// radius, up to 64 cells) that some room of `lmap` holds, or nullopt.
+std::optional<CellIndex> CellInARoom(const std::vector<std::uint8_t>& lmap,
+                                     const CellWindow& window) {
+  const CellIndex centre{(window.col0 + window.col1) / 2, (window.row0 + window.row1) / 2};
+  for (int radius = 0; radius <= 64; ++radius) {
+    for (int dr = -radius; dr <= radius; ++dr) {
+      for (int dc = -radius; dc <= radius; ++dc) {
+        if (std::max(std::abs(dc), std::abs(dr)) != radius) continue;
+        const CellIndex cell{centre.col + dc, centre.row + dr};
+        StatusOr<std::optional<LmapRoom>> room = DecodeLmapRoomAt(lmap, cell);
+        if (room.ok() && room->has_value()) return cell;
+      }
+    }
+  }
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -324,6 +347,7 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
     if (StatusOr<std::vector<std::uint8_t>> lmap = EncodeLmap(map.grid, EncodeOptions());
         lmap.ok()) {
       map.lmap = *std::move(lmap);
+      map.room_cell = CellInARoom(map.lmap, OnePercentWindow(map.grid));
     }
     LineExtractionOptions options;
     options.method = LineMethod::kRmLine;
@@ -354,6 +378,15 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
         map.lmap_window_ms.push_back(
             once([&] { window_ok = DecodeLmapRegion(map.lmap, window).ok(); }));
         map.window_failed = map.window_failed || !window_ok;
+        if (map.room_cell) {
+          bool room_ok = true;
+          map.lmap_room_ms.push_back(once([&] {
+            const StatusOr<std::optional<LmapRoom>> room =
+                DecodeLmapRoomAt(map.lmap, *map.room_cell);
+            room_ok = room.ok() && room->has_value();
+          }));
+          map.room_failed = map.room_failed || !room_ok;
+        }
       }
     }
   }
@@ -383,6 +416,8 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
       if (row.lmap_window_ms && *row.lmap_window_ms > 0) {
         row.lmap_window_speedup = Median(map.lmap_decode_ms) / *row.lmap_window_ms;
       }
+      if (!map.lmap_room_ms.empty() && !map.room_failed)
+        row.lmap_room_ms = Median(map.lmap_room_ms);
     }
     rows.push_back(row);
   }

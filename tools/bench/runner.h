@@ -49,6 +49,11 @@ struct ScalingRow {
   // map: ms (median) and how many times faster; unset if a window failed.
   std::optional<double> lmap_window_ms;
   std::optional<double> lmap_window_speedup;
+  // One room as a viewer loads it when the user picks a point: the room
+  // holding the cell nearest the window's centre that lies in a room,
+  // with the cells of its box (DecodeLmapRoomAt from the file's bytes): ms
+  // (median); unset when no room was found or a load failed.
+  std::optional<double> lmap_room_ms;
 };
 
 // Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16
