@@ -75,6 +75,27 @@ TEST(CmdEncodeTest, RefusesToOverwriteTheInputMapOrItsImage) {
   ExpectRefused({"encode", dir + "/d.lmap", "-o", dir + "/./d.lmap"}, dir, {"d.lmap"});
 }
 
+// --threads reads the same way in encode and decode: 0..4096, one message.
+TEST(CmdEncodeTest, ThreadsOutOfRangeAreRefusedAlikeByEncodeAndDecode) {
+  const std::string dir = MakeTempDir("encode_threads");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/a.lmap"}).exit_code, 0);
+  for (const char* threads : {"-1", "4097", "two", "1.5"}) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"encode", map, "-o", dir + "/b.lmap", "--threads", threads},
+          std::vector<std::string>{"decode", dir + "/a.lmap", "-o", dir + "/b.yaml", "--threads",
+                                   threads}}) {
+      const CliResult r = RunCli(args);
+      EXPECT_EQ(r.exit_code, 2) << args[0] << " " << threads;
+      EXPECT_NE(r.err.find("--threads takes a whole number 0..4096 (0: one per core), not '" +
+                           std::string(threads) + "'"),
+                std::string::npos)
+          << r.err;
+    }
+  }
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"a.lmap"});
+}
+
 TEST(CmdEncodeTest, OutputNameMustEndInLmap) {
   const std::string dir = MakeTempDir("encode_suffix");
   const std::string yaml = CopyDepot(dir);

@@ -55,10 +55,15 @@ TEST(CmdPlanTest, SvgIsWritten) {
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
-TEST(CmdPlanTest, BadStartsAndGoalsExitOne) {
+// A start or goal off the map is bad input (exit 2); one in an obstacle or
+// too near one gets no plan (exit 1).
+TEST(CmdPlanTest, BadStartsAndGoalsExitTwoOffTheMapElseOne) {
   CliResult r = RunCli({"plan", Arena(), "--from", "0.5,0.5", "--to", "13.5,2.5"});
-  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("outside the map"), std::string::npos) << r.err;
+  r = RunCli({"plan", Arena(), "--from", "-1,0.5", "--to", "3.5,2.5"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("start -1.000,0.500 is outside the map"), std::string::npos) << r.err;
   r = RunCli({"plan", Arena(), "--from", "0.01,0.01", "--to", "3.5,2.5"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("in an obstacle"), std::string::npos) << r.err;

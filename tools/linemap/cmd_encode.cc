@@ -120,8 +120,7 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   if (args.Has("--png-ratio") && args.Has("--no-png-ratio")) {
     return InvalidArgumentError("--png-ratio and --no-png-ratio exclude each other");
   }
-  LINEMAP_ASSIGN_OR_RETURN(options.max_threads, args.GetInt("--threads", 0));
-  if (options.max_threads < 0) return InvalidArgumentError("--threads must be 0 or more");
+  LINEMAP_ASSIGN_OR_RETURN(options.max_threads, ThreadsFrom(args));
   LINEMAP_ASSIGN_OR_RETURN(options.tile_size_cells, args.GetInt("--tile-size", 0));
   if (options.tile_size_cells != 0 &&
       (options.tile_size_cells < 16 || options.tile_size_cells > 65536)) {

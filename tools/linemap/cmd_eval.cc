@@ -163,8 +163,8 @@ int RunEval(const std::vector<std::string>& args) {
   std::printf("same geometry:        %s\n", m.same_geometry ? "yes" : "NO");
   std::printf("cells equal:          %zu of %zu (%.4f)\n", m.cells_equal, m.cells,
               m.cells ? static_cast<double>(m.cells_equal) / m.cells : 1.0);
-  std::printf("obstacle recall (1):  %.4f\n", m.obstacle_recall_1);
-  std::printf("obstacle precision(1):%.4f\n", m.obstacle_precision_1);
+  std::printf("obstacle recall:      %.4f (within 1 cell)\n", m.obstacle_recall_1);
+  std::printf("obstacle precision:   %.4f (within 1 cell)\n", m.obstacle_precision_1);
   std::printf("free IoU:             %.4f\n", m.free_iou);
   std::printf("leaks:                %zu\n", m.leaks);
   std::printf("unknown turned free:  %zu (%.4f of free)\n", m.unknown_turned_free,

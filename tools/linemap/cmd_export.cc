@@ -62,8 +62,9 @@ int RunExport(const std::vector<std::string>& args) {
   const bool geojson = EndsWith(*out, ".geojson") || EndsWith(*out, ".json");
   const bool svg = EndsWith(*out, ".svg");
   if (!csv && !geojson && !svg) {
-    return ReportError("export",
-                       InvalidArgumentError("'" + *out + "' must end in .csv, .geojson or .svg"));
+    return ReportError(
+        "export",
+        InvalidArgumentError("'" + *out + "' must end in .csv, .geojson (or .json) or .svg"));
   }
   if (IsDirectory(*out)) {
     return ReportError("export", InvalidArgumentError("'" + *out + "' is a directory"));

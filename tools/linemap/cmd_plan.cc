@@ -243,7 +243,12 @@ int RunPlan(const std::vector<std::string>& args) {
   if (parsed->Has("--json")) std::printf("%s\n", ResultJson(*result, ms).c_str());
   if (!result->found()) {
     std::fprintf(stderr, "linemap plan: %s: %s\n", map_path.c_str(), result->message.c_str());
-    return kExitFailure;
+    // A point off the map is bad input, as a --pose off the map is for
+    // encode and segment; a start in an obstacle or a goal out of reach is
+    // the planner's answer about this map.
+    const bool off_map = result->outcome == PlanOutcome::kStartOutsideMap ||
+                         result->outcome == PlanOutcome::kGoalOutsideMap;
+    return off_map ? kExitBadInput : kExitFailure;
   }
   if (!parsed->Has("--json")) PrintText(*result, ms);
   return kExitOk;

@@ -24,10 +24,18 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
                            args.GetUint64("--max-cells", limits.max_cells, /*min=*/1));
   LINEMAP_ASSIGN_OR_RETURN(limits.max_file_bytes,
                            args.GetUint64("--max-file-bytes", limits.max_file_bytes, /*min=*/1));
-  LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t threads, args.GetUint64("--threads", 0));
-  if (threads > 4096) return InvalidArgumentError("--threads must be 0..4096");
-  limits.max_threads = static_cast<int>(threads);
+  LINEMAP_ASSIGN_OR_RETURN(limits.max_threads, ThreadsFrom(args));
   return limits;
+}
+
+StatusOr<int> ThreadsFrom(const ParsedArgs& args) {
+  constexpr int kMaxThreads = 4096;
+  StatusOr<int> threads = args.GetInt("--threads", 0);
+  if (!threads.ok() || *threads < 0 || *threads > kMaxThreads) {
+    return InvalidArgumentError("--threads takes a whole number 0..4096 (0: one per core), not '" +
+                                args.Get("--threads").value_or("") + "'");
+  }
+  return threads;
 }
 
 bool IsLmapFile(const std::string& path) {

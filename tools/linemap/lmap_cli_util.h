@@ -17,6 +17,9 @@ namespace linemap::cli {
 std::vector<OptionSpec> DecodeLimitOptionSpecs();
 StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 
+// --threads N: 0 (one per core) to 4096, the same for every command.
+StatusOr<int> ThreadsFrom(const ParsedArgs& args);
+
 // True when `path` ends in .lmap or the file starts with the .lmap signature.
 bool IsLmapFile(const std::string& path);
 
