@@ -217,6 +217,19 @@ struct EncodeReport {
   double seconds = 0;
 };
 
+// "2.2x smaller" / "1.1x larger" / "the same size" for a size ratio.
+std::string SmallerOrLarger(double ratio) {
+  char text[48];
+  if (ratio > 0 && ratio < 1) {
+    std::snprintf(text, sizeof(text), "%.1fx smaller", 1.0 / ratio);
+  } else if (ratio > 1) {
+    std::snprintf(text, sizeof(text), "%.1fx larger", ratio);
+  } else {
+    std::snprintf(text, sizeof(text), "the same size");
+  }
+  return text;
+}
+
 int PrintReport(const EncodeReport& report, const std::string& out, const ParsedArgs& parsed,
                 const EncodeOptions& options) {
   const std::uint64_t cells =
@@ -244,8 +257,8 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
               : options.vector_layers ? "exact, with walls, rooms and furniture"
                                       : "exact, cells only");
   if (report.png_bytes) {
-    std::printf("png-9:   %zu bytes; lmap / png = %.4f (1/%.1f)\n", *report.png_bytes, ratio,
-                ratio > 0 ? 1.0 / ratio : 0.0);
+    std::printf("png-9:   %zu bytes; lmap / png = %.4f (%s)\n", *report.png_bytes, ratio,
+                SmallerOrLarger(ratio).c_str());
   } else if (!parsed.Has("--no-png-ratio")) {
     std::printf("png-9:   not made above 2^26 cells (--png-ratio makes it)\n");
   }
