@@ -5,13 +5,15 @@
 // Publishes the map latched on `map` (nav_msgs/OccupancyGrid) and its
 // metadata on `map_metadata` (nav_msgs/MapMetaData), and serves it on
 // `static_map` (nav_msgs/GetMap), as map_server does. MAP is the argument or
-// the private parameter ~map. Exit codes: 1 no master or a ROS failure, 2
-// bad usage or a map that cannot be read.
+// the private parameter ~map. A ~window that reaches past the map is
+// refused. Exit codes: 1 no master or a ROS failure, 2 bad usage, a map that
+// cannot be read or a window past it.
 #include <ros/ros.h>
 
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ros/node_support.h"
@@ -25,7 +27,8 @@ constexpr const char* kUsage =
     "usage: lmap_server [MAP] [--wait-master S]\n"
     "  MAP               .lmap file, map YAML or PGM/PNG image (or the parameter ~map)\n"
     "  --wait-master S   seconds to wait for the ROS master (default 10)\n"
-    "parameters: ~map, ~frame_id (default map), ~window x0,y0,x1,y1 (metres, optional)\n"
+    "parameters: ~map, ~frame_id (default map), ~window x0,y0,x1,y1 (metres, optional;\n"
+    "            the cells whose squares overlap it, refused when it reaches past the map)\n"
     "publishes map (latched), map_metadata (latched); serves static_map\n";
 
 struct ServerArgs {
@@ -100,34 +103,80 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "lmap_server: %s\n%s", args.status().message().c_str(), kUsage);
     return kExitBadInput;
   }
-  UseDefaultMasterUriIfUnset(argc, argv);
-  ros::init(argc, argv, "lmap_server");
-  const Status master = WaitForMaster(args->wait_master_seconds);
+  // The map and window the command line names (MAP or `_map:=`,
+  // `_window:=`) are read before the master is waited for: a map that
+  // cannot be read, or a window past it, is refused at once (exit 2), not
+  // after the wait. roscpp puts `_name:=` arguments on the parameter server
+  // over what a launch file set, so ~map and ~window would hold these.
+  std::optional<std::string> map_path = args->map_path;
+  if (!map_path) map_path = PrivateParameterArgument(argc, argv, "map");
+  const std::optional<std::string> window_text = PrivateParameterArgument(argc, argv, "window");
+  std::optional<Window> window;
+  if (window_text) {
+    StatusOr<Window> parsed = ParseWindow(*window_text);
+    if (!parsed.ok()) {
+      std::fprintf(stderr, "lmap_server: %s\n", parsed.status().message().c_str());
+      return kExitBadInput;
+    }
+    window = *parsed;
+  }
+  std::optional<Grid> grid;
+  if (map_path) {
+    StatusOr<Grid> loaded = LoadServedMap(*map_path, window);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "lmap_server: %s\n", loaded.status().message().c_str());
+      return ExitCodeFor(loaded.status());
+    }
+    grid = std::move(*loaded);
+  }
+
+  const Status master =
+      InitNodeAndWaitForMaster(argc, argv, "lmap_server", /*options=*/0, args->wait_master_seconds);
   if (!master.ok()) {
     std::fprintf(stderr, "lmap_server: %s\n", master.message().c_str());
     return kExitFailure;
   }
   ros::NodeHandle private_nh("~");
-  std::string map_path;
-  if (args->map_path) {
-    map_path = *args->map_path;
-  } else if (!private_nh.getParam("map", map_path)) {
-    std::fprintf(stderr, "lmap_server: no map given (argument MAP or parameter ~map)\n%s", kUsage);
-    return kExitBadInput;
+  if (!map_path) {
+    std::string param;
+    if (!private_nh.getParam("map", param)) {
+      std::fprintf(stderr, "lmap_server: no map given (argument MAP or parameter ~map)\n%s",
+                   kUsage);
+      return kExitBadInput;
+    }
+    map_path = param;
   }
   const std::string frame_id = private_nh.param<std::string>("frame_id", "map");
-  StatusOr<std::optional<Window>> window = WindowParameter(private_nh);
-  if (!window.ok()) {
-    std::fprintf(stderr, "lmap_server: %s\n", window.status().message().c_str());
-    return kExitBadInput;
+  if (!window_text) {
+    // Only the parameter server (a launch file's <param>) can hold one now.
+    StatusOr<std::optional<Window>> parameter = WindowParameter(private_nh);
+    if (!parameter.ok()) {
+      std::fprintf(stderr, "lmap_server: %s\n", parameter.status().message().c_str());
+      return kExitBadInput;
+    }
+    window = *parameter;
+    if (grid && window) {
+      // The map was read whole before the master answered: crop it to the
+      // same cells LoadServedMap would have decoded.
+      StatusOr<Grid> cropped = CropToWindow(*grid, *window);
+      if (!cropped.ok()) {
+        std::fprintf(stderr, "lmap_server: '%s': %s\n", map_path->c_str(),
+                     cropped.status().message().c_str());
+        return ExitCodeFor(cropped.status());
+      }
+      grid = std::move(*cropped);
+    }
   }
-  StatusOr<Grid> grid = LoadServedMap(map_path, *window);
-  if (!grid.ok()) {
-    std::fprintf(stderr, "lmap_server: %s\n", grid.status().message().c_str());
-    return ExitCodeFor(grid.status());
+  if (!grid) {
+    StatusOr<Grid> loaded = LoadServedMap(*map_path, window);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "lmap_server: %s\n", loaded.status().message().c_str());
+      return ExitCodeFor(loaded.status());
+    }
+    grid = std::move(*loaded);
   }
   MapServer server(RosMessageFromGrid(*grid, frame_id, ros::Time::now()));
-  ROS_INFO("lmap_server: serving %s: %d x %d cells at %.3f m/cell, frame '%s'", map_path.c_str(),
+  ROS_INFO("lmap_server: serving %s: %d x %d cells at %.3f m/cell, frame '%s'", map_path->c_str(),
            grid->width(), grid->height(), grid->meta.resolution, frame_id.c_str());
   ros::spin();
   return kExitOk;

@@ -1,7 +1,9 @@
 #include "ros/node_support.h"
 
+#include <ros/init.h>
 #include <ros/master.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -38,10 +40,23 @@ void UseDefaultMasterUriIfUnset(int argc, char** argv) {
   ::setenv("ROS_MASTER_URI", kDefaultMasterUri, /*overwrite=*/1);
 }
 
-Status WaitForMaster(double seconds) {
+Status InitNodeAndWaitForMaster(int& argc, char** argv, const std::string& name,
+                                std::uint32_t options, double seconds) {
   using Clock = std::chrono::steady_clock;
+  // Longer waits are as good as forever, and keep the deadline and roscpp's
+  // WallDuration (32-bit seconds) in range.
+  const double wait = std::min(seconds, 1e8);
   const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                        std::chrono::duration<double>(seconds));
+                                                        std::chrono::duration<double>(wait));
+  UseDefaultMasterUriIfUnset(argc, argv);
+  // ros::init stores each `_name:=value` argument on the master's parameter
+  // server, retrying until a master answers: without a timeout a node given
+  // one would hang there when no master runs. A timeout of 0 means none.
+  ros::master::setRetryTimeout(ros::WallDuration(std::max(wait, 1e-3)));
+  ros::init(argc, argv, name, options);
+  // A running node that loses its master waits for it to come back, as
+  // roscpp's nodes do.
+  ros::master::setRetryTimeout(ros::WallDuration(0));
   while (!ros::master::check()) {
     if (Clock::now() >= deadline) {
       char text[64];
@@ -52,6 +67,17 @@ Status WaitForMaster(double seconds) {
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return Status::Ok();
+}
+
+std::optional<std::string> PrivateParameterArgument(int argc, char** argv,
+                                                    const std::string& name) {
+  const std::string prefix = "_" + name + ":=";
+  std::optional<std::string> value;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg(argv[i]);
+    if (arg.starts_with(prefix)) value = std::string(arg.substr(prefix.size()));
+  }
+  return value;
 }
 
 StatusOr<double> ParseNumber(const std::string& option, const std::string& text) {

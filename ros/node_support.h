@@ -3,6 +3,8 @@
 #ifndef LINEMAP_ROS_NODE_SUPPORT_H_
 #define LINEMAP_ROS_NODE_SUPPORT_H_
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,10 +35,18 @@ inline constexpr const char* kDefaultMasterUri = "http://localhost:11311/";
 // process has one thread).
 void UseDefaultMasterUriIfUnset(int argc, char** argv);
 
-// Polls the master (ros::master::check, after ros::init) every 0.1 s until it
-// answers or `seconds` have passed; fails (I/O error, naming the URI and the
-// wait) when it never answered.
-Status WaitForMaster(double seconds);
+// ros::init(argc, argv, name, options), then waits for the master: polls
+// it (ros::master::check) every 0.1 s until it answers or `seconds` have
+// passed since the call; fails (I/O error, naming the URI and the wait) when
+// it never answered. Sets ROS_MASTER_URI first as UseDefaultMasterUriIfUnset
+// does.
+Status InitNodeAndWaitForMaster(int& argc, char** argv, const std::string& name,
+                                std::uint32_t options, double seconds);
+
+// The value of the last `_NAME:=VALUE` among the arguments, as ros::init
+// reads them into the private parameter ~NAME, or nullopt. Lets a node check
+// such a parameter before it has a master to ask.
+std::optional<std::string> PrivateParameterArgument(int argc, char** argv, const std::string& name);
 
 // A non-negative finite number of seconds, or a message naming `option`.
 StatusOr<double> ParseSeconds(const std::string& option, const std::string& text);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -67,13 +68,26 @@ StatusOr<Window> ParseWindow(const std::string& text) {
 
 namespace {
 
+std::string WindowText(const Window& window) {
+  char text[128];
+  std::snprintf(text, sizeof(text), "window %g,%g,%g,%g m", window.x0, window.y0, window.x1,
+                window.y1);
+  return text;
+}
+
 // The cells a window in metres covers on a map of `width` x `height` cells
-// with `frame`'s resolution and origin.
-StatusOr<CellWindow> WindowCells(int width, int height, const Grid& frame, const Window& window) {
+// with `meta`'s resolution and origin; refused when it reaches past the map,
+// as `linemap decode --window` refuses such a window: the map served is
+// then what was asked for, or nothing.
+StatusOr<CellWindow> WindowCells(int width, int height, const MapMetadata& meta,
+                                 const Window& window) {
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = meta;
   // The window's corners in cell units (cell centres at integers), then the
   // cells c with c - 0.5 < u1 and c + 0.5 > u0. The small slack keeps a
   // window edge that lies on a cell border (1.0 m at 0.05 m per cell reads
-  // 19.5000000004 cells) from taking in a cell it does not overlap.
+  // 19.5000000004 cells) from taking in a cell it does not overlap, and so
+  // an edge on the map's border from reaching past it.
   constexpr double kSlack = 1e-6;
   double col_min = INFINITY, col_max = -INFINITY, row_min = INFINITY, row_max = -INFINITY;
   for (const double x : {window.x0, window.x1}) {
@@ -86,13 +100,34 @@ StatusOr<CellWindow> WindowCells(int width, int height, const Grid& frame, const
       row_max = std::max(row_max, row);
     }
   }
-  const double c0 = std::max(std::floor(col_min - 0.5 + kSlack) + 1.0, 0.0);
-  const double r0 = std::max(std::floor(row_min - 0.5 + kSlack) + 1.0, 0.0);
-  const double c1 = std::min(std::ceil(col_max + 0.5 - kSlack) - 1.0, width - 1.0);
-  const double r1 = std::min(std::ceil(row_max + 0.5 - kSlack) - 1.0, height - 1.0);
+  // First and last cells, inclusive; still doubles, as a window far off the
+  // map gives indices no int holds.
+  const double c0 = std::floor(col_min - 0.5 + kSlack) + 1.0;
+  const double r0 = std::floor(row_min - 0.5 + kSlack) + 1.0;
+  const double c1 = std::ceil(col_max + 0.5 - kSlack) - 1.0;
+  const double r1 = std::ceil(row_max + 0.5 - kSlack) - 1.0;
   if (c0 > c1 || r0 > r1) {
-    return InvalidArgumentError("window does not overlap the map (" + std::to_string(width) +
-                                " x " + std::to_string(height) + " cells)");
+    // Only a window thinner than the slack, along a cell border.
+    return InvalidArgumentError(WindowText(window) + " overlaps no cell");
+  }
+  // Negated, so that a NaN (a window near the limits of a double, turned)
+  // is refused too.
+  if (!(c0 >= 0 && r0 >= 0 && c1 <= width - 1 && r1 <= height - 1)) {
+    // The cells named as `linemap decode` names them (half-open), held to
+    // a few map sizes off the map so that they print as whole numbers.
+    const double limit = 4.0 * std::max(width, height) + 4;
+    auto cell = [&](double v) {
+      return std::isnan(v) ? 0LL : static_cast<long long>(std::clamp(v, -limit, limit));
+    };
+    double ax = 0, ay = 0, bx = 0, by = 0;
+    frame.CellToWorld(-0.5, -0.5, &ax, &ay);
+    frame.CellToWorld(width - 0.5, height - 0.5, &bx, &by);
+    char text[320];
+    std::snprintf(text, sizeof(text),
+                  " meets cells [%lld, %lld) x [%lld, %lld), past the map's border: the map's "
+                  "%d x %d cells span from %g,%g to %g,%g m",
+                  cell(c0), cell(c1 + 1), cell(r0), cell(r1 + 1), width, height, ax, ay, bx, by);
+    return InvalidArgumentError(WindowText(window) + text);
   }
   return CellWindow{static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c1) + 1,
                     static_cast<int>(r1) + 1};
@@ -101,7 +136,8 @@ StatusOr<CellWindow> WindowCells(int width, int height, const Grid& frame, const
 }  // namespace
 
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
-  LINEMAP_ASSIGN_OR_RETURN(CellWindow w, WindowCells(grid.width(), grid.height(), grid, window));
+  LINEMAP_ASSIGN_OR_RETURN(CellWindow w,
+                           WindowCells(grid.width(), grid.height(), grid.meta, window));
   Grid out(w.col1 - w.col0, w.row1 - w.row0);
   for (int row = 0; row < out.height(); ++row) {
     for (int col = 0; col < out.width(); ++col)
@@ -115,14 +151,12 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
 
 namespace {
 
-// A window of an .lmap file: only the tiles it meets are decoded (the layers
-// are read first, for the map's size and frame).
+// A window of an .lmap file: only the tiles it meets are decoded (the
+// header is read first, for the map's size and frame).
 StatusOr<Grid> LoadLmapWindow(const std::string& path, const Window& window) {
-  LINEMAP_ASSIGN_OR_RETURN(LmapVectors vectors, LoadLmapVectors(path));
-  Grid frame;
-  frame.meta = vectors.meta;
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(path));
   LINEMAP_ASSIGN_OR_RETURN(CellWindow cells,
-                           WindowCells(vectors.width, vectors.height, frame, window));
+                           WindowCells(header.width, header.height, header.meta, window));
   return LoadLmapRegion(path, cells);
 }
 

@@ -28,13 +28,15 @@ StatusOr<Window> WindowFromValues(const double* values, int count);
 // The cells of `grid` whose squares overlap the window's interior, as a grid
 // of their own whose origin is the lower-left corner of its first cell (the
 // yaw is kept; for a rotated map the window's bounding box in cells is
-// taken). Fails (invalid argument) when no cell overlaps.
+// taken). Fails (invalid argument) when those cells reach past the map's
+// border (a window whose edges lie on the border does not), naming the
+// window and the map's extent, and when no cell overlaps.
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 
 // Loads `path` (.lmap, map YAML or bare PGM/PNG) and, with a window, keeps
-// only the window's cells (the same cells as CropToWindow). A 2.0 .lmap
-// file decodes only the tiles the window meets (LoadLmapRegion); a map
-// image is loaded whole and cropped.
+// only the window's cells (the same cells as CropToWindow, refused as it
+// refuses them). A 2.0 .lmap file decodes only the tiles the window meets
+// (LoadLmapRegion); a map image is loaded whole and cropped.
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window);
 
 }  // namespace linemap::ros_bridge

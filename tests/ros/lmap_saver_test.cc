@@ -9,8 +9,11 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <ctime>
+#include <sstream>
 #include <string>
 
 #include "format/file_io.h"
@@ -266,6 +269,96 @@ TEST(LmapSaverTest, BadOptionExitsTwo) {
                      "saver");
   EXPECT_EQ(saver.Wait(10).value_or(-1), 2);
   EXPECT_NE(saver.Stderr().find("--free must be below --occ"), std::string::npos) << saver.Stderr();
+}
+
+// --tolerance is checked at startup (not when a map arrives, which with
+// --every may be hours later): a whole number 0..4, else exit 2 naming the
+// range. 1e10 is out of an int's range, so it must be refused before any
+// conversion to int.
+TEST(LmapSaverTest, ToleranceOutsideZeroToFourExitsTwoAtStartup) {
+  const std::string scratch = MakeTempDir("tolerance");
+  for (const std::string value : {"5", "1e10", "-1", "1.5", "-1e10"}) {
+    ChildProcess saver({LmapSaverPath(), "--tolerance", value, "--every", "--wait-master", "60"},
+                       {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
+                       "saver");
+    const std::optional<int> code = saver.Wait(10);
+    ASSERT_TRUE(code.has_value()) << "--tolerance " << value << ": still running after 10 s";
+    EXPECT_EQ(*code, 2) << value << ": " << saver.Stderr();
+    EXPECT_NE(saver.Stderr().find("0..4"), std::string::npos) << value << ": " << saver.Stderr();
+  }
+  // 0 and 4 are taken: the saver goes on to wait for the master (none here).
+  for (const std::string value : {"0", "4"}) {
+    ChildProcess saver({LmapSaverPath(), "--tolerance", value, "--wait-master", "0"},
+                       {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
+                       "saver");
+    EXPECT_EQ(saver.Wait(10).value_or(-1), 1) << value << ": " << saver.Stderr();
+    EXPECT_NE(saver.Stderr().find("no ROS master"), std::string::npos) << saver.Stderr();
+  }
+}
+
+// The median of `values`.
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+std::string OneDecimal(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f", value);
+  return text;
+}
+
+// The usage text quotes the decode time of --compact files as the
+// benchmark measured it (tools/bench/results/results.csv, one row per map):
+// the medians of the maps' decode times, and the median and largest ratio
+// per map.
+TEST(LmapSaverTest, UsageQuotesTheMeasuredCompactDecodeTimes) {
+  std::istringstream csv(ReadFile(SourceDir() + "/tools/bench/results/results.csv"));
+  auto split = [](const std::string& line) {
+    std::vector<std::string> fields;
+    std::istringstream stream(line);
+    std::string field;
+    while (std::getline(stream, field, ',')) fields.push_back(field);
+    return fields;
+  };
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  const std::vector<std::string> header = split(line);
+  const auto column = [&](const std::string& name) {
+    return std::find(header.begin(), header.end(), name) - header.begin();
+  };
+  const std::size_t compact_ms = column("lmap2_compact_decode_ms");
+  const std::size_t exact_ms = column("lmap2_decode_ms");
+  ASSERT_LT(compact_ms, header.size());
+  ASSERT_LT(exact_ms, header.size());
+  std::vector<double> compact, exact, ratios;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> fields = split(line);
+    ASSERT_GT(fields.size(), std::max(compact_ms, exact_ms)) << line;
+    compact.push_back(std::stod(fields[compact_ms]));
+    exact.push_back(std::stod(fields[exact_ms]));
+    ratios.push_back(compact.back() / exact.back());
+  }
+  ASSERT_GE(ratios.size(), 20u);
+  const std::string scratch = MakeTempDir("usage");
+  ChildProcess saver({LmapSaverPath(), "--help"}, {"ROS_HOME=" + scratch}, scratch, "saver");
+  ASSERT_EQ(saver.Wait(10).value_or(-1), 0) << saver.Stderr();
+  // The text wraps its lines: compare it with single spaces.
+  std::string usage;
+  for (const char c : saver.Stdout()) {
+    if (c == ' ' || c == '\n') {
+      if (!usage.empty() && usage.back() != ' ') usage += ' ';
+    } else {
+      usage += c;
+    }
+  }
+  const std::string figures = OneDecimal(Median(compact) / Median(exact)) + "x the decode time (" +
+                              OneDecimal(Median(compact)) + " against " +
+                              OneDecimal(Median(exact)) + " ms at the median; a median " +
+                              OneDecimal(Median(ratios)) + "x per map, up to " +
+                              OneDecimal(*std::max_element(ratios.begin(), ratios.end())) + "x)";
+  EXPECT_NE(usage.find(figures), std::string::npos) << "expected: " << figures << "\n" << usage;
 }
 
 }  // namespace

@@ -176,5 +176,125 @@ TEST(LmapServerTest, NoMasterExitsOneWithinTheWait) {
   EXPECT_NE(server.Stderr().find("no ROS master at " + uri), std::string::npos) << server.Stderr();
 }
 
+// lmap_server with no master at a port nothing listens on, waiting for one
+// at most `wait` seconds.
+std::unique_ptr<ChildProcess> StartServerWithoutMaster(std::vector<std::string> extra,
+                                                       double wait) {
+  const std::string uri = "http://127.0.0.1:" + std::to_string(FreePort()) + "/";
+  const std::string scratch = MakeTempDir("nomaster");
+  std::vector<std::string> argv = {LmapServerPath(), "--wait-master", std::to_string(wait)};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return std::make_unique<ChildProcess>(
+      argv, std::vector<std::string>{"ROS_MASTER_URI=" + uri, "ROS_HOME=" + scratch}, scratch,
+      "server");
+}
+
+// The lines of `text` that are not empty.
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) lines.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return lines;
+}
+
+// A window reaching past the map is refused as `linemap decode --window`
+// refuses one: exit 2 and one line naming the window and the map's extent,
+// before the master is waited for (none runs here; the wait would outlast
+// the test). From an .lmap file (read by region) and from a map YAML (read
+// whole and cropped) alike.
+TEST(LmapServerTest, WindowPastTheMapExitsTwoNamingTheWindowAndTheMapsExtent) {
+  struct Case {
+    std::string map;
+    std::string window;
+    std::string extent;
+  };
+  const Case cases[] = {
+      // 604 x 307 cells at 0.05 m from the origin 0,0: the window's lower
+      // left lies off the map.
+      {SourceDir() + "/tests/data/lmap/depot_lossless.lmap", "-5,-5,1,1",
+       "604 x 307 cells span from 0,0 to 30.2,15.35 m"},
+      // 260 x 781 cells from -7,-17.5: only x = 6..6.5 lies off the map.
+      {BundledMapsDir() + "/strands/kth/map.yaml", "-5,-5,6.5,1",
+       "260 x 781 cells span from -7,-17.5 to 6,21.55 m"},
+  };
+  for (const Case& c : cases) {
+    auto server = StartServerWithoutMaster({c.map, "_window:=[" + c.window + "]"}, 60);
+    const std::optional<int> code = server->Wait(10);
+    ASSERT_TRUE(code.has_value()) << c.map << ": still running after 10 s";
+    EXPECT_EQ(*code, 2) << server->Stderr();
+    const std::vector<std::string> lines = Lines(server->Stderr());
+    ASSERT_EQ(lines.size(), 1u) << server->Stderr();
+    EXPECT_NE(lines[0].find(c.map), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find("window " + c.window + " m"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find("past the map"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find(c.extent), std::string::npos) << lines[0];
+  }
+}
+
+// The same for a ~window set on the parameter server (as a launch file's
+// <param> sets it), which lmap_server reads once the master answers.
+TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
+  RosMaster& master = SharedMaster();
+  ros::param::set("/s7/lmap_server/window", std::vector<double>{25.0, 10.0, 31.0, 12.0});
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
+  auto server = StartServer(master, "/s7", {lmap});
+  const std::optional<int> code = server->Wait(20);
+  ASSERT_TRUE(code.has_value()) << "lmap_server did not exit";
+  EXPECT_EQ(*code, 2) << server->Stderr();
+  EXPECT_NE(server->Stderr().find("window 25,10,31,12 m"), std::string::npos) << server->Stderr();
+  EXPECT_NE(server->Stderr().find("span from 0,0 to 30.2,15.35 m"), std::string::npos)
+      << server->Stderr();
+}
+
+// A window that ends on the map's border holds the cells up to it.
+TEST(LmapServerTest, WindowToTheMapsBorderPublishesItsCells) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
+  StatusOr<Grid> whole = LoadLmap(lmap);
+  ASSERT_TRUE(whole.ok()) << whole.status().message();
+  const Grid expected = ReferenceCrop(*whole, 20.0, 0.0, 30.2, 15.35);
+  MapListener listener("/s8");
+  auto server = StartServer(master, "/s8", {lmap, "_window:=[20.0, 0.0, 30.2, 15.35]"});
+  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
+  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+  ExpectMessageIsGrid(*listener.map, expected, "map");
+}
+
+// A map that cannot be read is refused at once, named, without waiting for
+// a master: given as the argument or as `_map:=`.
+TEST(LmapServerTest, UnreadableMapExitsTwoBeforeWaitingForTheMaster) {
+  const std::string missing = MakeTempDir("server") + "/nosuch.lmap";
+  for (const std::string& arg : {missing, "_map:=" + missing}) {
+    const double start = Now();
+    auto server = StartServerWithoutMaster({arg}, 60);
+    const std::optional<int> code = server->Wait(10);
+    ASSERT_TRUE(code.has_value()) << arg << ": still running after 10 s";
+    EXPECT_EQ(*code, 2) << server->Stderr();
+    EXPECT_LT(Now() - start, 5.0);
+    EXPECT_NE(server->Stderr().find(missing), std::string::npos) << server->Stderr();
+    EXPECT_EQ(server->Stderr().find("no ROS master"), std::string::npos) << server->Stderr();
+  }
+}
+
+// roscpp stores `_window:=...` on the parameter server inside ros::init,
+// retrying for ever while no master answers: --wait-master bounds that too.
+TEST(LmapServerTest, NoMasterWithAWindowArgumentExitsOneWithinTheWait) {
+  const double start = Now();
+  auto server = StartServerWithoutMaster(
+      {SourceDir() + "/tests/data/lmap/depot_lossless.lmap", "_window:=[1,1,5,5]"}, 1.5);
+  const std::optional<int> code = server->Wait(10);
+  const double seconds = Now() - start;
+  ASSERT_TRUE(code.has_value()) << "still waiting after 10 s";
+  EXPECT_EQ(*code, 1) << server->Stderr();
+  EXPECT_GE(seconds, 1.5);
+  EXPECT_LT(seconds, 5.0);
+  EXPECT_NE(server->Stderr().find("no ROS master"), std::string::npos) << server->Stderr();
+}
+
 }  // namespace
 }  // namespace linemap::testing

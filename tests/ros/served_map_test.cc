@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "tests/ros/ros_maps.h"
+#include "tests/testing/test_support.h"
 
 namespace linemap::ros_bridge {
 namespace {
@@ -30,6 +32,51 @@ TEST(ServedMapTest, ParsesWindowTextAndRefusesBadOnes) {
 TEST(ServedMapTest, WindowOutsideTheMapIsRefused) {
   Grid grid = testing::NoiseMap(20, 10, 1);
   EXPECT_FALSE(CropToWindow(grid, {5.0, 5.0, 6.0, 6.0}).ok());  // map is 1 x 0.5 m
+}
+
+// A window holds the cells whose squares overlap it; one that reaches past
+// the map's border is refused, not clipped, naming the window and the map's
+// extent, while one whose edges lie on the border holds the whole map.
+TEST(ServedMapTest, WindowPastTheMapsBorderIsRefused) {
+  const Grid grid = testing::NoiseMap(20, 10, 1);  // 1 x 0.5 m from 0,0
+  StatusOr<Grid> whole = CropToWindow(grid, {0.0, 0.0, 1.0, 0.5});
+  ASSERT_TRUE(whole.ok()) << whole.status().message();
+  EXPECT_EQ(whole->width(), 20);
+  EXPECT_EQ(whole->height(), 10);
+  EXPECT_EQ(whole->cells(), grid.cells());
+  for (const Window& past :
+       {Window{-0.01, 0.0, 0.5, 0.25}, Window{0.5, 0.25, 1.01, 0.4}, Window{0.1, -1e6, 0.2, 0.1},
+        Window{0.1, 0.1, 0.2, 0.6}, Window{-1e300, -1e300, 1e300, 1e300}}) {
+    const StatusOr<Grid> crop = CropToWindow(grid, past);
+    ASSERT_FALSE(crop.ok()) << past.x0 << "," << past.y0 << "," << past.x1 << "," << past.y1;
+    EXPECT_EQ(crop.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(crop.status().message().find("past the map"), std::string::npos)
+        << crop.status().message();
+    EXPECT_NE(crop.status().message().find("20 x 10 cells span from 0,0 to 1,0.5 m"),
+              std::string::npos)
+        << crop.status().message();
+  }
+  const StatusOr<Grid> crop = CropToWindow(grid, {-5, -5, 1, 1});
+  ASSERT_FALSE(crop.ok());
+  EXPECT_NE(crop.status().message().find("window -5,-5,1,1 m"), std::string::npos)
+      << crop.status().message();
+}
+
+// LoadServedMap refuses such a window the same way for an .lmap file, whose
+// window is decoded alone, and for a map image, which is cropped; the
+// message names the file.
+TEST(ServedMapTest, LoadServedMapRefusesAWindowPastTheMap) {
+  for (const std::string& path : {testing::SourceDir() + "/tests/data/lmap/depot_lossless.lmap",
+                                  testing::BundledMapsDir() + "/nav2/depot.yaml"}) {
+    const StatusOr<Grid> grid = LoadServedMap(path, Window{-5, -5, 1, 1});
+    ASSERT_FALSE(grid.ok()) << path;
+    EXPECT_EQ(grid.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(grid.status().message().find(path), std::string::npos) << grid.status().message();
+    EXPECT_NE(grid.status().message().find("604 x 307 cells span from 0,0 to 30.2,15.35 m"),
+              std::string::npos)
+        << grid.status().message();
+    EXPECT_TRUE(LoadServedMap(path, Window{0, 0, 30.2, 15.35}).ok()) << path;
+  }
 }
 
 TEST(ServedMapTest, CropOfARotatedMapKeepsEveryCellWhereItWas) {
