@@ -252,14 +252,6 @@ py::dict Plan(const Map& map, const py::object& start, const py::object& goal, d
     ms = MillisecondsSince(t0);
   }
   const PlanResult result = ValueOrRaise(std::move(planned));
-  py::dict out;
-  out["found"] = result.found();
-  if (!result.found()) {
-    out["error"] = result.message;
-    out["alternatives"] = 0;
-    out["ms"] = ms;
-    return out;
-  }
   py::list all;
   for (const PlannedTrajectory& t : result.trajectories) {
     py::dict one;
@@ -269,15 +261,22 @@ py::dict Plan(const Map& map, const py::object& start, const py::object& goal, d
     one["straightened"] = t.straightened;
     all.append(one);
   }
-  const PlannedTrajectory& best = result.trajectories.front();
   py::dict stages;
   stages["safe_zone"] = result.times.safe_zone_ms;
   stages["wave"] = result.times.wave_ms;
   stages["regions"] = result.times.regions_ms;
   stages["generation"] = result.times.generation_ms;
-  out["length_m"] = best.length_m;
-  out["commands"] = CommandList(best);
-  out["waypoints"] = WaypointArray(best);
+  // The same keys whether found or not, so that a caller can read
+  // route["commands"] before testing route["found"]: a route not found is an
+  // empty one (the CLI's JSON leaves these keys out instead).
+  const bool found = result.found();  // then trajectories holds at least one
+  py::dict out;
+  out["found"] = found;
+  out["error"] = found ? py::object(py::none()) : py::str(result.message);
+  out["length_m"] =
+      found ? py::object(py::float_(result.trajectories.front().length_m)) : py::none();
+  out["commands"] = found ? CommandList(result.trajectories.front()) : py::list();
+  out["waypoints"] = WaypointArray(found ? result.trajectories.front() : PlannedTrajectory{});
   out["alternatives"] = result.trajectories.size();
   out["ms"] = ms;
   out["stages_ms"] = stages;
@@ -433,8 +432,11 @@ Values the library refuses raise ValueError.
 A turn-and-move trajectory from ``start`` (x, y[, heading]) to ``goal``
 (x, y), metres and radians, as ``linemap plan --json``: found, length_m,
 commands ([{"turn_deg": d} | {"move_m": m}]), waypoints ((K, 2) array),
-alternatives, ms, stages_ms and every trajectory, best first. A goal that
-cannot be reached is no exception: found is False and error says why.
+alternatives, ms, stages_ms, trajectories (every trajectory, best first)
+and error (None). A goal that cannot be reached is no exception: found is
+False, error says why, length_m is None, commands and trajectories are
+empty lists, waypoints a (0, 2) array and stages_ms 0 for the stages that
+did not run (the dict has the same keys either way).
 Robot size, margin and the shortest / longest move are in metres;
 options the planner refuses raise ValueError.
 )doc");

@@ -1,11 +1,16 @@
-// linemap.load / save / encode / decode / vectors: maps and .lmap files.
+// linemap.load / save / convert / encode / decode / vectors / room_at: maps
+// and .lmap files.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "linemap/codec.h"
@@ -118,6 +123,24 @@ std::uint64_t MaxToleranceCellsArgument(const py::object& value) {
   return value.cast<std::uint64_t>();
 }
 
+// A map YAML + PGM is always the exact trinary image: an .lmap option away
+// from its default would be dropped without a word, so it is refused.
+void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bool straight_walls,
+                        bool compact, std::uint64_t max_tolerance_cells) {
+  const EncodeOptions defaults;
+  std::vector<std::string> given;
+  if (tolerance != 0) given.push_back("tolerance");
+  if (vectors != defaults.vector_layers) given.push_back("vectors");
+  if (straight_walls != defaults.straight_walls) given.push_back("straight_walls");
+  if (compact != defaults.compact) given.push_back("compact");
+  if (max_tolerance_cells != defaults.max_tolerance_cells) given.push_back("max_tolerance_cells");
+  if (given.empty()) return;
+  std::string names;
+  for (const std::string& name : given) names += (names.empty() ? "" : ", ") + name;
+  throw py::value_error("'" + path + "': " + names + (given.size() == 1 ? " applies" : " apply") +
+                        " to .lmap files only (a map .yaml is saved exact, as YAML + PGM)");
+}
+
 void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
           bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
   CheckTolerance(tolerance);
@@ -126,6 +149,9 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   const bool yaml = IsYamlPath(path);
   if (!yaml && !EndsWith(path, ".lmap")) {
     throw py::value_error("'" + path + "': linemap.save writes .lmap or map .yaml files");
+  }
+  if (yaml) {
+    CheckNoLmapOptions(path, tolerance, vectors, straight_walls, compact, max_tolerance_cells);
   }
   const Grid grid = GridFromMap(map);
   Status saved;
@@ -234,20 +260,109 @@ py::dict VectorsDict(const LmapVectors& v) {
   return out;
 }
 
-py::dict Vectors(const py::object& source, const py::object& max_cells_arg) {
-  DecodeLimits limits;
-  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
-  StatusOr<LmapVectors> vectors = InvalidArgumentError("not read");
+// The library's .lmap readers by source, .lmap bytes or a path, so that one
+// template serves both (Decode* and Load* differ only in their name).
+StatusOr<LmapVectors> ReadVectors(const std::vector<std::uint8_t>& bytes,
+                                  const std::optional<CellWindow>& window,
+                                  const DecodeLimits& limits) {
+  return window ? DecodeLmapVectorsInWindow(bytes, *window, limits)
+                : DecodeLmapVectors(bytes, limits);
+}
+StatusOr<LmapVectors> ReadVectors(const std::string& path, const std::optional<CellWindow>& window,
+                                  const DecodeLimits& limits) {
+  return window ? LoadLmapVectorsInWindow(path, *window, limits) : LoadLmapVectors(path, limits);
+}
+StatusOr<LmapHeader> ReadHeader(const std::vector<std::uint8_t>& bytes,
+                                const DecodeLimits& limits) {
+  return DecodeLmapHeader(bytes, limits);
+}
+StatusOr<LmapHeader> ReadHeader(const std::string& path, const DecodeLimits& limits) {
+  return LoadLmapHeader(path, limits);
+}
+StatusOr<std::optional<LmapRoom>> ReadRoomAt(const std::vector<std::uint8_t>& bytes, CellIndex cell,
+                                             const DecodeLimits& limits) {
+  return DecodeLmapRoomAt(bytes, cell, limits);
+}
+StatusOr<std::optional<LmapRoom>> ReadRoomAt(const std::string& path, CellIndex cell,
+                                             const DecodeLimits& limits) {
+  return LoadLmapRoomAt(path, cell, limits);
+}
+
+// Runs `read` on the source (the bytes of a buffer, else a path) without
+// the GIL.
+template <typename Read>
+auto ReadSource(const py::object& source, const Read& read) {
   if (PyObject_CheckBuffer(source.ptr())) {
     const std::vector<std::uint8_t> bytes = BytesArgument(source);
     py::gil_scoped_release release;
-    vectors = DecodeLmapVectors(bytes, limits);
-  } else {
-    const std::string path = PathArgument(source);
-    py::gil_scoped_release release;
-    vectors = LoadLmapVectors(path, limits);
+    return read(bytes);
   }
+  const std::string path = PathArgument(source);
+  py::gil_scoped_release release;
+  return read(path);
+}
+
+py::dict Vectors(const py::object& source, const py::object& max_cells_arg,
+                 const py::object& window_cells_arg) {
+  DecodeLimits limits;
+  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+  std::optional<CellWindow> window;
+  if (!window_cells_arg.is_none()) window = WindowCellsArgument(window_cells_arg);
+  StatusOr<LmapVectors> vectors =
+      ReadSource(source, [&](const auto& file) { return ReadVectors(file, window, limits); });
   return VectorsDict(ValueOrRaise(std::move(vectors)));
+}
+
+struct RoomAtPoint {
+  LmapHeader header;  // the frame of the room's outline
+  std::optional<LmapRoom> room;
+};
+
+// The room at map-frame metres (x, y) of `file` (bytes or a path): the cell
+// whose square holds the point is the one of the nearest centre
+// (WorldToCell puts centres on whole numbers). A point off the map is an
+// invalid argument naming it (and the file, when `file` is a path).
+template <typename File>
+StatusOr<RoomAtPoint> ReadRoomAtPoint(const File& file, double x, double y,
+                                      const DecodeLimits& limits) {
+  RoomAtPoint out;
+  LINEMAP_ASSIGN_OR_RETURN(out.header, ReadHeader(file, limits));
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = out.header.meta;
+  double col = 0, row = 0;
+  frame.WorldToCell(x, y, &col, &row);
+  const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
+  // Written so that NaN fails it too.
+  if (!(c >= 0 && r >= 0 && c < out.header.width && r < out.header.height)) {
+    char text[160];
+    std::snprintf(text, sizeof(text), "room_at: (%g, %g) m lies outside the map's %d x %d cells", x,
+                  y, out.header.width, out.header.height);
+    std::string message = text;
+    if constexpr (std::is_same_v<File, std::string>) message += " ('" + file + "')";
+    return InvalidArgumentError(message);
+  }
+  LINEMAP_ASSIGN_OR_RETURN(
+      out.room, ReadRoomAt(file, CellIndex{static_cast<int>(c), static_cast<int>(r)}, limits));
+  return out;
+}
+
+py::object RoomAt(const py::object& source, double x, double y, const py::object& max_cells_arg) {
+  DecodeLimits limits;
+  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+  StatusOr<RoomAtPoint> read =
+      ReadSource(source, [&](const auto& file) { return ReadRoomAtPoint(file, x, y, limits); });
+  RoomAtPoint found = ValueOrRaise(std::move(read));
+  if (!found.room) return py::none();
+  Grid frame;  // the whole map's, which the outline's cells are in
+  frame.meta = found.header.meta;
+  const CellWindow& w = found.room->window;
+  py::dict out;
+  out["id"] = found.room->room.id;
+  out["kind"] = RoomKindName(found.room->room.kind);
+  out["outline"] = WorldPoints(frame, found.room->room.chain);
+  out["window_cells"] = py::make_tuple(w.col0, w.row0, w.col1, w.row1);
+  out["map"] = MapFromGrid(std::move(found.room->grid));
+  return out;
 }
 
 }  // namespace
@@ -274,14 +389,18 @@ names the file.
              py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
 ``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
-ends in .yaml or .yml; other names raise ValueError. ``tolerance`` (cells) is
-how far the decoded map may differ from ``map``; 0 is exact. ``vectors``
-stores the vector layers (walls, rooms, furniture) besides the cells.
+ends in .yaml or .yml; other names raise ValueError. The other options apply
+to .lmap files only: given other than their defaults with a .yaml path, they
+raise ValueError naming them. ``tolerance`` (cells) is how far the decoded
+map may differ from ``map``; 0 is exact. ``vectors`` stores the vector
+layers (walls, rooms, furniture) besides the cells.
 ``straight_walls`` draws one wall segment per straight wall (smaller exact
 files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
-``compact`` codes the cells for size (as ``linemap encode --compact``: about
-4.5 % smaller files that decode in about 3x the time; version 2.3).
+``compact`` codes the cells for size (as ``linemap encode --compact``;
+version 2.3): on the bench corpus about 4.5 % smaller files (8.5 % with
+vectors=False) that decode in 2.5 against 1.0 ms at the median (a median
+3.8x per map, up to 8.5x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 34 bytes a cell (the default, 2^26 cells, about 2.3 GB); exact saves
@@ -308,14 +427,35 @@ save() raise them, naming the file.
   module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
              "ValueError, more than ``max_cells`` cells MemoryError.");
-  module.def("vectors", &Vectors, py::arg("source"), py::arg("max_cells") = py::none(), R"doc(
+  module.def("vectors", &Vectors, py::arg("source"), py::arg("max_cells") = py::none(),
+             py::arg("window_cells") = py::none(), R"doc(
 The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
-files are read whole: their layers sit between raster chunks). A dict, geometry in map-frame metres through cell centres:
+files are read whole: their layers sit between raster chunks). A dict,
+geometry in map-frame metres through cell centres:
 ``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
 consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays,
 ``rooms`` a list of {id, kind, outline: (K, 2) closed chain},
 ``furniture`` a list of {id, room_id or None, outline: (K, 2) closed chain},
 and the file's ``version``, ``width``, ``height``, ``resolution``, ``origin``.
+``window_cells=(col0, row0, col1, row1)`` (half-open cell indices, row 0 at
+the origin, as for load()) keeps only the items whose bounding box meets
+that window, in file order: a version 2.2 file reads only the layer sections
+that reach it. A window that is empty or reaches past the map raises
+ValueError. Errors as for load().
+)doc");
+  module.def("room_at", &RoomAt, py::arg("source"), py::arg("x"), py::arg("y"),
+             py::arg("max_cells") = py::none(), R"doc(
+The room at the map-frame point (``x``, ``y``) metres of an .lmap file (a
+path) or .lmap bytes: of the rooms whose border chain encloses the cell
+holding the point (the cell of the nearest centre), the one of smallest
+area, with the cells of its border's box. Reads the file's header, the
+layer sections around the cell and the tiles of the box only (a room of a
+282-Mcell map in milliseconds). A dict {``id``, ``kind``, ``outline``:
+(K, 2) closed chain in metres as vectors() gives rooms, ``window_cells``:
+(col0, row0, col1, row1) the box, ``map``: the Map of its cells, origin at
+its lower-left corner as load(window_cells=...) returns it}; None when no
+room's border encloses the point (unknown space, a file without rooms). A
+point off the map raises ValueError naming it; other errors as for load().
 )doc");
 }
 

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "linemap/map_io.h"
 #include "linemap/occupancy_grid.h"
 #include "python/arrays.h"
 #include "python/errors.h"
@@ -114,6 +115,17 @@ Map FromOccupancyGrid(const py::handle& data, const py::handle& width, const py:
   OccupancyGridMessage message;
   message.width = DimensionArgument(width, "width");
   message.height = DimensionArgument(height, "height");
+  // load()'s default (MapLoadOptions), so that a message is refused at the
+  // size a map file is.
+  const std::uint64_t limit = MaxCellsArgument(max_cells, MapLoadOptions{}.max_cells);
+  // Checked before the data are copied (a 2^30-cell message is 1 GB), as
+  // GridFromOccupancyGrid words it.
+  if (std::uint64_t{message.width} * message.height > limit) {
+    RaiseStatus(ResourceExhaustedError("occupancy grid: " + std::to_string(message.width) + " x " +
+                                       std::to_string(message.height) +
+                                       " cells exceed the limit of " + std::to_string(limit) +
+                                       " (max_cells)"));
+  }
   message.resolution = static_cast<float>(resolution);
   const Pose2D pose = OriginArgument(origin);
   message.origin_x = pose.x;
@@ -121,8 +133,7 @@ Map FromOccupancyGrid(const py::handle& data, const py::handle& width, const py:
   message.origin_orientation = QuaternionFromYaw(pose.yaw);
   message.data = OccupancyData(data, message.width, message.height);
   const OccupancyThresholds thresholds{occupied_thresh, free_thresh};
-  return MapFromGrid(ValueOrRaise(
-      GridFromOccupancyGrid(message, thresholds, MaxCellsArgument(max_cells, 1ull << 32))));
+  return MapFromGrid(ValueOrRaise(GridFromOccupancyGrid(message, thresholds, limit)));
 }
 
 py::dict ToOccupancyGrid(const Map& map, const std::string& frame_id) {
@@ -276,7 +287,8 @@ unknown. ``data`` is an int8 numpy array of width * height values (flat or
 (height, width)), or a sequence of ints (msg.data); ``origin`` is (x, y[, yaw])
 in metres and radians. Another dtype raises TypeError; a wrong size, a
 resolution that is not positive or an origin that is not finite ValueError;
-more than ``max_cells`` cells (default 2^32) MemoryError.
+more than ``max_cells`` cells (default 2^30, as load()) MemoryError, before
+the data are copied.
 )doc")
       .def("__repr__", &Repr);
 }

@@ -123,8 +123,14 @@ def test_options_the_cli_refuses_are_refused(function, options, error, match):
         getattr(linemap, function)(m, **options)
 
 
+# plan()'s keys, found or not (the CLI's JSON leaves out those that do not
+# apply).
+PLAN_KEYS = {"found", "error", "length_m", "commands", "waypoints", "alternatives", "ms",
+             "stages_ms", "trajectories"}
+
+
 def compare_plans(got, expected):
-    assert set(got) == set(expected)
+    assert set(got) == PLAN_KEYS and set(expected) <= PLAN_KEYS
     for key, value in without_timings(expected).items():
         if key == "waypoints":
             assert got[key].tolist() == value
@@ -157,6 +163,18 @@ def test_plan_not_found_is_a_result_not_an_exception(cli):
     got = linemap.plan(linemap.load(BUNDLED["kth"]), start=(0, 0), goal=(3, 10))
     assert got["found"] is False and "safe distance" in got["error"]
     compare_plans(got, expected)
+
+
+def test_plan_not_found_has_the_keys_of_a_found_plan_empty():
+    route = linemap.plan(linemap.load(BUNDLED["kth"]), start=(0, 0), goal=(3, 10))
+    assert route["found"] is False and route["alternatives"] == 0
+    assert route["length_m"] is None
+    assert route["commands"] == [] and route["trajectories"] == []
+    assert route["waypoints"].dtype == np.float64 and route["waypoints"].shape == (0, 2)
+    assert set(route["stages_ms"]) == {"safe_zone", "wave", "regions", "generation"}
+    found = linemap.plan(linemap.load(BUNDLED["depot"]), (1, 1), (20, 10))
+    assert found["found"] is True and found["error"] is None
+    assert set(found) == set(route) == PLAN_KEYS
 
 
 def test_plan_robot_options_are_passed_on(cli):

@@ -215,6 +215,64 @@ def test_save_refuses_other_suffixes_and_negative_tolerance(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("options,named", [
+    ({"tolerance": 1}, ["tolerance"]),
+    ({"compact": True}, ["compact"]),
+    ({"vectors": False}, ["vectors"]),
+    ({"straight_walls": True}, ["straight_walls"]),
+    ({"max_tolerance_cells": 1000}, ["max_tolerance_cells"]),
+    ({"tolerance": 2, "compact": True}, ["tolerance", "compact"]),
+])
+def test_yaml_save_refuses_the_lmap_options(tmp_path, options, named):
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match=r"appl(y|ies) to \.lmap files") as raised:
+        linemap.save(tmp_path / "map.yaml", m, **options)
+    for option in named:
+        assert option in str(raised.value)
+    assert list(tmp_path.iterdir()) == []
+    # Their defaults, given explicitly, write the exact YAML + PGM.
+    linemap.save(tmp_path / "map.yaml", m, tolerance=0, vectors=True, straight_walls=False,
+                 compact=False, max_tolerance_cells=2**26)
+    assert_same_map(linemap.load(tmp_path / "map.yaml"), m)
+
+
+def bench_compact_figures(repo):
+    """The compact figures of tools/bench/results/results.csv as the save
+    docstring words them: decode ms at the median (compact, default), the
+    median and largest per-map decode ratio, the median per-map size saving
+    with and without the vector layers (%)."""
+    import csv
+    import statistics
+    with open(repo / "tools" / "bench" / "results" / "results.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+
+    def column(name):
+        return [float(row[name]) for row in rows]
+
+    compact_ms, default_ms = column("lmap2_compact_decode_ms"), column("lmap2_decode_ms")
+    ratios = [c / d for c, d in zip(compact_ms, default_ms)]
+
+    def saving(compact, default):
+        return 100 * (1 - statistics.median(
+            c / d for c, d in zip(column(compact), column(default))))
+
+    return {
+        "decode": "%.1f against %.1f ms" % (statistics.median(compact_ms),
+                                            statistics.median(default_ms)),
+        "median ratio": "median %.1fx per map" % statistics.median(ratios),
+        "largest ratio": "up to %.1fx" % max(ratios),
+        "smaller": "%.1f %% smaller" % saving("lmap2_compact_bytes", "lmap2_bytes"),
+        "vectors=False": "%.1f %% with vectors=False" % saving("lmap2_raster_compact_bytes",
+                                                              "lmap2_raster_bytes"),
+    }
+
+
+def test_save_docstring_gives_the_measured_compact_figures(repo):
+    doc = " ".join(linemap.save.__doc__.split())
+    for what, words in bench_compact_figures(repo).items():
+        assert words in doc, what
+
+
 def test_convert_writes_the_file_save_writes(tmp_path):
     # 620 x 4300 cells of depot copies: a map of three layer sections, coded
     # as its image is read; the bundled depot itself is loaded whole.
@@ -378,3 +436,174 @@ def test_tolerance_saves_over_max_tolerance_cells_raise_memory_error(tmp_path):
         linemap.encode(m, tolerance=1, max_tolerance_cells=-1)
     with pytest.raises(TypeError, match="max_tolerance_cells"):
         linemap.encode(m, tolerance=1, max_tolerance_cells=1.5)
+
+
+# ---------------------------------------------------------------------------
+# Vectors in a window and the room at a point, against the whole file.
+
+@pytest.fixture(scope="module")
+def depot_lmap(tmp_path_factory):
+    """depot saved by the module (walls, rooms and furniture), its Map and
+    the whole file's vectors()."""
+    m = linemap.load(BUNDLED["depot"])
+    path = tmp_path_factory.mktemp("depot") / "depot.lmap"
+    linemap.save(path, m)
+    return path, m, linemap.vectors(path)
+
+
+def cells_of(v, points):
+    """Lattice points (col, row) of map-frame metres, for a map without yaw."""
+    assert v["origin"][2] == 0
+    xy = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+    return np.rint((xy - v["origin"][:2]) / v["resolution"] - 0.5).astype(int)
+
+
+def meets(v, points, window):
+    """Whether the box of `points` meets the half-open cell window."""
+    c0, r0, c1, r1 = window
+    cells = cells_of(v, points)
+    (lo_c, lo_r), (hi_c, hi_r) = cells.min(axis=0), cells.max(axis=0)
+    return hi_c >= c0 and lo_c < c1 and hi_r >= r0 and lo_r < r1
+
+
+def test_vectors_in_a_window_are_the_whole_files_items_whose_box_meets_it(depot_lmap):
+    path, m, whole = depot_lmap
+    h, w = m.cells.shape
+    windows = [(0, 0, w, h), (w // 3, h // 4, w // 3 + 40, h // 4 + 30), (0, 0, 1, 1),
+               (w - 1, h - 1, w, h), (w // 2, 0, w // 2 + 1, h), (100, 150, 300, 160)]
+    nonempty = 0
+    for window in windows:
+        for source in (path, path.read_bytes()):
+            got = linemap.vectors(source, window_cells=window)
+            polylines = [p for p in whole["wall_polylines"] if meets(whole, p, window)]
+            assert len(got["wall_polylines"]) == len(polylines)
+            for a, b in zip(got["wall_polylines"], polylines):
+                assert np.array_equal(a, b)
+            pairs = [(*p[i], *p[i + 1]) for p in polylines for i in range(len(p) - 1)]
+            assert np.array_equal(got["walls"], np.array(pairs).reshape(-1, 4))
+            for layer in ("rooms", "furniture"):
+                items = [item for item in whole[layer] if meets(whole, item["outline"], window)]
+                assert len(got[layer]) == len(items), layer
+                for a, b in zip(got[layer], items):
+                    assert a.keys() == b.keys()
+                    assert all(np.array_equal(a[k], b[k]) for k in a)
+            for key in ("version", "width", "height", "resolution", "origin"):
+                assert got[key] == whole[key]
+            nonempty += len(polylines) > 0 and len(got["rooms"]) > 0
+    # The whole map and the middle windows hold walls and rooms.
+    assert nonempty >= 4
+    assert len(linemap.vectors(path, window_cells=(0, 0, w, h))["rooms"]) == len(whole["rooms"])
+
+
+def test_vectors_window_is_checked(depot_lmap):
+    path, m, _ = depot_lmap
+    h, w = m.cells.shape
+    for window in [(0, 0, w + 1, h), (5, 5, 5, 6), (-1, 0, 1, 1), (0, 0, 1)]:
+        with pytest.raises(ValueError):
+            linemap.vectors(path, window_cells=window)
+        with pytest.raises(ValueError):
+            linemap.vectors(path.read_bytes(), window_cells=window)
+    with pytest.raises(TypeError):
+        linemap.vectors(path, window_cells="0,0,1,1")
+
+
+def cell_centre(m, col, row):
+    """Map-frame metres of the centre of cell (col, row)."""
+    x0, y0, yaw = m.origin
+    u, v = (col + 0.5) * m.resolution, (row + 0.5) * m.resolution
+    return (x0 + np.cos(yaw) * u - np.sin(yaw) * v, y0 + np.sin(yaw) * u + np.cos(yaw) * v)
+
+
+def sample_cells(m, step):
+    """Cells every `step` columns and rows, row by row from (0, 0)."""
+    h, w = m.cells.shape
+    return [(c, r) for r in range(0, h, step) for c in range(0, w, step)]
+
+
+def test_room_at_is_a_room_of_the_file_with_the_cells_of_its_box(depot_lmap):
+    path, m, whole = depot_lmap
+    by_id = {room["id"]: room for room in whole["rooms"]}
+    found, outside = 0, 0
+    for col, row in sample_cells(m, 23):
+        x, y = cell_centre(m, col, row)
+        room = linemap.room_at(path, x, y)
+        assert (room is None) == (linemap.room_at(path.read_bytes(), x, y) is None)
+        if room is None:
+            outside += 1
+            continue
+        found += 1
+        assert set(room) == {"id", "kind", "outline", "window_cells", "map"}
+        same = by_id[room["id"]]
+        assert room["kind"] == same["kind"]
+        assert np.array_equal(room["outline"], same["outline"])
+        # The window is the box of the border chain, and holds the point.
+        c0, r0, c1, r1 = room["window_cells"]
+        cells = cells_of(whole, room["outline"])
+        assert (c0, r0) == tuple(cells.min(axis=0)) and (c1 - 1, r1 - 1) == tuple(cells.max(axis=0))
+        assert c0 <= col < c1 and r0 <= row < r1
+        crop = linemap.load(path, window_cells=room["window_cells"])
+        assert_same_map(room["map"], crop)
+        assert np.array_equal(room["map"].cells, m.cells[r0:r1, c0:c1])
+        from_bytes = linemap.room_at(path.read_bytes(), x, y)
+        assert from_bytes["id"] == room["id"] and from_bytes["window_cells"] == (c0, r0, c1, r1)
+        assert np.array_equal(from_bytes["map"].cells, room["map"].cells)
+    assert found >= 5 and outside >= 1
+
+
+def test_room_at_is_none_outside_every_room(depot_lmap):
+    path, m, _ = depot_lmap
+    # depot's corridor encloses most of the map: outside it lie cells near
+    # the map's edge (the first, row by row, is cell (8, 4)).
+    for col, row in sample_cells(m, 4):
+        if linemap.room_at(path, *cell_centre(m, col, row)) is None:
+            break
+    else:
+        pytest.fail("every sampled point of depot lies in a room")
+    assert linemap.room_at(path.read_bytes(), *cell_centre(m, col, row)) is None
+    # A file without rooms.
+    cells_only = linemap.encode(m, vectors=False)
+    assert linemap.room_at(cells_only, *cell_centre(m, 300, 150)) is None
+
+
+def test_room_at_takes_the_cell_whose_square_holds_the_point(depot_lmap, tmp_path):
+    """The nearest cell centre, in a map frame turned by the origin's yaw."""
+    path, m, _ = depot_lmap
+    turned = linemap.Map(m.cells, resolution=m.resolution, origin=(3.0, -2.0, 0.7))
+    turned_path = tmp_path / "turned.lmap"
+    linemap.save(turned_path, turned)
+    turned_rooms = {room["id"]: room for room in linemap.vectors(turned_path)["rooms"]}
+    checked = 0
+    for col, row in sample_cells(m, 23):
+        expected = linemap.room_at(path, *cell_centre(m, col, row))
+        if expected is None:
+            continue
+        checked += 1
+        # Points within the cell's square, near its corners.
+        for dc, dr in [(0, 0), (0.45, 0.45), (-0.45, 0.45), (-0.45, -0.45), (0.45, -0.45)]:
+            got = linemap.room_at(turned_path, *cell_centre(turned, col + dc, row + dr))
+            assert got["id"] == expected["id"]
+            assert got["window_cells"] == expected["window_cells"]
+            assert np.array_equal(got["map"].cells, expected["map"].cells)
+            # The outline turns with the frame, as vectors() gives it.
+            assert np.array_equal(got["outline"], turned_rooms[got["id"]]["outline"])
+    assert checked >= 5
+
+
+def test_room_at_off_the_map_raises_value_error_naming_the_point(depot_lmap):
+    path, m, _ = depot_lmap
+    h, w = m.cells.shape
+    # Within half a cell of cell (0, 0)'s centre is on the map; beyond is not.
+    x, y = cell_centre(m, -0.4, -0.4)
+    linemap.room_at(path, x, y)
+    for col, row in [(-0.6, 0), (0, -0.6), (w - 0.4, 10), (10, h - 0.4), (1e9, 0)]:
+        x, y = cell_centre(m, col, row)
+        for source in (path, path.read_bytes()):
+            with pytest.raises(ValueError, match="outside the map") as raised:
+                linemap.room_at(source, x, y)
+            assert "%g" % x in str(raised.value) and "%g" % y in str(raised.value)
+    with pytest.raises(ValueError, match="depot.lmap"):
+        linemap.room_at(path, -1.0, -1.0)
+    with pytest.raises(ValueError):
+        linemap.room_at(path, float("nan"), 1.0)
+    with pytest.raises(FileNotFoundError):
+        linemap.room_at(path.parent / "none.lmap", 1.0, 1.0)

@@ -150,3 +150,15 @@ def test_from_occupancy_grid_refuses_bad_data():
 def test_from_occupancy_grid_limit_raises_memory_error():
     with pytest.raises(MemoryError, match="limit of 5"):
         linemap.Map.from_occupancy_grid(np.zeros(6, dtype=np.int8), 3, 2, 0.05, max_cells=5)
+
+
+def test_from_occupancy_grid_default_limit_is_load_s_2_30_cells():
+    # 2^30 + 2^15 cells of one value (a broadcast view: no memory), refused
+    # before the data are copied, as load() refuses a map over 2^30 cells.
+    data = np.broadcast_to(np.int8(-1), (2**15, 2**15 + 1))
+    with pytest.raises(MemoryError, match="limit of 1073741824"):
+        linemap.Map.from_occupancy_grid(data, 2**15 + 1, 2**15, 0.05)
+    with pytest.raises(MemoryError, match="limit of 1073741824"):
+        linemap.Map.from_occupancy_grid(np.broadcast_to(np.int8(0), (data.size,)), 2**15 + 1,
+                                        2**15, 0.05)
+    assert "2^30" in linemap.Map.from_occupancy_grid.__doc__
