@@ -48,7 +48,11 @@ StatusOr<InputFile> InputFile::Open(const std::string& path) {
   if (fd < 0) {
     const int err = errno;
     if (err == ENOENT) return NotFoundError(Quoted(path) + ": no such file");
-    // An input the caller cannot open is bad input, not a failure of ours.
+    // An input the caller may not read is bad input, not a failure of ours
+    // (exit 2), but a kind of its own: Python raises PermissionError.
+    if (err == EACCES || err == EPERM) {
+      return PermissionDeniedError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
+    }
     return InvalidArgumentError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
   }
   struct stat st;

@@ -1,9 +1,11 @@
 // nav_msgs/OccupancyGrid <-> Grid (include/linemap/occupancy_grid.h).
 #include "linemap/occupancy_grid.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <system_error>
 
 namespace linemap {
 
@@ -18,6 +20,14 @@ Quaternion QuaternionFromYaw(double yaw) {
   q.z = std::sin(yaw / 2.0);
   q.w = std::cos(yaw / 2.0);
   return q;
+}
+
+double ResolutionFromFloat32(float resolution) {
+  char text[64];
+  const std::to_chars_result written = std::to_chars(text, text + sizeof(text), resolution);
+  double value = resolution;
+  if (written.ec == std::errc()) std::from_chars(text, written.ptr, value);
+  return value;
 }
 
 namespace {
@@ -93,10 +103,7 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
   for (std::size_t i = 0; i < out.size(); ++i) {
     out[i] = CellFromOccupancy(message.data[i], percent);
   }
-  // The float32 resolution widened as it is (0.05f reads 0.0500000007...);
-  // rounding it to the nearest short decimal would invent precision the
-  // message never had, so callers compare with the message's float.
-  grid.meta.resolution = static_cast<double>(message.resolution);
+  grid.meta.resolution = ResolutionFromFloat32(message.resolution);
   grid.meta.origin = {message.origin_x, message.origin_y, YawFromQuaternion(q)};
   return grid;
 }

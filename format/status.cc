@@ -20,6 +20,8 @@ const char* StatusCodeName(StatusCode code) {
       return "limit exceeded";
     case StatusCode::kInternal:
       return "internal error";
+    case StatusCode::kPermissionDenied:
+      return "permission denied";
   }
   return "unknown status";
 }

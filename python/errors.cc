@@ -1,5 +1,7 @@
 #include "python/errors.h"
 
+#include <cerrno>
+
 namespace linemap::python {
 
 PyObject* ExceptionTypeFor(StatusCode code) {
@@ -10,6 +12,8 @@ PyObject* ExceptionTypeFor(StatusCode code) {
       return PyExc_ValueError;
     case StatusCode::kNotFound:
       return PyExc_FileNotFoundError;
+    case StatusCode::kPermissionDenied:
+      return PyExc_PermissionError;
     case StatusCode::kIoError:
       return PyExc_OSError;
     case StatusCode::kResourceExhausted:
@@ -22,7 +26,18 @@ PyObject* ExceptionTypeFor(StatusCode code) {
 }
 
 void RaiseStatus(const Status& status) {
-  PyErr_SetString(ExceptionTypeFor(status.code()), status.message().c_str());
+  // The OSErrors that say why a file could not be opened carry their errno,
+  // as Python's own open() gives them (the message stays the library's).
+  const int error_number = status.code() == StatusCode::kNotFound           ? ENOENT
+                           : status.code() == StatusCode::kPermissionDenied ? EACCES
+                                                                            : 0;
+  if (error_number != 0) {
+    PyObject* args = Py_BuildValue("(is)", error_number, status.message().c_str());
+    PyErr_SetObject(ExceptionTypeFor(status.code()), args);
+    Py_XDECREF(args);
+  } else {
+    PyErr_SetString(ExceptionTypeFor(status.code()), status.message().c_str());
+  }
   throw pybind11::error_already_set();
 }
 

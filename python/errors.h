@@ -3,7 +3,10 @@
 // library's message (which names the file and the problem).
 //
 //   kInvalidArgument, kCorrupt, kUnsupported  -> ValueError
-//   kNotFound                                 -> FileNotFoundError (an OSError)
+//   kNotFound                                 -> FileNotFoundError (an OSError;
+//                                                errno ENOENT)
+//   kPermissionDenied                         -> PermissionError (an OSError;
+//                                                errno EACCES)
 //   kIoError                                  -> OSError
 //   kResourceExhausted                        -> MemoryError (a caller-set limit such
 //                                                as max_cells, not the machine's memory)

@@ -23,6 +23,7 @@ int ExitCodeFor(const Status& status) {
     case StatusCode::kCorrupt:
     case StatusCode::kUnsupported:
     case StatusCode::kResourceExhausted:
+    case StatusCode::kPermissionDenied:
       return kExitBadInput;
     case StatusCode::kIoError:
     case StatusCode::kInternal:

@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include "ros/map_resolution.h"
-
 namespace linemap::ros_bridge {
 
 OccupancyGridMessage FromRosMessage(const OccupancyGridMsg& message) {
@@ -42,9 +40,7 @@ OccupancyGridMsg ToRosMessage(const OccupancyGridMessage& message, const ros::Ti
 
 StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
                                   const OccupancyThresholds& thresholds) {
-  StatusOr<Grid> grid = GridFromOccupancyGrid(FromRosMessage(message), thresholds);
-  if (grid.ok()) grid->meta.resolution = ResolutionFromMessage(message.info.resolution);
-  return grid;
+  return GridFromOccupancyGrid(FromRosMessage(message), thresholds);
 }
 
 OccupancyGridMsg RosMessageFromGrid(const Grid& grid, const std::string& frame_id,

@@ -26,7 +26,8 @@ OccupancyGridMsg ToRosMessage(const OccupancyGridMessage& message, const ros::Ti
 
 // A received map as a trinary grid, with map_saver's thresholds (see
 // occupancy_grid.h): GridFromOccupancyGrid(FromRosMessage()), with the
-// resolution read by ResolutionFromMessage() (map_resolution.h).
+// resolution read as the shortest decimal of its float32 (0.05, not
+// 0.0500000007).
 StatusOr<Grid> GridFromRosMessage(const OccupancyGridMsg& message,
                                   const OccupancyThresholds& thresholds = {});
 

@@ -55,6 +55,13 @@ double YawFromQuaternion(const Quaternion& q);
 // The planar rotation by `yaw` radians about +z.
 Quaternion QuaternionFromYaw(double yaw);
 
+// The resolution of a message's float32 as the shortest decimal that
+// rounds to the same float: a map YAML's 0.05 arrives as 0.0500000007450581,
+// and saved as it is a map served and saved back would come back with
+// another resolution; map_saver's YAML ("resolution: 0.050000") gives it
+// back as 0.05, and publishing it again gives the same float.
+double ResolutionFromFloat32(float resolution);
+
 // The message as a trinary grid: cells by `thresholds`, resolution and
 // origin (x, y, yaw) from `info`; the grid's YAML fields get map_saver's
 // trinary defaults. Fails (invalid argument) when data.size() is not

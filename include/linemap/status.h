@@ -19,6 +19,7 @@ enum class StatusCode {
   kUnsupported,        // Well-formed, but uses a feature this version lacks.
   kResourceExhausted,  // A caller-set limit (cells, bytes) would be exceeded.
   kInternal,           // A bug in linemap.
+  kPermissionDenied,   // An input file the caller may not read.
 };
 
 const char* StatusCodeName(StatusCode code);
@@ -59,6 +60,9 @@ inline Status ResourceExhaustedError(std::string m) {
   return Status(StatusCode::kResourceExhausted, std::move(m));
 }
 inline Status InternalError(std::string m) { return Status(StatusCode::kInternal, std::move(m)); }
+inline Status PermissionDeniedError(std::string m) {
+  return Status(StatusCode::kPermissionDenied, std::move(m));
+}
 
 // Either a value or a non-OK Status.
 template <typename T>

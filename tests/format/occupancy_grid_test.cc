@@ -105,7 +105,7 @@ TEST(OccupancyGridTest, OriginYawFromQuaternion) {
   EXPECT_DOUBLE_EQ(grid->meta.origin.x, -12.5);
   EXPECT_DOUBLE_EQ(grid->meta.origin.y, 3.25);
   EXPECT_NEAR(grid->meta.origin.yaw, M_PI / 2, 1e-12);
-  EXPECT_EQ(grid->meta.resolution, static_cast<double>(0.1f));
+  EXPECT_EQ(grid->meta.resolution, 0.1);  // the shortest decimal of 0.1f
 }
 
 TEST(OccupancyGridTest, QuaternionOfYawRoundTrips) {

@@ -1,5 +1,6 @@
 """linemap.load / save / encode / decode: exact round trips on the bundled
 maps, the cells the `linemap` program writes, and errors that name the file."""
+import errno
 import os
 import shutil
 import subprocess
@@ -151,6 +152,41 @@ def test_missing_files_raise_file_not_found(tmp_path):
             linemap.load(path)
     with pytest.raises(FileNotFoundError, match="none.lmap"):
         linemap.vectors(tmp_path / "none.lmap")
+
+
+def test_missing_files_carry_errno_enoent(tmp_path):
+    with pytest.raises(FileNotFoundError) as caught:
+        linemap.load(tmp_path / "none.lmap")
+    assert caught.value.errno == errno.ENOENT
+
+
+def unreadable_file():
+    """A file this process may not open (chmod 000 when not root; else
+    /proc/1/mem where the kernel refuses it), or None."""
+    candidates = ["/proc/1/mem"]
+    for path in candidates:
+        try:
+            os.close(os.open(path, os.O_RDONLY))
+        except PermissionError:
+            return path
+        except OSError:
+            continue
+    return None
+
+
+def test_unreadable_files_raise_permission_error(tmp_path):
+    path = tmp_path / "locked.lmap"
+    path.write_bytes(linemap.encode(linemap.Map(np.zeros((4, 4), np.uint8), 0.05, (0, 0, 0))))
+    path.chmod(0)
+    try:
+        target = str(path) if not os.access(path, os.R_OK) else unreadable_file()
+        if target is None:
+            pytest.skip("every file is readable here (root without a refusing /proc)")
+        with pytest.raises(PermissionError, match="Permission denied") as caught:
+            linemap.load(target)
+        assert caught.value.errno == errno.EACCES
+    finally:
+        path.chmod(0o600)
 
 
 def test_yaml_naming_a_missing_image_raises_file_not_found(tmp_path):

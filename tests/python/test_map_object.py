@@ -104,7 +104,7 @@ def test_from_occupancy_grid_reads_like_map_saver():
     m = linemap.Map.from_occupancy_grid(data, 4, 3, 0.05, (1.0, 2.0, 0.5))
     assert m.cells.dtype == np.uint8
     assert np.array_equal(m.cells, expected)
-    assert m.resolution == float(np.float32(0.05))
+    assert m.resolution == 0.05  # the shortest decimal of the message's float32, as lmap_saver
     assert m.origin[:2] == (1.0, 2.0) and m.origin[2] == pytest.approx(0.5, abs=1e-15)
     # The same as (height, width), as a list (rospy) or an array.array (rclpy).
     for same in (data.reshape(3, 4), data.tolist(), array.array("b", data.tolist())):

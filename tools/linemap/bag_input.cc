@@ -16,7 +16,6 @@
 #include "format/file_io.h"
 #include "linemap/occupancy_grid.h"
 #include "ros/bag_reader.h"
-#include "ros/map_resolution.h"
 
 namespace linemap::cli {
 
@@ -176,7 +175,6 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
       "'" + visit->bag_path + "' " + selection.topic + " message " + std::to_string(index);
   StatusOr<Grid> grid = GridFromOccupancyGrid(message, selection.thresholds, selection.max_cells);
   if (!grid.ok()) return grid.status().WithContext(where);
-  grid->meta.resolution = ros_bridge::ResolutionFromMessage(message.resolution);
   if (const std::optional<Pose2D>& pose = visit->options->robot_pose) {
     // As for a map file, the pose must fall in a cell (the one whose square
     // holds it) of every map it is stored with.

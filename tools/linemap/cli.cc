@@ -185,6 +185,7 @@ int ReportError(const std::string& command, const Status& status) {
     case StatusCode::kCorrupt:
     case StatusCode::kUnsupported:
     case StatusCode::kResourceExhausted:
+    case StatusCode::kPermissionDenied:
       return kExitBadInput;
     default:
       return kExitFailure;
