@@ -4,7 +4,12 @@
 // error; a window decode, with the window taken from the input's last bytes,
 // gives that window's cells or an error, and when the whole grid decodes it
 // gives the same cells as the whole grid there (a window reads only the
-// tiles and layer sections that reach it). Anything else aborts.
+// tiles and layer sections that reach it). When the layers read whole, the
+// header gives their map's size, the items in the window are those of the
+// whole read whose box meets it, and the room at the window's corner is the
+// smallest enclosing one of the whole read (spec 8.2 as written here), with
+// the cells of its box. Anything else aborts.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +18,7 @@
 
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
+#include "tests/testing/reference_geometry.h"
 
 namespace {
 
@@ -31,6 +37,67 @@ void CheckChain(const std::vector<linemap::CellIndex>& chain, const linemap::Lma
     const linemap::CellIndex p = chain[i], q = chain[(i + 1) % chain.size()];
     if (!Inside(p, v)) Fail("chain cell outside the map");
     if (std::abs(p.col - q.col) > 1 || std::abs(p.row - q.row) > 1) Fail("chain not 8-connected");
+  }
+}
+
+// Whether the box of `points` shares a cell with the half-open window.
+bool MeetsWindow(const std::vector<linemap::CellIndex>& points, const linemap::CellWindow& w) {
+  if (points.empty()) return false;
+  int c0 = points[0].col, c1 = c0, r0 = points[0].row, r1 = r0;
+  for (const linemap::CellIndex& p : points) {
+    c0 = std::min(c0, p.col), c1 = std::max(c1, p.col);
+    r0 = std::min(r0, p.row), r1 = std::max(r1, p.row);
+  }
+  return c0 < w.col1 && c1 >= w.col0 && r0 < w.row1 && r1 >= w.row0;
+}
+
+long long TwiceArea(const std::vector<linemap::CellIndex>& v) {
+  long long sum = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const linemap::CellIndex p = v[i], q = v[(i + 1) % v.size()];
+    sum += static_cast<long long>(p.col) * q.row - static_cast<long long>(q.col) * p.row;
+  }
+  return sum < 0 ? -sum : sum;
+}
+
+// The items in `w` read alone are those of the whole read that meet it.
+void CheckItemsInWindow(const std::vector<std::uint8_t>& bytes, const linemap::LmapVectors& all,
+                        const linemap::CellWindow& w, const linemap::DecodeLimits& limits) {
+  const auto header = linemap::DecodeLmapHeader(bytes, limits);
+  if (!header.ok() || header->width != all.width || header->height != all.height) {
+    Fail("the header disagrees with the layers' map");
+  }
+  const auto near = linemap::DecodeLmapVectorsInWindow(bytes, w, limits);
+  if (!near.ok()) Fail("the items of a window fail where the whole layers read");
+  std::size_t walls = 0, rooms = 0, objects = 0;
+  for (const auto& x : all.walls) walls += MeetsWindow(x.points, w);
+  for (const auto& x : all.rooms) rooms += MeetsWindow(x.polygon, w);
+  for (const auto& x : all.furniture) objects += MeetsWindow(x.polygon, w);
+  if (near->walls.size() != walls || near->rooms.size() != rooms ||
+      near->furniture.size() != objects) {
+    Fail("the items of a window are not those of the whole read that meet it");
+  }
+}
+
+// The room at `cell` is the smallest whose chain encloses it, or none.
+void CheckRoomAt(const std::vector<std::uint8_t>& bytes, const linemap::LmapVectors& all,
+                 linemap::CellIndex cell, const linemap::DecodeLimits& limits) {
+  const linemap::RoomOutline* want = nullptr;
+  for (const auto& room : all.rooms) {
+    if (linemap::testing::ReferenceChainEncloses(room.chain, cell.col, cell.row) &&
+        (want == nullptr || TwiceArea(room.polygon) < TwiceArea(want->polygon))) {
+      want = &room;
+    }
+  }
+  const auto got = linemap::DecodeLmapRoomAt(bytes, cell, limits);
+  if (!got.ok()) return;  // the cells of its box may be corrupt
+  if (got->has_value() != (want != nullptr)) Fail("room at a cell: found where none is, or not");
+  if (want == nullptr) return;
+  const linemap::LmapRoom& room = **got;
+  if (!(room.room == *want)) Fail("room at a cell: not the smallest enclosing room");
+  if (room.grid.width() != room.window.col1 - room.window.col0 ||
+      room.grid.height() != room.window.row1 - room.window.row0) {
+    Fail("room at a cell: grid of the wrong size");
   }
 }
 
@@ -62,6 +129,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (region->width() != w.col1 - w.col0 || region->height() != w.row1 - w.row0)) {
       Fail("window of the wrong size");
     }
+    CheckItemsInWindow(bytes, *vectors, w, limits);
+    CheckRoomAt(bytes, *vectors, {w.col0, w.row0}, limits);
     const auto whole = linemap::DecodeLmap(bytes, limits);
     if (whole.ok()) {
       if (!region.ok()) Fail("a window of a grid that decodes fails");
