@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rosbag/bag.h>
 
+#include <algorithm>
 #include <string>
 
 #include "linemap/codec.h"
@@ -89,6 +90,21 @@ TEST_F(BagTest, AllWritesEveryMapNamedByItsStamp) {
       "1700000000_500000000.lmap", "1700000001_500000000.lmap", "1800000002_000000007.lmap"};
   ASSERT_EQ(ListDir(out), expected);
   for (int k = 0; k < 3; ++k) ExpectFileIsMessage(out + "/" + expected[k], k);
+}
+
+// --all makes its folder with the first map written: a bag that cannot be
+// read, or has no map on the topic, leaves no folder behind.
+TEST_F(BagTest, AllLeavesNoFolderWhenNothingIsWritten) {
+  WriteFile(dir_ + "/garbage.bag", "not a bag\n");
+  const CliResult garbage =
+      RunCli({"encode", dir_ + "/garbage.bag", "--all", "-o", dir_ + "/from_garbage"});
+  EXPECT_EQ(garbage.exit_code, 2) << garbage.err;
+  const CliResult no_topic =
+      RunCli({"encode", bag_path_, "--topic", "/scan", "--all", "-o", dir_ + "/from_scan/"});
+  EXPECT_EQ(no_topic.exit_code, 2) << no_topic.err;
+  const std::vector<std::string> left = ListDir(dir_);
+  EXPECT_EQ(std::count(left.begin(), left.end(), "from_garbage"), 0);
+  EXPECT_EQ(std::count(left.begin(), left.end(), "from_scan"), 0);
 }
 
 TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {
