@@ -3,7 +3,6 @@
 // window, and the room at a cell with the cells of its box.
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +13,7 @@
 #include "codec/codec/raster.h"
 #include "format/container.h"
 #include "format/file_io.h"
+#include "linemap/cells.h"
 #include "linemap/lmap_vectors.h"
 
 namespace linemap {
@@ -37,15 +37,9 @@ StatusOr<LmapHeader> HeaderOf(const ContainerView& view, const DecodeLimits& lim
 
 bool BoxMeets(const std::vector<CellIndex>& points, const CellWindow& w) {
   if (points.empty()) return false;
-  int c0 = std::numeric_limits<int>::max(), r0 = c0;
-  int c1 = std::numeric_limits<int>::min(), r1 = c1;
-  for (const CellIndex& p : points) {
-    c0 = std::min(c0, p.col);
-    r0 = std::min(r0, p.row);
-    c1 = std::max(c1, p.col);
-    r1 = std::max(r1, p.row);
-  }
-  return c0 < w.col1 && c1 >= w.col0 && r0 < w.row1 && r1 >= w.row0;
+  const BoundingBox box = BoxOfCells(points);
+  return box.min_col < w.col1 && box.max_col >= w.col0 && box.min_row < w.row1 &&
+         box.max_row >= w.row0;
 }
 
 // Keeps the items of `items` whose points' box meets `window`, in order.
@@ -77,14 +71,8 @@ std::int64_t TwiceArea(const std::vector<CellIndex>& polygon) {
 
 // The box of a chain's cells as a half-open window.
 CellWindow ChainBox(const std::vector<CellIndex>& chain) {
-  CellWindow w{std::numeric_limits<int>::max(), std::numeric_limits<int>::max(), 0, 0};
-  for (const CellIndex& p : chain) {
-    w.col0 = std::min(w.col0, p.col);
-    w.row0 = std::min(w.row0, p.row);
-    w.col1 = std::max(w.col1, p.col + 1);
-    w.row1 = std::max(w.row1, p.row + 1);
-  }
-  return w;
+  const BoundingBox box = BoxOfCells(chain);
+  return {box.min_col, box.min_row, box.max_col + 1, box.max_row + 1};
 }
 
 template <typename Result>
