@@ -234,10 +234,51 @@ TEST(CmdExportTest, SvgDrawsTheLayersOverTheDecodedMap) {
       << metres;
   const std::string legend = Group(svg, "legend");
   for (const std::string& label : {"walls (" + std::to_string(v->walls.size()) + ")",
-                                  "room borders (" + std::to_string(v->rooms.size()) + ")",
-                                  "furniture (" + std::to_string(v->furniture.size()) + ")"}) {
+                                   "room borders (" + std::to_string(v->rooms.size()) + ")",
+                                   "furniture (" + std::to_string(v->furniture.size()) + ")"}) {
     EXPECT_NE(legend.find(label), std::string::npos) << label;
   }
+}
+
+// With a window, the CSV holds the rows of the items whose box meets it
+// (whole), the SVG the window's cells with those items clipped to the map;
+// a window past the map is refused with nothing written.
+TEST(CmdExportTest, WindowKeepsTheItemsWhoseBoxMeetsIt) {
+  const std::string dir = testing::MakeTempDir("export_window");
+  const std::string lmap = EncodedDepot(dir);
+  StatusOr<LmapVectors> all = LoadLmapVectors(lmap);
+  ASSERT_TRUE(all.ok()) << all.status().message();
+  const CellWindow w{100, 50, 300, 200};
+  LmapVectors want = *all;
+  const auto meets = [&](const std::vector<CellIndex>& points) {
+    const BoundingBox b = BoxOfCells(points);
+    return b.max_col >= w.col0 && b.min_col < w.col1 && b.max_row >= w.row0 && b.min_row < w.row1;
+  };
+  std::erase_if(want.walls, [&](const WallPolyline& x) { return !meets(x.points); });
+  std::erase_if(want.rooms, [&](const RoomOutline& x) { return !meets(x.polygon); });
+  std::erase_if(want.furniture, [&](const FurnitureObject& x) { return !meets(x.polygon); });
+  ASSERT_LT(want.walls.size(), all->walls.size());
+  ASSERT_GT(want.walls.size(), 0u);
+  const CliResult r =
+      RunCli({"export", lmap, "-o", dir + "/w.csv", "--window-cells", "100,50,300,200"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream csv(testing::ReadFile(dir + "/w.csv"));
+  std::string line;
+  std::getline(csv, line);  // header
+  std::size_t rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, ExpectedRows(want).size());
+  const CliResult drawn =
+      RunCli({"export", lmap, "-o", dir + "/w.svg", "--window-cells", "100,50,300,200"});
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  const std::string svg = testing::ReadFile(dir + "/w.svg");
+  EXPECT_EQ(Count(Group(svg, "wall"), "<polyline "), want.walls.size());
+  EXPECT_NE(svg.find("<g clip-path=\"url(#map_area)\">"), std::string::npos);
+  const CliResult past =
+      RunCli({"export", lmap, "-o", dir + "/p.csv", "--window-cells", "100,50,700,200"});
+  EXPECT_EQ(past.exit_code, 2);
+  EXPECT_NE(past.err.find("not inside the map's 604 x 307 cells"), std::string::npos) << past.err;
+  EXPECT_FALSE(testing::FileExists(dir + "/p.csv"));
 }
 
 // A --raster-only file has no layers: CSV is the header, the SVG still shows

@@ -8,6 +8,7 @@
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "tools/linemap/commands.h"
+#include "tools/linemap/decode_window.h"
 #include "tools/linemap/export_layers.h"
 #include "tools/linemap/export_svg.h"
 #include "tools/linemap/lmap_cli_util.h"
@@ -18,7 +19,12 @@ namespace {
 
 std::vector<OptionSpec> ExportOptions() {
   std::vector<OptionSpec> options = {
-      {"-o", "OUT", "output file; its extension (.csv, .geojson, .json, .svg) picks the format"}};
+      {"-o", "OUT", "output file; its extension (.csv, .geojson, .json, .svg) picks the format"},
+      {"--window", "X0,Y0,X1,Y1",
+       "only the items whose box meets the cells whose centres lie in the box (map-frame metres, "
+       "edges included)"},
+      {"--window-cells", "C0,R0,C1,R1",
+       "only the items whose box meets columns C0..C1-1 and rows R0..R1-1"}};
   for (OptionSpec& o : DecodeLimitOptionSpecs()) options.push_back(std::move(o));
   return options;
 }
@@ -32,7 +38,8 @@ bool EndsWith(const std::string& s, const std::string& suffix) {
 
 const CommandSpec kExportSpec = {
     "export",
-    "IN.lmap -o OUT.csv|OUT.geojson|OUT.svg",
+    "IN.lmap -o OUT.csv|OUT.geojson|OUT.svg [--window X0,Y0,X1,Y1 | --window-cells "
+    "C0,R0,C1,R1]",
     "export the layers of an .lmap file as CSV, GeoJSON or SVG",
     "The layers are wall (polylines), room_border (one closed chain of border\n"
     "cells per room) and furniture (closed outlines); coordinates are map-frame\n"
@@ -46,7 +53,11 @@ const CommandSpec kExportSpec = {
     "when in no room) for furniture.\n"
     "SVG: the decoded map (free light, occupied black, unknown grey, as\n"
     "map_saver writes it) with walls in red, room borders in blue and\n"
-    "furniture in green over it, north (map +y) up, a scale bar and a legend.",
+    "furniture in green over it, north (map +y) up, a scale bar and a legend.\n"
+    "With --window or --window-cells (as linemap decode reads them) only the\n"
+    "items whose box meets the window are written, whole (not cut at its\n"
+    "edge), reading only the layer sections that reach it; an SVG draws the\n"
+    "window's cells and the items clipped to them.",
     ExportOptions(),
     1,
     1,
@@ -72,12 +83,15 @@ int RunExport(const std::vector<std::string>& args) {
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
   if (!limits.ok()) return ReportError("export", limits.status());
   const std::string& in = parsed->positional[0];
-  StatusOr<LmapVectors> vectors = LoadLmapVectors(in, *limits);
+  StatusOr<std::optional<CellWindow>> window = WindowFromArgs(*parsed, in, *limits);
+  if (!window.ok()) return ReportError("export", window.status());
+  StatusOr<LmapVectors> vectors =
+      *window ? LoadLmapVectorsInWindow(in, **window, *limits) : LoadLmapVectors(in, *limits);
   if (!vectors.ok()) return ReportError("export", vectors.status());
   const std::vector<ExportLayer> layers = LayersOf(*vectors);
   std::string text;
   if (svg) {
-    StatusOr<Grid> grid = LoadLmap(in, *limits);
+    StatusOr<Grid> grid = *window ? LoadLmapRegion(in, **window, *limits) : LoadLmap(in, *limits);
     if (!grid.ok()) return ReportError("export", grid.status());
     StatusOr<std::string> drawn = LayersToSvg(layers, *grid);
     if (!drawn.ok()) return ReportError("export", drawn.status());

@@ -73,10 +73,10 @@ std::string LayerGroup(const ExportLayer& layer, const Frame& f, double cell_px)
   return out + "</g>\n";
 }
 
-std::string MapImage(const Grid& grid, const Frame& f, const std::vector<std::uint8_t>& png) {
-  // The image's lower-left corner is the map origin; the map's yaw turns it
-  // about that corner (counter-clockwise in the map frame, so clockwise in
-  // SVG's y-down pixels).
+// The map's rectangle in pixels, as SVG attributes: its lower-left corner
+// is the map origin, and the map's yaw turns it about that corner
+// (counter-clockwise in the map frame, so clockwise in SVG's y-down pixels).
+std::string MapBox(const Grid& grid, const Frame& f) {
   const double res = grid.meta.resolution;
   const double ox = f.X(grid.meta.origin.x);
   const double oy = f.Y(grid.meta.origin.y);
@@ -84,8 +84,12 @@ std::string MapImage(const Grid& grid, const Frame& f, const std::vector<std::ui
   const double h = grid.height() * res * f.scale;
   const std::string rotate = "rotate(" + Px(-grid.meta.origin.yaw * 180 / std::numbers::pi) + " " +
                              Px(ox) + " " + Px(oy) + ")";
-  const std::string box = "x=\"" + Px(ox) + "\" y=\"" + Px(oy - h) + "\" width=\"" + Px(w) +
-                          "\" height=\"" + Px(h) + "\" transform=\"" + rotate + "\"";
+  return "x=\"" + Px(ox) + "\" y=\"" + Px(oy - h) + "\" width=\"" + Px(w) + "\" height=\"" + Px(h) +
+         "\" transform=\"" + rotate + "\"";
+}
+
+std::string MapImage(const Grid& grid, const Frame& f, const std::vector<std::uint8_t>& png) {
+  const std::string box = MapBox(grid, f);
   return "<image " + box +
          " preserveAspectRatio=\"none\" image-rendering=\"optimizeSpeed\" "
          "style=\"image-rendering:pixelated\" href=\"data:image/png;base64," +
@@ -223,12 +227,17 @@ StatusOr<std::string> LayersToSvg(const std::vector<ExportLayer>& layers, const 
   out += "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
   out += MapImage(grid, f, png);
   const double cell_px = grid.meta.resolution * f.scale;
+  // The layers are clipped to the map's rectangle: those of a window reach
+  // past it (its items are whole), and would run into the margin and footer.
+  out += "<clipPath id=\"map_area\"><rect " + MapBox(grid, f) + "/></clipPath>\n";
+  out += "<g clip-path=\"url(#map_area)\">\n";
   // Rooms under furniture under walls, so that the thin wall lines stay on top.
   for (const char* name : {"room_border", "furniture", "wall"}) {
     for (const ExportLayer& layer : layers) {
       if (layer.name == name) out += LayerGroup(layer, f, cell_px);
     }
   }
+  out += "</g>\n";
   const double footer_top = map_h + 2 * kMarginPx;
   out += ScaleBar(f, bar, footer_top, u);
   out += two_rows ? Legend(layers, kMarginPx, footer_top + 28 * u, u)
