@@ -52,6 +52,23 @@ void Grid::CellToWorld(double col, double row, double* x, double* y) const {
   *y = meta.origin.y + s * u + c * v;
 }
 
+std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
+                                          double y) {
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = meta;
+  double col = 0, row = 0;
+  frame.WorldToCell(x, y, &col, &row);
+  col = std::floor(col + 0.5);
+  row = std::floor(row + 0.5);
+  // Written so that NaN fails it too.
+  if (!(col >= 0 && row >= 0 && col < width && row < height)) return std::nullopt;
+  return CellIndex{static_cast<int>(col), static_cast<int>(row)};
+}
+
+std::optional<CellIndex> Grid::CellHolding(double x, double y) const {
+  return CellHoldingPoint(meta, width_, height_, x, y);
+}
+
 void Grid::WorldToCell(double x, double y, double* col, double* row) const {
   const double dx = x - meta.origin.x;
   const double dy = y - meta.origin.y;

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 #include <system_error>
 
@@ -65,6 +66,19 @@ std::int8_t OccupancyFromCell(Cell cell) {
 
 }  // namespace
 
+Status CheckOccupancyThresholds(const OccupancyThresholds& thresholds) {
+  const PercentThresholds percent = InPercent(thresholds);
+  if (!(thresholds.free >= 0.0 && thresholds.occupied <= 1.0 && percent.free < percent.occupied)) {
+    char text[160];
+    std::snprintf(text, sizeof(text),
+                  "thresholds must satisfy 0 <= free < occupied <= 1 in whole percents; free "
+                  "%g (%.0f %%), occupied %g (%.0f %%)",
+                  thresholds.free, percent.free, thresholds.occupied, percent.occupied);
+    return InvalidArgumentError(text);
+  }
+  return Status::Ok();
+}
+
 StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
                                      const OccupancyThresholds& thresholds,
                                      std::uint64_t max_cells) {
@@ -85,14 +99,8 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
   if (!(message.resolution > 0.0f) || !std::isfinite(message.resolution)) {
     return InvalidArgumentError("occupancy grid: resolution must be positive and finite");
   }
-  // map_saver's whole percents: a free threshold at or above the occupied
-  // one would make the values between them free and occupied at once.
+  LINEMAP_RETURN_IF_ERROR(CheckOccupancyThresholds(thresholds).WithContext("occupancy grid"));
   const PercentThresholds percent = InPercent(thresholds);
-  if (!(thresholds.free >= 0.0 && thresholds.occupied <= 1.0 && percent.free < percent.occupied)) {
-    return InvalidArgumentError("occupancy grid: thresholds must satisfy 0 <= free (" +
-                                std::to_string(thresholds.free) + ") < occupied (" +
-                                std::to_string(thresholds.occupied) + ") <= 1, in whole percents");
-  }
   const Quaternion& q = message.origin_orientation;
   if (!std::isfinite(message.origin_x) || !std::isfinite(message.origin_y) || !std::isfinite(q.x) ||
       !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w)) {

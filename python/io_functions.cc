@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
@@ -272,22 +273,6 @@ StatusOr<LmapVectors> ReadVectors(const std::string& path, const std::optional<C
                                   const DecodeLimits& limits) {
   return window ? LoadLmapVectorsInWindow(path, *window, limits) : LoadLmapVectors(path, limits);
 }
-StatusOr<LmapHeader> ReadHeader(const std::vector<std::uint8_t>& bytes,
-                                const DecodeLimits& limits) {
-  return DecodeLmapHeader(bytes, limits);
-}
-StatusOr<LmapHeader> ReadHeader(const std::string& path, const DecodeLimits& limits) {
-  return LoadLmapHeader(path, limits);
-}
-StatusOr<std::optional<LmapRoom>> ReadRoomAt(const std::vector<std::uint8_t>& bytes, CellIndex cell,
-                                             const DecodeLimits& limits) {
-  return DecodeLmapRoomAt(bytes, cell, limits);
-}
-StatusOr<std::optional<LmapRoom>> ReadRoomAt(const std::string& path, CellIndex cell,
-                                             const DecodeLimits& limits) {
-  return LoadLmapRoomAt(path, cell, limits);
-}
-
 // Runs `read` on the source (the bytes of a buffer, else a path) without
 // the GIL.
 template <typename Read>
@@ -318,32 +303,39 @@ struct RoomAtPoint {
   std::optional<LmapRoom> room;
 };
 
-// The room at map-frame metres (x, y) of `file` (bytes or a path): the cell
-// whose square holds the point is the one of the nearest centre
-// (WorldToCell puts centres on whole numbers). A point off the map is an
-// invalid argument naming it (and the file, when `file` is a path).
-template <typename File>
-StatusOr<RoomAtPoint> ReadRoomAtPoint(const File& file, double x, double y,
-                                      const DecodeLimits& limits) {
+// The room at map-frame metres (x, y) of the .lmap `bytes`: the cell whose
+// square holds the point (CellHoldingPoint). A point off the map is an
+// invalid argument naming it (and `name`, the file, when not empty).
+StatusOr<RoomAtPoint> ReadRoomAtPoint(const std::vector<std::uint8_t>& bytes, double x, double y,
+                                      const DecodeLimits& limits, const std::string& name) {
   RoomAtPoint out;
-  LINEMAP_ASSIGN_OR_RETURN(out.header, ReadHeader(file, limits));
-  Grid frame;  // only its metadata: the map's cell <-> metre transform
-  frame.meta = out.header.meta;
-  double col = 0, row = 0;
-  frame.WorldToCell(x, y, &col, &row);
-  const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
-  // Written so that NaN fails it too.
-  if (!(c >= 0 && r >= 0 && c < out.header.width && r < out.header.height)) {
+  LINEMAP_ASSIGN_OR_RETURN(out.header, DecodeLmapHeader(bytes, limits));
+  const std::optional<CellIndex> cell =
+      CellHoldingPoint(out.header.meta, out.header.width, out.header.height, x, y);
+  if (!cell) {
     char text[160];
     std::snprintf(text, sizeof(text), "room_at: (%g, %g) m lies outside the map's %d x %d cells", x,
                   y, out.header.width, out.header.height);
-    std::string message = text;
-    if constexpr (std::is_same_v<File, std::string>) message += " ('" + file + "')";
-    return InvalidArgumentError(message);
+    return InvalidArgumentError(text + (name.empty() ? "" : " ('" + name + "')"));
   }
-  LINEMAP_ASSIGN_OR_RETURN(
-      out.room, ReadRoomAt(file, CellIndex{static_cast<int>(c), static_cast<int>(r)}, limits));
+  LINEMAP_ASSIGN_OR_RETURN(out.room, DecodeLmapRoomAt(bytes, *cell, limits));
   return out;
+}
+StatusOr<RoomAtPoint> ReadRoomAtPoint(const std::vector<std::uint8_t>& bytes, double x, double y,
+                                      const DecodeLimits& limits) {
+  return ReadRoomAtPoint(bytes, x, y, limits, "");
+}
+// A path is read once: its header and its room come from the same bytes,
+// even when a map is saved over the file meanwhile.
+StatusOr<RoomAtPoint> ReadRoomAtPoint(const std::string& path, double x, double y,
+                                      const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, limits.max_file_bytes));
+  StatusOr<RoomAtPoint> read = ReadRoomAtPoint(bytes, x, y, limits, path);
+  if (!read.ok() && read.status().message().find("'" + path + "'") == std::string::npos) {
+    return read.status().WithContext("'" + path + "'");
+  }
+  return read;
 }
 
 py::object RoomAt(const py::object& source, double x, double y, const py::object& max_cells_arg) {

@@ -96,9 +96,10 @@ StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
       return InvalidArgumentError("unknown argument '" + arg + "'");
     }
   }
-  if (!(parsed.thresholds.free < parsed.thresholds.occupied)) {
-    return InvalidArgumentError("--free must be below --occ");
-  }
+  // The library's own check (whole percents), so that a map that arrives
+  // later is never refused for thresholds accepted here.
+  const Status thresholds = CheckOccupancyThresholds(parsed.thresholds);
+  if (!thresholds.ok()) return thresholds.WithContext("--free / --occ");
   return parsed;
 }
 

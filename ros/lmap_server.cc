@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "linemap/lmap_vectors.h"
 #include "ros/node_support.h"
 #include "ros/ros_conversion.h"
 #include "ros/served_map.h"
@@ -121,7 +122,17 @@ int Run(int argc, char** argv) {
     window = *parsed;
   }
   std::optional<Grid> grid;
-  if (map_path) {
+  if (map_path && !window_text && IsLmapPath(*map_path)) {
+    // A window may still come from the parameter server (a launch file's
+    // <param>): the file is checked now (its header and every chunk's CRC)
+    // and decoded once the window is known, so that only the window's tiles
+    // are (on the 282-Mcell office map 17 MB rather than 300).
+    const StatusOr<LmapHeader> header = LoadLmapHeader(*map_path);
+    if (!header.ok()) {
+      std::fprintf(stderr, "lmap_server: %s\n", header.status().message().c_str());
+      return ExitCodeFor(header.status());
+    }
+  } else if (map_path) {
     StatusOr<Grid> loaded = LoadServedMap(*map_path, window);
     if (!loaded.ok()) {
       std::fprintf(stderr, "lmap_server: %s\n", loaded.status().message().c_str());

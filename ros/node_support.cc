@@ -52,8 +52,17 @@ Status InitNodeAndWaitForMaster(int& argc, char** argv, const std::string& name,
   UseDefaultMasterUriIfUnset(argc, argv);
   // ros::init stores each `_name:=value` argument on the master's parameter
   // server, retrying until a master answers: without a timeout a node given
-  // one would hang there when no master runs. A timeout of 0 means none.
-  ros::master::setRetryTimeout(ros::WallDuration(std::max(wait, 1e-3)));
+  // one would hang there when no master runs. The timeout applies to each
+  // argument in turn, so the wait is shared among them (three arguments and
+  // --wait-master 2 waited 6 s). A timeout of 0 means none.
+  int private_parameters = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg(argv[i]);
+    private_parameters +=
+        arg.starts_with("_") && !arg.starts_with("__") && arg.find(":=") != std::string_view::npos;
+  }
+  const double per_parameter = wait / std::max(private_parameters, 1);
+  ros::master::setRetryTimeout(ros::WallDuration(std::max(per_parameter, 1e-3)));
   ros::init(argc, argv, name, options);
   // A running node that loses its master waits for it to come back, as
   // roscpp's nodes do.

@@ -1,7 +1,6 @@
 // What a viewer of a large map reads without the rest of the file
 // (include/linemap/lmap_vectors.h): the header, the layers' items near a
 // window, and the room at a cell with the cells of its box.
-#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -57,11 +56,16 @@ void KeepItemsMeeting(const CellWindow& window, LmapVectors* v) {
       window, [](const FurnitureObject& f) -> const auto& { return f.polygon; }, &v->furniture);
 }
 
+// 128-bit integers (a GCC and Clang extension, marked so for -Wpedantic).
+__extension__ typedef __int128 Int128;
+
 // Twice the area a polygon encloses (shoelace formula, absolute): rooms
 // nest (a corridor's border runs around the rooms that open off it), and
-// the innermost room holding a point has the smallest area.
-std::int64_t TwiceArea(const std::vector<CellIndex>& polygon) {
-  std::int64_t sum = 0;
+// the innermost room holding a point has the smallest area. Each term fits
+// in 64 bits; their sum over a file's polygon (up to the chain limit of
+// vertices) may not, so it is kept in 128.
+Int128 TwiceArea(const std::vector<CellIndex>& polygon) {
+  Int128 sum = 0;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const CellIndex p = polygon[i], q = polygon[(i + 1) % polygon.size()];
     sum += std::int64_t{p.col} * q.row - std::int64_t{q.col} * p.row;
@@ -147,7 +151,7 @@ StatusOr<std::optional<LmapRoom>> DecodeLmapRoomAt(const std::vector<std::uint8_
       LmapVectors near,
       DecodeLmapVectorsInWindow(bytes, {cell.col, cell.row, cell.col + 1, cell.row + 1}, limits));
   RoomOutline* best = nullptr;
-  std::int64_t best_area = 0;
+  Int128 best_area = 0;
   for (RoomOutline& room : near.rooms) {
     if (!ChainEncloses(room.chain, cell)) continue;
     const std::int64_t area = TwiceArea(room.polygon);

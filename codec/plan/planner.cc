@@ -65,17 +65,11 @@ Status CheckOptions(const PlanOptions& o, double resolution_m) {
 // Where a map-frame point falls, and whether the planner may use it.
 PlanOutcome CheckEndpoint(const Grid& grid, const SafeZone& zone, double x, double y, bool is_start,
                           CellIndex* cell) {
-  double col = 0, row = 0;
-  grid.WorldToCell(x, y, &col, &row);
-  // The cell whose square [c - 0.5, c + 0.5) holds the point, as the edge map
-  // and the line extractor round (a point on the map's lower edge is in).
-  col = std::floor(col + 0.5);
-  row = std::floor(row + 0.5);
-  if (!(col >= 0 && row >= 0 && col < grid.width() && row < grid.height())) {
-    return is_start ? PlanOutcome::kStartOutsideMap : PlanOutcome::kGoalOutsideMap;
-  }
-  cell->col = static_cast<int>(col);
-  cell->row = static_cast<int>(row);
+  // The cell whose square holds the point, as the edge map and the line
+  // extractor round (a point on the map's lower edge is in).
+  const std::optional<CellIndex> holding = grid.CellHolding(x, y);
+  if (!holding) return is_start ? PlanOutcome::kStartOutsideMap : PlanOutcome::kGoalOutsideMap;
+  *cell = *holding;
   if (grid.at(cell->col, cell->row) != Cell::kFree) {
     return is_start ? PlanOutcome::kStartInObstacle : PlanOutcome::kGoalInObstacle;
   }

@@ -14,8 +14,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "linemap/cells.h"
 
 namespace linemap {
 
@@ -101,6 +104,8 @@ class Grid {
   void CellToWorld(double col, double row, double* x, double* y) const;
   // The inverse of CellToWorld (result in cell units, not rounded).
   void WorldToCell(double x, double y, double* col, double* row) const;
+  // The cell holding the map-frame point (x, y): CellHoldingPoint below.
+  std::optional<CellIndex> CellHolding(double x, double y) const;
 
   bool operator==(const Grid& other) const = default;
 
@@ -109,6 +114,14 @@ class Grid {
   int height_ = 0;
   std::vector<Cell> cells_;
 };
+
+// The cell of a width x height map in `meta`'s frame whose square [c - 0.5,
+// c + 0.5) x [r - 0.5, r + 0.5) (cell units, centres on whole numbers)
+// holds the map-frame point (x, y) in metres: a point on a cell's lower or
+// left edge is in that cell, one on its upper or right edge in the next.
+// nullopt off the map, and for a point that is not finite.
+std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
+                                          double y);
 
 }  // namespace linemap
 

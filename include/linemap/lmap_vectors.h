@@ -101,8 +101,9 @@ struct LmapRoom {
 // enclose obstacles). With the cells of its border's box; nullopt when no
 // room's border encloses the cell (unknown space, a file without rooms).
 // Reads the layer sections around the cell and the tiles of the box only: on
-// the 282-Mcell office map a room loads in milliseconds. A cell outside the
-// map is an invalid argument.
+// the 282-Mcell office map a room loads in milliseconds (a corridor that
+// spans the map has the map's box, and its cells are the whole grid). A cell
+// outside the map is an invalid argument.
 StatusOr<std::optional<LmapRoom>> DecodeLmapRoomAt(const std::vector<std::uint8_t>& bytes,
                                                    CellIndex cell, const DecodeLimits& limits = {});
 StatusOr<std::optional<LmapRoom>> LoadLmapRoomAt(const std::string& path, CellIndex cell,

@@ -62,11 +62,20 @@ Quaternion QuaternionFromYaw(double yaw);
 // back as 0.05, and publishing it again gives the same float.
 double ResolutionFromFloat32(float resolution);
 
+// Invalid argument unless 0 <= free < occupied <= 1 with the two in whole
+// percents as map_saver rounds them (std::rint(thresh * 100)): at or above
+// the occupied percent a value is occupied, at or below the free one free,
+// so equal percents would make one value both. The message names both
+// percents.
+Status CheckOccupancyThresholds(const OccupancyThresholds& thresholds);
+
 // The message as a trinary grid: cells by `thresholds`, resolution and
-// origin (x, y, yaw) from `info`; the grid's YAML fields get map_saver's
-// trinary defaults. Fails (invalid argument) when data.size() is not
-// width * height, the size exceeds `max_cells`, the resolution is not
-// positive and finite, or the origin is not finite.
+// origin (x, y, yaw) from `info` (the resolution as ResolutionFromFloat32
+// reads it); the grid's YAML fields get map_saver's trinary defaults.
+// Fails (invalid argument) when the thresholds fail CheckOccupancyThresholds,
+// data.size() is not width * height, the size exceeds `max_cells`
+// (resource exhausted), the resolution is not positive and finite, or the
+// origin is not finite.
 StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
                                      const OccupancyThresholds& thresholds = {},
                                      std::uint64_t max_cells = std::uint64_t{1} << 30);

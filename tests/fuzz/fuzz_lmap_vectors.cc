@@ -51,8 +51,11 @@ bool MeetsWindow(const std::vector<linemap::CellIndex>& points, const linemap::C
   return c0 < w.col1 && c1 >= w.col0 && r0 < w.row1 && r1 >= w.row0;
 }
 
-long long TwiceArea(const std::vector<linemap::CellIndex>& v) {
-  long long sum = 0;
+// 128-bit integers (a GCC and Clang extension, marked so for -Wpedantic).
+__extension__ typedef __int128 Int128;
+
+Int128 TwiceArea(const std::vector<linemap::CellIndex>& v) {
+  Int128 sum = 0;
   for (std::size_t i = 0; i < v.size(); ++i) {
     const linemap::CellIndex p = v[i], q = v[(i + 1) % v.size()];
     sum += static_cast<long long>(p.col) * q.row - static_cast<long long>(q.col) * p.row;
@@ -69,19 +72,31 @@ void CheckItemsInWindow(const std::vector<std::uint8_t>& bytes, const linemap::L
   }
   const auto near = linemap::DecodeLmapVectorsInWindow(bytes, w, limits);
   if (!near.ok()) Fail("the items of a window fail where the whole layers read");
-  std::size_t walls = 0, rooms = 0, objects = 0;
-  for (const auto& x : all.walls) walls += MeetsWindow(x.points, w);
-  for (const auto& x : all.rooms) rooms += MeetsWindow(x.polygon, w);
-  for (const auto& x : all.furniture) objects += MeetsWindow(x.polygon, w);
-  if (near->walls.size() != walls || near->rooms.size() != rooms ||
-      near->furniture.size() != objects) {
+  const auto same = [&](const auto& got, const auto& whole, auto points_of) {
+    std::size_t k = 0;
+    for (const auto& item : whole) {
+      if (!MeetsWindow(points_of(item), w)) continue;
+      if (k >= got.size() || !(got[k] == item)) return false;
+      ++k;
+    }
+    return k == got.size();
+  };
+  if (!same(
+          near->walls, all.walls, [](const auto& x) -> const auto& { return x.points; }) ||
+      !same(
+          near->rooms, all.rooms, [](const auto& x) -> const auto& { return x.polygon; }) ||
+      !same(
+          near->furniture, all.furniture, [](const auto& x) -> const auto& { return x.polygon; })) {
     Fail("the items of a window are not those of the whole read that meet it");
   }
 }
 
-// The room at `cell` is the smallest whose chain encloses it, or none.
+// The room at `cell` is the smallest whose chain encloses it, or none, with
+// the cells of its box as the whole grid has them (when it decodes: else
+// the room's cells may be the corrupt part).
 void CheckRoomAt(const std::vector<std::uint8_t>& bytes, const linemap::LmapVectors& all,
-                 linemap::CellIndex cell, const linemap::DecodeLimits& limits) {
+                 linemap::CellIndex cell, const linemap::DecodeLimits& limits,
+                 const linemap::StatusOr<linemap::Grid>& whole) {
   const linemap::RoomOutline* want = nullptr;
   for (const auto& room : all.rooms) {
     if (linemap::testing::ReferenceChainEncloses(room.chain, cell.col, cell.row) &&
@@ -90,7 +105,10 @@ void CheckRoomAt(const std::vector<std::uint8_t>& bytes, const linemap::LmapVect
     }
   }
   const auto got = linemap::DecodeLmapRoomAt(bytes, cell, limits);
-  if (!got.ok()) return;  // the cells of its box may be corrupt
+  if (!got.ok()) {
+    if (whole.ok()) Fail("room at a cell: fails where the whole grid decodes");
+    return;
+  }
   if (got->has_value() != (want != nullptr)) Fail("room at a cell: found where none is, or not");
   if (want == nullptr) return;
   const linemap::LmapRoom& room = **got;
@@ -98,6 +116,14 @@ void CheckRoomAt(const std::vector<std::uint8_t>& bytes, const linemap::LmapVect
   if (room.grid.width() != room.window.col1 - room.window.col0 ||
       room.grid.height() != room.window.row1 - room.window.row0) {
     Fail("room at a cell: grid of the wrong size");
+  }
+  if (!whole.ok()) return;
+  for (int r = room.window.row0; r < room.window.row1; ++r) {
+    for (int c = room.window.col0; c < room.window.col1; ++c) {
+      if (room.grid.at(c - room.window.col0, r - room.window.row0) != whole->at(c, r)) {
+        Fail("room at a cell: its cells differ from the whole grid");
+      }
+    }
   }
 }
 
@@ -130,8 +156,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       Fail("window of the wrong size");
     }
     CheckItemsInWindow(bytes, *vectors, w, limits);
-    CheckRoomAt(bytes, *vectors, {w.col0, w.row0}, limits);
     const auto whole = linemap::DecodeLmap(bytes, limits);
+    CheckRoomAt(bytes, *vectors, {w.col0, w.row0}, limits, whole);
     if (whole.ok()) {
       if (!region.ok()) Fail("a window of a grid that decodes fails");
       for (int r = w.row0; r < w.row1; ++r) {

@@ -262,13 +262,23 @@ TEST(LmapSaverTest, NoMasterExitsOneWithinTheWait) {
   EXPECT_FALSE(FileExists(scratch + "/x.lmap"));
 }
 
+// Thresholds are checked at startup as the library reads a map with them,
+// in whole percents: --free 64.6 --occ 65 is 65 % both, refused here rather
+// than when the first map arrives.
 TEST(LmapSaverTest, BadOptionExitsTwo) {
   const std::string scratch = MakeTempDir("badopt");
-  ChildProcess saver({LmapSaverPath(), "--occ", "20", "--free", "30"},
-                     {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
-                     "saver");
-  EXPECT_EQ(saver.Wait(10).value_or(-1), 2);
-  EXPECT_NE(saver.Stderr().find("--free must be below --occ"), std::string::npos) << saver.Stderr();
+  for (const std::vector<std::string>& thresholds :
+       {std::vector<std::string>{"--occ", "20", "--free", "30"},
+        std::vector<std::string>{"--occ", "65", "--free", "64.6"}}) {
+    std::vector<std::string> argv = {LmapSaverPath()};
+    argv.insert(argv.end(), thresholds.begin(), thresholds.end());
+    ChildProcess saver(argv, {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
+                       "saver");
+    EXPECT_EQ(saver.Wait(10).value_or(-1), 2) << thresholds[3];
+    EXPECT_NE(saver.Stderr().find("--free / --occ: thresholds must satisfy 0 <= free < occupied"),
+              std::string::npos)
+        << saver.Stderr();
+  }
 }
 
 // --tolerance is checked at startup (not when a map arrives, which with

@@ -251,6 +251,29 @@ TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
       << server->Stderr();
 }
 
+// A command-line map with the window of a launch file's <param> (set on the
+// parameter server only) publishes the window's cells, with the map read
+// after the window is known (its tiles alone for an .lmap file) and also
+// for an image, which is read whole before the master answers and cropped.
+TEST(LmapServerTest, WindowParameterWithACommandLineMapPublishesTheWindow) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
+  StatusOr<Grid> whole = LoadLmap(lmap);
+  ASSERT_TRUE(whole.ok()) << whole.status().message();
+  const Grid expected = ReferenceCrop(*whole, 5.0, 2.0, 12.5, 9.0);
+  const std::string yaml = BundledMapsDir() + "/nav2/depot.yaml";
+  int k = 0;
+  for (const std::string& map : {lmap, yaml}) {
+    const std::string ns = "/s10_" + std::to_string(k++);
+    ros::param::set(ns + "/lmap_server/window", std::vector<double>{5.0, 2.0, 12.5, 9.0});
+    MapListener listener(ns);
+    auto server = StartServer(master, ns, {map});
+    ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
+    ASSERT_TRUE(listener.Received()) << map << ": lmap_server exited: " << server->Stderr();
+    ExpectMessageIsGrid(*listener.map, expected, "map");
+  }
+}
+
 // A window that ends on the map's border holds the cells up to it.
 TEST(LmapServerTest, WindowToTheMapsBorderPublishesItsCells) {
   RosMaster& master = SharedMaster();
@@ -294,6 +317,21 @@ TEST(LmapServerTest, NoMasterWithAWindowArgumentExitsOneWithinTheWait) {
   EXPECT_GE(seconds, 1.5);
   EXPECT_LT(seconds, 5.0);
   EXPECT_NE(server->Stderr().find("no ROS master"), std::string::npos) << server->Stderr();
+}
+
+// roscpp retries each `_name:=` argument for the whole timeout in turn: the
+// wait is shared among them, so three arguments still end within it.
+TEST(LmapServerTest, NoMasterWithSeveralParameterArgumentsWaitsOnceInAll) {
+  const double start = Now();
+  auto server = StartServerWithoutMaster(
+      {SourceDir() + "/tests/data/lmap/depot_lossless.lmap", "_frame_id:=map", "_a:=1", "_b:=2"},
+      2.0);
+  const std::optional<int> code = server->Wait(15);
+  const double seconds = Now() - start;
+  ASSERT_TRUE(code.has_value()) << "still waiting after 15 s";
+  EXPECT_EQ(*code, 1) << server->Stderr();
+  EXPECT_GE(seconds, 2.0);
+  EXPECT_LT(seconds, 4.5);  // 6 s when each argument waited the whole 2 s
 }
 
 }  // namespace

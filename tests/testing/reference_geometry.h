@@ -39,6 +39,32 @@ inline bool ReferenceChainEncloses(const std::vector<CellIndex>& chain, int c, i
   return crossings % 2 == 1;
 }
 
+// Twice the area a polygon encloses, |shoelace sum|, in doubles (exact for
+// the test maps' coordinates).
+inline double ReferenceTwiceArea(const std::vector<CellIndex>& v) {
+  double sum = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const CellIndex p = v[i], q = v[(i + 1) % v.size()];
+    sum += static_cast<double>(p.col) * q.row - static_cast<double>(q.col) * p.row;
+  }
+  return std::abs(sum);
+}
+
+// The room a viewer picks at `cell`: of the rooms whose chain encloses it,
+// the one whose polygon has the smallest area, the first on a tie; null
+// when none does.
+template <typename Room>
+const Room* ReferenceRoomAt(const std::vector<Room>& rooms, int col, int row) {
+  const Room* best = nullptr;
+  for (const Room& room : rooms) {
+    if (ReferenceChainEncloses(room.chain, col, row) &&
+        (best == nullptr || ReferenceTwiceArea(room.polygon) < ReferenceTwiceArea(best->polygon))) {
+      best = &room;
+    }
+  }
+  return best;
+}
+
 }  // namespace linemap::testing
 
 #endif  // LINEMAP_TESTS_TESTING_REFERENCE_GEOMETRY_H_

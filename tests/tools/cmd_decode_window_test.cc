@@ -18,6 +18,7 @@
 
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
+#include "tests/testing/reference_geometry.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -237,28 +238,30 @@ TEST(CmdDecodeWindowTest, RoomAtWritesTheRoomsWindow) {
   ASSERT_EQ(
       RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", lmap}).exit_code, 0);
   const Grid whole = DecodeWhole(lmap, dir);
-  // Cells of several rooms, and one outside every room's border.
+  StatusOr<LmapVectors> vectors = LoadLmapVectors(lmap);
+  ASSERT_TRUE(vectors.ok()) << vectors.status().message();
+  // Cells of several rooms, and one outside every room's border; the room
+  // expected at each is the test's own (spec 8.2 written out, smallest area).
   std::set<std::uint32_t> rooms_seen;
   std::optional<CellIndex> roomless;
   for (int r = 3; r < whole.height(); r += 29) {
     for (int c = 5; c < whole.width(); c += 31) {
-      StatusOr<std::optional<LmapRoom>> room = LoadLmapRoomAt(lmap, {c, r});
-      ASSERT_TRUE(room.ok()) << room.status().message();
-      if (!room->has_value()) {
+      const RoomOutline* room = testing::ReferenceRoomAt(vectors->rooms, c, r);
+      if (room == nullptr) {
         roomless = CellIndex{c, r};
         continue;
       }
-      if (!rooms_seen.insert((*room)->room.id).second) continue;
-      const CellWindow& w = (*room)->window;
+      if (!rooms_seen.insert(room->id).second) continue;
+      const BoundingBox box = BoxOfCells(room->chain);
+      const Window w{box.min_col, box.min_row, box.max_col + 1, box.max_row + 1};
       // The point: the cell's centre, a little off it.
       const double x = whole.meta.origin.x + (c + 0.3) * whole.meta.resolution;
       const double y = whole.meta.origin.y + (r + 0.6) * whole.meta.resolution;
       char point[64];
       std::snprintf(point, sizeof(point), "%.6f,%.6f", x, y);
-      ExpectWindow(lmap, dir, whole, {"--room-at", point}, {w.col0, w.row0, w.col1, w.row1});
+      ExpectWindow(lmap, dir, whole, {"--room-at", point}, w);
       const CliResult out = RunCli({"decode", lmap, "-o", dir + "/w.yaml", "--room-at", point});
-      EXPECT_NE(out.out.find(", room " + std::to_string((*room)->room.id) + " ("),
-                std::string::npos)
+      EXPECT_NE(out.out.find(", room " + std::to_string(room->id) + " ("), std::string::npos)
           << out.out;
     }
   }
@@ -270,6 +273,9 @@ TEST(CmdDecodeWindowTest, RoomAtWritesTheRoomsWindow) {
   ExpectRefused(lmap, dir, {"--room-at", point}, "outside every room's border");
   ExpectRefused(lmap, dir, {"--room-at", "-0.1,1"}, "lies outside the map's 604 x 307 cells");
   ExpectRefused(lmap, dir, {"--room-at", "30.3,1"}, "lies outside the map's 604 x 307 cells");
+  // The map's right edge bounds its last column's squares: a point on it is
+  // off the map, one just inside it in the last column.
+  ExpectRefused(lmap, dir, {"--room-at", "30.2,1"}, "lies outside the map's 604 x 307 cells");
   ExpectRefused(lmap, dir, {"--room-at", "1"}, "2 comma-separated numbers");
 }
 

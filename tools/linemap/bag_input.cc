@@ -178,10 +178,7 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
   if (const std::optional<Pose2D>& pose = visit->options->robot_pose) {
     // As for a map file, the pose must fall in a cell (the one whose square
     // holds it) of every map it is stored with.
-    double col = 0, row = 0;
-    grid->WorldToCell(pose->x, pose->y, &col, &row);
-    const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
-    if (!(c >= 0 && r >= 0 && c < grid->width() && r < grid->height())) {
+    if (!grid->CellHolding(pose->x, pose->y)) {
       return InvalidArgumentError(where + ": --pose is outside the map (" +
                                   std::to_string(grid->width()) + " x " +
                                   std::to_string(grid->height()) + " cells)");

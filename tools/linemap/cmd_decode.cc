@@ -37,23 +37,34 @@ StatusOr<MapFileSummary> SaveWindow(const std::string& in, const CellWindow& win
   return MapFileSummary{grid.width(), grid.height(), grid.meta, grid.Count()};
 }
 
-// The room enclosing `cell` and the cells of its box into `out`; sets
-// *window to the box and *text to the room's id and kind.
-StatusOr<MapFileSummary> SaveRoom(const std::string& in, CellIndex cell, const std::string& out,
-                                  const DecodeLimits& limits, Durability durability,
-                                  std::string* text, std::optional<CellWindow>* window) {
-  LINEMAP_ASSIGN_OR_RETURN(std::optional<LmapRoom> room, LoadLmapRoomAt(in, cell, limits));
-  if (!room) {
+// --room-at: the room holding the point and the cells of its box into
+// `out`, from one read of the file (a map saved over it meanwhile cannot
+// mix two maps' frames); sets *window to the box and *text to the room's id
+// and kind. A point outside every room's border asks for a room that is not
+// there: invalid argument (exit 2), nothing written.
+StatusOr<MapFileSummary> SaveRoom(const std::string& in, const ParsedArgs& args,
+                                  const std::string& out, const DecodeLimits& limits,
+                                  Durability durability, std::string* text,
+                                  std::optional<CellWindow>* window) {
+  StatusOr<std::vector<std::uint8_t>> bytes = ReadFileBytes(in, limits.max_file_bytes);
+  if (!bytes.ok()) return bytes.status();
+  StatusOr<LmapHeader> header = DecodeLmapHeader(*bytes, limits);
+  if (!header.ok()) return header.status().WithContext("'" + in + "'");
+  LINEMAP_ASSIGN_OR_RETURN(const CellIndex cell, RoomCellFromArgs(args, *header, in));
+  StatusOr<std::optional<LmapRoom>> room = DecodeLmapRoomAt(*bytes, cell, limits);
+  if (!room.ok()) return room.status().WithContext("'" + in + "'");
+  if (!room->has_value()) {
     return InvalidArgumentError(
         "no room of '" + in + "' encloses cell (" + std::to_string(cell.col) + ", " +
         std::to_string(cell.row) +
         ") (it lies outside every room's border, or the file has no rooms)");
   }
-  LINEMAP_RETURN_IF_ERROR(SaveRosMap(out, room->grid, durability));
-  *text = ", room " + std::to_string(room->room.id) + " (" + RoomKindName(room->room.kind) + ")";
-  *window = room->window;
-  return MapFileSummary{room->grid.width(), room->grid.height(), room->grid.meta,
-                        room->grid.Count()};
+  const LmapRoom& found = **room;
+  LINEMAP_RETURN_IF_ERROR(SaveRosMap(out, found.grid, durability));
+  *text = ", room " + std::to_string(found.room.id) + " (" + RoomKindName(found.room.kind) + ")";
+  *window = found.window;
+  return MapFileSummary{found.grid.width(), found.grid.height(), found.grid.meta,
+                        found.grid.Count()};
 }
 
 std::vector<OptionSpec> DecodeOptions() {
@@ -119,17 +130,16 @@ int RunDecode(const std::vector<std::string>& args) {
   const std::string& in = parsed->positional[0];
   StatusOr<std::optional<CellWindow>> window = WindowFromArgs(*parsed, in, *limits);
   if (!window.ok()) return ReportError("decode", window.status());
-  StatusOr<std::optional<CellIndex>> room_cell = RoomCellFromArgs(*parsed, in, *limits);
-  if (!room_cell.ok()) return ReportError("decode", room_cell.status());
   const Durability durability =
       parsed->Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced;
   // A window or a room is decoded into memory (it is the small part asked
   // for); the whole map goes to the files band by band, never held whole.
   std::string room_text;
   StatusOr<MapFileSummary> written =
-      *room_cell ? SaveRoom(in, **room_cell, *out, *limits, durability, &room_text, &*window)
-      : *window  ? SaveWindow(in, **window, *out, *limits, durability)
-                 : DecodeLmapToRosMap(in, *out, *limits, durability);
+      parsed->Get("--room-at")
+          ? SaveRoom(in, *parsed, *out, *limits, durability, &room_text, &*window)
+      : *window ? SaveWindow(in, **window, *out, *limits, durability)
+                : DecodeLmapToRosMap(in, *out, *limits, durability);
   if (!written.ok()) return ReportError("decode", written.status());
   std::string where = room_text;
   if (*window) {

@@ -68,7 +68,7 @@ const CommandSpec kEncodeSpec = {
          "to 8.5x) and 1.3x the encode time (files saved with --tolerance code their blocks "
          "that way already)"},
         {"--threads", "N",
-         "threads to use (default 0: one per core); the bytes do not depend on it"},
+         "threads to use, 0..4096 (default 0: one per core); the bytes do not depend on it"},
         {"--tile-size", "CELLS",
          "side of the independently decodable tiles, 16..65536 (default 0: 1024 up to 4096 "
          "cells a side, 512 beyond); smaller tiles make windows cheaper and files larger"},
@@ -77,7 +77,7 @@ const CommandSpec kEncodeSpec = {
          "section up to 4096 cells a side, 2048 beyond); a window reads only the sections "
          "reaching its tiles"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
-        {"--epsilon", "E", "linemap extractor tolerance in cells (default 1.0)"},
+        {"--epsilon", "E", "linemap extractor tolerance in cells, at least 0.5 (default 1.0)"},
         {"--pose", "X,Y[,YAW]",
          "robot pose in map-frame metres (on the map), stored as metadata; the wall lines and "
          "rooms are then those of its free space"},
@@ -187,11 +187,7 @@ Status CheckOutput(const std::string& out, const std::string& map_path) {
 
 // The pose must fall in a cell of the map (the cell whose square holds it).
 Status CheckPoseOnMap(const Grid& grid, const Pose2D& pose, const std::string& map_path) {
-  double col = 0, row = 0;
-  grid.WorldToCell(pose.x, pose.y, &col, &row);
-  col = std::floor(col + 0.5);
-  row = std::floor(row + 0.5);
-  if (col >= 0 && row >= 0 && col < grid.width() && row < grid.height()) return Status::Ok();
+  if (grid.CellHolding(pose.x, pose.y)) return Status::Ok();
   char text[160];
   std::snprintf(text, sizeof(text), ": --pose %.3f,%.3f is outside the map (%d x %d cells)", pose.x,
                 pose.y, grid.width(), grid.height());
@@ -220,10 +216,13 @@ struct EncodeReport {
 // "2.2x smaller" / "1.1x larger" / "the same size" for a size ratio.
 std::string SmallerOrLarger(double ratio) {
   char text[48];
+  // Two decimals near 1, where one would round 0.97 to "1.0x smaller".
+  const char* format_smaller = ratio > 0.8 ? "%.2fx smaller" : "%.1fx smaller";
+  const char* format_larger = ratio < 1.25 ? "%.2fx larger" : "%.1fx larger";
   if (ratio > 0 && ratio < 1) {
-    std::snprintf(text, sizeof(text), "%.1fx smaller", 1.0 / ratio);
+    std::snprintf(text, sizeof(text), format_smaller, 1.0 / ratio);
   } else if (ratio > 1) {
-    std::snprintf(text, sizeof(text), "%.1fx larger", ratio);
+    std::snprintf(text, sizeof(text), format_larger, ratio);
   } else {
     std::snprintf(text, sizeof(text), "the same size");
   }

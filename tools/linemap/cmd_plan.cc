@@ -25,8 +25,9 @@ const CommandSpec kPlanSpec = {
     "d_save = max(W/2, L/2) + M from every occupied or unknown cell and from the map\n"
     "edge. Every trajectory found is printed, best first (fewest moves, then\n"
     "shortest), as `turn <degrees>` (positive = left) and `move <metres>` commands.\n"
-    "A start or goal outside the map, in an obstacle, too close to one, or a goal that\n"
-    "cannot be reached gives a message and exit code 1.",
+    "A start or goal outside the map is bad input (exit code 2); one in an obstacle,\n"
+    "too close to one, or a goal that cannot be reached gives a message and exit\n"
+    "code 1.",
     WithMapLoadOptions({
         {"--from", "X,Y[,HEADING]", "start position in metres, heading in radians (default 0)"},
         {"--to", "X,Y", "goal position in metres"},

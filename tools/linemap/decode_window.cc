@@ -87,28 +87,21 @@ StatusOr<CellWindow> WindowFromMetres(const MetreBox& box, const MapMetadata& me
   return w;
 }
 
-StatusOr<std::optional<CellIndex>> RoomCellFromArgs(const ParsedArgs& args,
-                                                    const std::string& lmap_path,
-                                                    const DecodeLimits& limits) {
-  if (!args.Get("--room-at").has_value()) return std::optional<CellIndex>();
+StatusOr<CellIndex> RoomCellFromArgs(const ParsedArgs& args, const LmapHeader& header,
+                                     const std::string& lmap_path) {
   LINEMAP_ASSIGN_OR_RETURN(std::vector<double> v, args.GetDoubleList("--room-at", 2));
   if (!std::isfinite(v[0]) || !std::isfinite(v[1])) {
     return InvalidArgumentError("--room-at takes finite metres X,Y");
   }
-  LINEMAP_ASSIGN_OR_RETURN(LmapHeader file, LoadLmapHeader(lmap_path, limits));
-  Grid frame;  // only its metadata: the map's cell <-> metre transform
-  frame.meta = file.meta;
-  double col = 0, row = 0;
-  frame.WorldToCell(v[0], v[1], &col, &row);
-  // The cell whose square holds the point: the nearest centre.
-  const double c = std::floor(col + 0.5), r = std::floor(row + 0.5);
-  if (!(c >= 0 && r >= 0 && c < file.width && r < file.height)) {
+  const std::optional<CellIndex> cell =
+      CellHoldingPoint(header.meta, header.width, header.height, v[0], v[1]);
+  if (!cell) {
     char text[160];
     std::snprintf(text, sizeof(text), "--room-at %g,%g m lies outside the map's %d x %d cells",
-                  v[0], v[1], file.width, file.height);
+                  v[0], v[1], header.width, header.height);
     return InvalidArgumentError(std::string(text) + " ('" + lmap_path + "')");
   }
-  return std::optional<CellIndex>(CellIndex{static_cast<int>(c), static_cast<int>(r)});
+  return *cell;
 }
 
 StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,

@@ -9,6 +9,7 @@
 
 #include "linemap/codec.h"
 #include "linemap/grid.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/status.h"
 #include "tools/linemap/cli.h"
 
@@ -35,12 +36,11 @@ StatusOr<std::optional<CellWindow>> WindowFromArgs(const ParsedArgs& args,
                                                    const std::string& lmap_path,
                                                    const DecodeLimits& limits);
 
-// --room-at X,Y (map-frame metres) from the arguments: the cell holding the
-// point (nullopt without the option). Reads the map's header from
-// `lmap_path`; a point off the map is an invalid argument naming it.
-StatusOr<std::optional<CellIndex>> RoomCellFromArgs(const ParsedArgs& args,
-                                                    const std::string& lmap_path,
-                                                    const DecodeLimits& limits);
+// --room-at X,Y (map-frame metres): the cell of the map `header` describes
+// that holds the point (CellHoldingPoint); a point off the map is an invalid
+// argument naming it and `lmap_path`.
+StatusOr<CellIndex> RoomCellFromArgs(const ParsedArgs& args, const LmapHeader& header,
+                                     const std::string& lmap_path);
 
 }  // namespace linemap::cli
 

@@ -13,7 +13,8 @@ std::vector<OptionSpec> DecodeLimitOptionSpecs() {
       {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
       {"--threads", "N",
-       "threads decoding the tiles of a 2.0 file (default 0: one per core); the result does not "
+       "threads decoding the tiles of a 2.0 file, 0..4096 (default 0: one per core); the result "
+       "does not "
        "depend on it"},
   };
 }

@@ -168,16 +168,6 @@ TEST(VectorQueriesTest, WindowsEmptyOrPastTheBorderAreRefused) {
   }
 }
 
-// |shoelace sum| of a polygon: twice its area.
-long long TwiceArea(const std::vector<CellIndex>& v) {
-  long long sum = 0;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const CellIndex p = v[i], q = v[(i + 1) % v.size()];
-    sum += static_cast<long long>(p.col) * q.row - static_cast<long long>(q.col) * p.row;
-  }
-  return sum < 0 ? -sum : sum;
-}
-
 TEST(VectorQueriesTest, RoomAtIsTheSmallestRoomWhoseBorderEnclosesTheCell) {
   const std::vector<std::uint8_t> bytes = Depot(64);
   StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
@@ -203,13 +193,7 @@ TEST(VectorQueriesTest, RoomAtIsTheSmallestRoomWhoseBorderEnclosesTheCell) {
   std::set<std::uint32_t> ids;
   for (const CellIndex& cell : cells) {
     SCOPED_TRACE(std::to_string(cell.col) + "," + std::to_string(cell.row));
-    const RoomOutline* want = nullptr;
-    for (const RoomOutline& room : all->rooms) {
-      if (testing::ReferenceChainEncloses(room.chain, cell.col, cell.row) &&
-          (want == nullptr || TwiceArea(room.polygon) < TwiceArea(want->polygon))) {
-        want = &room;
-      }
-    }
+    const RoomOutline* want = testing::ReferenceRoomAt(all->rooms, cell.col, cell.row);
     StatusOr<std::optional<LmapRoom>> got = DecodeLmapRoomAt(bytes, cell);
     ASSERT_TRUE(got.ok()) << got.status().message();
     ASSERT_EQ(got->has_value(), want != nullptr);
