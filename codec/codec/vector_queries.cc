@@ -154,7 +154,7 @@ StatusOr<std::optional<LmapRoom>> DecodeLmapRoomAt(const std::vector<std::uint8_
   Int128 best_area = 0;
   for (RoomOutline& room : near.rooms) {
     if (!ChainEncloses(room.chain, cell)) continue;
-    const std::int64_t area = TwiceArea(room.polygon);
+    const Int128 area = TwiceArea(room.polygon);
     if (best == nullptr || area < best_area) {
       best = &room;
       best_area = area;
