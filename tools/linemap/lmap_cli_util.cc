@@ -14,8 +14,7 @@ std::vector<OptionSpec> DecodeLimitOptionSpecs() {
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
       {"--threads", "N",
        "threads decoding the tiles of a 2.0 file, 0..4096 (default 0: one per core); the result "
-       "does not "
-       "depend on it"},
+       "does not depend on it"},
   };
 }
 
