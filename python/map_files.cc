@@ -1,6 +1,5 @@
 #include "python/map_files.h"
 
-#include <fstream>
 #include <vector>
 
 #include "linemap/codec.h"
@@ -11,14 +10,6 @@ namespace linemap::python {
 bool EndsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-bool IsLmapPath(const std::string& path) {
-  if (EndsWith(path, ".lmap")) return true;
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::uint8_t> head(8, 0);
-  in.read(reinterpret_cast<char*>(head.data()), 8);
-  return in.gcount() == 8 && LooksLikeLmap(head);
 }
 
 bool IsYamlPath(const std::string& path) {

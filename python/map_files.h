@@ -14,11 +14,6 @@ namespace linemap::python {
 
 bool EndsWith(const std::string& text, const std::string& suffix);
 
-// A file named .lmap is one (so a renamed image is refused as a bad .lmap
-// instead of being read as an image), and so is any file that starts with
-// the .lmap signature.
-bool IsLmapPath(const std::string& path);
-
 bool IsYamlPath(const std::string& path);
 
 // An .lmap file, a map YAML or a bare image, refused beyond `max_cells`

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -147,17 +146,6 @@ StatusOr<Grid> LoadLmapWindow(const std::string& path, const Window& window) {
 }
 
 }  // namespace
-
-// As `linemap`'s map arguments (served_map.h): a name ending in .lmap is decoded as one (a
-// renamed image is then refused as a bad .lmap, not read as an image), and so
-// is any file that starts with the .lmap signature.
-bool IsLmapPath(const std::string& path) {
-  if (path.ends_with(".lmap")) return true;
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::uint8_t> head(8, 0);
-  in.read(reinterpret_cast<char*>(head.data()), 8);
-  return in.gcount() == 8 && LooksLikeLmap(head);
-}
 
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window) {
   if (window && IsLmapPath(path)) {

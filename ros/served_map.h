@@ -33,10 +33,6 @@ StatusOr<Window> WindowFromValues(const double* values, int count);
 // window and the map's extent, and when no cell overlaps.
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 
-// Whether `path` is read as an .lmap file: its name ends in .lmap, or it
-// starts with the .lmap signature.
-bool IsLmapPath(const std::string& path);
-
 // Loads `path` (.lmap, map YAML or bare PGM/PNG) and, with a window, keeps
 // only the window's cells (the same cells as CropToWindow, refused as it
 // refuses them). A 2.0 .lmap file decodes only the tiles the window meets

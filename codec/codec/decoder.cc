@@ -1,6 +1,7 @@
 // The .lmap decoder: spec/format.md section "Decoding". Integer-only from
 // the header on; every read goes through the bounded ByteCursor and every
 // count is checked against the limits before it is used.
+#include <fstream>
 #include <string>
 
 #include "codec/codec/chunk_coding.h"
@@ -141,6 +142,14 @@ class Decoder {
 bool LooksLikeLmap(const std::vector<std::uint8_t>& bytes) {
   return bytes.size() >= kLmapSignature.size() &&
          std::equal(kLmapSignature.begin(), kLmapSignature.end(), bytes.begin());
+}
+
+bool IsLmapPath(const std::string& path) {
+  if (path.ends_with(".lmap")) return true;
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> head(kLmapSignature.size(), 0);
+  in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+  return in.gcount() == static_cast<std::streamsize>(head.size()) && LooksLikeLmap(head);
 }
 
 StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes,

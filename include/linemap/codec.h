@@ -224,6 +224,12 @@ StatusOr<LmapContents> LoadLmapContents(const std::string& path, const DecodeLim
 // True when `bytes` start with the .lmap signature.
 bool LooksLikeLmap(const std::vector<std::uint8_t>& bytes);
 
+// Whether a map argument is read as an .lmap file, as the CLI, the ROS nodes
+// and the Python module read theirs: its name ends in .lmap (a renamed image
+// is then refused as a bad .lmap rather than read as an image), or the file
+// starts with the .lmap signature.
+bool IsLmapPath(const std::string& path);
+
 // Quality measures of a decoded grid against the original.
 struct GridComparison {
   bool same_geometry = false;  // width, height, resolution, origin

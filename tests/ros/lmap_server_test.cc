@@ -51,6 +51,49 @@ std::unique_ptr<ChildProcess> StartServer(RosMaster& master, const std::string& 
                                         "server" + ns.substr(1));
 }
 
+// Starts lmap_server in `ns` with `extra` arguments and waits for the map
+// it publishes into *map (a fatal failure when it exits first).
+void ReceiveServedMap(RosMaster& master, const std::string& ns, std::vector<std::string> extra,
+                      OccupancyGridMsg* map) {
+  MapListener listener(ns);
+  auto server = StartServer(master, ns, std::move(extra));
+  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
+  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+  *map = *listener.map;
+}
+
+// The reference crop, cell by cell: the cells of an unrotated map whose
+// squares overlap the open window (x0, x1) x (y0, y1).
+Grid ReferenceCrop(const Grid& grid, double x0, double y0, double x1, double y1) {
+  const double r = grid.meta.resolution;
+  const double ox = grid.meta.origin.x, oy = grid.meta.origin.y;
+  std::vector<int> cols, rows;
+  for (int c = 0; c < grid.width(); ++c) {
+    if (ox + (c + 1) * r > x0 + 1e-9 && ox + c * r < x1 - 1e-9) cols.push_back(c);
+  }
+  for (int w = 0; w < grid.height(); ++w) {
+    if (oy + (w + 1) * r > y0 + 1e-9 && oy + w * r < y1 - 1e-9) rows.push_back(w);
+  }
+  Grid out(static_cast<int>(cols.size()), static_cast<int>(rows.size()));
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      out.set(static_cast<int>(i), static_cast<int>(j), grid.at(cols[i], rows[j]));
+    }
+  }
+  out.meta = grid.meta;
+  out.meta.origin.x = ox + cols.front() * r;
+  out.meta.origin.y = oy + rows.front() * r;
+  return out;
+}
+
+// The cells of the bundled depot_lossless.lmap in the window, cut by the
+// test's own rule (ReferenceCrop).
+Grid DepotCrop(double x0, double y0, double x1, double y1) {
+  StatusOr<Grid> whole = LoadLmap(SourceDir() + "/tests/data/lmap/depot_lossless.lmap");
+  EXPECT_TRUE(whole.ok()) << whole.status().message();
+  return whole.ok() ? ReferenceCrop(*whole, x0, y0, x1, y1) : Grid();
+}
+
 void ExpectMetadataIsMapInfo(const MapMetaDataMsg& meta, const OccupancyGridMsg& map) {
   EXPECT_EQ(meta.width, map.info.width);
   EXPECT_EQ(meta.height, map.info.height);
@@ -87,38 +130,13 @@ TEST(LmapServerTest, PublishesMapYamlInTheGivenFrame) {
   RosMaster& master = SharedMaster();
   // Non-zero origin: the origin travels into the message.
   const Grid expected = LoadBundledMap("strands/kth/map.yaml");
-  MapListener listener("/s2");
-  auto server = StartServer(
-      master, "/s2", {"_map:=" + BundledMapsDir() + "/strands/kth/map.yaml", "_frame_id:=world"});
-  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
-  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
-  ExpectMessageIsGrid(*listener.map, expected, "world");
-  EXPECT_EQ(listener.map->info.origin.position.x, -7.0);
-  EXPECT_EQ(listener.map->info.origin.position.y, -17.5);
-}
-
-// The reference crop, cell by cell: the cells of an unrotated map whose
-// squares overlap the open window (x0, x1) x (y0, y1).
-Grid ReferenceCrop(const Grid& grid, double x0, double y0, double x1, double y1) {
-  const double r = grid.meta.resolution;
-  const double ox = grid.meta.origin.x, oy = grid.meta.origin.y;
-  std::vector<int> cols, rows;
-  for (int c = 0; c < grid.width(); ++c) {
-    if (ox + (c + 1) * r > x0 + 1e-9 && ox + c * r < x1 - 1e-9) cols.push_back(c);
-  }
-  for (int w = 0; w < grid.height(); ++w) {
-    if (oy + (w + 1) * r > y0 + 1e-9 && oy + w * r < y1 - 1e-9) rows.push_back(w);
-  }
-  Grid out(static_cast<int>(cols.size()), static_cast<int>(rows.size()));
-  for (std::size_t j = 0; j < rows.size(); ++j) {
-    for (std::size_t i = 0; i < cols.size(); ++i) {
-      out.set(static_cast<int>(i), static_cast<int>(j), grid.at(cols[i], rows[j]));
-    }
-  }
-  out.meta = grid.meta;
-  out.meta.origin.x = ox + cols.front() * r;
-  out.meta.origin.y = oy + rows.front() * r;
-  return out;
+  OccupancyGridMsg map;
+  ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(
+      master, "/s2", {"_map:=" + BundledMapsDir() + "/strands/kth/map.yaml", "_frame_id:=world"},
+      &map));
+  ExpectMessageIsGrid(map, expected, "world");
+  EXPECT_EQ(map.info.origin.position.x, -7.0);
+  EXPECT_EQ(map.info.origin.position.y, -17.5);
 }
 
 TEST(LmapServerTest, WindowPublishesOnlyTheRegionWithItsOrigin) {
@@ -127,13 +145,11 @@ TEST(LmapServerTest, WindowPublishesOnlyTheRegionWithItsOrigin) {
   // Edges on cell borders (-5.0) and inside cells (-2.32, 3.01, 8.93).
   const Grid expected = ReferenceCrop(whole, -5.0, -2.32, 3.01, 8.93);
   ASSERT_EQ(expected.width(), 161);
-  MapListener listener("/s3");
-  auto server = StartServer(
+  OccupancyGridMsg map;
+  ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(
       master, "/s3",
-      {BundledMapsDir() + "/strands/kth/map.yaml", "_window:=[-5.0, -2.32, 3.01, 8.93]"});
-  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
-  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
-  ExpectMessageIsGrid(*listener.map, expected, "map");
+      {BundledMapsDir() + "/strands/kth/map.yaml", "_window:=[-5.0, -2.32, 3.01, 8.93]"}, &map));
+  ExpectMessageIsGrid(map, expected, "map");
 }
 
 TEST(LmapServerTest, RostopicEchoShowsTheMapInfo) {
@@ -257,20 +273,17 @@ TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
 // for an image, which is read whole before the master answers and cropped.
 TEST(LmapServerTest, WindowParameterWithACommandLineMapPublishesTheWindow) {
   RosMaster& master = SharedMaster();
+  const Grid expected = DepotCrop(5.0, 2.0, 12.5, 9.0);
   const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
-  StatusOr<Grid> whole = LoadLmap(lmap);
-  ASSERT_TRUE(whole.ok()) << whole.status().message();
-  const Grid expected = ReferenceCrop(*whole, 5.0, 2.0, 12.5, 9.0);
   const std::string yaml = BundledMapsDir() + "/nav2/depot.yaml";
   int k = 0;
-  for (const std::string& map : {lmap, yaml}) {
+  for (const std::string& path : {lmap, yaml}) {
+    SCOPED_TRACE(path);
     const std::string ns = "/s10_" + std::to_string(k++);
     ros::param::set(ns + "/lmap_server/window", std::vector<double>{5.0, 2.0, 12.5, 9.0});
-    MapListener listener(ns);
-    auto server = StartServer(master, ns, {map});
-    ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
-    ASSERT_TRUE(listener.Received()) << map << ": lmap_server exited: " << server->Stderr();
-    ExpectMessageIsGrid(*listener.map, expected, "map");
+    OccupancyGridMsg map;
+    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, {path}, &map));
+    ExpectMessageIsGrid(map, expected, "map");
   }
 }
 
@@ -278,14 +291,10 @@ TEST(LmapServerTest, WindowParameterWithACommandLineMapPublishesTheWindow) {
 TEST(LmapServerTest, WindowToTheMapsBorderPublishesItsCells) {
   RosMaster& master = SharedMaster();
   const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
-  StatusOr<Grid> whole = LoadLmap(lmap);
-  ASSERT_TRUE(whole.ok()) << whole.status().message();
-  const Grid expected = ReferenceCrop(*whole, 20.0, 0.0, 30.2, 15.35);
-  MapListener listener("/s8");
-  auto server = StartServer(master, "/s8", {lmap, "_window:=[20.0, 0.0, 30.2, 15.35]"});
-  ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20));
-  ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
-  ExpectMessageIsGrid(*listener.map, expected, "map");
+  OccupancyGridMsg map;
+  ASSERT_NO_FATAL_FAILURE(
+      ReceiveServedMap(master, "/s8", {lmap, "_window:=[20.0, 0.0, 30.2, 15.35]"}, &map));
+  ExpectMessageIsGrid(map, DepotCrop(20.0, 0.0, 30.2, 15.35), "map");
 }
 
 // A map that cannot be read is refused at once, named, without waiting for

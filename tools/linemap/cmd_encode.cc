@@ -272,7 +272,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
 std::optional<int> SaveAsRead(const std::string& map_path, const std::string& out,
                               const ParsedArgs& parsed, const EncodeOptions& options, double start,
                               bench::ProgressBar* bar) {
-  if (IsLmapFile(map_path) || options.tolerance_cells != 0 || options.robot_pose) {
+  if (IsLmapPath(map_path) || options.tolerance_cells != 0 || options.robot_pose) {
     return std::nullopt;
   }
   StatusOr<MapLoadOptions> load = MapLoadOptionsFrom(parsed);

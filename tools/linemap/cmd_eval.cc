@@ -115,7 +115,7 @@ int RunEval(const std::vector<std::string>& args) {
   const GridComparison m = CompareGrids(*original, *decoded);
   // The layers' fidelity when the second file is an .lmap.
   std::optional<LayerFidelity> fidelity;
-  if (IsLmapFile(decoded_path)) {
+  if (IsLmapPath(decoded_path)) {
     DecodeLimits limits;
     limits.max_cells = decoded_options.max_cells;
     StatusOr<LmapVectors> vectors = LoadLmapVectors(decoded_path, limits);

@@ -142,7 +142,7 @@ int RunInfo(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kInfoSpec, args, &exit_code);
   if (!parsed) return exit_code;
-  if (IsLmapFile(parsed->positional[0])) return RunLmapInfo(parsed->positional[0], *parsed);
+  if (IsLmapPath(parsed->positional[0])) return RunLmapInfo(parsed->positional[0], *parsed);
   StatusOr<Grid> grid = LoadMapArgument(parsed->positional[0], *parsed);
   if (!grid.ok()) return ReportError("info", grid.status());
   const CellCounts counts = grid->Count();

@@ -1,7 +1,6 @@
 #include "tools/linemap/lmap_cli_util.h"
 
 #include <chrono>
-#include <fstream>
 
 #include "format/png_writer.h"
 #include "linemap/map_io.h"
@@ -36,16 +35,6 @@ StatusOr<int> ThreadsFrom(const ParsedArgs& args) {
                                 args.Get("--threads").value_or("") + "'");
   }
   return threads;
-}
-
-bool IsLmapFile(const std::string& path) {
-  // A file named .lmap is decoded as one, so that a renamed image is refused
-  // as a bad .lmap instead of being silently read as a map image.
-  if (path.ends_with(".lmap")) return true;
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::uint8_t> head(8, 0);
-  in.read(reinterpret_cast<char*>(head.data()), 8);
-  return in.gcount() == 8 && LooksLikeLmap(head);
 }
 
 StatusOr<std::vector<std::uint8_t>> TrinaryPng(const Grid& grid) {

@@ -20,9 +20,6 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 // --threads N: 0 (one per core) to 4096, the same for every command.
 StatusOr<int> ThreadsFrom(const ParsedArgs& args);
 
-// True when `path` ends in .lmap or the file starts with the .lmap signature.
-bool IsLmapFile(const std::string& path);
-
 // The 2-bit palette PNG (zlib level 9) of the grid's trinary image, in
 // map_saver's grey levels (free 254, occupied 0, unknown 205), north up.
 StatusOr<std::vector<std::uint8_t>> TrinaryPng(const Grid& grid);

@@ -60,7 +60,7 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
 }
 
 Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
-  if (!IsLmapFile(path)) return Status::Ok();
+  if (!IsLmapPath(path)) return Status::Ok();
   for (const char* option :
        {"--resolution", "--origin", "--negate", "--occupied-thresh", "--free-thresh", "--mode"}) {
     if (args.Has(option)) {
@@ -79,7 +79,7 @@ StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) 
 }
 
 StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapLoadOptions& options) {
-  if (IsLmapFile(path)) {  // an .lmap file is decoded
+  if (IsLmapPath(path)) {  // an .lmap file is decoded
     DecodeLimits limits;
     limits.max_cells = options.max_cells;
     return LoadLmap(path, limits);

@@ -164,6 +164,25 @@ TEST(CodecTest, EpsilonUnderHalfACellIsRefused) {
   EXPECT_TRUE(EncodeLmap(Grid(4, 4, Cell::kFree), half).ok());
 }
 
+// A map argument is an .lmap file by its name or by its first bytes: a
+// renamed .lmap is still one, an image named .lmap is one too (and then
+// refused as a bad file), a PGM is not.
+TEST(CodecTest, IsLmapPathByNameOrSignature) {
+  const std::string dir = testing::MakeTempDir("is_lmap_path");
+  const std::string depot = testing::SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  testing::WriteFile(dir + "/renamed.map", testing::ReadFile(depot));
+  testing::WriteFile(dir + "/image.pgm", "P5 2 1 255\n\x00\xfe");
+  testing::WriteFile(dir + "/image.lmap", "P5 2 1 255\n\x00\xfe");
+  testing::WriteFile(dir + "/short", "LM");
+  EXPECT_TRUE(IsLmapPath(depot));
+  EXPECT_TRUE(IsLmapPath(dir + "/renamed.map"));
+  EXPECT_TRUE(IsLmapPath(dir + "/image.lmap"));
+  EXPECT_TRUE(IsLmapPath(dir + "/missing.lmap"));
+  EXPECT_FALSE(IsLmapPath(dir + "/image.pgm"));
+  EXPECT_FALSE(IsLmapPath(dir + "/short"));
+  EXPECT_FALSE(IsLmapPath(dir + "/missing.pgm"));
+}
+
 // A 1.0 file of a width x height map holding `chunks` (type, payload)
 // after its header.
 using ChunkList = std::vector<std::pair<std::string, std::vector<std::uint8_t>>>;
