@@ -93,6 +93,23 @@ StatusOr<T> ReadScalar(const YAML::Node& doc, const char* key, const std::string
   }
 }
 
+// The YAML's origin [x, y, yaw]. Required, as map_server requires it (like
+// image and resolution): a map taken at 0,0,0 instead would lie in the wrong
+// place without a word.
+StatusOr<Pose2D> ReadOrigin(const YAML::Node& doc, const std::string& where) {
+  if (!doc["origin"]) return InvalidArgumentError(where + ": has no 'origin' key");
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<double> origin,
+                           ReadScalar<std::vector<double>>(doc, "origin", where));
+  if (origin.size() != 3) {
+    return InvalidArgumentError(where + ": 'origin' must have 3 elements [x, y, yaw], not " +
+                                std::to_string(origin.size()));
+  }
+  for (double v : origin) {
+    if (!std::isfinite(v)) return InvalidArgumentError(where + ": 'origin' is not finite");
+  }
+  return Pose2D{origin[0], origin[1], origin[2]};
+}
+
 struct YamlMap {
   std::string image_path;
   MapMetadata meta;
@@ -122,18 +139,7 @@ StatusOr<YamlMap> ParseMapYaml(const std::string& yaml_path) {
   LINEMAP_ASSIGN_OR_RETURN(out.meta.resolution, ReadScalar<double>(doc, "resolution", where));
   LINEMAP_RETURN_IF_ERROR(CheckResolution(out.meta.resolution, where));
 
-  if (doc["origin"]) {
-    LINEMAP_ASSIGN_OR_RETURN(std::vector<double> origin,
-                             ReadScalar<std::vector<double>>(doc, "origin", where));
-    if (origin.size() != 3) {
-      return InvalidArgumentError(where + ": 'origin' must have 3 elements [x, y, yaw], not " +
-                                  std::to_string(origin.size()));
-    }
-    for (double v : origin) {
-      if (!std::isfinite(v)) return InvalidArgumentError(where + ": 'origin' is not finite");
-    }
-    out.meta.origin = {origin[0], origin[1], origin[2]};
-  }
+  LINEMAP_ASSIGN_OR_RETURN(out.meta.origin, ReadOrigin(doc, where));
   if (doc["negate"]) {
     // nav2 reads negate as an int and falls back to a bool.
     StatusOr<int> as_int = ReadScalar<int>(doc, "negate", where);

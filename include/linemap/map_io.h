@@ -55,9 +55,10 @@ struct MapLoadOptions {
   std::optional<MapMode> mode;
 };
 
-// Loads `path`: a map YAML (.yaml / .yml) naming its image, or a bare PGM /
-// PNG image that gets the defaults (0.05 m, origin 0, thresholds 0.65 /
-// 0.196, trinary, no negate) unless overridden by `options`.
+// Loads `path`: a map YAML (.yaml / .yml) naming its image (image,
+// resolution and origin are required, as map_server requires them), or a
+// bare PGM / PNG image that gets the defaults (0.05 m, origin 0, thresholds
+// 0.65 / 0.196, trinary, no negate) unless overridden by `options`.
 StatusOr<Grid> LoadRosMap(const std::string& path, const MapLoadOptions& options = {});
 
 // The image file LoadRosMap(path) reads: for a map YAML the image it names

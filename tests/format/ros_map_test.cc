@@ -135,8 +135,8 @@ TEST(RosMapTest, AnyFileNameRoundTripsThroughTheYaml) {
 
 TEST(RosMapTest, ImagePathOfAMap) {
   const std::string dir = MakeTempDir("ros_image_path");
-  WriteFile(dir + "/rel.yaml", "image: sub/m.pgm\nresolution: 0.05\n");
-  WriteFile(dir + "/abs.yaml", "image: /maps/m.pgm\nresolution: 0.05\n");
+  WriteFile(dir + "/rel.yaml", "image: sub/m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
+  WriteFile(dir + "/abs.yaml", "image: /maps/m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
   EXPECT_EQ(RosMapImagePath(dir + "/rel.yaml").value(), dir + "/sub/m.pgm");
   EXPECT_EQ(RosMapImagePath(dir + "/abs.yaml").value(), "/maps/m.pgm");
   EXPECT_EQ(RosMapImagePath(dir + "/bare.pgm").value(), dir + "/bare.pgm");
@@ -175,20 +175,24 @@ TEST(RosMapTest, YamlErrorsNameTheFile) {
     StatusCode code;
   };
   const Case cases[] = {
-      {"no_image.yaml", "resolution: 0.05\n", StatusCode::kInvalidArgument},
-      {"negative_resolution.yaml", "image: img.pgm\nresolution: -0.05\n",
+      {"no_image.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n", StatusCode::kInvalidArgument},
+      {"negative_resolution.yaml", "image: img.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n",
        StatusCode::kInvalidArgument},
-      {"zero_resolution.yaml", "image: img.pgm\nresolution: 0\n", StatusCode::kInvalidArgument},
-      {"text_resolution.yaml", "image: img.pgm\nresolution: fine\n", StatusCode::kInvalidArgument},
+      {"zero_resolution.yaml", "image: img.pgm\nresolution: 0\norigin: [0, 0, 0]\n",
+       StatusCode::kInvalidArgument},
+      {"text_resolution.yaml", "image: img.pgm\nresolution: fine\norigin: [0, 0, 0]\n",
+       StatusCode::kInvalidArgument},
       {"short_origin.yaml", "image: img.pgm\nresolution: 0.05\norigin: [1, 2]\n",
        StatusCode::kInvalidArgument},
-      {"bad_mode.yaml", "image: img.pgm\nresolution: 0.05\nmode: fancy\n",
+      {"no_origin.yaml", "image: img.pgm\nresolution: 0.05\n", StatusCode::kInvalidArgument},
+      {"bad_mode.yaml", "image: img.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nmode: fancy\n",
        StatusCode::kInvalidArgument},
-      {"bad_thresh.yaml", "image: img.pgm\nresolution: 0.05\nfree_thresh: 1.5\n",
+      {"bad_thresh.yaml", "image: img.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nfree_thresh: 1.5\n",
        StatusCode::kInvalidArgument},
       {"not_a_map.yaml", "- just\n- a list\n", StatusCode::kInvalidArgument},
       {"broken.yaml", "image: [unclosed\n", StatusCode::kInvalidArgument},
-      {"missing_image.yaml", "image: nothere.pgm\nresolution: 0.05\n", StatusCode::kNotFound},
+      {"missing_image.yaml", "image: nothere.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n",
+       StatusCode::kNotFound},
   };
   for (const Case& c : cases) {
     WriteFile(dir + "/" + c.name, c.text);
@@ -199,6 +203,29 @@ TEST(RosMapTest, YamlErrorsNameTheFile) {
   }
   EXPECT_EQ(LoadRosMap(dir + "/absent.yaml").status().code(), StatusCode::kNotFound);
   EXPECT_EQ(LoadRosMap(dir).status().code(), StatusCode::kInvalidArgument);
+}
+
+// nav2's map_server (and ROS 1's) refuses a YAML without origin, as one
+// without image or resolution: a map read at 0,0,0 instead would put every
+// cell in the wrong place without a word.
+TEST(RosMapTest, YamlWithoutOriginIsRefusedAsMapServerRefusesIt) {
+  const std::string dir = MakeTempDir("ros");
+  WriteFile(dir + "/img.pgm", std::string("P5 1 1 255\n") + std::string("\x00", 1));
+  WriteFile(dir + "/no_origin.yaml", "image: img.pgm\nresolution: 0.05\n");
+  // Not even when the caller overrides it: a missing resolution is refused
+  // with an override too.
+  MapLoadOptions overridden;
+  overridden.origin = Pose2D{};
+  for (const MapLoadOptions& options : {MapLoadOptions{}, overridden}) {
+    StatusOr<Grid> grid = LoadRosMap(dir + "/no_origin.yaml", options);
+    ASSERT_FALSE(grid.ok());
+    EXPECT_EQ(grid.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(grid.status().message().find("no_origin.yaml"), std::string::npos)
+        << grid.status().message();
+    EXPECT_NE(grid.status().message().find("'origin'"), std::string::npos)
+        << grid.status().message();
+  }
+  EXPECT_FALSE(RosMapImagePath(dir + "/no_origin.yaml").ok());
 }
 
 TEST(RosMapTest, FailedSaveLeavesExistingFilesIntact) {

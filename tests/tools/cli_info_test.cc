@@ -171,8 +171,8 @@ TEST(CliInfoTest, BadInputGivesOneLineNamingTheFileAndExitTwo) {
   const std::string dir = MakeTempDir("cli");
   WriteFile(dir + "/img.pgm", std::string("P5 1 1 255\n") + std::string("\x00", 1));
   WriteFile(dir + "/no_image.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n");
-  WriteFile(dir + "/negative.yaml", "image: img.pgm\nresolution: -0.05\n");
-  WriteFile(dir + "/empty_room.yaml", "image: empty.pgm\nresolution: 0.1\n");
+  WriteFile(dir + "/negative.yaml", "image: img.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n");
+  WriteFile(dir + "/empty_room.yaml", "image: empty.pgm\nresolution: 0.1\norigin: [0, 0, 0]\n");
   WriteFile(dir + "/notamap.png", "this is text, not an image");
   WriteFile(dir + "/empty.pgm", "");
   const std::vector<std::string> before = ListDir(dir);

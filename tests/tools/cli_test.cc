@@ -60,5 +60,118 @@ TEST(CliTest, HelpShowsTheYawAsOptional) {
   }
 }
 
+// Every option naming a file (or folder) a command writes, after the
+// arguments the command needs.
+struct OutputCase {
+  std::vector<std::string> argv;
+  std::string option;
+};
+
+std::vector<OutputCase> OutputOptions() {
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  return {
+      {{"lines", map}, "-o"},
+      {{"segment", map}, "-o"},
+      {{"encode", map}, "-o"},
+      {{"decode", lmap}, "-o"},
+      {{"export", lmap}, "-o"},
+      {{"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5"}, "--svg"},
+      {{"bench", "/nonexistent/linemap-corpus"}, "--md"},
+      {{"bench", "/nonexistent/linemap-corpus"}, "--csv"},
+      {{"bench", "/nonexistent/linemap-corpus"}, "--svg-dir"},
+  };
+}
+
+// An extension each command accepts for the option.
+std::string GoodExtension(const OutputCase& c) {
+  const std::string& command = c.argv[0];
+  if (command == "lines" || command == "export" || c.option == "--csv") return ".csv";
+  if (command == "segment") return ".json";
+  if (command == "encode") return ".lmap";
+  if (command == "decode") return ".yaml";
+  if (command == "plan") return ".svg";
+  if (c.option == "--md") return ".md";
+  return "";  // --svg-dir: a folder
+}
+
+// A second output option used to replace the first without a word: the
+// command wrote one file and the user expected two (or the first).
+TEST(CliTest, AnOutputOptionGivenTwiceIsRefused) {
+  const std::string dir = testing::MakeTempDir("cli_output_twice");
+  for (const OutputCase& c : OutputOptions()) {
+    const std::string ext = GoodExtension(c);
+    for (const bool inline_value : {false, true}) {
+      std::vector<std::string> argv = c.argv;
+      if (inline_value) {
+        argv.push_back(c.option + "=" + dir + "/first" + ext);
+      } else {
+        argv.insert(argv.end(), {c.option, dir + "/first" + ext});
+      }
+      argv.insert(argv.end(), {c.option, dir + "/second" + ext});
+      const CliResult r = RunCli(argv);
+      SCOPED_TRACE(argv[0] + " " + c.option + ": " + r.err);
+      EXPECT_EQ(r.exit_code, 2);
+      EXPECT_NE(r.err.find(c.option + " given twice"), std::string::npos);
+      EXPECT_TRUE(testing::ListDir(dir).empty());
+    }
+  }
+}
+
+// A file holds what its extension says, or the command refuses the name
+// before any work (lines wrote CSV to x.json, plan SVG to x.png).
+TEST(CliTest, AnOutputNameWithTheWrongExtensionIsRefused) {
+  const std::string dir = testing::MakeTempDir("cli_output_extension");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  struct Case {
+    std::vector<std::string> argv;
+    std::string path;
+    std::string expected;  // the extension the message names
+  };
+  const std::vector<Case> cases = {
+      {{"lines", map, "-o", dir + "/x.json"}, dir + "/x.json", ".csv"},
+      {{"lines", map, "-o", dir + "/csv"}, dir + "/csv", ".csv"},
+      {{"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5", "--svg", dir + "/x.png"},
+       dir + "/x.png",
+       ".svg"},
+      {{"segment", map, "-o", dir + "/x.csv"}, dir + "/x.csv", ".json"},
+      // GeoJSON only with --geojson; plain JSON is not GeoJSON.
+      {{"segment", map, "-o", dir + "/x.geojson"}, dir + "/x.geojson", ".json"},
+      {{"segment", map, "--geojson", "-o", dir + "/x.csv"}, dir + "/x.csv", ".geojson"},
+      {{"bench", "/nonexistent/linemap-corpus", "--md", dir + "/x.txt"}, dir + "/x.txt", ".md"},
+      {{"bench", "/nonexistent/linemap-corpus", "--csv", dir + "/x.txt"}, dir + "/x.txt", ".csv"},
+      // These refused a wrong name already; export picks its format by
+      // the extension and refuses one it does not know.
+      {{"encode", map, "-o", dir + "/x.png"}, dir + "/x.png", ".lmap"},
+      {{"decode", lmap, "-o", dir + "/x.pgm"}, dir + "/x.pgm", ".yaml"},
+      {{"export", lmap, "-o", dir + "/x.txt"}, dir + "/x.txt", ".csv"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = RunCli(c.argv);
+    SCOPED_TRACE(c.argv[0] + " " + c.path + ": " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("'" + c.path + "'"), std::string::npos);
+    EXPECT_NE(r.err.find(c.expected), std::string::npos);
+    EXPECT_TRUE(testing::ListDir(dir).empty());
+  }
+}
+
+TEST(CliTest, AnOutputNameWithTheRightExtensionIsWritten) {
+  const std::string dir = testing::MakeTempDir("cli_output_extension_ok");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::vector<std::vector<std::string>> commands = {
+      {"lines", map, "-o", dir + "/LINES.CSV"},  // any case, as encode's .lmap
+      {"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5", "--svg", dir + "/plan.svg"},
+      {"segment", map, "-o", dir + "/rooms.json"},
+      {"segment", map, "--geojson", "-o", dir + "/rooms.geo.json"},
+  };
+  for (const std::vector<std::string>& argv : commands) {
+    const CliResult r = RunCli(argv);
+    EXPECT_EQ(r.exit_code, 0) << argv[0] << " " << argv.back() << ": " << r.err;
+    EXPECT_TRUE(testing::FileExists(argv.back())) << argv.back();
+  }
+}
+
 }  // namespace
 }  // namespace linemap

@@ -37,6 +37,24 @@ std::vector<std::string> SplitCommas(const std::string& text) {
   return parts;
 }
 
+bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix) {
+  if (s.size() <= suffix.size()) return false;
+  return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
+  });
+}
+
+// ".a", ".a or .b", ".a, .b or .c".
+std::string Alternatives(const std::vector<std::string>& items) {
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) text += i + 1 == items.size() ? " or " : ", ";
+    text += items[i];
+  }
+  return text;
+}
+
 }  // namespace
 
 bool ParsedArgs::Has(const std::string& name) const {
@@ -158,13 +176,14 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
         parsed.flags.insert(name);
         continue;
       }
-      if (inline_value) {
-        parsed.values[name] = *inline_value;
-      } else if (i + 1 < args.size()) {
-        parsed.values[name] = args[++i];
-      } else {
-        return usage_error(name + " needs a value (" + option->value_name + ")");
+      std::optional<std::string> value = inline_value;
+      if (!value && i + 1 < args.size()) value = args[++i];
+      if (!value) return usage_error(name + " needs a value (" + option->value_name + ")");
+      if (option->output && parsed.values.count(name) > 0) {
+        return usage_error(name + " given twice ('" + parsed.values[name] + "' and '" + *value +
+                           "'); give one " + option->value_name);
       }
+      parsed.values[name] = *value;
       continue;
     }
     parsed.positional.push_back(arg);
@@ -175,6 +194,15 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
   if (n > spec.max_positional)
     return usage_error("unexpected argument '" + parsed.positional.back() + "'");
   return parsed;
+}
+
+Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,
+                            const std::string& format) {
+  for (const std::string& extension : extensions) {
+    if (EndsWithIgnoringCase(path, extension)) return Status::Ok();
+  }
+  return InvalidArgumentError("output '" + path + "' must end in " + Alternatives(extensions) +
+                              ": it is written as " + format);
 }
 
 int ReportError(const std::string& command, const Status& status) {

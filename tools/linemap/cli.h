@@ -24,6 +24,10 @@ struct OptionSpec {
   std::string name;        // "--json"
   std::string value_name;  // "X,Y"; empty for a flag without a value
   std::string help;        // one line, with the unit and the default
+  // Names a file or folder the command writes. ParseArgs refuses it given
+  // twice: the last one would win and the first file would silently never
+  // be written.
+  bool output = false;
 };
 
 struct CommandSpec {
@@ -66,6 +70,13 @@ void PrintHelp(const CommandSpec& spec);
 // message on stderr).
 std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<std::string>& args,
                                     int* exit_code);
+
+// Refuses an output name that does not end in one of `extensions` (".csv",
+// compared in any case), so that no file holds another format than its name
+// says: kInvalidArgument naming `path`, the extensions and `format`, what
+// the command writes ("CSV").
+Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,
+                            const std::string& format);
 
 // Prints "linemap <command>: <message>" on stderr and returns the exit code
 // for the status: 2 for bad input (invalid, missing, corrupt, unsupported,

@@ -39,10 +39,13 @@ const CommandSpec kBenchSpec = {
     "hold the map's edge cells (and DisPL_ave against RM-Line's), and encode and\n"
     "decode CPU time against libpng, each with PASS / FAIL.",
     {
-        {"--md", "OUT.md", "also write the tables as Markdown"},
-        {"--csv", "OUT.csv", "also write every figure of every map as CSV"},
+        {"--md", "OUT.md", "also write the tables as Markdown (the name ends in .md)",
+         /*output=*/true},
+        {"--csv", "OUT.csv", "also write every figure of every map as CSV (the name ends in .csv)",
+         /*output=*/true},
         {"--svg-dir", "DIR",
-         "write per-map overlay SVGs (the 2.0 file's walls, rooms, furniture) and summary.svg"},
+         "write per-map overlay SVGs (the 2.0 file's walls, rooms, furniture) and summary.svg",
+         /*output=*/true},
         {"--repeats", "N", "timed runs per map up to 1 Mcell (default 5; 3 to 4 Mcells, 1 above)"},
         {"--scaling-max", "MCELLS",
          "largest map of the scaling table: 0 (skip), 1, 4, 16 or 64 (default 64)"},
@@ -66,10 +69,14 @@ struct BenchArgs {
 
 StatusOr<BenchArgs> BenchArgsFrom(const ParsedArgs& parsed) {
   BenchArgs args;
+  // A misnamed output is refused before the corpus is read, not after the
+  // run (minutes).
+  args.md = parsed.Get("--md");
+  if (args.md) LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.md, {".md"}, "Markdown"));
+  args.csv = parsed.Get("--csv");
+  if (args.csv) LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.csv, {".csv"}, "CSV"));
   args.dirs = parsed.positional.empty() ? bench::DefaultCorpusDirs() : parsed.positional;
   if (args.dirs.empty()) return NotFoundError("no corpus: give a folder of maps");
-  args.md = parsed.Get("--md");
-  args.csv = parsed.Get("--csv");
   args.svg_dir = parsed.Get("--svg-dir");
   LINEMAP_ASSIGN_OR_RETURN(args.options.repeats, parsed.GetInt("--repeats", 5));
   if (args.options.repeats < 1 || args.options.repeats > 100) {

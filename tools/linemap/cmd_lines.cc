@@ -25,7 +25,9 @@ const CommandSpec kLinesSpec = {
     "an edge cell centre to the nearest segment, RM-Line Eq. 5) in cm and cells, the\n"
     "largest such distance in cells, and the extraction time in ms.",
     WithMapLoadOptions({
-        {"-o", "LINES.csv", "write the segments as CSV (layer,x1,y1,x2,y2; metres)"},
+        {"-o", "LINES.csv",
+         "write the segments as CSV (layer,x1,y1,x2,y2; metres); the name ends in .csv",
+         /*output=*/true},
         {"--method", "NAME", "linemap (default) or rmline (the paper's method)"},
         {"--dtheta", "D", "RM-Line ray angle step in degrees (default 1)"},
         {"--ds", "S", "RM-Line scoring point spacing in cells, (0, 1] (default 0.5)"},
@@ -108,6 +110,10 @@ int RunLines(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kLinesSpec, args, &exit_code);
   if (!parsed) return exit_code;
+  if (std::optional<std::string> out = parsed->Get("-o")) {
+    const Status named = CheckOutputExtension(*out, {".csv"}, "CSV");
+    if (!named.ok()) return ReportError("lines", named);
+  }
   const std::string& map_path = parsed->positional[0];
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("lines", grid.status());

@@ -39,7 +39,9 @@ const CommandSpec kPlanSpec = {
         {"--json", "",
          "print one JSON object: found, length_m, commands, waypoints, "
          "alternatives, ms, and every trajectory"},
-        {"--svg", "OUT.svg", "draw the map, the safe zone and the trajectories"},
+        {"--svg", "OUT.svg",
+         "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg)",
+         /*output=*/true},
     }),
     1,
     1,
@@ -220,6 +222,10 @@ int RunPlan(const std::vector<std::string>& args) {
   int exit_code = kExitOk;
   std::optional<ParsedArgs> parsed = ParseArgs(kPlanSpec, args, &exit_code);
   if (!parsed) return exit_code;
+  if (std::optional<std::string> svg = parsed->Get("--svg")) {
+    const Status named = CheckOutputExtension(*svg, {".svg"}, "SVG");
+    if (!named.ok()) return ReportError("plan", named);
+  }
   StatusOr<PlanRequest> request = RequestFrom(*parsed);
   if (!request.ok()) return ReportError("plan", request.status());
   StatusOr<PlanOptions> options = OptionsFrom(*parsed);

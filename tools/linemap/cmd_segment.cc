@@ -27,7 +27,9 @@ const CommandSpec kSegmentSpec = {
     "component of at least 400 cells, its border closed by morphology and the Lee\n"
     "algorithm. Coordinates are map-frame metres of cell centres.",
     WithMapLoadOptions({
-        {"-o", "OUT.json", "output file (required)"},
+        {"-o", "OUT.json",
+         "output file (required; ends in .json, with --geojson in .geojson or .json)",
+         /*output=*/true},
         {"--geojson", "",
          "write GeoJSON (Polygon per room with id, area_m2, kind and per blob "
          "outline; Point per door; property layer: room | door | furniture, "
@@ -285,6 +287,13 @@ std::string GeoJson(const Grid& grid, const Segmentation& seg) {
   return top.str() + "\n";
 }
 
+// GeoJSON is JSON, so its file may end in either; plain JSON under a
+// .geojson name would be taken for GeoJSON.
+Status CheckOutputName(const std::string& path, const ParsedArgs& args) {
+  if (args.Has("--geojson")) return CheckOutputExtension(path, {".geojson", ".json"}, "GeoJSON");
+  return CheckOutputExtension(path, {".json"}, "JSON (GeoJSON with --geojson)");
+}
+
 }  // namespace
 
 int RunSegment(const std::vector<std::string>& args) {
@@ -295,6 +304,8 @@ int RunSegment(const std::vector<std::string>& args) {
   if (!out_path || out_path->empty()) {
     return ReportError("segment", InvalidArgumentError("missing -o OUT.json"));
   }
+  const Status named = CheckOutputName(*out_path, *parsed);
+  if (!named.ok()) return ReportError("segment", named);
   const std::string& map_path = parsed->positional[0];
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
   if (!grid.ok()) return ReportError("segment", grid.status());
