@@ -17,6 +17,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "codec/segment/no_room_boxes.h"
 #include "codec/segment/segment_internal.h"
 
 namespace linemap::segment_internal {
@@ -104,32 +105,6 @@ std::vector<Piece> FurniturePieces(const Grid& grid, const RoomFlood& flood,
   return kept;
 }
 
-// Counts of cells in no room (walls, unknown, obstacles too large for
-// furniture) over any box in O(1), from a summed-area table.
-class NoRoomCounter {
- public:
-  NoRoomCounter(const std::vector<std::int32_t>& room_of, int width, int height)
-      : width_(width + 1), sums_(static_cast<std::size_t>(width + 1) * (height + 1), 0) {
-    for (int r = 0; r < height; ++r) {
-      std::int32_t row_sum = 0;
-      for (int c = 0; c < width; ++c) {
-        row_sum += room_of[static_cast<std::size_t>(r) * width + c] == 0;
-        At(c + 1, r + 1) = At(c + 1, r) + row_sum;
-      }
-    }
-  }
-  std::int32_t Count(const BoundingBox& b) const {
-    return Get(b.max_col + 1, b.max_row + 1) - Get(b.min_col, b.max_row + 1) -
-           Get(b.max_col + 1, b.min_row) + Get(b.min_col, b.min_row);
-  }
-
- private:
-  std::int32_t& At(int c, int r) { return sums_[static_cast<std::size_t>(r) * width_ + c]; }
-  std::int32_t Get(int c, int r) const { return sums_[static_cast<std::size_t>(r) * width_ + c]; }
-  int width_;
-  std::vector<std::int32_t> sums_;
-};
-
 // Two boxes whose row spans or column spans overlap, give or take a cell.
 bool LineUp(const BoundingBox& a, const BoundingBox& b) {
   return (a.min_row <= b.max_row + 1 && b.min_row <= a.max_row + 1) ||
@@ -147,7 +122,7 @@ bool LineUp(const BoundingBox& a, const BoundingBox& b) {
 // lines up with a neighbour; a speck that lands near a table by chance
 // rarely does, and stays out of its blob.
 std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
-                                      const NoRoomCounter& no_room, double max_box_cells,
+                                      NoRoomBoxes* no_room, double max_box_cells,
                                       std::size_t speck_cells) {
   const std::int32_t n = static_cast<std::int32_t>(pieces.size());
   std::vector<std::int32_t> parent(n);
@@ -184,7 +159,7 @@ std::vector<std::int32_t> GroupPieces(const std::vector<Piece>& pieces, int gap,
             Extend(&joined, group_box[z]);
             const double box_cells = static_cast<double>(joined.max_col - joined.min_col + 1) *
                                      (joined.max_row - joined.min_row + 1);
-            if (box_cells > max_box_cells || no_room.Count(joined) > 0) continue;
+            if (box_cells > max_box_cells || no_room->Any(joined)) continue;
             parent[a] = z;
             group_box[z] = joined;
           }
@@ -222,9 +197,9 @@ std::vector<FurnitureBlob> FreeStandingBlobs(const Grid& grid, const RoomFlood& 
       std::max(0, static_cast<int>(std::lround(options.furniture_group_m / grid.meta.resolution)));
   std::vector<std::int32_t> group;
   if (pieces.size() > 1) {
-    const NoRoomCounter no_room(flood.room_of_cell, grid.width(), grid.height());
+    NoRoomBoxes no_room(flood.room_of_cell, grid.width(), grid.height());
     const double res = grid.meta.resolution;
-    group = GroupPieces(pieces, gap, no_room, options.max_furniture_area_m2 / (res * res),
+    group = GroupPieces(pieces, gap, &no_room, options.max_furniture_area_m2 / (res * res),
                         options.speck_max_cells);
   } else {
     group.assign(pieces.size(), 0);
