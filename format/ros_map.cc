@@ -97,7 +97,9 @@ StatusOr<T> ReadScalar(const YAML::Node& doc, const char* key, const std::string
 // image and resolution): a map taken at 0,0,0 instead would lie in the wrong
 // place without a word.
 StatusOr<Pose2D> ReadOrigin(const YAML::Node& doc, const std::string& where) {
-  if (!doc["origin"]) return InvalidArgumentError(where + ": has no 'origin' key");
+  if (!doc["origin"])
+    return InvalidArgumentError(
+        where + ": has no 'origin' key (map_server needs one too: add origin: [x, y, yaw])");
   LINEMAP_ASSIGN_OR_RETURN(std::vector<double> origin,
                            ReadScalar<std::vector<double>>(doc, "origin", where));
   if (origin.size() != 3) {
@@ -434,7 +436,7 @@ RosMapWriter::~RosMapWriter() = default;
 StatusOr<RosMapWriter> RosMapWriter::Open(const std::string& yaml_path, int width, int height,
                                           const MapMetadata& meta, Durability durability) {
   if (!IsYamlPath(yaml_path)) {
-    return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml");
+    return InvalidArgumentError(Quoted(yaml_path) + ": output map name must end in .yaml or .yml");
   }
   if (width <= 0 || height <= 0) {
     return InvalidArgumentError(Quoted(yaml_path) + ": cannot save an empty grid");

@@ -8,32 +8,29 @@
 #include <cstdint>
 #include <vector>
 
-#include "linemap/labeling.h"
+#include "linemap/cells.h"
 
 namespace linemap::segment_internal {
 
 // The boxes asked about are furniture-sized (at most max_furniture_area_m2)
 // and few, so each is scanned in `room_of` itself, stopping at the first
-// cell in no room: over ../shared/maps the scans read a fraction of the
-// map. The summed-area table of the whole map used before (4 bytes a cell,
-// zeroed, then written row on row) made each answer O(1), but building it
-// cost more than all the answers: without it an exact encode takes a
-// median 21 % less CPU time over ../shared/maps (in process; most of the
-// table's cost was faulting in fresh pages, about 14 us each on a 2-core
-// virtual machine). Once the scans would read more than `scan_budget` cells
-// (default: twice the map), the table is built after all, so a map of many
-// specks costs at most a few passes over it.
+// cell in no room: on real maps the scans read a fraction of the map, where
+// a summed-area table of the whole map (4 bytes a cell, most of its cost
+// the page faults of fresh memory) costs more than all the answers. Once
+// the scans would read more than `scan_budget` cells (default: twice the
+// map), the table is built after all, so a map of many specks costs at most
+// a few passes over it.
 class NoRoomBoxes {
  public:
   // `room_of`: the room of each cell (row-major, width * height), 0 for
-  // none; it must outlive this object.
+  // none; it must outlive this object. The budget is twice the map.
+  NoRoomBoxes(const std::vector<std::int32_t>& room_of, int width, int height)
+      : NoRoomBoxes(room_of, width, height, 2 * static_cast<std::int64_t>(width) * height) {}
   NoRoomBoxes(const std::vector<std::int32_t>& room_of, int width, int height,
-              std::int64_t scan_budget = -1)
-      : room_of_(room_of),
-        width_(width),
-        height_(height),
-        scan_budget_(scan_budget >= 0 ? scan_budget
-                                      : 2 * static_cast<std::int64_t>(width) * height) {}
+              std::int64_t scan_budget)
+      : room_of_(room_of), width_(width), height_(height), scan_budget_(scan_budget) {}
+  NoRoomBoxes(const NoRoomBoxes&) = delete;
+  NoRoomBoxes& operator=(const NoRoomBoxes&) = delete;
 
   // Whether a cell of `b` (inside the map) has room 0.
   bool Any(const BoundingBox& b) {

@@ -165,8 +165,16 @@ TEST(CliTest, AnOutputNameWithTheRightExtensionIsWritten) {
       {"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5", "--svg", dir + "/plan.svg"},
       {"segment", map, "-o", dir + "/rooms.json"},
       {"segment", map, "--geojson", "-o", dir + "/rooms.geo.json"},
+      {"encode", map, "-o", dir + "/ARENA.LMAP"},
   };
   for (const std::vector<std::string>& argv : commands) {
+    const CliResult r = RunCli(argv);
+    EXPECT_EQ(r.exit_code, 0) << argv[0] << " " << argv.back() << ": " << r.err;
+    EXPECT_TRUE(testing::FileExists(argv.back())) << argv.back();
+  }
+  // export picks the format by the extension, in any case too.
+  for (const char* name : {"/walls.SVG", "/walls.Csv", "/walls.GeoJSON"}) {
+    const std::vector<std::string> argv = {"export", dir + "/ARENA.LMAP", "-o", dir + name};
     const CliResult r = RunCli(argv);
     EXPECT_EQ(r.exit_code, 0) << argv[0] << " " << argv.back() << ": " << r.err;
     EXPECT_TRUE(testing::FileExists(argv.back())) << argv.back();

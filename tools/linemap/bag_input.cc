@@ -67,7 +67,7 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
                                               : "missing -o OUT.lmap");
   }
   selection.out = *out;
-  if (!selection.all && !selection.out.ends_with(".lmap")) {
+  if (!selection.all && !EndsWithIgnoringCase(selection.out, ".lmap")) {
     return InvalidArgumentError("output '" + selection.out + "' must end in .lmap");
   }
   if (!selection.all && IsDirectory(selection.out)) {

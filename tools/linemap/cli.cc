@@ -37,14 +37,6 @@ std::vector<std::string> SplitCommas(const std::string& text) {
   return parts;
 }
 
-bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix) {
-  if (s.size() <= suffix.size()) return false;
-  return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) ==
-           std::tolower(static_cast<unsigned char>(b));
-  });
-}
-
 // ".a", ".a or .b", ".a, .b or .c".
 std::string Alternatives(const std::vector<std::string>& items) {
   std::string text;
@@ -194,6 +186,14 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
   if (n > spec.max_positional)
     return usage_error("unexpected argument '" + parsed.positional.back() + "'");
   return parsed;
+}
+
+bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix) {
+  if (s.size() <= suffix.size()) return false;
+  return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
+  });
 }
 
 Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,

@@ -155,21 +155,11 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   return options;
 }
 
-bool EndsInLmap(const std::string& path) {
-  static constexpr std::string_view kSuffix = ".lmap";
-  if (path.size() <= kSuffix.size()) return false;
-  for (std::size_t i = 0; i < kSuffix.size(); ++i) {
-    const char c = path[path.size() - kSuffix.size() + i];
-    if (std::tolower(static_cast<unsigned char>(c)) != kSuffix[i]) return false;
-  }
-  return true;
-}
-
 // Refuses an output that would destroy the input: the map file itself or the
 // image its YAML names (same file by device and inode, so links count too).
 Status CheckOutput(const std::string& out, const std::string& map_path) {
   if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
-  if (!EndsInLmap(out)) {
+  if (!EndsWithIgnoringCase(out, ".lmap")) {
     return InvalidArgumentError("output '" + out + "' must end in .lmap");
   }
   if (IsSameFile(out, map_path)) {

@@ -30,11 +30,6 @@ std::vector<OptionSpec> ExportOptions() {
   return options;
 }
 
-bool EndsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 const CommandSpec kExportSpec = {
@@ -70,9 +65,10 @@ int RunExport(const std::vector<std::string>& args) {
   if (!parsed) return exit_code;
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("export", InvalidArgumentError("missing -o OUT"));
-  const bool csv = EndsWith(*out, ".csv");
-  const bool geojson = EndsWith(*out, ".geojson") || EndsWith(*out, ".json");
-  const bool svg = EndsWith(*out, ".svg");
+  const bool csv = EndsWithIgnoringCase(*out, ".csv");
+  const bool geojson =
+      EndsWithIgnoringCase(*out, ".geojson") || EndsWithIgnoringCase(*out, ".json");
+  const bool svg = EndsWithIgnoringCase(*out, ".svg");
   if (!csv && !geojson && !svg) {
     return ReportError(
         "export",

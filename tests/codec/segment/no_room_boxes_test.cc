@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace linemap::segment_internal {
@@ -71,10 +73,18 @@ TEST(NoRoomBoxesTest, BuildsTheTableOnceTheScansPassTheBudget) {
   EXPECT_FALSE(boxes.built_table());
   EXPECT_FALSE(boxes.Any(whole));
   EXPECT_TRUE(boxes.built_table());
-  // One-cell boxes at the corners, after the switch.
+  // Scans are charged their whole box: after two whole-map scans (charged
+  // exactly the budget) even a one-cell box goes to the table.
+  NoRoomBoxes charged(room_of, w, h);
+  EXPECT_FALSE(charged.Any(whole));
+  EXPECT_FALSE(charged.Any(whole));
+  EXPECT_FALSE(charged.built_table());
+  EXPECT_FALSE(charged.Any({3, 4, 3, 4}));
+  EXPECT_TRUE(charged.built_table());
+  // The table's corners: one-cell boxes at the first and the last cell.
   std::vector<std::int32_t> with_corner = room_of;
   with_corner[static_cast<std::size_t>(h - 1) * w + (w - 1)] = 0;
-  NoRoomBoxes corner(with_corner, w, h, 0);
+  NoRoomBoxes corner(with_corner, w, h, /*scan_budget=*/0);
   EXPECT_TRUE(corner.Any({w - 1, h - 1, w - 1, h - 1}));
   EXPECT_FALSE(corner.Any({0, 0, 0, 0}));
   EXPECT_TRUE(corner.Any(whole));
