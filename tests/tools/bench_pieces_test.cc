@@ -64,6 +64,25 @@ TEST(BenchMeasureTest, MedianAndRepeats) {
   EXPECT_EQ(TimeRuns([] {}, 4).size(), 4u);
 }
 
+TEST(BenchMeasureTest, TwoOperationsAreTimedInTurn) {
+  // A rival and ours take turns, and which goes first alternates, so that
+  // neither always runs on the caches the other left.
+  std::string order;
+  const auto [a_ms, b_ms] =
+      TimeRunsInTurn([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/3);
+  EXPECT_EQ(order, "abbaab");
+  EXPECT_EQ(a_ms.size(), 3u);
+  EXPECT_EQ(b_ms.size(), 3u);
+  // A busy operation's runs are its own, not the other's.
+  const auto [busy_ms, idle_ms] = TimeRunsInTurn(
+      [] {
+        volatile double x = 0;
+        for (int i = 0; i < 20'000'000; ++i) x = x + 1e-9 * i;
+      },
+      [] {}, 2);
+  EXPECT_GT(Median(busy_ms), 10 * Median(idle_ms) + 1.0);
+}
+
 TEST(BenchMeasureTest, PeakMemorySeesATouchedAllocation) {
   constexpr std::size_t kBytes = 32 << 20;
   std::optional<double> peak = PeakExtraMemoryBytes([] {

@@ -94,14 +94,26 @@ Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapRes
   return Status::Ok();
 }
 
-// Encode and decode CPU time (median of `what.repeats`) and peak memory of
-// the default file, as `linemap encode` / `decode` do it.
+// Encode and decode CPU time (median of `what.repeats`, in turn with the
+// rival's when given) and peak memory of the default file, as `linemap
+// encode` / `decode` do it.
 void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const LmapMeasure& what,
               MapResult* result) {
   auto encode = [&] { (void)EncodeLmap(grid, EncodeOptions{}); };
   auto decode = [&] { (void)DecodeLmap(file); };
-  result->figures[key::kLmapEncodeMs] = Median(TimeRuns(encode, what.repeats));
-  result->figures[key::kLmapDecodeMs] = Median(TimeRuns(decode, what.repeats));
+  if (what.rival) {
+    const auto [rival_encode, lmap_encode] =
+        TimeRunsInTurn(what.rival->encode, encode, what.repeats);
+    const auto [rival_decode, lmap_decode] =
+        TimeRunsInTurn(what.rival->decode, decode, what.repeats);
+    result->figures[what.rival->encode_ms_key] = Median(rival_encode);
+    result->figures[what.rival->decode_ms_key] = Median(rival_decode);
+    result->figures[key::kLmapEncodeMs] = Median(lmap_encode);
+    result->figures[key::kLmapDecodeMs] = Median(lmap_decode);
+  } else {
+    result->figures[key::kLmapEncodeMs] = Median(TimeRuns(encode, what.repeats));
+    result->figures[key::kLmapDecodeMs] = Median(TimeRuns(decode, what.repeats));
+  }
   if (!what.memory) return;
   if (auto peak = PeakExtraMemoryBytes(encode)) {
     result->figures[key::kLmapEncodePeakMb] = *peak / kMb;

@@ -5,6 +5,8 @@
 #define LINEMAP_TOOLS_BENCH_LMAP_FIGURES_H_
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -12,9 +14,20 @@
 
 namespace linemap::bench {
 
+// A rival codec's encode and decode of the same map (libpng's), timed in
+// turn with the default file's (TimeRunsInTurn), their medians stored under
+// its two keys.
+struct RivalCodec {
+  std::function<void()> encode;
+  std::function<void()> decode;
+  const char* encode_ms_key = nullptr;
+  const char* decode_ms_key = nullptr;
+};
+
 struct LmapMeasure {
-  int repeats = 5;     // timed encode and decode runs of the default file
-  bool memory = true;  // peak memory of its encode and decode (forks)
+  int repeats = 5;                  // timed encode and decode runs of the default file
+  bool memory = true;               // peak memory of its encode and decode (forks)
+  std::optional<RivalCodec> rival;  // none: the default file timed alone
 };
 
 // Adds the kLmap* figures of `grid` to `result`. A file that cannot be

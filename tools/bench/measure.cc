@@ -35,19 +35,38 @@ bool ResetPeakRss() {
   return std::fclose(f) == 0 && ok;
 }
 
+double CpuMs() {
+  timespec ts{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
+
+double TimeOnce(const std::function<void()>& op) {
+  const double start = CpuMs();
+  op();
+  return CpuMs() - start;
+}
+
 }  // namespace
 
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats) {
   std::vector<double> ms;
-  auto now_ms = [] {
-    timespec ts{};
-    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-  };
+  for (int i = 0; i < std::max(1, repeats); ++i) ms.push_back(TimeOnce(op));
+  return ms;
+}
+
+std::pair<std::vector<double>, std::vector<double>> TimeRunsInTurn(const std::function<void()>& a,
+                                                                   const std::function<void()>& b,
+                                                                   int repeats) {
+  std::pair<std::vector<double>, std::vector<double>> ms;
   for (int i = 0; i < std::max(1, repeats); ++i) {
-    const double start = now_ms();
-    op();
-    ms.push_back(now_ms() - start);
+    if (i % 2 == 0) {
+      ms.first.push_back(TimeOnce(a));
+      ms.second.push_back(TimeOnce(b));
+    } else {
+      ms.second.push_back(TimeOnce(b));
+      ms.first.push_back(TimeOnce(a));
+    }
   }
   return ms;
 }

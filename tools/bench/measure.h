@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace linemap::bench {
@@ -12,6 +13,14 @@ namespace linemap::bench {
 // `repeats` runs of `op`. CPU time rather than wall time: the benchmark
 // machines are shared, and another process's load must not show up here.
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
+
+// The same for two operations timed in turn, `a` then `b`, then `b` then
+// `a`, and so on: a rival codec and ours measured in the same moments, so
+// that a slow phase of a shared machine, or what the anchors' processes left
+// in the caches, weighs on both alike. Returns the runs of a, then of b.
+std::pair<std::vector<double>, std::vector<double>> TimeRunsInTurn(const std::function<void()>& a,
+                                                                   const std::function<void()>& b,
+                                                                   int repeats);
 
 double Median(std::vector<double> values);  // NaN for an empty list
 

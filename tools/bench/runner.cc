@@ -130,18 +130,19 @@ void AddImageAnchor(const Grid& grid, const ImageCodec& codec, const char* bytes
 }
 
 // libpng encode and decode of the layout that gave the smallest file, as a
-// user would keep it.
-void AddPngSpeed(const Grid& grid, const SmallestPng& png, int repeats, bool memory,
-                 MapResult* result) {
+// user would keep it: timed in turn with the default .lmap file's
+// (AddLmapFigures), its peak memory here.
+RivalCodec PngRival(const Grid& grid, const SmallestPng& png) {
   const PngLayout layout = png.layout;
-  auto encode = [&] { (void)EncodeTrinaryPng(grid, layout, 9); };
-  auto decode = [&] { (void)DecodeTrinaryPng(Bytes(png.bytes)); };
-  result->figures[key::kPngEncodeMs] = Median(TimeRuns(encode, repeats));
-  result->figures[key::kPngDecodeMs] = Median(TimeRuns(decode, repeats));
-  if (!memory) return;
-  if (auto peak = PeakExtraMemoryBytes(encode))
+  const std::string* bytes = &png.bytes;
+  return {[&grid, layout] { (void)EncodeTrinaryPng(grid, layout, 9); },
+          [bytes] { (void)DecodeTrinaryPng(Bytes(*bytes)); }, key::kPngEncodeMs, key::kPngDecodeMs};
+}
+
+void AddPngMemory(const RivalCodec& png, MapResult* result) {
+  if (auto peak = PeakExtraMemoryBytes(png.encode))
     result->figures[key::kPngEncodePeakMb] = *peak / kMb;
-  if (auto peak = PeakExtraMemoryBytes(decode))
+  if (auto peak = PeakExtraMemoryBytes(png.decode))
     result->figures[key::kPngDecodePeakMb] = *peak / kMb;
 }
 
@@ -247,14 +248,18 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
     AddImageAnchor(grid, JpegXlCodec(), key::kJxlBytes, key::kJxlEncodeMs, key::kJxlDecodeMs,
                    &result);
   }
-  if (!png.bytes.empty()) AddPngSpeed(grid, png, repeats, options.measure_memory, &result);
+  LmapMeasure lmap_measure{repeats, options.measure_memory, std::nullopt};
+  if (!png.bytes.empty()) {
+    lmap_measure.rival = PngRival(grid, png);
+    if (options.measure_memory) AddPngMemory(*lmap_measure.rival, &result);
+  }
   // RM-Line's DisPL_ave is also the bar the 2.0 file's walls must meet.
   AddLineFigures(grid, LineMethod::kRmLine, key::kRmLineLines, key::kRmLineDisplCm,
                  key::kRmLineDisplCells, key::kRmLineMs, &result);
   AddLineFigures(grid, LineMethod::kLinemap, key::kLinemapLines, key::kLinemapDisplCm, nullptr,
                  key::kLinemapMs, &result);
   AddOpenCvFigures(grid, &result);
-  Status lmap = AddLmapFigures(grid, {repeats, options.measure_memory}, &result);
+  Status lmap = AddLmapFigures(grid, lmap_measure, &result);
   if (!lmap.ok()) Note(&result, ".lmap 2.0", lmap);
   AddThroughput(&result);
   AddGoalFigures(&result);

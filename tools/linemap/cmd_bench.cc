@@ -37,7 +37,8 @@ const CommandSpec kBenchSpec = {
     "goals tables end the output: each default file decoded and compared cell for\n"
     "cell, size and layer cost at the median, how well the walls and furniture\n"
     "hold the map's edge cells (and DisPL_ave against RM-Line's), and encode and\n"
-    "decode CPU time against libpng, each with PASS / FAIL.",
+    "decode CPU time against libpng (the two timed in turn, run for run), each\n"
+    "with PASS / FAIL.",
     {
         {"--md", "OUT.md", "also write the tables as Markdown (the name ends in .md)",
          /*output=*/true},
