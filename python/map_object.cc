@@ -151,6 +151,15 @@ py::dict ToOccupancyGrid(const Map& map, const std::string& frame_id) {
   return out;
 }
 
+// Sets both thresholds after checking them together, as a YAML's pair is
+// checked: a map must not hold a pair that no YAML or message may.
+void SetThresholds(Map* map, double occupied, double free) {
+  const Status ok = CheckOccupancyThresholds({occupied, free});
+  if (!ok.ok()) RaiseStatus(ok);
+  map->meta.occupied_thresh = occupied;
+  map->meta.free_thresh = free;
+}
+
 std::string Repr(const Map& map) {
   const Pose2D& o = map.meta.origin;
   return "<linemap.Map " + std::to_string(map.cells.shape(1)) + " x " +
@@ -267,6 +276,23 @@ nav_msgs/OccupancyGrid. Values are ``linemap.FREE`` (0), ``OCCUPIED`` (1) and
           "origin", [](const Map& map) { return OriginTuple(map.meta.origin); },
           [](Map& map, const py::object& origin) { map.meta.origin = OriginArgument(origin); },
           "(x, y, yaw): pose of the lower-left corner of cell (0, 0), metres and radians")
+      .def_property(
+          "occupied_thresh", [](const Map& map) { return map.meta.occupied_thresh; },
+          [](Map& map, double occupied) { SetThresholds(&map, occupied, map.meta.free_thresh); },
+          "the YAML's occupied_thresh (0.65 unless the map was loaded from a YAML that says "
+          "otherwise): saved back by save() and stored in an .lmap file's metadata; "
+          "0 <= free_thresh < occupied_thresh <= 1 in whole percents, else ValueError")
+      .def_property(
+          "free_thresh", [](const Map& map) { return map.meta.free_thresh; },
+          [](Map& map, double free) { SetThresholds(&map, map.meta.occupied_thresh, free); },
+          "the YAML's free_thresh (0.196, map_saver's, unless the map was loaded from a YAML that "
+          "says otherwise); as occupied_thresh")
+      .def_property_readonly(
+          "negate", [](const Map& map) { return map.meta.negate; },
+          "the YAML's negate (False by default), saved back with the map")
+      .def_property_readonly(
+          "mode", [](const Map& map) { return std::string(MapModeName(map.meta.mode)); },
+          "the YAML's mode: 'trinary' (the default), 'scale' or 'raw', saved back with the map")
       .def("to_occupancy_grid", &ToOccupancyGrid, py::arg("frame_id") = "map", R"doc(
 The map as nav_msgs/OccupancyGrid fields (map_server's trinary convention):
 a dict with ``data`` (flat int8 array, row 0 at the origin; free 0,

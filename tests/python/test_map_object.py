@@ -162,3 +162,28 @@ def test_from_occupancy_grid_default_limit_is_load_s_2_30_cells():
         linemap.Map.from_occupancy_grid(np.broadcast_to(np.int8(0), (data.size,)), 2**15 + 1,
                                         2**15, 0.05)
     assert "2^30" in linemap.Map.from_occupancy_grid.__doc__
+
+
+def test_yaml_fields_are_shown_and_thresholds_settable(tmp_path):
+    cells = np.array([[F, O, U], [O, O, F]], dtype=np.uint8)
+    m = linemap.Map(cells)
+    # map_saver's defaults for a map made from cells.
+    assert (m.occupied_thresh, m.free_thresh, m.negate, m.mode) == (0.65, 0.196, False, "trinary")
+    # A YAML's own thresholds come with a map loaded from it, and go back
+    # out with it.
+    (tmp_path / "t.pgm").write_bytes(b"P5\n3 2\n255\n" + bytes([0, 254, 205, 0, 0, 254]))
+    (tmp_path / "t.yaml").write_text(
+        "image: t.pgm\nmode: trinary\nresolution: 0.05\norigin: [0.0, 0.0, 0]\n"
+        "negate: 0\noccupied_thresh: 0.7\nfree_thresh: 0.2\n")
+    loaded = linemap.load(str(tmp_path / "t.yaml"))
+    assert (loaded.occupied_thresh, loaded.free_thresh) == (0.7, 0.2)
+    loaded.free_thresh = 0.1
+    linemap.save(str(tmp_path / "out.yaml"), loaded)
+    text = (tmp_path / "out.yaml").read_text()
+    assert "free_thresh: 0.1" in text and "occupied_thresh: 0.7" in text, text
+    # A pair no YAML may hold is refused, and the map keeps its pair.
+    with pytest.raises(ValueError, match="65"):
+        m.free_thresh = 0.65
+    with pytest.raises(ValueError):
+        m.occupied_thresh = 1.5
+    assert (m.occupied_thresh, m.free_thresh) == (0.65, 0.196)
