@@ -124,6 +124,7 @@ TEST(CliTest, AnOutputNameWithTheWrongExtensionIsRefused) {
   const std::string dir = testing::MakeTempDir("cli_output_extension");
   const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
   const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  const std::string corrupt = testing::SourceDir() + "/tests/data/bad/lmap_decode/bad_crc.lmap";
   struct Case {
     std::vector<std::string> argv;
     std::string path;
@@ -145,6 +146,8 @@ TEST(CliTest, AnOutputNameWithTheWrongExtensionIsRefused) {
       // the extension and refuses one it does not know.
       {{"encode", map, "-o", dir + "/x.png"}, dir + "/x.png", ".lmap"},
       {{"decode", lmap, "-o", dir + "/x.pgm"}, dir + "/x.pgm", ".yaml"},
+      // Refused before the file is read: a corrupt one is not reported.
+      {{"decode", corrupt, "-o", dir + "/x.pgm"}, dir + "/x.pgm", ".yaml"},
       {{"export", lmap, "-o", dir + "/x.txt"}, dir + "/x.txt", ".csv"},
   };
   for (const Case& c : cases) {

@@ -16,10 +16,14 @@ namespace linemap::cli {
 
 namespace {
 
-// Refuses outputs that would replace the input file (only possible when an
-// .lmap is named *.yaml or *.pgm; by device and inode, so links count too).
+// Refuses outputs that are no map YAML or would replace the input file (only
+// possible when an .lmap is named *.yaml or *.pgm; by device and inode, so
+// links count too).
 Status CheckOutput(const std::string& out, const std::string& in) {
   if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
+  // Before any decoding: SaveRosMap refuses the name too, but only once a
+  // window or a huge map has been decoded.
+  LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(out, {".yaml", ".yml"}, "a map YAML"));
   for (const std::string& written : {out, SavedImagePath(out)}) {
     if (IsSameFile(written, in)) {
       return InvalidArgumentError("output '" + written + "' is the input file '" + in +
