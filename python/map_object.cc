@@ -151,13 +151,23 @@ py::dict ToOccupancyGrid(const Map& map, const std::string& frame_id) {
   return out;
 }
 
-// Sets both thresholds after checking them together, as a YAML's pair is
-// checked: a map must not hold a pair that no YAML or message may.
-void SetThresholds(Map* map, double occupied, double free) {
-  const Status ok = CheckOccupancyThresholds({occupied, free});
-  if (!ok.ok()) RaiseStatus(ok);
-  map->meta.occupied_thresh = occupied;
-  map->meta.free_thresh = free;
+// Both thresholds at once (one at a time, a move from one valid pair to
+// another could pass through an invalid one), with the rule of the CLI's
+// threshold options (format/ros_map.cc, ApplyOverrides).
+void SetThresholds(Map& map, double occupied, double free) {
+  const auto in_range = [](double t) { return std::isfinite(t) && t >= 0.0 && t <= 1.0; };
+  if (!in_range(occupied) || !in_range(free)) {
+    throw py::value_error("thresholds must be in 0..1, not occupied_thresh " +
+                          py::repr(py::float_(occupied)).cast<std::string>() + ", free_thresh " +
+                          py::repr(py::float_(free)).cast<std::string>());
+  }
+  if (!(free < occupied)) {
+    throw py::value_error("free_thresh " + py::repr(py::float_(free)).cast<std::string>() +
+                          " must be below occupied_thresh " +
+                          py::repr(py::float_(occupied)).cast<std::string>());
+  }
+  map.meta.occupied_thresh = occupied;
+  map.meta.free_thresh = free;
 }
 
 std::string Repr(const Map& map) {
@@ -276,23 +286,30 @@ nav_msgs/OccupancyGrid. Values are ``linemap.FREE`` (0), ``OCCUPIED`` (1) and
           "origin", [](const Map& map) { return OriginTuple(map.meta.origin); },
           [](Map& map, const py::object& origin) { map.meta.origin = OriginArgument(origin); },
           "(x, y, yaw): pose of the lower-left corner of cell (0, 0), metres and radians")
-      .def_property(
+      .def_property_readonly(
           "occupied_thresh", [](const Map& map) { return map.meta.occupied_thresh; },
-          [](Map& map, double occupied) { SetThresholds(&map, occupied, map.meta.free_thresh); },
-          "the YAML's occupied_thresh (0.65 unless the map was loaded from a YAML that says "
-          "otherwise): saved back by save() and stored in an .lmap file's metadata; "
-          "0 <= free_thresh < occupied_thresh <= 1 in whole percents, else ValueError")
-      .def_property(
+          "occupancy probability at or above which a YAML's pixel is occupied: the value of "
+          "the YAML or .lmap file the map was loaded from, else map_saver's 0.65. Metadata "
+          "only (the cells are not classified again); set_thresholds() changes it. An .lmap "
+          "file stores it; a .yaml save writes it only when map_saver's grey values "
+          "(0, 254, 205) read back as free, occupied and unknown under the pair, else "
+          "map_saver's 0.65 / 0.196.")
+      .def_property_readonly(
           "free_thresh", [](const Map& map) { return map.meta.free_thresh; },
-          [](Map& map, double free) { SetThresholds(&map, map.meta.occupied_thresh, free); },
-          "the YAML's free_thresh (0.196, map_saver's, unless the map was loaded from a YAML that "
-          "says otherwise); as occupied_thresh")
+          "occupancy probability at or below which a YAML's pixel is free: as "
+          "occupied_thresh, map_saver's 0.196 by default")
       .def_property_readonly(
           "negate", [](const Map& map) { return map.meta.negate; },
-          "the YAML's negate (False by default), saved back with the map")
+          "the YAML's negate as loaded (False for a Map made from cells); an .lmap file "
+          "stores it, a .yaml save writes False (its PGM holds map_saver's grey values)")
       .def_property_readonly(
           "mode", [](const Map& map) { return std::string(MapModeName(map.meta.mode)); },
-          "the YAML's mode: 'trinary' (the default), 'scale' or 'raw', saved back with the map")
+          "the YAML's mode as loaded: 'trinary' (for a Map made from cells too), 'scale' or "
+          "'raw'; an .lmap file stores it, a .yaml save writes 'trinary'")
+      .def("set_thresholds", &SetThresholds, py::arg("occupied_thresh"), py::arg("free_thresh"),
+           "Sets both thresholds, checked as the CLI's --occupied-thresh / --free-thresh are: "
+           "each in 0..1 and free_thresh below occupied_thresh, else ValueError (and the map "
+           "keeps its pair).")
       .def("to_occupancy_grid", &ToOccupancyGrid, py::arg("frame_id") = "map", R"doc(
 The map as nav_msgs/OccupancyGrid fields (map_server's trinary convention):
 a dict with ``data`` (flat int8 array, row 0 at the origin; free 0,

@@ -169,21 +169,34 @@ def test_yaml_fields_are_shown_and_thresholds_settable(tmp_path):
     m = linemap.Map(cells)
     # map_saver's defaults for a map made from cells.
     assert (m.occupied_thresh, m.free_thresh, m.negate, m.mode) == (0.65, 0.196, False, "trinary")
-    # A YAML's own thresholds come with a map loaded from it, and go back
-    # out with it.
+    # A YAML's own fields come with a map loaded from it.
     (tmp_path / "t.pgm").write_bytes(b"P5\n3 2\n255\n" + bytes([0, 254, 205, 0, 0, 254]))
     (tmp_path / "t.yaml").write_text(
-        "image: t.pgm\nmode: trinary\nresolution: 0.05\norigin: [0.0, 0.0, 0]\n"
-        "negate: 0\noccupied_thresh: 0.7\nfree_thresh: 0.2\n")
+        "image: t.pgm\nmode: scale\nresolution: 0.05\norigin: [0.0, 0.0, 0]\n"
+        "negate: 1\noccupied_thresh: 0.7\nfree_thresh: 0.2\n")
     loaded = linemap.load(str(tmp_path / "t.yaml"))
     assert (loaded.occupied_thresh, loaded.free_thresh) == (0.7, 0.2)
-    loaded.free_thresh = 0.1
-    linemap.save(str(tmp_path / "out.yaml"), loaded)
+    assert (loaded.negate, loaded.mode) == (True, "scale")
+    # An .lmap file keeps all four.
+    again = linemap.decode(linemap.encode(loaded))
+    assert (again.occupied_thresh, again.free_thresh, again.negate, again.mode) == (
+        0.7, 0.2, True, "scale")
+    # Both at once: from (0.65, 0.196) to (0.15, 0.1) passes through no
+    # invalid pair. A .yaml save keeps a pair under which map_saver's grey
+    # values read back (205 is unknown under free 0.1).
+    m.set_thresholds(0.15, 0.1)
+    assert (m.occupied_thresh, m.free_thresh) == (0.15, 0.1)
+    m.set_thresholds(0.7, 0.1)
+    linemap.save(str(tmp_path / "out.yaml"), m)
     text = (tmp_path / "out.yaml").read_text()
     assert "free_thresh: 0.1" in text and "occupied_thresh: 0.7" in text, text
-    # A pair no YAML may hold is refused, and the map keeps its pair.
-    with pytest.raises(ValueError, match="65"):
-        m.free_thresh = 0.65
-    with pytest.raises(ValueError):
-        m.occupied_thresh = 1.5
-    assert (m.occupied_thresh, m.free_thresh) == (0.65, 0.196)
+    # A pair the CLI's options refuse is refused, and the map keeps its pair.
+    with pytest.raises(ValueError, match="must be below"):
+        m.set_thresholds(0.5, 0.5)
+    with pytest.raises(ValueError, match="0..1"):
+        m.set_thresholds(1.5, 0.1)
+    with pytest.raises(ValueError, match="0..1"):
+        m.set_thresholds(0.65, float("nan"))
+    assert (m.occupied_thresh, m.free_thresh) == (0.7, 0.1)
+    with pytest.raises(AttributeError):
+        m.free_thresh = 0.2  # read-only: set_thresholds sets the pair

@@ -181,6 +181,12 @@ Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* resu
   StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, EncodeOptions{});
   if (!file.ok()) {
     result->figures[key::kLmapCellsWrong] = static_cast<double>(grid.size());
+    if (what.rival) {  // nothing to take turns with
+      result->figures[what.rival->encode_ms_key] =
+          Median(TimeRuns(what.rival->encode, what.repeats));
+      result->figures[what.rival->decode_ms_key] =
+          Median(TimeRuns(what.rival->decode, what.repeats));
+    }
     return file.status();
   }
   result->figures[key::kLmapBytes] = static_cast<double>(file->size());

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -20,8 +21,8 @@ namespace linemap::bench {
 struct RivalCodec {
   std::function<void()> encode;
   std::function<void()> decode;
-  const char* encode_ms_key = nullptr;
-  const char* decode_ms_key = nullptr;
+  std::string encode_ms_key;
+  std::string decode_ms_key;
 };
 
 struct LmapMeasure {
@@ -30,7 +31,8 @@ struct LmapMeasure {
   std::optional<RivalCodec> rival;  // none: the default file timed alone
 };
 
-// Adds the kLmap* figures of `grid` to `result`. A file that cannot be
+// Adds the kLmap* figures of `grid` to `result`, and the rival's times (timed
+// alone when the default file cannot be written). A file that cannot be
 // written or read back adds a note; a default file that cannot be written or
 // decoded counts every cell as wrong (kLmapCellsWrong), so the round-trip
 // goal fails rather than skips the map.

@@ -131,7 +131,8 @@ void AddImageAnchor(const Grid& grid, const ImageCodec& codec, const char* bytes
 
 // libpng encode and decode of the layout that gave the smallest file, as a
 // user would keep it: timed in turn with the default .lmap file's
-// (AddLmapFigures), its peak memory here.
+// (AddLmapFigures), its peak memory here. `grid` and `png` must outlive the
+// codec, which reads them.
 RivalCodec PngRival(const Grid& grid, const SmallestPng& png) {
   const PngLayout layout = png.layout;
   const std::string* bytes = &png.bytes;
