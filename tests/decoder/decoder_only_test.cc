@@ -1,5 +1,5 @@
 // The decoder's objects alone (CMake target linemap_decoder: format/ and the
-// decoders of codec/codec, no encoder source, no line extractor, no
+// decoders under codec/, no encoder source, no line extractor, no
 // segmentation): this program links nothing else, so a decoder that comes to
 // need an encoder source fails to build here. The fixtures, written by
 // earlier encoders, decode to their maps.
@@ -77,7 +77,7 @@ std::uint32_t CellsCrc(const Grid& grid) {
 
 // Files that are not exact decode to the grids recorded when they were
 // written (the CRCs computed from `linemap decode`'s PGM by a separate
-// script, as tests/codec/codec/fixtures_test.cc does for its lossy files).
+// script, as tests/codec/lmap/fixtures_test.cc does for its lossy files).
 TEST(DecoderOnlyTest, FilesThatAreNotExactDecodeToTheirRecordedGrids) {
   const struct {
     const char* file;

@@ -1,5 +1,5 @@
 // bench_tiles: sizes and speed of the .lmap 2.0 tile cell coder
-// (codec/codec/tile_coder.h) on the maps of ../shared/maps, against the 1.0
+// (codec/cells/tile_coder.h) on the maps of ../shared/maps, against the 1.0
 // lossless planes (OCCP + FREE over an empty canvas, as the 1.0 encoder
 // coded them without segments) and libpng level 9.
 //
@@ -41,12 +41,12 @@
 #include <string>
 #include <vector>
 
-#include "codec/codec/cell_tiles.h"
-#include "codec/codec/layer_extraction.h"
-#include "codec/codec/layer_hints.h"
-#include "codec/codec/plane_coder.h"
-#include "codec/codec/tile_coder.h"
-#include "codec/codec/tile_hints.h"
+#include "codec/cells/cell_tiles.h"
+#include "codec/cells/plane_coder.h"
+#include "codec/cells/tile_coder.h"
+#include "codec/cells/tile_hints.h"
+#include "codec/layers/layer_extraction.h"
+#include "codec/layers/layer_hints.h"
 #include "linemap/map_io.h"
 #include "tools/bench/png_codec.h"
 #include "tools/bench/tuning_split.h"

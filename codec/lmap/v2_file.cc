@@ -1,0 +1,60 @@
+// A version 2.x file from its parts (v2_file.h).
+#include "codec/lmap/v2_file.h"
+
+#include <string>
+#include <string_view>
+
+#include "codec/layers/layer_sections.h"
+#include "codec/lmap/chunk_coding.h"
+#include "format/container.h"
+
+namespace linemap {
+
+std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& options,
+                                  const VectorLayers& layers, int section_side, bool exact,
+                                  const char* cells_type,
+                                  const std::vector<std::uint8_t>& cells_body) {
+  const bool blocks = std::string_view(cells_type) == kBlockChunk;
+  const bool has_layers =
+      !layers.walls.empty() || !layers.rooms.empty() || !layers.furniture.empty();
+  const int minor = options.compact || blocks ? 3 : has_layers ? 2 : 0;
+  ContainerWriter writer(kFormatMajor, static_cast<std::uint8_t>(minor));
+  writer.AddChunk(kHeaderChunk,
+                  WriteHeader(HeaderFields{frame.width, frame.height, frame.meta, exact}));
+  const auto metadata = MetadataOf(options);
+  if (!metadata.empty()) {
+    writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
+  }
+  // Range-coded bodies gain nothing from deflate: stored raw.
+  if (has_layers) {
+    writer.AddChunk(kLayerChunk,
+                    WrapPayload(EncodeLayerSections(layers.walls, layers.rooms, layers.furniture,
+                                                    frame.width, frame.height, section_side),
+                                false));
+  }
+  writer.AddChunk(cells_type, WrapPayload(cells_body, false));
+  return writer.Finish();
+}
+
+Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
+  return CheckWallsWithinDefaultLimits(layers.walls.size(), WallSegmentCount(layers.walls));
+}
+
+std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls) {
+  std::uint64_t segments = 0;
+  for (const WallPolyline& wall : walls) segments += wall.points.size() - 1;
+  return segments;
+}
+
+Status CheckWallsWithinDefaultLimits(std::uint64_t walls, std::uint64_t segments) {
+  const DecodeLimits defaults;
+  if (walls > defaults.max_segments || segments > defaults.max_segments) {
+    return ResourceExhaustedError(
+        "the walls have " + std::to_string(segments) +
+        " segments, more than decoders read by default (2^24): save the cells only (vector "
+        "layers off, --raster-only)");
+  }
+  return Status::Ok();
+}
+
+}  // namespace linemap

@@ -1,0 +1,203 @@
+// LocalDetourCulprits(), CountLocalPlans(): plans between nearby cells on
+// either side of a change, for the plan guarantee between starts the
+// sampled check never tries.
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/tolerance_internal.h"
+
+namespace linemap::tolerance_internal {
+namespace {
+
+// A breadth-first search over the free cells of `grid` from one cell, at
+// most `depth` steps, that keeps, of the shortest plans to each cell, the
+// one crossing the fewest cells not free in `other` (as FewestChangesPlans
+// does for the whole map). A search of `depth` steps stays within `depth`
+// cells of its source in each axis, so its arrays span that window only
+// ((2 depth + 1)^2 cells, reset cell by cell): a map of 36 Mcells would
+// otherwise need some 1.2 GB for them.
+class LocalPlans {
+ public:
+  LocalPlans(const Grid& grid, const Grid& other, int depth)
+      : grid_(grid),
+        other_(other),
+        depth_(depth),
+        side_(2 * depth + 1),
+        steps_(static_cast<std::size_t>(side_) * side_, -1),
+        changes_(steps_.size(), 0),
+        previous_(steps_.size(), -1),
+        walked_(steps_.size(), 0) {}
+
+  void Run(std::size_t source) {
+    for (const int k : order_) {
+      steps_[k] = -1;
+      previous_[k] = -1;
+      walked_[k] = 0;
+    }
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    c0_ = static_cast<int>(source % w) - depth_;
+    r0_ = static_cast<int>(source / w) - depth_;
+    const int centre = depth_ * side_ + depth_;
+    order_.assign(1, centre);
+    reached_.assign(1, source);
+    steps_[centre] = 0;
+    changes_[centre] = Changed(source);
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    for (std::size_t head = 0; head < order_.size(); ++head) {
+      const int k = order_[head];
+      const int lc = k % side_, lr = k / side_;
+      const int c = c0_ + lc, r = r0_ + lr;
+      if (steps_[k] > 0) {
+        // Every cell one step nearer was reached before this one left the
+        // queue: the fewest changes through any of them are final.
+        std::int32_t best = INT32_MAX;
+        for (int d = 0; d < 4; ++d) {
+          const int n = Local(c + dc[d], r + dr[d]);
+          if (n >= 0 && steps_[n] == steps_[k] - 1 && changes_[n] < best) {
+            best = changes_[n];
+            previous_[k] = n;
+          }
+        }
+        changes_[k] = Changed(grid_.Index(c, r)) + best;
+      }
+      if (steps_[k] == depth_) continue;
+      for (int d = 0; d < 4; ++d) {
+        const int n = Local(c + dc[d], r + dr[d]);
+        if (n < 0 || steps_[n] >= 0 || grid_.at(c + dc[d], r + dr[d]) != Cell::kFree) continue;
+        steps_[n] = steps_[k] + 1;
+        order_.push_back(n);
+        reached_.push_back(grid_.Index(c + dc[d], r + dr[d]));
+      }
+    }
+  }
+  // The cells reached (map indices), nearest first, and their steps (-1:
+  // not reached).
+  const std::vector<std::size_t>& reached() const { return reached_; }
+  std::int32_t steps(std::size_t i) const {
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    const int k = Local(static_cast<int>(i % w), static_cast<int>(i / w));
+    return k < 0 ? -1 : steps_[k];
+  }
+  // Appends the cells not free in `other` on the plan to `goal`, back to
+  // where a plan of this search walked before.
+  void AppendChanged(std::size_t goal, std::vector<std::size_t>* out) {
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    for (int k = Local(static_cast<int>(goal % w), static_cast<int>(goal / w));
+         k >= 0 && !walked_[k]; k = previous_[k]) {
+      walked_[k] = 1;
+      const std::size_t i = grid_.Index(c0_ + k % side_, r0_ + k / side_);
+      if (Changed(i)) out->push_back(i);
+    }
+  }
+
+ private:
+  // The window index of map cell (c, r); -1 outside the window or the map.
+  int Local(int c, int r) const {
+    const int lc = c - c0_, lr = r - r0_;
+    if (lc < 0 || lr < 0 || lc >= side_ || lr >= side_ || !grid_.Contains(c, r)) return -1;
+    return lr * side_ + lc;
+  }
+  std::int32_t Changed(std::size_t i) const { return other_.cells()[i] != Cell::kFree ? 1 : 0; }
+
+  const Grid& grid_;
+  const Grid& other_;
+  int depth_, side_;
+  int c0_ = 0, r0_ = 0;  // the window's first cell
+  std::vector<std::int32_t> steps_, changes_, previous_;
+  std::vector<std::uint8_t> walked_;
+  std::vector<int> order_;            // window indices, nearest first
+  std::vector<std::size_t> reached_;  // the same cells as map indices
+};
+
+// Cells free in both maps with a 4-neighbour free in one map only.
+std::vector<std::size_t> ChangeSides(const Grid& original, const Grid& decoded) {
+  std::vector<std::size_t> out;
+  const int w = original.width(), h = original.height();
+  auto free_in_one = [&](std::size_t i) {
+    return (original.cells()[i] == Cell::kFree) != (decoded.cells()[i] == Cell::kFree);
+  };
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < w; ++c) {
+      const std::size_t i = original.Index(c, r);
+      if (original.cells()[i] != Cell::kFree || decoded.cells()[i] != Cell::kFree) continue;
+      if ((c > 0 && free_in_one(i - 1)) || (c + 1 < w && free_in_one(i + 1)) ||
+          (r > 0 && free_in_one(i - w)) || (r + 1 < h && free_in_one(i + w))) {
+        out.push_back(i);
+      }
+    }
+  }
+  return out;
+}
+
+// Calls visit(plans, goal, holds) for each plan of `plans` up to `radius`
+// steps to a cell free in `other`; it holds when `other_plans` (the same
+// source on `other`) makes it within the slack.
+template <typename Visit>
+void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
+                Visit&& visit) {
+  for (const std::size_t goal : plans->reached()) {
+    const std::int32_t here = plans->steps(goal);
+    if (here > radius) break;
+    if (other.cells()[goal] != Cell::kFree) continue;
+    const std::int32_t there = other_plans.steps(goal);
+    visit(plans, goal, there >= 0 && there <= here + kPlanSlackSteps);
+  }
+}
+
+// Calls visit(plans, goal, holds) for every plan of up to `radius` steps
+// on either map from a cell free in both beside a change (see
+// LocalDetourCulprits; with `checked`, only from cells near a change since).
+template <typename Visit>
+void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, const Grid* checked,
+                     Visit&& visit) {
+  // A search from a cell reaches radius + slack steps, so no farther in
+  // Chebyshev distance: where nothing changed that near since `checked`,
+  // every plan it makes is as it was then.
+  std::vector<std::int32_t> near_change;
+  if (checked != nullptr) {
+    std::vector<std::uint8_t> changed(decoded.size());
+    for (std::size_t i = 0; i < decoded.size(); ++i) {
+      changed[i] = decoded.cells()[i] != checked->cells()[i];
+    }
+    near_change = ChebyshevDistance(decoded.width(), decoded.height(), changed);
+  }
+  const int depth = radius + kPlanSlackSteps;
+  LocalPlans on_original(original, decoded, depth), on_decoded(decoded, original, depth);
+  for (const std::size_t source : ChangeSides(original, decoded)) {
+    if (checked != nullptr && near_change[source] > depth) continue;
+    // A plan up to `radius` steps on one map must be there within the
+    // slack on the other: search that much deeper.
+    on_original.Run(source);
+    on_decoded.Run(source);
+    // Longer on the decode (a detour), then shorter (a shortcut).
+    VisitPlans(radius, decoded, on_decoded, &on_original, visit);
+    VisitPlans(radius, original, on_original, &on_decoded, visit);
+  }
+}
+
+}  // namespace
+
+std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
+                                             const Grid* checked) {
+  std::vector<std::size_t> out;
+  VisitLocalPlans(original, decoded, radius, checked,
+                  [&out](LocalPlans* plans, std::size_t goal, bool holds) {
+                    if (!holds) plans->AppendChanged(goal, &out);
+                  });
+  return out;
+}
+
+LocalPlanCount CountLocalPlans(const Grid& original, const Grid& decoded, int radius) {
+  LocalPlanCount count;
+  VisitLocalPlans(original, decoded, radius, nullptr,
+                  [&count](LocalPlans*, std::size_t, bool holds) {
+                    ++count.plans;
+                    count.disagreements += holds ? 0 : 1;
+                  });
+  return count;
+}
+
+}  // namespace linemap::tolerance_internal

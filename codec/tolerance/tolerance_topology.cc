@@ -1,0 +1,185 @@
+// Distance transforms and free-space topology for the tolerance checks.
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <utility>
+#include <vector>
+
+#include "codec/tolerance/compare_internal.h"
+#include "codec/tolerance/tolerance_internal.h"
+#include "linemap/codec.h"
+#include "linemap/labeling.h"
+
+namespace linemap::tolerance_internal {
+
+std::vector<std::uint8_t> CellMask(const Grid& grid, Cell value) {
+  std::vector<std::uint8_t> mask(grid.size());
+  for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = grid.cells()[i] == value;
+  return mask;
+}
+
+std::vector<std::int32_t> ChebyshevDistance(int width, int height,
+                                            const std::vector<std::uint8_t>& mask) {
+  std::vector<std::int32_t> d(mask.size());
+  for (std::size_t i = 0; i < mask.size(); ++i) d[i] = mask[i] ? 0 : kFar;
+  const std::size_t w = static_cast<std::size_t>(width);
+  // Forward pass: the neighbours already visited (left, and the row below
+  // in index order); backward pass: the others.
+  for (int r = 0; r < height; ++r) {
+    for (int c = 0; c < width; ++c) {
+      const std::size_t i = r * w + c;
+      std::int32_t best = d[i];
+      if (c > 0) best = std::min(best, d[i - 1] + 1);
+      if (r > 0) {
+        best = std::min(best, d[i - w] + 1);
+        if (c > 0) best = std::min(best, d[i - w - 1] + 1);
+        if (c + 1 < width) best = std::min(best, d[i - w + 1] + 1);
+      }
+      d[i] = std::min(best, kFar);
+    }
+  }
+  for (int r = height - 1; r >= 0; --r) {
+    for (int c = width - 1; c >= 0; --c) {
+      const std::size_t i = r * w + c;
+      std::int32_t best = d[i];
+      if (c + 1 < width) best = std::min(best, d[i + 1] + 1);
+      if (r + 1 < height) {
+        best = std::min(best, d[i + w] + 1);
+        if (c + 1 < width) best = std::min(best, d[i + w + 1] + 1);
+        if (c > 0) best = std::min(best, d[i + w - 1] + 1);
+      }
+      d[i] = std::min(best, kFar);
+    }
+  }
+  return d;
+}
+
+namespace {
+
+// Distinct (a, b) pairs of labels over the cells where both are non-zero
+// and `keep_a(a)` holds, sorted.
+template <typename Keep>
+std::vector<std::pair<std::int32_t, std::int32_t>> LabelPairs(const std::vector<std::int32_t>& a,
+                                                              const std::vector<std::int32_t>& b,
+                                                              Keep keep_a) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> pairs;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i] && b[i] && keep_a(a[i])) {
+      // Runs repeat the pair: one per run keeps the sort small.
+      const std::pair<std::int32_t, std::int32_t> pair(a[i], b[i]);
+      if (pairs.empty() || pairs.back() != pair) pairs.push_back(pair);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+// The lost free cells (free in the original, not in the decode) whose
+// return joins every split-off piece to the main piece of its region: a
+// 0-1 breadth-first search over each split region's original cells from its
+// main piece, a lost cell costing 1 and a decoded free one 0, traced back
+// from the first cell reached of each other piece. Giving back every lost
+// cell beside a piece would also work, but along the ragged edge of a SLAM
+// map's free space that is dozens of cells where one or two reopen the way.
+std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig,
+                                           const std::vector<std::int32_t>& dec,
+                                           std::size_t dec_components,
+                                           const std::vector<std::uint8_t>& split,
+                                           const std::vector<std::int32_t>& main_piece,
+                                           const Grid& grid) {
+  constexpr std::size_t kNone = SIZE_MAX;
+  constexpr std::int32_t kUnreached = INT32_MAX;
+  const std::size_t n = orig.size();
+  const std::size_t w = static_cast<std::size_t>(grid.width());
+  const std::size_t h = static_cast<std::size_t>(grid.height());
+  std::vector<std::int32_t> cost(n, kUnreached);
+  std::vector<std::size_t> from(n, kNone);
+  std::deque<std::size_t> queue;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (orig[i] && split[orig[i]] && dec[i] && dec[i] == main_piece[orig[i]]) {
+      cost[i] = 0;
+      queue.push_back(i);
+    }
+  }
+  std::vector<std::uint8_t> piece_seen(dec_components + 1, 0);
+  std::vector<std::size_t> piece_first;  // the first cell settled of each other piece
+  std::vector<std::uint8_t> settled(n, 0);
+  while (!queue.empty()) {
+    const std::size_t i = queue.front();
+    queue.pop_front();
+    if (settled[i]) continue;
+    settled[i] = 1;
+    if (dec[i] && dec[i] != main_piece[orig[i]] && !piece_seen[dec[i]]) {
+      piece_seen[dec[i]] = 1;
+      piece_first.push_back(i);
+    }
+    ForEachNeighbour(w, h, i, [&](std::size_t j) {
+      if (orig[j] != orig[i]) return;
+      // A decoded free cell costs nothing (front of the queue), a lost one 1.
+      const std::int32_t step = dec[j] ? 0 : 1;
+      if (cost[i] + step >= cost[j]) return;
+      cost[j] = cost[i] + step;
+      from[j] = i;
+      if (step == 0) {
+        queue.push_front(j);
+      } else {
+        queue.push_back(j);
+      }
+    });
+  }
+  std::vector<std::size_t> out;
+  std::vector<std::uint8_t> walked(n, 0);
+  for (const std::size_t first : piece_first) {
+    for (std::size_t i = first; i != kNone && !walked[i]; i = from[i]) {
+      walked[i] = 1;
+      if (!dec[i]) out.push_back(i);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TopologyFaults FindTopologyFaults(const Grid& original, const Grid& decoded, bool want_culprits) {
+  TopologyFaults out;
+  const Labeling orig = codec_internal::LabelFree(original);
+  const Labeling dec = codec_internal::LabelFree(decoded);
+  auto big = [&](std::int32_t label) {
+    return orig.components[label - 1].cell_count >= kLeakRegionCells;
+  };
+  // Leaks: a decoded component over several big original regions.
+  const auto dec_orig = LabelPairs(dec.labels, orig.labels, [&](std::int32_t) { return true; });
+  for (std::size_t i = 0, j = 0; i < dec_orig.size(); i = j) {
+    std::size_t regions = 0;
+    for (j = i; j < dec_orig.size() && dec_orig[j].first == dec_orig[i].first; ++j) {
+      regions += big(dec_orig[j].second);
+    }
+    if (regions > 1) out.leaks += regions - 1;
+  }
+  // Splits: a big original region over several decoded components; the
+  // piece holding most of its cells is the region, the others split off.
+  std::vector<std::int32_t> main_piece(orig.components.size() + 1, 0);
+  std::vector<std::uint8_t> split(orig.components.size() + 1, 0);
+  const auto orig_dec = LabelPairs(orig.labels, dec.labels, big);
+  for (std::size_t i = 0, j = 0; i < orig_dec.size(); i = j) {
+    std::size_t best_cells = 0;
+    for (j = i; j < orig_dec.size() && orig_dec[j].first == orig_dec[i].first; ++j) {
+      const std::size_t cells = dec.components[orig_dec[j].second - 1].cell_count;
+      if (cells > best_cells) {
+        best_cells = cells;
+        main_piece[orig_dec[i].first] = orig_dec[j].second;
+      }
+    }
+    if (j - i > 1) {
+      ++out.splits;
+      split[orig_dec[i].first] = 1;
+    }
+  }
+  if (!want_culprits || out.splits == 0) return out;
+  out.split_culprits = ReconnectingCells(orig.labels, dec.labels, dec.components.size(), split,
+                                         main_piece, original);
+  return out;
+}
+
+}  // namespace linemap::tolerance_internal

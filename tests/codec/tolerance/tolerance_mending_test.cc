@@ -1,0 +1,237 @@
+// The mending steps of the tolerance fitting (tolerance_internal.h): which
+// cells each gives back when blocks break a guarantee. The fitting is
+// correct with any cells given back (tolerance_test.cc checks the
+// guarantees on its results); these tests hold the steps to giving back
+// few: one doorway rather than a plan's whole wall side, one gap rather
+// than a split-off piece's whole edge, one cell in three along a
+// thickened wall; and the local plan check to finding a closed doorway
+// that sampled starts miss, without flagging a wall one cell thicker.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "codec/tolerance/tolerance_internal.h"
+#include "linemap/grid.h"
+
+namespace linemap::tolerance_internal {
+namespace {
+
+std::set<std::size_t> AsSet(const std::vector<std::size_t>& cells) {
+  return {cells.begin(), cells.end()};
+}
+
+// A 30 x 12 room split by a wall on row 6 with a doorway at column 25, and
+// a wall along its bottom row. The decode closes the doorway and thickens
+// the bottom wall along row 10 (columns 3-24), which changes no plan by
+// more than the 2 steps allowed but lies on some of the shortest plans
+// from the lower half to the doorway (the breadth-first search's own plan
+// from (2, 10) runs along it). Giving back the doorway alone restores
+// every plan.
+TEST(PlanCulpritsTest, GivesBackTheDoorwayNotTheCellsAlongTheWall) {
+  Grid original(30, 12, Cell::kFree);
+  for (int c = 0; c < 30; ++c) {
+    if (c != 25) original.set(c, 6, Cell::kOccupied);
+    original.set(c, 11, Cell::kOccupied);
+  }
+  Grid decoded = original;
+  decoded.set(25, 6, Cell::kOccupied);
+  for (int c = 3; c <= 24; ++c) decoded.set(c, 10, Cell::kOccupied);
+
+  const std::vector<std::size_t> culprits = PlanCulprits(original, decoded);
+  ASSERT_FALSE(culprits.empty());
+  EXPECT_EQ(AsSet(culprits), std::set<std::size_t>{original.Index(25, 6)});
+}
+
+// The same with the roles swapped: the decode opens a second doorway
+// (column 4) that makes plans shorter. The culprit is that doorway.
+TEST(PlanCulpritsTest, FindsTheShortcutTheDecodeOpened) {
+  Grid original(30, 12, Cell::kFree);
+  for (int c = 0; c < 30; ++c) {
+    if (c != 25) original.set(c, 6, Cell::kOccupied);
+  }
+  original.set(4, 6, Cell::kUnknown);
+  Grid decoded = original;
+  decoded.set(4, 6, Cell::kFree);
+
+  EXPECT_EQ(AsSet(PlanCulprits(original, decoded)), std::set<std::size_t>{original.Index(4, 6)});
+}
+
+// A 20 x 20 free room whose decode loses rows 9 and 10 across its whole
+// width: the lower part splits off. Two cells (one column of the band)
+// join it again; every lost cell beside the piece would be 20.
+TEST(TopologyFaultsTest, SplitCulpritsAreOneGapThroughTheBand) {
+  const Grid original(20, 20, Cell::kFree);
+  Grid decoded = original;
+  for (int c = 0; c < 20; ++c) {
+    decoded.set(c, 9, Cell::kOccupied);
+    decoded.set(c, 10, Cell::kOccupied);
+  }
+  const TopologyFaults faults = FindTopologyFaults(original, decoded, true);
+  ASSERT_EQ(faults.splits, 1u);
+  ASSERT_EQ(faults.split_culprits.size(), 2u);
+  const std::size_t a = faults.split_culprits[0], b = faults.split_culprits[1];
+  EXPECT_EQ(a % 20, b % 20) << "one column";
+  EXPECT_EQ(std::set<std::size_t>({a / 20, b / 20}), std::set<std::size_t>({9, 10}));
+
+  for (const std::size_t i : faults.split_culprits) decoded.mutable_cells()[i] = Cell::kFree;
+  EXPECT_EQ(FindTopologyFaults(original, decoded, false).splits, 0u);
+}
+
+// Two rooms joined by a doorway (column 20 of a wall on row 10) and, far
+// round, by a corridor down the left edge. The decode closes the doorway:
+// every plan still exists, but between the cells on either side of it the
+// plan is 40 steps longer. (On this small map the sampled starts find it
+// too; on a large one they may all lie in other rooms.)
+Grid TwoRoomsWithADoorway() {
+  Grid g(40, 21, Cell::kFree);
+  for (int c = 2; c < 40; ++c) {
+    if (c != 20) g.set(c, 10, Cell::kOccupied);
+  }
+  return g;
+}
+
+TEST(LocalDetourCulpritsTest, FindsADoorwayClosedBetweenTwoRooms) {
+  const Grid original = TwoRoomsWithADoorway();
+  Grid decoded = original;
+  decoded.set(20, 10, Cell::kOccupied);
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
+            std::set<std::size_t>{original.Index(20, 10)});
+}
+
+// Given the decode it last checked, the check searches only near cells
+// that changed since: the closed doorway is found again when the doorway
+// changed since (checked against the original), not when nothing did.
+TEST(LocalDetourCulpritsTest, SearchesOnlyNearChangesSinceTheLastCheck) {
+  const Grid original = TwoRoomsWithADoorway();
+  Grid decoded = original;
+  decoded.set(20, 10, Cell::kOccupied);
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8, &decoded).empty());
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8, &original)),
+            std::set<std::size_t>{original.Index(20, 10)});
+}
+
+// The same with an unknown cell in the wall that the decode makes free: a
+// shortcut, whose culprit is that cell.
+TEST(LocalDetourCulpritsTest, FindsAShortcutThroughAWall) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 2; c < 40; ++c) original.set(c, 10, Cell::kOccupied);
+  original.set(30, 10, Cell::kUnknown);
+  Grid decoded = original;
+  decoded.set(30, 10, Cell::kFree);
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
+            std::set<std::size_t>{original.Index(30, 10)});
+}
+
+// A wall thickened by a cell along its length and at its tip: plans along
+// it keep their length, and round the tip they gain 2 steps, which the
+// guarantee allows. Nothing to give back.
+TEST(LocalDetourCulpritsTest, AWallThickenedByACellNeedsNothing) {
+  Grid original(40, 21, Cell::kFree);
+  for (int c = 0; c <= 25; ++c) original.set(c, 10, Cell::kOccupied);
+  Grid decoded = original;
+  for (int c = 0; c <= 26; ++c) decoded.set(c, 11, Cell::kOccupied);
+  decoded.set(26, 10, Cell::kOccupied);
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
+}
+
+// Lost cells cost what they are, not how far they lie: below a band of
+// lost rows (5-7) the decode splits the room's lower part into A (columns
+// 0-9) and B (12-19, and (11, 18)) by lost columns 10 and 11, and leaves a
+// way from the main piece to A through one lost cell, (2, 7). B is nearest
+// the main piece straight up through the band (3 lost cells); through A it
+// is 2 (with (10, 18), where the columns are one cell thick). A search by
+// lost cells gives back those 2; one by steps would give back 4.
+TEST(TopologyFaultsTest, SplitCulpritsCountLostCellsNotSteps) {
+  const Grid original(20, 20, Cell::kFree);
+  Grid decoded = original;
+  for (int c = 0; c < 20; ++c) {
+    for (int r = 5; r <= 7; ++r) decoded.set(c, r, Cell::kOccupied);
+  }
+  decoded.set(2, 5, Cell::kFree);
+  decoded.set(2, 6, Cell::kFree);
+  for (int r = 8; r < 20; ++r) {
+    decoded.set(10, r, Cell::kOccupied);
+    if (r != 18) decoded.set(11, r, Cell::kOccupied);
+  }
+
+  const TopologyFaults faults = FindTopologyFaults(original, decoded, true);
+  ASSERT_EQ(faults.splits, 1u);
+  EXPECT_EQ(AsSet(faults.split_culprits),
+            std::set<std::size_t>({original.Index(2, 7), original.Index(10, 18)}));
+  for (const std::size_t i : faults.split_culprits) decoded.mutable_cells()[i] = Cell::kFree;
+  EXPECT_EQ(FindTopologyFaults(original, decoded, false).splits, 0u);
+}
+
+// Whether `grid` or `extra` has a free cell within Chebyshev t of cell i
+// (window scan).
+bool ServedWithin(const Grid& grid, const std::set<std::size_t>& extra, std::size_t i, int t) {
+  const int c = static_cast<int>(i % grid.width()), r = static_cast<int>(i / grid.width());
+  for (int y = r - t; y <= r + t; ++y) {
+    for (int x = c - t; x <= c + t; ++x) {
+      if (!grid.Contains(x, y)) continue;
+      if (grid.at(x, y) == Cell::kFree || extra.count(grid.Index(x, y))) return true;
+    }
+  }
+  return false;
+}
+
+// Lost cells (free in `original`, more than t from every free cell of
+// `decoded`), by window scans.
+std::vector<std::size_t> LostFree(const Grid& original, const Grid& decoded, int t) {
+  std::vector<std::size_t> lost;
+  for (std::size_t i = 0; i < original.size(); ++i) {
+    if (original.cells()[i] == Cell::kFree && !ServedWithin(decoded, {}, i, t)) lost.push_back(i);
+  }
+  return lost;
+}
+
+// The decode thickens a wall to rows 4-6 across a 10 x 11 free map: the
+// ten cells of row 5 lie 2 from free space. At t = 1 a cell given back on
+// row 4 serves three columns of row 5 and touches row 3's free space:
+// ceil(10 / 3) = 4 cells, where giving back every lost cell would be 10.
+TEST(FreeCoverTest, OneCellServesItsNeighboursAlongAThickenedWall) {
+  Grid original(10, 11, Cell::kFree);
+  Grid decoded = original;
+  for (int c = 0; c < 10; ++c) {
+    for (int r = 4; r <= 6; ++r) decoded.set(c, r, Cell::kOccupied);
+  }
+  const std::vector<std::size_t> lost = LostFree(original, decoded, 1);
+  ASSERT_EQ(lost.size(), 10u) << "row 5 only: rows 4 and 6 are within 1 of rows 3 and 7";
+
+  const std::vector<std::size_t> cover = FreeCover(original, decoded, lost, 1);
+  const std::set<std::size_t> given(cover.begin(), cover.end());
+  for (const std::size_t i : lost) EXPECT_TRUE(ServedWithin(decoded, given, i, 1)) << i;
+  EXPECT_EQ(cover.size(), 4u);
+}
+
+// On random grids and their random decodes every lost cell is served, and
+// only cells free in the original and not in the decode are given back.
+TEST(FreeCoverTest, ServesEveryLostCellOnRandomGrids) {
+  std::mt19937 rng(20261127);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int w = 8 + static_cast<int>(rng() % 30), h = 8 + static_cast<int>(rng() % 30);
+    const int t = 1 + static_cast<int>(rng() % 4);
+    Grid original(w, h, Cell::kFree), decoded(w, h, Cell::kFree);
+    for (std::size_t i = 0; i < original.size(); ++i) {
+      const unsigned v = rng() % 10;
+      original.mutable_cells()[i] = v < 6 ? Cell::kFree : v < 8 ? Cell::kOccupied : Cell::kUnknown;
+      decoded.mutable_cells()[i] = rng() % 3 == 0 ? Cell::kFree : Cell::kOccupied;
+    }
+    const std::vector<std::size_t> lost = LostFree(original, decoded, t);
+    const std::vector<std::size_t> cover = FreeCover(original, decoded, lost, t);
+    const std::set<std::size_t> given(cover.begin(), cover.end());
+    for (const std::size_t i : given) {
+      EXPECT_EQ(original.cells()[i], Cell::kFree);
+      EXPECT_NE(decoded.cells()[i], Cell::kFree);
+    }
+    for (const std::size_t i : lost) EXPECT_TRUE(ServedWithin(decoded, given, i, t)) << i;
+    EXPECT_LE(cover.size(), lost.size());
+  }
+}
+
+}  // namespace
+}  // namespace linemap::tolerance_internal
