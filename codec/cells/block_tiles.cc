@@ -6,7 +6,7 @@
 #include <string>
 
 #include "codec/cells/cell_tiles.h"
-#include "codec/lmap/tile_index.h"
+#include "codec/cells/tile_index.h"
 #include "format/byte_io.h"
 
 namespace linemap {

@@ -7,7 +7,7 @@
 #include <system_error>
 #include <thread>
 
-#include "codec/lmap/tile_index.h"
+#include "codec/cells/tile_index.h"
 #include "format/byte_io.h"
 
 namespace linemap {

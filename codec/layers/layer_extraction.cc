@@ -13,8 +13,8 @@
 #include "codec/layers/layer_extraction_internal.h"
 #include "codec/layers/layer_order.h"
 #include "codec/layers/raster.h"
+#include "codec/layers/start_task.h"
 #include "codec/layers/wall_cover.h"
-#include "codec/lmap/start_task.h"
 
 namespace linemap {
 namespace layer_extraction_internal {

@@ -54,7 +54,7 @@ StatusOr<VectorLayers> ExtractVectorLayers(const Grid& grid, const EncodeOptions
 // calling thread unless options.max_threads allows the walls a thread of
 // their own. Every item lies inside the block (an internal error
 // otherwise): the cells of a map coded a band of rows at a time are coded
-// against the hints of the bands' items alone (row_encoder.h).
+// against the hints of the bands' items alone (lmap/row_encoder.h).
 StatusOr<VectorLayers> ExtractBlockLayers(const Grid& block, int x0, int y0,
                                           const EncodeOptions& options, bool with_chains);
 

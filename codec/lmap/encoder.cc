@@ -4,7 +4,7 @@
 // vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the
 // exact cells, each tile coded against the hints the layers draw into it (a cell on a wall is cheap
 // to confirm as occupied, one inside a room as free), or, within a tolerance, BLKS, the map drawn
-// in blocks of 2 x 2 cells (tolerance_blocks.cc says why 2 at every T).
+// in blocks of 2 x 2 cells (tolerance/tolerance_blocks.cc says why 2 at every T).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -14,13 +14,13 @@
 
 #include "codec/cells/block_tiles.h"
 #include "codec/cells/cell_tiles.h"
-#include "codec/cells/row_encoder.h"
 #include "codec/layers/layer_coding.h"
 #include "codec/layers/layer_extraction.h"
 #include "codec/layers/layer_hints.h"
 #include "codec/layers/layer_sections.h"
+#include "codec/layers/section_order.h"
 #include "codec/lmap/chunk_coding.h"
-#include "codec/lmap/section_order.h"
+#include "codec/lmap/row_encoder.h"
 #include "codec/lmap/v2_file.h"
 #include "codec/tolerance/tolerance.h"
 #include "codec/tolerance/tolerance_blocks.h"

@@ -1,5 +1,5 @@
-// FitBlockCells(): the map in blocks of T + 1 cells, mended where a
-// guarantee of tolerance.h fails.
+// FitBlockCells(): the map in blocks of 2 x 2 cells, mended where a
+// guarantee of linemap/tolerance.h fails.
 #include "codec/tolerance/tolerance_blocks.h"
 
 #include <algorithm>

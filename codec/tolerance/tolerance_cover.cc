@@ -1,5 +1,5 @@
 // FreeCover(): which lost free cells to give back for the distance
-// guarantee of a tolerance (tolerance.h 2).
+// guarantee of a tolerance (linemap/tolerance.h 2).
 #include <algorithm>
 #include <cstdint>
 #include <vector>

@@ -94,7 +94,7 @@ struct PlanFaults {
 };
 PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths);
 
-// Whether plans of `la` and `lb` steps (-1: none) agree (tolerance.h 4).
+// Whether plans of `la` and `lb` steps (-1: none) agree (linemap/tolerance.h 4).
 bool PlansAgree(std::int32_t la, std::int32_t lb);
 
 // The changed cells that make plans disagree, for every goal of every

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "codec/layers/layer_coding.h"
-#include "codec/lmap/section_order.h"
+#include "codec/layers/section_order.h"
 #include "format/byte_io.h"
 #include "format/range_coder.h"
 

@@ -1,8 +1,8 @@
 // How the encoder lays the vector layers out in LAYR's sections
 // (spec/format.md 5.6 and 9): the section side it picks and the order of the
 // items. Encoder only: decoding does not need it.
-#ifndef LINEMAP_CODEC_LMAP_SECTION_ORDER_H_
-#define LINEMAP_CODEC_LMAP_SECTION_ORDER_H_
+#ifndef LINEMAP_CODEC_LAYERS_SECTION_ORDER_H_
+#define LINEMAP_CODEC_LAYERS_SECTION_ORDER_H_
 
 #include <vector>
 
@@ -45,7 +45,7 @@ void ArrangeLayersInSections(int width, int height, int side, std::vector<WallPo
 // The two steps of ArrangeLayersInSections. The first groups and orders the
 // items of a list by section; its result for a row of sections depends on
 // that row's items alone, so a map coded a band of section rows at a time
-// (row_encoder.h) orders each band on its own. The second numbers them:
+// (lmap/row_encoder.h) orders each band on its own. The second numbers them:
 // room ids 1, 2, ... in list order when `renumber_rooms` or when they do
 // not increase, object ids their place in the list.
 void OrderItemsInSections(int width, int height, int side, std::vector<WallPolyline>* walls,
@@ -55,4 +55,4 @@ void NumberItemsInOrder(bool renumber_rooms, std::vector<RoomOutline>* rooms,
 
 }  // namespace linemap
 
-#endif  // LINEMAP_CODEC_LMAP_SECTION_ORDER_H_
+#endif  // LINEMAP_CODEC_LAYERS_SECTION_ORDER_H_

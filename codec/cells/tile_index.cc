@@ -1,5 +1,5 @@
 // The tile index of CELL and BLKS (spec/format.md 6.1).
-#include "codec/lmap/tile_index.h"
+#include "codec/cells/tile_index.h"
 
 #include <algorithm>
 #include <string>

@@ -1,5 +1,5 @@
 // The encoder's layout of LAYR (spec/format.md 9).
-#include "codec/lmap/section_order.h"
+#include "codec/layers/section_order.h"
 
 #include <algorithm>
 #include <cstdint>

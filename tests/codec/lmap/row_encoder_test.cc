@@ -1,7 +1,7 @@
 // Files of maps coded a row of layer blocks at a time (row_encoder.h):
 // SaveRosMapAsLmap, which reads the map's image row by row, writes the bytes
 // EncodeLmap writes for the loaded grid, and they decode to the map.
-#include "codec/cells/row_encoder.h"
+#include "codec/lmap/row_encoder.h"
 
 #include <gtest/gtest.h>
 

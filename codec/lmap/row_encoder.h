@@ -8,8 +8,8 @@
 //
 // The file is the one EncodeLmap writes for the same grid: EncodeLmap codes
 // every map that EncodesByRows() accepts through this encoder.
-#ifndef LINEMAP_CODEC_CELLS_ROW_ENCODER_H_
-#define LINEMAP_CODEC_CELLS_ROW_ENCODER_H_
+#ifndef LINEMAP_CODEC_LMAP_ROW_ENCODER_H_
+#define LINEMAP_CODEC_LMAP_ROW_ENCODER_H_
 
 #include <cstdint>
 #include <vector>
@@ -48,4 +48,4 @@ StatusOr<std::vector<std::uint8_t>> EncodeGridByRows(const Grid& grid,
 
 }  // namespace linemap
 
-#endif  // LINEMAP_CODEC_CELLS_ROW_ENCODER_H_
+#endif  // LINEMAP_CODEC_LMAP_ROW_ENCODER_H_

@@ -1,8 +1,8 @@
 // Runs a task beside the caller when a thread can be had (the encoder
 // extracts the walls beside the rooms, and the layers of two blocks of a
 // large map at a time).
-#ifndef LINEMAP_CODEC_LMAP_START_TASK_H_
-#define LINEMAP_CODEC_LMAP_START_TASK_H_
+#ifndef LINEMAP_CODEC_LAYERS_START_TASK_H_
+#define LINEMAP_CODEC_LAYERS_START_TASK_H_
 
 #include <future>
 #include <system_error>
@@ -25,4 +25,4 @@ auto StartTask(bool own_thread, Task task) {
 
 }  // namespace linemap
 
-#endif  // LINEMAP_CODEC_LMAP_START_TASK_H_
+#endif  // LINEMAP_CODEC_LAYERS_START_TASK_H_

@@ -14,7 +14,7 @@
 // order they were extracted (a block lies in one section: EncodesByRows
 // takes sections of whole blocks only), and rooms of two blocks share no
 // cell.
-#include "codec/cells/row_encoder.h"
+#include "codec/lmap/row_encoder.h"
 
 #include <algorithm>
 #include <iterator>
@@ -23,8 +23,8 @@
 
 #include "codec/cells/cell_tiles.h"
 #include "codec/layers/layer_hints.h"
+#include "codec/layers/section_order.h"
 #include "codec/lmap/chunk_coding.h"
-#include "codec/lmap/section_order.h"
 #include "format/byte_io.h"
 
 namespace linemap {

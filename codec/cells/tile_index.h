@@ -1,8 +1,8 @@
 // The tile index that CELL and BLKS share (spec/format.md 6.1): one varint
 // byte length per tile, then the tiles' data; and which tiles a window
 // meets.
-#ifndef LINEMAP_CODEC_LMAP_TILE_INDEX_H_
-#define LINEMAP_CODEC_LMAP_TILE_INDEX_H_
+#ifndef LINEMAP_CODEC_CELLS_TILE_INDEX_H_
+#define LINEMAP_CODEC_CELLS_TILE_INDEX_H_
 
 #include <cstddef>
 #include <cstdint>
@@ -53,4 +53,4 @@ Status DecodeTilesInWindow(const std::vector<std::uint8_t>& body, const TileLayo
 
 }  // namespace linemap
 
-#endif  // LINEMAP_CODEC_LMAP_TILE_INDEX_H_
+#endif  // LINEMAP_CODEC_CELLS_TILE_INDEX_H_

@@ -1,0 +1,213 @@
+// FloodMergeTree() (merge_tree.h): the flood of step 3 of the room
+// segmentation, from the highest clearance down.
+#include "codec/segment/merge_tree.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "format/large_vector.h"
+
+namespace linemap::segment_internal {
+namespace {
+
+// Cells of the flood's order whose neighbours are fetched ahead.
+constexpr std::size_t kPrefetchAhead = 48;
+
+// The first index >= i of dist[0, end) above `top`, or `end`. Most cells of
+// a map are walls, unknown or within a door's clearance of a wall: where
+// SSE2 is at hand they are passed over eight at a time.
+std::size_t NextAbove(const std::uint16_t* dist, std::size_t i, std::size_t end,
+                      std::uint16_t top) {
+#if defined(__SSE2__)
+  const __m128i limit = _mm_set1_epi16(static_cast<short>(top));
+  const __m128i zero = _mm_setzero_si128();
+  for (; i + 8 <= end; i += 8) {
+    const __m128i d = _mm_loadu_si128(reinterpret_cast<const __m128i*>(dist + i));
+    // The saturated difference d - top is non-zero exactly where d > top.
+    if (_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_subs_epu16(d, limit), zero)) != 0xffff) break;
+  }
+#endif
+  while (i < end && dist[i] <= top) ++i;
+  return i;
+}
+
+// The flood above `flooded_top` (the highest level the flood visits cell by
+// cell), where every piece that meets another joins it: the pieces at that
+// level are then the 4-connected components of the cells above it, each
+// rooted at one of its highest cells, which is all the flood below reads
+// of them (a piece's peak, and which piece a cell is in). A raster pass
+// finds them reading the grid in order, where the flood would visit those
+// cells level by level all over the map: in the open halls of a warehouse
+// most free cells lie more than a door's half-width from any wall. Cells at
+// `flooded_top` and below keep parent -1.
+void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t flooded_top,
+                  std::vector<std::int32_t>* parent_out) {
+  std::vector<std::int32_t>& parent = *parent_out;
+  const auto plateau = [&](std::size_t i) { return dist[i] > flooded_top; };
+  // 1. Components rooted at their first cell in raster order: a root
+  //    changes only where two components meet, so paths stay short. The
+  //    padded frame is 0, so the left neighbour and the one in the previous
+  //    row exist.
+  const std::size_t row = static_cast<std::size_t>(pw);
+  const std::size_t cells = dist.size();
+  const auto next = [&](std::size_t i) { return NextAbove(dist.data(), i, cells, flooded_top); };
+  for (std::size_t i = next(0); i < cells; i = next(i + 1)) {
+    // Inside a plateau W and N are joined already through NW (its east
+    // and north neighbours): W's root is the root of all three. Most
+    // plateau cells lie inside, in the open halls.
+    if (plateau(i - 1) && plateau(i - row) && plateau(i - row - 1)) {
+      parent[i] = Find(parent, static_cast<std::int32_t>(i - 1));
+      continue;
+    }
+    std::int32_t root = static_cast<std::int32_t>(i);
+    for (const std::size_t nb : {i - 1, i - row}) {
+      if (!plateau(nb)) continue;
+      std::int32_t other = Find(parent, static_cast<std::int32_t>(nb));
+      if (other < root) std::swap(root, other);
+      if (other != root && other != static_cast<std::int32_t>(i)) parent[other] = root;
+    }
+    parent[i] = root;
+  }
+  // 2. Each cell points at its component's first cell, whose entry holds
+  //    the component's number coded -2 - k meanwhile (a cell's parent comes
+  //    before it, so it is final by then); each component keeps its
+  //    highest cell, the first of them in raster order.
+  constexpr auto code = [](std::int32_t k) { return -2 - k; };  // its own inverse
+  std::vector<std::int32_t> first, highest;
+  for (std::size_t i = next(0); i < cells; i = next(i + 1)) {
+    const std::int32_t up = parent[i];
+    if (up == static_cast<std::int32_t>(i)) {
+      parent[i] = code(static_cast<std::int32_t>(first.size()));
+      first.push_back(up);
+      highest.push_back(up);
+      continue;
+    }
+    const std::int32_t root = parent[up] < 0 ? up : parent[up];
+    const std::int32_t k = code(parent[root]);
+    if (dist[i] > dist[highest[k]]) highest[k] = static_cast<std::int32_t>(i);
+    parent[i] = root;
+  }
+  // 3. The highest cell becomes the root, the first cell points at it: a
+  //    cell is at most two steps from its root, which the flood's finds
+  //    and the piece graph's shorten as they pass.
+  for (std::size_t k = 0; k < first.size(); ++k) {
+    parent[first[k]] = highest[k];
+    parent[highest[k]] = highest[k];
+  }
+}
+
+// The number of cells of each clearance 1..flooded_top (entry d; entries 0
+// and flooded_top + 1 are 0). Counted without a branch, in four tallies
+// (cell index mod 4) summed at the end: a run of cells that share an entry
+// (a wall's 0s, a hall above flooded_top, a corridor's middle) would
+// otherwise wait on each increment's store before the next.
+std::vector<std::int32_t> CountLevels(const std::vector<std::uint16_t>& dist,
+                                      std::uint16_t flooded_top) {
+  constexpr std::size_t kTallies = 4;
+  const std::size_t above = static_cast<std::size_t>(flooded_top) + 1;  // levels not flooded
+  const std::size_t levels = above + 1;
+  std::vector<std::int32_t> tally(kTallies * levels, 0);
+  const auto level = [&](std::size_t i) { return std::min<std::size_t>(dist[i], above); };
+  std::size_t i = 0;
+  for (; i + kTallies <= dist.size(); i += kTallies) {
+    for (std::size_t k = 0; k < kTallies; ++k) ++tally[k * levels + level(i + k)];
+  }
+  for (; i < dist.size(); ++i) ++tally[level(i)];
+  std::vector<std::int32_t> count(levels, 0);
+  for (std::size_t d = 1; d < above; ++d) {
+    for (std::size_t k = 0; k < kTallies; ++k) count[d] += tally[k * levels + d];
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int pw,
+                                    const DoorRule& rule, bool join_plateaus,
+                                    std::vector<std::int32_t>* parent_out) {
+  // With a maximum room area, spaces joined by a wide narrowing are also
+  // kept apart here, to be joined afterwards while their full areas allow.
+  const bool keep_wide_narrowings = rule.max_room_cells > 0;
+  std::uint16_t top = 0;
+  for (const std::uint16_t d : dist) top = std::max(top, d);
+  // Above a door's clearance every contact joins (unless wide narrowings
+  // are kept): those levels are joined by JoinPlateaus, not flooded.
+  const std::uint16_t flooded_top =
+      keep_wide_narrowings || !join_plateaus
+          ? top
+          : static_cast<std::uint16_t>(std::min<int>(top, rule.max_door));
+  std::vector<std::int32_t> start = CountLevels(dist, flooded_top);
+  // Cells in descending clearance: bucket `flooded_top` first.
+  std::int32_t acc = 0;
+  for (int d = flooded_top; d >= 1; --d) {
+    const std::int32_t n = start[d];
+    start[d] = acc;
+    acc += n;
+  }
+  std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
+  for (std::size_t i = 0; i < dist.size(); ++i) {
+    if (dist[i] && dist[i] <= flooded_top) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
+  }
+  std::vector<std::int32_t>& parent = *parent_out;
+  AssignLarge<std::int32_t>(&parent, dist.size(), -1);
+  if (flooded_top < top) JoinPlateaus(dist, pw, flooded_top, &parent);
+  std::vector<Contact> contacts;
+  const std::int32_t offsets[4] = {-1, 1, -pw, pw};
+  // The clearance of the cells in order, from the buckets' ends (start[d]
+  // now ends bucket d; bucket `flooded_top` starts at 0): reading it from `dist`
+  // would be one more cache miss per cell.
+  int level = flooded_top;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    while (k >= static_cast<std::size_t>(start[level])) --level;
+    const std::int32_t cell = order[k];
+    // Cells of one clearance lie all over the map: on a large map their
+    // neighbours' entries are cache misses, fetched ahead here.
+    if (k + kPrefetchAhead < order.size()) {
+      const std::int32_t* ahead = parent.data() + order[k + kPrefetchAhead];
+      __builtin_prefetch(ahead - pw);
+      __builtin_prefetch(ahead);
+      __builtin_prefetch(ahead + pw);
+    }
+    std::int32_t roots[4];
+    int n = 0;
+    for (const std::int32_t off : offsets) {
+      const std::int32_t nb = cell + off;
+      const std::int32_t up = parent[nb];
+      if (up < 0) continue;
+      // Most cells point at their root already: found without the write of
+      // path halving, which would dirty the cache line all the same.
+      const std::int32_t root = parent[up] == up ? up : Find(parent, nb);
+      if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
+    }
+    if (n == 0) {
+      parent[cell] = cell;  // a new piece; its root is its highest cell
+      continue;
+    }
+    // The root of a piece is one of its highest cells (its first, or the
+    // one JoinPlateaus picked), so dist[root] is the piece's peak clearance.
+    std::int32_t primary = roots[0];
+    for (int k = 1; k < n; ++k) {
+      if (dist[roots[k]] > dist[primary]) primary = roots[k];
+    }
+    parent[cell] = primary;
+    const int s = level;
+    for (int k = 0; k < n; ++k) {
+      const std::int32_t other = roots[k];
+      if (other == primary) continue;
+      const bool narrowing =
+          dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
+      if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
+        contacts.push_back({cell, other, static_cast<std::uint16_t>(s)});
+      } else {
+        parent[other] = primary;
+      }
+    }
+  }
+  return contacts;
+}
+
+}  // namespace linemap::segment_internal
