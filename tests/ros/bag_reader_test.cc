@@ -5,6 +5,7 @@
 #include <rosbag/bag.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 
 #include "linemap/codec.h"
@@ -105,6 +106,27 @@ TEST_F(BagTest, AllLeavesNoFolderWhenNothingIsWritten) {
   const std::vector<std::string> left = ListDir(dir_);
   EXPECT_EQ(std::count(left.begin(), left.end(), "from_garbage"), 0);
   EXPECT_EQ(std::count(left.begin(), left.end(), "from_scan"), 0);
+}
+
+// A folder --all made is taken back when its first file cannot be written.
+// The write is made to fail by a folder name that fits the system's path
+// limit (PATH_MAX, 4096 bytes) while the file names in it do not.
+TEST_F(BagTest, AllTakesBackItsFolderWhenTheFirstWriteFails) {
+  constexpr std::size_t kPathMax = 4096;
+  constexpr std::size_t kFileName = sizeof("/1700000000_500000000.lmap") - 1;
+  std::string parent = dir_;
+  while (parent.size() + 1 + 200 + 1 + 20 < kPathMax - kFileName) {
+    parent += "/" + std::string(200, 'p');
+  }
+  ASSERT_TRUE(std::filesystem::create_directories(parent));
+  std::string out = parent + "/";
+  out += std::string(kPathMax - kFileName - out.size(), 'o');  // out + file name: >= PATH_MAX
+  ASSERT_LT(out.size() + 1, kPathMax);                         // out itself fits
+  const CliResult result =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "--all", "-o", out});
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_NE(result.err.find("1700000000_500000000.lmap"), std::string::npos) << result.err;
+  EXPECT_TRUE(ListDir(parent).empty());
 }
 
 TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {

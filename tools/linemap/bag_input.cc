@@ -88,13 +88,14 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
   return selection;
 }
 
-// The folder for --all: made when missing (one level, as `mkdir`).
-Status EnsureFolder(const std::string& dir) {
-  if (IsDirectory(dir)) return Status::Ok();
+// The folder for --all: made when missing (one level, as `mkdir`). True
+// when it was made here.
+StatusOr<bool> EnsureFolder(const std::string& dir) {
+  if (IsDirectory(dir)) return false;
   if (::mkdir(dir.c_str(), 0777) != 0) {
     return IoError("cannot make the folder '" + dir + "': " + std::strerror(errno));
   }
-  return Status::Ok();
+  return true;
 }
 
 #ifdef LINEMAP_ROSBAG_MODULE_NAME
@@ -152,14 +153,19 @@ struct EncodeVisit {
   const EncodeOptions* options;
   std::string bag_path;
   std::set<std::string> names;  // --all: file names given so far
+  bool made_folder = false;     // --all: the folder was made for this run
+  std::size_t written = 0;      // files written
   Status status;
 };
 
 // With --all, the folder is made when its first map is written, so that a
-// bag that cannot be read, or holds no map, leaves nothing behind.
+// bag that cannot be read, or holds no map, leaves nothing behind (and
+// EncodeBag takes it back when that first write fails).
 StatusOr<std::string> OutputPath(EncodeVisit* visit, const std::string& stamp) {
   if (!visit->selection->all) return visit->selection->out;
-  if (visit->names.empty()) LINEMAP_RETURN_IF_ERROR(EnsureFolder(visit->selection->out));
+  if (visit->names.empty()) {
+    LINEMAP_ASSIGN_OR_RETURN(visit->made_folder, EnsureFolder(visit->selection->out));
+  }
   // Two maps with one stamp get _1, _2, ... after the first.
   std::string name = stamp;
   for (int n = 1; visit->names.count(name) > 0; ++n) name = stamp + "_" + std::to_string(n);
@@ -190,6 +196,7 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(
       out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
       selection.durability));
+  ++visit->written;
   std::printf("%s message %llu of %llu: %d x %d cells -> %s, %zu bytes\n", selection.topic.c_str(),
               static_cast<unsigned long long>(index), static_cast<unsigned long long>(count),
               grid->width(), grid->height(), out.c_str(), bytes->size());
@@ -210,7 +217,7 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
   if (!reader.ok()) return ReportError("encode", reader.status().WithContext("'" + bag_path + "'"));
   StatusOr<BagSelection> selection = BagSelectionFrom(args);
   if (!selection.ok()) return ReportError("encode", selection.status());
-  EncodeVisit visit{&*selection, &options, bag_path, {}, Status::Ok()};
+  EncodeVisit visit{&*selection, &options, bag_path, {}, false, 0, Status::Ok()};
   ros_bridge::BagMapRequest request;
   request.bag_path = bag_path;
   request.topic = selection->topic;
@@ -222,6 +229,10 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
     case ros_bridge::BagReadOutcome::kOk:
       return kExitOk;
     case ros_bridge::BagReadOutcome::kStopped:
+      // A folder made for --all whose first file could not be written
+      // (a full disk, a name too long) is taken back: nothing half-made
+      // is left. rmdir removes only an empty folder.
+      if (visit.made_folder && visit.written == 0) ::rmdir(selection->out.c_str());
       return ReportError("encode", visit.status);
     case ros_bridge::BagReadOutcome::kBadInput:
       break;
