@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "format/large_vector.h"
 #include "linemap/grid.h"
 #include "linemap/lines.h"
 
@@ -90,11 +91,11 @@ EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
   if (!robot) {
     // Flooding every free component marks exactly the obstacle cells with a
     // free 4-neighbour, so one direct pass gives the same AuxMap edge points.
-    edges.is_edge.resize(grid.size());
+    AssignLarge<std::uint8_t>(&edges.is_edge, grid.size(), 0);
     edges.edge_count = MarkObstaclesNextToFree(grid, &edges.is_edge);
     return edges;
   }
-  std::vector<std::uint8_t> aux(grid.size(), kNotReached);
+  std::vector<std::uint8_t> aux = LargeVector<std::uint8_t>(grid.size(), kNotReached);
   std::vector<std::uint32_t> open;
   // The robot's cell; a position off the map or not on a free cell floods
   // nothing (ExtractLines reports that case as an error).
@@ -104,7 +105,7 @@ EdgeMap ComputeEdgeMap(const Grid& grid, std::optional<CellPoint> robot) {
     const std::size_t seed = grid.Index(static_cast<int>(col), static_cast<int>(row));
     if (grid.cells()[seed] == Cell::kFree) FloodConnectedDomain(grid, seed, &aux, &open);
   }
-  edges.is_edge.assign(grid.size(), 0);
+  AssignLarge<std::uint8_t>(&edges.is_edge, grid.size(), 0);
   for (std::size_t i = 0; i < aux.size(); ++i) {
     if (aux[i] == kEdgePoint) {
       edges.is_edge[i] = 1;

@@ -95,6 +95,7 @@
 #include "codec/lines/polish_and_corners.h"
 #include "codec/lines/prune_and_specks.h"
 #include "codec/lines/segment_index.h"
+#include "format/large_vector.h"
 
 namespace linemap::lines_internal {
 namespace {
@@ -165,7 +166,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   const int width = edges.width, height = edges.height;
   const std::vector<std::uint32_t> edge_cells = EdgeCellList(edges);
   // First the cells to chain (1), then, cleared by the tracing, scratch.
-  std::vector<std::uint8_t> open(edges.is_edge.size(), 0);
+  std::vector<std::uint8_t> open = LargeVector<std::uint8_t>(edges.is_edge.size(), 0);
   FlagLargeComponents(edges, edge_cells, std::max(1, options.min_component_cells), &open);
   std::vector<std::uint32_t> speckle;
   for (std::uint32_t i : edge_cells) {
@@ -229,7 +230,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   }
   JoinCorners(&result.segments, width, height, options.corner_join_cells);
   // Speckle not within epsilon of a wall is left to the furniture layer.
-  result.left_to_blobs.assign(edges.is_edge.size(), 0);
+  AssignLarge<std::uint8_t>(&result.left_to_blobs, edges.is_edge.size(), 0);
   SegmentIndex index(&result.segments, width, height);
   for (std::uint32_t i : speckle) {
     const CellXY c = CellOfIndex(i, width);

@@ -23,6 +23,7 @@
 #include <numbers>
 
 #include "codec/lines/line_fit.h"
+#include "format/large_vector.h"
 
 namespace linemap::lines_internal {
 namespace {
@@ -136,7 +137,7 @@ std::array<CellOffset, 3> TailPoints(const CellOffset& neighbour) {
 std::vector<std::uint8_t> ScreenActivePoints(const EdgeMap& edges) {
   std::array<std::array<CellOffset, 3>, 8> tails;
   for (int i = 0; i < 8; ++i) tails[i] = TailPoints(ScreeningNeighbours()[i]);
-  std::vector<std::uint8_t> active(edges.is_edge.size(), 0);
+  std::vector<std::uint8_t> active = LargeVector<std::uint8_t>(edges.is_edge.size(), 0);
   for (int row = 0; row < edges.height; ++row) {
     for (int col = 0; col < edges.width; ++col) {
       if (!IsEdge(edges, col, row)) continue;
