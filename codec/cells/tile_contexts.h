@@ -1,11 +1,12 @@
-// The contexts of the tile coder (spec/tile_coding.md "Contexts"): block
+// The contexts of the tile coder (spec/tile_coding.md sections 4 and 5): block
 // sizes, the layout of a tile's table of bit models, and what the contexts
 // are made of: the trinary template of the cells coded before a cell, its
 // nearest cells, the class of its layer hint, the layer class of the walls,
 // room borders, fills and furniture drawn around it, and the states and
 // comparisons of the blocks below. Inline, for the per-cell runs
 // (tile_cell_runs.h) and the scan (tile_scan.cc), the one file that
-// includes them.
+// includes them (its constants are per translation unit, which the inline
+// functions read: a second file including it would need them `inline`).
 #ifndef LINEMAP_CODEC_CELLS_TILE_CONTEXTS_H_
 #define LINEMAP_CODEC_CELLS_TILE_CONTEXTS_H_
 

@@ -22,7 +22,7 @@
 #include "codec/lmap/chunk_coding.h"
 #include "codec/lmap/row_encoder.h"
 #include "codec/lmap/v2_file.h"
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "codec/tolerance/tolerance_blocks.h"
 #include "format/container.h"
 #include "format/file_io.h"

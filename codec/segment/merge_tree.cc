@@ -60,13 +60,13 @@ void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t 
     // and north neighbours): W's root is the root of all three. Most
     // plateau cells lie inside, in the open halls.
     if (plateau(i - 1) && plateau(i - row) && plateau(i - row - 1)) {
-      parent[i] = Find(parent, static_cast<std::int32_t>(i - 1));
+      parent[i] = FindRoot(parent, static_cast<std::int32_t>(i - 1));
       continue;
     }
     std::int32_t root = static_cast<std::int32_t>(i);
     for (const std::size_t nb : {i - 1, i - row}) {
       if (!plateau(nb)) continue;
-      std::int32_t other = Find(parent, static_cast<std::int32_t>(nb));
+      std::int32_t other = FindRoot(parent, static_cast<std::int32_t>(nb));
       if (other < root) std::swap(root, other);
       if (other != root && other != static_cast<std::int32_t>(i)) parent[other] = root;
     }
@@ -180,7 +180,7 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
       if (up < 0) continue;
       // Most cells point at their root already: found without the write of
       // path halving, which would dirty the cache line all the same.
-      const std::int32_t root = parent[up] == up ? up : Find(parent, nb);
+      const std::int32_t root = parent[up] == up ? up : FindRoot(parent, nb);
       if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
     }
     if (n == 0) {

@@ -10,7 +10,7 @@
 namespace linemap::segment_internal {
 
 // The root of x, halving the path on the way.
-inline std::int32_t Find(std::vector<std::int32_t>& parent, std::int32_t x) {
+inline std::int32_t FindRoot(std::vector<std::int32_t>& parent, std::int32_t x) {
   while (parent[x] != x) {
     parent[x] = parent[parent[x]];  // path halving
     x = parent[x];

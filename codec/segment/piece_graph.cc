@@ -18,7 +18,7 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
   // the forest stays valid while it is rewritten).
   std::vector<std::int32_t>& forest = piece_of_;
   for (std::size_t i = 0; i < forest.size(); ++i) {
-    if (forest[i] >= 0) forest[i] = Find(forest, static_cast<std::int32_t>(i));
+    if (forest[i] >= 0) forest[i] = FindRoot(forest, static_cast<std::int32_t>(i));
   }
   // Then, in cell order, pieces numbered as their first cells come. A
   // root's entry turns into its piece, coded -2 - piece, when the piece's

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "codec/segment/merge_tree.h"
@@ -41,7 +42,7 @@ class PieceGraph {
   // Hands over the pieces of the padded cells (PieceOf() is not to be
   // called after).
   std::vector<std::int32_t> TakePieces() { return std::move(piece_of_); }
-  std::int32_t Root(std::int32_t piece) { return Find(parent_, piece); }
+  std::int32_t Root(std::int32_t piece) { return FindRoot(parent_, piece); }
   std::int32_t size() const { return static_cast<std::int32_t>(area_.size()); }
   std::size_t Area(std::int32_t root) const { return area_[root]; }
   std::uint16_t Peak(std::int32_t piece) const { return peak_[piece]; }

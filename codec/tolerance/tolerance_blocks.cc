@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "codec/tolerance/compare_internal.h"
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "codec/tolerance/tolerance_internal.h"
 #include "linemap/codec.h"
 

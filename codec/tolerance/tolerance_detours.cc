@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "codec/tolerance/tolerance_internal.h"
 
 namespace linemap::tolerance_internal {

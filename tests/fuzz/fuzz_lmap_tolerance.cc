@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "tests/fuzz/fuzz_grid.h"

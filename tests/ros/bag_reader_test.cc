@@ -5,6 +5,7 @@
 #include <rosbag/bag.h>
 
 #include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <string>
 
@@ -110,9 +111,10 @@ TEST_F(BagTest, AllLeavesNoFolderWhenNothingIsWritten) {
 
 // A folder --all made is taken back when its first file cannot be written.
 // The write is made to fail by a folder name that fits the system's path
-// limit (PATH_MAX, 4096 bytes) while the file names in it do not.
+// limit (PATH_MAX) while the file names in it do not. A folder that was
+// there before is kept.
 TEST_F(BagTest, AllTakesBackItsFolderWhenTheFirstWriteFails) {
-  constexpr std::size_t kPathMax = 4096;
+  constexpr std::size_t kPathMax = PATH_MAX;
   constexpr std::size_t kFileName = sizeof("/1700000000_500000000.lmap") - 1;
   std::string parent = dir_;
   while (parent.size() + 1 + 200 + 1 + 20 < kPathMax - kFileName) {
@@ -127,6 +129,13 @@ TEST_F(BagTest, AllTakesBackItsFolderWhenTheFirstWriteFails) {
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("1700000000_500000000.lmap"), std::string::npos) << result.err;
   EXPECT_TRUE(ListDir(parent).empty());
+  // The same failure into a folder made beforehand leaves that folder.
+  ASSERT_TRUE(std::filesystem::create_directory(out));
+  const CliResult again =
+      RunCli({"encode", bag_path_, "--lossless", "--topic", "/map", "--all", "-o", out});
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_EQ(ListDir(parent).size(), 1u);
+  std::filesystem::remove_all(dir_ + "/" + std::string(200, 'p'));  // 4 KB-long paths
 }
 
 TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {

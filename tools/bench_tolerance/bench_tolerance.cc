@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tools/bench/png_codec.h"

@@ -152,10 +152,10 @@ struct EncodeVisit {
   const BagSelection* selection;
   const EncodeOptions* options;
   std::string bag_path;
-  std::set<std::string> names;  // --all: file names given so far
-  bool made_folder = false;     // --all: the folder was made for this run
-  std::size_t written = 0;      // files written
-  Status status;
+  std::set<std::string> names{};  // --all: file names given so far
+  bool made_folder = false;       // --all: the folder was made for this run
+  std::size_t written = 0;        // files written
+  Status status{};
 };
 
 // With --all, the folder is made when its first map is written, so that a
@@ -217,7 +217,7 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
   if (!reader.ok()) return ReportError("encode", reader.status().WithContext("'" + bag_path + "'"));
   StatusOr<BagSelection> selection = BagSelectionFrom(args);
   if (!selection.ok()) return ReportError("encode", selection.status());
-  EncodeVisit visit{&*selection, &options, bag_path, {}, false, 0, Status::Ok()};
+  EncodeVisit visit{.selection = &*selection, .options = &options, .bag_path = bag_path};
   ros_bridge::BagMapRequest request;
   request.bag_path = bag_path;
   request.topic = selection->topic;
@@ -225,14 +225,17 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
   request.all = selection->all;
   request.visit = &VisitMap;
   request.context = &visit;
-  switch ((*reader)(&request)) {
+  const ros_bridge::BagReadOutcome outcome = (*reader)(&request);
+  if (outcome == ros_bridge::BagReadOutcome::kOk) return kExitOk;
+  // A folder made for --all whose first file could not be written (a full
+  // disk, a name too long) is taken back, whatever stopped the read:
+  // nothing half-made is left. rmdir removes only an empty folder, and a
+  // folder that was there before is kept.
+  if (visit.made_folder && visit.written == 0) (void)::rmdir(selection->out.c_str());
+  switch (outcome) {
     case ros_bridge::BagReadOutcome::kOk:
       return kExitOk;
     case ros_bridge::BagReadOutcome::kStopped:
-      // A folder made for --all whose first file could not be written
-      // (a full disk, a name too long) is taken back: nothing half-made
-      // is left. rmdir removes only an empty folder.
-      if (visit.made_folder && visit.written == 0) ::rmdir(selection->out.c_str());
       return ReportError("encode", visit.status);
     case ros_bridge::BagReadOutcome::kBadInput:
       break;

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "tools/linemap/commands.h"

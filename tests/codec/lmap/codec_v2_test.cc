@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
@@ -381,7 +381,7 @@ TEST(CodecV2Test, WindowsOfVersionOneFilesAreCropped) {
 }
 
 // Within a tolerance the file decodes to the simplified map (whose
-// guarantees tests/codec/tolerance/tolerance_test.cc checks by brute force) or, where that is no
+// guarantees tests/codec/tolerance/simplify_test.cc checks by brute force) or, where that is no
 // smaller, to the map itself; never larger than the exact file.
 // (navtut/lse_arena at T = 4 once came out a byte larger than its exact
 // file: its walls within the tolerance cost more than the exact ones.)

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 #include "format/deflate.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"

@@ -1,5 +1,5 @@
 // The room flood's raster pass over the levels above a door's clearance
-// (room_flood.cc, JoinPlateaus) against the flood that visits every level
+// (merge_tree.cc, JoinPlateaus) against the flood that visits every level
 // cell by cell: rooms, peaks and doors must come out the same on generated
 // floor plans, the bundled maps and random grids.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The mending steps of the tolerance fitting (tolerance_internal.h): which
 // cells each gives back when blocks break a guarantee. The fitting is
-// correct with any cells given back (tolerance_test.cc checks the
+// correct with any cells given back (simplify_test.cc checks the
 // guarantees on its results); these tests hold the steps to giving back
 // few: one doorway rather than a plan's whole wall side, one gap rather
 // than a split-off piece's whole edge, one cell in three along a

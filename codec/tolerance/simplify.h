@@ -1,8 +1,8 @@
 // Lossy saves with a tolerance that holds: a simplified grid, within T cells
 // (Chebyshev) of the input, that the exact 2.0 coder codes in fewer bytes.
 // The guarantees and their measures are public (linemap/tolerance.h).
-#ifndef LINEMAP_CODEC_TOLERANCE_TOLERANCE_H_
-#define LINEMAP_CODEC_TOLERANCE_TOLERANCE_H_
+#ifndef LINEMAP_CODEC_TOLERANCE_SIMPLIFY_H_
+#define LINEMAP_CODEC_TOLERANCE_SIMPLIFY_H_
 
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -12,7 +12,7 @@ namespace linemap {
 
 // The grid a file saved within `tolerance_cells` (0..kMaxToleranceCells;
 // else invalid argument) decodes to when its cells are in blocks: the map
-// drawn in blocks of T + 1 cells, with cells given back their original
+// drawn in blocks of 2 x 2 cells, with cells given back their original
 // value wherever a guarantee of linemap/tolerance.h would fail (FitBlockCells,
 // tolerance_blocks.h), so CheckTolerance(grid, result, tolerance_cells)
 // .Holds() is true. tolerance_cells == 0 returns the grid unchanged.
@@ -21,4 +21,4 @@ StatusOr<Grid> SimplifyWithinTolerance(const Grid& grid, int tolerance_cells);
 
 }  // namespace linemap
 
-#endif  // LINEMAP_CODEC_TOLERANCE_TOLERANCE_H_
+#endif  // LINEMAP_CODEC_TOLERANCE_SIMPLIFY_H_

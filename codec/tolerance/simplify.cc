@@ -1,6 +1,6 @@
 // SimplifyWithinTolerance(): the map in blocks (tolerance_blocks.h).
 // CheckTolerance(): the guarantees' figures.
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // a brute-force reference written here (window scans for Chebyshev
 // distances, flood fills for regions, breadth-first plans), never by the
 // module's own distance transforms.
-#include "codec/tolerance/tolerance.h"
+#include "codec/tolerance/simplify.h"
 
 #include <gtest/gtest.h>
 
