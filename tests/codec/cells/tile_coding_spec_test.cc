@@ -325,17 +325,7 @@ class SpecEncoder {
       low_ += bound;
       range_ -= bound;
     }
-    const std::uint32_t ss =
-        std::min(static_cast<std::uint32_t>(std::floor(std::log2(m.n + 2.0))), 7u);
-    const std::uint32_t fs = std::min(ss, 2u);
-    if (!one) {
-      m.fast += (65536 - m.fast) >> fs;
-      m.slow += (65536 - m.slow) >> ss;
-    } else {
-      m.fast -= m.fast >> fs;
-      m.slow -= m.slow >> ss;
-    }
-    m.n = std::min(m.n + 1, 126u);
+    Update(m, one);
     while (range_ < (1u << 24)) {
       range_ <<= 8;
       ShiftLow();
