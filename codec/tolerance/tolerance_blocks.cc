@@ -25,14 +25,14 @@ constexpr int kMaxRounds = 96;
 // The block side: 2 at every tolerance. Any side up to t + 1 keeps every
 // cell within t of its block, but a side of s lets an obstacle grow by
 // s - 1 cells, and a plan that turns around the end of a grown wall (a
-// U-turn through a doorway) is 2 (s - 1) steps longer: with s = 2 that is
-// the 2 steps plans may differ by, so no plan is made longer by more than a
-// corner's steps even between cells the fitting's sampled starts never
-// tried. Larger tolerances still pay: a free cell may then be up to t
-// cells from a free block, so fewer cells need restoring. Measured (bytes
-// of the cells-only file, tsc, avz, warehouse, kth, fetch 9_16_15): side 3
-// at t = 3 is 0.89-1.01x side 2, but its plans failed the tests' own
-// start / goal pairs on 2 of 12 random plans and on kth.
+// U-turn through a doorway) is 2 (s - 1) steps longer, which the plan
+// checks find and mend cell by cell: the larger the side, the more cells
+// they give back. Larger tolerances still pay: a free cell may then be up
+// to t cells from a free block, so fewer cells need restoring. Measured
+// (bytes of the cells-only file, tsc, avz, warehouse, kth, fetch 9_16_15,
+// when plans still had 2 steps of slack): side 3 at t = 3 is 0.89-1.01x
+// side 2, but its plans failed the tests' own start / goal pairs on 2 of
+// 12 random plans and on kth.
 constexpr int kBlockSide = 2;
 
 // Whether the free cells of the block at (x0, y0) (side f) and of the ring

@@ -134,7 +134,7 @@ std::vector<std::size_t> ChangeSides(const Grid& original, const Grid& decoded) 
 
 // Calls visit(plans, goal, holds) for each plan of `plans` up to `radius`
 // steps to a cell free in `other`; it holds when `other_plans` (the same
-// source on `other`) makes it within the slack.
+// source on `other`) makes it in as many steps.
 template <typename Visit>
 void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
                 Visit&& visit) {
@@ -143,7 +143,7 @@ void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, Lo
     if (here > radius) break;
     if (other.cells()[goal] != Cell::kFree) continue;
     const std::int32_t there = other_plans.steps(goal);
-    visit(plans, goal, there >= 0 && there <= here + kPlanSlackSteps);
+    visit(plans, goal, there >= 0 && there <= here);
   }
 }
 
@@ -153,7 +153,7 @@ void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, Lo
 template <typename Visit>
 void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, const Grid* checked,
                      Visit&& visit) {
-  // A search from a cell reaches radius + slack steps, so no farther in
+  // A search from a cell reaches `radius` steps, so no farther in
   // Chebyshev distance: where nothing changed that near since `checked`,
   // every plan it makes is as it was then.
   std::vector<std::int32_t> near_change;
@@ -164,12 +164,11 @@ void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, cons
     }
     near_change = ChebyshevDistance(decoded.width(), decoded.height(), changed);
   }
-  const int depth = radius + kPlanSlackSteps;
-  LocalPlans on_original(original, decoded, depth), on_decoded(decoded, original, depth);
+  LocalPlans on_original(original, decoded, radius), on_decoded(decoded, original, radius);
   for (const std::size_t source : ChangeSides(original, decoded)) {
-    if (checked != nullptr && near_change[source] > depth) continue;
-    // A plan up to `radius` steps on one map must be there within the
-    // slack on the other: search that much deeper.
+    if (checked != nullptr && near_change[source] > radius) continue;
+    // A plan of up to `radius` steps on one map must be there in as many
+    // steps on the other: both searches go that deep.
     on_original.Run(source);
     on_decoded.Run(source);
     // Longer on the decode (a detour), then shorter (a shortcut).

@@ -64,7 +64,7 @@ std::vector<std::size_t> FreeCover(const Grid& original, const Grid& decoded,
 // The plan guarantee between nearby cells, which the sampled starts of
 // PlanCulprits rarely try: from every cell free in both maps beside a cell
 // free in one only, the plans of up to `radius` steps on either map must
-// be on the other within kPlanSlackSteps more. Where one is not, the cells
+// be on the other with the same length. Where one is not, the cells
 // on its plan that are not free on the other map (of the shortest plans,
 // one with the fewest); a blocked passage between two rooms that no sampled
 // start plans through is found this way. With `checked` (a decode this
@@ -76,7 +76,7 @@ std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& d
 
 // The plans LocalDetourCulprits checks (from each cell beside a change, on
 // each map, to every cell free on the other within `radius` steps), and
-// those not within kPlanSlackSteps on the other map.
+// those not of the same length on the other map.
 struct LocalPlanCount {
   std::size_t plans = 0;
   std::size_t disagreements = 0;

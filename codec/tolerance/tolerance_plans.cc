@@ -160,9 +160,7 @@ std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
 }  // namespace
 
 bool PlansAgree(std::int32_t la, std::int32_t lb) {
-  const int diff = std::abs(lb - la);
-  return (la < 0) == (lb < 0) &&
-         (la < 0 || diff <= kPlanSlackSteps || diff <= kPlanLengthTolerance * la);
+  return (la < 0) == (lb < 0) && (la < 0 || std::abs(lb - la) <= kPlanLengthTolerance * la);
 }
 
 std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {

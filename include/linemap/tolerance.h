@@ -16,12 +16,12 @@
 //      that are apart stay apart in S; and no free region of O is split;
 //   4. plans agree: from 16 sampled start cells to every goal cell free
 //      in both maps, a 4-connected path over free cells exists on S exactly
-//      when it exists on O, and its length is within kPlanLengthTolerance of O's or
-//      kPlanSlackSteps steps of it, whichever is more; and from every cell
-//      free in both maps beside a cell free in one only, every plan of up
-//      to kLocalPlanSteps steps on either map is on the other within
-//      kPlanSlackSteps more (a doorway closed or a wall opened where no
-//      sampled start plans through).
+//      when it exists on O, and its length is within kPlanLengthTolerance
+//      of O's; and from every cell free in both maps beside a cell free in
+//      one only, every plan of up to kLocalPlanSteps steps on either map has
+//      the same length on the other (a doorway closed or a wall opened where
+//      no sampled start plans through, and the short plans that 3 % cannot
+//      tell apart: under 34 steps, 3 % is less than one step).
 #ifndef LINEMAP_TOLERANCE_H_
 #define LINEMAP_TOLERANCE_H_
 
@@ -35,15 +35,17 @@ namespace linemap {
 // Largest tolerance the encoder accepts, in cells.
 inline constexpr int kMaxToleranceCells = 4;
 // Plans agree when the decoded path length is within this share of the
-// original's (0.03 = 3 %).
+// original's (0.03 = 3 %). No slack in steps is added: a wall grown by one
+// cell makes a plan round its end 2 steps longer, more than 3 % of any plan
+// under 67 steps, and a planner told "within 3 %" must not find those.
 inline constexpr double kPlanLengthTolerance = 0.03;
-// ... or within this many steps: any change to free space that a plan
-// passes (an unknown speck filled, the tip of a spur of unknown cut) moves
-// its length by two steps, which is more than 3 % of a plan under 67 steps.
-inline constexpr int kPlanSlackSteps = 2;
-// The local plans of guarantee 4 reach this many steps: a doorway between
-// two rooms, a corridor's end.
-inline constexpr int kLocalPlanSteps = 8;
+// The local plans of guarantee 4 reach this many steps. Measured on
+// ../shared/maps (`build/bench_tolerance --maps ../shared/maps
+// --cells-only`, 24 strided starts x ~1000 goals per map that the encoder
+// never samples): with 8 steps, 61 of 609,096 plans at T = 1 still
+// differed by more than 3 % (7 by more than 2 steps), with 16 steps 1; the
+// files are the same size within 1 %.
+inline constexpr int kLocalPlanSteps = 16;
 
 // The guarantees' figures of `decoded` against `original` (same size; a
 // report of mismatched sizes has same_size false and nothing else set).
@@ -73,12 +75,12 @@ struct ToleranceReport {
   // Start / goal pairs (sampled starts, every goal) free in both maps, and
   // those whose plans
   // disagree (one exists and not the other, or lengths differ by more than
-  // kPlanLengthTolerance and kPlanSlackSteps).
+  // kPlanLengthTolerance).
   std::size_t plan_pairs = 0;
   std::size_t plan_disagreements = 0;
   // The local plans of guarantee 4 (from each cell free in both maps beside
   // a change, on each map, up to kLocalPlanSteps steps), and those not on
-  // the other map within kPlanSlackSteps more.
+  // the other map with the same length.
   std::size_t local_plans = 0;
   std::size_t local_plan_disagreements = 0;
 

@@ -1,5 +1,9 @@
 #include "tests/testing/reference_components.h"
 
+#include <map>
+#include <set>
+#include <utility>
+
 namespace linemap::testing {
 
 FreeComponents FreeComponentsByFloodFill(const Grid& grid) {
@@ -29,6 +33,23 @@ FreeComponents FreeComponentsByFloodFill(const Grid& grid) {
     }
   }
   return out;
+}
+
+int PlansOnOneGridOnly(const Grid& a, const Grid& b) {
+  const FreeComponents ca = FreeComponentsByFloodFill(a), cb = FreeComponentsByFloodFill(b);
+  std::set<std::pair<int, int>> meet;  // (component in a, component in b)
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    if (ca.id[i] && cb.id[i]) meet.insert({ca.id[i], cb.id[i]});
+  }
+  std::map<int, int> per_a, per_b;
+  for (const auto& [x, y] : meet) {
+    ++per_a[x];
+    ++per_b[y];
+  }
+  int extra = 0;
+  for (const auto& [x, n] : per_a) extra += n - 1;
+  for (const auto& [y, n] : per_b) extra += n - 1;
+  return extra;
 }
 
 }  // namespace linemap::testing

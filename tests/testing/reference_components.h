@@ -21,6 +21,13 @@ struct FreeComponents {
 // their first cells.
 FreeComponents FreeComponentsByFloodFill(const Grid& grid);
 
+// Among the cells free in both grids (same size), how far "a 4-connected
+// plan over free cells exists" differs between them: for each component of
+// one grid, the components of the other that its cells fall into, beyond
+// the first, counted both ways. 0 exactly when every pair of those cells
+// has a plan on both grids or on neither.
+int PlansOnOneGridOnly(const Grid& a, const Grid& b);
+
 }  // namespace linemap::testing
 
 #endif  // LINEMAP_TESTS_TESTING_REFERENCE_COMPONENTS_H_

@@ -41,8 +41,8 @@ const CommandSpec kEvalSpec = {
     "from the original free space, free regions joined (leaks) or split, and\n"
     "plans (4-connected, over free cells, from 16 sampled starts to every cell\n"
     "free in both) that exist on one map only or differ in length by more than\n"
-    "3 % and 2 steps, and plans of up to 8 steps from every cell beside a change\n"
-    "that are not on the other map within 2 steps more; and whether all hold\n"
+    "3 %, and plans of up to 16 steps from every cell beside a change that are\n"
+    "not on the other map in as many steps; and whether all hold\n"
     "(exit status 0 either way).",
     WithMapLoadOptions(
         {{"--json", "", "print one JSON object"},

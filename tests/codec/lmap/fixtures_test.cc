@@ -128,8 +128,10 @@ TEST(FixturesTest, VersionTwoFixturesDecodeToTheirMaps) {
 // Files with cells in blocks, saved within 1 cell (version 2.1 with WALL,
 // ROOM, FURN; 2.2 with LAYR; 2.3 with tiles of model 12), decode to grids that keep the guarantees
 // of tolerance 1 against their map that the encoder held when they were written, checked by
-// CheckTolerance, whatever its choices were then. The plans of up to kLocalPlanSteps steps beside
-// a change came later: these files were written before, and some of those plans differ on them.
+// CheckTolerance, whatever its choices were then. The plan guarantee was looser when they were
+// written (plans from sampled starts within 3 % or 2 steps; no local plans; small pockets of free
+// space could be joined), so their plans are not checked here: some plans differ on them by 2
+// steps, and 9 components of free cells are joined or split (testing::PlansOnOneGridOnly).
 TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
   auto original =
       LoadRosMap(testing::BundledMapsDir() + "/turtlebot_apps/willow-2010-02-18-0.10.yaml");
@@ -145,6 +147,7 @@ TEST(FixturesTest, ToleranceFixturesKeepTheirTolerance) {
     EXPECT_NE(contents->grid, *original) << file;
     ToleranceReport report = CheckTolerance(*original, contents->grid, 1);
     EXPECT_GT(report.local_plans, 0u) << file;
+    report.plan_disagreements = 0;
     report.local_plan_disagreements = 0;
     EXPECT_TRUE(report.Holds()) << file;
     EXPECT_FALSE(contents->walls.empty()) << file;

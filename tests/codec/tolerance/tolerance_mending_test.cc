@@ -26,11 +26,12 @@ std::set<std::size_t> AsSet(const std::vector<std::size_t>& cells) {
 
 // A 30 x 12 room split by a wall on row 6 with a doorway at column 25, and
 // a wall along its bottom row. The decode closes the doorway and thickens
-// the bottom wall along row 10 (columns 3-24), which changes no plan by
-// more than the 2 steps allowed but lies on some of the shortest plans
-// from the lower half to the doorway (the breadth-first search's own plan
-// from (2, 10) runs along it). Giving back the doorway alone restores
-// every plan.
+// the bottom wall along row 10 from column 3 to the right edge. That
+// changes no plan (the lower half stays orthogonally convex, where every
+// plan is as long as its Manhattan distance) but lies on some of the
+// shortest plans from the lower half to the doorway (the breadth-first
+// search's own plan from (2, 10) runs along it). Giving back the doorway
+// alone restores every plan.
 TEST(PlanCulpritsTest, GivesBackTheDoorwayNotTheCellsAlongTheWall) {
   Grid original(30, 12, Cell::kFree);
   for (int c = 0; c < 30; ++c) {
@@ -39,7 +40,7 @@ TEST(PlanCulpritsTest, GivesBackTheDoorwayNotTheCellsAlongTheWall) {
   }
   Grid decoded = original;
   decoded.set(25, 6, Cell::kOccupied);
-  for (int c = 3; c <= 24; ++c) decoded.set(c, 10, Cell::kOccupied);
+  for (int c = 3; c < 30; ++c) decoded.set(c, 10, Cell::kOccupied);
 
   const std::vector<std::size_t> culprits = PlanCulprits(original, decoded);
   ASSERT_FALSE(culprits.empty());
@@ -127,14 +128,21 @@ TEST(LocalDetourCulpritsTest, FindsAShortcutThroughAWall) {
 }
 
 // A wall thickened by a cell along its length and at its tip: plans along
-// it keep their length, and round the tip they gain 2 steps, which the
-// guarantee allows. Nothing to give back.
-TEST(LocalDetourCulpritsTest, AWallThickenedByACellNeedsNothing) {
+// it keep their length, but round the tip they gain 2 steps ((25, 9) to
+// (25, 12): 5 steps past (26, 10) and (26, 11), 7 past column 27), more
+// than 3 % of such short plans. The culprits are those two cells, the only
+// changed ones on the shortest plans round the tip; with them given back
+// every plan is as long as before.
+TEST(LocalDetourCulpritsTest, AWallGrownAtItsTipGivesTheTipBack) {
   Grid original(40, 21, Cell::kFree);
   for (int c = 0; c <= 25; ++c) original.set(c, 10, Cell::kOccupied);
   Grid decoded = original;
   for (int c = 0; c <= 26; ++c) decoded.set(c, 11, Cell::kOccupied);
   decoded.set(26, 10, Cell::kOccupied);
+  EXPECT_EQ(AsSet(LocalDetourCulprits(original, decoded, 8)),
+            std::set<std::size_t>({original.Index(26, 10), original.Index(26, 11)}));
+  decoded.set(26, 10, Cell::kFree);
+  decoded.set(26, 11, Cell::kFree);
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
 }
 
