@@ -154,8 +154,7 @@ void ExpectPlansAgree(const Grid& o, const Grid& s, int sources) {
     for (std::size_t b = 0; b < both.size(); b += goal_stride) {
       const int x = lo[both[b]], y = ls[both[b]];
       ++pairs;
-      const bool agree =
-          (x < 0) == (y < 0) && (x < 0 || std::abs(x - y) <= 0.03 * x);
+      const bool agree = (x < 0) == (y < 0) && (x < 0 || std::abs(x - y) <= 0.03 * x);
       disagreements += !agree;
     }
   }
