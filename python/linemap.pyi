@@ -1,0 +1,140 @@
+# Type stubs of the `linemap` extension module (python/linemap_module.cc and
+# the files it registers), for editors and type checkers: the module is
+# compiled, so they cannot read its signatures from source. Installed next to
+# the module. tests/python/test_stubs.py checks that every name and
+# parameter here matches what the built module reports.
+import os
+from typing import Any, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+FREE: int
+OCCUPIED: int
+UNKNOWN: int
+
+_Path = Union[str, "os.PathLike[str]"]
+# .lmap bytes: any contiguous buffer (bytes, bytearray, memoryview, numpy).
+_Buffer = Union[bytes, bytearray, memoryview]
+_Source = Union[_Path, _Buffer]
+_Window = Tuple[int, int, int, int]
+
+class Map:
+    def __init__(
+        self,
+        cells: npt.ArrayLike,
+        resolution: float = 0.05,
+        origin: Sequence[float] = (0.0, 0.0, 0.0),
+    ) -> None: ...
+    @property
+    def cells(self) -> npt.NDArray[np.uint8]: ...
+    @cells.setter
+    def cells(self, value: npt.ArrayLike) -> None: ...
+    @property
+    def width(self) -> int: ...
+    @property
+    def height(self) -> int: ...
+    @property
+    def resolution(self) -> float: ...
+    @resolution.setter
+    def resolution(self, value: float) -> None: ...
+    @property
+    def origin(self) -> Tuple[float, float, float]: ...
+    @origin.setter
+    def origin(self, value: Sequence[float]) -> None: ...
+    @property
+    def occupied_thresh(self) -> float: ...
+    @property
+    def free_thresh(self) -> float: ...
+    @property
+    def negate(self) -> bool: ...
+    @property
+    def mode(self) -> str: ...
+    def set_thresholds(self, occupied_thresh: float, free_thresh: float) -> None: ...
+    @staticmethod
+    def from_occupancy_grid(
+        data: Union[npt.ArrayLike, Sequence[int]],
+        width: int,
+        height: int,
+        resolution: float,
+        origin: Sequence[float] = (0.0, 0.0, 0.0),
+        *,
+        occupied_thresh: float = 0.65,
+        free_thresh: float = 0.25,
+        max_cells: Optional[int] = None,
+    ) -> Map: ...
+    def to_occupancy_grid(self, frame_id: str = "map") -> dict[str, Any]: ...
+
+def load(
+    path: _Path, max_cells: Optional[int] = None, window_cells: Optional[_Window] = None
+) -> Map: ...
+def save(
+    path: _Path,
+    map: Map,
+    tolerance: int = 0,
+    vectors: bool = True,
+    straight_walls: bool = False,
+    compact: bool = False,
+    max_tolerance_cells: int = 67108864,
+) -> None: ...
+def convert(
+    source: _Path,
+    path: _Path,
+    tolerance: int = 0,
+    vectors: bool = True,
+    straight_walls: bool = False,
+    compact: bool = False,
+    max_tolerance_cells: int = 67108864,
+) -> None: ...
+def encode(
+    map: Map,
+    tolerance: int = 0,
+    vectors: bool = True,
+    straight_walls: bool = False,
+    compact: bool = False,
+    max_tolerance_cells: int = 67108864,
+) -> bytes: ...
+def decode(data: _Buffer, max_cells: Optional[int] = None) -> Map: ...
+def vectors(
+    source: _Source, max_cells: Optional[int] = None, window_cells: Optional[_Window] = None
+) -> dict[str, Any]: ...
+def room_at(
+    source: _Source, x: float, y: float, max_cells: Optional[int] = None
+) -> Optional[dict[str, Any]]: ...
+def eval(
+    original: Union[Map, _Path],
+    decoded: Union[Map, _Path],
+    *,
+    max_cells: Optional[int] = None,
+    tolerance: Optional[int] = None,
+) -> dict[str, Any]: ...
+def lines(
+    map: Map,
+    method: str = "linemap",
+    *,
+    epsilon: float = 1.0,
+    straight_walls: bool = False,
+    pose: Optional[Sequence[float]] = None,
+) -> dict[str, Any]: ...
+def segment(
+    map: Map,
+    *,
+    method: Optional[str] = None,
+    pose: Optional[Sequence[float]] = None,
+    doors: Tuple[float, float] = (0.5, 1.2),
+    max_room_area: float = 0.0,
+    paper_border: bool = False,
+) -> dict[str, Any]: ...
+def plan(
+    map: Map,
+    start: Sequence[float],
+    goal: Sequence[float],
+    *,
+    robot_width: float = 0.4,
+    robot_length: float = 0.4,
+    margin: float = 0.05,
+    d_min: float = 0.1,
+    d_max: float = 5.0,
+) -> dict[str, Any]: ...
