@@ -508,7 +508,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
                                                int height, const DecodeLimits& limits,
                                                bool expand_chains) {
   return DecodeChunkBody<RoomOutline>(
-      body, "ROOM", "room count", "rooms", limits.max_chain_length, "chain",
+      body, "ROOM", "room count", "rooms", limits.max_objects, "object",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<RoomOutline>* rooms) {
         LayerTotals totals;
         return DecodeRoomItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,
@@ -525,7 +525,7 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
                                                        const DecodeLimits& limits,
                                                        bool expand_chains) {
   return DecodeChunkBody<FurnitureObject>(
-      body, "FURN", "furniture count", "objects", limits.max_chain_length, "chain",
+      body, "FURN", "furniture count", "objects", limits.max_objects, "object",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<FurnitureObject>* furniture) {
         LayerTotals totals;
         return DecodeFurnitureItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,

@@ -174,11 +174,10 @@ StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t
     LINEMAP_ASSIGN_OR_RETURN(o, cursor.ReadVarint("section object count"));
     LINEMAP_RETURN_IF_ERROR(
         AddCount(w, limits.max_segments, "walls", "segment", &table.walls, &e.walls));
-    LINEMAP_RETURN_IF_ERROR(
-        AddCount(r, limits.max_chain_length, "rooms", "chain", &rooms, &e.rooms));
+    LINEMAP_RETURN_IF_ERROR(AddCount(r, limits.max_objects, "rooms", "object", &rooms, &e.rooms));
     e.first_object = objects;
     LINEMAP_RETURN_IF_ERROR(
-        AddCount(o, limits.max_chain_length, "objects", "chain", &objects, &e.objects));
+        AddCount(o, limits.max_objects, "objects", "object", &objects, &e.objects));
     if (w + r + o == 0) continue;  // no box, no stream: not kept
     e.index = static_cast<std::uint64_t>(k);
     if (grid.count() == 1) {

@@ -177,7 +177,7 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
   std::vector<std::vector<std::uint8_t>> tiles(layout.count());
   int next_tile_row = layout.tiles_y - 1;
   std::uint32_t last_room_id = 0;
-  std::uint64_t walls = 0, segments = 0;
+  LayerCounts counts;
   for (int j = block_rows - 1; j >= 0; --j) {
     const int y0 = j * kLayerBlockCells;
     const int y1 = std::min(frame.height, y0 + kLayerBlockCells);
@@ -187,9 +187,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeBands(const MapFrame& frame, const Enc
       LINEMAP_ASSIGN_OR_RETURN(row, BlockRowLayers(*rows, frame, options, y0, y1, &last_room_id));
       // A file the decoders' default limits refuse fails before the rest
       // of the map is coded.
-      walls += row.walls.size();
-      segments += WallSegmentCount(row.walls);
-      LINEMAP_RETURN_IF_ERROR(CheckWallsWithinDefaultLimits(walls, segments));
+      counts.Add(row);
+      LINEMAP_RETURN_IF_ERROR(CheckLayerCountsWithinDefaultLimits(counts));
     }
     for (; next_tile_row >= 0 && next_tile_row * layout.tile_size >= y0; --next_tile_row) {
       const int t0 = next_tile_row * layout.tile_size;

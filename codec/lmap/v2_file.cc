@@ -37,7 +37,9 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
 }
 
 Status CheckLayersWithinDefaultLimits(const VectorLayers& layers) {
-  return CheckWallsWithinDefaultLimits(layers.walls.size(), WallSegmentCount(layers.walls));
+  LayerCounts counts;
+  counts.Add(layers);
+  return CheckLayerCountsWithinDefaultLimits(counts);
 }
 
 std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls) {
@@ -46,13 +48,26 @@ std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls) {
   return segments;
 }
 
-Status CheckWallsWithinDefaultLimits(std::uint64_t walls, std::uint64_t segments) {
+void LayerCounts::Add(const VectorLayers& layers) {
+  walls += layers.walls.size();
+  segments += WallSegmentCount(layers.walls);
+  rooms += layers.rooms.size();
+  objects += layers.furniture.size();
+}
+
+Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts) {
   const DecodeLimits defaults;
-  if (walls > defaults.max_segments || segments > defaults.max_segments) {
-    return ResourceExhaustedError(
-        "the walls have " + std::to_string(segments) +
-        " segments, more than decoders read by default (2^24): save the cells only (vector "
-        "layers off, --raster-only)");
+  const char* const advice =
+      ", more than decoders read by default: save the cells only (vector "
+      "layers off, --raster-only)";
+  if (counts.walls > defaults.max_segments || counts.segments > defaults.max_segments) {
+    return ResourceExhaustedError("the walls have " + std::to_string(counts.segments) +
+                                  " segments (limit 2^24)" + advice);
+  }
+  if (counts.rooms > defaults.max_objects || counts.objects > defaults.max_objects) {
+    return ResourceExhaustedError("the layers have " + std::to_string(counts.rooms) +
+                                  " rooms and " + std::to_string(counts.objects) +
+                                  " furniture objects (limit 2^20 each)" + advice);
   }
   return Status::Ok();
 }

@@ -37,9 +37,16 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
 // huge map of scattered specks the covering walls alone could pass the
 // segment limit.
 Status CheckLayersWithinDefaultLimits(const VectorLayers& layers);
-// The same for `walls` polylines of `segments` segments in all (a check
-// made as the walls are found, before the rest of the map is coded).
-Status CheckWallsWithinDefaultLimits(std::uint64_t walls, std::uint64_t segments);
+// What the default limits bound of a file's layers, counted as they are
+// found, before the rest of the map is coded.
+struct LayerCounts {
+  std::uint64_t walls = 0;
+  std::uint64_t segments = 0;
+  std::uint64_t rooms = 0;
+  std::uint64_t objects = 0;
+  void Add(const VectorLayers& layers);
+};
+Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts);
 std::uint64_t WallSegmentCount(const std::vector<WallPolyline>& walls);
 
 }  // namespace linemap

@@ -12,6 +12,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<std::uint8_t> bytes(data, data + size);
   linemap::DecodeLimits limits;
   limits.max_cells = std::uint64_t{1} << 24;
+  // The layers' item limits too: an empty range-coded stream decodes as
+  // any number of the smallest items (57 bytes can ask for 2^24 walls, some
+  // 1.5 GB and 25 s under the sanitizers), which the default limits allow.
+  limits.max_segments = std::uint64_t{1} << 16;
+  limits.max_chain_length = std::uint64_t{1} << 18;
+  limits.max_threads = 1;  // one execution, one core
   (void)linemap::DecodeLmapContents(bytes, limits);
   return 0;
 }

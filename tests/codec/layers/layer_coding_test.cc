@@ -223,6 +223,18 @@ TEST(LayerCodingTest, LimitsAreResourceExhausted) {
                        limits);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), StatusCode::kResourceExhausted);
+  // Two rooms against an object limit of one.
+  limits = DecodeLimits{};
+  limits.max_objects = 1;
+  const std::vector<RoomOutline> two = {Room(0, RoomKind::kRoom, {{0, 0}, {5, 0}, {5, 5}}),
+                                        Room(1, RoomKind::kRoom, {{9, 9}, {12, 9}, {12, 12}})};
+  auto o = DecodeRooms(EncodeRooms(two), kW, kH, limits);
+  ASSERT_FALSE(o.ok());
+  EXPECT_EQ(o.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(o.status().message().find("2 rooms exceed the object limit"), std::string::npos)
+      << o.status().ToString();
+  limits.max_objects = 2;
+  EXPECT_TRUE(DecodeRooms(EncodeRooms(two), kW, kH, limits).ok());
 }
 
 TEST(LayerCodingTest, DamagedBodiesFailOrDecodeInsideTheGrid) {

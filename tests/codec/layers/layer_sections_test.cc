@@ -349,6 +349,18 @@ TEST(LayerSectionsTest, CountsAboveTheLimitsAreResourceExhausted) {
   auto c = ReadAndDecode(body, short_chains, nullptr);
   ASSERT_FALSE(c.ok());
   EXPECT_EQ(c.status().code(), StatusCode::kResourceExhausted) << c.status().ToString();
+  // 12 rooms and 15 objects, each counted against the object limit apart.
+  DecodeLimits objects;
+  objects.max_objects = 15;
+  EXPECT_TRUE(ReadAndDecode(body, objects, nullptr).ok());
+  for (const std::uint64_t limit : {11, 14}) {
+    objects.max_objects = limit;
+    auto o = ReadAndDecode(body, objects, nullptr);
+    ASSERT_FALSE(o.ok()) << limit;
+    EXPECT_EQ(o.status().code(), StatusCode::kResourceExhausted) << o.status().ToString();
+    EXPECT_NE(o.status().message().find("exceed the object limit"), std::string::npos)
+        << o.status().ToString();
+  }
 }
 
 // Every prefix and every single-byte change of a body fails cleanly or

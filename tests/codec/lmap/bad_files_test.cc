@@ -52,6 +52,7 @@ const BadFile kBadFiles[] = {
     {"v2_wall_after_cell.lmap", "chunk WALL: chunk out of order or repeated"},
     {"v2_wall_count_over_limit.lmap", "chunk WALL: 1099511627776 walls exceed the segment limit"},
     {"v2_wall_stream_truncated.lmap", "chunk WALL: "},
+    {"v2_room_count_over_object_limit.lmap", "chunk ROOM: 67108864 rooms exceed the object limit"},
     // Version 2.1 (the same script).
     {"v2_1_block_side_1.lmap", "chunk BLKS: block side 1 outside 2..5"},
     {"v2_1_tile_side_not_a_multiple_of_the_block_side.lmap",
