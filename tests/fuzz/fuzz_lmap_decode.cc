@@ -17,6 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // 1.5 GB and 25 s under the sanitizers), which the default limits allow.
   limits.max_segments = std::uint64_t{1} << 16;
   limits.max_chain_length = std::uint64_t{1} << 18;
+  limits.max_objects = std::uint64_t{1} << 14;
   limits.max_threads = 1;  // one execution, one core
   (void)linemap::DecodeLmapContents(bytes, limits);
   return 0;

@@ -136,6 +136,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // As fuzz_lmap_decode: an empty stream holds any number of small items.
   limits.max_segments = std::uint64_t{1} << 16;
   limits.max_chain_length = std::uint64_t{1} << 18;
+  limits.max_objects = std::uint64_t{1} << 14;
   limits.max_threads = 1;
   const auto vectors = linemap::DecodeLmapVectors(bytes, limits);
   if (!vectors.ok()) return 0;
