@@ -60,12 +60,10 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
     if (!payload.ok()) return CorruptError("chunk " + name + " is truncated");
     auto crc = cursor.ReadU32("chunk CRC");
     if (!crc.ok()) return CorruptError("chunk " + name + " is truncated");
-#ifndef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION  // fuzz builds only (CMakeLists.txt)
     if (*crc != ChunkCrc(type, *payload, length)) {
       return CorruptError("chunk " + name + " at byte " + std::to_string(offset) +
                           " fails its CRC check");
     }
-#endif
     if (name == "LEND") {
       if (length != 0) return CorruptError("chunk LEND is not empty");
       if (!cursor.empty()) return CorruptError("data after the LEND chunk");

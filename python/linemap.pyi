@@ -1,7 +1,8 @@
 # Type stubs of the `linemap` extension module (python/linemap_module.cc and
 # the files it registers), for editors and type checkers: the module is
 # compiled, so they cannot read its signatures from source. Installed next to
-# the module. tests/python/test_stubs.py checks that every name and
+# the module (editors, pyright) and as the stub-only package linemap-stubs
+# (PEP 561; mypy reads installed modules' stubs only from there). tests/python/test_stubs.py checks that every name and
 # parameter here matches what the built module reports.
 import os
 from typing import Any, Optional, Sequence, Tuple, Union
@@ -17,21 +18,21 @@ UNKNOWN: int
 
 _Path = Union[str, "os.PathLike[str]"]
 # .lmap bytes: any contiguous buffer (bytes, bytearray, memoryview, numpy).
-_Buffer = Union[bytes, bytearray, memoryview]
+_Buffer = Union[bytes, bytearray, memoryview, npt.NDArray[np.uint8]]
 _Source = Union[_Path, _Buffer]
 _Window = Tuple[int, int, int, int]
 
 class Map:
     def __init__(
         self,
-        cells: npt.ArrayLike,
+        cells: npt.NDArray[np.uint8],
         resolution: float = 0.05,
         origin: Sequence[float] = (0.0, 0.0, 0.0),
     ) -> None: ...
     @property
     def cells(self) -> npt.NDArray[np.uint8]: ...
     @cells.setter
-    def cells(self, value: npt.ArrayLike) -> None: ...
+    def cells(self, value: npt.NDArray[np.uint8]) -> None: ...
     @property
     def width(self) -> int: ...
     @property

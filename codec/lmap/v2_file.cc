@@ -53,21 +53,40 @@ void LayerCounts::Add(const VectorLayers& layers) {
   segments += WallSegmentCount(layers.walls);
   rooms += layers.rooms.size();
   objects += layers.furniture.size();
+  for (const RoomOutline& room : layers.rooms) {
+    room_vertices += room.polygon.size();
+    room_chain_cells += room.chain.size();
+  }
+  for (const FurnitureObject& object : layers.furniture) {
+    object_vertices += object.polygon.size();
+    object_chain_cells += object.outline.size();
+  }
 }
 
 Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts) {
   const DecodeLimits defaults;
-  const char* const advice =
-      ", more than decoders read by default: save the cells only (vector "
-      "layers off, --raster-only)";
+  const std::string advice =
+      ", more than decoders read by default: save the cells only (vector layers off, "
+      "--raster-only)";
   if (counts.walls > defaults.max_segments || counts.segments > defaults.max_segments) {
     return ResourceExhaustedError("the walls have " + std::to_string(counts.segments) +
-                                  " segments (limit 2^24)" + advice);
+                                  " segments (limit " + std::to_string(defaults.max_segments) +
+                                  ")" + advice);
   }
   if (counts.rooms > defaults.max_objects || counts.objects > defaults.max_objects) {
     return ResourceExhaustedError("the layers have " + std::to_string(counts.rooms) +
                                   " rooms and " + std::to_string(counts.objects) +
-                                  " furniture objects (limit 2^20 each)" + advice);
+                                  " furniture objects (limit " +
+                                  std::to_string(defaults.max_objects) + " each)" + advice);
+  }
+  const std::uint64_t chains = defaults.max_chain_length;
+  if (counts.room_vertices > chains || counts.room_chain_cells > chains ||
+      counts.object_vertices > chains || counts.object_chain_cells > chains) {
+    return ResourceExhaustedError(
+        "the room and furniture outlines have " +
+        std::to_string(counts.room_chain_cells + counts.object_chain_cells) +
+        " chain cells (limit " + std::to_string(chains) + " for the rooms and for the objects)" +
+        advice);
   }
   return Status::Ok();
 }

@@ -44,6 +44,10 @@ struct LayerCounts {
   std::uint64_t segments = 0;
   std::uint64_t rooms = 0;
   std::uint64_t objects = 0;
+  // Polygon vertices and chain cells, of the rooms and (apart) of the
+  // objects: decoders count both against the chain limit.
+  std::uint64_t room_vertices = 0, room_chain_cells = 0;
+  std::uint64_t object_vertices = 0, object_chain_cells = 0;
   void Add(const VectorLayers& layers);
 };
 Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts);

@@ -18,6 +18,7 @@
 
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
+#include "tests/fuzz/fix_chunk_crcs.h"
 #include "tests/testing/reference_geometry.h"
 
 namespace {
@@ -130,7 +131,7 @@ void CheckRoomAt(const std::vector<std::uint8_t>& bytes, const linemap::LmapVect
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::vector<std::uint8_t> bytes(data, data + size);
+  const std::vector<std::uint8_t> bytes = linemap::fuzzing::WithChunkCrcsFixed(data, size);
   linemap::DecodeLimits limits;
   limits.max_cells = std::uint64_t{1} << 24;
   // As fuzz_lmap_decode: an empty stream holds any number of small items.

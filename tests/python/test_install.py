@@ -25,8 +25,10 @@ def test_installed_module_is_on_debian_pythons_path(tmp_path):
     # prefix (on Debian: lib/python3/dist-packages, lib/python3.X/dist-packages).
     searched = [pathlib.Path(p) for p in site.getsitepackages([str(prefix)])]
     assert found[0].parent in searched
-    # The type stubs beside it, where type checkers look.
+    # The type stubs beside it (editors, pyright) and as a stub-only
+    # package (PEP 561, where mypy looks).
     assert (found[0].parent / "linemap.pyi").is_file()
+    assert (found[0].parent / "linemap-stubs" / "__init__.pyi").is_file()
     env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
     env["PYTHONPATH"] = str(found[0].parent)
     done = subprocess.run([sys.executable, "-c", "import linemap; print(linemap.__file__)"],

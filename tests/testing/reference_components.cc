@@ -36,9 +36,10 @@ FreeComponents FreeComponentsByFloodFill(const Grid& grid) {
 }
 
 int PlansOnOneGridOnly(const Grid& a, const Grid& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return -1;
   const FreeComponents ca = FreeComponentsByFloodFill(a), cb = FreeComponentsByFloodFill(b);
   std::set<std::pair<int, int>> meet;  // (component in a, component in b)
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+  for (std::size_t i = 0; i < a.size(); ++i) {
     if (ca.id[i] && cb.id[i]) meet.insert({ca.id[i], cb.id[i]});
   }
   std::map<int, int> per_a, per_b;

@@ -25,7 +25,7 @@ FreeComponents FreeComponentsByFloodFill(const Grid& grid);
 // plan over free cells exists" differs between them: for each component of
 // one grid, the components of the other that its cells fall into, beyond
 // the first, counted both ways. 0 exactly when every pair of those cells
-// has a plan on both grids or on neither.
+// has a plan on both grids or on neither. -1 for grids of different sizes.
 int PlansOnOneGridOnly(const Grid& a, const Grid& b);
 
 }  // namespace linemap::testing

@@ -235,6 +235,17 @@ TEST(LayerCodingTest, LimitsAreResourceExhausted) {
       << o.status().ToString();
   limits.max_objects = 2;
   EXPECT_TRUE(DecodeRooms(EncodeRooms(two), kW, kH, limits).ok());
+  // And two furniture objects.
+  const std::vector<FurnitureObject> pair = {{0, -1, {{1, 1}, {3, 1}, {3, 3}}, {}},
+                                             {1, -1, {{9, 9}, {11, 9}, {11, 11}}, {}}};
+  limits.max_objects = 1;
+  auto f = DecodeFurniture(EncodeFurniture(pair), kW, kH, limits, false);
+  ASSERT_FALSE(f.ok());
+  EXPECT_EQ(f.status().code(), StatusCode::kResourceExhausted);
+  EXPECT_NE(f.status().message().find("2 objects exceed the object limit"), std::string::npos)
+      << f.status().ToString();
+  limits.max_objects = 2;
+  EXPECT_TRUE(DecodeFurniture(EncodeFurniture(pair), kW, kH, limits, false).ok());
 }
 
 TEST(LayerCodingTest, DamagedBodiesFailOrDecodeInsideTheGrid) {

@@ -251,6 +251,10 @@ void ExpectGuarantees(const Grid& o, const Grid& s, int t, const std::string& wh
   EXPECT_EQ(topo.leaks, 0);
   EXPECT_EQ(topo.splits, 0);
   ExpectPlansAgree(o, s, 6);
+  // Beyond guarantees 3 and 4 (regions of 50+ cells; sampled and local
+  // plans), what the encoder's mending does: no pocket of free space is
+  // joined or split either, so every pair has a plan on both maps or on
+  // neither.
   EXPECT_EQ(testing::PlansOnOneGridOnly(o, s), 0) << "pairs with a plan on one map only";
   ExpectLocalPlansAgree(o, s);
 }
@@ -465,6 +469,29 @@ TEST(ToleranceTest, CheckToleranceFiguresMatchReferences) {
   }
   // Some of the random changes close or open a passage near them.
   EXPECT_GT(local_bad, 0u);
+}
+
+// The reference the guarantee tests count "a plan on one map only" with:
+// two rooms joined by a doorway, the doorway closed (the rooms split: 1),
+// then a second room's wall opened as well (joined again: 0 once more, as
+// every pair of cells free on both has a plan on both).
+TEST(ToleranceTest, PlansOnOneGridOnlyCountsJoinsAndSplits) {
+  Grid o(12, 5, Cell::kFree);
+  for (int r = 0; r < 5; ++r) o.set(6, r, Cell::kOccupied);
+  o.set(6, 2, Cell::kFree);  // the doorway
+  EXPECT_EQ(testing::PlansOnOneGridOnly(o, o), 0);
+  Grid closed = o;
+  closed.set(6, 2, Cell::kOccupied);
+  EXPECT_EQ(testing::PlansOnOneGridOnly(o, closed), 1);
+  EXPECT_EQ(testing::PlansOnOneGridOnly(closed, o), 1);
+  Grid elsewhere = closed;
+  elsewhere.set(6, 0, Cell::kFree);
+  EXPECT_EQ(testing::PlansOnOneGridOnly(o, elsewhere), 0);
+  // Three rooms in one: the decode joins two that were apart.
+  Grid apart(12, 5, Cell::kFree);
+  for (int r = 0; r < 5; ++r) apart.set(6, r, Cell::kOccupied);
+  EXPECT_EQ(testing::PlansOnOneGridOnly(apart, o), 1);
+  EXPECT_EQ(testing::PlansOnOneGridOnly(o, Grid(5, 5, Cell::kFree)), -1);
 }
 
 TEST(ToleranceTest, CheckToleranceSeesAPlanThatNoLongerExists) {

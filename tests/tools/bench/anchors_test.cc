@@ -1,10 +1,11 @@
 // The anchors check of linemap bench: which maps the default .lmap 2.0 file
 // wins and loses against each codec, and how the report prints it.
+#include "tools/bench/anchors.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "tools/bench/anchors.h"
 #include "tools/bench/report.h"
 
 namespace linemap::bench {

@@ -1,9 +1,10 @@
+#include "tools/bench/corpus.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
 #include "tests/testing/test_support.h"
-#include "tools/bench/corpus.h"
 
 namespace linemap::bench {
 namespace {

@@ -1,11 +1,12 @@
 // The .lmap 2.0 goals of linemap bench, decided on hand-made results: each
 // goal passes on figures that meet it (limits included), fails on one map or
 // a median that misses it, and says INCOMPLETE when a figure is missing.
+#include "tools/bench/goals.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "tools/bench/goals.h"
 #include "tools/bench/lmap_figures.h"
 
 namespace linemap::bench {

@@ -1,6 +1,8 @@
 // The size anchors of linemap bench run as real programs: JPEG XL (cjxl /
 // djxl), WebP lossless (cwebp / dwebp) and xz -9e. Each file is decoded by the
 // codec's own decoder, outside the bench's code, and compared cell for cell.
+#include "tools/bench/image_anchors.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -8,7 +10,6 @@
 
 #include "tests/testing/test_support.h"
 #include "tools/bench/general_codecs.h"
-#include "tools/bench/image_anchors.h"
 #include "tools/bench/subprocess.h"
 
 namespace linemap::bench {

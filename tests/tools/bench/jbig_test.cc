@@ -1,8 +1,9 @@
+#include "tools/bench/jbig.h"
+
 #include <gtest/gtest.h>
 
 #include "format/file_io.h"
 #include "tests/testing/test_support.h"
-#include "tools/bench/jbig.h"
 #include "tools/bench/subprocess.h"
 
 namespace linemap::bench {

@@ -1,9 +1,10 @@
+#include "tools/bench/png_codec.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 
 #include "format/image.h"
-#include "tools/bench/png_codec.h"
 
 namespace linemap::bench {
 namespace {

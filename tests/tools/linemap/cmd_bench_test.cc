@@ -20,7 +20,7 @@ std::string OneMapCorpus() {
   return dir;
 }
 
-TEST(BenchCliTest, WritesCsvMarkdownAndSvgForAOneMapCorpus) {
+TEST(CmdBenchTest, WritesCsvMarkdownAndSvgForAOneMapCorpus) {
   const std::string corpus = OneMapCorpus();
   const std::string out = MakeTempDir("bench-cli-out");
   const CliResult r =
@@ -51,7 +51,7 @@ TEST(BenchCliTest, WritesCsvMarkdownAndSvgForAOneMapCorpus) {
   EXPECT_TRUE(FileExists(out + "/svg/summary.svg"));
 }
 
-TEST(BenchCliTest, ScalingTableHasARowPerSizeAndTheSpread) {
+TEST(CmdBenchTest, ScalingTableHasARowPerSizeAndTheSpread) {
   const CliResult r = RunCli({"bench", OneMapCorpus(), "--scaling-max", "1", "--no-memory",
                               "--no-jbig", "--repeats", "1"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -82,7 +82,7 @@ std::string Which(const std::string& tool) {
 
 // With a PATH that has every comparator but cjxl, the bench still runs, says
 // which program is missing and leaves the JPEG XL column out.
-TEST(BenchCliTest, AMissingAnchorProgramIsNamedAndItsColumnLeftOut) {
+TEST(CmdBenchTest, AMissingAnchorProgramIsNamedAndItsColumnLeftOut) {
   const std::string bin = MakeTempDir("bench-cli-path");
   for (const char* tool : {"sh", "pnmtopng", "pbmtojbg", "cwebp", "dwebp"}) {
     const std::string found = Which(tool);
@@ -108,7 +108,7 @@ TEST(BenchCliTest, AMissingAnchorProgramIsNamedAndItsColumnLeftOut) {
   EXPECT_EQ(ReadFile(out + "/b.csv").find("jxl_bytes"), std::string::npos);
 }
 
-TEST(BenchCliTest, BadUsageExitsTwo) {
+TEST(CmdBenchTest, BadUsageExitsTwo) {
   EXPECT_EQ(RunCli({"bench", "/nonexistent/linemap-corpus", "--scaling-max", "0"}).exit_code, 2);
   EXPECT_EQ(RunCli({"bench", "--repeats", "0"}).exit_code, 2);
   EXPECT_EQ(RunCli({"bench", "--no-such-option"}).exit_code, 2);

@@ -16,7 +16,7 @@ using testing::MakeTempDir;
 using testing::RunCli;
 using testing::WriteFile;
 
-TEST(CliInfoTest, JsonHasTheDocumentedKeys) {
+TEST(CmdInfoTest, JsonHasTheDocumentedKeys) {
   const std::string dir = MakeTempDir("cli");
   // 3 x 2 map: top row O F U, bottom row F F O.
   WriteFile(dir + "/m.pgm",
@@ -34,7 +34,7 @@ TEST(CliInfoTest, JsonHasTheDocumentedKeys) {
 
 // A 2.0 file: the counts of its layers (read here through LoadLmapVectors,
 // the raster-free reader) in text and JSON, and its chunks.
-TEST(CliInfoTest, LmapCountsTheVectorLayers) {
+TEST(CmdInfoTest, LmapCountsTheVectorLayers) {
   const std::string dir = MakeTempDir("cli_info_layers");
   ASSERT_EQ(
       RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", dir + "/d.lmap"})
@@ -71,7 +71,7 @@ TEST(CliInfoTest, LmapCountsTheVectorLayers) {
 // What the first line says a file is: exact, within a tolerance (2.x cells
 // in blocks), or the former lossy 1.0 file (a fixture: 1.0 is no longer
 // written).
-TEST(CliInfoTest, FirstLineSaysHowExactTheFileIs) {
+TEST(CmdInfoTest, FirstLineSaysHowExactTheFileIs) {
   const std::string dir = MakeTempDir("cli_info_fidelity");
   const std::string map =
       testing::SourceDir() + "/tests/data/maps/turtlebot_apps/" + "willow-2010-02-18-0.10.yaml";
@@ -91,14 +91,14 @@ TEST(CliInfoTest, FirstLineSaysHowExactTheFileIs) {
   }
 }
 
-TEST(CliInfoTest, TextOutputOnABundledMap) {
+TEST(CmdInfoTest, TextOutputOnABundledMap) {
   const CliResult r = RunCli({"info", testing::BundledMapsDir() + "/navtut/lse_arena.yaml"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("80 x 60 cells"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("resolution: 0.05 m/cell"), std::string::npos) << r.out;
 }
 
-TEST(CliInfoTest, BareImageTakesCommandLineOverrides) {
+TEST(CmdInfoTest, BareImageTakesCommandLineOverrides) {
   const std::string dir = MakeTempDir("cli");
   WriteFile(dir + "/m.pgm", std::string("P5 2 1 255\n") + std::string("\x00\xcd", 2));
   const CliResult r = RunCli({"info", dir + "/m.pgm", "--json", "--resolution", "0.2", "--origin",
@@ -113,7 +113,7 @@ TEST(CliInfoTest, BareImageTakesCommandLineOverrides) {
 // The map options read images and YAMLs: given with an .lmap file (which
 // keeps its own values) they are refused, not silently dropped; a threshold
 // override that puts free at or above occupied is refused too.
-TEST(CliInfoTest, MapOptionsThatCannotApplyAreRefused) {
+TEST(CmdInfoTest, MapOptionsThatCannotApplyAreRefused) {
   const std::string dir = MakeTempDir("cli_map_options");
   const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
   ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/d.lmap", "--no-png-ratio"}).exit_code, 0);
@@ -147,7 +147,7 @@ TEST(CliInfoTest, MapOptionsThatCannotApplyAreRefused) {
       << epsilon.err;
 }
 
-TEST(CliInfoTest, HelpAndVersion) {
+TEST(CmdInfoTest, HelpAndVersion) {
   CliResult r = RunCli({"--version"});
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_EQ(r.out.rfind("linemap ", 0), 0u);
@@ -167,7 +167,7 @@ TEST(CliInfoTest, HelpAndVersion) {
   EXPECT_EQ(RunCli({"info", "a.yaml", "--resolution"}).exit_code, 2);
 }
 
-TEST(CliInfoTest, BadInputGivesOneLineNamingTheFileAndExitTwo) {
+TEST(CmdInfoTest, BadInputGivesOneLineNamingTheFileAndExitTwo) {
   const std::string dir = MakeTempDir("cli");
   WriteFile(dir + "/img.pgm", std::string("P5 1 1 255\n") + std::string("\x00", 1));
   WriteFile(dir + "/no_image.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n");
@@ -191,7 +191,7 @@ TEST(CliInfoTest, BadInputGivesOneLineNamingTheFileAndExitTwo) {
   EXPECT_EQ(ListDir(dir), before);
 }
 
-TEST(CliInfoTest, SharedEmptyRoomYamlNamesAMissingImage) {
+TEST(CmdInfoTest, SharedEmptyRoomYamlNamesAMissingImage) {
   const std::string shared = testing::SharedMapsDir();
   if (shared.empty()) GTEST_SKIP() << "../shared/maps is absent";
   const CliResult r = RunCli({"info", shared + "/nav2/empty_room.yaml"});

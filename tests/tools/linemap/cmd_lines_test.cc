@@ -29,7 +29,7 @@ std::string WriteWallMap(const std::string& dir) {
   return SaveMap(dir, "wall", grid);
 }
 
-TEST(LinesCliTest, WritesSegmentsInMapMetres) {
+TEST(CmdLinesTest, WritesSegmentsInMapMetres) {
   const std::string dir = testing::MakeTempDir("lines_cli_csv");
   const std::string yaml = WriteWallMap(dir);
   const testing::CliResult r =
@@ -41,7 +41,7 @@ TEST(LinesCliTest, WritesSegmentsInMapMetres) {
   EXPECT_NE(r.out.find("lines:      1"), std::string::npos) << r.out;
 }
 
-TEST(LinesCliTest, JsonHasTheFiveFigures) {
+TEST(CmdLinesTest, JsonHasTheFiveFigures) {
   const std::string dir = testing::MakeTempDir("lines_cli_json");
   const testing::CliResult r = RunCli({"lines", WriteWallMap(dir), "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -51,7 +51,7 @@ TEST(LinesCliTest, JsonHasTheFiveFigures) {
   }
 }
 
-TEST(LinesCliTest, DefaultMethodIsLinemapAndReportsFurnitureCells) {
+TEST(CmdLinesTest, DefaultMethodIsLinemapAndReportsFurnitureCells) {
   const std::string dir = testing::MakeTempDir("lines_cli_default");
   const testing::CliResult r = RunCli({"lines", WriteWallMap(dir), "--epsilon", "1.5"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -71,7 +71,7 @@ std::string WriteStaircaseMap(const std::string& dir) {
   return SaveMap(dir, "stairs", grid);
 }
 
-TEST(LinesCliTest, StraightWallsDrawsASlantedWallAsOneSegment) {
+TEST(CmdLinesTest, StraightWallsDrawsASlantedWallAsOneSegment) {
   const std::string dir = testing::MakeTempDir("lines_cli_steps");
   const std::string yaml = WriteStaircaseMap(dir);
   const testing::CliResult steps = RunCli({"lines", yaml, "--json"});
@@ -82,7 +82,7 @@ TEST(LinesCliTest, StraightWallsDrawsASlantedWallAsOneSegment) {
   EXPECT_NE(straight.out.find("\"lines\":1,"), std::string::npos) << straight.out;
 }
 
-TEST(LinesCliTest, PoseSelectsTheComponent) {
+TEST(CmdLinesTest, PoseSelectsTheComponent) {
   const std::string dir = testing::MakeTempDir("lines_cli_pose");
   const std::string yaml = WriteWallMap(dir);
   // (1.35, 2.15) m is cell (0, 1): free, below the wall.
@@ -91,7 +91,7 @@ TEST(LinesCliTest, PoseSelectsTheComponent) {
   EXPECT_NE(r.out.find("\"lines\":1,"), std::string::npos) << r.out;
 }
 
-TEST(LinesCliTest, BadInputExitsWithTwoAndWritesNothing) {
+TEST(CmdLinesTest, BadInputExitsWithTwoAndWritesNothing) {
   const std::string dir = testing::MakeTempDir("lines_cli_bad");
   const std::string yaml = WriteWallMap(dir);
   const std::string out = dir + "/never.csv";
