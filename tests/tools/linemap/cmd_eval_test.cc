@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <string>
 
 #include "linemap/grid.h"
@@ -58,6 +59,13 @@ long JsonCount(const std::string& json, const std::string& key) {
   return at == std::string::npos ? -1 : std::stol(json.substr(at + quoted.size()));
 }
 
+// Each of `parts` ("key":value, as printed) is in the one-line JSON `json`.
+void ExpectJsonHas(const std::string& json, std::initializer_list<const char*> parts) {
+  for (const char* part : parts) {
+    EXPECT_NE(json.find(part), std::string::npos) << part << " in " << json;
+  }
+}
+
 // A 20 x 10 room (occupied border, free inside) with one obstacle cell at
 // (obstacle_col, 5), saved as a ROS map.
 std::string SaveRoom(const std::string& dir, const std::string& name, int obstacle_col) {
@@ -88,23 +96,19 @@ TEST(CmdEvalTest, ToleranceReportsTheGuaranteesFigures) {
   const std::string moved = SaveRoom(dir, "b", 13);
   const CliResult r = RunCli({"eval", original, moved, "--tolerance", "2", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const std::string expected :
-       {"\"hausdorff_original_to_decoded\":3", "\"hausdorff_decoded_to_original\":3",
-        "\"wall_surface_cells\":53", "\"wall_surface_within_t\":52", "\"free_moved_beyond_t\":0",
-        "\"tolerance_leaks\":0", "\"tolerance_holds\":false"}) {
-    EXPECT_NE(r.out.find(expected), std::string::npos) << expected << " in " << r.out;
-  }
+  ExpectJsonHas(
+      r.out, {"\"hausdorff_original_to_decoded\":3", "\"hausdorff_decoded_to_original\":3",
+              "\"wall_surface_cells\":53", "\"wall_surface_within_t\":52",
+              "\"free_moved_beyond_t\":0", "\"tolerance_leaks\":0", "\"tolerance_holds\":false"});
   const CliResult same = RunCli({"eval", original, original, "--tolerance", "1"});
   ASSERT_EQ(same.exit_code, 0) << same.err;
   EXPECT_NE(same.out.find("guarantees:         hold"), std::string::npos) << same.out;
   const CliResult within = RunCli({"eval", original, moved, "--tolerance", "3", "--json"});
   ASSERT_EQ(within.exit_code, 0) << within.err;
-  for (const std::string expected :
-       {"\"hausdorff_original_to_decoded\":3", "\"wall_surface_within_t\":53",
-        "\"free_moved_beyond_t\":0", "\"free_lost_beyond_t\":0", "\"tolerance_leaks\":0",
-        "\"tolerance_splits\":0", "\"tolerance_holds\":false"}) {
-    EXPECT_NE(within.out.find(expected), std::string::npos) << expected << " in " << within.out;
-  }
+  ExpectJsonHas(within.out,
+                {"\"hausdorff_original_to_decoded\":3", "\"wall_surface_within_t\":53",
+                 "\"free_moved_beyond_t\":0", "\"free_lost_beyond_t\":0", "\"tolerance_leaks\":0",
+                 "\"tolerance_splits\":0", "\"tolerance_holds\":false"});
   EXPECT_GT(JsonCount(within.out, "local_plan_disagreements"), 0) << within.out;
   EXPECT_GT(JsonCount(within.out, "plan_disagreements"), 0) << within.out;
 }
