@@ -20,6 +20,7 @@
 #include "linemap/vector_layers.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
+#include "python/decode_limits.h"
 #include "python/errors.h"
 #include "python/map_files.h"
 #include "python/map_object.h"
@@ -288,25 +289,23 @@ py::dict Plan(const Map& map, const py::object& start, const py::object& goal, d
 // eval
 
 // A Map, or a path loaded as linemap.load() does.
-Grid GridArgument(const py::object& value, std::uint64_t max_cells) {
+Grid GridArgument(const py::object& value, const DecodeLimits& limits) {
   if (py::isinstance<Map>(value)) return GridFromMap(value.cast<const Map&>());
   const std::string path = PathArgument(value);
   StatusOr<Grid> grid = InternalError("not loaded");
   {
     py::gil_scoped_release release;
-    grid = LoadMapFile(path, max_cells);
+    grid = LoadMapFile(path, limits);
   }
   return ValueOrRaise(std::move(grid));
 }
 
 // The vector layers of an .lmap file; nullopt unless `decoded` is a path to
 // an .lmap file.
-std::optional<LmapVectors> StoredLayers(const py::object& decoded, std::uint64_t max_cells) {
+std::optional<LmapVectors> StoredLayers(const py::object& decoded, const DecodeLimits& limits) {
   if (py::isinstance<Map>(decoded)) return std::nullopt;
   const std::string path = PathArgument(decoded);
   if (!IsLmapPath(path)) return std::nullopt;
-  DecodeLimits limits;
-  limits.max_cells = max_cells;
   StatusOr<LmapVectors> vectors = InternalError("not read");
   {
     py::gil_scoped_release release;
@@ -329,11 +328,12 @@ std::optional<int> ToleranceArgument(const py::object& tolerance) {
 }
 
 py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
-              const py::object& max_cells_arg, const py::object& tolerance_arg) {
+              const py::object& max_cells_arg, const py::object& tolerance_arg,
+              const py::object& limits_arg) {
   const std::optional<int> tolerance = ToleranceArgument(tolerance_arg);
-  const std::uint64_t max_cells = MaxCellsArgument(max_cells_arg, DecodeLimits{}.max_cells);
-  const Grid original = GridArgument(original_arg, max_cells);
-  const Grid decoded = GridArgument(decoded_arg, max_cells);
+  const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
+  const Grid original = GridArgument(original_arg, limits);
+  const Grid decoded = GridArgument(decoded_arg, limits);
   if (original.width() != decoded.width() || original.height() != decoded.height()) {
     throw py::value_error("the original is " + std::to_string(original.width()) + " x " +
                           std::to_string(original.height()) + " cells but the decoded map is " +
@@ -341,7 +341,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
                           std::to_string(decoded.height()) +
                           ": eval compares maps of the same size");
   }
-  const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, max_cells);
+  const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, limits);
   GridComparison m;
   StatusOr<LayerFidelity> fidelity = InternalError("not measured");
   std::optional<ToleranceReport> guarantees;
@@ -441,7 +441,8 @@ Robot size, margin and the shortest / longest move are in metres;
 options the planner refuses raise ValueError.
 )doc");
   module.def("eval", &Eval, py::arg("original"), py::arg("decoded"), py::kw_only(),
-             py::arg("max_cells") = py::none(), py::arg("tolerance") = py::none(), R"doc(
+             py::arg("max_cells") = py::none(), py::arg("tolerance") = py::none(),
+             py::arg("limits") = py::none(), R"doc(
 The quality figures of ``decoded`` against ``original``, as
 ``linemap eval --json``. Each is a Map or a path (loaded as load() does);
 when ``decoded`` is the path of an .lmap file with vector layers, also
@@ -450,8 +451,8 @@ edge_share_* figures. With ``tolerance`` (cells, 0..4) also the guarantees
 of a save within that tolerance, as ``linemap eval --tolerance T --json``:
 the Hausdorff distances both ways, the wall surface kept, free cells moved
 or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
-and local plans that disagree, and tolerance_holds. Maps of different
-sizes raise ValueError.
+and local plans that disagree, and tolerance_holds. ``max_cells`` and
+``limits`` as for load(). Maps of different sizes raise ValueError.
 )doc");
 }
 

@@ -19,6 +19,7 @@
 #include "linemap/map_io.h"
 #include "python/arrays.h"
 #include "python/bindings.h"
+#include "python/decode_limits.h"
 #include "python/errors.h"
 #include "python/map_files.h"
 #include "python/map_object.h"
@@ -81,9 +82,9 @@ CellWindow WindowCellsArgument(const py::handle& window) {
 }
 
 Map Load(const py::object& path_arg, const py::object& max_cells_arg,
-         const py::object& window_cells_arg) {
+         const py::object& window_cells_arg, const py::object& limits_arg) {
   const std::string path = PathArgument(path_arg);
-  const std::uint64_t max_cells = MaxCellsArgument(max_cells_arg, DecodeLimits{}.max_cells);
+  const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   std::optional<CellWindow> window;
   if (!window_cells_arg.is_none()) {
     window = WindowCellsArgument(window_cells_arg);
@@ -96,13 +97,7 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg,
   StatusOr<Grid> grid = InvalidArgumentError("not loaded");
   {
     py::gil_scoped_release release;
-    if (window) {
-      DecodeLimits limits;
-      limits.max_cells = max_cells;
-      grid = LoadLmapRegion(path, *window, limits);
-    } else {
-      grid = LoadMapFile(path, max_cells);
-    }
+    grid = window ? LoadLmapRegion(path, *window, limits) : LoadMapFile(path, limits);
   }
   return MapFromGrid(ValueOrRaise(std::move(grid)));
 }
@@ -200,9 +195,8 @@ py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_wall
   return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
 }
 
-Map Decode(const py::object& data, const py::object& max_cells_arg) {
-  DecodeLimits limits;
-  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+Map Decode(const py::object& data, const py::object& max_cells_arg, const py::object& limits_arg) {
+  const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   const std::vector<std::uint8_t> bytes = BytesArgument(data);
   StatusOr<Grid> grid = InvalidArgumentError("not decoded");
   {
@@ -288,9 +282,8 @@ auto ReadSource(const py::object& source, const Read& read) {
 }
 
 py::dict Vectors(const py::object& source, const py::object& max_cells_arg,
-                 const py::object& window_cells_arg) {
-  DecodeLimits limits;
-  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+                 const py::object& window_cells_arg, const py::object& limits_arg) {
+  const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   std::optional<CellWindow> window;
   if (!window_cells_arg.is_none()) window = WindowCellsArgument(window_cells_arg);
   StatusOr<LmapVectors> vectors =
@@ -338,9 +331,9 @@ StatusOr<RoomAtPoint> ReadRoomAtPoint(const std::string& path, double x, double 
   return read;
 }
 
-py::object RoomAt(const py::object& source, double x, double y, const py::object& max_cells_arg) {
-  DecodeLimits limits;
-  limits.max_cells = MaxCellsArgument(max_cells_arg, limits.max_cells);
+py::object RoomAt(const py::object& source, double x, double y, const py::object& max_cells_arg,
+                  const py::object& limits_arg) {
+  const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   StatusOr<RoomAtPoint> read =
       ReadSource(source, [&](const auto& file) { return ReadRoomAtPoint(file, x, y, limits); });
   RoomAtPoint found = ValueOrRaise(std::move(read));
@@ -361,11 +354,14 @@ py::object RoomAt(const py::object& source, double x, double y, const py::object
 
 void BindIo(py::module_& module) {
   module.def("load", &Load, py::arg("path"), py::arg("max_cells") = py::none(),
-             py::arg("window_cells") = py::none(), R"doc(
+             py::arg("window_cells") = py::none(), py::kw_only(), py::arg("limits") = py::none(),
+             R"doc(
 Loads a map: an .lmap file (by its name or its signature), a ROS map YAML
 naming its image, or a bare PGM / PNG image (0.05 m/cell, origin 0, map_server's
 thresholds). ``max_cells`` (default 2^30) refuses larger maps before they are
-allocated (MemoryError). ``window_cells=(col0, row0, col1, row1)`` loads only
+allocated (MemoryError). ``limits`` (a DecodeLimits) sets every limit of the
+.lmap decoder, max_cells among them (give one or the other); lower them for
+files from elsewhere. ``window_cells=(col0, row0, col1, row1)`` loads only
 the cells of columns col0..col1-1 and rows row0..row1-1 of an .lmap file
 (row 0 at the origin), as a map whose origin is the window's lower-left
 corner: only the tiles and the layer sections that reach the window are
@@ -416,11 +412,14 @@ save() raise them, naming the file.
              py::arg("max_tolerance_cells") = default_max_tolerance_cells,
              "The .lmap bytes of ``map`` (``tolerance``, ``vectors``, ``straight_walls``, "
              "``compact`` and ``max_tolerance_cells`` as for save()).");
-  module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(),
+  module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(), py::kw_only(),
+             py::arg("limits") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "
-             "ValueError, more than ``max_cells`` cells MemoryError.");
+             "ValueError, more than ``max_cells`` cells (or beyond a limit of ``limits``, a "
+             "DecodeLimits) MemoryError.");
   module.def("vectors", &Vectors, py::arg("source"), py::arg("max_cells") = py::none(),
-             py::arg("window_cells") = py::none(), R"doc(
+             py::arg("window_cells") = py::none(), py::kw_only(), py::arg("limits") = py::none(),
+             R"doc(
 The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
 files are read whole: their layers sit between raster chunks). A dict,
 geometry in map-frame metres through cell centres:
@@ -433,10 +432,11 @@ and the file's ``version``, ``width``, ``height``, ``resolution``, ``origin``.
 the origin, as for load()) keeps only the items whose bounding box meets
 that window, in file order: a version 2.2 file reads only the layer sections
 that reach it. A window that is empty or reaches past the map raises
-ValueError. Errors as for load().
+ValueError. ``limits`` and errors as for load().
 )doc");
   module.def("room_at", &RoomAt, py::arg("source"), py::arg("x"), py::arg("y"),
-             py::arg("max_cells") = py::none(), R"doc(
+             py::arg("max_cells") = py::none(), py::kw_only(), py::arg("limits") = py::none(),
+             R"doc(
 The room at the map-frame point (``x``, ``y``) metres of an .lmap file (a
 path) or .lmap bytes: of the rooms whose border chain encloses the cell
 holding the point (the cell of the nearest centre), the one of smallest
@@ -447,7 +447,8 @@ layer sections around the cell and the tiles of the box only (a room of a
 (col0, row0, col1, row1) the box, ``map``: the Map of its cells, origin at
 its lower-left corner as load(window_cells=...) returns it}; None when no
 room's border encloses the point (unknown space, a file without rooms). A
-point off the map raises ValueError naming it; other errors as for load().
+point off the map raises ValueError naming it; ``limits`` and other errors
+as for load().
 )doc");
 }
 

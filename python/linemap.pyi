@@ -22,6 +22,52 @@ _Buffer = Union[bytes, bytearray, memoryview, npt.NDArray[np.uint8]]
 _Source = Union[_Path, _Buffer]
 _Window = Tuple[int, int, int, int]
 
+class DecodeLimits:
+    def __init__(
+        self,
+        *,
+        max_file_bytes: int = 2147483648,
+        max_cells: int = 1073741824,
+        max_chunk_bytes: int = 1073741824,
+        max_inflated_bytes: int = 268435456,
+        max_segments: int = 16777216,
+        max_chain_length: int = 67108864,
+        max_objects: int = 1048576,
+        max_threads: int = 0,
+    ) -> None: ...
+    @property
+    def max_file_bytes(self) -> int: ...
+    @max_file_bytes.setter
+    def max_file_bytes(self, value: int) -> None: ...
+    @property
+    def max_cells(self) -> int: ...
+    @max_cells.setter
+    def max_cells(self, value: int) -> None: ...
+    @property
+    def max_chunk_bytes(self) -> int: ...
+    @max_chunk_bytes.setter
+    def max_chunk_bytes(self, value: int) -> None: ...
+    @property
+    def max_inflated_bytes(self) -> int: ...
+    @max_inflated_bytes.setter
+    def max_inflated_bytes(self, value: int) -> None: ...
+    @property
+    def max_segments(self) -> int: ...
+    @max_segments.setter
+    def max_segments(self, value: int) -> None: ...
+    @property
+    def max_chain_length(self) -> int: ...
+    @max_chain_length.setter
+    def max_chain_length(self, value: int) -> None: ...
+    @property
+    def max_objects(self) -> int: ...
+    @max_objects.setter
+    def max_objects(self, value: int) -> None: ...
+    @property
+    def max_threads(self) -> int: ...
+    @max_threads.setter
+    def max_threads(self, value: int) -> None: ...
+
 class Map:
     def __init__(
         self,
@@ -69,7 +115,11 @@ class Map:
     def to_occupancy_grid(self, frame_id: str = "map") -> dict[str, Any]: ...
 
 def load(
-    path: _Path, max_cells: Optional[int] = None, window_cells: Optional[_Window] = None
+    path: _Path,
+    max_cells: Optional[int] = None,
+    window_cells: Optional[_Window] = None,
+    *,
+    limits: Optional[DecodeLimits] = None,
 ) -> Map: ...
 def save(
     path: _Path,
@@ -97,12 +147,23 @@ def encode(
     compact: bool = False,
     max_tolerance_cells: int = 67108864,
 ) -> bytes: ...
-def decode(data: _Buffer, max_cells: Optional[int] = None) -> Map: ...
+def decode(
+    data: _Buffer, max_cells: Optional[int] = None, *, limits: Optional[DecodeLimits] = None
+) -> Map: ...
 def vectors(
-    source: _Source, max_cells: Optional[int] = None, window_cells: Optional[_Window] = None
+    source: _Source,
+    max_cells: Optional[int] = None,
+    window_cells: Optional[_Window] = None,
+    *,
+    limits: Optional[DecodeLimits] = None,
 ) -> dict[str, Any]: ...
 def room_at(
-    source: _Source, x: float, y: float, max_cells: Optional[int] = None
+    source: _Source,
+    x: float,
+    y: float,
+    max_cells: Optional[int] = None,
+    *,
+    limits: Optional[DecodeLimits] = None,
 ) -> Optional[dict[str, Any]]: ...
 def eval(
     original: Union[Map, _Path],
@@ -110,6 +171,7 @@ def eval(
     *,
     max_cells: Optional[int] = None,
     tolerance: Optional[int] = None,
+    limits: Optional[DecodeLimits] = None,
 ) -> dict[str, Any]: ...
 def lines(
     map: Map,

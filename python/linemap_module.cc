@@ -4,6 +4,7 @@
 
 #include "linemap/grid.h"
 #include "python/bindings.h"
+#include "python/decode_limits.h"
 #include "python/map_object.h"
 
 PYBIND11_MODULE(linemap, module) {
@@ -20,7 +21,7 @@ Errors raise Python exceptions carrying the library's message (which names
 the file): ValueError for bad input (a corrupt file, a malformed map, an
 option out of range), FileNotFoundError for a missing file, OSError for
 other I/O failures, MemoryError when a caller-set limit (max_cells, the
-file-size limit) would be exceeded, RuntimeError for a bug in linemap. A
+file-size limit, a DecodeLimits) would be exceeded, RuntimeError for a bug in linemap. A
 numpy array of the wrong dtype raises TypeError, of the wrong shape or with
 values other than FREE / OCCUPIED / UNKNOWN ValueError; arrays are never
 converted silently. Encoding, decoding, loading, saving, extraction,
@@ -30,6 +31,7 @@ segmentation and planning release the GIL.
   module.attr("OCCUPIED") = static_cast<int>(Cell::kOccupied);
   module.attr("UNKNOWN") = static_cast<int>(Cell::kUnknown);
   module.attr("__version__") = LINEMAP_VERSION_STRING;
+  linemap::python::BindDecodeLimits(module);
   linemap::python::BindMap(module);
   linemap::python::BindIo(module);
   linemap::python::BindAnalysis(module);

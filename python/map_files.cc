@@ -16,14 +16,10 @@ bool IsYamlPath(const std::string& path) {
   return EndsWith(path, ".yaml") || EndsWith(path, ".yml");
 }
 
-StatusOr<Grid> LoadMapFile(const std::string& path, std::uint64_t max_cells) {
-  if (IsLmapPath(path)) {
-    DecodeLimits limits;
-    limits.max_cells = max_cells;
-    return LoadLmap(path, limits);
-  }
+StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits) {
+  if (IsLmapPath(path)) return LoadLmap(path, limits);
   MapLoadOptions options;
-  options.max_cells = max_cells;
+  options.max_cells = limits.max_cells;
   return LoadRosMap(path, options);
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
 
@@ -16,9 +17,9 @@ bool EndsWith(const std::string& text, const std::string& suffix);
 
 bool IsYamlPath(const std::string& path);
 
-// An .lmap file, a map YAML or a bare image, refused beyond `max_cells`
-// cells. Runs without the GIL.
-StatusOr<Grid> LoadMapFile(const std::string& path, std::uint64_t max_cells);
+// An .lmap file within `limits`, or a map YAML or bare image refused beyond
+// limits.max_cells cells. Runs without the GIL.
+StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits);
 
 }  // namespace linemap::python
 

@@ -249,7 +249,8 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
       DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev);
   if (!polygon.ok()) {
     return polygon.status().code() == StatusCode::kResourceExhausted
-               ? ResourceExhaustedError("polygon vertices exceed the chain limit")
+               ? ResourceExhaustedError("polygon vertices exceed the chain limit of " +
+                                        std::to_string(limits.max_chain_length))
                : polygon.status();
   }
   // The chain has one cell per step of each edge (max(|dcol|, |drow|)), and
@@ -262,7 +263,8 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
   }
   *cells += length;
   if (length > limits.max_chain_length || *cells > limits.max_chain_length) {
-    return ResourceExhaustedError("chain cells exceed the chain limit");
+    return ResourceExhaustedError("chain cells exceed the chain limit of " +
+                                  std::to_string(limits.max_chain_length));
   }
   return polygon;
 }
@@ -315,7 +317,7 @@ StatusOr<ChunkStream> OpenChunkStream(const std::vector<std::uint8_t>& body, con
   LINEMAP_ASSIGN_OR_RETURN(stream.count, cursor.ReadVarint(count_name));
   if (stream.count > limit) {
     return ResourceExhaustedError(std::to_string(stream.count) + " " + items + " exceed the " +
-                                  limit_name + " limit");
+                                  limit_name + " limit of " + std::to_string(limit));
   }
   stream.size = cursor.remaining();
   stream.data = body.data() + cursor.position();

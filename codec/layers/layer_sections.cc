@@ -124,7 +124,8 @@ Status AddCount(std::uint64_t count, std::uint64_t limit, const char* items, con
   // The sum stays below 2^64: each term is cut to limit + 1 first.
   *sum += std::min<std::uint64_t>(count, limit == UINT64_MAX ? limit : limit + 1);
   if (*sum > limit || count > UINT32_MAX) {
-    return ResourceExhaustedError(std::string(items) + " exceed the " + limit_name + " limit");
+    return ResourceExhaustedError(std::string(items) + " exceed the " + limit_name + " limit of " +
+                                  std::to_string(limit));
   }
   *out = static_cast<std::uint32_t>(count);
   return Status::Ok();

@@ -133,6 +133,7 @@ struct DecodeLimits {
   // Threads the decoder may use for the tiles of a 2.0 file (the calling
   // one included); 0 = one per core. The result is the same for any number.
   int max_threads = 0;
+  bool operator==(const DecodeLimits&) const = default;
 };
 
 // An integer-lattice segment between two cell centres (the stored form).

@@ -70,8 +70,10 @@ def test_functions_have_the_modules_parameters():
         assert parameters(fn) == runtime_parameters(getattr(linemap, name)), name
 
 
-def test_map_has_the_modules_methods_and_properties():
-    (cls,) = [n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "Map"]
+@pytest.mark.parametrize("class_name", ["Map", "DecodeLimits"])
+def test_classes_have_the_modules_methods_and_properties(class_name):
+    (cls,) = [n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == class_name]
+    runtime_class = getattr(linemap, class_name)
     getters, setters, methods = set(), set(), {}
     for fn in cls.body:
         decorators = [ast.unparse(d) for d in fn.decorator_list]
@@ -81,7 +83,7 @@ def test_map_has_the_modules_methods_and_properties():
             setters.add(fn.name)
         else:
             methods[fn.name] = fn
-    runtime = vars(linemap.Map)
+    runtime = vars(runtime_class)
     properties = {n for n, v in runtime.items() if isinstance(v, property)}
     assert getters == properties
     assert setters == {n for n in properties if runtime[n].fset is not None}
@@ -89,7 +91,7 @@ def test_map_has_the_modules_methods_and_properties():
               if not n.startswith("_") and not isinstance(v, property)} | {"__init__"}
     assert set(methods) == public
     for name, fn in methods.items():
-        assert parameters(fn) == runtime_parameters(getattr(linemap.Map, name)), name
+        assert parameters(fn) == runtime_parameters(getattr(runtime_class, name)), name
 
 
 def test_stubs_sit_beside_the_built_module():

@@ -265,16 +265,17 @@ std::optional<int> SaveAsRead(const std::string& map_path, const std::string& ou
   if (IsLmapPath(map_path) || options.tolerance_cells != 0 || options.robot_pose) {
     return std::nullopt;
   }
-  StatusOr<MapLoadOptions> load = MapLoadOptionsFrom(parsed);
-  if (!load.ok()) return ReportError("encode", load.status());
-  StatusOr<std::unique_ptr<MapRowReader>> reader = MapRowReader::Open(map_path, *load);
+  StatusOr<MapReadOptions> read = MapReadOptionsFrom(parsed);
+  if (!read.ok()) return ReportError("encode", read.status());
+  const MapLoadOptions& load = read->image;
+  StatusOr<std::unique_ptr<MapRowReader>> reader = MapRowReader::Open(map_path, load);
   if (!reader.ok()) return ReportError("encode", reader.status());
   const std::uint64_t cells =
       std::uint64_t{static_cast<std::uint64_t>((*reader)->width())} * (*reader)->height();
   reader->reset();
   if (WantsPngRatio(cells, parsed)) return std::nullopt;
   StatusOr<LmapSaveSummary> saved =
-      SaveRosMapAsLmap(map_path, out, options, *load,
+      SaveRosMapAsLmap(map_path, out, options, load,
                        parsed.Has("--no-sync") ? Durability::kUnsynced : Durability::kSynced);
   if (!saved.ok()) {
     bar->Finish();

@@ -86,12 +86,13 @@ int RunEval(const std::vector<std::string>& args) {
   const std::string& decoded_path = parsed->positional[1];
   const Status applies = CheckMapOptionsApplyTo(original_path, *parsed);
   if (!applies.ok()) return ReportError("eval", applies);
-  StatusOr<MapLoadOptions> original_options = MapLoadOptionsFrom(*parsed);
+  StatusOr<MapReadOptions> original_options = MapReadOptionsFrom(*parsed);
   if (!original_options.ok()) return ReportError("eval", original_options.status());
   StatusOr<Grid> original = LoadMapWithOptions(original_path, *original_options);
   if (!original.ok()) return ReportError("eval", original.status());
-  MapLoadOptions decoded_options;  // the file's own values; only the limit is shared
-  decoded_options.max_cells = original_options->max_cells;
+  MapReadOptions decoded_options;  // the file's own values; only the limits are shared
+  decoded_options.image.max_cells = original_options->image.max_cells;
+  decoded_options.lmap = original_options->lmap;
   StatusOr<Grid> decoded = LoadMapWithOptions(decoded_path, decoded_options);
   if (!decoded.ok()) return ReportError("eval", decoded.status());
   if (original->width() != decoded->width() || original->height() != decoded->height()) {
@@ -116,9 +117,7 @@ int RunEval(const std::vector<std::string>& args) {
   // The layers' fidelity when the second file is an .lmap.
   std::optional<LayerFidelity> fidelity;
   if (IsLmapPath(decoded_path)) {
-    DecodeLimits limits;
-    limits.max_cells = decoded_options.max_cells;
-    StatusOr<LmapVectors> vectors = LoadLmapVectors(decoded_path, limits);
+    StatusOr<LmapVectors> vectors = LoadLmapVectors(decoded_path, decoded_options.lmap);
     if (!vectors.ok()) return ReportError("eval", vectors.status());
     StatusOr<LayerFidelity> measured = MeasureLayerFidelity(*original, *vectors);
     if (!measured.ok()) return ReportError("eval", measured.status());

@@ -61,11 +61,9 @@ LayerCounts CountLayers(const LmapContents& c) {
 int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   const Status applies = CheckMapOptionsApplyTo(path, args);
   if (!applies.ok()) return ReportError("info", applies);
-  StatusOr<MapLoadOptions> options = MapLoadOptionsFrom(args);
+  StatusOr<MapReadOptions> options = MapReadOptionsFrom(args);
   if (!options.ok()) return ReportError("info", options.status());
-  DecodeLimits limits;
-  limits.max_cells = options->max_cells;  // --max-cells applies to .lmap input too
-  StatusOr<LmapContents> contents = LoadLmapContents(path, limits);
+  StatusOr<LmapContents> contents = LoadLmapContents(path, options->lmap);
   if (!contents.ok()) return ReportError("info", contents.status());
   const Grid& grid = contents->grid;
   const CellCounts counts = grid.Count();

@@ -7,14 +7,35 @@
 
 namespace linemap::cli {
 
-std::vector<OptionSpec> DecodeLimitOptionSpecs() {
+std::vector<OptionSpec> LayerLimitOptionSpecs() {
   return {
+      {"--max-segments", "N",
+       "refuse .lmap files with more than N wall segments in a chunk (default 16777216 = 2^24; "
+       "lower it for untrusted files of small maps)"},
+      {"--max-objects", "N",
+       "refuse .lmap files with more than N rooms, or N furniture objects (default 1048576 = "
+       "2^20)"},
+  };
+}
+
+Status LayerLimitsFrom(const ParsedArgs& args, DecodeLimits* limits) {
+  LINEMAP_ASSIGN_OR_RETURN(limits->max_segments,
+                           args.GetUint64("--max-segments", limits->max_segments, /*min=*/1));
+  LINEMAP_ASSIGN_OR_RETURN(limits->max_objects,
+                           args.GetUint64("--max-objects", limits->max_objects, /*min=*/1));
+  return Status::Ok();
+}
+
+std::vector<OptionSpec> DecodeLimitOptionSpecs() {
+  std::vector<OptionSpec> options = {
       {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
       {"--max-file-bytes", "N", "refuse .lmap files larger than N bytes (default 2^31)"},
-      {"--threads", "N",
-       "threads decoding the tiles of a 2.0 file, 0..4096 (default 0: one per core); the result "
-       "does not depend on it"},
   };
+  for (OptionSpec& o : LayerLimitOptionSpecs()) options.push_back(std::move(o));
+  options.push_back({"--threads", "N",
+                     "threads decoding the tiles of a 2.0 file, 0..4096 (default 0: one per "
+                     "core); the result does not depend on it"});
+  return options;
 }
 
 StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
@@ -23,6 +44,7 @@ StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args) {
                            args.GetUint64("--max-cells", limits.max_cells, /*min=*/1));
   LINEMAP_ASSIGN_OR_RETURN(limits.max_file_bytes,
                            args.GetUint64("--max-file-bytes", limits.max_file_bytes, /*min=*/1));
+  LINEMAP_RETURN_IF_ERROR(LayerLimitsFrom(args, &limits));
   LINEMAP_ASSIGN_OR_RETURN(limits.max_threads, ThreadsFrom(args));
   return limits;
 }

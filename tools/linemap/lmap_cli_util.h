@@ -13,7 +13,14 @@
 
 namespace linemap::cli {
 
-// --max-cells etc. of the decoder, from the parsed arguments.
+// --max-segments and --max-objects: the decoder's limits on an .lmap file's
+// vector layers (DecodeLimits), for every command that reads one. A file
+// whose counts pass them is still checked against the bytes it holds.
+std::vector<OptionSpec> LayerLimitOptionSpecs();
+Status LayerLimitsFrom(const ParsedArgs& args, DecodeLimits* limits);
+
+// --max-cells, --max-file-bytes, the layer limits and --threads of the
+// decoder, from the parsed arguments.
 std::vector<OptionSpec> DecodeLimitOptionSpecs();
 StatusOr<DecodeLimits> DecodeLimitsFrom(const ParsedArgs& args);
 

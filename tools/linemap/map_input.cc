@@ -6,7 +6,7 @@
 namespace linemap::cli {
 
 std::vector<OptionSpec> MapLoadOptionSpecs() {
-  return {
+  std::vector<OptionSpec> options = {
       {"--resolution", "M", "metres per cell; overrides the YAML (bare images: 0.05)"},
       {"--origin", "X,Y[,YAW]",
        "map origin in metres and radians; overrides the YAML (bare: 0,0,0)"},
@@ -16,6 +16,8 @@ std::vector<OptionSpec> MapLoadOptionSpecs() {
       {"--mode", "MODE", "pixel mode: trinary (default), scale or raw"},
       {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},
   };
+  for (OptionSpec& o : LayerLimitOptionSpecs()) options.push_back(std::move(o));
+  return options;
 }
 
 std::vector<OptionSpec> WithMapLoadOptions(std::vector<OptionSpec> options) {
@@ -23,8 +25,9 @@ std::vector<OptionSpec> WithMapLoadOptions(std::vector<OptionSpec> options) {
   return options;
 }
 
-StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
-  MapLoadOptions options;
+StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args) {
+  MapReadOptions read;
+  MapLoadOptions& options = read.image;
   if (args.Get("--resolution")) {
     LINEMAP_ASSIGN_OR_RETURN(double resolution, args.GetDouble("--resolution", 0.0));
     if (resolution <= 0.0) return InvalidArgumentError("--resolution must be positive");
@@ -56,7 +59,9 @@ StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args) {
   }
   LINEMAP_ASSIGN_OR_RETURN(options.max_cells,
                            args.GetUint64("--max-cells", options.max_cells, /*min=*/1));
-  return options;
+  read.lmap.max_cells = options.max_cells;
+  LINEMAP_RETURN_IF_ERROR(LayerLimitsFrom(args, &read.lmap));
+  return read;
 }
 
 Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
@@ -74,17 +79,13 @@ Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
 
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
   LINEMAP_RETURN_IF_ERROR(CheckMapOptionsApplyTo(path, args));
-  LINEMAP_ASSIGN_OR_RETURN(MapLoadOptions options, MapLoadOptionsFrom(args));
+  LINEMAP_ASSIGN_OR_RETURN(MapReadOptions options, MapReadOptionsFrom(args));
   return LoadMapWithOptions(path, options);
 }
 
-StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapLoadOptions& options) {
-  if (IsLmapPath(path)) {  // an .lmap file is decoded
-    DecodeLimits limits;
-    limits.max_cells = options.max_cells;
-    return LoadLmap(path, limits);
-  }
-  return LoadRosMap(path, options);
+StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapReadOptions& options) {
+  if (IsLmapPath(path)) return LoadLmap(path, options.lmap);  // an .lmap file is decoded
+  return LoadRosMap(path, options.image);
 }
 
 }  // namespace linemap::cli

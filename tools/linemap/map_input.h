@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/map_io.h"
 #include "linemap/status.h"
@@ -14,13 +15,21 @@
 namespace linemap::cli {
 
 // --resolution, --origin, --negate, --occupied-thresh, --free-thresh, --mode,
-// --max-cells: appended to the options of every command that reads a map.
+// --max-cells, --max-segments, --max-objects: appended to the options of
+// every command that reads a map.
 std::vector<OptionSpec> MapLoadOptionSpecs();
 
-StatusOr<MapLoadOptions> MapLoadOptionsFrom(const ParsedArgs& args);
+// How a command reads its MAP: an image with `image`, an .lmap file within
+// `lmap` (--max-cells sets both).
+struct MapReadOptions {
+  MapLoadOptions image;
+  DecodeLimits lmap;
+};
+
+StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args);
 
 // Invalid argument when `path` is an .lmap file and `args` hold an option
-// that only reading an image gives a meaning (all but --max-cells): the
+// that only reading an image gives a meaning (all but the limits): the
 // file's own values stand, and silently ignoring the option would hide it.
 Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args);
 
@@ -28,9 +37,9 @@ Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args);
 // (CheckMapOptionsApplyTo first).
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args);
 
-// Loads `path` (.lmap, YAML or image) with `options`; for an .lmap file only
-// options.max_cells applies.
-StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapLoadOptions& options);
+// Loads `path` (.lmap, YAML or image) with `options.image`, or an .lmap
+// file within `options.lmap`.
+StatusOr<Grid> LoadMapWithOptions(const std::string& path, const MapReadOptions& options);
 
 // Options of `spec` followed by MapLoadOptionSpecs().
 std::vector<OptionSpec> WithMapLoadOptions(std::vector<OptionSpec> options);

@@ -14,9 +14,9 @@ namespace {
 using testing::CliResult;
 using testing::RunCli;
 
-// --max-cells (every command that reads a map, and the .lmap commands) and
-// --max-file-bytes take 1 .. 2^64 - 1 in decimal digits: no exponent, fraction,
-// sign or overflow (1e30 used to become "a limit of 0 cells", 1.5 became 1).
+// --max-cells (every command that reads a map, and the .lmap commands),
+// --max-segments, --max-objects and --max-file-bytes take 1 .. 2^64 - 1 in decimal digits: no
+// exponent, fraction, sign or overflow (1e30 used to become "a limit of 0 cells", 1.5 became 1).
 TEST(CliTest, LimitsAreWholeNumbers) {
   const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
   const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
@@ -26,6 +26,8 @@ TEST(CliTest, LimitsAreWholeNumbers) {
       {"info", lmap, "--max-cells"},
       {"decode", lmap, "-o", out, "--max-cells"},
       {"decode", lmap, "-o", out, "--max-file-bytes"},
+      {"info", lmap, "--max-segments"},
+      {"decode", lmap, "-o", out, "--max-objects"},
   };
   for (std::vector<std::string> argv : commands) {
     const std::string option = argv.back();
@@ -49,6 +51,42 @@ TEST(CliTest, LimitsAreWholeNumbers) {
   }
   // 4799 cells is one too few for the 80 x 60 arena.
   EXPECT_EQ(RunCli({"info", map, "--max-cells", "4799"}).exit_code, 2);
+}
+
+// Every command that reads an .lmap file holds it to --max-segments and
+// --max-objects: depot_v2.lmap has 437 wall segments and 33 furniture
+// objects in 8 rooms (as `linemap info --json` lists them), so it reads at
+// those limits and is refused, naming the limit, one below.
+TEST(CliTest, LayerLimitsApplyToEveryCommandReadingAnLmap) {
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const std::string dir = testing::MakeTempDir("cli_layer_limits");
+  const std::vector<std::vector<std::string>> commands = {
+      {"info", lmap},
+      {"decode", lmap, "-o", dir + "/d.yaml"},
+      {"export", lmap, "-o", dir + "/e.csv"},
+      {"eval", lmap, lmap},
+      {"lines", lmap, "-o", dir + "/l.csv"},
+      {"segment", lmap, "-o", dir + "/s.json"},
+      {"encode", lmap, "-o", dir + "/re.lmap"},
+  };
+  struct Limit {
+    const char* option;
+    int count;
+    const char* message;
+  };
+  for (const Limit& limit : {Limit{"--max-segments", 437, "exceed the segment limit"},
+                             Limit{"--max-objects", 33, "exceed the object limit of 32"}}) {
+    for (std::vector<std::string> argv : commands) {
+      argv.insert(argv.end(), {limit.option, std::to_string(limit.count - 1)});
+      const CliResult refused = RunCli(argv);
+      SCOPED_TRACE(argv[0] + " " + limit.option + ": " + refused.err);
+      EXPECT_EQ(refused.exit_code, 2);
+      EXPECT_NE(refused.err.find(limit.message), std::string::npos);
+      EXPECT_NE(refused.err.find("depot_v2.lmap"), std::string::npos);
+      argv.back() = std::to_string(limit.count);
+      EXPECT_EQ(RunCli(argv).exit_code, 0);
+    }
+  }
 }
 
 TEST(CliTest, HelpShowsTheYawAsOptional) {

@@ -1,0 +1,133 @@
+#include "python/decode_limits.h"
+
+#include <pybind11/operators.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <string>
+
+#include "python/arrays.h"
+
+namespace linemap::python {
+namespace {
+
+namespace py = pybind11;
+
+// A limit's value from Python: a whole number from `min` up (bools, which
+// are ints to Python, and floats are refused), below 2^64.
+std::uint64_t LimitValue(const py::handle& value, const char* name, std::uint64_t min,
+                         std::uint64_t max) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+    throw py::type_error(std::string(name) + " must be an int");
+  }
+  const py::int_ v = py::reinterpret_borrow<py::int_>(value);
+  if (v < py::int_(min) || v > py::int_(max)) {
+    throw py::value_error(std::string(name) + " must be from " + std::to_string(min) + " to " +
+                          std::to_string(max));
+  }
+  return v.cast<std::uint64_t>();
+}
+
+// One limit as a read-write property of the class, checked when set.
+template <typename T>
+void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*field,
+              std::uint64_t min, std::uint64_t max, const char* doc) {
+  cls.def_property(
+      name, [field](const DecodeLimits& l) { return l.*field; },
+      [field, name, min, max](DecodeLimits& l, const py::object& value) {
+        l.*field = static_cast<T>(LimitValue(value, name, min, max));
+      },
+      doc);
+}
+
+constexpr int kMaxThreads = 4096;
+
+// The properties, in the order of the C++ struct (for keywords and repr).
+constexpr const char* kLimitNames[] = {"max_file_bytes",     "max_cells",    "max_chunk_bytes",
+                                       "max_inflated_bytes", "max_segments", "max_chain_length",
+                                       "max_objects",        "max_threads"};
+
+}  // namespace
+
+void BindDecodeLimits(py::module_& module) {
+  const DecodeLimits d;
+  py::class_<DecodeLimits> cls(module, "DecodeLimits", R"doc(
+What a reading function (load, decode, vectors, room_at, eval) accepts
+before it allocates: an .lmap file over a limit raises MemoryError naming
+the limit, before the memory is taken. The defaults take the largest maps
+nav2 users report (a 282-Mcell map); lower them for files from elsewhere:
+
+  limits = linemap.DecodeLimits(max_cells=4_000_000, max_segments=100_000)
+  m = linemap.load("upload.lmap", limits=limits)
+
+A file within the limits is still checked against the bytes it holds. Every
+limit is a whole number of at least 1 (max_threads: 0 to 4096).
+)doc");
+  // Keyword-only, each through its property's checks.
+  cls.def(py::init([](const py::object& max_file_bytes, const py::object& max_cells,
+                      const py::object& max_chunk_bytes, const py::object& max_inflated_bytes,
+                      const py::object& max_segments, const py::object& max_chain_length,
+                      const py::object& max_objects, const py::object& max_threads) {
+            py::object self = py::cast(DecodeLimits{});
+            const py::object values[] = {max_file_bytes,     max_cells,    max_chunk_bytes,
+                                         max_inflated_bytes, max_segments, max_chain_length,
+                                         max_objects,        max_threads};
+            for (std::size_t i = 0; i < std::size(kLimitNames); ++i) {
+              self.attr(kLimitNames[i]) = values[i];
+            }
+            return self.cast<DecodeLimits>();
+          }),
+          py::kw_only(), py::arg("max_file_bytes") = d.max_file_bytes,
+          py::arg("max_cells") = d.max_cells, py::arg("max_chunk_bytes") = d.max_chunk_bytes,
+          py::arg("max_inflated_bytes") = d.max_inflated_bytes,
+          py::arg("max_segments") = d.max_segments,
+          py::arg("max_chain_length") = d.max_chain_length, py::arg("max_objects") = d.max_objects,
+          py::arg("max_threads") = d.max_threads,
+          "The defaults, with the limits given as keywords set.");
+  AddLimit(cls, "max_file_bytes", &DecodeLimits::max_file_bytes, 1, UINT64_MAX,
+           "Bytes of an .lmap file read from a path (default 2^31).");
+  AddLimit(cls, "max_cells", &DecodeLimits::max_cells, 1, UINT64_MAX,
+           "Cells of the map, width x height (default 2^30).");
+  AddLimit(cls, "max_chunk_bytes", &DecodeLimits::max_chunk_bytes, 1, UINT64_MAX,
+           "Bytes of one chunk's payload (default 2^30).");
+  AddLimit(cls, "max_inflated_bytes", &DecodeLimits::max_inflated_bytes, 1, UINT64_MAX,
+           "Bytes of one inflated (zlib) payload (default 2^28).");
+  AddLimit(cls, "max_segments", &DecodeLimits::max_segments, 1, UINT64_MAX,
+           "Wall segments per chunk (default 2^24, what a 2^30-cell SLAM map may need).");
+  AddLimit(cls, "max_chain_length", &DecodeLimits::max_chain_length, 1, UINT64_MAX,
+           "Cells of one room or furniture chain, and of all the rooms' chains (and apart, "
+           "all the objects') (default 2^26).");
+  AddLimit(cls, "max_objects", &DecodeLimits::max_objects, 1, UINT64_MAX,
+           "Rooms per file, and furniture objects per file (apart) (default 2^20).");
+  AddLimit(cls, "max_threads", &DecodeLimits::max_threads, 0, kMaxThreads,
+           "Threads decoding the tiles of a 2.0 file, the calling one included; 0 (the "
+           "default) is one per core. The result does not depend on it.");
+  cls.def(py::self == py::self);
+  cls.def("__repr__", [](const py::object& self) {
+    std::string text = "linemap.DecodeLimits(";
+    for (const char* name : kLimitNames) {
+      text += std::string(text.back() == '(' ? "" : ", ") + name + "=" +
+              std::string(py::str(self.attr(name)));
+    }
+    return text + ")";
+  });
+}
+
+DecodeLimits LimitsArgument(const py::object& limits, const py::object& max_cells) {
+  DecodeLimits out;
+  if (!limits.is_none()) {
+    if (!py::isinstance<DecodeLimits>(limits)) {
+      throw py::type_error("limits must be a linemap.DecodeLimits or None");
+    }
+    if (!max_cells.is_none()) {
+      throw py::value_error(
+          "give max_cells or limits (with its max_cells), not both: one would override the other");
+    }
+    out = limits.cast<DecodeLimits>();
+  }
+  out.max_cells = MaxCellsArgument(max_cells, out.max_cells);
+  return out;
+}
+
+}  // namespace linemap::python

@@ -1,0 +1,105 @@
+"""linemap.DecodeLimits and the `limits` argument of the reading functions:
+the defaults of the C++ DecodeLimits, checked values, and every reader
+holding an .lmap file to them."""
+import numpy as np
+import pytest
+
+from conftest import REPO
+
+linemap = pytest.importorskip("linemap")
+
+# A 2.2 fixture whose counts `linemap info --json` lists: 437 wall segments,
+# 8 rooms and 33 furniture objects, 604 x 307 cells at 0.05 m, origin 0.
+DEPOT = REPO / "tests" / "data" / "lmap" / "depot_v2.lmap"
+SEGMENTS, OBJECTS, CELLS = 437, 33, 604 * 307
+
+# include/linemap/codec.h and spec/format.md section 7.3.
+DEFAULTS = {
+    "max_file_bytes": 2**31,
+    "max_cells": 2**30,
+    "max_chunk_bytes": 2**30,
+    "max_inflated_bytes": 2**28,
+    "max_segments": 2**24,
+    "max_chain_length": 2**26,
+    "max_objects": 2**20,
+    "max_threads": 0,
+}
+
+
+def test_defaults_are_the_librarys():
+    limits = linemap.DecodeLimits()
+    assert {name: getattr(limits, name) for name in DEFAULTS} == DEFAULTS
+
+
+def test_keywords_set_limits_and_repr_rebuilds_them():
+    limits = linemap.DecodeLimits(max_segments=1000, max_objects=50)
+    assert (limits.max_segments, limits.max_objects) == (1000, 50)
+    assert limits.max_cells == DEFAULTS["max_cells"]
+    assert limits != linemap.DecodeLimits()
+    assert eval(repr(limits), {"linemap": linemap}) == limits
+    limits.max_threads = 2
+    assert limits.max_threads == 2
+
+
+@pytest.mark.parametrize("name", sorted(DEFAULTS))
+def test_values_are_checked(name):
+    lowest = 0 if name == "max_threads" else 1
+    highest = 4096 if name == "max_threads" else 2**64 - 1
+    for good in (lowest, highest):
+        assert getattr(linemap.DecodeLimits(**{name: good}), name) == good
+    for bad in (lowest - 1, highest + 1):
+        with pytest.raises(ValueError, match=name):
+            linemap.DecodeLimits(**{name: bad})
+    for wrong in (1.5, True, "5", None):
+        with pytest.raises(TypeError, match=name):
+            linemap.DecodeLimits(**{name: wrong})
+    limits = linemap.DecodeLimits()
+    with pytest.raises(ValueError, match=name):
+        setattr(limits, name, lowest - 1)
+    assert getattr(limits, name) == DEFAULTS[name]
+
+
+def test_limits_are_keywords_only():
+    with pytest.raises(TypeError):
+        linemap.DecodeLimits(5)
+    with pytest.raises(TypeError):
+        linemap.DecodeLimits(max_segment=5)  # a misspelt name is not ignored
+
+
+# Every function that reads an .lmap file, by path and by bytes.
+READERS = {
+    "load": lambda limits: linemap.load(DEPOT, limits=limits),
+    "load window": lambda limits: linemap.load(DEPOT, window_cells=(0, 0, 50, 50), limits=limits),
+    "decode": lambda limits: linemap.decode(DEPOT.read_bytes(), limits=limits),
+    "vectors": lambda limits: linemap.vectors(DEPOT, limits=limits),
+    "vectors of bytes": lambda limits: linemap.vectors(DEPOT.read_bytes(), limits=limits),
+    "room_at": lambda limits: linemap.room_at(DEPOT, 15.1, 7.6, limits=limits),
+    "eval": lambda limits: linemap.eval(DEPOT, DEPOT, limits=limits),
+}
+
+
+@pytest.mark.parametrize("reader", sorted(READERS))
+@pytest.mark.parametrize(
+    "name,count,message",
+    [
+        ("max_segments", SEGMENTS, "segment limit"),
+        ("max_objects", OBJECTS, "object limit of 32"),
+        ("max_cells", CELLS, "limit"),
+    ],
+)
+def test_every_reader_holds_the_file_to_the_limits(reader, name, count, message):
+    READERS[reader](linemap.DecodeLimits(**{name: count}))  # at the limit: read
+    with pytest.raises(MemoryError, match=message):
+        READERS[reader](linemap.DecodeLimits(**{name: count - 1}))
+
+
+def test_max_cells_and_limits_together_are_refused():
+    with pytest.raises(ValueError, match="not both"):
+        linemap.load(DEPOT, max_cells=CELLS, limits=linemap.DecodeLimits())
+    with pytest.raises(TypeError, match="DecodeLimits"):
+        linemap.load(DEPOT, limits={"max_cells": CELLS})
+
+
+def test_threads_do_not_change_the_decode():
+    one = linemap.load(DEPOT, limits=linemap.DecodeLimits(max_threads=1))
+    assert np.array_equal(one.cells, linemap.load(DEPOT).cells)
