@@ -271,20 +271,24 @@ TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
 
 // A command-line map with the window of a launch file's <param> (set on the
 // parameter server only) publishes the window's cells, with the map read
-// after the window is known (its tiles alone for an .lmap file) and also
-// for an image, which is read whole before the master answers and cropped.
+// after the window is known (its tiles alone for an .lmap file, an image
+// whole and cropped), or for an image whose ~max_cells is on the command
+// line (no parameter can change it) read whole before the master answers
+// and cropped once it does.
 TEST(LmapServerTest, WindowParameterWithACommandLineMapPublishesTheWindow) {
   RosMaster& master = SharedMaster();
   const Grid expected = DepotCrop(5.0, 2.0, 12.5, 9.0);
   const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
   const std::string yaml = BundledMapsDir() + "/nav2/depot.yaml";
+  const std::vector<std::vector<std::string>> cases = {
+      {lmap}, {yaml}, {yaml, "_max_cells:=" + std::to_string(604 * 307)}};
   int k = 0;
-  for (const std::string& path : {lmap, yaml}) {
-    SCOPED_TRACE(path);
+  for (const std::vector<std::string>& args : cases) {
+    SCOPED_TRACE(args.back());
     const std::string ns = "/s10_" + std::to_string(k++);
     ros::param::set(ns + "/lmap_server/window", std::vector<double>{5.0, 2.0, 12.5, 9.0});
     OccupancyGridMsg map;
-    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, {path}, &map));
+    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, args, &map));
     ExpectMessageIsGrid(map, expected, "map");
   }
 }
