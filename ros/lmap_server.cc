@@ -1,17 +1,22 @@
 // lmap_server: map_server for .lmap files (and map YAMLs / images).
 //
 //   lmap_server [MAP] [--wait-master S] [__name:=...] [_frame_id:=map] [_window:=x0,y0,x1,y1]
+//               [_max_cells:=N] [_max_segments:=N] [_max_objects:=N]
 //
 // Publishes the map latched on `map` (nav_msgs/OccupancyGrid) and its
 // metadata on `map_metadata` (nav_msgs/MapMetaData), and serves it on
 // `static_map` (nav_msgs/GetMap), as map_server does. MAP is the argument or
 // the private parameter ~map. A ~window that reaches past the map is
-// refused. Exit codes: 1 no master or a ROS failure, 2 bad usage, a map that
-// cannot be read or a window past it.
+// refused, and so is a map over ~max_cells, ~max_segments or ~max_objects
+// (the decoder's limits, DecodeLimits). Exit codes: 1 no master or a ROS
+// failure, 2 bad usage, a bad parameter, a map that cannot be read, one over
+// a limit or a window past it.
 #include <ros/ros.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,7 +35,16 @@ constexpr const char* kUsage =
     "  --wait-master S   seconds to wait for the ROS master (default 10)\n"
     "parameters: ~map, ~frame_id (default map), ~window x0,y0,x1,y1 (metres, optional;\n"
     "            the cells whose squares overlap it, refused when it reaches past the map)\n"
+    "  maps over a limit are refused; each a whole number from 1 to 2147483647:\n"
+    "  ~max_cells N      cells of the whole map, also of a map image, with a ~window too\n"
+    "                    (default 1073741824 = 2^30)\n"
+    "  ~max_segments N   wall segments per chunk of an .lmap file (default 16777216 = 2^24)\n"
+    "  ~max_objects N    rooms, and furniture objects, per .lmap file (default 1048576 = 2^20)\n"
     "publishes map (latched), map_metadata (latched); serves static_map\n";
+// The defaults kUsage gives.
+static_assert(DecodeLimits{}.max_cells == std::uint64_t{1} << 30);
+static_assert(DecodeLimits{}.max_segments == std::uint64_t{1} << 24);
+static_assert(DecodeLimits{}.max_objects == std::uint64_t{1} << 20);
 
 struct ServerArgs {
   std::optional<std::string> map_path;
@@ -74,6 +88,84 @@ StatusOr<std::optional<Window>> WindowParameter(const ros::NodeHandle& private_n
   return InvalidArgumentError("~window must be x0,y0,x1,y1 in metres");
 }
 
+// The values of ~max_cells, ~max_segments and ~max_objects (in the order of
+// LimitParameters()) that are known: nullopt for one that is not set (yet).
+using LimitValues = std::vector<std::optional<std::uint64_t>>;
+
+// The limits given as `_NAME:=VALUE` arguments.
+StatusOr<LimitValues> LimitArguments(int argc, char** argv) {
+  LimitValues values;
+  for (const LimitParameter& limit : LimitParameters()) {
+    const std::optional<std::string> text = PrivateParameterArgument(argc, argv, limit.name);
+    if (!text) {
+      values.emplace_back();
+      continue;
+    }
+    LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t value, ParseLimit(limit, *text));
+    values.emplace_back(value);
+  }
+  return values;
+}
+
+// A limit's value as the parameter server holds it: an int, a whole double
+// or their text.
+StatusOr<std::uint64_t> LimitFromXmlRpc(const LimitParameter& limit, XmlRpc::XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return LimitFromNumber(limit, static_cast<int>(value));
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return LimitFromNumber(limit, static_cast<double>(value));
+    case XmlRpc::XmlRpcValue::TypeString:
+      return ParseLimit(limit, static_cast<std::string>(value));
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return LimitRangeError(limit, static_cast<bool>(value) ? "true" : "false");
+    default:
+      return LimitRangeError(limit, "a list, a dictionary or a date");
+  }
+}
+
+// ~NAME on the parameter server, or nullopt when it is not set.
+StatusOr<std::optional<std::uint64_t>> LimitParameterValue(const ros::NodeHandle& private_nh,
+                                                           const LimitParameter& limit) {
+  XmlRpc::XmlRpcValue value;
+  if (!private_nh.getParam(limit.name, value)) return std::optional<std::uint64_t>();
+  LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t parsed, LimitFromXmlRpc(limit, value));
+  return std::optional<std::uint64_t>(parsed);
+}
+
+// `known` with the limits it lacks read from the parameter server (a launch
+// file's <param>); `_NAME:=` arguments are there too, with the same values.
+StatusOr<LimitValues> CompleteLimits(const ros::NodeHandle& private_nh, LimitValues known) {
+  const std::span<const LimitParameter> limits = LimitParameters();
+  for (std::size_t i = 0; i < limits.size(); ++i) {
+    if (known[i]) continue;
+    LINEMAP_ASSIGN_OR_RETURN(known[i], LimitParameterValue(private_nh, limits[i]));
+  }
+  return known;
+}
+
+// DecodeLimits with `values`, and `unset` for the limits not known; the
+// library's defaults for unset = nullopt.
+DecodeLimits LimitsOf(const LimitValues& values, std::optional<std::uint64_t> unset) {
+  DecodeLimits limits;
+  const std::span<const LimitParameter> parameters = LimitParameters();
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (values[i] || unset) limits.*parameters[i].field = values[i] ? *values[i] : *unset;
+  }
+  return limits;
+}
+
+// Whether every limit that applies to the map at `path` is known (all for
+// an .lmap file, ~max_cells for a map image): it may then be loaded before
+// the master answers, as no ~NAME on the parameter server can change them.
+bool LimitsSettledFor(const std::string& path, const LimitValues& values) {
+  if (!IsLmapPath(path)) return values[0].has_value();
+  for (const std::optional<std::uint64_t>& value : values) {
+    if (!value) return false;
+  }
+  return true;
+}
+
 class MapServer {
  public:
   explicit MapServer(OccupancyGridMsg map) : map_(std::move(map)) {
@@ -97,6 +189,33 @@ class MapServer {
   ros::ServiceServer service_;
 };
 
+// Prints `status` as lmap_server's error; returns its exit code.
+int Refuse(const Status& status) {
+  std::fprintf(stderr, "lmap_server: %s\n", status.message().c_str());
+  return ExitCodeFor(status);
+}
+
+// The map named on the command line, before the master is waited for: a
+// map that cannot be read, one over a limit given or a window past it is
+// refused at once (exit 2), not after the wait. Loaded when the limits that
+// apply are known (a map image whole, cropped to a ~window of the parameter
+// server once it is known; an .lmap file for the window given), else nullopt.
+StatusOr<std::optional<Grid>> LoadBeforeMaster(const std::string& path,
+                                               const std::optional<Window>& window,
+                                               const LimitValues& limits) {
+  if (LimitsSettledFor(path, limits) && (window || !IsLmapPath(path))) {
+    LINEMAP_ASSIGN_OR_RETURN(Grid grid, LoadServedMap(path, window, LimitsOf(limits, {})));
+    return std::optional<Grid>(std::move(grid));
+  }
+  // A window or a limit may still come from the parameter server (a launch
+  // file's <param>): the file is checked now (its header, an .lmap file's
+  // every chunk's CRC, the window given) within the limits any parameter
+  // could set, and decoded once they are known; an .lmap file then only the
+  // window's tiles (on the 282-Mcell office map 17 MB rather than 300).
+  LINEMAP_RETURN_IF_ERROR(CheckServedMap(path, window, LimitsOf(limits, kMaxLimitValue)));
+  return std::optional<Grid>();
+}
+
 int Run(int argc, char** argv) {
   if (StartNodeOutput(argc, argv, kUsage)) return kExitOk;
   StatusOr<ServerArgs> args = ParseServerArgs(NonRosArguments(argc, argv));
@@ -104,41 +223,26 @@ int Run(int argc, char** argv) {
     std::fprintf(stderr, "lmap_server: %s\n%s", args.status().message().c_str(), kUsage);
     return kExitBadInput;
   }
-  // The map and window the command line names (MAP or `_map:=`,
-  // `_window:=`) are read before the master is waited for: a map that
-  // cannot be read, or a window past it, is refused at once (exit 2), not
-  // after the wait. roscpp puts `_name:=` arguments on the parameter server
-  // over what a launch file set, so ~map and ~window would hold these.
+  // The map, window and limits the command line names (MAP or `_map:=`,
+  // `_window:=`, `_max_cells:=` ...) are read before the master is waited
+  // for. roscpp puts `_name:=` arguments on the parameter server over what a
+  // launch file set, so ~map, ~window and the limits would hold these.
   std::optional<std::string> map_path = args->map_path;
   if (!map_path) map_path = PrivateParameterArgument(argc, argv, "map");
   const std::optional<std::string> window_text = PrivateParameterArgument(argc, argv, "window");
   std::optional<Window> window;
   if (window_text) {
     StatusOr<Window> parsed = ParseWindow(*window_text);
-    if (!parsed.ok()) {
-      std::fprintf(stderr, "lmap_server: %s\n", parsed.status().message().c_str());
-      return kExitBadInput;
-    }
+    if (!parsed.ok()) return Refuse(parsed.status());
     window = *parsed;
   }
+  StatusOr<LimitValues> limits = LimitArguments(argc, argv);
+  if (!limits.ok()) return Refuse(limits.status());
   std::optional<Grid> grid;
-  if (map_path && !window_text && IsLmapPath(*map_path)) {
-    // A window may still come from the parameter server (a launch file's
-    // <param>): the file is checked now (its header and every chunk's CRC)
-    // and decoded once the window is known, so that only the window's tiles
-    // are (on the 282-Mcell office map 17 MB rather than 300).
-    const StatusOr<LmapHeader> header = LoadLmapHeader(*map_path);
-    if (!header.ok()) {
-      std::fprintf(stderr, "lmap_server: %s\n", header.status().message().c_str());
-      return ExitCodeFor(header.status());
-    }
-  } else if (map_path) {
-    StatusOr<Grid> loaded = LoadServedMap(*map_path, window);
-    if (!loaded.ok()) {
-      std::fprintf(stderr, "lmap_server: %s\n", loaded.status().message().c_str());
-      return ExitCodeFor(loaded.status());
-    }
-    grid = std::move(*loaded);
+  if (map_path) {
+    StatusOr<std::optional<Grid>> early = LoadBeforeMaster(*map_path, window, *limits);
+    if (!early.ok()) return Refuse(early.status());
+    grid = std::move(*early);
   }
 
   const Status master =
@@ -158,32 +262,25 @@ int Run(int argc, char** argv) {
     map_path = param;
   }
   const std::string frame_id = private_nh.param<std::string>("frame_id", "map");
+  // Only the parameter server (a launch file's <param>) can hold the
+  // limits not given, and a window when none was.
+  limits = CompleteLimits(private_nh, std::move(*limits));
+  if (!limits.ok()) return Refuse(limits.status());
   if (!window_text) {
-    // Only the parameter server (a launch file's <param>) can hold one now.
     StatusOr<std::optional<Window>> parameter = WindowParameter(private_nh);
-    if (!parameter.ok()) {
-      std::fprintf(stderr, "lmap_server: %s\n", parameter.status().message().c_str());
-      return kExitBadInput;
-    }
+    if (!parameter.ok()) return Refuse(parameter.status());
     window = *parameter;
     if (grid && window) {
       // The map was read whole before the master answered: crop it to the
       // same cells LoadServedMap would have decoded.
       StatusOr<Grid> cropped = CropToWindow(*grid, *window);
-      if (!cropped.ok()) {
-        std::fprintf(stderr, "lmap_server: '%s': %s\n", map_path->c_str(),
-                     cropped.status().message().c_str());
-        return ExitCodeFor(cropped.status());
-      }
+      if (!cropped.ok()) return Refuse(cropped.status().WithContext("'" + *map_path + "'"));
       grid = std::move(*cropped);
     }
   }
   if (!grid) {
-    StatusOr<Grid> loaded = LoadServedMap(*map_path, window);
-    if (!loaded.ok()) {
-      std::fprintf(stderr, "lmap_server: %s\n", loaded.status().message().c_str());
-      return ExitCodeFor(loaded.status());
-    }
+    StatusOr<Grid> loaded = LoadServedMap(*map_path, window, LimitsOf(*limits, {}));
+    if (!loaded.ok()) return Refuse(loaded.status());
     grid = std::move(*loaded);
   }
   MapServer server(RosMessageFromGrid(*grid, frame_id, ros::Time::now()));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -136,32 +137,125 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
 
 namespace {
 
-// A window of an .lmap file: only the tiles it meets are decoded (the
-// header is read first, for the map's size and frame).
-StatusOr<Grid> LoadLmapWindow(const std::string& path, const Window& window) {
-  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(path));
-  LINEMAP_ASSIGN_OR_RETURN(CellWindow cells,
-                           WindowCells(header.width, header.height, header.meta, window));
-  return LoadLmapRegion(path, cells);
+constexpr LimitParameter kLimitParameters[] = {
+    {"max_cells", "cells", &DecodeLimits::max_cells},
+    {"max_segments", "wall segments per chunk", &DecodeLimits::max_segments},
+    {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
+};
+
+// The limits that apply to the map at `path`: all for an .lmap file,
+// ~max_cells (the first) for a map image.
+std::span<const LimitParameter> LimitsFor(const std::string& path) {
+  return std::span<const LimitParameter>(kLimitParameters).first(IsLmapPath(path) ? 3 : 1);
 }
 
-}  // namespace
-
-StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window) {
-  if (window && IsLmapPath(path)) {
-    StatusOr<Grid> region = LoadLmapWindow(path, *window);
-    if (!region.ok()) return region.status().WithContext("'" + path + "'");
-    return region;
+// `status` (a map over a limit) with the values of `named` in force.
+Status NamingLimits(const Status& status, const DecodeLimits& limits,
+                    std::span<const LimitParameter> named) {
+  if (status.code() != StatusCode::kResourceExhausted) return status;
+  std::string text;
+  for (const LimitParameter& limit : named) {
+    text += (text.empty() ? " (limits: ~" : ", ~") + std::string(limit.name) + " " +
+            std::to_string(limits.*limit.field);
   }
-  StatusOr<Grid> grid = [&]() -> StatusOr<Grid> {
-    if (IsLmapPath(path)) return LoadLmap(path);
-    return LoadRosMap(path);
-  }();
+  return Status(status.code(), status.message() + text + ")");
+}
+
+// A window of an .lmap file: only the tiles it meets are decoded (the
+// header is read first, for the map's size and frame). The library's errors
+// name the file; the window's are given its name here.
+StatusOr<Grid> LoadLmapWindow(const std::string& path, const Window& window,
+                              const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(path, limits));
+  StatusOr<CellWindow> cells = WindowCells(header.width, header.height, header.meta, window);
+  if (!cells.ok()) return cells.status().WithContext("'" + path + "'");
+  return LoadLmapRegion(path, *cells, limits);
+}
+
+MapLoadOptions ImageLoadOptions(const DecodeLimits& limits) {
+  MapLoadOptions options;
+  options.max_cells = limits.max_cells;
+  return options;
+}
+
+StatusOr<Grid> LoadWithin(const std::string& path, const std::optional<Window>& window,
+                          const DecodeLimits& limits) {
+  if (window && IsLmapPath(path)) return LoadLmapWindow(path, *window, limits);
+  StatusOr<Grid> grid =
+      IsLmapPath(path) ? LoadLmap(path, limits) : LoadRosMap(path, ImageLoadOptions(limits));
   if (!grid.ok()) return grid.status();
   if (!window) return grid;
   StatusOr<Grid> cropped = CropToWindow(*grid, *window);
   if (!cropped.ok()) return cropped.status().WithContext("'" + path + "'");
   return cropped;
+}
+
+// The size and frame of the map at `path`, from its header alone.
+struct MapFrame {
+  int width = 0;
+  int height = 0;
+  MapMetadata meta;
+};
+
+StatusOr<MapFrame> ReadMapFrame(const std::string& path, const DecodeLimits& limits) {
+  if (IsLmapPath(path)) {
+    LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(path, limits));
+    return MapFrame{header.width, header.height, header.meta};
+  }
+  LINEMAP_ASSIGN_OR_RETURN(std::unique_ptr<MapRowReader> reader,
+                           MapRowReader::Open(path, ImageLoadOptions(limits)));
+  return MapFrame{reader->width(), reader->height(), reader->meta()};
+}
+
+}  // namespace
+
+std::span<const LimitParameter> LimitParameters() { return kLimitParameters; }
+
+Status LimitRangeError(const LimitParameter& limit, const std::string& shown) {
+  return InvalidArgumentError("~" + std::string(limit.name) + " must be a whole number from 1 to " +
+                              std::to_string(kMaxLimitValue) + " (" + limit.unit + "), not " +
+                              shown);
+}
+
+StatusOr<std::uint64_t> LimitFromNumber(const LimitParameter& limit, double value) {
+  if (!(value >= 1 && value <= static_cast<double>(kMaxLimitValue)) || value != std::floor(value)) {
+    // The shortest text that reads back as the value (0.1, not 0.1000...01).
+    char text[64];
+    for (int digits = 1; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof(text), "%.*g", digits, value);
+      if (std::strtod(text, nullptr) == value || std::isnan(value)) break;
+    }
+    return LimitRangeError(limit, text);
+  }
+  return static_cast<std::uint64_t>(value);
+}
+
+StatusOr<std::uint64_t> ParseLimit(const LimitParameter& limit, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end == text.c_str() || *end != '\0' || errno != 0 ||
+      !LimitFromNumber(limit, value).ok()) {
+    return LimitRangeError(limit, "'" + text + "'");
+  }
+  return static_cast<std::uint64_t>(value);
+}
+
+StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
+                             const DecodeLimits& limits) {
+  StatusOr<Grid> grid = LoadWithin(path, window, limits);
+  if (!grid.ok()) return NamingLimits(grid.status(), limits, LimitsFor(path));
+  return grid;
+}
+
+Status CheckServedMap(const std::string& path, const std::optional<Window>& window,
+                      const DecodeLimits& limits) {
+  const StatusOr<MapFrame> frame = ReadMapFrame(path, limits);
+  // Of the limits only ~max_cells applies to a header.
+  if (!frame.ok()) return NamingLimits(frame.status(), limits, LimitsFor(path).first(1));
+  if (!window) return Status::Ok();
+  const StatusOr<CellWindow> cells = WindowCells(frame->width, frame->height, frame->meta, *window);
+  return cells.ok() ? Status::Ok() : cells.status().WithContext("'" + path + "'");
 }
 
 }  // namespace linemap::ros_bridge

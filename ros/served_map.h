@@ -3,9 +3,12 @@
 #ifndef LINEMAP_ROS_SERVED_MAP_H_
 #define LINEMAP_ROS_SERVED_MAP_H_
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 
+#include "linemap/codec.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
 
@@ -33,11 +36,48 @@ StatusOr<Window> WindowFromValues(const double* values, int count);
 // window and the map's extent, and when no cell overlaps.
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 
-// Loads `path` (.lmap, map YAML or bare PGM/PNG) and, with a window, keeps
-// only the window's cells (the same cells as CropToWindow, refused as it
-// refuses them). A 2.0 .lmap file decodes only the tiles the window meets
-// (LoadLmapRegion); a map image is loaded whole and cropped.
-StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window);
+// A decode limit lmap_server takes as the private parameter ~NAME: a whole
+// number from 1 to kMaxLimitValue (XmlRpc's largest int) that replaces
+// DecodeLimits' field.
+struct LimitParameter {
+  const char* name;  // "max_cells": the parameter ~max_cells
+  const char* unit;  // what it counts, for messages
+  std::uint64_t DecodeLimits::*field;
+};
+inline constexpr std::int64_t kMaxLimitValue = 2147483647;
+
+// ~max_cells (cells of the whole map, also of a map image), ~max_segments
+// (wall segments per chunk of an .lmap file) and ~max_objects (rooms, and
+// furniture objects, per .lmap file), in that order.
+std::span<const LimitParameter> LimitParameters();
+
+// A value of `limit` given as text (a `_NAME:=VALUE` argument or a string
+// parameter), or as a number (an int or double parameter): a whole number
+// from 1 to kMaxLimitValue, else an invalid argument naming ~NAME and that
+// range.
+StatusOr<std::uint64_t> ParseLimit(const LimitParameter& limit, const std::string& text);
+StatusOr<std::uint64_t> LimitFromNumber(const LimitParameter& limit, double value);
+// Their error for a value shown as `shown` ("'abc'", "2.5", "a list").
+Status LimitRangeError(const LimitParameter& limit, const std::string& shown);
+
+// Loads `path` (.lmap, map YAML or bare PGM/PNG) within `limits` and, with a
+// window, keeps only the window's cells (the same cells as CropToWindow,
+// refused as it refuses them). A 2.0 .lmap file decodes only the tiles the
+// window meets (LoadLmapRegion); a map image is loaded whole and cropped.
+// limits.max_cells applies to the whole map, with a window too, and to a map
+// image (MapLoadOptions::max_cells); the other limits to .lmap files. A map
+// over a limit is refused (resource exhausted), naming the file and the
+// limits of LimitParameters() in force.
+StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
+                             const DecodeLimits& limits = {});
+
+// What LoadServedMap(path, window, limits) checks before it decodes any
+// cell, with the same errors: that the file opens, that its header (for an
+// .lmap file also every chunk's CRC) is within limits.max_cells, and that the
+// window lies on the map. Lets a node refuse a bad map before it knows all it
+// needs to load it (the window and limits of the parameter server).
+Status CheckServedMap(const std::string& path, const std::optional<Window>& window,
+                      const DecodeLimits& limits = {});
 
 }  // namespace linemap::ros_bridge
 

@@ -4,11 +4,13 @@
 #include <ros/ros.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <boost/function.hpp>
 #include <cmath>
 #include <string>
 
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "ros/ros_messages.h"
 #include "tests/ros/ros_maps.h"
 #include "tests/ros/ros_test_support.h"
@@ -269,20 +271,24 @@ TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
 
 // A command-line map with the window of a launch file's <param> (set on the
 // parameter server only) publishes the window's cells, with the map read
-// after the window is known (its tiles alone for an .lmap file) and also
-// for an image, which is read whole before the master answers and cropped.
+// after the window is known (its tiles alone for an .lmap file, an image
+// whole and cropped), or for an image whose ~max_cells is on the command
+// line (no parameter can change it) read whole before the master answers
+// and cropped once it does.
 TEST(LmapServerTest, WindowParameterWithACommandLineMapPublishesTheWindow) {
   RosMaster& master = SharedMaster();
   const Grid expected = DepotCrop(5.0, 2.0, 12.5, 9.0);
   const std::string lmap = SourceDir() + "/tests/data/lmap/depot_lossless.lmap";
   const std::string yaml = BundledMapsDir() + "/nav2/depot.yaml";
+  const std::vector<std::vector<std::string>> cases = {
+      {lmap}, {yaml}, {yaml, "_max_cells:=" + std::to_string(604 * 307)}};
   int k = 0;
-  for (const std::string& path : {lmap, yaml}) {
-    SCOPED_TRACE(path);
+  for (const std::vector<std::string>& args : cases) {
+    SCOPED_TRACE(args.back());
     const std::string ns = "/s10_" + std::to_string(k++);
     ros::param::set(ns + "/lmap_server/window", std::vector<double>{5.0, 2.0, 12.5, 9.0});
     OccupancyGridMsg map;
-    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, {path}, &map));
+    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, args, &map));
     ExpectMessageIsGrid(map, expected, "map");
   }
 }
@@ -341,6 +347,100 @@ TEST(LmapServerTest, NoMasterWithSeveralParameterArgumentsWaitsOnceInAll) {
   EXPECT_EQ(*code, 1) << server->Stderr();
   EXPECT_GE(seconds, 2.0);
   EXPECT_LT(seconds, 4.5);  // 6 s when each argument waited the whole 2 s
+}
+
+// A limit that is no whole number from 1 to 2147483647 is refused at once,
+// naming the parameter and the range, as is a map over ~max_cells given on
+// the command line (its header read): exit 2 and one line, before the
+// master is waited for (none runs here).
+TEST(LmapServerTest, BadLimitArgumentExitsTwoBeforeWaitingForTheMaster) {
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const std::string range = " must be a whole number from 1 to 2147483647 ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"_max_cells:=0", "lmap_server: ~max_cells" + range + "(cells), not '0'"},
+      {"_max_segments:=-4",
+       "lmap_server: ~max_segments" + range + "(wall segments per chunk), not '-4'"},
+      {"_max_objects:=2.5",
+       "lmap_server: ~max_objects" + range + "(rooms, and furniture objects, per file), not '2.5'"},
+      {"_max_cells:=lots", "lmap_server: ~max_cells" + range + "(cells), not 'lots'"},
+      // 604 x 307 = 185,428 cells.
+      {"_max_cells:=185427", "(limits: ~max_cells 185427)"},
+  };
+  for (const auto& [arg, expected] : cases) {
+    const double start = Now();
+    auto server = StartServerWithoutMaster({lmap, arg}, 60);
+    const std::optional<int> code = server->Wait(10);
+    ASSERT_TRUE(code.has_value()) << arg << ": still running after 10 s";
+    EXPECT_EQ(*code, 2) << server->Stderr();
+    EXPECT_LT(Now() - start, 5.0);
+    const std::vector<std::string> lines = Lines(server->Stderr());
+    ASSERT_EQ(lines.size(), 1u) << server->Stderr();
+    EXPECT_NE(lines[0].find(expected), std::string::npos) << lines[0];
+  }
+}
+
+// A map over a limit, or a bad limit, from the command line or from the
+// parameter server (a launch file's <param>, read once the master answers),
+// exits 2 naming the limit: the layers' limits are only known once the
+// layers are read, and a limit not on the command line only once the master
+// answers, whether the map is an .lmap file, one with a window given or a
+// map image.
+TEST(LmapServerTest, MapOverALimitOrABadLimitParameterExitsTwo) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const std::string yaml = BundledMapsDir() + "/nav2/depot.yaml";
+  struct Case {
+    std::vector<std::string> args;
+    std::string parameter;  // set on the parameter server when not empty
+    XmlRpc::XmlRpcValue value;
+    std::string expected;
+  };
+  const Case cases[] = {
+      // 437 wall segments, 8 rooms, 33 furniture objects.
+      {{lmap, "_max_segments:=1"}, "", {}, "(limits: ~max_cells 1073741824, ~max_segments 1,"},
+      {{lmap, "_window:=[5,2,12.5,9]"}, "max_objects", 7, "~max_objects 7)"},
+      {{yaml}, "max_cells", 1000, "(limits: ~max_cells 1000)"},
+      {{lmap}, "max_cells", 2.5, "~max_cells must be a whole number from 1 to 2147483647 "},
+      {{lmap}, "max_segments", "many", "(wall segments per chunk), not 'many'"},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const std::string ns = "/s11_" + std::to_string(k++);
+    SCOPED_TRACE(ns + " " + c.expected);
+    if (!c.parameter.empty()) {
+      XmlRpc::XmlRpcValue value = c.value;
+      ros::param::set(ns + "/lmap_server/" + c.parameter, value);
+    }
+    auto server = StartServer(master, ns, c.args);
+    const std::optional<int> code = server->Wait(20);
+    ASSERT_TRUE(code.has_value()) << "lmap_server did not exit";
+    EXPECT_EQ(*code, 2) << server->Stderr();
+    EXPECT_NE(server->Stderr().find(c.expected), std::string::npos) << server->Stderr();
+    EXPECT_EQ(server->Stderr().find("no ROS master"), std::string::npos) << server->Stderr();
+  }
+}
+
+// Limits at the file's own counts (read here from its layers) serve it,
+// cell for cell.
+TEST(LmapServerTest, LimitsAtTheFilesCountsServeTheMap) {
+  RosMaster& master = SharedMaster();
+  const std::string lmap = SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const StatusOr<Grid> expected = LoadLmap(lmap);
+  ASSERT_TRUE(expected.ok()) << expected.status().message();
+  const StatusOr<LmapVectors> vectors = LoadLmapVectors(lmap);
+  ASSERT_TRUE(vectors.ok()) << vectors.status().message();
+  std::size_t segments = 0;
+  for (const WallPolyline& wall : vectors->walls) segments += wall.points.size() - 1;
+  const std::size_t objects = std::max(vectors->rooms.size(), vectors->furniture.size());
+  ASSERT_GT(segments, 1u);
+  ASSERT_GT(objects, 1u);
+  OccupancyGridMsg map;
+  ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(
+      master, "/s12",
+      {lmap, "_max_cells:=" + std::to_string(expected->cells().size()),
+       "_max_segments:=" + std::to_string(segments), "_max_objects:=" + std::to_string(objects)},
+      &map));
+  ExpectMessageIsGrid(map, *expected, "map");
 }
 
 }  // namespace

@@ -1,12 +1,21 @@
 // The ~window of lmap_server (ros/served_map.cc) without ROS: parsing, and
-// the crop of a rotated map checked against the map's own cell geometry.
+// the crop of a rotated map checked against the map's own cell geometry;
+// its limits (~max_cells, ~max_segments, ~max_objects) against the counts
+// the bundled files hold.
 #include "ros/served_map.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
 #include "tests/ros/ros_maps.h"
 #include "tests/testing/test_support.h"
 
@@ -112,6 +121,192 @@ TEST(ServedMapTest, CropOfARotatedMapKeepsEveryCellWhereItWas) {
       EXPECT_LE(row, crop->height() - 0.5);
     }
   }
+}
+
+const LimitParameter& Limit(const std::string& name) {
+  for (const LimitParameter& limit : LimitParameters()) {
+    if (limit.name == name) return limit;
+  }
+  ADD_FAILURE() << "no limit ~" << name;
+  return LimitParameters()[0];
+}
+
+TEST(ServedMapTest, LimitParametersAreTheDecodeLimitsTheyName) {
+  ASSERT_EQ(LimitParameters().size(), 3u);
+  DecodeLimits limits;
+  limits.*Limit("max_cells").field = 11;
+  limits.*Limit("max_segments").field = 12;
+  limits.*Limit("max_objects").field = 13;
+  EXPECT_EQ(limits.max_cells, 11u);
+  EXPECT_EQ(limits.max_segments, 12u);
+  EXPECT_EQ(limits.max_objects, 13u);
+}
+
+TEST(ServedMapTest, LimitsAreWholeNumbersFromOneToXmlRpcsLargestInt) {
+  const LimitParameter& limit = Limit("max_segments");
+  for (const auto& [text, value] : std::vector<std::pair<std::string, std::uint64_t>>{
+           {"1", 1}, {"437", 437}, {"2147483647", 2147483647}, {"1e6", 1000000}, {"8.0", 8}}) {
+    const StatusOr<std::uint64_t> parsed = ParseLimit(limit, text);
+    ASSERT_TRUE(parsed.ok()) << text << ": " << parsed.status().message();
+    EXPECT_EQ(*parsed, value) << text;
+  }
+  for (const std::string text :
+       {"0", "-3", "2.5", "abc", "", "12x", "2147483648", "1e300", "nan", "inf", "true"}) {
+    const StatusOr<std::uint64_t> parsed = ParseLimit(limit, text);
+    ASSERT_FALSE(parsed.ok()) << text;
+    EXPECT_EQ(parsed.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_EQ(parsed.status().message(),
+              "~max_segments must be a whole number from 1 to 2147483647 (wall segments per "
+              "chunk), not '" +
+                  text + "'");
+  }
+  EXPECT_EQ(*LimitFromNumber(Limit("max_cells"), 2147483647.0), 2147483647u);
+  for (const auto& [value, shown] : std::vector<std::pair<double, std::string>>{
+           {0.0, "0"}, {-1.0, "-1"}, {0.1, "0.1"}, {2.5, "2.5"}, {2147483648.0, "2147483648"}}) {
+    const StatusOr<std::uint64_t> parsed = LimitFromNumber(Limit("max_cells"), value);
+    ASSERT_FALSE(parsed.ok()) << shown;
+    EXPECT_EQ(parsed.status().message(),
+              "~max_cells must be a whole number from 1 to 2147483647 (cells), not " + shown);
+  }
+}
+
+// What an .lmap file holds, as LoadLmapVectors reads it.
+struct FileCounts {
+  std::uint64_t cells = 0;
+  std::uint64_t walls = 0;
+  std::uint64_t segments = 0;
+  std::uint64_t rooms = 0;
+  std::uint64_t objects = 0;
+};
+
+FileCounts CountsOf(const std::string& path) {
+  const StatusOr<LmapVectors> vectors = LoadLmapVectors(path);
+  EXPECT_TRUE(vectors.ok()) << path << ": " << vectors.status().message();
+  if (!vectors.ok()) return {};
+  FileCounts counts;
+  counts.cells = std::uint64_t(vectors->width) * std::uint64_t(vectors->height);
+  counts.walls = vectors->walls.size();
+  for (const WallPolyline& wall : vectors->walls) counts.segments += wall.points.size() - 1;
+  counts.rooms = vectors->rooms.size();
+  counts.objects = vectors->furniture.size();
+  return counts;
+}
+
+// Expects LoadServedMap(path, window, limits) to fail as a map over a limit,
+// naming the file and `limit` with its value.
+void ExpectOverTheLimit(const std::string& path, const std::optional<Window>& window,
+                        const DecodeLimits& limits, const std::string& limit) {
+  const StatusOr<Grid> grid = LoadServedMap(path, window, limits);
+  ASSERT_FALSE(grid.ok()) << limit;
+  EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted) << grid.status().message();
+  EXPECT_NE(grid.status().message().find(path), std::string::npos) << grid.status().message();
+  EXPECT_NE(grid.status().message().find(limit), std::string::npos) << grid.status().message();
+}
+
+// Each limit one below what the file holds refuses it, and the limits at
+// its counts load it as the defaults do: for the layers in one section
+// (depot_v2), in 64-cell sections and in chunks of their own (2.0), whole
+// and through a window (which decodes only its tiles, yet the limits count
+// the whole file).
+TEST(ServedMapTest, LmapOverALimitIsRefusedNamingIt) {
+  for (const std::string name : {"depot_v2", "depot_v2_2_sections_64", "depot_v2_0"}) {
+    const std::string path = testing::SourceDir() + "/tests/data/lmap/" + name + ".lmap";
+    const FileCounts counts = CountsOf(path);
+    // 604 x 307 cells; 320 walls of 437 segments (2.0: 275 of 370), 8
+    // rooms, 33 furniture objects.
+    ASSERT_GT(counts.walls, 200u) << path;
+    ASSERT_GT(counts.segments, counts.walls) << path;
+    ASSERT_EQ(counts.rooms, 8u) << path;
+    ASSERT_EQ(counts.objects, 33u) << path;
+    for (const std::optional<Window>& window :
+         {std::optional<Window>(), std::optional<Window>(Window{5.0, 2.0, 12.5, 9.0})}) {
+      SCOPED_TRACE(path + (window ? " with a window" : ""));
+      const StatusOr<Grid> expected = LoadServedMap(path, window);
+      ASSERT_TRUE(expected.ok()) << expected.status().message();
+      DecodeLimits at_counts;
+      at_counts.max_cells = counts.cells;
+      at_counts.max_segments = counts.segments;
+      at_counts.max_objects = counts.objects;
+      const StatusOr<Grid> grid = LoadServedMap(path, window, at_counts);
+      ASSERT_TRUE(grid.ok()) << grid.status().message();
+      EXPECT_EQ(grid->cells(), expected->cells());
+
+      DecodeLimits limits = at_counts;
+      limits.max_segments = counts.walls - 1;  // fewer than the walls
+      ExpectOverTheLimit(path, window, limits,
+                         "~max_segments " + std::to_string(limits.max_segments));
+      // Fewer than the segments, as many as the walls. (The decoder counts
+      // the segments of 64-cell sections per band of sections it reads,
+      // not per chunk: depot_v2_2_sections_64 decodes.)
+      limits.max_segments = counts.segments - 1;
+      if (name != "depot_v2_2_sections_64") {
+        ExpectOverTheLimit(path, window, limits,
+                           "~max_segments " + std::to_string(limits.max_segments));
+      }
+      limits = at_counts;
+      limits.max_objects = counts.objects - 1;  // the furniture objects
+      ExpectOverTheLimit(path, window, limits, "~max_objects 32");
+      limits.max_objects = counts.rooms - 1;  // the rooms too
+      ExpectOverTheLimit(path, window, limits, "~max_objects 7");
+      limits = at_counts;
+      limits.max_cells = counts.cells - 1;
+      ExpectOverTheLimit(path, window, limits, "~max_cells 185427");
+    }
+  }
+}
+
+// ~max_cells applies to a map image (whole, with a window too), and is the
+// only limit named.
+TEST(ServedMapTest, MapImageOverMaxCellsIsRefused) {
+  const std::string yaml = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  const StatusOr<Grid> whole = LoadRosMap(yaml);
+  ASSERT_TRUE(whole.ok()) << whole.status().message();
+  const std::uint64_t cells = whole->cells().size();
+  ASSERT_EQ(cells, 604u * 307u);
+  for (const std::optional<Window>& window :
+       {std::optional<Window>(), std::optional<Window>(Window{5.0, 2.0, 12.5, 9.0})}) {
+    DecodeLimits limits;
+    limits.max_cells = cells;
+    limits.max_segments = 1;  // an image has none
+    limits.max_objects = 1;
+    EXPECT_TRUE(LoadServedMap(yaml, window, limits).ok());
+    limits.max_cells = cells - 1;
+    const StatusOr<Grid> grid = LoadServedMap(yaml, window, limits);
+    ASSERT_FALSE(grid.ok());
+    EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted);
+    EXPECT_NE(grid.status().message().find("(limits: ~max_cells 185427)"), std::string::npos)
+        << grid.status().message();
+  }
+}
+
+// CheckServedMap refuses what LoadServedMap refuses from the header alone:
+// a map over ~max_cells, a window past the map; the layers' limits are left
+// to the decode.
+TEST(ServedMapTest, CheckServedMapChecksTheHeaderAndTheWindow) {
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const std::string yaml = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  for (const std::string& path : {lmap, yaml}) {
+    SCOPED_TRACE(path);
+    DecodeLimits limits;
+    limits.max_cells = 604 * 307;
+    limits.max_segments = 1;
+    limits.max_objects = 1;
+    const Status ok = CheckServedMap(path, Window{5.0, 2.0, 12.5, 9.0}, limits);
+    EXPECT_TRUE(ok.ok()) << ok.message();
+    limits.max_cells = 604 * 307 - 1;
+    const Status over = CheckServedMap(path, std::nullopt, limits);
+    EXPECT_EQ(over.code(), StatusCode::kResourceExhausted) << over.message();
+    EXPECT_NE(over.message().find(path), std::string::npos) << over.message();
+    EXPECT_NE(over.message().find("(limits: ~max_cells 185427)"), std::string::npos)
+        << over.message();
+    const Status past = CheckServedMap(path, Window{-5, -5, 1, 1}, DecodeLimits{});
+    EXPECT_EQ(past.code(), StatusCode::kInvalidArgument);
+    EXPECT_EQ(past.message(), LoadServedMap(path, Window{-5, -5, 1, 1}).status().message());
+  }
+  const std::string missing = testing::MakeTempDir("served") + "/missing.lmap";
+  const Status status = CheckServedMap(missing, std::nullopt);
+  EXPECT_EQ(status.code(), StatusCode::kNotFound) << status.message();
+  EXPECT_NE(status.message().find(missing), std::string::npos) << status.message();
 }
 
 }  // namespace
