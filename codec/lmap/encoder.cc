@@ -4,7 +4,7 @@
 // vector layers (LAYR: what a viewer reads without the raster), then the cells in tiles: CELL, the
 // exact cells, each tile coded against the hints the layers draw into it (a cell on a wall is cheap
 // to confirm as occupied, one inside a room as free), or, within a tolerance, BLKS, the map drawn
-// in blocks of 2 x 2 cells (tolerance/tolerance_blocks.cc says why 2 at every T).
+// in blocks of T + 1 cells a side (tolerance/tolerance_blocks.cc says why).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

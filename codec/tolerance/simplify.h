@@ -12,7 +12,7 @@ namespace linemap {
 
 // The grid a file saved within `tolerance_cells` (0..kMaxToleranceCells;
 // else invalid argument) decodes to when its cells are in blocks: the map
-// drawn in blocks of 2 x 2 cells, with cells given back their original
+// drawn in blocks of T + 1 cells a side, with cells given back their original
 // value wherever a guarantee of linemap/tolerance.h would fail (FitBlockCells,
 // tolerance_blocks.h), so CheckTolerance(grid, result, tolerance_cells)
 // .Holds() is true. tolerance_cells == 0 returns the grid unchanged.

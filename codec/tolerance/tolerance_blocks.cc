@@ -1,4 +1,4 @@
-// FitBlockCells(): the map in blocks of 2 x 2 cells, mended where a
+// FitBlockCells(): the map in blocks of T + 1 cells a side, mended where a
 // guarantee of linemap/tolerance.h fails.
 #include "codec/tolerance/tolerance_blocks.h"
 
@@ -22,18 +22,35 @@ using tolerance_internal::ChebyshevDistance;
 // which then get the exact cells.
 constexpr int kMaxRounds = 96;
 
-// The block side: 2 at every tolerance. Any side up to t + 1 keeps every
-// cell within t of its block, but a side of s lets an obstacle grow by
-// s - 1 cells, and a plan that turns around the end of a grown wall (a
-// U-turn through a doorway) is 2 (s - 1) steps longer, which the plan
-// checks find and mend cell by cell: the larger the side, the more cells
-// they give back. Larger tolerances still pay: a free cell may then be up
-// to t cells from a free block, so fewer cells need restoring. Measured
-// (bytes of the cells-only file, tsc, avz, warehouse, kth, fetch 9_16_15,
-// when plans still had 2 steps of slack): side 3 at t = 3 is 0.89-1.01x
-// side 2, but its plans failed the tests' own start / goal pairs on 2 of
-// 12 random plans and on kth.
-constexpr int kBlockSide = 2;
+// The block side: T + 1 cells, the largest that keeps every cell within T
+// of its block's value (an occupied block grows an obstacle by at most T
+// cells; the format allows sides up to 5, spec 6.4). A larger side codes
+// fewer blocks but lets walls grow further, which narrows doorways and
+// corridors and lengthens the plans that turn around a wall's end; the plan
+// checks find those and give the free cells back, each at about 5 bits.
+// Fewer blocks win: bytes of the cells-only file at T = 3 (willow-full
+// 0.05, fetch 4_26_15, tsc, cs_lg, mrpt map1) with sides 2 / 3 / 4:
+// 17,909 / 15,396 / 14,686, 6,940 / 5,545 / 5,306, 13,297 / 11,584 /
+// 11,233, 1,385 / 1,068 / 1,034, 4,549 / 3,955 / 3,794; at T = 2 side 3
+// saves 7-15 % against 2, at T = 4 side 5 22-36 %. (nav2 depot, a clean
+// plan, is smallest with side 3 at T = 3: 706 / 557 / 627.)
+int BlockSide(int tolerance_cells) { return std::min(tolerance_cells + 1, kMaxBlockCells); }
+
+// How far the encoder's check of the plans beside a change reaches, for
+// blocks of `block_side` cells: kLocalPlanSteps (the guarantee's own
+// reach) for side 2, twice that beyond. A wall grown by more than a cell
+// lengthens plans too long for 16 steps to see whole, between starts no
+// sampled plan tries. Measured on ../shared/maps with sides 3 / 4 / 5 at
+// T = 2 / 3 / 4 (`build/bench_tolerance`: 24 strided starts x ~1000 goals
+// per map that the encoder never samples, about 607,000 plans per T):
+// with 16 steps 9 / 58 / 102 plans differed by more than 3 % (side 2 at
+// every T: 5 / 5 / 1), with 32 steps 0 / 19 / 33, for files under 1 %
+// larger; 16 steps per cell of side (64 and 80 at T = 3 and 4) took tsc's
+// T = 4 save from 12 to 111 s. The search is about (2 steps + 1)^2 cells
+// from each cell beside a change.
+int LocalCheckSteps(int block_side) {
+  return block_side <= kMinBlockCells ? kLocalPlanSteps : 2 * kLocalPlanSteps;
+}
 
 // Whether the free cells of the block at (x0, y0) (side f) and of the ring
 // of cells around it are one 4-connected piece inside that window. If so,
@@ -240,7 +257,8 @@ bool MendRound(Mender* m, int t, Grid* checked) {
   // something (tsc at T = 1: 5.1 s against 4.3 in the same build).
   std::vector<std::size_t> culprits = tolerance_internal::PlanCulprits(m->original, m->decoded);
   const std::vector<std::size_t> local = tolerance_internal::LocalDetourCulprits(
-      m->original, m->decoded, kLocalPlanSteps, checked->empty() ? nullptr : checked);
+      m->original, m->decoded, LocalCheckSteps(m->b->block_cells),
+      checked->empty() ? nullptr : checked);
   *checked = m->decoded;
   culprits.insert(culprits.end(), local.begin(), local.end());
   if (culprits.empty()) return true;
@@ -255,7 +273,7 @@ StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells) {
     return InvalidArgumentError("tolerance " + std::to_string(tolerance_cells) +
                                 " cells is outside 1.." + std::to_string(kMaxToleranceCells));
   }
-  BlockCells b = BlocksOf(grid, kBlockSide);
+  BlockCells b = BlocksOf(grid, BlockSide(tolerance_cells));
   Grid checked;
   for (int round = 0; round < kMaxRounds; ++round) {
     const Grid decoded = ComposeBlockCells(grid, b);

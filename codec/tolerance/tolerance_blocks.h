@@ -1,5 +1,5 @@
 // The cells of a file saved within a tolerance of T cells: the map drawn in
-// blocks of 2 x 2 cells (BlockCells, cells/block_tiles.h), with cells given back
+// blocks of T + 1 cells a side (BlockCells, cells/block_tiles.h), with cells given back
 // their original value wherever a block breaks one of the guarantees of
 // linemap/tolerance.h.
 #ifndef LINEMAP_CODEC_TOLERANCE_TOLERANCE_BLOCKS_H_

@@ -47,9 +47,9 @@ const CommandSpec kEncodeSpec = {
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)", /*output=*/true},
         {"--tolerance", "T",
          "largest distance (cells, 0..4) by which the decode may differ: 0 exact (the default); "
-         "1..4 draw the map in 2 x 2-cell blocks (a version 2.3 file), keeping cells exact "
-         "where obstacles or free space would move more than T, two free regions would join "
-         "or split, or a plan would change by more than 3 %"},
+         "1..4 draw the map in blocks of T + 1 cells a side (a version 2.3 file), keeping cells "
+         "exact where obstacles or free space would move more than T, two free regions would "
+         "join or split, or a plan would change by more than 3 %"},
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
         {"--max-tolerance-cells", "N",
          "refuse to save a map of more than N cells within a tolerance (default 67108864 = "

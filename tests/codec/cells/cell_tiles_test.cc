@@ -193,11 +193,12 @@ TEST(CellTilesTest, TallTilesPickTheirModelOnTheirFirstRows) {
   EXPECT_NE(expected[0], 0u);
 }
 
-// A file's cells chunk: its type (CELL or BLKS) and the tile side it
-// declares (BLKS: after its block side); empty and 0 when it has neither.
+// A file's cells chunk: its type (CELL or BLKS), its block side (BLKS) and
+// the tile side it declares; empty and 0 when it has neither.
 struct CellsChunk {
   std::string type;
   int tile_side = 0;
+  int block_side = 0;
 };
 
 CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
@@ -213,12 +214,15 @@ CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
     EXPECT_TRUE(body.ok()) << body.status().ToString();
     if (!body.ok()) return {chunk.type, 0};
     ByteCursor cursor(*body);
+    int block_side = 0;
     if (blocks) {
-      EXPECT_TRUE(cursor.ReadU8("block side").ok());
+      StatusOr<std::uint8_t> f = cursor.ReadU8("block side");
+      EXPECT_TRUE(f.ok());
+      block_side = f.ok() ? *f : 0;
     }
     StatusOr<std::uint64_t> side = cursor.ReadVarint("tile side");
     EXPECT_TRUE(side.ok());
-    return {chunk.type, side.ok() ? static_cast<int>(*side) : 0};
+    return {chunk.type, side.ok() ? static_cast<int>(*side) : 0, block_side};
   }
   return {};
 }
@@ -244,7 +248,8 @@ Grid ScannedCorridor(int width) {
 
 // Tiles of 1024 cells up to 4096 a side and of 512 beyond (windows of huge
 // maps read less), exact or within a tolerance; a side the caller asks for
-// is kept.
+// is kept. Within a tolerance of T the blocks are T + 1 cells a side (spec
+// 9), and the tile side the largest multiple of it that does not exceed.
 TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
   const struct {
     int width;
@@ -252,9 +257,9 @@ TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
     int requested;
     int expected;
   } cases[] = {
-      {4096, 0, 0, 1024},  {4097, 0, 0, 512}, {4097, 1, 0, 512},   {4096, 1, 0, 1024},
-      {4097, 0, 300, 300}, {100, 0, 64, 64},  {4097, 1, 301, 300},  // within a tolerance: a
-                                                                    // multiple of the block side
+      {4096, 0, 0, 1024},  {4097, 0, 0, 512},  {4097, 1, 0, 512},   {4096, 1, 0, 1024},
+      {4097, 0, 300, 300}, {100, 0, 64, 64},   {4097, 1, 301, 300}, {4096, 2, 0, 1023},
+      {4097, 3, 0, 512},   {4096, 4, 0, 1020}, {4097, 4, 0, 510},   {4097, 2, 301, 300},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE("width " + std::to_string(c.width) + " tolerance " + std::to_string(c.tolerance) +
@@ -269,6 +274,7 @@ TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
     const CellsChunk chunk = CellsChunkOf(*file);
     EXPECT_EQ(chunk.type, c.tolerance == 0 ? kCellChunk : kBlockChunk);
     EXPECT_EQ(chunk.tile_side, c.expected);
+    EXPECT_EQ(chunk.block_side, c.tolerance == 0 ? 0 : c.tolerance + 1);
     StatusOr<Grid> decoded = DecodeLmap(*file);
     ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
     if (c.tolerance == 0) {
