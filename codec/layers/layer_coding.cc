@@ -373,9 +373,13 @@ void EncodeWallItems(RangeEncoder* enc, const WallPolyline* walls, std::size_t c
   for (std::size_t i = 0; i < count; ++i) EncodePath(enc, m.get(), walls[i].points, 2, &state);
 }
 
+std::uint64_t MaxWallPoints(std::uint64_t max_segments, std::uint64_t walls) {
+  return max_segments > UINT64_MAX - walls ? UINT64_MAX : max_segments + walls;
+}
+
 Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
-                       std::uint64_t max_points, std::uint64_t* points, CellIndex origin,
-                       std::vector<WallPolyline>* out) {
+                       std::uint64_t max_segments, std::uint64_t max_points, std::uint64_t* points,
+                       CellIndex origin, std::vector<WallPolyline>* out) {
   auto m = std::make_unique<PathModels>();
   PathState state = StartState(origin);
   for (std::uint64_t w = 0; w < count; ++w) {
@@ -383,7 +387,8 @@ Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
         DecodePath(dec, m.get(), bounds, 2, max_points, points, &state);
     if (!path.ok()) {
       return path.status().code() == StatusCode::kResourceExhausted
-                 ? ResourceExhaustedError("wall segments exceed the segment limit")
+                 ? ResourceExhaustedError("wall segments exceed the segment limit of " +
+                                          std::to_string(max_segments))
                  : path.status();
     }
     out->push_back({std::move(*path)});
@@ -483,11 +488,9 @@ StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>&
   return DecodeChunkBody<WallPolyline>(
       body, "WALL", "wall count", "walls", limits.max_segments, "segment",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<WallPolyline>* walls) {
-        // Points, against the segment limit plus one point per wall (a wall
-        // of k + 1 segments has k + 2 points).
         std::uint64_t points = 0;
-        return DecodeWallItems(dec, count, LayerBounds::Grid(width, height),
-                               limits.max_segments + count, &points, {0, 0}, walls);
+        return DecodeWallItems(dec, count, LayerBounds::Grid(width, height), limits.max_segments,
+                               MaxWallPoints(limits.max_segments, count), &points, {0, 0}, walls);
       });
 }
 

@@ -45,12 +45,19 @@ void EncodeRoomItems(RangeEncoder* enc, const RoomOutline* rooms, std::size_t co
                      CellIndex origin);
 void EncodeFurnitureItems(RangeEncoder* enc, const FurnitureObject* furniture, std::size_t count,
                           CellIndex origin);
+// The points of `walls` walls that hold at most `max_segments` segments
+// in all: one more per wall (a wall of k + 1 segments has k + 2 points),
+// saturating at 2^64 - 1 rather than wrapping (a caller may lift the limit
+// to 2^64 - 1).
+std::uint64_t MaxWallPoints(std::uint64_t max_segments, std::uint64_t walls);
+
 // `count` items appended to `out`; points outside `bounds` are corrupt.
-// Walls count their points in `points` against `max_points`; objects are
+// Walls count their points in `points` against `max_points`
+// (MaxWallPoints of `max_segments`, which errors name); objects are
 // numbered from `first_id`.
 Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
-                       std::uint64_t max_points, std::uint64_t* points, CellIndex origin,
-                       std::vector<WallPolyline>* out);
+                       std::uint64_t max_segments, std::uint64_t max_points, std::uint64_t* points,
+                       CellIndex origin, std::vector<WallPolyline>* out);
 Status DecodeRoomItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds& bounds,
                        const DecodeLimits& limits, LayerTotals* totals, CellIndex origin,
                        bool expand_chains, std::vector<RoomOutline>* out);

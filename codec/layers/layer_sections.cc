@@ -213,8 +213,8 @@ Status DecodeSection(const std::uint8_t* data, const LayerSection& e, int width,
   const std::size_t size = static_cast<std::size_t>(e.stream_bytes);
   RangeDecoder dec(data + e.stream_offset, size);
   const CellIndex origin{e.c0, e.r0};
-  LINEMAP_RETURN_IF_ERROR(
-      DecodeWallItems(&dec, e.walls, bounds, max_points, points, origin, &out->walls));
+  LINEMAP_RETURN_IF_ERROR(DecodeWallItems(&dec, e.walls, bounds, limits.max_segments, max_points,
+                                          points, origin, &out->walls));
   const std::size_t first_room = out->rooms.size();
   LINEMAP_RETURN_IF_ERROR(
       DecodeRoomItems(&dec, e.rooms, bounds, limits, totals, origin, expand_chains, &out->rooms));
@@ -234,12 +234,7 @@ StatusOr<DecodedLayers> DecodeLayerSections(const std::vector<std::uint8_t>& bod
                                             const LayerSectionTable& table, int width, int height,
                                             const DecodeLimits& limits, bool expand_chains,
                                             const CellRect* region) {
-  // Points against the segment limit plus one point per wall (a wall of
-  // k + 1 segments has k + 2 points); the table kept the walls within the
-  // limit, so the sum does not wrap unless the limit is 2^64 - 1.
-  const std::uint64_t max_points = limits.max_segments > UINT64_MAX - table.walls
-                                       ? UINT64_MAX
-                                       : limits.max_segments + table.walls;
+  const std::uint64_t max_points = MaxWallPoints(limits.max_segments, table.walls);
   std::uint64_t points = 0;
   LayerTotals totals;
   DecodedLayers out;

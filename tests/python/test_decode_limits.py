@@ -82,15 +82,27 @@ READERS = {
 @pytest.mark.parametrize(
     "name,count,message",
     [
-        ("max_segments", SEGMENTS, "segment limit"),
+        ("max_segments", SEGMENTS, "segment limit of 436"),
         ("max_objects", OBJECTS, "object limit of 32"),
-        ("max_cells", CELLS, "limit"),
+        ("max_cells", CELLS, "limit of 185427 cells"),
     ],
 )
 def test_every_reader_holds_the_file_to_the_limits(reader, name, count, message):
     READERS[reader](linemap.DecodeLimits(**{name: count}))  # at the limit: read
     with pytest.raises(MemoryError, match=message):
         READERS[reader](linemap.DecodeLimits(**{name: count - 1}))
+
+
+@pytest.mark.parametrize(
+    "fixture", ["depot_v2.lmap", "depot_v2_0.lmap", "depot_v2_2_sections_64.lmap"]
+)
+def test_the_largest_segment_limit_reads_every_layout(fixture):
+    # 2^64 - 1 plus one point per wall used to wrap to a handful of points
+    # in a 2.0 WALL chunk, which then refused every file with walls.
+    path = DEPOT.with_name(fixture)
+    limits = linemap.DecodeLimits(max_segments=2**64 - 1)
+    assert len(linemap.vectors(path, limits=limits)["walls"]) > 0
+    assert np.array_equal(linemap.load(path, limits=limits).cells, linemap.load(path).cells)
 
 
 def test_max_cells_and_limits_together_are_refused():

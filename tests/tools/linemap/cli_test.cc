@@ -74,7 +74,7 @@ TEST(CliTest, LayerLimitsApplyToEveryCommandReadingAnLmap) {
     int count;
     const char* message;
   };
-  for (const Limit& limit : {Limit{"--max-segments", 437, "exceed the segment limit"},
+  for (const Limit& limit : {Limit{"--max-segments", 437, "exceed the segment limit of 436"},
                              Limit{"--max-objects", 33, "exceed the object limit of 32"}}) {
     for (std::vector<std::string> argv : commands) {
       argv.insert(argv.end(), {limit.option, std::to_string(limit.count - 1)});
