@@ -225,8 +225,36 @@ LayerIndex::LayerIndex(const std::vector<WallPolyline>& walls,
   for (const FurnitureObject& object : furniture) {
     AddOutline(object.polygon, kHintFurniture, kHintFurniture, 0);
   }
-  segment_buckets_ = MakeBuckets(segments_);
-  outline_buckets_ = MakeBuckets(outlines_);
+  bool first = true;
+  const auto extend = [&](const BoundingBox& box) {
+    extent_ = first ? box
+                    : BoundingBox{std::min(extent_.min_col, box.min_col),
+                                  std::min(extent_.min_row, box.min_row),
+                                  std::max(extent_.max_col, box.max_col),
+                                  std::max(extent_.max_row, box.max_row)};
+    first = false;
+  };
+  for (const Segment& s : segments_) extend(s.box());
+  for (const Outline& o : outlines_) extend(o.box());
+}
+
+bool LayerIndex::Covers(CellRect t) const {
+  return extent_.min_col >= t.x0 && extent_.max_col < t.x1 && extent_.min_row >= t.y0 &&
+         extent_.max_row < t.y1;
+}
+
+template <typename Item, typename Draw>
+void LayerIndex::ForItemsMeeting(const std::vector<Item>& list, const Buckets& buckets, CellRect t,
+                                 Draw&& draw) const {
+  if (Covers(t)) {
+    for (std::uint32_t i = 0; i < list.size(); ++i) {
+      if (Overlaps(list[i].box(), t)) draw(i);
+    }
+    return;
+  }
+  for (std::uint32_t i : ItemsNear(buckets, t)) {
+    if (Overlaps(list[i].box(), t)) draw(i);
+  }
 }
 
 void LayerIndex::AddOutline(const std::vector<CellIndex>& polygon, std::uint8_t fill_bits,
@@ -420,23 +448,26 @@ void LayerIndex::DrawOutline(const Outline& outline, CellRect t, std::uint8_t* o
 void LayerIndex::DrawTileHints(CellRect t, std::uint8_t* out, std::ptrdiff_t stride) const {
   const int tw = t.x1 - t.x0;
   for (int r = t.y0; r < t.y1; ++r) std::memset(out + (r - t.y0) * stride, 0, tw);
-  Scratch scratch;
-  for (std::uint32_t i : ItemsNear(outline_buckets_, t)) {
-    const Outline& outline = outlines_[i];
-    if (Overlaps(outline.box(), t)) DrawOutline(outline, t, out, stride, &scratch);
+  if (!Covers(t)) {
+    std::call_once(buckets_once_, [this] {
+      segment_buckets_ = MakeBuckets(segments_);
+      outline_buckets_ = MakeBuckets(outlines_);
+    });
   }
-  for (std::uint32_t i : ItemsNear(segment_buckets_, t)) {
+  Scratch scratch;
+  ForItemsMeeting(outlines_, outline_buckets_, t,
+                  [&](std::uint32_t i) { DrawOutline(outlines_[i], t, out, stride, &scratch); });
+  ForItemsMeeting(segments_, segment_buckets_, t, [&](std::uint32_t i) {
     const Segment& s = segments_[i];
-    if (!Overlaps(s.box(), t)) continue;
     const CellIndex a = s.a(), b = s.b();
     if (a == b) {
       // Inside: its box overlaps the tile.
       out[(a.row - t.y0) * stride + (a.col - t.x0)] |= kHintWall;
-      continue;
+      return;
     }
     const EdgeRaster edge(a, b);
     edge.MarkInside(edge.n(), t, out, stride, 0, kHintWall);
-  }
+  });
 }
 
 std::vector<std::uint8_t> LayerIndex::TileHints(CellRect t) const {
