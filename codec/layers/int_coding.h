@@ -45,9 +45,21 @@ inline bool DecodeUInt(RangeDecoder* dec, UIntModel* m, std::uint64_t* v) {
     if (++n > kMaxIntBits) return false;
   }
   std::uint64_t x = 1;
-  for (int j = n - 1; j >= 0; --j) {
-    x = (x << 1) | static_cast<std::uint64_t>(dec->Decode(j == n - 1 ? &m->first[n] : &m->rest[n]));
+  if (n == 0) {
+    *v = 0;
+    return true;
   }
+  x = (x << 1) | static_cast<std::uint64_t>(dec->Decode(&m->first[n]));
+  // The bits after the first share one model: it is held in a local for
+  // them and stored once, rather than each update being stored and loaded
+  // back by the next bit.
+  BitModel rest = m->rest[n];
+  for (int j = n - 2; j >= 0; --j) {
+    const int bit = dec->DecodeWithProbability(rest.p());
+    rest.Update(bit);
+    x = (x << 1) | static_cast<std::uint64_t>(bit);
+  }
+  m->rest[n] = rest;
   *v = x - 1;
   return true;
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "codec/layers/raster.h"
@@ -111,6 +112,62 @@ TEST(LayerHintsTest, TilesEqualTheSpecDrawingOfTheWholeGrid) {
                         whole[static_cast<std::size_t>(r) * width + c])
                   << "round " << round << " tile " << tile_size << " cell " << c << "," << r;
             }
+          }
+        }
+      }
+    }
+  }
+}
+
+// The index makes its buckets for the first tile that does not cover every
+// item: tiles drawn from several threads at once, with the layers in one
+// part of the grid (tiles that cover them all look at every item, the
+// others at the buckets), equal the spec's drawing.
+TEST(LayerHintsTest, TilesDrawnFromThreadsEqualTheSpecDrawing) {
+  std::mt19937 rng(23);
+  for (int round = 0; round < 8; ++round) {
+    const int width = 200 + static_cast<int>(rng() % 500);
+    const int height = 200 + static_cast<int>(rng() % 500);
+    // The layers' part: from a corner to a third of the grid or all of it.
+    const int part_w = width / 3 + static_cast<int>(rng() % (width - width / 3 + 1));
+    const int part_h = height / 3 + static_cast<int>(rng() % (height - height / 3 + 1));
+    std::vector<WallPolyline> walls;
+    std::vector<RoomOutline> rooms;
+    std::vector<FurnitureObject> furniture;
+    for (int i = 0; i < 10; ++i) {
+      rooms.push_back({0, RoomKind::kRoom, RandomPolygon(rng, part_w, part_h), {}});
+      furniture.push_back({0, -1, RandomPolygon(rng, part_w, part_h), {}});
+      walls.push_back({RandomPolygon(rng, part_w, part_h)});
+    }
+    const std::vector<std::uint8_t> whole = SpecHints(width, height, walls, rooms, furniture);
+    for (int tile_size : {32, 128, 512}) {
+      const LayerIndex index(walls, rooms, furniture);
+      std::vector<CellRect> tiles;
+      for (int y0 = 0; y0 < height; y0 += tile_size) {
+        for (int x0 = 0; x0 < width; x0 += tile_size) {
+          tiles.push_back(
+              {x0, y0, std::min(width, x0 + tile_size), std::min(height, y0 + tile_size)});
+        }
+      }
+      std::vector<std::vector<std::uint8_t>> drawn(tiles.size());
+      constexpr int kThreads = 4;
+      std::vector<std::thread> threads;
+      for (int k = 0; k < kThreads; ++k) {
+        threads.emplace_back([&, k] {
+          for (std::size_t i = static_cast<std::size_t>(k); i < tiles.size(); i += kThreads) {
+            drawn[i] = index.TileHints(tiles[i]);
+          }
+        });
+      }
+      for (std::thread& t : threads) t.join();
+      for (std::size_t i = 0; i < tiles.size(); ++i) {
+        const CellRect& t = tiles[i];
+        const int tw = t.x1 - t.x0;
+        for (int r = t.y0; r < t.y1; ++r) {
+          for (int c = t.x0; c < t.x1; ++c) {
+            ASSERT_EQ(drawn[i][static_cast<std::size_t>(r - t.y0) * tw + (c - t.x0)],
+                      whole[static_cast<std::size_t>(r) * width + c])
+                << "round " << round << " tile " << tile_size << " cell " << c << "," << r;
           }
         }
       }
