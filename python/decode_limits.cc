@@ -94,7 +94,8 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
   AddLimit(cls, "max_inflated_bytes", &DecodeLimits::max_inflated_bytes, 1, UINT64_MAX,
            "Bytes of one inflated (zlib) payload (default 2^28).");
   AddLimit(cls, "max_segments", &DecodeLimits::max_segments, 1, UINT64_MAX,
-           "Wall segments per chunk (default 2^24, what a 2^30-cell SLAM map may need).");
+           "Wall segments per chunk, or per band of layer sections read together (spec 7.3; "
+           "default 2^24, what a 2^30-cell SLAM map may need).");
   AddLimit(cls, "max_chain_length", &DecodeLimits::max_chain_length, 1, UINT64_MAX,
            "Cells of one room or furniture chain, and of all the rooms' chains (and apart, "
            "all the objects') (default 2^26).");

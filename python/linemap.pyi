@@ -5,7 +5,7 @@
 # (PEP 561; mypy reads installed modules' stubs only from there). tests/python/test_stubs.py checks that every name and
 # parameter here matches what the built module reports.
 import os
-from typing import Any, Optional, Sequence, Tuple, Union
+from typing import Any, ClassVar, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -23,6 +23,7 @@ _Source = Union[_Path, _Buffer]
 _Window = Tuple[int, int, int, int]
 
 class DecodeLimits:
+    __hash__: ClassVar[None]  # type: ignore[assignment]  # __eq__ compares the limits
     def __init__(
         self,
         *,

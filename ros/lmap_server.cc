@@ -38,7 +38,8 @@ constexpr const char* kUsage =
     "  maps over a limit are refused; each a whole number from 1 to 2147483647:\n"
     "  ~max_cells N      cells of the whole map, also of a map image, with a ~window too\n"
     "                    (default 1073741824 = 2^30)\n"
-    "  ~max_segments N   wall segments per chunk of an .lmap file (default 16777216 = 2^24)\n"
+    "  ~max_segments N   wall segments per chunk of an .lmap file, or per band of layer\n"
+    "                    sections read together (default 16777216 = 2^24)\n"
     "  ~max_objects N    rooms, and furniture objects, per .lmap file (default 1048576 = 2^20)\n"
     "publishes map (latched), map_metadata (latched); serves static_map\n";
 // The defaults kUsage gives.

@@ -47,7 +47,8 @@ struct LimitParameter {
 inline constexpr std::int64_t kMaxLimitValue = 2147483647;
 
 // ~max_cells (cells of the whole map, also of a map image), ~max_segments
-// (wall segments per chunk of an .lmap file) and ~max_objects (rooms, and
+// (wall segments per chunk of an .lmap file, or per band of layer sections
+// read together) and ~max_objects (rooms, and
 // furniture objects, per .lmap file), in that order.
 std::span<const LimitParameter> LimitParameters();
 

@@ -10,8 +10,8 @@ namespace linemap::cli {
 std::vector<OptionSpec> LayerLimitOptionSpecs() {
   return {
       {"--max-segments", "N",
-       "refuse .lmap files with more than N wall segments in a chunk (default 16777216 = 2^24; "
-       "lower it for untrusted files of small maps)"},
+       "refuse .lmap files with more than N wall segments in a chunk, or in the layer sections "
+       "read together (default 16777216 = 2^24; lower it for untrusted files of small maps)"},
       {"--max-objects", "N",
        "refuse .lmap files with more than N rooms, or N furniture objects (default 1048576 = "
        "2^20)"},

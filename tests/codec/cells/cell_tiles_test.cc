@@ -15,6 +15,7 @@
 #include "format/container.h"
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
+#include "linemap/tolerance.h"
 #include "linemap/vector_layers.h"
 #include "tests/testing/test_support.h"
 
@@ -229,7 +230,7 @@ CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
 
 // A corridor `width` cells long between two straight walls, cheap to code
 // however wide, with unknown specks along its walls as a laser scan leaves
-// them: blocks of 2 x 2 cells code it smaller than its exact cells, so a
+// them: blocks of T + 1 cells code it smaller than its exact cells, so a
 // file saved within a tolerance holds BLKS.
 Grid ScannedCorridor(int width) {
   Grid g(width, 40, Cell::kUnknown);
@@ -279,6 +280,8 @@ TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
     ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
     if (c.tolerance == 0) {
       EXPECT_EQ(*decoded, grid);
+    } else {
+      EXPECT_TRUE(CheckTolerance(grid, *decoded, c.tolerance).Holds());
     }
   }
 }
