@@ -139,8 +139,7 @@ namespace {
 
 constexpr LimitParameter kLimitParameters[] = {
     {"max_cells", "cells", &DecodeLimits::max_cells},
-    {"max_segments", "wall segments per chunk, or per band of layer sections",
-     &DecodeLimits::max_segments},
+    {"max_segments", "wall segments per chunk", &DecodeLimits::max_segments},
     {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
 };
 
