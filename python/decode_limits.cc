@@ -4,8 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 #include <string>
+#include <vector>
 
 #include "python/arrays.h"
 
@@ -43,10 +43,40 @@ void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*
 
 constexpr int kMaxThreads = 4096;
 
-// The properties, in the order of the C++ struct (for keywords and repr).
-constexpr const char* kLimitNames[] = {"max_file_bytes",     "max_cells",    "max_chunk_bytes",
-                                       "max_inflated_bytes", "max_segments", "max_chain_length",
-                                       "max_objects",        "max_threads"};
+// The limits that count bytes or items (whole numbers from 1), in the
+// order of the C++ struct; max_threads, an int from 0, follows them.
+struct CountLimit {
+  const char* name;
+  std::uint64_t DecodeLimits::*field;
+  const char* doc;
+};
+constexpr CountLimit kCountLimits[] = {
+    {"max_file_bytes", &DecodeLimits::max_file_bytes,
+     "Bytes of an .lmap file read from a path (default 2^31)."},
+    {"max_cells", &DecodeLimits::max_cells, "Cells of the map, width x height (default 2^30)."},
+    {"max_chunk_bytes", &DecodeLimits::max_chunk_bytes,
+     "Bytes of one chunk's payload (default 2^30)."},
+    {"max_inflated_bytes", &DecodeLimits::max_inflated_bytes,
+     "Bytes of one inflated (zlib) payload (default 2^28)."},
+    {"max_segments", &DecodeLimits::max_segments,
+     "Wall segments per chunk, or per band of layer sections read together (spec 7.3; default "
+     "2^24, what a 2^30-cell SLAM map may need)."},
+    {"max_chain_length", &DecodeLimits::max_chain_length,
+     "Cells of one room or furniture chain, and of all the rooms' chains (and apart, all the "
+     "objects') (default 2^26)."},
+    {"max_objects", &DecodeLimits::max_objects,
+     "Rooms per file, and furniture objects per file (apart) (default 2^20)."},
+};
+constexpr const char* kThreadsName = "max_threads";
+
+// Every property's name, in the order of the C++ struct (for keywords and
+// repr).
+std::vector<const char*> LimitNames() {
+  std::vector<const char*> names;
+  for (const CountLimit& limit : kCountLimits) names.push_back(limit.name);
+  names.push_back(kThreadsName);
+  return names;
+}
 
 }  // namespace
 
@@ -73,9 +103,8 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
             const py::object values[] = {max_file_bytes,     max_cells,    max_chunk_bytes,
                                          max_inflated_bytes, max_segments, max_chain_length,
                                          max_objects,        max_threads};
-            for (std::size_t i = 0; i < std::size(kLimitNames); ++i) {
-              self.attr(kLimitNames[i]) = values[i];
-            }
+            const std::vector<const char*> names = LimitNames();
+            for (std::size_t i = 0; i < names.size(); ++i) self.attr(names[i]) = values[i];
             return self.cast<DecodeLimits>();
           }),
           py::kw_only(), py::arg("max_file_bytes") = d.max_file_bytes,
@@ -85,29 +114,16 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
           py::arg("max_chain_length") = d.max_chain_length, py::arg("max_objects") = d.max_objects,
           py::arg("max_threads") = d.max_threads,
           "The defaults, with the limits given as keywords set.");
-  AddLimit(cls, "max_file_bytes", &DecodeLimits::max_file_bytes, 1, UINT64_MAX,
-           "Bytes of an .lmap file read from a path (default 2^31).");
-  AddLimit(cls, "max_cells", &DecodeLimits::max_cells, 1, UINT64_MAX,
-           "Cells of the map, width x height (default 2^30).");
-  AddLimit(cls, "max_chunk_bytes", &DecodeLimits::max_chunk_bytes, 1, UINT64_MAX,
-           "Bytes of one chunk's payload (default 2^30).");
-  AddLimit(cls, "max_inflated_bytes", &DecodeLimits::max_inflated_bytes, 1, UINT64_MAX,
-           "Bytes of one inflated (zlib) payload (default 2^28).");
-  AddLimit(cls, "max_segments", &DecodeLimits::max_segments, 1, UINT64_MAX,
-           "Wall segments per chunk, or per band of layer sections read together (spec 7.3; "
-           "default 2^24, what a 2^30-cell SLAM map may need).");
-  AddLimit(cls, "max_chain_length", &DecodeLimits::max_chain_length, 1, UINT64_MAX,
-           "Cells of one room or furniture chain, and of all the rooms' chains (and apart, "
-           "all the objects') (default 2^26).");
-  AddLimit(cls, "max_objects", &DecodeLimits::max_objects, 1, UINT64_MAX,
-           "Rooms per file, and furniture objects per file (apart) (default 2^20).");
-  AddLimit(cls, "max_threads", &DecodeLimits::max_threads, 0, kMaxThreads,
+  for (const CountLimit& limit : kCountLimits) {
+    AddLimit(cls, limit.name, limit.field, 1, UINT64_MAX, limit.doc);
+  }
+  AddLimit(cls, kThreadsName, &DecodeLimits::max_threads, 0, kMaxThreads,
            "Threads decoding the tiles of a 2.0 file, the calling one included; 0 (the "
            "default) is one per core. The result does not depend on it.");
   cls.def(py::self == py::self);
   cls.def("__repr__", [](const py::object& self) {
     std::string text = "linemap.DecodeLimits(";
-    for (const char* name : kLimitNames) {
+    for (const char* name : LimitNames()) {
       text += std::string(text.back() == '(' ? "" : ", ") + name + "=" +
               std::string(py::str(self.attr(name)));
     }
