@@ -94,8 +94,8 @@ Status AddLayers(const Grid& grid, const std::vector<std::uint8_t>& file, MapRes
   return Status::Ok();
 }
 
-// Encode and decode CPU time (median of `what.repeats`, in turn with the
-// rival's when given) and peak memory of the default file, as `linemap
+// Encode and decode CPU time (median of `what.repeats`, in blocks beside
+// the rival's when given) and peak memory of the default file, as `linemap
 // encode` / `decode` do it.
 void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const LmapMeasure& what,
               MapResult* result) {
@@ -103,9 +103,9 @@ void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const Lma
   auto decode = [&] { (void)DecodeLmap(file); };
   if (what.rival) {
     const auto [rival_encode, lmap_encode] =
-        TimeRunsInTurn(what.rival->encode, encode, what.repeats);
+        TimeRunsInBlocks(what.rival->encode, encode, what.repeats);
     const auto [rival_decode, lmap_decode] =
-        TimeRunsInTurn(what.rival->decode, decode, what.repeats);
+        TimeRunsInBlocks(what.rival->decode, decode, what.repeats);
     result->figures[what.rival->encode_ms_key] = Median(rival_encode);
     result->figures[what.rival->decode_ms_key] = Median(rival_decode);
     result->figures[key::kLmapEncodeMs] = Median(lmap_encode);

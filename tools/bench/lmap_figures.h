@@ -16,8 +16,8 @@
 namespace linemap::bench {
 
 // A rival codec's encode and decode of the same map (libpng's), timed in
-// turn with the default file's (TimeRunsInTurn), their medians stored under
-// its two keys.
+// blocks beside the default file's (TimeRunsInBlocks), their medians stored
+// under its two keys.
 struct RivalCodec {
   std::function<void()> encode;
   std::function<void()> decode;

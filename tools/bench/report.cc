@@ -167,7 +167,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
   tables.push_back(
       {"Speed and memory",
        "CPU time, median of `runs` runs (5 up to 1 Mcell, 3 up to 4 Mcells, 1 above), libpng's "
-       "and the .lmap file's in turn (libpng then .lmap, then .lmap then libpng, ...); peak = "
+       "and the .lmap file's in blocks (an untimed run, then half the runs; libpng, .lmap, "
+       ".lmap, libpng); peak = "
        "resident memory the operation adds, in MB, measured once in a forked child; "
        "Mcells/s = cells / CPU time. lmap2 = the default .lmap 2.0 file (encode with its "
        "layers; decode of the whole grid).",

@@ -130,7 +130,7 @@ void AddImageAnchor(const Grid& grid, const ImageCodec& codec, const char* bytes
 }
 
 // libpng encode and decode of the layout that gave the smallest file, as a
-// user would keep it: timed in turn with the default .lmap file's
+// user would keep it: timed in blocks beside the default .lmap file's
 // (AddLmapFigures), its peak memory here. `grid` and `png` must outlive the
 // codec, which reads them.
 RivalCodec PngRival(const Grid& grid, const SmallestPng& png) {

@@ -64,17 +64,24 @@ TEST(BenchMeasureTest, MedianAndRepeats) {
   EXPECT_EQ(TimeRuns([] {}, 4).size(), 4u);
 }
 
-TEST(BenchMeasureTest, TwoOperationsAreTimedInTurn) {
-  // A rival and ours take turns, and which goes first alternates, so that
-  // neither always runs on the caches the other left.
+TEST(BenchMeasureTest, TwoOperationsAreTimedInBlocks) {
+  // Each block starts with an untimed run, and the second round puts the
+  // blocks in the other order: a, 3 timed a, b, 3 timed b, b, 2 timed b, a,
+  // 2 timed a.
   std::string order;
   const auto [a_ms, b_ms] =
-      TimeRunsInTurn([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/3);
-  EXPECT_EQ(order, "abbaab");
-  EXPECT_EQ(a_ms.size(), 3u);
-  EXPECT_EQ(b_ms.size(), 3u);
+      TimeRunsInBlocks([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/5);
+  EXPECT_EQ(order, "aaaabbbbbbbaaa");
+  EXPECT_EQ(a_ms.size(), 5u);
+  EXPECT_EQ(b_ms.size(), 5u);
+  order.clear();
+  const auto [one_a, one_b] =
+      TimeRunsInBlocks([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/1);
+  EXPECT_EQ(order, "aabb");
+  EXPECT_EQ(one_a.size(), 1u);
+  EXPECT_EQ(one_b.size(), 1u);
   // A busy operation's runs are its own, not the other's.
-  const auto [busy_ms, idle_ms] = TimeRunsInTurn(
+  const auto [busy_ms, idle_ms] = TimeRunsInBlocks(
       [] {
         volatile double x = 0;
         for (int i = 0; i < 20'000'000; ++i) x = x + 1e-9 * i;
