@@ -261,6 +261,12 @@ bool MendRound(Mender* m, int t, Grid* checked) {
       checked->empty() ? nullptr : checked);
   *checked = m->decoded;
   culprits.insert(culprits.end(), local.begin(), local.end());
+  // The long stretches last: they are few, and most of their detours are
+  // gone once the plans above agree.
+  if (culprits.empty()) {
+    culprits = tolerance_internal::StretchDetourCulprits(m->original, m->decoded,
+                                                         LocalCheckSteps(m->b->block_cells));
+  }
   if (culprits.empty()) return true;
   for (const std::size_t i : culprits) m->Unfill(i);
   return false;

@@ -1,6 +1,7 @@
-// LocalDetourCulprits(), CountLocalPlans(): plans between nearby cells on
-// either side of a change, for the plan guarantee between starts the
-// sampled check never tries.
+// LocalDetourCulprits(), CountLocalPlans(), StretchDetourCulprits(): plans
+// between nearby cells on either side of a change, and along long stretches
+// of lost free space, for the plan guarantee between starts the sampled
+// check never tries.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
@@ -73,6 +74,14 @@ class LocalPlans {
       }
     }
   }
+  // Keeps the searches inside the cells [x0, x1) x [y0, y1) of the map.
+  void Clip(int x0, int y0, int x1, int y1) {
+    clip_x0_ = x0;
+    clip_y0_ = y0;
+    clip_x1_ = x1;
+    clip_y1_ = y1;
+  }
+
   // The cells reached (map indices), nearest first, and their steps (-1:
   // not reached).
   const std::vector<std::size_t>& reached() const { return reached_; }
@@ -98,6 +107,7 @@ class LocalPlans {
   int Local(int c, int r) const {
     const int lc = c - c0_, lr = r - r0_;
     if (lc < 0 || lr < 0 || lc >= side_ || lr >= side_ || !grid_.Contains(c, r)) return -1;
+    if (c < clip_x0_ || r < clip_y0_ || c >= clip_x1_ || r >= clip_y1_) return -1;
     return lr * side_ + lc;
   }
   std::int32_t Changed(std::size_t i) const { return other_.cells()[i] != Cell::kFree ? 1 : 0; }
@@ -105,7 +115,9 @@ class LocalPlans {
   const Grid& grid_;
   const Grid& other_;
   int depth_, side_;
-  int c0_ = 0, r0_ = 0;  // the window's first cell
+  int c0_ = 0, r0_ = 0;            // the window's first cell
+  int clip_x0_ = 0, clip_y0_ = 0;  // Clip(): the whole map unless set
+  int clip_x1_ = INT32_MAX, clip_y1_ = INT32_MAX;
   std::vector<std::int32_t> steps_, changes_, previous_;
   std::vector<std::uint8_t> walked_;
   std::vector<int> order_;            // window indices, nearest first
@@ -177,7 +189,115 @@ void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, cons
   }
 }
 
+// A component (8-connected) of cells free on the original map only: its box
+// (inclusive) and the cells free on both maps 4-adjacent to it.
+struct LostStretch {
+  int c0 = 0, r0 = 0, c1 = 0, r1 = 0;
+  std::vector<std::size_t> sides;
+};
+
+// The cells free on both maps 4-adjacent to `cells`, each once (`mark`
+// holds `id` for those already taken).
+std::vector<std::size_t> SidesOf(const Grid& original, const Grid& decoded,
+                                 const std::vector<std::size_t>& cells, std::uint32_t id,
+                                 std::vector<std::uint32_t>* mark) {
+  std::vector<std::size_t> sides;
+  const std::size_t w = static_cast<std::size_t>(original.width());
+  const std::size_t h = static_cast<std::size_t>(original.height());
+  for (const std::size_t i : cells) {
+    ForEachNeighbour(w, h, i, [&](std::size_t n) {
+      if ((*mark)[n] == id || original.cells()[n] != Cell::kFree ||
+          decoded.cells()[n] != Cell::kFree) {
+        return;
+      }
+      (*mark)[n] = id;
+      sides.push_back(n);
+    });
+  }
+  return sides;
+}
+
+// The stretches of lost free space (LostStretch) whose box is more than
+// `min_extent` cells long in either axis.
+std::vector<LostStretch> LongLostStretches(const Grid& original, const Grid& decoded,
+                                           int min_extent) {
+  const int w = original.width();
+  auto lost = [&](std::size_t i) {
+    return original.cells()[i] == Cell::kFree && decoded.cells()[i] != Cell::kFree;
+  };
+  std::vector<std::uint32_t> mark(original.size(), 0);  // component ids, from 1
+  std::vector<std::uint32_t> side_mark(original.size(), 0);
+  std::vector<std::size_t> stack, cells;
+  std::vector<LostStretch> out;
+  std::uint32_t id = 0;
+  for (std::size_t start = 0; start < original.size(); ++start) {
+    if (mark[start] != 0 || !lost(start)) continue;
+    mark[start] = ++id;
+    stack.assign(1, start);
+    cells.clear();
+    LostStretch s;
+    s.c0 = s.c1 = static_cast<int>(start % w);
+    s.r0 = s.r1 = static_cast<int>(start / w);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      cells.push_back(i);
+      const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
+      s.c0 = std::min(s.c0, c);
+      s.c1 = std::max(s.c1, c);
+      s.r0 = std::min(s.r0, r);
+      s.r1 = std::max(s.r1, r);
+      for (int dr = -1; dr <= 1; ++dr) {
+        for (int dc = -1; dc <= 1; ++dc) {
+          if (!original.Contains(c + dc, r + dr)) continue;
+          const std::size_t n = original.Index(c + dc, r + dr);
+          if (mark[n] != 0 || !lost(n)) continue;
+          mark[n] = id;
+          stack.push_back(n);
+        }
+      }
+    }
+    if (std::max(s.c1 - s.c0, s.r1 - s.r0) + 1 <= min_extent) continue;
+    s.sides = SidesOf(original, decoded, cells, id, &side_mark);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 }  // namespace
+
+std::vector<std::size_t> StretchDetourCulprits(const Grid& original, const Grid& decoded,
+                                               int radius) {
+  // Plans may leave a stretch's box by this many cells: a wall grown by up
+  // to 4 cells (T = 4) is walked round within them.
+  constexpr int kMargin = 8;
+  // The deepest search (cells of steps): a longer stretch is checked along
+  // its first 256 steps from each source, which the sources spread along.
+  constexpr int kMaxDepth = 256;
+  // Sources per stretch, spread over its side cells: a detour along a
+  // stretch is as long from any cell near where the plan enters it.
+  constexpr std::size_t kSourcesPerStretch = 32;
+  std::vector<std::size_t> out;
+  for (const LostStretch& s : LongLostStretches(original, decoded, radius - kMargin)) {
+    // A plan along the box may turn once: up to its two sides' lengths.
+    const int extent = (s.c1 - s.c0 + 1) + (s.r1 - s.r0 + 1) + 4 * kMargin;
+    const int depth = std::min(kMaxDepth, extent);
+    LocalPlans on_original(original, decoded, depth), on_decoded(decoded, original, depth);
+    for (LocalPlans* plans : {&on_original, &on_decoded}) {
+      plans->Clip(s.c0 - kMargin, s.r0 - kMargin, s.c1 + kMargin + 1, s.r1 + kMargin + 1);
+    }
+    const std::size_t stride = std::max<std::size_t>(1, s.sides.size() / kSourcesPerStretch);
+    for (std::size_t k = 0; k < s.sides.size(); k += stride) {
+      on_original.Run(s.sides[k]);
+      on_decoded.Run(s.sides[k]);
+      VisitPlans(depth, decoded, on_decoded, &on_original,
+                 [&out](LocalPlans* plans, std::size_t goal, bool holds) {
+                   if (!holds) plans->AppendChanged(goal, &out);
+                 });
+    }
+  }
+  return out;
+}
 
 std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
                                              const Grid* checked) {

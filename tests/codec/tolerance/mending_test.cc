@@ -146,6 +146,66 @@ TEST(LocalDetourCulpritsTest, AWallGrownAtItsTipGivesTheTipBack) {
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
 }
 
+// A 100 x 12 corridor along a wall on row 0 whose decode grows the wall by
+// two rows (rows 1 and 2) over columns [first, last]. A plan along row 1
+// past the whole stretch walks round it: from (first - 1, 1) to (last + 1,
+// 1) 4 steps longer, beyond 3 % for the 61 steps of a 60-cell stretch.
+Grid WallGrownAlong(const Grid& original, int first, int last) {
+  Grid decoded = original;
+  for (int c = first; c <= last; ++c) {
+    decoded.set(c, 1, Cell::kOccupied);
+    decoded.set(c, 2, Cell::kOccupied);
+  }
+  return decoded;
+}
+
+Grid CorridorAlongAWall() {
+  Grid g(100, 12, Cell::kFree);
+  for (int c = 0; c < 100; ++c) g.set(c, 0, Cell::kOccupied);
+  return g;
+}
+
+// Every plan of up to 32 steps from beside the stretch keeps its length
+// (the corridor stays orthogonally convex), so the local check finds
+// nothing; the stretch check finds the plans along it and gives back cells
+// of the stretch only (plans along row 2 are 2 steps longer with row 1 back
+// alone, 3.3 % of 61 steps, so both rows come back), after which neither
+// check finds anything.
+TEST(StretchDetourCulpritsTest, FindsAWallGrownAlongALongStretch) {
+  const Grid original = CorridorAlongAWall();
+  Grid decoded = WallGrownAlong(original, 20, 79);
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 32).empty());
+  const std::vector<std::size_t> culprits = StretchDetourCulprits(original, decoded, 32);
+  ASSERT_FALSE(culprits.empty());
+  for (const std::size_t i : culprits) {
+    EXPECT_TRUE(i / 100 == 1 || i / 100 == 2) << "row " << i / 100;
+    EXPECT_GE(i % 100, 20u);
+    EXPECT_LE(i % 100, 79u);
+  }
+  for (const std::size_t i : culprits) decoded.mutable_cells()[i] = Cell::kFree;
+  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
+  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 32).empty());
+}
+
+// A stretch the local check spans (20 columns, within its 32 steps) is left
+// to it: the local check finds its detour, the stretch check does not look.
+TEST(StretchDetourCulpritsTest, LeavesShortStretchesToTheLocalCheck) {
+  const Grid original = CorridorAlongAWall();
+  const Grid decoded = WallGrownAlong(original, 40, 59);
+  EXPECT_FALSE(LocalDetourCulprits(original, decoded, 32).empty());
+  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
+}
+
+// A wall grown on the far side of a plan's way changes no plan: the
+// stretch check gives nothing back. Here the decode grows the wall on row
+// 0's side over the whole corridor length, so no plan can enter the
+// stretch from an end (its ends are the map's edges).
+TEST(StretchDetourCulpritsTest, GivesNothingBackWhereNoPlanIsLonger) {
+  const Grid original = CorridorAlongAWall();
+  const Grid decoded = WallGrownAlong(original, 0, 99);
+  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
+}
+
 // Lost cells cost what they are, not how far they lie: below a band of
 // lost rows (5-7) the decode splits the room's lower part into A (columns
 // 0-9) and B (12-19, and (11, 18)) by lost columns 10 and 11, and leaves a
