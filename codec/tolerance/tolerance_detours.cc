@@ -196,24 +196,24 @@ struct LostStretch {
   std::vector<std::size_t> sides;
 };
 
-// The cells free on both maps 4-adjacent to `cells`, each once (`mark`
-// holds `id` for those already taken).
+// The cells free on both maps 4-adjacent to `cells`, each once (`taken`
+// marks them while this runs, and is all 0 again after).
 std::vector<std::size_t> SidesOf(const Grid& original, const Grid& decoded,
-                                 const std::vector<std::size_t>& cells, std::uint32_t id,
-                                 std::vector<std::uint32_t>* mark) {
+                                 const std::vector<std::size_t>& cells,
+                                 std::vector<std::uint8_t>* taken) {
   std::vector<std::size_t> sides;
   const std::size_t w = static_cast<std::size_t>(original.width());
   const std::size_t h = static_cast<std::size_t>(original.height());
   for (const std::size_t i : cells) {
     ForEachNeighbour(w, h, i, [&](std::size_t n) {
-      if ((*mark)[n] == id || original.cells()[n] != Cell::kFree ||
-          decoded.cells()[n] != Cell::kFree) {
+      if ((*taken)[n] || original.cells()[n] != Cell::kFree || decoded.cells()[n] != Cell::kFree) {
         return;
       }
-      (*mark)[n] = id;
+      (*taken)[n] = 1;
       sides.push_back(n);
     });
   }
+  for (const std::size_t n : sides) (*taken)[n] = 0;
   return sides;
 }
 
@@ -225,14 +225,12 @@ std::vector<LostStretch> LongLostStretches(const Grid& original, const Grid& dec
   auto lost = [&](std::size_t i) {
     return original.cells()[i] == Cell::kFree && decoded.cells()[i] != Cell::kFree;
   };
-  std::vector<std::uint32_t> mark(original.size(), 0);  // component ids, from 1
-  std::vector<std::uint32_t> side_mark(original.size(), 0);
+  std::vector<std::uint8_t> seen(original.size(), 0), taken(original.size(), 0);
   std::vector<std::size_t> stack, cells;
   std::vector<LostStretch> out;
-  std::uint32_t id = 0;
   for (std::size_t start = 0; start < original.size(); ++start) {
-    if (mark[start] != 0 || !lost(start)) continue;
-    mark[start] = ++id;
+    if (seen[start] || !lost(start)) continue;
+    seen[start] = 1;
     stack.assign(1, start);
     cells.clear();
     LostStretch s;
@@ -251,14 +249,14 @@ std::vector<LostStretch> LongLostStretches(const Grid& original, const Grid& dec
         for (int dc = -1; dc <= 1; ++dc) {
           if (!original.Contains(c + dc, r + dr)) continue;
           const std::size_t n = original.Index(c + dc, r + dr);
-          if (mark[n] != 0 || !lost(n)) continue;
-          mark[n] = id;
+          if (seen[n] || !lost(n)) continue;
+          seen[n] = 1;
           stack.push_back(n);
         }
       }
     }
     if (std::max(s.c1 - s.c0, s.r1 - s.r0) + 1 <= min_extent) continue;
-    s.sides = SidesOf(original, decoded, cells, id, &side_mark);
+    s.sides = SidesOf(original, decoded, cells, &taken);
     out.push_back(std::move(s));
   }
   return out;
