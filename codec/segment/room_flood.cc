@@ -88,9 +88,13 @@ void FindFurnitureCandidates(const Grid& grid, const SegmentationOptions& option
   const int w = grid.width(), h = grid.height();
   const double res = grid.meta.resolution;
   BinaryMask blocked(w, h);
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    blocked.bits[i] = grid.cells()[i] != Cell::kFree;
-  }
+  // Through local pointers: a store through the mask's bytes may alias the
+  // vectors' own pointers, which would then be reloaded every cell and
+  // keep the loop from being vectorised.
+  const Cell* cells = grid.cells().data();
+  std::uint8_t* bits = blocked.bits.data();
+  const std::size_t n = grid.size();
+  for (std::size_t i = 0; i < n; ++i) bits[i] = cells[i] != Cell::kFree;
   flood->enclosed = LabelComponents(blocked, Connectivity::kEight);
   std::vector<std::uint8_t>& candidate = flood->furniture_candidate;
   candidate.assign(flood->enclosed.components.size() + 1, 0);
