@@ -100,27 +100,44 @@ void JoinPlateaus(const std::vector<std::uint16_t>& dist, int pw, std::uint16_t 
   }
 }
 
+// Calls visit(i) for each index i of dist[0, n) with 1 <= dist[i] <= top, in
+// increasing order. Most cells of a map are walls, unknown (0) or above a
+// door's clearance: where SSE2 is at hand eight cells are tested at once
+// and only those in range visited (the flood's two passes over every cell
+// were 4 % of an encode).
+template <typename Visit>
+void ForEachFlooded(const std::uint16_t* dist, std::size_t n, std::uint16_t top, Visit&& visit) {
+  if (top == 0) return;
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  const __m128i one = _mm_set1_epi16(1);
+  const __m128i limit = _mm_set1_epi16(static_cast<short>(top - 1));
+  const __m128i zero = _mm_setzero_si128();
+  for (; i + 8 <= n; i += 8) {
+    // d - 1 wraps 0 round to 0xffff; the lanes in range are those with
+    // d - 1 <= top - 1, where the saturated difference is 0.
+    const __m128i d =
+        _mm_sub_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(dist + i)), one);
+    unsigned mask =
+        static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi16(_mm_subs_epu16(d, limit), zero)));
+    while (mask != 0) {
+      const int bit = __builtin_ctz(mask);  // even: two mask bits per lane
+      visit(i + static_cast<std::size_t>(bit / 2));
+      mask &= ~(3u << bit);
+    }
+  }
+#endif
+  for (; i < n; ++i) {
+    if (dist[i] != 0 && dist[i] <= top) visit(i);
+  }
+}
+
 // The number of cells of each clearance 1..flooded_top (entry d; entries 0
-// and flooded_top + 1 are 0). Counted without a branch, in four tallies
-// (cell index mod 4) summed at the end: a run of cells that share an entry
-// (a wall's 0s, a hall above flooded_top, a corridor's middle) would
-// otherwise wait on each increment's store before the next.
+// and flooded_top + 1 are 0).
 std::vector<std::int32_t> CountLevels(const std::vector<std::uint16_t>& dist,
                                       std::uint16_t flooded_top) {
-  constexpr std::size_t kTallies = 4;
-  const std::size_t above = static_cast<std::size_t>(flooded_top) + 1;  // levels not flooded
-  const std::size_t levels = above + 1;
-  std::vector<std::int32_t> tally(kTallies * levels, 0);
-  const auto level = [&](std::size_t i) { return std::min<std::size_t>(dist[i], above); };
-  std::size_t i = 0;
-  for (; i + kTallies <= dist.size(); i += kTallies) {
-    for (std::size_t k = 0; k < kTallies; ++k) ++tally[k * levels + level(i + k)];
-  }
-  for (; i < dist.size(); ++i) ++tally[level(i)];
-  std::vector<std::int32_t> count(levels, 0);
-  for (std::size_t d = 1; d < above; ++d) {
-    for (std::size_t k = 0; k < kTallies; ++k) count[d] += tally[k * levels + d];
-  }
+  std::vector<std::int32_t> count(static_cast<std::size_t>(flooded_top) + 2, 0);
+  ForEachFlooded(dist.data(), dist.size(), flooded_top, [&](std::size_t i) { ++count[dist[i]]; });
   return count;
 }
 
@@ -149,9 +166,8 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
     acc += n;
   }
   std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
-  for (std::size_t i = 0; i < dist.size(); ++i) {
-    if (dist[i] && dist[i] <= flooded_top) order[start[dist[i]]++] = static_cast<std::int32_t>(i);
-  }
+  ForEachFlooded(dist.data(), dist.size(), flooded_top,
+                 [&](std::size_t i) { order[start[dist[i]]++] = static_cast<std::int32_t>(i); });
   std::vector<std::int32_t>& parent = *parent_out;
   AssignLarge<std::int32_t>(&parent, dist.size(), -1);
   if (flooded_top < top) JoinPlateaus(dist, pw, flooded_top, &parent);
