@@ -220,7 +220,7 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
       Group group;
       group.cells.reserve(length);
       for (int i = begin; i < begin + length; ++i) {
-        const CellXY c = CellOfIndex(chain[i], width);
+        const CellXY c = chain_moments.Cell(i);
         group.cells.push_back(c);
         group.moments.Add(c.col, c.row);
         if (limits.noise_factor > 0) {
