@@ -48,10 +48,10 @@ class UnionFind {
 
 // The label a run of set cells [col, end) of a row takes from the runs of
 // the row above it (`up` their provisional labels, `up_bits` their mask
-// row) that it touches: W and N only in 4-connectivity, NW and NE too in 8
-// (`reach` 1). Every cell of a run above holds its run's label, so each
-// run above is read once, at its first cell within reach. 0 when it touches
-// none.
+// row) that it touches: those over [col, end) in 4-connectivity, over
+// [col - 1, end] in 8 (`reach` 1). Every cell of a run above holds its
+// run's label, so each run above is read once, at its first cell within
+// reach. 0 when it touches none.
 std::int32_t LabelFromAbove(const std::int32_t* up, const std::uint8_t* up_bits, int col, int end,
                             int w, int reach, UnionFind* table) {
   const int hi = std::min(end + reach, w);
