@@ -38,23 +38,36 @@ std::vector<std::pair<std::size_t, double>> EdgeCells::Near(const LatticeSegment
   // overlap in 20 of their 25 cells): marked in the edge bytes while the
   // call runs, rather than sorted.
   std::vector<std::size_t> candidates;
+  std::uint8_t* edge = edge_.data();
+  const auto take = [&](std::size_t i) {
+    if (edge[i] == kEdge) {
+      edge[i] = kEdgeSeen;
+      candidates.push_back(i);
+    }
+  };
+  const int w = grid_.width(), h = grid_.height();
   RasterizeSegment(s.a, s.b, [&](int c, int r) {
+    // Away from the map's sides the 5 x 5 cells are read row by row
+    // without a test per cell (in the same order): this search was 4-5 %
+    // of an encode.
+    if (c >= 2 && r >= 2 && c + 2 < w && r + 2 < h) {
+      for (int dr = -2; dr <= 2; ++dr) {
+        const std::size_t row = grid_.Index(c - 2, r + dr);
+        for (std::size_t k = 0; k < 5; ++k) take(row + k);
+      }
+      return;
+    }
     for (int dr = -2; dr <= 2; ++dr) {
       for (int dc = -2; dc <= 2; ++dc) {
         const int x = c + dc, y = r + dr;
-        if (!grid_.Contains(x, y)) continue;
-        const std::size_t i = grid_.Index(x, y);
-        if (edge_[i] == kEdge) {
-          edge_[i] = kEdgeSeen;
-          candidates.push_back(i);
-        }
+        if (grid_.Contains(x, y)) take(grid_.Index(x, y));
       }
     }
   });
   std::vector<std::pair<std::size_t, double>> cells;
   const auto width = static_cast<std::size_t>(grid_.width());
   for (std::size_t i : candidates) {
-    edge_[i] = kEdge;
+    edge[i] = kEdge;
     const CellIndex p{static_cast<int>(i % width), static_cast<int>(i / width)};
     const double d = PointSegmentDistance(p, s.a, s.b);
     if (d <= kNearCells) cells.push_back({i, d});

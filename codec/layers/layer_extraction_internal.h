@@ -54,6 +54,10 @@ class EdgeCells {
   // of the segment's rasterisation.
   std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s) const;
 
+  // One byte per cell, non-zero exactly at the edge cells (as
+  // ComputeEdgeMap's is_edge; Near() restores them before it returns).
+  const std::uint8_t* bytes() const { return edge_.data(); }
+
  private:
   static constexpr std::uint8_t kEdge = 1, kEdgeSeen = 2;
   const Grid& grid_;

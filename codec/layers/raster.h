@@ -33,10 +33,31 @@ void RasterizeSegment(CellIndex a, CellIndex b, Visit&& visit) {
     visit(a.col, a.row);
     return;
   }
+  // The quotients and remainders of (2 i dx + n) / 2n (and of dy's) are
+  // carried from step to step rather than divided anew: each numerator
+  // grows by 2 dx, at most the divisor, so each remainder leaves [0, 2n) by
+  // at most one divisor a step. Step 0's are 0 and n.
+  const std::int64_t den = 2 * n;
+  std::int64_t col = a.col, row = a.row;
+  std::int64_t col_rem = n, row_rem = n;
   for (std::int64_t i = 0; i <= n; ++i) {
-    const std::int64_t col = a.col + FloorDiv(2 * i * dx + n, 2 * n);
-    const std::int64_t row = a.row + FloorDiv(2 * i * dy + n, 2 * n);
     visit(static_cast<int>(col), static_cast<int>(row));
+    col_rem += 2 * dx;
+    if (col_rem >= den) {
+      col_rem -= den;
+      ++col;
+    } else if (col_rem < 0) {
+      col_rem += den;
+      --col;
+    }
+    row_rem += 2 * dy;
+    if (row_rem >= den) {
+      row_rem -= den;
+      ++row;
+    } else if (row_rem < 0) {
+      row_rem += den;
+      --row;
+    }
   }
 }
 

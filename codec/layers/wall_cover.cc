@@ -132,17 +132,23 @@ std::vector<std::vector<CellIndex>> Clusters(const Grid& grid, std::vector<std::
 std::vector<LatticeSegment> CoveringSegments(const Grid& grid,
                                              const std::vector<LatticeSegment>& walls,
                                              const std::vector<std::uint8_t>* covered) {
+  return CoveringSegments(grid, walls, covered, ComputeEdgeMap(grid).is_edge.data());
+}
+
+std::vector<LatticeSegment> CoveringSegments(const Grid& grid,
+                                             const std::vector<LatticeSegment>& walls,
+                                             const std::vector<std::uint8_t>* covered,
+                                             const std::uint8_t* edge) {
   std::vector<LineSegment> lines;
   lines.reserve(walls.size());
   for (const LatticeSegment& s : walls) lines.push_back(AsLine(s.a, s.b));
   lines_internal::SegmentIndex index(&lines, grid.width(), grid.height());
-  const EdgeMap edges = ComputeEdgeMap(grid);
   std::vector<std::uint8_t> left_out(grid.size(), 0);
   bool any = false;
   const int w = grid.width();
   for (int r = 0; r < grid.height(); ++r) {
     // Edge cells are a few in a hundred: skipped to eight bytes at a time.
-    const std::uint8_t* edge_row = edges.is_edge.data() + grid.Index(0, r);
+    const std::uint8_t* edge_row = edge + grid.Index(0, r);
     for (int c = FirstNonZeroByte(edge_row, 0, w); c < w;
          c = FirstNonZeroByte(edge_row, c + 1, w)) {
       const std::size_t i = grid.Index(c, r);

@@ -30,6 +30,13 @@ namespace linemap {
 std::vector<LatticeSegment> CoveringSegments(const Grid& grid,
                                              const std::vector<LatticeSegment>& walls,
                                              const std::vector<std::uint8_t>* covered);
+// The same with the grid's edge cells given (`edge`: one byte per cell,
+// non-zero exactly at the edge cells, as ComputeEdgeMap's is_edge), for a
+// caller that has them already.
+std::vector<LatticeSegment> CoveringSegments(const Grid& grid,
+                                             const std::vector<LatticeSegment>& walls,
+                                             const std::vector<std::uint8_t>* covered,
+                                             const std::uint8_t* edge);
 
 }  // namespace linemap
 

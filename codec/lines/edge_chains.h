@@ -57,6 +57,8 @@ class ChainMoments {
   }
 
   int size() const { return static_cast<int>(x_.size()); }
+  // Cell i of the chain (held as it was assigned: no division).
+  CellXY Cell(int i) const { return {static_cast<int>(x_[i]), static_cast<int>(y_[i])}; }
 
   // TLS line of cells [begin, end).
   FittedLine Fit(int begin, int end) const {

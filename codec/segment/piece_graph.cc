@@ -16,9 +16,12 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
     : piece_of_(std::move(parent)) {
   // Every cell straight to its root first (a root is its own parent, so
   // the forest stays valid while it is rewritten).
+  // Most cells point at their root already: left as they are, without
+  // the find's two writes.
   std::vector<std::int32_t>& forest = piece_of_;
   for (std::size_t i = 0; i < forest.size(); ++i) {
-    if (forest[i] >= 0) forest[i] = FindRoot(forest, static_cast<std::int32_t>(i));
+    const std::int32_t up = forest[i];
+    if (up >= 0 && forest[up] != up) forest[i] = FindRoot(forest, static_cast<std::int32_t>(i));
   }
   // Then, in cell order, pieces numbered as their first cells come. A
   // root's entry turns into its piece, coded -2 - piece, when the piece's

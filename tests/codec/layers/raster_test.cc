@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 #include <set>
 #include <utility>
@@ -69,6 +70,33 @@ TEST(RasterizeSegmentTest, AgreesWithSlowVersionOnRandomSegments) {
     const CellIndex a{static_cast<int>(rng() % span), static_cast<int>(rng() % span)};
     const CellIndex b{static_cast<int>(rng() % span), static_cast<int>(rng() % span)};
     ASSERT_EQ(Rasterize(a, b), SlowRasterize(a, b))
+        << "(" << a.col << "," << a.row << ") -> (" << b.col << "," << b.row << ")";
+  }
+}
+
+// The spec's formula as written, a division per step: the rasteriser
+// carries its quotients instead, which must give the same cells anywhere
+// on the lattice (negative coordinates, far from the origin, long steps).
+Cells DividingRasterize(CellIndex a, CellIndex b) {
+  const std::int64_t dx = std::int64_t{b.col} - a.col, dy = std::int64_t{b.row} - a.row;
+  const std::int64_t n = std::max(std::llabs(dx), std::llabs(dy));
+  if (n == 0) return {{a.col, a.row}};
+  Cells out;
+  for (std::int64_t i = 0; i <= n; ++i) {
+    out.emplace_back(static_cast<int>(a.col + FloorDiv(2 * i * dx + n, 2 * n)),
+                     static_cast<int>(a.row + FloorDiv(2 * i * dy + n, 2 * n)));
+  }
+  return out;
+}
+
+TEST(RasterizeSegmentTest, AgreesWithTheDivisionFormulaAnywhere) {
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> origin(-1000000000, 1000000000);
+  std::uniform_int_distribution<int> step(-5000, 5000);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const CellIndex a{origin(rng), origin(rng)};
+    const CellIndex b{a.col + step(rng), a.row + step(rng) / (trial % 7 + 1)};
+    ASSERT_EQ(Rasterize(a, b), DividingRasterize(a, b))
         << "(" << a.col << "," << a.row << ") -> (" << b.col << "," << b.row << ")";
   }
 }
