@@ -62,28 +62,6 @@ void OrSpan(std::uint8_t* p, int n, std::uint8_t bits) {
 
 bool Inside(int c, int r, CellRect t) { return c >= t.x0 && c < t.x1 && r >= t.y0 && r < t.y1; }
 
-// The minor coordinate of step i of a lattice segment, floor((i * step + n)
-// / 2n) (spec 8.1's rounding), for i rising by one at a time: |step| <= 2n,
-// so each step carries at most one, and no division runs per cell.
-struct MinorStepper {
-  std::int64_t step, two_n, q, rem;
-  MinorStepper(std::int64_t i0, std::int64_t step_, std::int64_t n)
-      : step(step_),
-        two_n(2 * n),
-        q(FloorDiv(i0 * step_ + n, 2 * n)),
-        rem(i0 * step_ + n - FloorDiv(i0 * step_ + n, 2 * n) * 2 * n) {}
-  void Next() {
-    rem += step;
-    if (rem >= two_n) {
-      rem -= two_n;
-      ++q;
-    } else if (rem < 0) {
-      rem += two_n;
-      --q;
-    }
-  }
-};
-
 // The rasterisation of a -> b (RasterizeSegment, raster.h): step i in
 // [0, n] covers (a.col + floor((2 i dx + n) / 2n), a.row + floor((2 i dy +
 // n) / 2n)). Along the major axis (the one with |delta| == n) the cell moves

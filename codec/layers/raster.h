@@ -21,6 +21,29 @@ inline std::int64_t FloorDiv(std::int64_t num, std::int64_t den) {
   return q;
 }
 
+// One coordinate's offset at step i of a lattice segment, floor((i * step +
+// n) / 2n) with step = 2 dx or 2 dy (spec 8.1's rounding), for i rising by
+// one at a time: |step| <= 2n, so each step carries at most one, and no
+// division runs per cell.
+struct MinorStepper {
+  std::int64_t step, two_n, q, rem;
+  MinorStepper(std::int64_t i0, std::int64_t step_, std::int64_t n)
+      : step(step_),
+        two_n(2 * n),
+        q(FloorDiv(i0 * step_ + n, 2 * n)),
+        rem(i0 * step_ + n - FloorDiv(i0 * step_ + n, 2 * n) * 2 * n) {}
+  void Next() {
+    rem += step;
+    if (rem >= two_n) {
+      rem -= two_n;
+      ++q;
+    } else if (rem < 0) {
+      rem += two_n;
+      --q;
+    }
+  }
+};
+
 // Visits the n+1 cells of the segment a -> b, n = max(|dx|, |dy|): step i
 // covers (a.col + floor((2 i dx + n) / 2n), a.row + floor((2 i dy + n) / 2n)),
 // i.e. the cell whose centre is nearest the exact point, halves rounded up.
@@ -33,31 +56,13 @@ void RasterizeSegment(CellIndex a, CellIndex b, Visit&& visit) {
     visit(a.col, a.row);
     return;
   }
-  // The quotients and remainders of (2 i dx + n) / 2n (and of dy's) are
-  // carried from step to step rather than divided anew: each numerator
-  // grows by 2 dx, at most the divisor, so each remainder leaves [0, 2n) by
-  // at most one divisor a step. Step 0's are 0 and n.
-  const std::int64_t den = 2 * n;
-  std::int64_t col = a.col, row = a.row;
-  std::int64_t col_rem = n, row_rem = n;
+  // The floors are stepped (MinorStepper) rather than divided out per cell:
+  // step 0's quotients are 0, their remainders n.
+  MinorStepper col(0, 2 * dx, n), row(0, 2 * dy, n);
   for (std::int64_t i = 0; i <= n; ++i) {
-    visit(static_cast<int>(col), static_cast<int>(row));
-    col_rem += 2 * dx;
-    if (col_rem >= den) {
-      col_rem -= den;
-      ++col;
-    } else if (col_rem < 0) {
-      col_rem += den;
-      --col;
-    }
-    row_rem += 2 * dy;
-    if (row_rem >= den) {
-      row_rem -= den;
-      ++row;
-    } else if (row_rem < 0) {
-      row_rem += den;
-      --row;
-    }
+    visit(static_cast<int>(a.col + col.q), static_cast<int>(a.row + row.q));
+    col.Next();
+    row.Next();
   }
 }
 
