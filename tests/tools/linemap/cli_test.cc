@@ -53,6 +53,10 @@ TEST(CliTest, LimitsAreWholeNumbers) {
   EXPECT_EQ(RunCli({"info", map, "--max-cells", "4799"}).exit_code, 2);
 }
 
+// Two free points of the depot map (map-frame metres), for plan.
+constexpr const char* kDepotFrom = "5,5";
+constexpr const char* kDepotTo = "25,10";
+
 // Every command that reads an .lmap file holds it to --max-segments and
 // --max-objects: depot_v2.lmap has 437 wall segments and 33 furniture
 // objects in 8 rooms (as `linemap info --json` lists them), so it reads at
@@ -68,6 +72,12 @@ TEST(CliTest, LayerLimitsApplyToEveryCommandReadingAnLmap) {
       {"lines", lmap, "-o", dir + "/l.csv"},
       {"segment", lmap, "-o", dir + "/s.json"},
       {"encode", lmap, "-o", dir + "/re.lmap"},
+      {"plan", lmap, "--from", kDepotFrom, "--to", kDepotTo},
+      // The windows read the layer sections that reach them, yet the limits
+      // count the file's.
+      {"decode", lmap, "-o", dir + "/w.yaml", "--window-cells", "0,0,50,50"},
+      {"decode", lmap, "-o", dir + "/r.yaml", "--room-at", "15.1,7.6"},
+      {"export", lmap, "-o", dir + "/w.csv", "--window", "5,2,12.5,9"},
   };
   struct Limit {
     const char* option;
