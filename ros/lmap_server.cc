@@ -13,6 +13,7 @@
 // a limit or a window past it.
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -156,15 +157,15 @@ DecodeLimits LimitsOf(const LimitValues& values, std::optional<std::uint64_t> un
   return limits;
 }
 
-// Whether every limit that applies to the map at `path` is known (all for
-// an .lmap file, ~max_cells for a map image): it may then be loaded before
-// the master answers, as no ~NAME on the parameter server can change them.
+// Whether every limit that applies to the map at `path` is known: it may
+// then be loaded before the master answers, as no ~NAME on the parameter
+// server can change them.
 bool LimitsSettledFor(const std::string& path, const LimitValues& values) {
-  if (!IsLmapPath(path)) return values[0].has_value();
-  for (const std::optional<std::uint64_t>& value : values) {
-    if (!value) return false;
-  }
-  return true;
+  // LimitParametersFor(path) is the first of LimitParameters(), the order
+  // of `values`.
+  const std::size_t applying = LimitParametersFor(path).size();
+  return std::all_of(values.begin(), values.begin() + applying,
+                     [](const std::optional<std::uint64_t>& value) { return value.has_value(); });
 }
 
 class MapServer {

@@ -143,12 +143,6 @@ constexpr LimitParameter kLimitParameters[] = {
     {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
 };
 
-// The limits that apply to the map at `path`: all for an .lmap file,
-// ~max_cells (the first) for a map image.
-std::span<const LimitParameter> LimitsFor(const std::string& path) {
-  return std::span<const LimitParameter>(kLimitParameters).first(IsLmapPath(path) ? 3 : 1);
-}
-
 // `status` (a map over a limit) with the values of `named` in force.
 Status NamingLimits(const Status& status, const DecodeLimits& limits,
                     std::span<const LimitParameter> named) {
@@ -211,6 +205,10 @@ StatusOr<MapFrame> ReadMapFrame(const std::string& path, const DecodeLimits& lim
 
 std::span<const LimitParameter> LimitParameters() { return kLimitParameters; }
 
+std::span<const LimitParameter> LimitParametersFor(const std::string& path) {
+  return IsLmapPath(path) ? LimitParameters() : LimitParameters().first(1);
+}
+
 Status LimitRangeError(const LimitParameter& limit, const std::string& shown) {
   return InvalidArgumentError("~" + std::string(limit.name) + " must be a whole number from 1 to " +
                               std::to_string(kMaxLimitValue) + " (" + limit.unit + "), not " +
@@ -244,7 +242,7 @@ StatusOr<std::uint64_t> ParseLimit(const LimitParameter& limit, const std::strin
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
                              const DecodeLimits& limits) {
   StatusOr<Grid> grid = LoadWithin(path, window, limits);
-  if (!grid.ok()) return NamingLimits(grid.status(), limits, LimitsFor(path));
+  if (!grid.ok()) return NamingLimits(grid.status(), limits, LimitParametersFor(path));
   return grid;
 }
 
@@ -252,7 +250,7 @@ Status CheckServedMap(const std::string& path, const std::optional<Window>& wind
                       const DecodeLimits& limits) {
   const StatusOr<MapFrame> frame = ReadMapFrame(path, limits);
   // Of the limits only ~max_cells applies to a header.
-  if (!frame.ok()) return NamingLimits(frame.status(), limits, LimitsFor(path).first(1));
+  if (!frame.ok()) return NamingLimits(frame.status(), limits, LimitParametersFor(path).first(1));
   if (!window) return Status::Ok();
   const StatusOr<CellWindow> cells = WindowCells(frame->width, frame->height, frame->meta, *window);
   return cells.ok() ? Status::Ok() : cells.status().WithContext("'" + path + "'");

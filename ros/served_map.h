@@ -52,6 +52,10 @@ inline constexpr std::int64_t kMaxLimitValue = 2147483647;
 // furniture objects, per .lmap file), in that order.
 std::span<const LimitParameter> LimitParameters();
 
+// The limits that apply to the map at `path`, the first of
+// LimitParameters(): all three for an .lmap file, ~max_cells for a map image.
+std::span<const LimitParameter> LimitParametersFor(const std::string& path);
+
 // A value of `limit` given as text (a `_NAME:=VALUE` argument or a string
 // parameter), or as a number (an int or double parameter): a whole number
 // from 1 to kMaxLimitValue, else an invalid argument naming ~NAME and that
