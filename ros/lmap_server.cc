@@ -8,9 +8,9 @@
 // `static_map` (nav_msgs/GetMap), as map_server does. MAP is the argument or
 // the private parameter ~map. A ~window that reaches past the map is
 // refused, and so is a map over ~max_cells, ~max_segments or ~max_objects
-// (the decoder's limits, DecodeLimits). Exit codes: 1 no master or a ROS
-// failure, 2 bad usage, a bad parameter, a map that cannot be read, one over
-// a limit or a window past it.
+// (the decoder's limits, DecodeLimits), naming the one it is over. Exit
+// codes: 1 no master or a ROS failure, 2 bad usage, a bad parameter, a map
+// that cannot be read, one over a limit or a window past it.
 #include <ros/ros.h>
 
 #include <algorithm>

@@ -71,8 +71,10 @@ Status LimitRangeError(const LimitParameter& limit, const std::string& shown);
 // window meets (LoadLmapRegion); a map image is loaded whole and cropped.
 // limits.max_cells applies to the whole map, with a window too, and to a map
 // image (MapLoadOptions::max_cells); the other limits to .lmap files. A map
-// over a limit is refused (resource exhausted), naming the file and the
-// limits of LimitParameters() in force.
+// over a limit is refused (resource exhausted), naming the file, and the
+// parameter of LimitParametersFor(path) with its value when raising it can
+// lift the refusal (not for the decoder's other limits: file and chunk
+// bytes, chain cells).
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
                              const DecodeLimits& limits = {});
 
