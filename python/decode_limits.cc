@@ -14,21 +14,6 @@ namespace {
 
 namespace py = pybind11;
 
-// A limit's value from Python: a whole number from `min` up (bools, which
-// are ints to Python, and floats are refused), below 2^64.
-std::uint64_t LimitValue(const py::handle& value, const char* name, std::uint64_t min,
-                         std::uint64_t max) {
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
-    throw py::type_error(std::string(name) + " must be an int");
-  }
-  const py::int_ v = py::reinterpret_borrow<py::int_>(value);
-  if (v < py::int_(min) || v > py::int_(max)) {
-    throw py::value_error(std::string(name) + " must be from " + std::to_string(min) + " to " +
-                          std::to_string(max));
-  }
-  return v.cast<std::uint64_t>();
-}
-
 // One limit as a read-write property of the class, checked when set.
 template <typename T>
 void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*field,
@@ -36,7 +21,7 @@ void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*
   cls.def_property(
       name, [field](const DecodeLimits& l) { return l.*field; },
       [field, name, min, max](DecodeLimits& l, const py::object& value) {
-        l.*field = static_cast<T>(LimitValue(value, name, min, max));
+        l.*field = static_cast<T>(WholeNumberArgument(value, name, min, max));
       },
       doc);
 }
