@@ -1,6 +1,8 @@
 #include "python/arrays.h"
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 namespace linemap::python {
 
@@ -48,14 +50,22 @@ std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, s
   return values;
 }
 
+std::uint64_t WholeNumberArgument(const py::handle& value, const char* name, std::uint64_t min,
+                                  std::uint64_t max, const char* kind) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
+    throw py::type_error(std::string(name) + " must be " + kind);
+  }
+  const py::int_ v = py::reinterpret_borrow<py::int_>(value);
+  if (v < py::int_(min) || v > py::int_(max)) {
+    throw py::value_error(std::string(name) + " must be from " + std::to_string(min) + " to " +
+                          std::to_string(max));
+  }
+  return v.cast<std::uint64_t>();
+}
+
 std::uint64_t MaxCellsArgument(const py::object& max_cells, std::uint64_t fallback) {
   if (max_cells.is_none()) return fallback;
-  if (!py::isinstance<py::int_>(max_cells) || py::isinstance<py::bool_>(max_cells)) {
-    throw py::type_error("max_cells must be an int or None");
-  }
-  if (max_cells < py::int_(1)) throw py::value_error("max_cells must be at least 1");
-  if (max_cells > py::int_(UINT64_MAX)) throw py::value_error("max_cells must be below 2^64");
-  return max_cells.cast<std::uint64_t>();
+  return WholeNumberArgument(max_cells, "max_cells", 1, UINT64_MAX, "an int or None");
 }
 
 }  // namespace linemap::python

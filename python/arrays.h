@@ -43,8 +43,14 @@ std::string PathArgument(const py::handle& path);
 std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, std::size_t min_size,
                                  std::size_t max_size);
 
-// A max_cells argument: None gives `fallback`; values below 1 raise
-// ValueError.
+// A whole number from Python named `name`: an int (bools, which are ints to
+// Python, and floats raise TypeError saying it must be `kind`) from `min` to
+// `max` (else ValueError naming the range).
+std::uint64_t WholeNumberArgument(const py::handle& value, const char* name, std::uint64_t min,
+                                  std::uint64_t max, const char* kind = "an int");
+
+// A max_cells argument: None gives `fallback`; else a whole number from 1
+// to 2^64 - 1.
 std::uint64_t MaxCellsArgument(const py::object& max_cells, std::uint64_t fallback);
 
 }  // namespace linemap::python

@@ -2,6 +2,7 @@
 
 #include <pybind11/operators.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -14,21 +15,6 @@ namespace {
 
 namespace py = pybind11;
 
-// A limit's value from Python: a whole number from `min` up (bools, which
-// are ints to Python, and floats are refused), below 2^64.
-std::uint64_t LimitValue(const py::handle& value, const char* name, std::uint64_t min,
-                         std::uint64_t max) {
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value)) {
-    throw py::type_error(std::string(name) + " must be an int");
-  }
-  const py::int_ v = py::reinterpret_borrow<py::int_>(value);
-  if (v < py::int_(min) || v > py::int_(max)) {
-    throw py::value_error(std::string(name) + " must be from " + std::to_string(min) + " to " +
-                          std::to_string(max));
-  }
-  return v.cast<std::uint64_t>();
-}
-
 // One limit as a read-write property of the class, checked when set.
 template <typename T>
 void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*field,
@@ -36,7 +22,7 @@ void AddLimit(py::class_<DecodeLimits>& cls, const char* name, T DecodeLimits::*
   cls.def_property(
       name, [field](const DecodeLimits& l) { return l.*field; },
       [field, name, min, max](DecodeLimits& l, const py::object& value) {
-        l.*field = static_cast<T>(LimitValue(value, name, min, max));
+        l.*field = static_cast<T>(WholeNumberArgument(value, name, min, max));
       },
       doc);
 }
@@ -121,6 +107,41 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
            "Threads decoding the tiles of a 2.0 file, the calling one included; 0 (the "
            "default) is one per core. The result does not depend on it.");
   cls.def(py::self == py::self);
+  // Pickled as {name: value} of every limit; unpickling sets each through its
+  // property's checks, and a limit the state lacks (pickled by a version
+  // without it) keeps its default.
+  cls.def(py::pickle(
+      [](const DecodeLimits& limits) {
+        py::dict state;
+        for (const CountLimit& limit : kCountLimits) state[limit.name] = limits.*limit.field;
+        state[kThreadsName] = limits.max_threads;
+        return state;
+      },
+      [](const py::dict& state) {
+        py::object self = py::cast(DecodeLimits{});
+        const std::vector<const char*> names = LimitNames();
+        for (const auto& [key, value] : state) {
+          const std::string name = py::str(key);
+          if (std::find_if(names.begin(), names.end(),
+                           [&name](const char* known) { return name == known; }) == names.end()) {
+            throw py::value_error("DecodeLimits has no limit '" + name + "' to unpickle");
+          }
+          self.attr(key) = value;
+        }
+        return self.cast<DecodeLimits>();
+      }));
+  // pybind11 pickles with protocol 2 and later: protocols 0 and 1 reduce
+  // through copyreg._reduce_ex, which aborts the interpreter on a pybind11
+  // instance. Every protocol reduces as protocol 2 does (copyreg.__newobj__
+  // and the state), which protocols 0 and 1 store too.
+  cls.def(
+      "__reduce_ex__",
+      [](const py::object& self, int protocol) {
+        return py::module_::import("builtins")
+            .attr("object")
+            .attr("__reduce_ex__")(self, std::max(protocol, 2));
+      },
+      py::arg("protocol"));
   cls.def("__repr__", [](const py::object& self) {
     std::string text = "linemap.DecodeLimits(";
     for (const char* name : LimitNames()) {

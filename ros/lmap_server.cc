@@ -8,11 +8,12 @@
 // `static_map` (nav_msgs/GetMap), as map_server does. MAP is the argument or
 // the private parameter ~map. A ~window that reaches past the map is
 // refused, and so is a map over ~max_cells, ~max_segments or ~max_objects
-// (the decoder's limits, DecodeLimits). Exit codes: 1 no master or a ROS
-// failure, 2 bad usage, a bad parameter, a map that cannot be read, one over
-// a limit or a window past it.
+// (the decoder's limits, DecodeLimits), naming the one it is over. Exit
+// codes: 1 no master or a ROS failure, 2 bad usage, a bad parameter, a map
+// that cannot be read, one over a limit or a window past it.
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -156,15 +157,15 @@ DecodeLimits LimitsOf(const LimitValues& values, std::optional<std::uint64_t> un
   return limits;
 }
 
-// Whether every limit that applies to the map at `path` is known (all for
-// an .lmap file, ~max_cells for a map image): it may then be loaded before
-// the master answers, as no ~NAME on the parameter server can change them.
+// Whether every limit that applies to the map at `path` is known: it may
+// then be loaded before the master answers, as no ~NAME on the parameter
+// server can change them.
 bool LimitsSettledFor(const std::string& path, const LimitValues& values) {
-  if (!IsLmapPath(path)) return values[0].has_value();
-  for (const std::optional<std::uint64_t>& value : values) {
-    if (!value) return false;
-  }
-  return true;
+  // LimitParametersFor(path) is the first of LimitParameters(), the order
+  // of `values`.
+  const std::size_t applying = LimitParametersFor(path).size();
+  return std::all_of(values.begin(), values.begin() + applying,
+                     [](const std::optional<std::uint64_t>& value) { return value.has_value(); });
 }
 
 class MapServer {

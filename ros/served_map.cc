@@ -1,12 +1,14 @@
 #include "ros/served_map.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "linemap/codec.h"
@@ -143,22 +145,52 @@ constexpr LimitParameter kLimitParameters[] = {
     {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
 };
 
-// The limits that apply to the map at `path`: all for an .lmap file,
-// ~max_cells (the first) for a map image.
-std::span<const LimitParameter> LimitsFor(const std::string& path) {
-  return std::span<const LimitParameter>(kLimitParameters).first(IsLmapPath(path) ? 3 : 1);
+// Whether `clause` holds "limit of VALUE" followed by `unit`, or when `unit`
+// is empty by no further digit (VALUE is not the start of a longer number).
+bool NamesLimitOf(std::string_view clause, std::uint64_t value, std::string_view unit = "") {
+  const std::string of = "limit of " + std::to_string(value);
+  for (std::size_t at = clause.find(of); at != std::string_view::npos;
+       at = clause.find(of, at + 1)) {
+    const std::string_view rest = clause.substr(at + of.size());
+    if (unit.empty() ? rest.empty() || !std::isdigit(static_cast<unsigned char>(rest[0]))
+                     : rest.starts_with(unit)) {
+      return true;
+    }
+  }
+  return false;
 }
 
-// `status` (a map over a limit) with the values of `named` in force.
-Status NamingLimits(const Status& status, const DecodeLimits& limits,
-                    std::span<const LimitParameter> named) {
+// Whether `error`, a map over one of the decoder's limits, is over `limit`,
+// now `value`. The library tells which limit an error hit only in its
+// words: "the limit of N cells" (the header, a map image); "the segment
+// limit of N", "C segments, over the limit of N", "segment count C is over
+// the limit of N"; "the object limit of N". The files' names and the chunk
+// go before them as context ("'a.lmap': chunk WALL: ..."), so only the last
+// clause is read. The decoder's other limits (file and chunk bytes, chain
+// cells) are no parameter: raising one of these would not lift them.
+bool ErrorIsOver(const std::string& error, const LimitParameter& limit, std::uint64_t value) {
+  const std::size_t colon = error.rfind(": ");
+  const std::string_view clause =
+      std::string_view(error).substr(colon == std::string::npos ? 0 : colon + 2);
+  if (limit.field == &DecodeLimits::max_cells) return NamesLimitOf(clause, value, " cells");
+  const char* noun = limit.field == &DecodeLimits::max_segments ? "segment" : "object";
+  // Draco's point count, checked after its header's, names no value.
+  return clause.find(noun) != std::string_view::npos &&
+         (NamesLimitOf(clause, value) || clause.find("limit of ") == std::string_view::npos);
+}
+
+// `status` (a map over a limit) with the parameter of `applying` it is over
+// and its value, when one is.
+Status NamingTheLimit(const Status& status, const DecodeLimits& limits,
+                      std::span<const LimitParameter> applying) {
   if (status.code() != StatusCode::kResourceExhausted) return status;
-  std::string text;
-  for (const LimitParameter& limit : named) {
-    text += (text.empty() ? " (limits: ~" : ", ~") + std::string(limit.name) + " " +
-            std::to_string(limits.*limit.field);
+  for (const LimitParameter& limit : applying) {
+    if (ErrorIsOver(status.message(), limit, limits.*limit.field)) {
+      return Status(status.code(), status.message() + " (limit: ~" + limit.name + " " +
+                                       std::to_string(limits.*limit.field) + ")");
+    }
   }
-  return Status(status.code(), status.message() + text + ")");
+  return status;
 }
 
 // A window of an .lmap file: only the tiles it meets are decoded (the
@@ -211,6 +243,10 @@ StatusOr<MapFrame> ReadMapFrame(const std::string& path, const DecodeLimits& lim
 
 std::span<const LimitParameter> LimitParameters() { return kLimitParameters; }
 
+std::span<const LimitParameter> LimitParametersFor(const std::string& path) {
+  return IsLmapPath(path) ? LimitParameters() : LimitParameters().first(1);
+}
+
 Status LimitRangeError(const LimitParameter& limit, const std::string& shown) {
   return InvalidArgumentError("~" + std::string(limit.name) + " must be a whole number from 1 to " +
                               std::to_string(kMaxLimitValue) + " (" + limit.unit + "), not " +
@@ -244,15 +280,14 @@ StatusOr<std::uint64_t> ParseLimit(const LimitParameter& limit, const std::strin
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
                              const DecodeLimits& limits) {
   StatusOr<Grid> grid = LoadWithin(path, window, limits);
-  if (!grid.ok()) return NamingLimits(grid.status(), limits, LimitsFor(path));
+  if (!grid.ok()) return NamingTheLimit(grid.status(), limits, LimitParametersFor(path));
   return grid;
 }
 
 Status CheckServedMap(const std::string& path, const std::optional<Window>& window,
                       const DecodeLimits& limits) {
   const StatusOr<MapFrame> frame = ReadMapFrame(path, limits);
-  // Of the limits only ~max_cells applies to a header.
-  if (!frame.ok()) return NamingLimits(frame.status(), limits, LimitsFor(path).first(1));
+  if (!frame.ok()) return NamingTheLimit(frame.status(), limits, LimitParametersFor(path));
   if (!window) return Status::Ok();
   const StatusOr<CellWindow> cells = WindowCells(frame->width, frame->height, frame->meta, *window);
   return cells.ok() ? Status::Ok() : cells.status().WithContext("'" + path + "'");

@@ -52,6 +52,10 @@ inline constexpr std::int64_t kMaxLimitValue = 2147483647;
 // furniture objects, per .lmap file), in that order.
 std::span<const LimitParameter> LimitParameters();
 
+// The limits that apply to the map at `path`, the first of
+// LimitParameters(): all three for an .lmap file, ~max_cells for a map image.
+std::span<const LimitParameter> LimitParametersFor(const std::string& path);
+
 // A value of `limit` given as text (a `_NAME:=VALUE` argument or a string
 // parameter), or as a number (an int or double parameter): a whole number
 // from 1 to kMaxLimitValue, else an invalid argument naming ~NAME and that
@@ -67,8 +71,10 @@ Status LimitRangeError(const LimitParameter& limit, const std::string& shown);
 // window meets (LoadLmapRegion); a map image is loaded whole and cropped.
 // limits.max_cells applies to the whole map, with a window too, and to a map
 // image (MapLoadOptions::max_cells); the other limits to .lmap files. A map
-// over a limit is refused (resource exhausted), naming the file and the
-// limits of LimitParameters() in force.
+// over a limit is refused (resource exhausted), naming the file, and the
+// parameter of LimitParametersFor(path) with its value when raising it can
+// lift the refusal (not for the decoder's other limits: file and chunk
+// bytes, chain cells).
 StatusOr<Grid> LoadServedMap(const std::string& path, const std::optional<Window>& window,
                              const DecodeLimits& limits = {});
 

@@ -1,6 +1,9 @@
 """linemap.DecodeLimits and the `limits` argument of the reading functions:
 the defaults of the C++ DecodeLimits, checked values, and every reader
 holding an .lmap file to them."""
+import copy
+import pickle
+
 import numpy as np
 import pytest
 
@@ -57,6 +60,45 @@ def test_values_are_checked(name):
     with pytest.raises(ValueError, match=name):
         setattr(limits, name, lowest - 1)
     assert getattr(limits, name) == DEFAULTS[name]
+
+
+def test_limits_pickle_and_copy_with_every_limit():
+    # Every limit off its default, the largest segment limit too.
+    limits = linemap.DecodeLimits(
+        max_file_bytes=10**6, max_cells=CELLS, max_chunk_bytes=2**20, max_inflated_bytes=2**21,
+        max_segments=2**64 - 1, max_chain_length=2**25, max_objects=OBJECTS - 1, max_threads=3)
+    assert all(getattr(limits, name) != default for name, default in DEFAULTS.items())
+    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+        loaded = pickle.loads(pickle.dumps(limits, protocol))
+        assert type(loaded) is linemap.DecodeLimits
+        assert loaded == limits and loaded is not limits
+        assert repr(loaded) == repr(limits)
+    for copied in (copy.deepcopy(limits), copy.copy(limits)):
+        assert copied == limits
+        copied.max_threads = 4
+        assert limits.max_threads == 3  # a copy, not a view
+    # A loaded copy holds a file to its limits as the original does.
+    with pytest.raises(MemoryError, match="object limit of 32"):
+        linemap.vectors(DEPOT, limits=pickle.loads(pickle.dumps(limits)))
+
+
+def test_unpickling_checks_the_limits():
+    state = linemap.DecodeLimits(max_objects=7).__getstate__()
+    assert state == {**DEFAULTS, "max_objects": 7}
+
+    def loaded(state):
+        limits = linemap.DecodeLimits.__new__(linemap.DecodeLimits)
+        limits.__setstate__(state)
+        return limits
+
+    # A state without a limit (pickled before it was added) keeps its default.
+    assert loaded({"max_objects": 7}) == linemap.DecodeLimits(max_objects=7)
+    with pytest.raises(ValueError, match="max_objects"):
+        loaded({**state, "max_objects": 0})
+    with pytest.raises(TypeError, match="max_cells"):
+        loaded({**state, "max_cells": 1.5})
+    with pytest.raises(ValueError, match="max_segment"):
+        loaded({**state, "max_segment": 5})  # a misspelt name is not ignored
 
 
 def test_limits_are_keywords_only():

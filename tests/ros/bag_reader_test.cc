@@ -8,6 +8,7 @@
 #include <climits>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "linemap/codec.h"
 #include "ros/ros_messages.h"
@@ -161,6 +162,28 @@ TEST_F(BagTest, TopicOfAnotherTypeExitsTwo) {
             std::string::npos)
       << result.err;
   EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+// A bag's maps have no vector layers to limit: --max-segments and
+// --max-objects are refused (exit 2, naming the bag), one map or all, and
+// nothing is written.
+TEST_F(BagTest, LayerLimitsAreRefused) {
+  for (const char* option : {"--max-segments", "--max-objects"}) {
+    for (const std::vector<std::string>& selection :
+         {std::vector<std::string>{"-o", dir_ + "/x.lmap"},
+          std::vector<std::string>{"--all", "-o", dir_ + "/all"}}) {
+      std::vector<std::string> argv = {"encode", bag_path_, option, "1000"};
+      argv.insert(argv.end(), selection.begin(), selection.end());
+      const CliResult result = RunCli(argv);
+      SCOPED_TRACE(std::string(option) + " " + selection[0] + ": " + result.err);
+      EXPECT_EQ(result.exit_code, 2);
+      EXPECT_NE(result.err.find(std::string(option) + " limits the vector layers of .lmap files"),
+                std::string::npos);
+      EXPECT_NE(result.err.find(bag_path_), std::string::npos);
+    }
+  }
+  EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+  EXPECT_FALSE(FileExists(dir_ + "/all"));
 }
 
 TEST_F(BagTest, NotABagExitsTwo) {

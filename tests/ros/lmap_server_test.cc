@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <boost/function.hpp>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <string>
 
 #include "linemap/codec.h"
@@ -364,7 +366,7 @@ TEST(LmapServerTest, BadLimitArgumentExitsTwoBeforeWaitingForTheMaster) {
        "lmap_server: ~max_objects" + range + "(rooms, and furniture objects, per file), not '2.5'"},
       {"_max_cells:=lots", "lmap_server: ~max_cells" + range + "(cells), not 'lots'"},
       // 604 x 307 = 185,428 cells.
-      {"_max_cells:=185427", "(limits: ~max_cells 185427)"},
+      {"_max_cells:=185427", "(limit: ~max_cells 185427)"},
   };
   for (const auto& [arg, expected] : cases) {
     const double start = Now();
@@ -397,9 +399,9 @@ TEST(LmapServerTest, MapOverALimitOrABadLimitParameterExitsTwo) {
   };
   const Case cases[] = {
       // 437 wall segments, 8 rooms, 33 furniture objects.
-      {{lmap, "_max_segments:=1"}, "", {}, "(limits: ~max_cells 1073741824, ~max_segments 1,"},
-      {{lmap, "_window:=[5,2,12.5,9]"}, "max_objects", 7, "~max_objects 7)"},
-      {{yaml}, "max_cells", 1000, "(limits: ~max_cells 1000)"},
+      {{lmap, "_max_segments:=1"}, "", {}, "segment limit of 1 (limit: ~max_segments 1)\n"},
+      {{lmap, "_window:=[5,2,12.5,9]"}, "max_objects", 7, "(limit: ~max_objects 7)\n"},
+      {{yaml}, "max_cells", 1000, "(limit: ~max_cells 1000)\n"},
       {{lmap}, "max_cells", 2.5, "~max_cells must be a whole number from 1 to 2147483647 "},
       {{lmap}, "max_segments", "many", "(wall segments per chunk), not 'many'"},
   };
@@ -417,6 +419,39 @@ TEST(LmapServerTest, MapOverALimitOrABadLimitParameterExitsTwo) {
     EXPECT_EQ(*code, 2) << server->Stderr();
     EXPECT_NE(server->Stderr().find(c.expected), std::string::npos) << server->Stderr();
     EXPECT_EQ(server->Stderr().find("no ROS master"), std::string::npos) << server->Stderr();
+    // A map over a limit names only that one.
+    for (const char* other : {"~max_cells ", "~max_segments ", "~max_objects "}) {
+      if (c.expected.find("(limit: ") != std::string::npos &&
+          c.expected.find(other) == std::string::npos) {
+        EXPECT_EQ(server->Stderr().find(other), std::string::npos) << server->Stderr();
+      }
+    }
+  }
+}
+
+// A file over a limit no parameter sets (here the 2 GiB of a file the
+// decoder reads, a sparse file) names no parameter: raising ~max_cells,
+// ~max_segments or ~max_objects would not serve it. Refused before the wait
+// for the master (none runs), with the limits on the command line or not.
+TEST(LmapServerTest, FileOverALimitNoParameterSetsNamesNone) {
+  const std::string big = MakeTempDir("server_big") + "/big.lmap";
+  WriteFile(big, "");
+  std::filesystem::resize_file(big, (std::uintmax_t{1} << 31) + 1);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{big, "_max_cells:=1000"},
+        std::vector<std::string>{big, "_max_cells:=1000", "_max_segments:=10",
+                                 "_max_objects:=10"}}) {
+    SCOPED_TRACE(args.size());
+    auto server = StartServerWithoutMaster(args, 60);
+    const std::optional<int> code = server->Wait(10);
+    ASSERT_TRUE(code.has_value()) << "still running after 10 s";
+    EXPECT_EQ(*code, 2) << server->Stderr();
+    const std::vector<std::string> lines = Lines(server->Stderr());
+    ASSERT_EQ(lines.size(), 1u) << server->Stderr();
+    EXPECT_NE(lines[0].find(big + "' is 2147483649 bytes, more than the limit of 2147483648"),
+              std::string::npos)
+        << lines[0];
+    EXPECT_EQ(lines[0].find("~max_"), std::string::npos) << lines[0];
   }
 }
 

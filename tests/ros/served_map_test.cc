@@ -255,6 +255,62 @@ TEST(ServedMapTest, LmapOverALimitIsRefusedNamingIt) {
   }
 }
 
+// A map over a limit names the parameter that lifts the refusal, with its
+// value, and no other; a map over one of the decoder's limits that no
+// parameter sets (file, chunk and inflated bytes, chain cells) names none.
+// Every .lmap fixture the server reads, of each version and layout, whole
+// and through a window.
+TEST(ServedMapTest, OnlyTheParameterThatLiftsTheRefusalIsNamed) {
+  const std::string dir = testing::SourceDir() + "/tests/data/lmap/";
+  constexpr std::uint64_t DecodeLimits::*kOtherLimits[] = {
+      &DecodeLimits::max_file_bytes, &DecodeLimits::max_chunk_bytes,
+      &DecodeLimits::max_inflated_bytes, &DecodeLimits::max_chain_length};
+  std::size_t named = 0;
+  std::size_t unnamed = 0;
+  for (const std::string& name : testing::ListDir(dir)) {
+    const std::string path = dir + name;
+    if (!name.ends_with(".lmap") || !LoadServedMap(path, std::nullopt).ok()) continue;
+    for (const std::optional<Window>& window :
+         {std::optional<Window>(), std::optional<Window>(Window{1.0, 1.0, 2.0, 2.0})}) {
+      SCOPED_TRACE(path + (window ? " with a window" : ""));
+      for (const LimitParameter& parameter : LimitParameters()) {
+        DecodeLimits limits;
+        limits.*parameter.field = 1;
+        const StatusOr<Grid> grid = LoadServedMap(path, window, limits);
+        if (grid.ok()) continue;  // e.g. no layers to be over ~max_segments
+        const std::string& message = grid.status().message();
+        EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted) << message;
+        EXPECT_TRUE(message.ends_with(" (limit: ~" + std::string(parameter.name) + " 1)"))
+            << message;
+        EXPECT_EQ(message.find("~max_"), message.rfind("~max_")) << message;
+        ++named;
+      }
+      for (std::uint64_t DecodeLimits::*field : kOtherLimits) {
+        DecodeLimits limits;
+        limits.*field = 1;
+        const StatusOr<Grid> grid = LoadServedMap(path, window, limits);
+        if (grid.ok()) continue;
+        const std::string& message = grid.status().message();
+        EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted) << message;
+        EXPECT_EQ(message.find("~max_"), std::string::npos) << message;
+        ++unnamed;
+      }
+    }
+  }
+  EXPECT_GT(named, 40u);
+  EXPECT_GT(unnamed, 40u);
+  // A parameter at the value of the limit the map is over is not named for
+  // it: depot_v2's 8 rooms and 33 objects are within ~max_objects 100, their
+  // chains over 100 cells.
+  DecodeLimits limits;
+  limits.max_chain_length = 100;
+  limits.max_objects = 100;
+  const StatusOr<Grid> chains = LoadServedMap(dir + "depot_v2.lmap", std::nullopt, limits);
+  ASSERT_FALSE(chains.ok());
+  EXPECT_TRUE(chains.status().message().ends_with("chain limit of 100"))
+      << chains.status().message();
+}
+
 // ~max_cells applies to a map image (whole, with a window too), and is the
 // only limit named.
 TEST(ServedMapTest, MapImageOverMaxCellsIsRefused) {
@@ -274,7 +330,7 @@ TEST(ServedMapTest, MapImageOverMaxCellsIsRefused) {
     const StatusOr<Grid> grid = LoadServedMap(yaml, window, limits);
     ASSERT_FALSE(grid.ok());
     EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted);
-    EXPECT_NE(grid.status().message().find("(limits: ~max_cells 185427)"), std::string::npos)
+    EXPECT_NE(grid.status().message().find("(limit: ~max_cells 185427)"), std::string::npos)
         << grid.status().message();
   }
 }
@@ -297,7 +353,7 @@ TEST(ServedMapTest, CheckServedMapChecksTheHeaderAndTheWindow) {
     const Status over = CheckServedMap(path, std::nullopt, limits);
     EXPECT_EQ(over.code(), StatusCode::kResourceExhausted) << over.message();
     EXPECT_NE(over.message().find(path), std::string::npos) << over.message();
-    EXPECT_NE(over.message().find("(limits: ~max_cells 185427)"), std::string::npos)
+    EXPECT_NE(over.message().find("(limit: ~max_cells 185427)"), std::string::npos)
         << over.message();
     const Status past = CheckServedMap(path, Window{-5, -5, 1, 1}, DecodeLimits{});
     EXPECT_EQ(past.code(), StatusCode::kInvalidArgument);

@@ -129,6 +129,8 @@ int RunDecode(const std::vector<std::string>& args) {
   if (!out) return ReportError("decode", InvalidArgumentError("missing -o OUT.yaml"));
   const Status output_ok = CheckOutput(*out, parsed->positional[0]);
   if (!output_ok.ok()) return ReportError("decode", output_ok);
+  const Status limits_apply = CheckLayerLimitsApplyTo({parsed->positional[0]}, *parsed);
+  if (!limits_apply.ok()) return ReportError("decode", limits_apply);
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
   if (!limits.ok()) return ReportError("decode", limits.status());
   const std::string& in = parsed->positional[0];

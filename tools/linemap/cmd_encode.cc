@@ -304,6 +304,10 @@ int RunEncode(const std::vector<std::string>& args) {
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("encode", InvalidArgumentError("missing -o OUT.lmap"));
   const std::string& map_path = parsed->positional[0];
+  // Checked here: a bag and a map image saved as it is read (SaveAsRead)
+  // never reach LoadMapArgument, which checks it too.
+  const Status limits_apply = CheckLayerLimitsApplyTo({map_path}, *parsed);
+  if (!limits_apply.ok()) return ReportError("encode", limits_apply);
   // A ROS 1 bag of nav_msgs/OccupancyGrid messages: tools/linemap/bag_input.cc.
   if (IsBagInput(map_path, *parsed)) {
     StatusOr<EncodeOptions> bag_options = EncodeOptionsFrom(*parsed);

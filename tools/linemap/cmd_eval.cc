@@ -32,7 +32,9 @@ const CommandSpec kEvalSpec = {
     "outline's cells and the cells whose centres it encloses).\n"
     "The map-reading options (--negate, --mode, the thresholds, --resolution,\n"
     "--origin) apply to ORIGINAL only: a decoded map's YAML carries its own\n"
-    "values. --max-cells limits both. Maps of different sizes are refused.\n"
+    "values. --max-cells limits both, --max-segments and --max-objects either\n"
+    "that is an .lmap file (refused when neither is). Maps of different sizes\n"
+    "are refused.\n"
     "With --tolerance T (whole cells, 0 to 4) also the guarantees of a save\n"
     "within T cells (Chebyshev): the Hausdorff distance between the two maps'\n"
     "occupied cells in each direction, the share of the original's wall-surface\n"
@@ -86,6 +88,9 @@ int RunEval(const std::vector<std::string>& args) {
   const std::string& decoded_path = parsed->positional[1];
   const Status applies = CheckMapOptionsApplyTo(original_path, *parsed);
   if (!applies.ok()) return ReportError("eval", applies);
+  // The layer limits apply to either map that is an .lmap file.
+  const Status limits_apply = CheckLayerLimitsApplyTo({original_path, decoded_path}, *parsed);
+  if (!limits_apply.ok()) return ReportError("eval", limits_apply);
   StatusOr<MapReadOptions> original_options = MapReadOptionsFrom(*parsed);
   if (!original_options.ok()) return ReportError("eval", original_options.status());
   StatusOr<Grid> original = LoadMapWithOptions(original_path, *original_options);

@@ -77,6 +77,8 @@ int RunExport(const std::vector<std::string>& args) {
   if (IsDirectory(*out)) {
     return ReportError("export", InvalidArgumentError("'" + *out + "' is a directory"));
   }
+  const Status limits_apply = CheckLayerLimitsApplyTo({parsed->positional[0]}, *parsed);
+  if (!limits_apply.ok()) return ReportError("export", limits_apply);
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);
   if (!limits.ok()) return ReportError("export", limits.status());
   const std::string& in = parsed->positional[0];

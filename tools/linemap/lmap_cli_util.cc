@@ -26,6 +26,21 @@ Status LayerLimitsFrom(const ParsedArgs& args, DecodeLimits* limits) {
   return Status::Ok();
 }
 
+Status CheckLayerLimitsApplyTo(const std::vector<std::string>& paths, const ParsedArgs& args) {
+  for (const std::string& path : paths) {
+    if (IsLmapPath(path)) return Status::Ok();
+  }
+  for (const OptionSpec& option : LayerLimitOptionSpecs()) {
+    if (!args.Has(option.name)) continue;
+    const std::string inputs =
+        paths.size() == 1 ? "'" + paths[0] + "' is not an .lmap file"
+                          : "neither '" + paths[0] + "' nor '" + paths[1] + "' is an .lmap file";
+    return InvalidArgumentError(option.name + " limits the vector layers of .lmap files; " +
+                                inputs);
+  }
+  return Status::Ok();
+}
+
 std::vector<OptionSpec> DecodeLimitOptionSpecs() {
   std::vector<OptionSpec> options = {
       {"--max-cells", "N", "refuse maps with more cells than N (default 1073741824 = 2^30)"},

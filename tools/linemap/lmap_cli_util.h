@@ -19,6 +19,12 @@ namespace linemap::cli {
 std::vector<OptionSpec> LayerLimitOptionSpecs();
 Status LayerLimitsFrom(const ParsedArgs& args, DecodeLimits* limits);
 
+// Invalid argument when `args` hold a layer limit and neither of `paths`
+// (one or two), the inputs it could apply to, is an .lmap file: a map
+// image, YAML or bag has no layers, and silently ignoring the option would
+// hide that it limits nothing.
+Status CheckLayerLimitsApplyTo(const std::vector<std::string>& paths, const ParsedArgs& args);
+
 // --max-cells, --max-file-bytes, the layer limits and --threads of the
 // decoder, from the parsed arguments.
 std::vector<OptionSpec> DecodeLimitOptionSpecs();

@@ -79,6 +79,7 @@ Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
 
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
   LINEMAP_RETURN_IF_ERROR(CheckMapOptionsApplyTo(path, args));
+  LINEMAP_RETURN_IF_ERROR(CheckLayerLimitsApplyTo({path}, args));
   LINEMAP_ASSIGN_OR_RETURN(MapReadOptions options, MapReadOptionsFrom(args));
   return LoadMapWithOptions(path, options);
 }

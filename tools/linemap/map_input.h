@@ -34,7 +34,7 @@ StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args);
 Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args);
 
 // Loads `path` as a map (.lmap, YAML or image) with the overrides in `args`
-// (CheckMapOptionsApplyTo first).
+// (CheckMapOptionsApplyTo and CheckLayerLimitsApplyTo first).
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args);
 
 // Loads `path` (.lmap, YAML or image) with `options.image`, or an .lmap

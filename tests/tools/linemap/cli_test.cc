@@ -53,6 +53,10 @@ TEST(CliTest, LimitsAreWholeNumbers) {
   EXPECT_EQ(RunCli({"info", map, "--max-cells", "4799"}).exit_code, 2);
 }
 
+// Two free points of the depot map (map-frame metres), for plan.
+constexpr const char* kDepotFrom = "5,5";
+constexpr const char* kDepotTo = "25,10";
+
 // Every command that reads an .lmap file holds it to --max-segments and
 // --max-objects: depot_v2.lmap has 437 wall segments and 33 furniture
 // objects in 8 rooms (as `linemap info --json` lists them), so it reads at
@@ -68,6 +72,12 @@ TEST(CliTest, LayerLimitsApplyToEveryCommandReadingAnLmap) {
       {"lines", lmap, "-o", dir + "/l.csv"},
       {"segment", lmap, "-o", dir + "/s.json"},
       {"encode", lmap, "-o", dir + "/re.lmap"},
+      {"plan", lmap, "--from", kDepotFrom, "--to", kDepotTo},
+      // The windows read the layer sections that reach them, yet the limits
+      // count the file's.
+      {"decode", lmap, "-o", dir + "/w.yaml", "--window-cells", "0,0,50,50"},
+      {"decode", lmap, "-o", dir + "/r.yaml", "--room-at", "15.1,7.6"},
+      {"export", lmap, "-o", dir + "/w.csv", "--window", "5,2,12.5,9"},
   };
   struct Limit {
     const char* option;
@@ -86,6 +96,57 @@ TEST(CliTest, LayerLimitsApplyToEveryCommandReadingAnLmap) {
       argv.back() = std::to_string(limit.count);
       EXPECT_EQ(RunCli(argv).exit_code, 0);
     }
+  }
+}
+
+// The layer limits count an .lmap file's layers: with maps that have none
+// (a map YAML, a bare image) every command that reads a map refuses them
+// (exit 2, naming the option and the map, nothing written) rather than
+// ignoring them, as an .lmap file refuses the options that read images.
+// eval takes them when either of its maps is an .lmap file, and holds that
+// one to them.
+TEST(CliTest, LayerLimitsWithoutAnLmapAreRefused) {
+  const std::string yaml = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  const std::string image = testing::BundledMapsDir() + "/nav2/depot.pgm";
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/depot_v2.lmap";
+  const std::string dir = testing::MakeTempDir("cli_layer_limits_no_lmap");
+  for (const std::string& map : {yaml, image}) {
+    const std::vector<std::vector<std::string>> commands = {
+        {"info", map},
+        {"lines", map, "-o", dir + "/l.csv"},
+        {"segment", map, "-o", dir + "/s.json"},
+        {"plan", map, "--from", kDepotFrom, "--to", kDepotTo, "--svg", dir + "/p.svg"},
+        {"encode", map, "-o", dir + "/e.lmap"},
+        // Saved as it is read, without loading the grid.
+        {"encode", map, "-o", dir + "/f.lmap", "--no-png-ratio"},
+        {"decode", map, "-o", dir + "/d.yaml"},
+        {"export", map, "-o", dir + "/x.csv"},
+        {"eval", map, yaml},
+    };
+    for (const char* option : {"--max-segments", "--max-objects"}) {
+      for (std::vector<std::string> argv : commands) {
+        argv.insert(argv.end(), {option, "1000"});
+        const CliResult r = RunCli(argv);
+        SCOPED_TRACE(argv[0] + " " + map + " " + option + ": " + r.err);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_NE(r.err.find(std::string(option) + " limits the vector layers of .lmap files"),
+                  std::string::npos);
+        EXPECT_NE(r.err.find("'" + map + "'"), std::string::npos);
+        EXPECT_EQ(r.out, "");
+      }
+    }
+    EXPECT_TRUE(testing::ListDir(dir).empty());
+  }
+  // Without the limits the same maps are read.
+  EXPECT_EQ(RunCli({"info", image}).exit_code, 0);
+  EXPECT_EQ(RunCli({"eval", image, yaml}).exit_code, 0);
+  for (const std::vector<std::string>& maps :
+       {std::vector<std::string>{yaml, lmap}, std::vector<std::string>{lmap, yaml}}) {
+    SCOPED_TRACE(maps[0] + " " + maps[1]);
+    EXPECT_EQ(RunCli({"eval", maps[0], maps[1], "--max-segments", "437"}).exit_code, 0);
+    const CliResult over = RunCli({"eval", maps[0], maps[1], "--max-segments", "436"});
+    EXPECT_EQ(over.exit_code, 2);
+    EXPECT_NE(over.err.find("exceed the segment limit of 436"), std::string::npos) << over.err;
   }
 }
 
