@@ -76,16 +76,23 @@ std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& d
 
 // The detours LocalDetourCulprits cannot see: a wall grown along a stretch
 // of free space longer than its `radius` steps, which a plan that runs along
-// the wall and leaves on the same side walks round (2 steps per cell of
-// growth, 3 % of a plan under 67 steps per step) although every plan of up
-// to `radius` steps keeps its length. For each component (8-connected) of
+// the wall and leaves on the same side walks round (2 steps per cell grown;
+// 3 % of a plan under 67 steps per cell grown) although every plan of up to
+// `radius` steps keeps its length. For each component (8-connected) of
 // cells free on the original only that is longer than `radius` - 8 cells in
-// either axis: plans on the original from up to 32 of the cells beside it,
-// inside its box and 8 cells around, must be on the decode with the same
-// length; where one is not, the cells of its plan not free on the decode
-// (as LocalDetourCulprits gives them).
+// either axis: the plans on the original of up to `max_steps` steps from
+// every cell beside it, inside its box and 8 cells around, must be on the
+// decode within 3 % (PlansAgree); where one is not, the cells of its plan
+// not free on the decode (as LocalDetourCulprits gives them), each once.
+// `max_steps`: a growth of T cells adds at most 2T steps to a plan along
+// it, within 3 % of plans longer than 200 T / 3 steps, so the plans up to
+// that length are the ones to check. With `checked` (a decode this check
+// found nothing on, or whose culprits were all mended since), only the
+// stretches with a cell that differs from it in their box and 8 cells
+// around are searched from.
 std::vector<std::size_t> StretchDetourCulprits(const Grid& original, const Grid& decoded,
-                                               int radius);
+                                               int radius, int max_steps,
+                                               const Grid* checked = nullptr);
 
 // The plans LocalDetourCulprits checks (from each cell beside a change, on
 // each map, to every cell free on the other within `radius` steps), and

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "codec/tolerance/tolerance_internal.h"
+#include "linemap/cells.h"
 #include "linemap/grid.h"
 
 namespace linemap::tolerance_internal {
@@ -146,64 +147,135 @@ TEST(LocalDetourCulpritsTest, AWallGrownAtItsTipGivesTheTipBack) {
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 8).empty());
 }
 
-// A 100 x 12 corridor along a wall on row 0 whose decode grows the wall by
-// two rows (rows 1 and 2) over columns [first, last]. A plan along row 1
-// past the whole stretch walks round it: from (first - 1, 1) to (last + 1,
-// 1) 4 steps longer, beyond 3 % for the 61 steps of a 60-cell stretch.
-Grid WallGrownAlong(const Grid& original, int first, int last) {
+// Steps of the shortest 4-connected plan over free cells from `a` to `b`;
+// -1 when there is none. The test's own breadth-first search.
+int PlanSteps(const Grid& g, CellIndex a, CellIndex b) {
+  std::vector<int> steps(g.size(), -1);
+  std::vector<std::size_t> queue{g.Index(a.col, a.row)};
+  steps[queue[0]] = 0;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const int c = static_cast<int>(queue[head] % g.width());
+    const int r = static_cast<int>(queue[head] / g.width());
+    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
+    for (int k = 0; k < 4; ++k) {
+      if (!g.Contains(c + dc[k], r + dr[k]) || g.at(c + dc[k], r + dr[k]) != Cell::kFree) continue;
+      const std::size_t n = g.Index(c + dc[k], r + dr[k]);
+      if (steps[n] >= 0) continue;
+      steps[n] = steps[queue[head]] + 1;
+      queue.push_back(n);
+    }
+  }
+  return steps[g.Index(b.col, b.row)];
+}
+
+// A corridor `width` cells long and `height` wide along a wall on row 0.
+Grid CorridorAlongAWall(int width, int height) {
+  Grid g(width, height, Cell::kFree);
+  for (int c = 0; c < width; ++c) g.set(c, 0, Cell::kOccupied);
+  return g;
+}
+
+// The decode grows the wall by `rows` rows (rows 1 to `rows`) over columns
+// [first, last]. A plan along row 1 past the whole stretch walks round it:
+// 2 `rows` steps longer.
+Grid WallGrownAlong(const Grid& original, int first, int last, int rows) {
   Grid decoded = original;
   for (int c = first; c <= last; ++c) {
-    decoded.set(c, 1, Cell::kOccupied);
-    decoded.set(c, 2, Cell::kOccupied);
+    for (int r = 1; r <= rows; ++r) decoded.set(c, r, Cell::kOccupied);
   }
   return decoded;
 }
 
-Grid CorridorAlongAWall() {
-  Grid g(100, 12, Cell::kFree);
-  for (int c = 0; c < 100; ++c) g.set(c, 0, Cell::kOccupied);
-  return g;
+// The plans from beside the stretch (and of at most `max_steps`) that the
+// stretch check holds to their length, given back until it finds nothing:
+// the rounds the encoder runs, on these cells alone.
+Grid MendStretches(const Grid& original, Grid decoded, int max_steps) {
+  for (int round = 0; round < 8; ++round) {
+    const std::vector<std::size_t> culprits =
+        StretchDetourCulprits(original, decoded, 32, max_steps);
+    if (culprits.empty()) break;
+    for (const std::size_t i : culprits) {
+      EXPECT_EQ(original.cells()[i], Cell::kFree);
+      EXPECT_NE(decoded.cells()[i], Cell::kFree);
+      decoded.mutable_cells()[i] = Cell::kFree;
+    }
+  }
+  return decoded;
 }
 
-// Every plan of up to 32 steps from beside the stretch keeps its length
-// (the corridor stays orthogonally convex), so the local check finds
-// nothing; the stretch check finds the plans along it and gives back cells
-// of the stretch only (plans along row 2 are 2 steps longer with row 1 back
-// alone, 3.3 % of 61 steps, so both rows come back), after which neither
-// check finds anything.
+// A 60-cell stretch grown by 2 rows: the plan from (19, 1) to (80, 1) is 4
+// steps longer (61 to 65, 6.6 %), yet every plan of up to 32 steps from
+// beside the stretch keeps its length (the corridor stays orthogonally
+// convex), so the local check finds nothing. The stretch check gives back
+// cells of the stretch only, after which the plan is as long as before and
+// neither check finds anything.
 TEST(StretchDetourCulpritsTest, FindsAWallGrownAlongALongStretch) {
-  const Grid original = CorridorAlongAWall();
-  Grid decoded = WallGrownAlong(original, 20, 79);
+  const Grid original = CorridorAlongAWall(100, 12);
+  const Grid decoded = WallGrownAlong(original, 20, 79, 2);
+  ASSERT_EQ(PlanSteps(decoded, {19, 1}, {80, 1}), 65);
   EXPECT_TRUE(LocalDetourCulprits(original, decoded, 32).empty());
-  const std::vector<std::size_t> culprits = StretchDetourCulprits(original, decoded, 32);
+  const std::vector<std::size_t> culprits = StretchDetourCulprits(original, decoded, 32, 69);
   ASSERT_FALSE(culprits.empty());
+  EXPECT_EQ(AsSet(culprits).size(), culprits.size()) << "each cell once";
   for (const std::size_t i : culprits) {
     EXPECT_TRUE(i / 100 == 1 || i / 100 == 2) << "row " << i / 100;
     EXPECT_GE(i % 100, 20u);
     EXPECT_LE(i % 100, 79u);
   }
-  for (const std::size_t i : culprits) decoded.mutable_cells()[i] = Cell::kFree;
-  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
-  EXPECT_TRUE(LocalDetourCulprits(original, decoded, 32).empty());
+  const Grid mended = MendStretches(original, decoded, 69);
+  EXPECT_EQ(PlanSteps(mended, {19, 1}, {80, 1}), 61);
+  EXPECT_TRUE(LocalDetourCulprits(original, mended, 32).empty());
+}
+
+// The same with a pocket in the wall (50, 0) that the decode fills, so that
+// the stretch's cells are no longer in one row: the plan past its ends is
+// still found (it was missed when the sources were every k-th cell beside
+// the stretch rather than all of them).
+TEST(StretchDetourCulpritsTest, FindsItWithAPocketInTheWall) {
+  Grid original = CorridorAlongAWall(100, 12);
+  original.set(50, 0, Cell::kFree);
+  Grid decoded = WallGrownAlong(original, 20, 79, 2);
+  decoded.set(50, 0, Cell::kOccupied);
+  ASSERT_EQ(PlanSteps(decoded, {19, 1}, {80, 1}), 65);
+  EXPECT_FALSE(StretchDetourCulprits(original, decoded, 32, 69).empty());
+  EXPECT_EQ(PlanSteps(MendStretches(original, decoded, 69), {19, 1}, {80, 1}), 61);
+}
+
+// A stretch down a column, and one grown by 4 cells (T = 4) over 258
+// columns: its end-to-end plan, 259 steps, is 8 steps (3.09 %) longer,
+// which a check of up to 200 T / 3 + 2 = 269 steps sees.
+TEST(StretchDetourCulpritsTest, FindsVerticalAndLongStretches) {
+  Grid tall(12, 100, Cell::kFree);
+  for (int r = 0; r < 100; ++r) tall.set(0, r, Cell::kOccupied);
+  Grid tall_decoded = tall;
+  for (int r = 20; r <= 79; ++r) {
+    tall_decoded.set(1, r, Cell::kOccupied);
+    tall_decoded.set(2, r, Cell::kOccupied);
+  }
+  EXPECT_EQ(PlanSteps(MendStretches(tall, tall_decoded, 69), {1, 19}, {1, 80}), 61);
+
+  const Grid wide = CorridorAlongAWall(300, 14);
+  const Grid wide_decoded = WallGrownAlong(wide, 20, 277, 4);
+  ASSERT_EQ(PlanSteps(wide_decoded, {19, 1}, {278, 1}), 267);
+  EXPECT_EQ(PlanSteps(MendStretches(wide, wide_decoded, 269), {19, 1}, {278, 1}), 259);
 }
 
 // A stretch the local check spans (20 columns, within its 32 steps) is left
 // to it: the local check finds its detour, the stretch check does not look.
 TEST(StretchDetourCulpritsTest, LeavesShortStretchesToTheLocalCheck) {
-  const Grid original = CorridorAlongAWall();
-  const Grid decoded = WallGrownAlong(original, 40, 59);
+  const Grid original = CorridorAlongAWall(100, 12);
+  const Grid decoded = WallGrownAlong(original, 40, 59, 2);
   EXPECT_FALSE(LocalDetourCulprits(original, decoded, 32).empty());
-  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
+  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32, 69).empty());
 }
 
-// A wall grown on the far side of a plan's way changes no plan: the
-// stretch check gives nothing back. Here the decode grows the wall on row
-// 0's side over the whole corridor length, so no plan can enter the
-// stretch from an end (its ends are the map's edges).
+// A wall grown along the whole corridor changes no plan (no plan can enter
+// the stretch from an end; its ends are the map's edges): the stretch check
+// gives nothing back.
 TEST(StretchDetourCulpritsTest, GivesNothingBackWhereNoPlanIsLonger) {
-  const Grid original = CorridorAlongAWall();
-  const Grid decoded = WallGrownAlong(original, 0, 99);
-  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32).empty());
+  const Grid original = CorridorAlongAWall(100, 12);
+  const Grid decoded = WallGrownAlong(original, 0, 99, 2);
+  EXPECT_TRUE(StretchDetourCulprits(original, decoded, 32, 69).empty());
 }
 
 // Lost cells cost what they are, not how far they lie: below a band of
