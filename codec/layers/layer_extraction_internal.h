@@ -55,7 +55,8 @@ class EdgeCells {
   std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s) const;
 
   // One byte per cell, non-zero exactly at the edge cells (as
-  // ComputeEdgeMap's is_edge; Near() restores them before it returns).
+  // ComputeEdgeMap's is_edge), except while Near() runs: it marks the cells
+  // it lists and restores them before it returns.
   const std::uint8_t* bytes() const { return edge_.data(); }
 
  private:

@@ -1,8 +1,8 @@
-// Scanning rows of byte flags for the next set (or clear) one, eight bytes at a time:
-// most rows of a map's masks are long runs of zeros (open floor, unknown
-// space), and the labelling, the wall-furniture search and the wall cover's
-// search for edge cells no wall accounts for (codec/layers/wall_cover.cc)
-// walk them.
+// Scanning rows of byte flags for the next set (or clear) one, eight bytes
+// at a time: most rows of a map's masks are long runs of zeros (open floor,
+// unknown space), and the labelling, the wall-furniture search and the wall
+// cover's search for edge cells no wall accounts for
+// (codec/layers/wall_cover.cc) walk them.
 #ifndef LINEMAP_CODEC_SEGMENT_BYTE_SCAN_H_
 #define LINEMAP_CODEC_SEGMENT_BYTE_SCAN_H_
 

@@ -15,13 +15,16 @@ namespace linemap::bench {
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 
 // The same for two operations timed in blocks: one untimed run of `a`, then
-// half of a's timed runs, then the same for `b`; then b's block before a's
-// for the other half. Blocks rather than runs taking turns, because a run
-// finds the heap as the previous operation left it (which of its buffers
-// come from fresh pages, a page fault per 4 kB, and which are reused), and
-// interleaved decodes of one map swung up to 3x with it (avz5floor_plan:
-// 0.22 ms alone, 0.66 ms in turn with libpng's, libpng's 0.67 and 1.25 ms). Two rounds in both
-// orders still put a rival codec and ours in the same phase of a shared machine. Returns the runs
+// half of a's timed runs (rounded up), then the same for `b`; then, with
+// `repeats` of 2 or more, b's block before a's for the other half. Each
+// block's untimed run adds a run per operation and round (maps of one
+// timed run take about twice as long as before). Blocks rather than runs
+// taking turns, because a run finds the heap as the previous operation
+// left it (which of its buffers come from fresh pages, a page fault per
+// 4 kB, and which are reused), and interleaved decodes of one map swung
+// up to 3x with it (avz5floor_plan: 0.22 ms alone, 0.66 ms in turn with
+// libpng's, libpng's 0.67 and 1.25 ms). The two orders still put a rival
+// codec and ours in the same phase of a shared machine. Returns the runs
 // of a, then of b.
 std::pair<std::vector<double>, std::vector<double>> TimeRunsInBlocks(const std::function<void()>& a,
                                                                      const std::function<void()>& b,
