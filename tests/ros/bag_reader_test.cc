@@ -186,6 +186,48 @@ TEST_F(BagTest, LayerLimitsAreRefused) {
   EXPECT_FALSE(FileExists(dir_ + "/all"));
 }
 
+// An OccupancyGrid message has its own resolution and origin and no pixels
+// to negate or scale: the options that read images are refused (exit 2,
+// naming the bag and the option), not silently ignored, and nothing is
+// written.
+TEST_F(BagTest, ImageOptionsAreRefused) {
+  const std::vector<std::vector<std::string>> options = {
+      {"--resolution", "0.1"}, {"--origin", "1,2"}, {"--negate"}, {"--mode", "scale"}};
+  for (const std::vector<std::string>& option : options) {
+    std::vector<std::string> argv = {"encode", bag_path_, "-o", dir_ + "/x.lmap"};
+    argv.insert(argv.end(), option.begin(), option.end());
+    const CliResult result = RunCli(argv);
+    SCOPED_TRACE(option[0] + ": " + result.err);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find(option[0] + " reads map images and YAMLs"), std::string::npos);
+    EXPECT_NE(result.err.find(bag_path_), std::string::npos);
+  }
+  EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+// The thresholds read the messages' occupancies: a value is free at or
+// below the free percent (map_saver's 25 by default), so --free-thresh 0.0
+// leaves free only the cells of occupancy 0. Counted here on the message.
+TEST_F(BagTest, ThresholdsApplyToTheMessages) {
+  std::size_t zero = 0;
+  std::size_t up_to_25 = 0;
+  for (const std::int8_t value : messages_[0].data) {
+    zero += value == 0;
+    up_to_25 += value >= 0 && value <= 25;
+  }
+  ASSERT_LT(zero, up_to_25);  // the mixed-in values include 1..25
+  for (const bool thresh : {false, true}) {
+    std::vector<std::string> argv = {"encode", bag_path_, "--lossless",    "--index",
+                                     "0",      "-o",      dir_ + "/x.lmap"};
+    if (thresh) argv.insert(argv.end(), {"--free-thresh", "0.0"});
+    const CliResult result = RunCli(argv);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    StatusOr<Grid> decoded = LoadLmap(dir_ + "/x.lmap");
+    ASSERT_TRUE(decoded.ok()) << decoded.status().message();
+    EXPECT_EQ(decoded->Count().free, thresh ? zero : up_to_25);
+  }
+}
+
 TEST_F(BagTest, NotABagExitsTwo) {
   const std::string fake = dir_ + "/fake.bag";
   WriteFile(fake, "not a bag at all");

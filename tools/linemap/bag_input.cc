@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "format/file_io.h"
+#include "linemap/map_io.h"
 #include "linemap/occupancy_grid.h"
 #include "ros/bag_reader.h"
 
@@ -43,7 +44,7 @@ struct BagSelection {
   bool all = false;
   std::string out;  // OUT.lmap, or the folder with --all
   OccupancyThresholds thresholds;
-  std::uint64_t max_cells = std::uint64_t{1} << 28;
+  std::uint64_t max_cells = MapLoadOptions{}.max_cells;  // as for a map image
   Durability durability = Durability::kSynced;
 };
 

@@ -310,6 +310,8 @@ int RunEncode(const std::vector<std::string>& args) {
   if (!limits_apply.ok()) return ReportError("encode", limits_apply);
   // A ROS 1 bag of nav_msgs/OccupancyGrid messages: tools/linemap/bag_input.cc.
   if (IsBagInput(map_path, *parsed)) {
+    const Status image_options = CheckImageOptionsApplyToBag(map_path, *parsed);
+    if (!image_options.ok()) return ReportError("encode", image_options);
     StatusOr<EncodeOptions> bag_options = EncodeOptionsFrom(*parsed);
     if (!bag_options.ok()) return ReportError("encode", bag_options.status());
     return EncodeBag(map_path, *parsed, *bag_options);

@@ -77,6 +77,19 @@ Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
   return Status::Ok();
 }
 
+Status CheckImageOptionsApplyToBag(const std::string& path, const ParsedArgs& args) {
+  // The thresholds do apply: they read the messages' occupancies (0..100).
+  for (const char* option : {"--resolution", "--origin", "--negate", "--mode"}) {
+    if (args.Has(option)) {
+      return InvalidArgumentError(std::string(option) +
+                                  " reads map images and YAMLs; the maps of the bag '" + path +
+                                  "' are nav_msgs/OccupancyGrid messages, which carry their own "
+                                  "resolution, origin and occupancies");
+    }
+  }
+  return Status::Ok();
+}
+
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {
   LINEMAP_RETURN_IF_ERROR(CheckMapOptionsApplyTo(path, args));
   LINEMAP_RETURN_IF_ERROR(CheckLayerLimitsApplyTo({path}, args));

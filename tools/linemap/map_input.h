@@ -33,6 +33,11 @@ StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args);
 // file's own values stand, and silently ignoring the option would hide it.
 Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args);
 
+// Invalid argument when `args` hold --resolution, --origin, --negate or
+// --mode for the ROS 1 bag `path`: an OccupancyGrid message has no pixels
+// to negate or scale, and its own resolution and origin.
+Status CheckImageOptionsApplyToBag(const std::string& path, const ParsedArgs& args);
+
 // Loads `path` as a map (.lmap, YAML or image) with the overrides in `args`
 // (CheckMapOptionsApplyTo and CheckLayerLimitsApplyTo first).
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args);
