@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "python/arrays.h"
+#include "python/pickling.h"
 
 namespace linemap::python {
 namespace {
@@ -130,18 +131,7 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
         }
         return self.cast<DecodeLimits>();
       }));
-  // pybind11 pickles with protocol 2 and later: protocols 0 and 1 reduce
-  // through copyreg._reduce_ex, which aborts the interpreter on a pybind11
-  // instance. Every protocol reduces as protocol 2 does (copyreg.__newobj__
-  // and the state), which protocols 0 and 1 store too.
-  cls.def(
-      "__reduce_ex__",
-      [](const py::object& self, int protocol) {
-        return py::module_::import("builtins")
-            .attr("object")
-            .attr("__reduce_ex__")(self, std::max(protocol, 2));
-      },
-      py::arg("protocol"));
+  ReduceAsProtocolTwoAtLeast(cls);
   cls.def("__repr__", [](const py::object& self) {
     std::string text = "linemap.DecodeLimits(";
     for (const char* name : LimitNames()) {

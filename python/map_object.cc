@@ -12,6 +12,7 @@
 #include "linemap/occupancy_grid.h"
 #include "python/arrays.h"
 #include "python/errors.h"
+#include "python/pickling.h"
 
 namespace linemap::python {
 
@@ -170,6 +171,52 @@ void SetThresholds(Map& map, double occupied, double free) {
   map.meta.free_thresh = free;
 }
 
+// Pickled as a dict of the cells (numpy pickles the array) and every
+// metadata field, so that a map sent to a worker process saves the same
+// YAML there.
+py::dict MapState(const Map& map) {
+  py::dict state;
+  state["cells"] = map.cells;
+  state["resolution"] = map.meta.resolution;
+  state["origin"] = OriginTuple(map.meta.origin);
+  state["mode"] = MapModeName(map.meta.mode);
+  state["negate"] = map.meta.negate;
+  state["occupied_thresh"] = map.meta.occupied_thresh;
+  state["free_thresh"] = map.meta.free_thresh;
+  return state;
+}
+
+MapMode ModeFromName(const std::string& name) {
+  for (const MapMode mode : {MapMode::kTrinary, MapMode::kScale, MapMode::kRaw}) {
+    if (name == MapModeName(mode)) return mode;
+  }
+  throw py::value_error("cannot unpickle a linemap.Map of mode '" + name +
+                        "': modes are 'trinary', 'scale' and 'raw'");
+}
+
+// Unpickling checks the state as the constructor and the properties check
+// their arguments: a pickle is input like any other.
+Map MapFromState(const py::dict& state) {
+  for (const char* key :
+       {"cells", "resolution", "origin", "mode", "negate", "occupied_thresh", "free_thresh"}) {
+    if (!state.contains(key)) {
+      throw py::value_error(std::string("cannot unpickle a linemap.Map without '") + key + "'");
+    }
+  }
+  const py::object cells = state["cells"];
+  CheckCellsArray(cells);
+  Map map;
+  map.cells = py::reinterpret_borrow<py::array>(cells);
+  CheckCellValues(map.cells);
+  map.meta.resolution = state["resolution"].cast<double>();
+  CheckResolution(map.meta.resolution);
+  map.meta.origin = OriginArgument(state["origin"]);
+  map.meta.mode = ModeFromName(state["mode"].cast<std::string>());
+  map.meta.negate = state["negate"].cast<bool>();
+  SetThresholds(map, state["occupied_thresh"].cast<double>(), state["free_thresh"].cast<double>());
+  return map;
+}
+
 std::string Repr(const Map& map) {
   const Pose2D& o = map.meta.origin;
   return "<linemap.Map " + std::to_string(map.cells.shape(1)) + " x " +
@@ -239,7 +286,7 @@ Grid GridFromMap(const Map& map) {
 }
 
 void BindMap(py::module_& module) {
-  py::class_<Map>(module, "Map", R"doc(
+  py::class_<Map> cls(module, "Map", R"doc(
 A trinary occupancy grid in the map frame.
 
 ``cells`` is a numpy ``uint8`` array of shape (height, width); row 0 is the
@@ -247,22 +294,22 @@ row at the map origin (the bottom of the map image), as in
 nav_msgs/OccupancyGrid. Values are ``linemap.FREE`` (0), ``OCCUPIED`` (1) and
 ``UNKNOWN`` (2). ``resolution`` is in metres per cell, ``origin`` is the pose
 (x, y, yaw) of the lower-left corner of cell (0, 0) in metres and radians.
-)doc")
-      .def(py::init([](const py::object& cells, double resolution, const py::object& origin) {
-             CheckCellsArray(cells);
-             CheckResolution(resolution);
-             Map map;
-             map.cells = py::reinterpret_borrow<py::array>(cells);
-             CheckCellValues(map.cells);
-             map.meta.resolution = resolution;
-             map.meta.origin = OriginArgument(origin);
-             return map;
-           }),
-           py::arg("cells"), py::arg("resolution") = kDefaultResolution,
-           py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
-           "Map(cells, resolution=0.05, origin=(0, 0, 0)). `cells` is kept, not copied; "
-           "an array of another dtype raises TypeError, of another shape or with values "
-           "other than 0, 1, 2 ValueError.")
+)doc");
+  cls.def(py::init([](const py::object& cells, double resolution, const py::object& origin) {
+            CheckCellsArray(cells);
+            CheckResolution(resolution);
+            Map map;
+            map.cells = py::reinterpret_borrow<py::array>(cells);
+            CheckCellValues(map.cells);
+            map.meta.resolution = resolution;
+            map.meta.origin = OriginArgument(origin);
+            return map;
+          }),
+          py::arg("cells"), py::arg("resolution") = kDefaultResolution,
+          py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
+          "Map(cells, resolution=0.05, origin=(0, 0, 0)). `cells` is kept, not copied; "
+          "an array of another dtype raises TypeError, of another shape or with values "
+          "other than 0, 1, 2 ValueError.")
       .def_property(
           "cells", [](const Map& map) { return map.cells; },
           [](Map& map, const py::object& cells) {
@@ -334,6 +381,8 @@ more than ``max_cells`` cells (default 2^30, as load()) MemoryError, before
 the data are copied.
 )doc")
       .def("__repr__", &Repr);
+  cls.def(py::pickle(&MapState, &MapFromState));
+  ReduceAsProtocolTwoAtLeast(cls);
 }
 
 }  // namespace linemap::python

@@ -1,4 +1,4 @@
-"""linemap.Map: cells as numpy arrays, checked; nav_msgs/OccupancyGrid
+"""linemap.Map: cells as numpy arrays, checked; pickling; nav_msgs/OccupancyGrid
 fields both ways, against hand-made arrays."""
 import array
 
@@ -200,3 +200,60 @@ def test_yaml_fields_are_shown_and_thresholds_settable(tmp_path):
     assert (m.occupied_thresh, m.free_thresh) == (0.7, 0.1)
     with pytest.raises(AttributeError):
         m.free_thresh = 0.2  # read-only: set_thresholds sets the pair
+
+
+def scale_map(tmp_path):
+    """A map whose every metadata field is off map_saver's defaults."""
+    (tmp_path / "t.pgm").write_bytes(b"P5\n3 2\n255\n" + bytes([0, 254, 205, 0, 0, 254]))
+    (tmp_path / "t.yaml").write_text(
+        "image: t.pgm\nmode: scale\nresolution: 0.1\norigin: [1.5, -2.0, 0.25]\n"
+        "negate: 1\noccupied_thresh: 0.7\nfree_thresh: 0.2\n")
+    return linemap.load(str(tmp_path / "t.yaml"))
+
+
+def fields(m):
+    return (m.cells.tolist(), m.resolution, m.origin, m.mode, m.negate, m.occupied_thresh,
+            m.free_thresh)
+
+
+def test_map_pickles_with_every_protocol_and_copies(tmp_path):
+    import copy
+    import pickle
+    m = scale_map(tmp_path)
+    expected = fields(m)
+    assert expected[1:] == (0.1, (1.5, -2.0, 0.25), "scale", True, 0.7, 0.2)  # the YAML's
+    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+        loaded = pickle.loads(pickle.dumps(m, protocol))
+        assert type(loaded) is linemap.Map
+        assert fields(loaded) == expected, protocol
+        assert loaded.cells is not m.cells
+    deep = copy.deepcopy(m)
+    assert fields(deep) == expected and deep.cells is not m.cells
+    # A loaded copy saves the same .lmap file.
+    assert linemap.encode(pickle.loads(pickle.dumps(m))) == linemap.encode(m)
+
+
+def test_unpickling_checks_the_state(tmp_path):
+    state = scale_map(tmp_path).__getstate__()
+
+    def loaded(state):
+        m = linemap.Map.__new__(linemap.Map)
+        m.__setstate__(state)
+        return m
+
+    assert fields(loaded(dict(state)))[1:] == (0.1, (1.5, -2.0, 0.25), "scale", True, 0.7, 0.2)
+    bad_cells = np.array([[F, 3]], dtype=np.uint8)
+    for change, error, match in [
+        ({"cells": bad_cells}, ValueError, "cells must be"),
+        ({"cells": np.zeros((2, 2), dtype=np.int8)}, TypeError, "uint8"),
+        ({"resolution": 0.0}, ValueError, "resolution"),
+        ({"origin": (0.0, float("inf"))}, ValueError, "origin"),
+        ({"mode": "grey"}, ValueError, "mode 'grey'"),
+        ({"free_thresh": 0.9}, ValueError, "must be below"),
+    ]:
+        with pytest.raises(error, match=match):
+            loaded({**state, **change})
+    without = dict(state)
+    del without["mode"]
+    with pytest.raises(ValueError, match="without 'mode'"):
+        loaded(without)
