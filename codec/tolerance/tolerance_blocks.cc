@@ -283,7 +283,8 @@ bool MendRound(Mender* m, int t, Grid* checked, Grid* stretch_checked) {
 
 }  // namespace
 
-StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells) {
+StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
+                                   const std::function<void(int)>& after_round) {
   if (tolerance_cells < 1 || tolerance_cells > kMaxToleranceCells) {
     return InvalidArgumentError("tolerance " + std::to_string(tolerance_cells) +
                                 " cells is outside 1.." + std::to_string(kMaxToleranceCells));
@@ -295,6 +296,7 @@ StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells) {
     Mender mender{grid, decoded, &b};
     if (MendRound(&mender, tolerance_cells, &checked, &stretch_checked)) return b;
     if (mender.mended == 0) break;  // nothing left to mend: the exact map below
+    if (after_round) after_round(round + 1);
   }
   std::fill(b.restored.begin(), b.restored.end(), 1);
   return b;

@@ -5,6 +5,8 @@
 #ifndef LINEMAP_CODEC_TOLERANCE_TOLERANCE_BLOCKS_H_
 #define LINEMAP_CODEC_TOLERANCE_TOLERANCE_BLOCKS_H_
 
+#include <functional>
+
 #include "codec/cells/block_tiles.h"
 #include "linemap/grid.h"
 #include "linemap/status.h"
@@ -22,8 +24,11 @@ namespace linemap {
 // on exactly what the file decodes to and mended (cells restored, or a
 // block turned unknown) round by round until every guarantee holds on
 // ComposeBlockCells(grid, result); a map that does not settle gets every
-// cell restored (the exact map).
-StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells);
+// cell restored (the exact map). `after_round`, when given, is called after
+// each round that did not settle with the number of rounds done so far
+// (the caller's progress: the rounds that run are not known ahead).
+StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
+                                   const std::function<void(int)>& after_round = nullptr);
 
 }  // namespace linemap
 

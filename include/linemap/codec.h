@@ -97,7 +97,10 @@ struct EncodeOptions {
   // Called on the calling thread with the share of the work done (0 to 1),
   // at least once, with 1, when the file is complete; an exact file of a
   // map over 4096 cells a side reports after each row of 2048-cell blocks
-  // (about 0.7 s apart on the 282-Mcell office map). Empty: no reports.
+  // (about 0.7 s apart on the 282-Mcell office map), a save within a
+  // tolerance after each round of its checks (an estimate: the rounds a map
+  // needs are not known ahead; tsc takes 13 at T = 1, 8.6 s). Empty: no
+  // reports.
   // `linemap encode` draws it as a progress bar when stderr is a terminal.
   std::function<void(double)> progress;
   // Metadata text, each entry stored only when non-empty (the "meta" chunk
