@@ -53,8 +53,9 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
     // caller's limit, resource exhausted.
     if (length > cursor.remaining()) return CorruptError("chunk " + name + " is truncated");
     if (length > max_chunk_bytes) {
-      return ResourceExhaustedError("chunk " + name + " has " + std::to_string(length) +
-                                    " bytes, over the limit of " + std::to_string(max_chunk_bytes));
+      return OverLimitError(Limit::kChunkBytes, "chunk " + name + " has " + std::to_string(length) +
+                                                    " bytes, over the limit of " +
+                                                    std::to_string(max_chunk_bytes));
     }
     auto payload = cursor.ReadBytes(static_cast<std::size_t>(length), "chunk payload");
     if (!payload.ok()) return CorruptError("chunk " + name + " is truncated");

@@ -25,9 +25,10 @@ Status CheckDimensions(std::uint64_t width, std::uint64_t height, const std::str
     return CorruptError(name + ": image has zero width or height");
   }
   if (width > 0x7fffffff || height > 0x7fffffff || width * height > max_cells) {
-    return ResourceExhaustedError(name + ": image of " + std::to_string(width) + " x " +
-                                  std::to_string(height) + " cells exceeds the limit of " +
-                                  std::to_string(max_cells) + " cells");
+    return OverLimitError(Limit::kCells, name + ": image of " + std::to_string(width) + " x " +
+                                             std::to_string(height) +
+                                             " cells exceeds the limit of " +
+                                             std::to_string(max_cells) + " cells");
   }
   return Status::Ok();
 }

@@ -87,9 +87,10 @@ StatusOr<Grid> GridFromOccupancyGrid(const OccupancyGridMessage& message,
     return InvalidArgumentError("occupancy grid: width or height above 2^31-1");
   }
   if (cells > max_cells) {
-    return ResourceExhaustedError("occupancy grid: " + std::to_string(message.width) + " x " +
-                                  std::to_string(message.height) + " cells exceed the limit of " +
-                                  std::to_string(max_cells));
+    return OverLimitError(Limit::kCells, "occupancy grid: " + std::to_string(message.width) +
+                                             " x " + std::to_string(message.height) +
+                                             " cells exceed the limit of " +
+                                             std::to_string(max_cells));
   }
   if (message.data.size() != cells) {
     return InvalidArgumentError("occupancy grid: data holds " +

@@ -26,11 +26,35 @@ const char* StatusCodeName(StatusCode code) {
   return "unknown status";
 }
 
+const char* LimitFieldName(Limit limit) {
+  switch (limit) {
+    case Limit::kNone:
+      return "";
+    case Limit::kFileBytes:
+      return "max_file_bytes";
+    case Limit::kCells:
+      return "max_cells";
+    case Limit::kChunkBytes:
+      return "max_chunk_bytes";
+    case Limit::kInflatedBytes:
+      return "max_inflated_bytes";
+    case Limit::kSegments:
+      return "max_segments";
+    case Limit::kChainLength:
+      return "max_chain_length";
+    case Limit::kObjects:
+      return "max_objects";
+    case Limit::kToleranceCells:
+      return "max_tolerance_cells";
+  }
+  return "";
+}
+
 std::string Status::ToString() const { return ok() ? std::string("OK") : message_; }
 
 Status Status::WithContext(const std::string& prefix) const {
   if (ok()) return *this;
-  return Status(code_, prefix + ": " + message_);
+  return Status(code_, prefix + ": " + message_, limit_);
 }
 
 }  // namespace linemap

@@ -122,10 +122,10 @@ Map FromOccupancyGrid(const py::handle& data, const py::handle& width, const py:
   // Checked before the data are copied (a 2^30-cell message is 1 GB), as
   // GridFromOccupancyGrid words it.
   if (std::uint64_t{message.width} * message.height > limit) {
-    RaiseStatus(ResourceExhaustedError("occupancy grid: " + std::to_string(message.width) + " x " +
-                                       std::to_string(message.height) +
-                                       " cells exceed the limit of " + std::to_string(limit) +
-                                       " (max_cells)"));
+    RaiseStatus(OverLimitError(Limit::kCells, "occupancy grid: " + std::to_string(message.width) +
+                                                  " x " + std::to_string(message.height) +
+                                                  " cells exceed the limit of " +
+                                                  std::to_string(limit) + " (max_cells)"));
   }
   message.resolution = static_cast<float>(resolution);
   const Pose2D pose = OriginArgument(origin);

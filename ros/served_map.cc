@@ -140,52 +140,21 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
 namespace {
 
 constexpr LimitParameter kLimitParameters[] = {
-    {"max_cells", "cells", &DecodeLimits::max_cells},
-    {"max_segments", "wall segments per chunk", &DecodeLimits::max_segments},
-    {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
+    {"max_cells", "cells", &DecodeLimits::max_cells, Limit::kCells},
+    {"max_segments", "wall segments per chunk", &DecodeLimits::max_segments, Limit::kSegments},
+    {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects,
+     Limit::kObjects},
 };
-
-// Whether `clause` holds "limit of VALUE" followed by `unit`, or when `unit`
-// is empty by no further digit (VALUE is not the start of a longer number).
-bool NamesLimitOf(std::string_view clause, std::uint64_t value, std::string_view unit = "") {
-  const std::string of = "limit of " + std::to_string(value);
-  for (std::size_t at = clause.find(of); at != std::string_view::npos;
-       at = clause.find(of, at + 1)) {
-    const std::string_view rest = clause.substr(at + of.size());
-    if (unit.empty() ? rest.empty() || !std::isdigit(static_cast<unsigned char>(rest[0]))
-                     : rest.starts_with(unit)) {
-      return true;
-    }
-  }
-  return false;
-}
-
-// Whether `error`, a map over one of the decoder's limits, is over `limit`,
-// now `value`. The library tells which limit an error hit only in its
-// words: "the limit of N cells" (the header, a map image); "the segment
-// limit of N", "C segments, over the limit of N", "segment count C is over
-// the limit of N"; "the object limit of N". The files' names and the chunk
-// go before them as context ("'a.lmap': chunk WALL: ..."), so only the last
-// clause is read. The decoder's other limits (file and chunk bytes, chain
-// cells) are no parameter: raising one of these would not lift them.
-bool ErrorIsOver(const std::string& error, const LimitParameter& limit, std::uint64_t value) {
-  const std::size_t colon = error.rfind(": ");
-  const std::string_view clause =
-      std::string_view(error).substr(colon == std::string::npos ? 0 : colon + 2);
-  if (limit.field == &DecodeLimits::max_cells) return NamesLimitOf(clause, value, " cells");
-  const char* noun = limit.field == &DecodeLimits::max_segments ? "segment" : "object";
-  // Draco's point count, checked after its header's, names no value.
-  return clause.find(noun) != std::string_view::npos &&
-         (NamesLimitOf(clause, value) || clause.find("limit of ") == std::string_view::npos);
-}
 
 // `status` (a map over a limit) with the parameter of `applying` it is over
 // and its value, when one is.
 Status NamingTheLimit(const Status& status, const DecodeLimits& limits,
                       std::span<const LimitParameter> applying) {
   if (status.code() != StatusCode::kResourceExhausted) return status;
+  // The decoder's other limits (file and chunk bytes, chain cells) are no
+  // parameter: raising one of these would not lift them.
   for (const LimitParameter& limit : applying) {
-    if (ErrorIsOver(status.message(), limit, limits.*limit.field)) {
+    if (status.limit() == limit.limit) {
       return Status(status.code(), status.message() + " (limit: ~" + limit.name + " " +
                                        std::to_string(limits.*limit.field) + ")");
     }

@@ -43,6 +43,7 @@ struct LimitParameter {
   const char* name;  // "max_cells": the parameter ~max_cells
   const char* unit;  // what it counts, for messages
   std::uint64_t DecodeLimits::*field;
+  Limit limit;  // what the library's errors over it carry (Status::limit())
 };
 inline constexpr std::int64_t kMaxLimitValue = 2147483647;
 

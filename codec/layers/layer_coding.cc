@@ -233,7 +233,8 @@ StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m,
   std::vector<CellIndex> path;
   bool exhausted = false;
   if (!CodePath(&io, m, bounds, min_points, max_points, points, state, &path, &exhausted)) {
-    if (exhausted) return ResourceExhaustedError("points exceed the limit");
+    // Its callers name the limit (walls: segments, polygons: chain cells).
+    if (exhausted) return Status(StatusCode::kResourceExhausted, "points exceed the limit");
     return CorruptError("point out of the grid (or its section's box) or malformed");
   }
   return path;
@@ -249,8 +250,8 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
       DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev);
   if (!polygon.ok()) {
     return polygon.status().code() == StatusCode::kResourceExhausted
-               ? ResourceExhaustedError("polygon vertices exceed the chain limit of " +
-                                        std::to_string(limits.max_chain_length))
+               ? OverLimitError(Limit::kChainLength, "polygon vertices exceed the chain limit of " +
+                                                         std::to_string(limits.max_chain_length))
                : polygon.status();
   }
   // The chain has one cell per step of each edge (max(|dcol|, |drow|)), and
@@ -263,8 +264,8 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
   }
   *cells += length;
   if (length > limits.max_chain_length || *cells > limits.max_chain_length) {
-    return ResourceExhaustedError("chain cells exceed the chain limit of " +
-                                  std::to_string(limits.max_chain_length));
+    return OverLimitError(Limit::kChainLength, "chain cells exceed the chain limit of " +
+                                                   std::to_string(limits.max_chain_length));
   }
   return polygon;
 }
@@ -310,14 +311,14 @@ struct ChunkStream {
   const std::uint8_t* data = nullptr;
 };
 StatusOr<ChunkStream> OpenChunkStream(const std::vector<std::uint8_t>& body, const char* count_name,
-                                      const char* items, std::uint64_t limit,
+                                      const char* items, std::uint64_t limit, Limit which,
                                       const char* limit_name) {
   ByteCursor cursor(body);
   ChunkStream stream;
   LINEMAP_ASSIGN_OR_RETURN(stream.count, cursor.ReadVarint(count_name));
   if (stream.count > limit) {
-    return ResourceExhaustedError(std::to_string(stream.count) + " " + items + " exceed the " +
-                                  limit_name + " limit of " + std::to_string(limit));
+    return OverLimitError(which, std::to_string(stream.count) + " " + items + " exceed the " +
+                                     limit_name + " limit of " + std::to_string(limit));
   }
   stream.size = cursor.remaining();
   stream.data = body.data() + cursor.position();
@@ -330,10 +331,10 @@ StatusOr<ChunkStream> OpenChunkStream(const std::vector<std::uint8_t>& body, con
 template <class Item, class DecodeItems>
 StatusOr<std::vector<Item>> DecodeChunkBody(const std::vector<std::uint8_t>& body,
                                             const char* chunk, const char* count_name,
-                                            const char* items, std::uint64_t limit,
+                                            const char* items, std::uint64_t limit, Limit which,
                                             const char* limit_name, DecodeItems decode) {
   LINEMAP_ASSIGN_OR_RETURN(ChunkStream stream,
-                           OpenChunkStream(body, count_name, items, limit, limit_name));
+                           OpenChunkStream(body, count_name, items, limit, which, limit_name));
   RangeDecoder dec(stream.data, stream.size);
   std::vector<Item> out;
   LINEMAP_RETURN_IF_ERROR(decode(&dec, stream.count, &out));
@@ -387,8 +388,8 @@ Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
         DecodePath(dec, m.get(), bounds, 2, max_points, points, &state);
     if (!path.ok()) {
       return path.status().code() == StatusCode::kResourceExhausted
-                 ? ResourceExhaustedError("wall segments exceed the segment limit of " +
-                                          std::to_string(max_segments))
+                 ? OverLimitError(Limit::kSegments, "wall segments exceed the segment limit of " +
+                                                        std::to_string(max_segments))
                  : path.status();
     }
     out->push_back({std::move(*path)});
@@ -486,7 +487,7 @@ std::vector<std::uint8_t> EncodeWalls(const std::vector<WallPolyline>& walls) {
 StatusOr<std::vector<WallPolyline>> DecodeWalls(const std::vector<std::uint8_t>& body, int width,
                                                 int height, const DecodeLimits& limits) {
   return DecodeChunkBody<WallPolyline>(
-      body, "WALL", "wall count", "walls", limits.max_segments, "segment",
+      body, "WALL", "wall count", "walls", limits.max_segments, Limit::kSegments, "segment",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<WallPolyline>* walls) {
         std::uint64_t points = 0;
         return DecodeWallItems(dec, count, LayerBounds::Grid(width, height), limits.max_segments,
@@ -513,7 +514,7 @@ StatusOr<std::vector<RoomOutline>> DecodeRooms(const std::vector<std::uint8_t>& 
                                                int height, const DecodeLimits& limits,
                                                bool expand_chains) {
   return DecodeChunkBody<RoomOutline>(
-      body, "ROOM", "room count", "rooms", limits.max_objects, "object",
+      body, "ROOM", "room count", "rooms", limits.max_objects, Limit::kObjects, "object",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<RoomOutline>* rooms) {
         LayerTotals totals;
         return DecodeRoomItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,
@@ -530,7 +531,7 @@ StatusOr<std::vector<FurnitureObject>> DecodeFurniture(const std::vector<std::ui
                                                        const DecodeLimits& limits,
                                                        bool expand_chains) {
   return DecodeChunkBody<FurnitureObject>(
-      body, "FURN", "furniture count", "objects", limits.max_objects, "object",
+      body, "FURN", "furniture count", "objects", limits.max_objects, Limit::kObjects, "object",
       [&](RangeDecoder* dec, std::uint64_t count, std::vector<FurnitureObject>* furniture) {
         LayerTotals totals;
         return DecodeFurnitureItems(dec, count, LayerBounds::Grid(width, height), limits, &totals,

@@ -119,13 +119,13 @@ namespace {
 
 // A count of one section's items, at most the limit (summed with the
 // sections before: `*sum`) and 2^32 - 1.
-Status AddCount(std::uint64_t count, std::uint64_t limit, const char* items, const char* limit_name,
-                std::uint64_t* sum, std::uint32_t* out) {
+Status AddCount(std::uint64_t count, std::uint64_t limit, Limit which, const char* items,
+                const char* limit_name, std::uint64_t* sum, std::uint32_t* out) {
   // The sum stays below 2^64: each term is cut to limit + 1 first.
   *sum += std::min<std::uint64_t>(count, limit == UINT64_MAX ? limit : limit + 1);
   if (*sum > limit || count > UINT32_MAX) {
-    return ResourceExhaustedError(std::string(items) + " exceed the " + limit_name + " limit of " +
-                                  std::to_string(limit));
+    return OverLimitError(which, std::string(items) + " exceed the " + limit_name + " limit of " +
+                                     std::to_string(limit));
   }
   *out = static_cast<std::uint32_t>(count);
   return Status::Ok();
@@ -173,12 +173,13 @@ StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t
     LINEMAP_ASSIGN_OR_RETURN(w, cursor.ReadVarint("section wall count"));
     LINEMAP_ASSIGN_OR_RETURN(r, cursor.ReadVarint("section room count"));
     LINEMAP_ASSIGN_OR_RETURN(o, cursor.ReadVarint("section object count"));
+    LINEMAP_RETURN_IF_ERROR(AddCount(w, limits.max_segments, Limit::kSegments, "walls", "segment",
+                                     &table.walls, &e.walls));
     LINEMAP_RETURN_IF_ERROR(
-        AddCount(w, limits.max_segments, "walls", "segment", &table.walls, &e.walls));
-    LINEMAP_RETURN_IF_ERROR(AddCount(r, limits.max_objects, "rooms", "object", &rooms, &e.rooms));
+        AddCount(r, limits.max_objects, Limit::kObjects, "rooms", "object", &rooms, &e.rooms));
     e.first_object = objects;
-    LINEMAP_RETURN_IF_ERROR(
-        AddCount(o, limits.max_objects, "objects", "object", &objects, &e.objects));
+    LINEMAP_RETURN_IF_ERROR(AddCount(o, limits.max_objects, Limit::kObjects, "objects", "object",
+                                     &objects, &e.objects));
     if (w + r + o == 0) continue;  // no box, no stream: not kept
     e.index = static_cast<std::uint64_t>(k);
     if (grid.count() == 1) {

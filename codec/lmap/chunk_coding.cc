@@ -58,9 +58,9 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
         return CorruptError("inflated size is impossible for the deflate data");
       }
       if (*inflated > limits.max_inflated_bytes) {
-        return ResourceExhaustedError("inflated size " + std::to_string(*inflated) +
-                                      " is over the limit of " +
-                                      std::to_string(limits.max_inflated_bytes));
+        return OverLimitError(Limit::kInflatedBytes, "inflated size " + std::to_string(*inflated) +
+                                                         " is over the limit of " +
+                                                         std::to_string(limits.max_inflated_bytes));
       }
       const std::size_t at = cursor.position();
       return InflateBytes(payload + at, size - at, static_cast<std::size_t>(*inflated));
@@ -127,9 +127,10 @@ StatusOr<HeaderFields> ReadHeader(const std::uint8_t* data, std::size_t size,
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t height, c.ReadVarintAtMost(0x7FFFFFFF, "height"));
   std::uint64_t cells = 0;
   if (!CheckedMul(width, height, &cells) || cells > limits.max_cells) {
-    return ResourceExhaustedError("map of " + std::to_string(width) + " x " +
-                                  std::to_string(height) + " cells is over the limit of " +
-                                  std::to_string(limits.max_cells) + " cells");
+    return OverLimitError(Limit::kCells, "map of " + std::to_string(width) + " x " +
+                                             std::to_string(height) +
+                                             " cells is over the limit of " +
+                                             std::to_string(limits.max_cells) + " cells");
   }
   LINEMAP_ASSIGN_OR_RETURN(std::uint8_t flags, c.ReadU8("flags"));
   LINEMAP_ASSIGN_OR_RETURN(std::uint8_t mode, c.ReadU8("mode"));
@@ -206,8 +207,9 @@ StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_
   LINEMAP_ASSIGN_OR_RETURN(std::uint64_t count,
                            c.ReadVarintAtMost(body.size() / 4, "segment count"));
   if (count > limits.max_segments) {
-    return ResourceExhaustedError("segment count " + std::to_string(count) +
-                                  " is over the limit of " + std::to_string(limits.max_segments));
+    return OverLimitError(Limit::kSegments, "segment count " + std::to_string(count) +
+                                                " is over the limit of " +
+                                                std::to_string(limits.max_segments));
   }
   std::vector<LatticeSegment> segments;
   segments.reserve(count);
@@ -256,8 +258,9 @@ StatusOr<std::vector<std::vector<CellIndex>>> ReadChains(const std::vector<std::
     // exhausted (total <= limit here, so the subtraction cannot wrap).
     if (length == 0 || length - 1 > c.remaining()) return CorruptError(name + " has a bad length");
     if (length > limits.max_chain_length - total) {
-      return ResourceExhaustedError(name + " takes the chain cells over the limit of " +
-                                    std::to_string(limits.max_chain_length));
+      return OverLimitError(Limit::kChainLength, name +
+                                                     " takes the chain cells over the limit of " +
+                                                     std::to_string(limits.max_chain_length));
     }
     total += length;
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t col, c.ReadVarintAtMost(width - 1, "chain column"));

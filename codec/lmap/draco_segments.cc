@@ -42,9 +42,9 @@ Status CheckDracoPointCount(const std::vector<std::uint8_t>& body, const DecodeL
                         " segments, more than its size allows");
   }
   if (points > limits.max_segments) {
-    return ResourceExhaustedError("Draco data claims " + std::to_string(points) +
-                                  " segments, over the limit of " +
-                                  std::to_string(limits.max_segments));
+    return OverLimitError(Limit::kSegments, "Draco data claims " + std::to_string(points) +
+                                                " segments, over the limit of " +
+                                                std::to_string(limits.max_segments));
   }
   return Status::Ok();
 }
@@ -89,7 +89,7 @@ StatusOr<std::vector<LatticeSegment>> DecodeSegmentsDraco(const std::vector<std:
   if (buffer.remaining_size() != 0) return CorruptError("Draco data has trailing bytes");
   const std::unique_ptr<draco::PointCloud>& cloud = decoded.value();
   if (cloud->num_points() > limits.max_segments) {
-    return ResourceExhaustedError("more segments than the limit");
+    return OverLimitError(Limit::kSegments, "more segments than the limit");
   }
   if (cloud->num_attributes() != 1) return CorruptError("Draco data must hold one attribute");
   const draco::PointAttribute* att = cloud->attribute(0);

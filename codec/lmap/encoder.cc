@@ -44,13 +44,14 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   }
   if (options.tolerance_cells > 0 && options.max_tolerance_cells != 0 &&
       grid.size() > options.max_tolerance_cells) {
-    return ResourceExhaustedError(
+    return OverLimitError(
+        Limit::kToleranceCells,
         "a map of " + std::to_string(grid.size()) + " cells is over the limit of " +
-        std::to_string(options.max_tolerance_cells) +
-        " cells for saving within a tolerance (its checks hold about 34 bytes a cell, " +
-        std::to_string(grid.size() * 34 / 1000000) +
-        " MB here): save it exact (tolerance 0) or raise the limit (max_tolerance_cells, "
-        "--max-tolerance-cells)");
+            std::to_string(options.max_tolerance_cells) +
+            " cells for saving within a tolerance (its checks hold about 34 bytes a cell, " +
+            std::to_string(grid.size() * 34 / 1000000) +
+            " MB here): save it exact (tolerance 0) or raise the limit (max_tolerance_cells, "
+            "--max-tolerance-cells)");
   }
   return CheckEncodeOptions(options);
 }

@@ -69,24 +69,25 @@ Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts) {
       ", more than decoders read by default: save the cells only (vector layers off, "
       "--raster-only)";
   if (counts.walls > defaults.max_segments || counts.segments > defaults.max_segments) {
-    return ResourceExhaustedError("the walls have " + std::to_string(counts.segments) +
-                                  " segments (limit " + std::to_string(defaults.max_segments) +
-                                  ")" + advice);
+    return OverLimitError(Limit::kSegments, "the walls have " + std::to_string(counts.segments) +
+                                                " segments (limit " +
+                                                std::to_string(defaults.max_segments) + ")" +
+                                                advice);
   }
   if (counts.rooms > defaults.max_objects || counts.objects > defaults.max_objects) {
-    return ResourceExhaustedError("the layers have " + std::to_string(counts.rooms) +
-                                  " rooms and " + std::to_string(counts.objects) +
-                                  " furniture objects (limit " +
-                                  std::to_string(defaults.max_objects) + " each)" + advice);
+    return OverLimitError(Limit::kObjects,
+                          "the layers have " + std::to_string(counts.rooms) + " rooms and " +
+                              std::to_string(counts.objects) + " furniture objects (limit " +
+                              std::to_string(defaults.max_objects) + " each)" + advice);
   }
   const std::uint64_t chains = defaults.max_chain_length;
   if (counts.room_vertices > chains || counts.room_chain_cells > chains ||
       counts.object_vertices > chains || counts.object_chain_cells > chains) {
-    return ResourceExhaustedError(
-        "the room and furniture outlines have " +
-        std::to_string(counts.room_chain_cells + counts.object_chain_cells) +
-        " chain cells (limit " + std::to_string(chains) + " for the rooms and for the objects)" +
-        advice);
+    return OverLimitError(Limit::kChainLength,
+                          "the room and furniture outlines have " +
+                              std::to_string(counts.room_chain_cells + counts.object_chain_cells) +
+                              " chain cells (limit " + std::to_string(chains) +
+                              " for the rooms and for the objects)" + advice);
   }
   return Status::Ok();
 }

@@ -24,27 +24,54 @@ enum class StatusCode {
 
 const char* StatusCodeName(StatusCode code);
 
+// Which caller-set limit a kResourceExhausted error is over: the fields of
+// DecodeLimits (linemap/codec.h) and the image loaders' `max_cells`, and
+// EncodeOptions::max_tolerance_cells. kNone for every other error. A front
+// end names the option that lifts a refusal from this, not from the words
+// of the message.
+enum class Limit {
+  kNone = 0,
+  kFileBytes,       // DecodeLimits::max_file_bytes
+  kCells,           // max_cells: width * height of a file, image or message
+  kChunkBytes,      // DecodeLimits::max_chunk_bytes
+  kInflatedBytes,   // DecodeLimits::max_inflated_bytes
+  kSegments,        // DecodeLimits::max_segments
+  kChainLength,     // DecodeLimits::max_chain_length
+  kObjects,         // DecodeLimits::max_objects
+  kToleranceCells,  // EncodeOptions::max_tolerance_cells
+};
+
+// The name of the field that sets `limit` ("max_segments"; "" for kNone),
+// which the Python module and the ROS nodes use for their options too.
+const char* LimitFieldName(Limit limit);
+
 class [[nodiscard]] Status {
  public:
   Status() = default;
   Status(StatusCode code, std::string message) : code_(code), message_(std::move(message)) {}
+  Status(StatusCode code, std::string message, Limit limit)
+      : code_(code), message_(std::move(message)), limit_(limit) {}
 
   static Status Ok() { return Status(); }
 
   bool ok() const { return code_ == StatusCode::kOk; }
   StatusCode code() const { return code_; }
   const std::string& message() const { return message_; }
+  // The limit a kResourceExhausted error is over; kNone otherwise.
+  Limit limit() const { return limit_; }
 
   // "message" for errors, "OK" for success.
   std::string ToString() const;
 
-  // Returns a copy whose message is "prefix: message"; used to add the file
-  // name or the chunk that failed as the error travels up.
+  // Returns a copy whose message is "prefix: message" (the code and the
+  // limit kept); used to add the file name or the chunk that failed as the
+  // error travels up.
   Status WithContext(const std::string& prefix) const;
 
  private:
   StatusCode code_ = StatusCode::kOk;
   std::string message_;
+  Limit limit_ = Limit::kNone;
 };
 
 inline Status InvalidArgumentError(std::string m) {
@@ -56,8 +83,9 @@ inline Status CorruptError(std::string m) { return Status(StatusCode::kCorrupt, 
 inline Status UnsupportedError(std::string m) {
   return Status(StatusCode::kUnsupported, std::move(m));
 }
-inline Status ResourceExhaustedError(std::string m) {
-  return Status(StatusCode::kResourceExhausted, std::move(m));
+// A caller-set limit exceeded: kResourceExhausted, tagged with which.
+inline Status OverLimitError(Limit limit, std::string m) {
+  return Status(StatusCode::kResourceExhausted, std::move(m), limit);
 }
 inline Status InternalError(std::string m) { return Status(StatusCode::kInternal, std::move(m)); }
 inline Status PermissionDeniedError(std::string m) {

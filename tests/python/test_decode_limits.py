@@ -157,3 +157,17 @@ def test_max_cells_and_limits_together_are_refused():
 def test_threads_do_not_change_the_decode():
     one = linemap.load(DEPOT, limits=linemap.DecodeLimits(max_threads=1))
     assert np.array_equal(one.cells, linemap.load(DEPOT).cells)
+
+
+def test_a_refusal_names_the_limit_that_lifts_it(tmp_path):
+    # MemoryError.limit is the keyword to raise, whatever the message says.
+    for name, value in [("max_segments", 436), ("max_objects", 32), ("max_cells", 1000),
+                        ("max_file_bytes", 100)]:
+        with pytest.raises(MemoryError) as refused:
+            linemap.load(DEPOT, limits=linemap.DecodeLimits(**{name: value}))
+        assert refused.value.limit == name, str(refused.value)
+    depot = linemap.load(str(DEPOT))
+    with pytest.raises(MemoryError) as refused:
+        linemap.save(str(tmp_path / "t.lmap"), depot, tolerance=1, max_tolerance_cells=1000)
+    assert refused.value.limit == "max_tolerance_cells"
+    assert not (tmp_path / "t.lmap").exists()
