@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "codec/cells/tile_contexts.h"
@@ -109,22 +110,34 @@ template <bool kMix, typename Io, typename Mixer>
 // decision with its own table. The smaller pattern is what lets the layer class pay: with the
 // 8-cell template x 40 classes the tables learn too slowly within a tile.
 template <typename Io>
-[[gnu::always_inline]] inline void CodeLayerCellRun(Io& io, TileModelTable& models,
-                                                    std::uint8_t* cur, const std::uint8_t* n1,
-                                                    const std::uint8_t* below,
-                                                    const std::uint8_t* here,
-                                                    const std::uint8_t* above, int width,
-                                                    const LayerTerms& terms, int begin, int end) {
+[[gnu::always_inline]] inline void CodeLayerCellRun(
+    Io& io, TileModelTable& models, std::uint8_t* cur, const std::uint8_t* n1,
+    const std::uint8_t* below, const std::uint8_t* here, const std::uint8_t* above, int width,
+    const LayerTermBytes& terms, int begin, int end) {
   unsigned west = cur[begin - 1];
   for (int run = begin; run < end; run += kBlockCells) {
     const int len = std::min(end - run, kBlockCells);
     std::uint16_t equal[kBlockCells];
     std::uint16_t other[kBlockCells];
-    // A whole block with its length known to the compiler (vectorised).
-    if (len == kBlockCells) {
-      LayerBases(n1, below, here, above, width, terms, run, kBlockCells, equal, other);
+    const std::uint8_t* hints = here + run;
+    if (len == kBlockCells && run > 0 && run + kBlockCells < width) {
+      // A whole block inside the tile (vectorised, its length known to
+      // the compiler): W's and E's hints read from the row itself.
+      LayerBases(n1 + run, hints - 1, hints, hints + 1, below + run, above + run, terms,
+                 kBlockCells, equal, other);
     } else {
-      LayerBases(n1, below, here, above, width, terms, run, len, equal, other);
+      // At the tile's sides: the row's hints with zeros beside them.
+      std::uint8_t row[kBlockCells + 2];
+      row[0] = run > 0 ? hints[-1] : 0;
+      std::memcpy(row + 1, hints, static_cast<std::size_t>(len));
+      row[len + 1] = run + len < width ? hints[len] : 0;
+      if (len == kBlockCells) {
+        LayerBases(n1 + run, row, row + 1, row + 2, below + run, above + run, terms, kBlockCells,
+                   equal, other);
+      } else {
+        LayerBases(n1 + run, row, row + 1, row + 2, below + run, above + run, terms, len, equal,
+                   other);
+      }
     }
     for (int k = 0; k < len; ++k) {
       const unsigned w = west * (27 * kLayerClasses);
@@ -202,6 +215,7 @@ struct CellRows {
   const std::uint8_t* hint_above;
   int width;
   LayerTerms terms;
+  const LayerTermBytes* term_bytes;  // the same terms, for LayerBases
 };
 
 }  // namespace linemap::tile_coder_internal

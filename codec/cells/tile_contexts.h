@@ -158,40 +158,51 @@ inline unsigned HintClassOf(unsigned h) {
                                  : 0u;
 }
 
-// The layer context of cells [begin, begin + len) without W: the LEQUAL
-// and LOTHER indices with W = 0 (pattern without W x 40 + the class;
-// W adds W x 27 x 40 to both). They depend on the hints and the row below
-// alone, so a block's are computed before its cells are decoded, in a
-// loop the compiler vectorises for a whole block, and the serial loop of
-// range decoding is left with one load and one add per context (whole
-// default files of ../shared/maps decode 4.5 % faster).
-[[gnu::always_inline]] inline void LayerBases(const std::uint8_t* n1, const std::uint8_t* below,
-                                              const std::uint8_t* here, const std::uint8_t* above,
-                                              int width, const LayerTerms& terms, int begin,
-                                              int len, std::uint16_t* equal, std::uint16_t* other) {
-  // The row's hints with W's and E's beside them: zero outside the tile.
-  std::uint8_t row[kBlockCells + 2];
-  row[0] = begin > 0 ? here[begin - 1] : 0;
-  std::memcpy(row + 1, here + begin, static_cast<std::size_t>(len));
-  row[len + 1] = begin + len < width ? here[begin + len] : 0;
-  const std::uint8_t* n = n1 + begin;
+// The layer terms of a tile as kBlockCells equal bytes each, made once per
+// tile, which LayerBases loads as vectors: made from the terms in each
+// block, the compiler broadcast each byte through a store and a wider load
+// of it, which waited for the store (store forwarding fails on the wider
+// load) in front of every coded block.
+struct LayerTermBytes {
+  std::uint8_t far[kBlockCells];
+  std::uint8_t west_change[kBlockCells];
+  std::uint8_t north_change[kBlockCells];
+  explicit LayerTermBytes(const LayerTerms& terms) {
+    std::memset(far, static_cast<int>(terms.far_from_walls), sizeof(far));
+    std::memset(west_change, static_cast<int>(terms.west_change), sizeof(west_change));
+    std::memset(north_change, static_cast<int>(terms.north_change), sizeof(north_change));
+  }
+};
+
+// The layer context of `len` cells (at most kBlockCells) without W: the
+// LEQUAL and LOTHER indices with W = 0 (pattern without W x 40 + the class;
+// W adds W x 27 x 40 to both). Cell k reads n[k - 1 .. k + 1] of the row
+// below, its hint hints[k], its W and E neighbours' hints west[k] and
+// east[k] (zero outside the tile), and below[k] and above[k] of the hint
+// rows around it. They depend on the hints and the row below alone, so a
+// block's are computed before its cells are decoded, in a loop the
+// compiler vectorises for a whole block, and the serial loop of range
+// decoding is left with one load and one add per context (whole default
+// files of ../shared/maps decode 4.5 % faster).
+[[gnu::always_inline]] inline void LayerBases(const std::uint8_t* n, const std::uint8_t* west,
+                                              const std::uint8_t* hints, const std::uint8_t* east,
+                                              const std::uint8_t* below, const std::uint8_t* above,
+                                              const LayerTermBytes& terms, int len,
+                                              std::uint16_t* equal, std::uint16_t* other) {
   // In bytes (the class is below 40, the pattern below 27), so that a
   // vector holds 16 cells rather than 4: a third of the vector code, and
   // whole default files decode about 2 % faster than with `unsigned`.
-  const auto far = static_cast<std::uint8_t>(terms.far_from_walls);
-  const auto west_change = static_cast<std::uint8_t>(terms.west_change);
-  const auto north_change = static_cast<std::uint8_t>(terms.north_change);
   for (int k = 0; k < len; ++k) {
-    const std::uint8_t h = row[k + 1] & 15;
-    const std::uint8_t west = row[k] & 15;
-    const std::uint8_t north = below[begin + k] & 15;
-    const std::uint8_t walls = (h | west | row[k + 2] | north | above[begin + k]) & kHintWall;
+    const std::uint8_t h = hints[k] & 15;
+    const std::uint8_t w = west[k] & 15;
+    const std::uint8_t north = below[k] & 15;
+    const std::uint8_t walls = (h | w | east[k] | north | above[k]) & kHintWall;
     // LayerClassesOf: the wall term where neither the cell nor a
     // neighbour is on a wall.
     const std::uint8_t cls = static_cast<std::uint8_t>(static_cast<std::uint8_t>(HintClassOf(h)) +
-                                                       (walls != 0 ? 0 : far));
-    const std::uint8_t changes =
-        static_cast<std::uint8_t>((west != h ? west_change : 0) + (north != h ? north_change : 0));
+                                                       (walls != 0 ? 0 : terms.far[k]));
+    const std::uint8_t changes = static_cast<std::uint8_t>(
+        (w != h ? terms.west_change[k] : 0) + (north != h ? terms.north_change[k] : 0));
     const std::uint8_t pattern = static_cast<std::uint8_t>(n[k] * 9 + n[k - 1] * 3 + n[k + 1]);
     const std::uint16_t base = static_cast<std::uint16_t>(pattern * kLayerClasses + cls);
     other[k] = base;

@@ -64,7 +64,7 @@ void CodeCellsIn(Io& io, TileModelTable& models, Mixer& mixer, const CellRows& r
                           rows.hint_row, rows.hint_above, rows.width, rows.terms, begin, end);
   } else if constexpr (kLayer) {
     CodeLayerCellRun(io, models, rows.cur, rows.n1, rows.hint_below, rows.hint_row, rows.hint_above,
-                     rows.width, rows.terms, begin, end);
+                     rows.width, *rows.term_bytes, begin, end);
   } else {
     CodeCellRun<kMix>(io, models, mixer, rows.cur, rows.n1, rows.n2, rows.hint_row, begin, end);
   }
@@ -107,6 +107,7 @@ void CodeTileScan(Io& io, const TileRows& t) {
   // context reads it for the rows outside the tile as well).
   const std::vector<std::uint8_t> zero_hints(
       hints == nullptr || kLayer ? static_cast<std::size_t>(tw) : 0, 0);
+  const LayerTermBytes term_bytes(t.layer_terms);
   unsigned row_state = kStateNone;
   const int rows_end = Io::kEncoding ? th : t.rows_wanted;
   for (int r = 0; r < rows_end; ++r) {
@@ -123,7 +124,8 @@ void CodeTileScan(Io& io, const TileRows& t) {
     }
     const std::uint8_t* hint_above =
         hints && r + 1 < th ? hint_row + t.hint_stride : zero_hints.data();
-    const CellRows cell_rows{cur, n1, n2, hint_row, hint_below, hint_above, tw, t.layer_terms};
+    const CellRows cell_rows{cur,           n1,         n2, hint_row, hint_below, hint_above, tw,
+                             t.layer_terms, &term_bytes};
     const bool hints_same =
         r > 0 && (hints == nullptr || std::memcmp(hint_row, hint_below, tw) == 0);
     const unsigned row_ctx = row_state * 2 + (hints_same ? 1 : 0);
