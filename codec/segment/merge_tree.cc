@@ -124,6 +124,50 @@ std::vector<std::int32_t> CountLevels(const std::vector<std::uint16_t>& dist,
   return count;
 }
 
+// The root of the piece of padded cell `nb`, or -1 when it is not flooded
+// yet. Most cells point at their root already: found without the write of
+// path halving, which would dirty the cache line all the same.
+std::int32_t NeighbourRoot(std::vector<std::int32_t>& parent, std::int32_t nb) {
+  const std::int32_t up = parent[nb];
+  if (up < 0) return -1;
+  return parent[up] == up ? up : FindRoot(parent, nb);
+}
+
+// Cell `cell` at clearance `level` meets the pieces `roots` (of its
+// neighbours, -1 for none; more than one distinct): it joins the highest
+// piece (the first of them on a tie), and the others join it unless they
+// meet at a doorway, where their contact is kept.
+void JoinAtCell(const std::vector<std::uint16_t>& dist, const DoorRule& rule,
+                bool keep_wide_narrowings, std::int32_t cell, int level,
+                const std::int32_t (&roots)[4], std::vector<std::int32_t>* parent_out,
+                std::vector<Contact>* contacts) {
+  std::vector<std::int32_t>& parent = *parent_out;
+  std::int32_t distinct[4];
+  int n = 0;
+  for (const std::int32_t root : roots) {
+    if (root >= 0 && std::find(distinct, distinct + n, root) == distinct + n) distinct[n++] = root;
+  }
+  // The root of a piece is one of its highest cells (its first, or the
+  // one JoinPlateaus picked), so dist[root] is the piece's peak clearance.
+  std::int32_t primary = distinct[0];
+  for (int k = 1; k < n; ++k) {
+    if (dist[distinct[k]] > dist[primary]) primary = distinct[k];
+  }
+  parent[cell] = primary;
+  const int s = level;
+  for (int k = 0; k < n; ++k) {
+    const std::int32_t other = distinct[k];
+    if (other == primary) continue;
+    const bool narrowing =
+        dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
+    if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
+      contacts->push_back({cell, other, static_cast<std::uint16_t>(s)});
+    } else {
+      parent[other] = primary;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int pw,
@@ -155,7 +199,6 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
   AssignLarge<std::int32_t>(&parent, dist.size(), -1);
   if (flooded_top < top) JoinPlateaus(dist, pw, flooded_top, &parent);
   std::vector<Contact> contacts;
-  const std::int32_t offsets[4] = {-1, 1, -pw, pw};
   // The clearance of the cells in order, from the buckets' ends (start[d]
   // now ends bucket d; bucket `flooded_top` starts at 0): reading it from `dist`
   // would be one more cache miss per cell.
@@ -171,39 +214,29 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
       __builtin_prefetch(ahead);
       __builtin_prefetch(ahead + pw);
     }
-    std::int32_t roots[4];
-    int n = 0;
-    for (const std::int32_t off : offsets) {
-      const std::int32_t nb = cell + off;
-      const std::int32_t up = parent[nb];
-      if (up < 0) continue;
-      // Most cells point at their root already: found without the write of
-      // path halving, which would dirty the cache line all the same.
-      const std::int32_t root = parent[up] == up ? up : FindRoot(parent, nb);
-      if (std::find(roots, roots + n, root) == roots + n) roots[n++] = root;
-    }
-    if (n == 0) {
-      parent[cell] = cell;  // a new piece; its root is its highest cell
-      continue;
-    }
-    // The root of a piece is one of its highest cells (its first, or the
-    // one JoinPlateaus picked), so dist[root] is the piece's peak clearance.
-    std::int32_t primary = roots[0];
-    for (int k = 1; k < n; ++k) {
-      if (dist[roots[k]] > dist[primary]) primary = roots[k];
-    }
-    parent[cell] = primary;
-    const int s = level;
-    for (int k = 0; k < n; ++k) {
-      const std::int32_t other = roots[k];
-      if (other == primary) continue;
-      const bool narrowing =
-          dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
-      if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
-        contacts.push_back({cell, other, static_cast<std::uint16_t>(s)});
+    // The pieces of the four neighbours (-1: not flooded yet), in the order
+    // W, E, N, S.
+    const std::int32_t roots[4] = {NeighbourRoot(parent, cell - 1), NeighbourRoot(parent, cell + 1),
+                                   NeighbourRoot(parent, cell - pw),
+                                   NeighbourRoot(parent, cell + pw)};
+    // Most cells meet one piece (or none, and start one): taken without the
+    // list of distinct pieces that a cell between pieces needs.
+    std::int32_t first = -1;
+    bool one_piece = true;
+    for (const std::int32_t root : roots) {
+      if (root < 0) continue;
+      if (first < 0) {
+        first = root;
       } else {
-        parent[other] = primary;
+        one_piece &= root == first;
       }
+    }
+    if (first < 0) {
+      parent[cell] = cell;  // a new piece; its root is its highest cell
+    } else if (one_piece) {
+      parent[cell] = first;
+    } else {
+      JoinAtCell(dist, rule, keep_wide_narrowings, cell, level, roots, &parent, &contacts);
     }
   }
   return contacts;
