@@ -1,5 +1,5 @@
-// ForEachInRange and ForEachRunAbove (range_scan.h) against plain loops over
-// every cell.
+// ForEachInRange, ForEachRunAbove and FirstOtherThan (range_scan.h) against
+// plain loops over every cell.
 #include "codec/segment/range_scan.h"
 
 #include <gtest/gtest.h>
@@ -104,6 +104,32 @@ TEST(RangeScanTest, FirstWhereAboveStartsAtItsIndex) {
       while (expected < dist.size() && (dist[expected] > 3) != above) ++expected;
       EXPECT_EQ(FirstWhereAbove(dist.data(), from, dist.size(), 3, above), expected)
           << "from " << from << " above " << above;
+    }
+  }
+}
+
+// Stretches of the skipped value of every length, starting anywhere
+// against the four-entry blocks, from every start index; values that
+// differ from it in one byte only.
+TEST(RangeScanTest, FirstOtherThanSkipsTheValue) {
+  std::mt19937 rng(5);
+  const std::int32_t others[] = {0, 1, -1, 0x100, 0x10000, 0x1000000, -0x7fffffff - 1};
+  for (const std::int32_t skipped : {0, -1, 7}) {
+    for (const std::size_t n : {0u, 1u, 3u, 4u, 5u, 8u, 9u, 33u}) {
+      for (int trial = 0; trial < 20; ++trial) {
+        std::vector<std::int32_t> values(n);
+        std::int32_t value = skipped;
+        for (std::int32_t& v : values) {
+          if (rng() % 5 == 0) value = rng() % 2 ? skipped : skipped ^ others[rng() % 7];
+          v = value;
+        }
+        for (std::size_t from = 0; from <= n; ++from) {
+          std::size_t expected = from;
+          while (expected < n && values[expected] == skipped) ++expected;
+          EXPECT_EQ(FirstOtherThan(values.data(), from, n, skipped), expected)
+              << "skipped " << skipped << " n " << n << " trial " << trial << " from " << from;
+        }
+      }
     }
   }
 }
