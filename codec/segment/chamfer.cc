@@ -61,10 +61,18 @@ template <bool kForward>
 int ScanBlocks(const std::uint16_t* t, std::uint16_t* row, int end, int* run) {
   const __m128i ramp = kForward ? _mm_setr_epi16(3, 6, 9, 12, 15, 18, 21, 24)
                                 : _mm_setr_epi16(24, 21, 18, 15, 12, 9, 6, 3);
+  const __m128i zero = _mm_setzero_si128();
   __m128i carry = _mm_set1_epi16(static_cast<short>(*run));
   int c = kForward ? 1 : end - 8;  // the block's first cell
   for (; kForward ? c + 8 <= end : c >= 1; c += kForward ? 8 : -8) {
     __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(t + c));
+    // Eight walls (most blocks of unknown space and of thick walls): 0
+    // whatever the carry, and 0 carried on.
+    if (_mm_movemask_epi8(_mm_cmpeq_epi16(x, zero)) == 0xffff) {
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(row + c), zero);
+      carry = zero;
+      continue;
+    }
     x = MinWithShifted<kForward, 4>(MinWithShifted<kForward, 2>(MinWithShifted<kForward, 1>(x)));
     x = MinU16(x, _mm_adds_epu16(carry, ramp));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(row + c), x);
@@ -105,10 +113,15 @@ void ChamferRow(std::uint16_t* row, const std::uint16_t* prev, int pw, bool forw
       return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
     };
     const __m128i here = load(row + c);
+    const __m128i wall = _mm_cmpeq_epi16(here, zero);
+    // Eight walls stay 0 (most blocks of unknown space and thick walls).
+    if (_mm_movemask_epi8(wall) == 0xffff) {
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(t + c), zero);
+      continue;
+    }
     __m128i best = MinU16(_mm_adds_epu16(load(prev + c), side),
                           _mm_adds_epu16(MinU16(load(prev + c - 1), load(prev + c + 1)), diagonal));
     best = MinU16(MinU16(best, here), cap);
-    const __m128i wall = _mm_cmpeq_epi16(here, zero);
     _mm_storeu_si128(reinterpret_cast<__m128i*>(t + c), _mm_andnot_si128(wall, best));
   }
 #endif

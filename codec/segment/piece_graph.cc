@@ -10,46 +10,40 @@
 
 namespace linemap::segment_internal {
 
+namespace {
+
+// A piece as held in the forest while it is numbered: -2 - piece, below the
+// -1 of "no room space" and the cell indices of the forest.
+constexpr std::int32_t Code(std::int32_t piece) { return -2 - piece; }  // its own inverse
+
+// Codes back into pieces (the -1 of "no room space" stays).
+void DecodePieces(std::vector<std::int32_t>* forest) {
+  for (std::int32_t& v : *forest) v = v < -1 ? Code(v) : v;
+}
+
+}  // namespace
+
 PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
                        const std::vector<std::uint16_t>& clearance,
                        const std::vector<Contact>& contacts)
     : piece_of_(std::move(parent)) {
-  // Every cell straight to its root first (a root is its own parent, so
-  // the forest stays valid while it is rewritten).
-  // Most cells point at their root already: left as they are, without
-  // the find's two writes.
+  // In cell order, pieces numbered as their first cells come: each cell's
+  // entry becomes its piece, coded, as it is met, so that later cells find
+  // it by their first step up; a root ahead of the cell takes its piece's
+  // code when the piece's first cell is met, and the cells walked up to it
+  // take it too (a walk passes them once). One pass over the forest, not
+  // one to point every cell at its root and one to number the pieces.
   std::vector<std::int32_t>& forest = piece_of_;
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const std::int32_t up = forest[i];
-    if (up >= 0 && forest[up] != up) forest[i] = FindRoot(forest, static_cast<std::int32_t>(i));
+    if (up == -1) continue;  // no room space
+    // Most cells point at a root, or at a cell met before: coded already.
+    std::int32_t coded = up < -1 ? up : forest[up];
+    if (coded >= -1) coded = Code(PieceAbove(up, clearance));
+    forest[i] = coded;
+    ++area_[Code(coded)];
   }
-  // Then, in cell order, pieces numbered as their first cells come. A
-  // root's entry turns into its piece, coded -2 - piece, when the piece's
-  // first cell is met, so that the piece's later cells find it there; the
-  // other cells take their pieces as they go (no later cell reads them),
-  // and the roots last.
-  constexpr auto code = [](std::int32_t piece) { return -2 - piece; };  // its own inverse
-  std::vector<std::int32_t> root_cells;                                 // by piece
-  for (std::size_t i = 0; i < forest.size(); ++i) {
-    const std::int32_t root = forest[i];
-    if (root == -1) continue;  // no room space
-    if (root < 0) {            // a root, coded when its piece's first cell came
-      ++area_[code(root)];
-      continue;
-    }
-    if (forest[root] >= 0) {  // the piece's first cell
-      forest[root] = code(static_cast<std::int32_t>(area_.size()));
-      root_cells.push_back(root);
-      area_.push_back(0);
-      peak_.push_back(clearance[root]);  // a root is its piece's highest cell
-    }
-    const std::int32_t piece = code(forest[root]);
-    ++area_[piece];
-    if (static_cast<std::size_t>(root) != i) forest[i] = piece;
-  }
-  for (std::size_t k = 0; k < root_cells.size(); ++k) {
-    forest[root_cells[k]] = static_cast<std::int32_t>(k);
-  }
+  DecodePieces(&forest);
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);
   adjacency_.resize(area_.size());
@@ -58,6 +52,34 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
     const std::int32_t b = piece_of_[contact.other];
     if (a != b) Connect(a, b, {contact.clearance, contact.cell});
   }
+}
+
+std::int32_t PieceGraph::PieceAbove(std::int32_t cell,
+                                    const std::vector<std::uint16_t>& clearance) {
+  std::vector<std::int32_t>& forest = piece_of_;
+  std::int32_t x = cell;
+  std::int32_t piece;
+  for (;;) {
+    const std::int32_t up = forest[x];
+    if (up < -1) {  // met before, or walked over
+      piece = Code(up);
+      break;
+    }
+    if (up == x) {  // the root of a piece not met yet
+      piece = static_cast<std::int32_t>(area_.size());
+      area_.push_back(0);
+      peak_.push_back(clearance[x]);  // a root is its piece's highest cell
+      forest[x] = Code(piece);
+      break;
+    }
+    x = up;
+  }
+  for (x = cell; forest[x] >= 0;) {
+    const std::int32_t up = forest[x];
+    forest[x] = Code(piece);
+    x = up;
+  }
+  return piece;
 }
 
 void PieceGraph::Connect(std::int32_t a, std::int32_t b, const PieceEdge& edge) {

@@ -52,6 +52,9 @@ class PieceGraph {
   }
 
  private:
+  // The piece of the cell `cell` points up from: found by walking up the
+  // forest to a piece's code or a root, which then starts a new piece.
+  std::int32_t PieceAbove(std::int32_t cell, const std::vector<std::uint16_t>& clearance);
   void Connect(std::int32_t a, std::int32_t b, const PieceEdge& edge);
   void Merge(std::int32_t from, std::int32_t into);
 

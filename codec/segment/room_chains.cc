@@ -18,6 +18,7 @@
 #include <unordered_map>
 
 #include "codec/segment/no_room_boxes.h"
+#include "codec/segment/range_scan.h"
 #include "codec/segment/segment_internal.h"
 
 namespace linemap::segment_internal {
@@ -265,17 +266,19 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
   for (int r = 0; r < h; ++r) {
     const std::int32_t* ids = flood.room_of_cell.data() + grid.Index(0, r);
     const Cell* cells = grid.cells().data() + grid.Index(0, r);
-    for (int c = 0; c < w;) {
+    const auto next_run = [&](int col) {
+      return static_cast<int>(
+          FirstOtherThan(ids, static_cast<std::size_t>(col), static_cast<std::size_t>(w), 0));
+    };
+    for (int c = next_run(0); c < w;) {
       const std::int32_t id = ids[c];
-      if (!id) {
-        ++c;
-        continue;
-      }
       // A run of one room's cells (a room crosses a row in a few long
-      // runs): its statistics updated once for the run, not once a cell.
-      int end = c;
+      // runs): its statistics updated once for the run, not once a cell;
+      // runs and the gaps between them found four cells at a time.
+      const int end = static_cast<int>(
+          FirstOtherThan(ids, static_cast<std::size_t>(c), static_cast<std::size_t>(w), id));
       std::size_t free = 0;
-      for (; end < w && ids[end] == id; ++end) free += cells[end] == Cell::kFree;
+      for (int k = c; k < end; ++k) free += cells[k] == Cell::kFree;
       ComponentStats& stats = rooms.components[id - 1];
       if (stats.cell_count == 0) {
         stats.first_cell = {c, r};
@@ -286,7 +289,7 @@ void BuildRooms(const Grid& grid, const SegmentationOptions& options, RoomFlood 
       stats.box.max_col = std::max(stats.box.max_col, end - 1);
       stats.box.max_row = r;
       free_cells[id - 1] += free;
-      c = end;
+      c = next_run(end);
     }
   }
   rooms.labels = std::move(flood.room_of_cell);

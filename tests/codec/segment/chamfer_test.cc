@@ -56,6 +56,71 @@ TEST(ChamferTest, RowScanIsThePrefixMinimumAtEveryWidth) {
   }
 }
 
+// Rows of long stretches of walls and of open space, starting anywhere
+// against the eight-cell blocks: blocks of walls only are taken at once.
+TEST(ChamferTest, RowScanOverStretchesOfWalls) {
+  std::mt19937 rng(13);
+  for (int pw = 3; pw <= 90; ++pw) {
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<std::uint16_t> t(static_cast<std::size_t>(pw), 0);
+      std::uint16_t value = 0;
+      for (int c = 1; c < pw - 1; ++c) {
+        if (rng() % 12 == 0) value = rng() % 2 ? 0 : static_cast<std::uint16_t>(rng() % 0xffff);
+        t[c] = value;
+      }
+      for (const bool forward : {true, false}) {
+        std::vector<std::uint16_t> row(t.size(), 7);
+        ChamferScanRow(t.data(), row.data(), pw, forward);
+        std::vector<std::uint16_t> expected = ReferenceScan(t, pw, forward);
+        expected[0] = expected[pw - 1] = 7;  // the frame cells are not written
+        EXPECT_EQ(row, expected) << "width " << pw << (forward ? " >" : " <");
+      }
+    }
+  }
+}
+
+// Grids with rooms inside thick walls and unknown space (whole blocks of
+// walls in both passes) against the plain two-pass transform.
+TEST(ChamferTest, TransformOverBlocksOfWalls) {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int pw = 3 + static_cast<int>(rng() % 60), ph = 3 + static_cast<int>(rng() % 40);
+    std::vector<std::uint16_t> dist(static_cast<std::size_t>(pw) * ph, 0);
+    for (int k = 0; k < 3; ++k) {
+      const int c0 = 1 + static_cast<int>(rng() % (pw - 2)),
+                r0 = 1 + static_cast<int>(rng() % (ph - 2));
+      const int c1 = std::min(pw - 1, c0 + 1 + static_cast<int>(rng() % 30));
+      const int r1 = std::min(ph - 1, r0 + 1 + static_cast<int>(rng() % 20));
+      for (int r = r0; r < r1; ++r) {
+        for (int c = c0; c < c1; ++c) dist[static_cast<std::size_t>(r) * pw + c] = kChamferFar;
+      }
+    }
+    std::vector<std::uint16_t> expected = dist;
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int k = 1; k < ph - 1; ++k) {
+        const int r = pass == 0 ? k : ph - 1 - k;
+        for (int j = 1; j < pw - 1; ++j) {
+          const int c = pass == 0 ? j : pw - 1 - j;
+          std::uint16_t& d = expected[static_cast<std::size_t>(r) * pw + c];
+          if (d == 0) continue;
+          const int dr = pass == 0 ? -1 : 1, dc = pass == 0 ? -1 : 1;
+          int best = d;
+          const auto at = [&](int cc, int rr) {
+            return expected[static_cast<std::size_t>(rr) * pw + cc];
+          };
+          best = std::min(best, at(c + dc, r) + kChamferSide);
+          best = std::min(best, at(c, r + dr) + kChamferSide);
+          best = std::min(best, at(c - 1, r + dr) + kChamferDiagonal);
+          best = std::min(best, at(c + 1, r + dr) + kChamferDiagonal);
+          d = static_cast<std::uint16_t>(std::min(best, 0xfffe));
+        }
+      }
+    }
+    ChamferInPlace(&dist, pw, ph);
+    EXPECT_EQ(dist, expected) << "trial " << trial;
+  }
+}
+
 // A row of open space longer than 0xfffe / 3 cells (a map some 22,000 cells
 // wide, within the default limit of 2^30 cells): the distance from the frame
 // passes 0xfffe and stays there, where a running value that wrapped around
