@@ -107,13 +107,12 @@ StatusOr<std::size_t> InputFile::Read(std::uint8_t* out, std::size_t size) {
   return done;
 }
 
-StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
-                                                  std::uint64_t max_bytes) {
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes,
+                                                  Limit which) {
   LINEMAP_ASSIGN_OR_RETURN(InputFile file, InputFile::Open(path));
   if (file.size() > max_bytes) {
-    return OverLimitError(Limit::kFileBytes, Quoted(path) + " is " + std::to_string(file.size()) +
-                                                 " bytes, more than the limit of " +
-                                                 std::to_string(max_bytes));
+    return OverLimitError(which, Quoted(path) + " is " + std::to_string(file.size()) +
+                                     " bytes, more than the limit of " + std::to_string(max_bytes));
   }
   std::vector<std::uint8_t> bytes;
   bytes.reserve(static_cast<std::size_t>(file.size()));
@@ -122,8 +121,8 @@ StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path,
     LINEMAP_ASSIGN_OR_RETURN(const std::size_t n, file.Read(buffer, sizeof(buffer)));
     if (n == 0) break;
     if (bytes.size() + n > max_bytes) {
-      return OverLimitError(Limit::kFileBytes, Quoted(path) + " is larger than the limit of " +
-                                                   std::to_string(max_bytes) + " bytes");
+      return OverLimitError(which, Quoted(path) + " is larger than the limit of " +
+                                       std::to_string(max_bytes) + " bytes");
     }
     bytes.insert(bytes.end(), buffer, buffer + n);
   }

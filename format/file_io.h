@@ -19,9 +19,11 @@ namespace linemap {
 // Reads all of `path`. Fails with kNotFound for a missing file,
 // kInvalidArgument for a directory or a file that cannot be opened or read
 // (bad input: the CLI exits 2), kResourceExhausted when it is larger than
-// `max_bytes`.
+// `max_bytes` (tagged `which`: Limit::kFileBytes when the caller's
+// DecodeLimits set it, kNone for a reader's own cap such as a map YAML's).
 // Messages name the file.
-StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes);
+StatusOr<std::vector<std::uint8_t>> ReadFileBytes(const std::string& path, std::uint64_t max_bytes,
+                                                  Limit which = Limit::kFileBytes);
 
 // A file read in pieces, for inputs too large to hold whole (a 282 MB map
 // image). Move-only; closes the file when destroyed.

@@ -120,7 +120,7 @@ struct YamlMap {
 StatusOr<YamlMap> ParseMapYaml(const std::string& yaml_path) {
   const std::string where = Quoted(yaml_path);
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
-                           ReadFileBytes(yaml_path, kMaxYamlBytes));
+                           ReadFileBytes(yaml_path, kMaxYamlBytes, Limit::kNone));
   YAML::Node doc;
   try {
     doc = YAML::Load(std::string(bytes.begin(), bytes.end()));

@@ -35,12 +35,15 @@ void RaiseStatus(const Status& status) {
     PyObject* args = Py_BuildValue("(is)", error_number, status.message().c_str());
     PyErr_SetObject(ExceptionTypeFor(status.code()), args);
     Py_XDECREF(args);
-  } else if (status.limit() != Limit::kNone) {
+  } else if (status.code() == StatusCode::kResourceExhausted) {
     // A refusal over a limit names it as `limit`, the keyword that lifts it
-    // (DecodeLimits(max_segments=...), save(max_tolerance_cells=...)).
+    // (DecodeLimits(max_segments=...), save(max_tolerance_cells=...)); None
+    // when no keyword does (a save whose layers decoders would refuse).
     pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(
         ExceptionTypeFor(status.code()))(status.message());
-    error.attr("limit") = LimitFieldName(status.limit());
+    error.attr("limit") = status.limit() == Limit::kNone
+                              ? pybind11::none()
+                              : pybind11::object(pybind11::str(LimitFieldName(status.limit())));
     PyErr_SetObject(ExceptionTypeFor(status.code()), error.ptr());
   } else {
     PyErr_SetString(ExceptionTypeFor(status.code()), status.message().c_str());

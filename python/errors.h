@@ -9,7 +9,8 @@
 //                                                errno EACCES)
 //   kIoError                                  -> OSError
 //   kResourceExhausted                        -> MemoryError (a caller-set limit such
-//                                                as max_cells, not the machine's memory)
+//                                                as max_cells, not the machine's memory;
+//                                                .limit its keyword, or None)
 //   kInternal                                 -> RuntimeError
 #ifndef LINEMAP_PYTHON_ERRORS_H_
 #define LINEMAP_PYTHON_ERRORS_H_

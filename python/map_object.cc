@@ -213,7 +213,16 @@ Map MapFromState(const py::dict& state) {
   map.meta.origin = OriginArgument(state["origin"]);
   map.meta.mode = ModeFromName(state["mode"].cast<std::string>());
   map.meta.negate = state["negate"].cast<bool>();
-  SetThresholds(map, state["occupied_thresh"].cast<double>(), state["free_thresh"].cast<double>());
+  // As an .lmap header holds them: finite, in any order (load() keeps a
+  // YAML's pair as map_server reads it, even one set_thresholds() refuses).
+  for (const char* key : {"occupied_thresh", "free_thresh"}) {
+    if (!std::isfinite(state[key].cast<double>())) {
+      throw py::value_error(std::string("cannot unpickle a linemap.Map whose ") + key +
+                            " is not finite");
+    }
+  }
+  map.meta.occupied_thresh = state["occupied_thresh"].cast<double>();
+  map.meta.free_thresh = state["free_thresh"].cast<double>();
   return map;
 }
 

@@ -1,14 +1,12 @@
 #include "ros/served_map.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <sstream>
-#include <string_view>
 #include <vector>
 
 #include "linemap/codec.h"
@@ -155,8 +153,10 @@ Status NamingTheLimit(const Status& status, const DecodeLimits& limits,
   // parameter: raising one of these would not lift them.
   for (const LimitParameter& limit : applying) {
     if (status.limit() == limit.limit) {
-      return Status(status.code(), status.message() + " (limit: ~" + limit.name + " " +
-                                       std::to_string(limits.*limit.field) + ")");
+      return Status(status.code(),
+                    status.message() + " (limit: ~" + limit.name + " " +
+                        std::to_string(limits.*limit.field) + ")",
+                    status.limit());
     }
   }
   return status;

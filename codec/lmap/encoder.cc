@@ -91,10 +91,10 @@ std::vector<std::uint8_t> ExactCells(const Grid& grid, const EncodeOptions& opti
 
 // The share of a save within a tolerance done after `rounds` rounds of
 // checks (FitBlockCells), which take some 85 % of its time (tsc at T = 1:
-// 7.4 of 8.6 s, in 13 rounds). How many rounds a map needs is not known
-// ahead (at most 96), so each round takes a fifth of what is left of the
-// rounds' share: the bar moves with every round and does not reach the end
-// before the file is written.
+// 7.4 of 8.6 s in 13 rounds, measured beside other jobs). How many rounds
+// a map needs is not known ahead (at most 96), so each round takes a fifth
+// of what is left of the rounds' share: the bar moves with every round and
+// does not reach the end before the file is written.
 constexpr double kProgressBeforeRounds = 0.05;  // the layers and the exact cells
 constexpr double kProgressOfRounds = 0.85;
 constexpr double kProgressWithinFile = 0.95;  // then the exact file, to compare with

@@ -63,31 +63,35 @@ void LayerCounts::Add(const VectorLayers& layers) {
   }
 }
 
+// Over what decoders read by default: resource exhausted, but over no limit
+// the caller set (Limit::kNone), since only saving without the layers
+// lifts it.
+Status DefaultLimitError(std::string message) {
+  return Status(StatusCode::kResourceExhausted, std::move(message));
+}
+
 Status CheckLayerCountsWithinDefaultLimits(const LayerCounts& counts) {
   const DecodeLimits defaults;
   const std::string advice =
       ", more than decoders read by default: save the cells only (vector layers off, "
       "--raster-only)";
   if (counts.walls > defaults.max_segments || counts.segments > defaults.max_segments) {
-    return OverLimitError(Limit::kSegments, "the walls have " + std::to_string(counts.segments) +
-                                                " segments (limit " +
-                                                std::to_string(defaults.max_segments) + ")" +
-                                                advice);
+    return DefaultLimitError("the walls have " + std::to_string(counts.segments) +
+                             " segments (limit " + std::to_string(defaults.max_segments) + ")" +
+                             advice);
   }
   if (counts.rooms > defaults.max_objects || counts.objects > defaults.max_objects) {
-    return OverLimitError(Limit::kObjects,
-                          "the layers have " + std::to_string(counts.rooms) + " rooms and " +
-                              std::to_string(counts.objects) + " furniture objects (limit " +
-                              std::to_string(defaults.max_objects) + " each)" + advice);
+    return DefaultLimitError("the layers have " + std::to_string(counts.rooms) + " rooms and " +
+                             std::to_string(counts.objects) + " furniture objects (limit " +
+                             std::to_string(defaults.max_objects) + " each)" + advice);
   }
   const std::uint64_t chains = defaults.max_chain_length;
   if (counts.room_vertices > chains || counts.room_chain_cells > chains ||
       counts.object_vertices > chains || counts.object_chain_cells > chains) {
-    return OverLimitError(Limit::kChainLength,
-                          "the room and furniture outlines have " +
-                              std::to_string(counts.room_chain_cells + counts.object_chain_cells) +
-                              " chain cells (limit " + std::to_string(chains) +
-                              " for the rooms and for the objects)" + advice);
+    return DefaultLimitError("the room and furniture outlines have " +
+                             std::to_string(counts.room_chain_cells + counts.object_chain_cells) +
+                             " chain cells (limit " + std::to_string(chains) +
+                             " for the rooms and for the objects)" + advice);
   }
   return Status::Ok();
 }

@@ -25,8 +25,9 @@ namespace linemap {
 // block turned unknown) round by round until every guarantee holds on
 // ComposeBlockCells(grid, result); a map that does not settle gets every
 // cell restored (the exact map). `after_round`, when given, is called after
-// each round that did not settle with the number of rounds done so far
-// (the caller's progress: the rounds that run are not known ahead).
+// each round that mended cells without settling, with the number of rounds
+// done so far (the caller's progress: the rounds that run are not known
+// ahead).
 StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
                                    const std::function<void(int)>& after_round = nullptr);
 

@@ -99,8 +99,7 @@ struct EncodeOptions {
   // map over 4096 cells a side reports after each row of 2048-cell blocks
   // (about 0.7 s apart on the 282-Mcell office map), a save within a
   // tolerance after each round of its checks (an estimate: the rounds a map
-  // needs are not known ahead; tsc takes 13 at T = 1, 8.6 s). Empty: no
-  // reports.
+  // needs are not known ahead; tsc takes 13 at T = 1). Empty: no reports.
   // `linemap encode` draws it as a progress bar when stderr is a terminal.
   std::function<void(double)> progress;
   // Metadata text, each entry stored only when non-empty (the "meta" chunk

@@ -171,3 +171,11 @@ def test_a_refusal_names_the_limit_that_lifts_it(tmp_path):
         linemap.save(str(tmp_path / "t.lmap"), depot, tolerance=1, max_tolerance_cells=1000)
     assert refused.value.limit == "max_tolerance_cells"
     assert not (tmp_path / "t.lmap").exists()
+
+
+def test_a_refusal_no_keyword_lifts_has_limit_none(tmp_path):
+    # A map YAML over the loader's own 1 MiB cap: no DecodeLimits field.
+    (tmp_path / "big.yaml").write_text("# " + "x" * (1 << 20) + "\nimage: m.pgm\n")
+    with pytest.raises(MemoryError) as refused:
+        linemap.load(str(tmp_path / "big.yaml"))
+    assert refused.value.limit is None, str(refused.value)

@@ -249,7 +249,7 @@ def test_unpickling_checks_the_state(tmp_path):
         ({"resolution": 0.0}, ValueError, "resolution"),
         ({"origin": (0.0, float("inf"))}, ValueError, "origin"),
         ({"mode": "grey"}, ValueError, "mode 'grey'"),
-        ({"free_thresh": 0.9}, ValueError, "must be below"),
+        ({"free_thresh": float("nan")}, ValueError, "free_thresh is not finite"),
     ]:
         with pytest.raises(error, match=match):
             loaded({**state, **change})
@@ -257,3 +257,16 @@ def test_unpickling_checks_the_state(tmp_path):
     del without["mode"]
     with pytest.raises(ValueError, match="without 'mode'"):
         loaded(without)
+
+
+def test_a_map_whose_yaml_thresholds_are_out_of_order_pickles(tmp_path):
+    # load() keeps a YAML's pair as map_server reads it, even one
+    # set_thresholds() refuses; a pickle gives it back.
+    import pickle
+    (tmp_path / "t.pgm").write_bytes(b"P5\n2 1\n255\n" + bytes([0, 254]))
+    (tmp_path / "t.yaml").write_text(
+        "image: t.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0]\nnegate: 0\n"
+        "occupied_thresh: 0.6\nfree_thresh: 0.7\n")
+    m = linemap.load(str(tmp_path / "t.yaml"))
+    assert (m.occupied_thresh, m.free_thresh) == (0.6, 0.7)
+    assert fields(pickle.loads(pickle.dumps(m))) == fields(m)

@@ -39,7 +39,8 @@ StatusOr<double> RunCodecProgram(const ImageCodec& codec, const std::vector<std:
 }
 
 StatusOr<std::string> ReadScratch(const std::string& path) {
-  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, ReadFileBytes(path, kMaxFileBytes));
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, kMaxFileBytes, Limit::kNone));
   return std::string(bytes.begin(), bytes.end());
 }
 

@@ -1,5 +1,8 @@
 #include "tools/linemap/map_input.h"
 
+#include <initializer_list>
+#include <string>
+
 #include "linemap/codec.h"
 #include "tools/linemap/lmap_cli_util.h"
 
@@ -64,30 +67,35 @@ StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args) {
   return read;
 }
 
-Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
-  if (!IsLmapPath(path)) return Status::Ok();
-  for (const char* option :
-       {"--resolution", "--origin", "--negate", "--occupied-thresh", "--free-thresh", "--mode"}) {
-    if (args.Has(option)) {
-      return InvalidArgumentError(std::string(option) +
-                                  " reads map images and YAMLs; the .lmap file '" + path +
-                                  "' keeps its own resolution, origin and cells");
-    }
+namespace {
+
+// Invalid argument naming the first of `options` that `args` hold, with
+// `why` after it.
+Status RefuseOptions(const ParsedArgs& args, std::initializer_list<const char*> options,
+                     const std::string& why) {
+  for (const char* option : options) {
+    if (args.Has(option)) return InvalidArgumentError(std::string(option) + why);
   }
   return Status::Ok();
 }
 
+}  // namespace
+
+Status CheckMapOptionsApplyTo(const std::string& path, const ParsedArgs& args) {
+  if (!IsLmapPath(path)) return Status::Ok();
+  return RefuseOptions(
+      args,
+      {"--resolution", "--origin", "--negate", "--occupied-thresh", "--free-thresh", "--mode"},
+      " reads map images and YAMLs; the .lmap file '" + path +
+          "' keeps its own resolution, origin and cells");
+}
+
 Status CheckImageOptionsApplyToBag(const std::string& path, const ParsedArgs& args) {
   // The thresholds do apply: they read the messages' occupancies (0..100).
-  for (const char* option : {"--resolution", "--origin", "--negate", "--mode"}) {
-    if (args.Has(option)) {
-      return InvalidArgumentError(std::string(option) +
-                                  " reads map images and YAMLs; the maps of the bag '" + path +
-                                  "' are nav_msgs/OccupancyGrid messages, which carry their own "
-                                  "resolution, origin and occupancies");
-    }
-  }
-  return Status::Ok();
+  return RefuseOptions(args, {"--resolution", "--origin", "--negate", "--mode"},
+                       " reads map images and YAMLs; the maps of the bag '" + path +
+                           "' are nav_msgs/OccupancyGrid messages, which carry their own "
+                           "resolution, origin and occupancies");
 }
 
 StatusOr<Grid> LoadMapArgument(const std::string& path, const ParsedArgs& args) {

@@ -34,6 +34,8 @@ TEST(V2FileTest, LayerCountsAboveTheDefaultLimitsAreRefused) {
     const Status s = CheckLayerCountsWithinDefaultLimits(over);
     ASSERT_FALSE(s.ok()) << field;
     EXPECT_EQ(s.code(), StatusCode::kResourceExhausted) << field;
+    // No limit the caller set: only a save without the layers lifts it.
+    EXPECT_EQ(s.limit(), Limit::kNone) << field;
     EXPECT_NE(s.message().find("--raster-only"), std::string::npos) << s.ToString();
   }
 }
