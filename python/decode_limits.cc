@@ -33,25 +33,28 @@ constexpr int kMaxThreads = 4096;
 // The limits that count bytes or items (whole numbers from 1), in the
 // order of the C++ struct; max_threads, an int from 0, follows them.
 struct CountLimit {
-  const char* name;
+  Limit limit;
   std::uint64_t DecodeLimits::*field;
   const char* doc;
+  // The keyword and property: the library's name of the field, which a
+  // MemoryError's .limit gives too.
+  const char* name() const { return LimitFieldName(limit); }
 };
 constexpr CountLimit kCountLimits[] = {
-    {"max_file_bytes", &DecodeLimits::max_file_bytes,
+    {Limit::kFileBytes, &DecodeLimits::max_file_bytes,
      "Bytes of an .lmap file read from a path (default 2^31)."},
-    {"max_cells", &DecodeLimits::max_cells, "Cells of the map, width x height (default 2^30)."},
-    {"max_chunk_bytes", &DecodeLimits::max_chunk_bytes,
+    {Limit::kCells, &DecodeLimits::max_cells, "Cells of the map, width x height (default 2^30)."},
+    {Limit::kChunkBytes, &DecodeLimits::max_chunk_bytes,
      "Bytes of one chunk's payload (default 2^30)."},
-    {"max_inflated_bytes", &DecodeLimits::max_inflated_bytes,
+    {Limit::kInflatedBytes, &DecodeLimits::max_inflated_bytes,
      "Bytes of one inflated (zlib) payload (default 2^28)."},
-    {"max_segments", &DecodeLimits::max_segments,
+    {Limit::kSegments, &DecodeLimits::max_segments,
      "Wall segments per chunk, or per band of layer sections read together (spec 7.3; default "
      "2^24, what a 2^30-cell SLAM map may need)."},
-    {"max_chain_length", &DecodeLimits::max_chain_length,
+    {Limit::kChainLength, &DecodeLimits::max_chain_length,
      "Cells of one room or furniture chain, and of all the rooms' chains (and apart, all the "
      "objects') (default 2^26)."},
-    {"max_objects", &DecodeLimits::max_objects,
+    {Limit::kObjects, &DecodeLimits::max_objects,
      "Rooms per file, and furniture objects per file (apart) (default 2^20)."},
 };
 constexpr const char* kThreadsName = "max_threads";
@@ -60,7 +63,7 @@ constexpr const char* kThreadsName = "max_threads";
 // repr).
 std::vector<const char*> LimitNames() {
   std::vector<const char*> names;
-  for (const CountLimit& limit : kCountLimits) names.push_back(limit.name);
+  for (const CountLimit& limit : kCountLimits) names.push_back(limit.name());
   names.push_back(kThreadsName);
   return names;
 }
@@ -102,7 +105,7 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
           py::arg("max_threads") = d.max_threads,
           "The defaults, with the limits given as keywords set.");
   for (const CountLimit& limit : kCountLimits) {
-    AddLimit(cls, limit.name, limit.field, 1, UINT64_MAX, limit.doc);
+    AddLimit(cls, limit.name(), limit.field, 1, UINT64_MAX, limit.doc);
   }
   AddLimit(cls, kThreadsName, &DecodeLimits::max_threads, 0, kMaxThreads,
            "Threads decoding the tiles of a 2.0 file, the calling one included; 0 (the "
@@ -114,7 +117,7 @@ limit is a whole number of at least 1 (max_threads: 0 to 4096).
   cls.def(py::pickle(
       [](const DecodeLimits& limits) {
         py::dict state;
-        for (const CountLimit& limit : kCountLimits) state[limit.name] = limits.*limit.field;
+        for (const CountLimit& limit : kCountLimits) state[limit.name()] = limits.*limit.field;
         state[kThreadsName] = limits.max_threads;
         return state;
       },

@@ -98,7 +98,7 @@ using LimitValues = std::vector<std::optional<std::uint64_t>>;
 StatusOr<LimitValues> LimitArguments(int argc, char** argv) {
   LimitValues values;
   for (const LimitParameter& limit : LimitParameters()) {
-    const std::optional<std::string> text = PrivateParameterArgument(argc, argv, limit.name);
+    const std::optional<std::string> text = PrivateParameterArgument(argc, argv, limit.name());
     if (!text) {
       values.emplace_back();
       continue;
@@ -130,7 +130,7 @@ StatusOr<std::uint64_t> LimitFromXmlRpc(const LimitParameter& limit, XmlRpc::Xml
 StatusOr<std::optional<std::uint64_t>> LimitParameterValue(const ros::NodeHandle& private_nh,
                                                            const LimitParameter& limit) {
   XmlRpc::XmlRpcValue value;
-  if (!private_nh.getParam(limit.name, value)) return std::optional<std::uint64_t>();
+  if (!private_nh.getParam(limit.name(), value)) return std::optional<std::uint64_t>();
   LINEMAP_ASSIGN_OR_RETURN(const std::uint64_t parsed, LimitFromXmlRpc(limit, value));
   return std::optional<std::uint64_t>(parsed);
 }

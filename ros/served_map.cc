@@ -138,10 +138,9 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window) {
 namespace {
 
 constexpr LimitParameter kLimitParameters[] = {
-    {"max_cells", "cells", &DecodeLimits::max_cells, Limit::kCells},
-    {"max_segments", "wall segments per chunk", &DecodeLimits::max_segments, Limit::kSegments},
-    {"max_objects", "rooms, and furniture objects, per file", &DecodeLimits::max_objects,
-     Limit::kObjects},
+    {Limit::kCells, "cells", &DecodeLimits::max_cells},
+    {Limit::kSegments, "wall segments per chunk", &DecodeLimits::max_segments},
+    {Limit::kObjects, "rooms, and furniture objects, per file", &DecodeLimits::max_objects},
 };
 
 // `status` (a map over a limit) with the parameter of `applying` it is over
@@ -154,7 +153,7 @@ Status NamingTheLimit(const Status& status, const DecodeLimits& limits,
   for (const LimitParameter& limit : applying) {
     if (status.limit() == limit.limit) {
       return Status(status.code(),
-                    status.message() + " (limit: ~" + limit.name + " " +
+                    status.message() + " (limit: ~" + limit.name() + " " +
                         std::to_string(limits.*limit.field) + ")",
                     status.limit());
     }
@@ -217,9 +216,9 @@ std::span<const LimitParameter> LimitParametersFor(const std::string& path) {
 }
 
 Status LimitRangeError(const LimitParameter& limit, const std::string& shown) {
-  return InvalidArgumentError("~" + std::string(limit.name) + " must be a whole number from 1 to " +
-                              std::to_string(kMaxLimitValue) + " (" + limit.unit + "), not " +
-                              shown);
+  return InvalidArgumentError(
+      "~" + std::string(limit.name()) + " must be a whole number from 1 to " +
+      std::to_string(kMaxLimitValue) + " (" + limit.unit + "), not " + shown);
 }
 
 StatusOr<std::uint64_t> LimitFromNumber(const LimitParameter& limit, double value) {

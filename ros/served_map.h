@@ -40,10 +40,12 @@ StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 // number from 1 to kMaxLimitValue (XmlRpc's largest int) that replaces
 // DecodeLimits' field.
 struct LimitParameter {
-  const char* name;  // "max_cells": the parameter ~max_cells
+  Limit limit;       // what the library's errors over it carry (Status::limit())
   const char* unit;  // what it counts, for messages
   std::uint64_t DecodeLimits::*field;
-  Limit limit;  // what the library's errors over it carry (Status::limit())
+  // "max_cells": the parameter ~max_cells, named as the library names the
+  // field (LimitFieldName), as Python's DecodeLimits does.
+  const char* name() const { return LimitFieldName(limit); }
 };
 inline constexpr std::int64_t kMaxLimitValue = 2147483647;
 

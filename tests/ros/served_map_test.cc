@@ -125,7 +125,7 @@ TEST(ServedMapTest, CropOfARotatedMapKeepsEveryCellWhereItWas) {
 
 const LimitParameter& Limit(const std::string& name) {
   for (const LimitParameter& limit : LimitParameters()) {
-    if (limit.name == name) return limit;
+    if (limit.name() == name) return limit;
   }
   ADD_FAILURE() << "no limit ~" << name;
   return LimitParameters()[0];
@@ -280,7 +280,7 @@ TEST(ServedMapTest, OnlyTheParameterThatLiftsTheRefusalIsNamed) {
         if (grid.ok()) continue;  // e.g. no layers to be over ~max_segments
         const std::string& message = grid.status().message();
         EXPECT_EQ(grid.status().code(), StatusCode::kResourceExhausted) << message;
-        EXPECT_TRUE(message.ends_with(" (limit: ~" + std::string(parameter.name) + " 1)"))
+        EXPECT_TRUE(message.ends_with(" (limit: ~" + std::string(parameter.name()) + " 1)"))
             << message;
         EXPECT_EQ(message.find("~max_"), message.rfind("~max_")) << message;
         ++named;
