@@ -18,6 +18,13 @@ const char* MapModeName(MapMode mode) {
   return "trinary";
 }
 
+std::optional<MapMode> MapModeFromName(std::string_view name) {
+  for (const MapMode mode : {MapMode::kTrinary, MapMode::kScale, MapMode::kRaw}) {
+    if (name == MapModeName(mode)) return mode;
+  }
+  return std::nullopt;
+}
+
 Grid::Grid(int width, int height, Cell fill)
     : width_(width < 0 ? 0 : width), height_(height < 0 ? 0 : height) {
   AssignLarge(&cells_, static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), fill);

@@ -24,7 +24,12 @@ Status CheckDimensions(std::uint64_t width, std::uint64_t height, const std::str
   if (width == 0 || height == 0) {
     return CorruptError(name + ": image has zero width or height");
   }
-  if (width > 0x7fffffff || height > 0x7fffffff || width * height > max_cells) {
+  // A grid's sides are ints: no max_cells makes a wider image loadable.
+  if (width > 0x7fffffff || height > 0x7fffffff) {
+    return UnsupportedError(name + ": image of " + std::to_string(width) + " x " +
+                            std::to_string(height) + " cells has a side above 2^31 - 1");
+  }
+  if (width * height > max_cells) {
     return OverLimitError(Limit::kCells, name + ": image of " + std::to_string(width) + " x " +
                                              std::to_string(height) +
                                              " cells exceeds the limit of " +

@@ -78,9 +78,7 @@ Status CheckResolution(double resolution, const std::string& where) {
 }
 
 StatusOr<MapMode> ParseMode(const std::string& text, const std::string& where) {
-  if (text == "trinary") return MapMode::kTrinary;
-  if (text == "scale") return MapMode::kScale;
-  if (text == "raw") return MapMode::kRaw;
+  if (std::optional<MapMode> mode = MapModeFromName(text)) return *mode;
   return InvalidArgumentError(where + ": mode '" + text + "' is not trinary, scale or raw");
 }
 

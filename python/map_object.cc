@@ -187,9 +187,7 @@ py::dict MapState(const Map& map) {
 }
 
 MapMode ModeFromName(const std::string& name) {
-  for (const MapMode mode : {MapMode::kTrinary, MapMode::kScale, MapMode::kRaw}) {
-    if (name == MapModeName(mode)) return mode;
-  }
+  if (std::optional<MapMode> mode = MapModeFromName(name)) return *mode;
   throw py::value_error("cannot unpickle a linemap.Map of mode '" + name +
                         "': modes are 'trinary', 'scale' and 'raw'");
 }

@@ -224,17 +224,19 @@ void EncodePath(RangeEncoder* enc, PathModels* m, const std::vector<CellIndex>& 
            &copy, &exhausted);
 }
 
-// Decodes one path; `points` counts its points against `max_points`.
+// Decodes one path; `points` counts its points against `max_points`, and
+// `over_limit()` is the error when they exceed it (the caller's limit: wall
+// segments, or a polygon's chain cells).
+template <class OverLimit>
 StatusOr<std::vector<CellIndex>> DecodePath(RangeDecoder* dec, PathModels* m,
                                             const LayerBounds& bounds, std::size_t min_points,
                                             std::uint64_t max_points, std::uint64_t* points,
-                                            PathState* state) {
+                                            PathState* state, OverLimit over_limit) {
   PathReader io(dec);
   std::vector<CellIndex> path;
   bool exhausted = false;
   if (!CodePath(&io, m, bounds, min_points, max_points, points, state, &path, &exhausted)) {
-    // Its callers name the limit (walls: segments, polygons: chain cells).
-    if (exhausted) return Status(StatusCode::kResourceExhausted, "points exceed the limit");
+    if (exhausted) return over_limit();
     return CorruptError("point out of the grid (or its section's box) or malformed");
   }
   return path;
@@ -247,13 +249,11 @@ StatusOr<std::vector<CellIndex>> DecodePolygon(RangeDecoder* dec, PathModels* m,
                                                const DecodeLimits& limits, std::uint64_t* vertices,
                                                std::uint64_t* cells, PathState* prev) {
   StatusOr<std::vector<CellIndex>> polygon =
-      DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev);
-  if (!polygon.ok()) {
-    return polygon.status().code() == StatusCode::kResourceExhausted
-               ? OverLimitError(Limit::kChainLength, "polygon vertices exceed the chain limit of " +
-                                                         std::to_string(limits.max_chain_length))
-               : polygon.status();
-  }
+      DecodePath(dec, m, bounds, 1, limits.max_chain_length, vertices, prev, [&limits] {
+        return OverLimitError(Limit::kChainLength, "polygon vertices exceed the chain limit of " +
+                                                       std::to_string(limits.max_chain_length));
+      });
+  if (!polygon.ok()) return polygon.status();
   // The chain has one cell per step of each edge (max(|dcol|, |drow|)), and
   // one for a single vertex.
   std::uint64_t length = polygon->size() == 1 ? 1 : 0;
@@ -385,13 +385,11 @@ Status DecodeWallItems(RangeDecoder* dec, std::uint64_t count, const LayerBounds
   PathState state = StartState(origin);
   for (std::uint64_t w = 0; w < count; ++w) {
     StatusOr<std::vector<CellIndex>> path =
-        DecodePath(dec, m.get(), bounds, 2, max_points, points, &state);
-    if (!path.ok()) {
-      return path.status().code() == StatusCode::kResourceExhausted
-                 ? OverLimitError(Limit::kSegments, "wall segments exceed the segment limit of " +
-                                                        std::to_string(max_segments))
-                 : path.status();
-    }
+        DecodePath(dec, m.get(), bounds, 2, max_points, points, &state, [max_segments] {
+          return OverLimitError(Limit::kSegments, "wall segments exceed the segment limit of " +
+                                                      std::to_string(max_segments));
+        });
+    if (!path.ok()) return path.status();
     out->push_back({std::move(*path)});
   }
   return Status::Ok();

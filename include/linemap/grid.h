@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "linemap/cells.h"
@@ -38,6 +39,9 @@ enum class MapMode : uint8_t {
 };
 
 const char* MapModeName(MapMode mode);
+// The mode named `name` ("trinary", "scale" or "raw", as MapModeName
+// spells them and map_server's YAML does); nullopt for any other text.
+std::optional<MapMode> MapModeFromName(std::string_view name);
 
 // A planar pose: x, y in metres, yaw in radians (counter-clockwise).
 struct Pose2D {

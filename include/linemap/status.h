@@ -87,6 +87,12 @@ inline Status UnsupportedError(std::string m) {
 inline Status OverLimitError(Limit limit, std::string m) {
   return Status(StatusCode::kResourceExhausted, std::move(m), limit);
 }
+// The name of OverLimitError before refusals said which limit they are
+// over; kept so that callers written against it still build.
+[[deprecated("use OverLimitError(Limit, message)")]] inline Status ResourceExhaustedError(
+    std::string m) {
+  return OverLimitError(Limit::kNone, std::move(m));
+}
 inline Status InternalError(std::string m) { return Status(StatusCode::kInternal, std::move(m)); }
 inline Status PermissionDeniedError(std::string m) {
   return Status(StatusCode::kPermissionDenied, std::move(m));

@@ -42,6 +42,20 @@ TEST(GridTest, WorldToCellInvertsCellToWorldWithYaw) {
   EXPECT_NEAR(row, 7.5, 1e-12);
 }
 
+// map_server's YAML spells the modes "trinary", "scale" and "raw"; the name
+// and the parse are inverses, and nothing else (no other case) parses.
+TEST(GridTest, ModeNamesParseBackAndNothingElseDoes) {
+  EXPECT_EQ(MapModeFromName("trinary"), MapMode::kTrinary);
+  EXPECT_EQ(MapModeFromName("scale"), MapMode::kScale);
+  EXPECT_EQ(MapModeFromName("raw"), MapMode::kRaw);
+  for (const MapMode mode : {MapMode::kTrinary, MapMode::kScale, MapMode::kRaw}) {
+    EXPECT_EQ(MapModeFromName(MapModeName(mode)), mode);
+  }
+  for (const char* other : {"", "Trinary", "RAW", "scale ", "binary"}) {
+    EXPECT_FALSE(MapModeFromName(other).has_value()) << other;
+  }
+}
+
 TEST(GridTest, NegativeSizeGivesEmptyGrid) {
   Grid grid(-1, 5);
   EXPECT_TRUE(grid.empty());

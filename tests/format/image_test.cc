@@ -199,6 +199,25 @@ TEST(ImageTest, RejectsMalformedImages) {
   EXPECT_EQ(LoadRosMap(dir + "/huge.pgm").status().code(), StatusCode::kResourceExhausted);
 }
 
+// A grid's sides are ints: an image wider than 2^31 - 1 is refused as
+// unsupported, not as over a limit, since no max_cells makes it loadable.
+TEST(ImageTest, SideAbove31BitsIsUnsupportedWhateverTheCellLimit) {
+  const std::string dir = MakeTempDir("img");
+  WriteFile(dir + "/wide.pgm", "P5 2147483648 1 255\n");
+  StatusOr<RawImage> image = ReadImageFile(dir + "/wide.pgm", UINT64_MAX);
+  ASSERT_FALSE(image.ok());
+  EXPECT_EQ(image.status().code(), StatusCode::kUnsupported) << image.status().ToString();
+  EXPECT_EQ(image.status().limit(), Limit::kNone);
+  EXPECT_NE(image.status().message().find("wide.pgm"), std::string::npos);
+  EXPECT_NE(image.status().message().find("2^31 - 1"), std::string::npos);
+  // Within the side but over the cells: the cell limit, which names itself.
+  WriteFile(dir + "/long.pgm", "P5 2147483647 3 255\n");
+  StatusOr<RawImage> over = ReadImageFile(dir + "/long.pgm", std::uint64_t{1} << 32);
+  ASSERT_FALSE(over.ok());
+  EXPECT_EQ(over.status().code(), StatusCode::kResourceExhausted) << over.status().ToString();
+  EXPECT_EQ(over.status().limit(), Limit::kCells);
+}
+
 TEST(ImageTest, RefusesANonImageOnItsFirstBytes) {
   // An endless stream: read whole, it would take gigabytes before the
   // signature check.

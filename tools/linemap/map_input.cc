@@ -50,13 +50,8 @@ StatusOr<MapReadOptions> MapReadOptionsFrom(const ParsedArgs& args) {
     options.free_thresh = v;
   }
   if (std::optional<std::string> mode = args.Get("--mode")) {
-    if (*mode == "trinary") {
-      options.mode = MapMode::kTrinary;
-    } else if (*mode == "scale") {
-      options.mode = MapMode::kScale;
-    } else if (*mode == "raw") {
-      options.mode = MapMode::kRaw;
-    } else {
+    options.mode = MapModeFromName(*mode);
+    if (!options.mode) {
       return InvalidArgumentError("--mode must be trinary, scale or raw, not '" + *mode + "'");
     }
   }

@@ -368,6 +368,27 @@ TEST(LayerSectionsTest, CountsAboveTheLimitsAreResourceExhausted) {
   }
 }
 
+// Ids are 32-bit, so a section of 2^32 walls or more is corrupt however
+// far a caller lifts the limits: no limit it names would let it be read.
+TEST(LayerSectionsTest, SectionCountsAbove32BitsAreCorruptWithEveryLimitLifted) {
+  DecodeLimits lifted;
+  lifted.max_segments = UINT64_MAX;
+  lifted.max_objects = UINT64_MAX;
+  const std::uint64_t over = std::uint64_t{1} << 32;
+  for (int field = 0; field < 3; ++field) {
+    ByteWriter body;
+    body.PutVarint(std::max(kW, kH));  // one section
+    for (int f = 0; f < 3; ++f) body.PutVarint(f == field ? over : 0);
+    body.PutVarint(0);  // stream length
+    auto table = ReadLayerSectionTable(body.bytes(), kW, kH, lifted);
+    ASSERT_FALSE(table.ok()) << field;
+    EXPECT_EQ(table.status().code(), StatusCode::kCorrupt) << table.status().ToString();
+    EXPECT_EQ(table.status().limit(), Limit::kNone) << field;
+    EXPECT_NE(table.status().message().find("4294967296"), std::string::npos)
+        << table.status().ToString();
+  }
+}
+
 // Every prefix and every single-byte change of a body fails cleanly or
 // decodes to points inside the grid.
 TEST(LayerSectionsTest, DamagedBodiesFailOrDecodeInsideTheGrid) {
