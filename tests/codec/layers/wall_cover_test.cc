@@ -112,6 +112,31 @@ TEST(WallCoverTest, CellsMarkedCoveredAndCellsNearWallsGetNothing) {
   EXPECT_TRUE(stub[0].a == (CellIndex{2, 2}) || stub[0].b == (CellIndex{2, 2}));
 }
 
+// The layer extractor passes the edge cells it has already found; marked
+// by this test's own definition (any non-zero byte), they give the same
+// segments as the overload that finds them, with and without furniture.
+TEST(WallCoverTest, EdgeCellsGivenByTheCallerGiveTheSameSegments) {
+  std::mt19937 rng(58);
+  for (int trial = 0; trial < 12; ++trial) {
+    const Grid g =
+        ClutteredRoom(&rng, 20 + static_cast<int>(rng() % 70), 10 + static_cast<int>(rng() % 50));
+    std::vector<std::uint8_t> edge(g.size(), 0), furniture(g.size(), 0);
+    for (int r = 0; r < g.height(); ++r) {
+      for (int c = 0; c < g.width(); ++c) {
+        if (IsEdge(g, c, r)) edge[g.Index(c, r)] = 0x5A;
+        if (IsEdge(g, c, r) && rng() % 4 == 0) furniture[g.Index(c, r)] = 1;
+      }
+    }
+    const std::vector<LatticeSegment> walls = {{{0, 0}, {g.width() - 1, 0}}};
+    for (const std::vector<std::uint8_t>* covered :
+         {static_cast<decltype(&furniture)>(nullptr), &furniture}) {
+      const auto given = CoveringSegments(g, walls, covered, edge.data());
+      EXPECT_EQ(given, CoveringSegments(g, walls, covered)) << "trial " << trial;
+      EXPECT_FALSE(given.empty()) << "trial " << trial;  // the clutter is left out
+    }
+  }
+}
+
 TEST(WallCoverTest, AnLShapedClusterIsSplitRatherThanCrossedDiagonally) {
   Grid g(30, 30, Cell::kFree);
   for (int c = 5; c <= 20; ++c) g.set(c, 5, Cell::kOccupied);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace linemap {
@@ -68,6 +69,35 @@ TEST(LabelingTest, HandExample) {
   EXPECT_EQ(eight.components[1].cell_count, 1u);
 }
 
+// Labels, cell counts, first cells and boxes as the plain flood fill gives
+// them.
+void ExpectMatchesFloodFill(const BinaryMask& mask, bool eight, const std::string& what) {
+  const Labeling got = LabelComponents(mask, eight ? Connectivity::kEight : Connectivity::kFour);
+  const std::vector<int> want = FloodFill(mask, eight);
+  ASSERT_EQ(got.labels.size(), want.size()) << what;
+  std::map<int, ComponentStats> stats;
+  for (int r = 0; r < mask.height; ++r) {
+    for (int c = 0; c < mask.width; ++c) {
+      const int id = want[mask.Index(c, r)];
+      ASSERT_EQ(got.at(c, r), id) << what << " eight " << eight << " at " << c << "," << r;
+      if (!id) continue;
+      ComponentStats& s = stats[id];
+      if (s.cell_count == 0) s = {0, {c, r}, {c, r, c, r}};
+      ++s.cell_count;
+      s.box.min_col = std::min(s.box.min_col, c);
+      s.box.max_col = std::max(s.box.max_col, c);
+      s.box.min_row = std::min(s.box.min_row, r);
+      s.box.max_row = std::max(s.box.max_row, r);
+    }
+  }
+  ASSERT_EQ(got.components.size(), stats.size()) << what;
+  for (const auto& [id, s] : stats) {
+    EXPECT_EQ(got.components[id - 1].cell_count, s.cell_count) << what;
+    EXPECT_EQ(got.components[id - 1].first_cell, s.first_cell) << what;
+    EXPECT_EQ(got.components[id - 1].box, s.box) << what;
+  }
+}
+
 TEST(LabelingTest, MatchesFloodFillOnRandomGrids) {
   std::mt19937 rng(777);
   for (int trial = 0; trial < 80; ++trial) {
@@ -75,32 +105,44 @@ TEST(LabelingTest, MatchesFloodFillOnRandomGrids) {
     const double density = trial % 6 == 5 ? 0.03 : 0.3 + 0.1 * (trial % 5);  // some sparse
     const BinaryMask mask = RandomMask(&rng, w, h, density);
     for (bool eight : {false, true}) {
-      const Labeling got =
-          LabelComponents(mask, eight ? Connectivity::kEight : Connectivity::kFour);
-      const std::vector<int> want = FloodFill(mask, eight);
-      ASSERT_EQ(got.labels.size(), want.size());
-      std::map<int, ComponentStats> stats;
-      for (int r = 0; r < h; ++r) {
-        for (int c = 0; c < w; ++c) {
-          const int id = want[mask.Index(c, r)];
-          ASSERT_EQ(got.at(c, r), id) << "trial " << trial << " eight " << eight;
-          if (!id) continue;
-          ComponentStats& s = stats[id];
-          if (s.cell_count == 0) s = {0, {c, r}, {c, r, c, r}};
-          ++s.cell_count;
-          s.box.min_col = std::min(s.box.min_col, c);
-          s.box.max_col = std::max(s.box.max_col, c);
-          s.box.min_row = std::min(s.box.min_row, r);
-          s.box.max_row = std::max(s.box.max_row, r);
-        }
-      }
-      ASSERT_EQ(got.components.size(), stats.size());
-      for (const auto& [id, s] : stats) {
-        EXPECT_EQ(got.components[id - 1].cell_count, s.cell_count);
-        EXPECT_EQ(got.components[id - 1].first_cell, s.first_cell);
-        EXPECT_EQ(got.components[id - 1].box, s.box);
+      ExpectMatchesFloodFill(mask, eight, "trial " + std::to_string(trial));
+    }
+  }
+}
+
+// Dense masks are where provisional labels merge most: free space of a
+// map is mostly one component with holes, and one long run at the bottom
+// joins every tooth of a comb above it only on the last row.
+TEST(LabelingTest, MatchesFloodFillOnDenseGridsAndLateMerges) {
+  std::mt19937 rng(4242);
+  for (const double density : {0.8, 0.9, 0.97, 1.0}) {
+    for (const auto& [w, h] : {std::pair{257, 131}, std::pair{64, 300}, std::pair{1, 97}}) {
+      const BinaryMask mask = RandomMask(&rng, w, h, density);
+      for (bool eight : {false, true}) {
+        ExpectMatchesFloodFill(mask, eight,
+                               "density " + std::to_string(density) + " " + std::to_string(w));
       }
     }
+  }
+  // A comb: teeth on every other column, joined only by the last row; and
+  // the same upside down; and diagonal staircases, which only 8-connectivity
+  // joins.
+  BinaryMask comb(101, 60), flipped(101, 60), stairs(80, 80);
+  for (int c = 0; c < comb.width; ++c) {
+    for (int r = 0; r < comb.height; ++r) {
+      const bool on = c % 2 == 0 || r == comb.height - 1;
+      comb.bits[comb.Index(c, r)] = on;
+      flipped.bits[flipped.Index(c, comb.height - 1 - r)] = on;
+    }
+  }
+  for (int r = 0; r < stairs.height; ++r) {
+    for (int c = 0; c < stairs.width; ++c)
+      stairs.bits[stairs.Index(c, r)] = (c + r) % 7 == 0 ? 0xFF : 0;  // any non-zero byte is set
+  }
+  for (bool eight : {false, true}) {
+    ExpectMatchesFloodFill(comb, eight, "comb");
+    ExpectMatchesFloodFill(flipped, eight, "flipped comb");
+    ExpectMatchesFloodFill(stairs, eight, "stairs");
   }
 }
 
