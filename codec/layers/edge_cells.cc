@@ -104,6 +104,12 @@ std::vector<std::pair<std::size_t, double>> EdgeCells::Near(const LatticeSegment
         const std::size_t row = grid_.Index(c - 2, r + 2 * dr);
         for (std::size_t k = 0; k < 5; ++k) take(row + k);
       }
+    } else if (inside) {
+      // A segment's first cell: all 25, row by row without a test per cell.
+      for (int k = -2; k <= 2; ++k) {
+        const std::size_t row = grid_.Index(c - 2, r + k);
+        for (std::size_t j = 0; j < 5; ++j) take(row + j);
+      }
     } else {
       ForEachNewNeighbour(first ? std::nullopt : std::optional<CellIndex>(last), {c, r}, take);
     }
