@@ -59,10 +59,13 @@ void ForEachIndexParallel(std::uint64_t n, int threads,
 
 std::vector<Cell> TileCells(const Grid& grid, CellRect t) {
   const int tw = t.x1 - t.x0;
-  std::vector<Cell> cells(static_cast<std::size_t>(tw) * (t.y1 - t.y0));
+  // Appended row by row into reserved room: every cell is copied, so none
+  // is zeroed first.
+  std::vector<Cell> cells;
+  cells.reserve(static_cast<std::size_t>(tw) * (t.y1 - t.y0));
   for (int r = t.y0; r < t.y1; ++r) {
-    std::copy_n(grid.cells().begin() + static_cast<std::ptrdiff_t>(grid.Index(t.x0, r)), tw,
-                cells.begin() + static_cast<std::ptrdiff_t>(r - t.y0) * tw);
+    const auto row = grid.cells().begin() + static_cast<std::ptrdiff_t>(grid.Index(t.x0, r));
+    cells.insert(cells.end(), row, row + tw);
   }
   return cells;
 }
@@ -160,8 +163,11 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
       TileLayout(grid.width(), grid.height(), tile_size), threads,
       [&](CellRect t) {
         const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
-        const std::vector<Cell> cells = TileCells(grid, t);
-        return EncodeCellTile(cells, layers.TileHints(t), tw, th, compact);
+        // A map of one tile (most maps: up to 1024 cells a side) is its own
+        // tile's cells, not copied.
+        const bool whole = tw == grid.width() && th == grid.height();
+        const std::vector<Cell> copy = whole ? std::vector<Cell>() : TileCells(grid, t);
+        return EncodeCellTile(whole ? grid.cells() : copy, layers.TileHints(t), tw, th, compact);
       },
       &out);
   return std::move(out.mutable_bytes());

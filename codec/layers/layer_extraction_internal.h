@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -57,14 +58,17 @@ class EdgeCells {
   // One byte per cell, non-zero exactly at the edge cells (as
   // ComputeEdgeMap's is_edge), except while Near() runs: it marks the cells
   // it lists and restores them before it returns.
-  const std::uint8_t* bytes() const { return edge_.data(); }
+  const std::uint8_t* bytes() const { return edge_.get(); }
 
  private:
   static constexpr std::uint8_t kEdge = 1, kEdgeSeen = 2;
+  template <typename Take>
+  void ForEachNewNeighbour(std::optional<CellIndex> previous, CellIndex at, Take&& take) const;
+
   const Grid& grid_;
   // 0, kEdge, or kEdgeSeen for an edge cell already listed by the running
   // Near() (which restores kEdge before it returns).
-  mutable std::vector<std::uint8_t> edge_;
+  std::unique_ptr<std::uint8_t[]> edge_;
 };
 
 // The extractor's lines (ExtractWallLines) on the lattice, cut to the runs

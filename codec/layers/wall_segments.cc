@@ -11,6 +11,7 @@
 #include "codec/layers/layer_extraction.h"
 #include "codec/layers/layer_extraction_internal.h"
 #include "codec/layers/raster.h"
+#include "codec/lines/extract_lines.h"
 #include "linemap/lines.h"
 
 namespace linemap {
@@ -68,8 +69,7 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   line_options.epsilon_cells =
       std::max(options.epsilon_cells, static_cast<double>(options.tolerance_cells));
   line_options.robot = RobotCell(grid, options);
-  LINEMAP_ASSIGN_OR_RETURN(LineExtraction lines, ExtractLines(grid, line_options));
-  return std::move(lines.segments);
+  return ExtractLineSegments(grid, line_options);
 }
 
 LatticeSegment ToLattice(const LineSegment& line, int width, int height) {

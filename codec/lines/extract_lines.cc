@@ -1,7 +1,11 @@
 // ExtractLines(): the edge map, then the chosen method (RM-Line or linemap's
 // extractor) on it.
+#include "codec/lines/extract_lines.h"
+
 #include <cmath>
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 #include "codec/lines/linemap_extractor.h"
 #include "codec/lines/rmline.h"
@@ -45,6 +49,18 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
     }
   }
   return InternalError("unknown line extraction method");
+}
+
+StatusOr<std::vector<LineSegment>> ExtractLineSegments(const Grid& grid,
+                                                       const LineExtractionOptions& options) {
+  if (options.method != LineMethod::kLinemap) {
+    LINEMAP_ASSIGN_OR_RETURN(LineExtraction lines, ExtractLines(grid, options));
+    return std::move(lines.segments);
+  }
+  if (options.robot) LINEMAP_RETURN_IF_ERROR(CheckRobot(grid, *options.robot));
+  std::vector<std::uint32_t> speckle;
+  return lines_internal::ExtractLinemapSegments(ComputeEdgeMap(grid, options.robot), options,
+                                                &speckle);
 }
 
 LineExtractionOptions StraightWalls(LineExtractionOptions options) {

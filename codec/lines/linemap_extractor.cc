@@ -175,8 +175,9 @@ void FlagLargeComponents(const EdgeMap& edges, const std::vector<std::uint32_t>&
 
 }  // namespace
 
-StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
-                                           const LineExtractionOptions& options) {
+StatusOr<std::vector<LineSegment>> ExtractLinemapSegments(const EdgeMap& edges,
+                                                          const LineExtractionOptions& options,
+                                                          std::vector<std::uint32_t>* speckle_out) {
   const double epsilon = options.epsilon_cells;
   if (!(epsilon > 0)) return InvalidArgumentError("epsilon must be positive");
   if (!(options.merge_gap_cells >= 0)) return InvalidArgumentError("merge gap must be >= 0");
@@ -189,7 +190,8 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
   // First the cells to chain (1), then, cleared by the tracing, scratch.
   std::vector<std::uint8_t> open = LargeVector<std::uint8_t>(edges.is_edge.size(), 0);
   FlagLargeComponents(edges, edge_cells, std::max(1, options.min_component_cells), &open);
-  std::vector<std::uint32_t> speckle;
+  std::vector<std::uint32_t>& speckle = *speckle_out;
+  speckle.clear();
   for (std::uint32_t i : edge_cells) {
     if (!open[i]) speckle.push_back(i);
   }
@@ -251,12 +253,23 @@ StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
     if (group.alive) PolishGroupL1(&group, epsilon, &polish_scratch);
   }
 
-  LinemapLines result;
+  std::vector<LineSegment> segments;
   for (const Group& group : groups) {
-    if (group.alive) result.segments.push_back(group.segment);
+    if (group.alive) segments.push_back(group.segment);
   }
-  JoinCorners(&result.segments, width, height, options.corner_join_cells);
-  // Speckle not within epsilon of a wall is left to the furniture layer.
+  JoinCorners(&segments, width, height, options.corner_join_cells);
+  return segments;
+}
+
+StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
+                                           const LineExtractionOptions& options) {
+  std::vector<std::uint32_t> speckle;
+  LinemapLines result;
+  LINEMAP_ASSIGN_OR_RETURN(result.segments, ExtractLinemapSegments(edges, options, &speckle));
+  // Step 8: speckle not within epsilon of a wall is left to the furniture
+  // layer.
+  const double epsilon = options.epsilon_cells;
+  const int width = edges.width, height = edges.height;
   AssignLarge<std::uint8_t>(&result.left_to_blobs, edges.is_edge.size(), 0);
   SegmentIndex index(&result.segments, width, height);
   for (std::uint32_t i : speckle) {

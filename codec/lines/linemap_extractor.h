@@ -21,6 +21,13 @@ struct LinemapLines {
 StatusOr<LinemapLines> ExtractLinemapLines(const EdgeMap& edges,
                                            const LineExtractionOptions& options);
 
+// Steps 1 to 7 alone: the segments, and into *speckle the edge cells left
+// unchained that step 8 measures (the encoder's walls need the segments
+// only).
+StatusOr<std::vector<LineSegment>> ExtractLinemapSegments(const EdgeMap& edges,
+                                                          const LineExtractionOptions& options,
+                                                          std::vector<std::uint32_t>* speckle);
+
 }  // namespace linemap::lines_internal
 
 #endif  // LINEMAP_CODEC_LINES_LINEMAP_EXTRACTOR_H_

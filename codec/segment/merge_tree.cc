@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 
 #include "codec/segment/range_scan.h"
 #include "format/large_vector.h"
@@ -192,7 +193,12 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
     start[d] = acc;
     acc += n;
   }
-  std::vector<std::int32_t> order = LargeVector<std::int32_t>(static_cast<std::size_t>(acc), 0);
+  // Every entry is written by the pass below, so the array is not zeroed
+  // first.
+  const std::size_t flooded = static_cast<std::size_t>(acc);
+  const std::unique_ptr<std::int32_t[]> order =
+      std::make_unique_for_overwrite<std::int32_t[]>(flooded);
+  AdviseHugePages(order.get(), flooded * sizeof(std::int32_t));
   ForEachFlooded(dist, flooded_top,
                  [&](std::size_t i) { order[start[dist[i]]++] = static_cast<std::int32_t>(i); });
   std::vector<std::int32_t>& parent = *parent_out;
@@ -203,12 +209,12 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
   // now ends bucket d; bucket `flooded_top` starts at 0): reading it from `dist`
   // would be one more cache miss per cell.
   int level = flooded_top;
-  for (std::size_t k = 0; k < order.size(); ++k) {
+  for (std::size_t k = 0; k < flooded; ++k) {
     while (k >= static_cast<std::size_t>(start[level])) --level;
     const std::int32_t cell = order[k];
     // Cells of one clearance lie all over the map: on a large map their
     // neighbours' entries are cache misses, fetched ahead here.
-    if (k + kPrefetchAhead < order.size()) {
+    if (k + kPrefetchAhead < flooded) {
       const std::int32_t* ahead = parent.data() + order[k + kPrefetchAhead];
       __builtin_prefetch(ahead - pw);
       __builtin_prefetch(ahead);

@@ -33,7 +33,12 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
   // code when the piece's first cell is met, and the cells walked up to it
   // take it too (a walk passes them once). One pass over the forest, not
   // one to point every cell at its root and one to number the pieces.
+  // The areas are counted by runs of cells of one piece (most of a row's
+  // room cells lie in one piece): an increment of the piece's area per
+  // cell waited each time on the one before it.
   std::vector<std::int32_t>& forest = piece_of_;
+  std::int32_t run_code = -1;  // the coded piece of the run (-1: none yet)
+  std::size_t run = 0;
   for (std::size_t i = 0; i < forest.size(); ++i) {
     const std::int32_t up = forest[i];
     if (up == -1) continue;  // no room space
@@ -41,8 +46,14 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
     std::int32_t coded = up < -1 ? up : forest[up];
     if (coded >= -1) coded = Code(PieceAbove(up, clearance));
     forest[i] = coded;
-    ++area_[Code(coded)];
+    if (coded != run_code) {
+      if (run > 0) area_[Code(run_code)] += run;
+      run_code = coded;
+      run = 0;
+    }
+    ++run;
   }
+  if (run > 0) area_[Code(run_code)] += run;
   DecodePieces(&forest);
   parent_.resize(area_.size());
   for (std::size_t k = 0; k < parent_.size(); ++k) parent_[k] = static_cast<std::int32_t>(k);

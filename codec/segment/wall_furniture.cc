@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <utility>
 
 #include "codec/segment/byte_scan.h"
@@ -110,7 +111,7 @@ class BumpFinder {
       : grid_(grid),
         room_of_(room_of_cell),
         rule_(rule),
-        blocked_(grid.size()),
+        blocked_(std::make_unique_for_overwrite<std::uint8_t[]>(grid.size())),
         claimed_(grid.size(), 0),
         mark_(std::move(scratch.mark_storage)),
         seen_(std::move(scratch.flag_storage)),
@@ -122,7 +123,7 @@ class BumpFinder {
     // vectorised.
     const Cell* cells = grid.cells().data();
     const std::int32_t* rooms = room_of_cell.data();
-    std::uint8_t* blocked = blocked_.data();
+    std::uint8_t* blocked = blocked_.get();
     for (std::size_t i = 0; i < grid.size(); ++i) {
       blocked[i] = (rooms[i] == 0) & (cells[i] != Cell::kFree);
     }
@@ -168,8 +169,9 @@ class BumpFinder {
   const std::vector<std::int32_t>& room_of_;
   BumpRule rule_;
   // Blocked: no room cell and not free (wall, unknown, obstacles too large
-  // or too wall-like for furniture).
-  std::vector<std::uint8_t> blocked_;
+  // or too wall-like for furniture). Every byte is set in the constructor,
+  // so the array is not zeroed first.
+  std::unique_ptr<std::uint8_t[]> blocked_;
   std::vector<std::uint8_t> claimed_;  // cells of bumps already accepted
   std::vector<std::int32_t> mark_;     // room at both ends of the short run through the cell
   std::vector<std::uint8_t> seen_;     // cells of components looked at
@@ -213,7 +215,7 @@ void BumpFinder::MarkShortRuns(const Axis& axis) {
   // start), so the map is read in memory order.
   if (axis.rows) {
     for (int r = 0; r < h; ++r) {
-      const std::uint8_t* row = blocked_.data() + static_cast<std::size_t>(r) * w;
+      const std::uint8_t* row = blocked_.get() + static_cast<std::size_t>(r) * w;
       int c = FirstNonZeroByte(row, 0, w);
       while (c < w) {
         const int begin = c;
@@ -252,7 +254,7 @@ bool BumpFinder::BridgeLine(int r, int dc, int dr) {
   const int lo = std::max({dc, span_lo_[r - dr] + dc, span_lo_[r + dr] - dc});
   const int hi = std::min({w - dc, span_hi_[r - dr] + dc, span_hi_[r + dr] - dc});
   std::int32_t* marks = mark_.data() + row;
-  const std::uint8_t* blocked = blocked_.data() + row;
+  const std::uint8_t* blocked = blocked_.get() + row;
   int first = w, last = -1;
   for (int c = lo; c < hi; ++c) {
     // Most cells have no mark before them: skip to the next that has one
@@ -285,7 +287,7 @@ void BumpFinder::MarkColumnRuns(const Axis& axis) {
   const std::uint8_t* above = none.data();
   for (int r = 0; r <= h; ++r) {
     const std::uint8_t* row =
-        r < h ? blocked_.data() + static_cast<std::size_t>(r) * w : none.data();
+        r < h ? blocked_.get() + static_cast<std::size_t>(r) * w : none.data();
     int c = 0;
     for (; c + 8 <= w; c += 8) {
       std::uint64_t a, b;
