@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "codec/tolerance/simplify.h"
@@ -18,35 +17,58 @@ namespace {
 constexpr int kSampledCells = 16;
 constexpr int kDrawsPerCell = 64;
 
-// Steps from `source` to every cell over free cells; -1 where unreachable.
-// `order` (when given) receives the cells in the order reached, that is by
-// steps.
-std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source,
-                                    std::vector<std::size_t>* order = nullptr) {
-  std::vector<std::int32_t> steps(grid.size(), -1);
-  std::vector<std::size_t> local;
-  std::vector<std::size_t>& queue = order ? *order : local;
-  queue.clear();
-  queue.reserve(1024);
-  steps[source] = 0;
-  queue.push_back(source);
-  // The neighbours by index, the map's edges tested by column and row (no
-  // per-neighbour Contains: these searches are most of the fitting's time).
-  const std::size_t w = static_cast<std::size_t>(grid.width());
-  const std::size_t h = static_cast<std::size_t>(grid.height());
-  const Cell* cells = grid.cells().data();
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::size_t i = queue[head];
-    const std::int32_t s = steps[i] + 1;
-    ForEachNeighbour(w, h, i, [&](std::size_t n) {
-      if (steps[n] < 0 && cells[n] == Cell::kFree) {
-        steps[n] = s;
-        queue.push_back(n);
-      }
-    });
+// Breadth-first searches over the free cells of one grid, one source at a
+// time: the steps to every cell (-1 where unreachable) and the cells in the
+// order reached, that is by steps. The arrays are kept from one search to
+// the next and only the cells the last search reached are reset: a fresh
+// array of the whole map per search, filled, was a tenth of the fitting's
+// time (tsc at T = 1).
+class FreeSearch {
+ public:
+  explicit FreeSearch(const Grid& grid) : grid_(grid), steps_(grid.size(), -1) {}
+
+  void Run(std::size_t source) {
+    for (const std::size_t i : order_) steps_[i] = -1;
+    order_.clear();
+    columns_.clear();
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    const std::size_t n = grid_.size();
+    const Cell* cells = grid_.cells().data();
+    steps_[source] = 0;
+    order_.push_back(source);
+    columns_.push_back(static_cast<std::uint32_t>(source % w));
+    // The neighbours by index, the map's edges tested by column and row;
+    // the column travels with each cell in the queue (a division per cell
+    // reached was a fifth of these searches' time).
+    for (std::size_t head = 0; head < order_.size(); ++head) {
+      const std::size_t i = order_[head];
+      const std::uint32_t c = columns_[head];
+      const std::int32_t s = steps_[i] + 1;
+      auto reach = [&](std::size_t j, std::uint32_t cj) {
+        if (steps_[j] < 0 && cells[j] == Cell::kFree) {
+          steps_[j] = s;
+          order_.push_back(j);
+          columns_.push_back(cj);
+        }
+      };
+      if (c + 1 < w) reach(i + 1, c + 1);
+      if (c > 0) reach(i - 1, c - 1);
+      if (i + w < n) reach(i + w, c);
+      if (i >= w) reach(i - w, c);
+    }
   }
-  return steps;
-}
+  const Grid& grid() const { return grid_; }
+  const std::vector<std::int32_t>& steps() const { return steps_; }
+  // The cells reached, by steps, and their columns.
+  const std::vector<std::size_t>& order() const { return order_; }
+  const std::vector<std::uint32_t>& columns() const { return columns_; }
+
+ private:
+  const Grid& grid_;
+  std::vector<std::int32_t> steps_;
+  std::vector<std::size_t> order_;
+  std::vector<std::uint32_t> columns_;
+};
 
 // The cells of one shortest path from the search's source to `goal`.
 void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::size_t goal,
@@ -65,42 +87,84 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
   }
 }
 
-// Of all shortest plans on `grid` from the search's source, the ones that
-// cross the fewest cells not free in `other`: for each reached cell, the
-// neighbour one step nearer the source through which the fewest such cells
-// lie (ties to the first of +col, -col, +row, -row). A plan that disagrees
-// is mended by giving back the cells of one plan; of a map's many equally
-// short plans (a 4-connected plan may take its turns anywhere) the one
-// along a wall the blocks thickened needs dozens, the one beside it one
-// or two (the cells of the doorway it passes).
+// Of all shortest plans of a search on a grid, the ones that cross the
+// fewest cells not free in `other`: for each reached cell, the neighbour
+// one step nearer the source through which the fewest such cells lie (ties
+// to the first of +col, -col, +row, -row). A plan that disagrees is mended
+// by giving back the cells of one plan; of a map's many equally short
+// plans (a 4-connected plan may take its turns anywhere) the one along a
+// wall the blocks thickened needs dozens, the one beside it one or two (the
+// cells of the doorway it passes). Its arrays are made on the first Build
+// and kept for the next searches (most searches need none).
 class FewestChangesPlans {
  public:
-  FewestChangesPlans(const Grid& grid, const std::vector<std::int32_t>& steps,
-                     const std::vector<std::size_t>& order, const Grid& other)
-      : width_(static_cast<std::size_t>(grid.width())), toward_(grid.size(), kSource) {
-    std::vector<std::int32_t> changes(grid.size(), 0);
+  explicit FewestChangesPlans(const Grid& other) : other_(other) {}
+
+  // The plans of `search`'s last run; forgets the cells walked before.
+  void Build(const FreeSearch& search) {
+    const Grid& grid = search.grid();
+    width_ = static_cast<std::size_t>(grid.width());
+    if (toward_.empty()) {
+      toward_.assign(grid.size(), kSource);
+      changes_.assign(grid.size(), 0);
+      walked_.assign(grid.size(), 0);
+    }
+    for (const std::size_t i : walked_cells_) walked_[i] = 0;
+    walked_cells_.clear();
+    // Every cell reached is set below, and only those are read (a plan
+    // passes reached cells only): nothing to reset.
+    const std::vector<std::int32_t>& steps = search.steps();
+    const std::vector<std::size_t>& order = search.order();
+    const std::vector<std::uint32_t>& columns = search.columns();
     const std::size_t w = width_;
-    const std::size_t h = static_cast<std::size_t>(grid.height());
-    const Cell* other_cells = other.cells().data();
-    for (const std::size_t i : order) {
+    const std::size_t n = grid.size();
+    const Cell* other_cells = other_.cells().data();
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const std::size_t i = order[k];
       const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
       const std::int32_t before = steps[i] - 1;
       if (before < 0) {
-        changes[i] = own;
+        changes_[i] = own;
+        toward_[i] = kSource;
         continue;
       }
       // The neighbours one step nearer, in the order +col, -col, +row,
       // -row (ties to the first).
       std::int32_t best = INT32_MAX;
-      ForEachNeighbour(w, h, i, [&](std::size_t j) {
-        if (steps[j] == before && changes[j] < best) {
-          best = changes[j];
-          toward_[i] = Direction(i, j);
+      auto consider = [&](std::size_t j, std::uint8_t direction) {
+        if (steps[j] == before && changes_[j] < best) {
+          best = changes_[j];
+          toward_[i] = direction;
         }
-      });
-      changes[i] = own + best;
+      };
+      const std::uint32_t c = columns[k];
+      if (c + 1 < w) consider(i + 1, 0);
+      if (c > 0) consider(i - 1, 1);
+      if (i + w < n) consider(i + w, 2);
+      if (i >= w) consider(i - w, 3);
+      changes_[i] = own + best;
     }
   }
+
+  // Walks the plan from `goal` back towards the source until a cell
+  // already walked since Build (plans of one search form a tree),
+  // appending the cells whose value in `other` is not free.
+  void AppendUnfreeOnPath(std::size_t goal, std::vector<std::size_t>* out) {
+    for (std::size_t i = goal; i != kNone; i = Previous(i)) {
+      if (walked_[i]) break;
+      walked_[i] = 1;
+      walked_cells_.push_back(i);
+      if (other_.cells()[i] != Cell::kFree) out->push_back(i);
+    }
+  }
+
+ private:
+  static constexpr std::size_t kNone = SIZE_MAX;
+  // Which neighbour comes before each cell (+col, -col, +row, -row as
+  // 0-3; kSource at the source): a byte a cell rather than an index of 8,
+  // as the arrays span the whole map.
+  static constexpr std::uint8_t kSource = 4;
+
   // The cell before `i` on its plan; kNone at the source.
   std::size_t Previous(std::size_t i) const {
     switch (toward_[i]) {
@@ -116,33 +180,14 @@ class FewestChangesPlans {
         return kNone;
     }
   }
-  static constexpr std::size_t kNone = SIZE_MAX;
 
- private:
-  // Which neighbour comes before each cell (+col, -col, +row, -row as
-  // 0-3; kSource at the source and unreached cells): a byte a cell rather
-  // than an index of 8, as one of these is made for the whole map per
-  // sampled start.
-  static constexpr std::uint8_t kSource = 4;
-  // Which neighbour of i the 4-neighbour j is, in the order Previous reads.
-  std::uint8_t Direction(std::size_t i, std::size_t j) const {
-    return j == i + 1 ? 0 : j + 1 == i ? 1 : j == i + width_ ? 2 : 3;
-  }
-  std::size_t width_;
+  const Grid& other_;
+  std::size_t width_ = 0;
   std::vector<std::uint8_t> toward_;
+  std::vector<std::int32_t> changes_;
+  std::vector<std::uint8_t> walked_;
+  std::vector<std::size_t> walked_cells_;  // the cells walked_ marks
 };
-
-// Walks the plan from `goal` back towards the source until a cell already
-// walked (plans of one search form a tree), appending the cells whose
-// value in `other` is not free.
-void AppendUnfreeOnPath(const FewestChangesPlans& plans, std::size_t goal, const Grid& other,
-                        std::vector<std::uint8_t>* walked, std::vector<std::size_t>* out) {
-  for (std::size_t i = goal; i != FewestChangesPlans::kNone; i = plans.Previous(i)) {
-    if ((*walked)[i]) break;
-    (*walked)[i] = 1;
-    if (other.cells()[i] != Cell::kFree) out->push_back(i);
-  }
-}
 
 // Cells free in both grids, drawn by a fixed linear congruential sequence.
 std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
@@ -165,33 +210,33 @@ bool PlansAgree(std::int32_t la, std::int32_t lb) {
 
 std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {
   std::vector<std::size_t> out;
-  std::vector<std::size_t> order_a, order_b;
+  FreeSearch on_original(original), on_decoded(decoded);
+  FewestChangesPlans plans_a(decoded), plans_b(original);
+  const Cell* original_cells = original.cells().data();
+  const Cell* decoded_cells = decoded.cells().data();
   for (const std::size_t source : SampleCells(original, decoded)) {
-    const std::vector<std::int32_t> a = FreeSteps(original, source, &order_a);
-    const std::vector<std::int32_t> b = FreeSteps(decoded, source, &order_b);
-    std::vector<std::uint8_t> walked_a, walked_b;
-    std::unique_ptr<FewestChangesPlans> plans_a, plans_b;  // made on the first use
-    for (std::size_t g = 0; g < a.size(); ++g) {
+    on_original.Run(source);
+    on_decoded.Run(source);
+    const std::int32_t* a = on_original.steps().data();
+    const std::int32_t* b = on_decoded.steps().data();
+    bool built_a = false, built_b = false;  // the plans are built on the first use
+    for (std::size_t g = 0; g < original.size(); ++g) {
       // Equal steps (most cells) agree, and so do cells neither reaches.
-      if (a[g] == b[g] || g == source || original.cells()[g] != Cell::kFree ||
-          decoded.cells()[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
+      if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
+          decoded_cells[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
         continue;
       }
       // Longer or gone on the decode: the original plan crosses a cell that
       // is no longer free. Shorter or new: the decoded plan crosses a cell
       // that was not free.
       if (a[g] >= 0 && (b[g] < 0 || b[g] > a[g])) {
-        if (!plans_a) {
-          plans_a = std::make_unique<FewestChangesPlans>(original, a, order_a, decoded);
-          walked_a.assign(a.size(), 0);
-        }
-        AppendUnfreeOnPath(*plans_a, g, decoded, &walked_a, &out);
+        if (!built_a) plans_a.Build(on_original);
+        built_a = true;
+        plans_a.AppendUnfreeOnPath(g, &out);
       } else {
-        if (!plans_b) {
-          plans_b = std::make_unique<FewestChangesPlans>(decoded, b, order_b, original);
-          walked_b.assign(b.size(), 0);
-        }
-        AppendUnfreeOnPath(*plans_b, g, original, &walked_b, &out);
+        if (!built_b) plans_b.Build(on_decoded);
+        built_b = true;
+        plans_b.AppendUnfreeOnPath(g, &out);
       }
     }
   }
@@ -200,10 +245,12 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
 
 PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths) {
   PlanFaults out;
-  const std::vector<std::size_t> sources = SampleCells(original, decoded);
-  for (const std::size_t source : sources) {
-    const std::vector<std::int32_t> a = FreeSteps(original, source);
-    const std::vector<std::int32_t> b = FreeSteps(decoded, source);
+  FreeSearch on_original(original), on_decoded(decoded);
+  for (const std::size_t source : SampleCells(original, decoded)) {
+    on_original.Run(source);
+    on_decoded.Run(source);
+    const std::vector<std::int32_t>& a = on_original.steps();
+    const std::vector<std::int32_t>& b = on_decoded.steps();
     // Every cell free in both is a goal: the searches reach them all anyway.
     std::size_t worst = 0;
     double worst_excess = -1;
