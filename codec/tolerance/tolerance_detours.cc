@@ -216,17 +216,17 @@ void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, cons
   // A search from a cell reaches `radius` steps, so no farther in
   // Chebyshev distance: where nothing changed that near since `checked`,
   // every plan it makes is as it was then.
-  std::vector<std::int32_t> near_change;
+  std::vector<std::uint8_t> near_change;
   if (checked != nullptr) {
     std::vector<std::uint8_t> changed(decoded.size());
     for (std::size_t i = 0; i < decoded.size(); ++i) {
       changed[i] = decoded.cells()[i] != checked->cells()[i];
     }
-    near_change = ChebyshevDistance(decoded.width(), decoded.height(), changed);
+    near_change = WithinDistance(decoded.width(), decoded.height(), changed, radius);
   }
   LocalPlans on_original(original, decoded, radius), on_decoded(decoded, original, radius);
   for (const std::size_t source : ChangeSides(original, decoded)) {
-    if (checked != nullptr && near_change[source] > radius) continue;
+    if (checked != nullptr && !near_change[source]) continue;
     // A plan of up to `radius` steps on one map must be there in as many
     // steps on the other: both searches go that deep.
     on_original.Run(source);
