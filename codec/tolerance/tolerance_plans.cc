@@ -94,62 +94,28 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
 // by giving back the cells of one plan; of a map's many equally short
 // plans (a 4-connected plan may take its turns anywhere) the one along a
 // wall the blocks thickened needs dozens, the one beside it one or two (the
-// cells of the doorway it passes). Its arrays are made on the first Build
-// and kept for the next searches (most searches need none).
+// cells of the doorway it passes). Only the cells on shortest plans to the
+// goals asked for are worked out: a search's disagreeing goals are few, and
+// working out every cell it reached was an eighth of tsc's T = 1 save. The
+// arrays are made on the first goal and kept for the next searches.
 class FewestChangesPlans {
  public:
   explicit FewestChangesPlans(const Grid& other) : other_(other) {}
 
-  // The plans of `search`'s last run; forgets the cells walked before.
-  void Build(const FreeSearch& search) {
-    const Grid& grid = search.grid();
-    width_ = static_cast<std::size_t>(grid.width());
-    if (toward_.empty()) {
-      toward_.assign(grid.size(), kSource);
-      changes_.assign(grid.size(), 0);
-      walked_.assign(grid.size(), 0);
-    }
+  // Forgets the plans of the last search: `search` has run again.
+  void Reset(const FreeSearch& search) {
+    search_ = &search;
+    for (const std::size_t i : worked_out_) done_[i] = 0;
+    worked_out_.clear();
     for (const std::size_t i : walked_cells_) walked_[i] = 0;
     walked_cells_.clear();
-    // Every cell reached is set below, and only those are read (a plan
-    // passes reached cells only): nothing to reset.
-    const std::vector<std::int32_t>& steps = search.steps();
-    const std::vector<std::size_t>& order = search.order();
-    const std::vector<std::uint32_t>& columns = search.columns();
-    const std::size_t w = width_;
-    const std::size_t n = grid.size();
-    const Cell* other_cells = other_.cells().data();
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const std::size_t i = order[k];
-      const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
-      const std::int32_t before = steps[i] - 1;
-      if (before < 0) {
-        changes_[i] = own;
-        toward_[i] = kSource;
-        continue;
-      }
-      // The neighbours one step nearer, in the order +col, -col, +row,
-      // -row (ties to the first).
-      std::int32_t best = INT32_MAX;
-      auto consider = [&](std::size_t j, std::uint8_t direction) {
-        if (steps[j] == before && changes_[j] < best) {
-          best = changes_[j];
-          toward_[i] = direction;
-        }
-      };
-      const std::uint32_t c = columns[k];
-      if (c + 1 < w) consider(i + 1, 0);
-      if (c > 0) consider(i - 1, 1);
-      if (i + w < n) consider(i + w, 2);
-      if (i >= w) consider(i - w, 3);
-      changes_[i] = own + best;
-    }
   }
 
   // Walks the plan from `goal` back towards the source until a cell
-  // already walked since Build (plans of one search form a tree),
+  // already walked since Reset (plans of one search form a tree),
   // appending the cells whose value in `other` is not free.
   void AppendUnfreeOnPath(std::size_t goal, std::vector<std::size_t>* out) {
+    WorkOut(goal);
     for (std::size_t i = goal; i != kNone; i = Previous(i)) {
       if (walked_[i]) break;
       walked_[i] = 1;
@@ -165,6 +131,81 @@ class FewestChangesPlans {
   // as the arrays span the whole map.
   static constexpr std::uint8_t kSource = 4;
 
+  // A cell waiting for its neighbours one step nearer, and its column.
+  struct Pending {
+    std::size_t cell;
+    std::uint32_t column;
+  };
+
+  // Works out the plans to `goal` and to every cell one step nearer on a
+  // shortest plan to it, depth first: a cell is done once the cells one
+  // step nearer are (its fewest changes are theirs plus its own).
+  void WorkOut(std::size_t goal) {
+    const Grid& grid = search_->grid();
+    if (done_.empty()) {
+      toward_.assign(grid.size(), kSource);
+      changes_.assign(grid.size(), 0);
+      done_.assign(grid.size(), 0);
+      walked_.assign(grid.size(), 0);
+    }
+    if (done_[goal]) return;
+    const std::vector<std::int32_t>& steps = search_->steps();
+    const std::size_t w = static_cast<std::size_t>(grid.width());
+    const std::size_t n = grid.size();
+    const Cell* other_cells = other_.cells().data();
+    pending_.assign(1, Pending{goal, static_cast<std::uint32_t>(goal % w)});
+    while (!pending_.empty()) {
+      const Pending p = pending_.back();
+      const std::size_t i = p.cell;
+      const std::uint32_t c = p.column;
+      if (done_[i]) {
+        pending_.pop_back();
+        continue;
+      }
+      const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
+      const std::int32_t before = steps[i] - 1;
+      if (before < 0) {
+        changes_[i] = own;
+        toward_[i] = kSource;
+        MarkDone(i);
+        pending_.pop_back();
+        continue;
+      }
+      bool waiting = false;
+      auto await = [&](std::size_t j, std::uint32_t cj) {
+        if (steps[j] == before && !done_[j]) {
+          pending_.push_back(Pending{j, cj});
+          waiting = true;
+        }
+      };
+      if (c + 1 < w) await(i + 1, c + 1);
+      if (c > 0) await(i - 1, c - 1);
+      if (i + w < n) await(i + w, c);
+      if (i >= w) await(i - w, c);
+      if (waiting) continue;
+      pending_.pop_back();
+      // The neighbours one step nearer, in the order +col, -col, +row,
+      // -row (ties to the first).
+      std::int32_t best = INT32_MAX;
+      auto consider = [&](std::size_t j, std::uint8_t direction) {
+        if (steps[j] == before && changes_[j] < best) {
+          best = changes_[j];
+          toward_[i] = direction;
+        }
+      };
+      if (c + 1 < w) consider(i + 1, 0);
+      if (c > 0) consider(i - 1, 1);
+      if (i + w < n) consider(i + w, 2);
+      if (i >= w) consider(i - w, 3);
+      changes_[i] = own + best;
+      MarkDone(i);
+    }
+  }
+  void MarkDone(std::size_t i) {
+    done_[i] = 1;
+    worked_out_.push_back(i);
+  }
+
   // The cell before `i` on its plan; kNone at the source.
   std::size_t Previous(std::size_t i) const {
     switch (toward_[i]) {
@@ -173,20 +214,22 @@ class FewestChangesPlans {
       case 1:
         return i - 1;
       case 2:
-        return i + width_;
+        return i + width();
       case 3:
-        return i - width_;
+        return i - width();
       default:
         return kNone;
     }
   }
+  std::size_t width() const { return static_cast<std::size_t>(search_->grid().width()); }
 
   const Grid& other_;
-  std::size_t width_ = 0;
+  const FreeSearch* search_ = nullptr;
   std::vector<std::uint8_t> toward_;
   std::vector<std::int32_t> changes_;
-  std::vector<std::uint8_t> walked_;
-  std::vector<std::size_t> walked_cells_;  // the cells walked_ marks
+  std::vector<std::uint8_t> done_, walked_;
+  std::vector<std::size_t> worked_out_, walked_cells_;  // the cells done_, walked_ mark
+  std::vector<Pending> pending_;
 };
 
 // Cells free in both grids, drawn by a fixed linear congruential sequence.
@@ -219,7 +262,8 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
     on_decoded.Run(source);
     const std::int32_t* a = on_original.steps().data();
     const std::int32_t* b = on_decoded.steps().data();
-    bool built_a = false, built_b = false;  // the plans are built on the first use
+    plans_a.Reset(on_original);
+    plans_b.Reset(on_decoded);
     for (std::size_t g = 0; g < original.size(); ++g) {
       // Equal steps (most cells) agree, and so do cells neither reaches.
       if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
@@ -230,12 +274,8 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
       // is no longer free. Shorter or new: the decoded plan crosses a cell
       // that was not free.
       if (a[g] >= 0 && (b[g] < 0 || b[g] > a[g])) {
-        if (!built_a) plans_a.Build(on_original);
-        built_a = true;
         plans_a.AppendUnfreeOnPath(g, &out);
       } else {
-        if (!built_b) plans_b.Build(on_decoded);
-        built_b = true;
         plans_b.AppendUnfreeOnPath(g, &out);
       }
     }
