@@ -17,6 +17,25 @@ namespace {
 constexpr int kSampledCells = 16;
 constexpr int kDrawsPerCell = 64;
 
+// Which ways a cell can be left within the map (its column decides the
+// first two), and whether it is free: a byte a cell that the searches read
+// instead of the grid, so that no cell's column is divided out of its index.
+enum Move : std::uint8_t { kFreeCell = 1, kToNextColumn = 2, kToPreviousColumn = 4 };
+
+std::vector<std::uint8_t> MovesOf(const Grid& grid) {
+  std::vector<std::uint8_t> moves(grid.size());
+  const std::size_t w = static_cast<std::size_t>(grid.width());
+  const Cell* cells = grid.cells().data();
+  for (std::size_t row = 0; row < grid.size(); row += w) {
+    for (std::size_t c = 0; c < w; ++c) {
+      moves[row + c] = static_cast<std::uint8_t>((cells[row + c] == Cell::kFree ? kFreeCell : 0) |
+                                                 (c + 1 < w ? kToNextColumn : 0) |
+                                                 (c > 0 ? kToPreviousColumn : 0));
+    }
+  }
+  return moves;
+}
+
 // Breadth-first searches over the free cells of one grid, one source at a
 // time: the steps to every cell (-1 where unreachable) and the cells in the
 // order reached, that is by steps. The arrays are kept from one search to
@@ -25,49 +44,43 @@ constexpr int kDrawsPerCell = 64;
 // time (tsc at T = 1).
 class FreeSearch {
  public:
-  explicit FreeSearch(const Grid& grid) : grid_(grid), steps_(grid.size(), -1) {}
+  explicit FreeSearch(const Grid& grid)
+      : grid_(grid), moves_(MovesOf(grid)), steps_(grid.size(), -1) {}
 
   void Run(std::size_t source) {
     for (const std::size_t i : order_) steps_[i] = -1;
     order_.clear();
-    columns_.clear();
     const std::size_t w = static_cast<std::size_t>(grid_.width());
     const std::size_t n = grid_.size();
-    const Cell* cells = grid_.cells().data();
     steps_[source] = 0;
     order_.push_back(source);
-    columns_.push_back(static_cast<std::uint32_t>(source % w));
-    // The neighbours by index, the map's edges tested by column and row;
-    // the column travels with each cell in the queue (a division per cell
-    // reached was a fifth of these searches' time).
     for (std::size_t head = 0; head < order_.size(); ++head) {
       const std::size_t i = order_[head];
-      const std::uint32_t c = columns_[head];
+      const std::uint8_t moves = moves_[i];
       const std::int32_t s = steps_[i] + 1;
-      auto reach = [&](std::size_t j, std::uint32_t cj) {
-        if (steps_[j] < 0 && cells[j] == Cell::kFree) {
+      auto reach = [&](std::size_t j) {
+        if (steps_[j] < 0 && (moves_[j] & kFreeCell)) {
           steps_[j] = s;
           order_.push_back(j);
-          columns_.push_back(cj);
         }
       };
-      if (c + 1 < w) reach(i + 1, c + 1);
-      if (c > 0) reach(i - 1, c - 1);
-      if (i + w < n) reach(i + w, c);
-      if (i >= w) reach(i - w, c);
+      if (moves & kToNextColumn) reach(i + 1);
+      if (moves & kToPreviousColumn) reach(i - 1);
+      if (i + w < n) reach(i + w);
+      if (i >= w) reach(i - w);
     }
   }
   const Grid& grid() const { return grid_; }
+  const std::vector<std::uint8_t>& moves() const { return moves_; }
   const std::vector<std::int32_t>& steps() const { return steps_; }
-  // The cells reached, by steps, and their columns.
+  // The cells reached, by steps.
   const std::vector<std::size_t>& order() const { return order_; }
-  const std::vector<std::uint32_t>& columns() const { return columns_; }
 
  private:
   const Grid& grid_;
+  std::vector<std::uint8_t> moves_;
   std::vector<std::int32_t> steps_;
   std::vector<std::size_t> order_;
-  std::vector<std::uint32_t> columns_;
 };
 
 // The cells of one shortest path from the search's source to `goal`.
@@ -97,7 +110,9 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
 // cells of the doorway it passes). Only the cells on shortest plans to the
 // goals asked for are worked out: a search's disagreeing goals are few, and
 // working out every cell it reached was an eighth of tsc's T = 1 save. The
-// arrays are made on the first goal and kept for the next searches.
+// arrays (5 bytes a cell) are made on the first goal of a search and freed
+// when the next search begins, as before: most searches need none, and
+// kept, the two sides' arrays would raise the fitting's peak memory.
 class FewestChangesPlans {
  public:
   explicit FewestChangesPlans(const Grid& other) : other_(other) {}
@@ -105,10 +120,8 @@ class FewestChangesPlans {
   // Forgets the plans of the last search: `search` has run again.
   void Reset(const FreeSearch& search) {
     search_ = &search;
-    for (const std::size_t i : worked_out_) done_[i] = 0;
-    worked_out_.clear();
-    for (const std::size_t i : walked_cells_) walked_[i] = 0;
-    walked_cells_.clear();
+    std::vector<std::uint8_t>().swap(state_);
+    std::vector<std::int32_t>().swap(changes_);
   }
 
   // Walks the plan from `goal` back towards the source until a cell
@@ -117,48 +130,38 @@ class FewestChangesPlans {
   void AppendUnfreeOnPath(std::size_t goal, std::vector<std::size_t>* out) {
     WorkOut(goal);
     for (std::size_t i = goal; i != kNone; i = Previous(i)) {
-      if (walked_[i]) break;
-      walked_[i] = 1;
-      walked_cells_.push_back(i);
+      if (state_[i] & kWalked) break;
+      state_[i] |= kWalked;
       if (other_.cells()[i] != Cell::kFree) out->push_back(i);
     }
   }
 
  private:
   static constexpr std::size_t kNone = SIZE_MAX;
-  // Which neighbour comes before each cell (+col, -col, +row, -row as
-  // 0-3; kSource at the source): a byte a cell rather than an index of 8,
-  // as the arrays span the whole map.
-  static constexpr std::uint8_t kSource = 4;
-
-  // A cell waiting for its neighbours one step nearer, and its column.
-  struct Pending {
-    std::size_t cell;
-    std::uint32_t column;
-  };
+  // A cell's byte of state_: which neighbour comes before it (+col, -col,
+  // +row, -row as 0-3; kSource at the source) in the low bits, and
+  // whether it is worked out, and walked.
+  static constexpr std::uint8_t kToward = 7, kSource = 4, kDone = 8, kWalked = 16;
 
   // Works out the plans to `goal` and to every cell one step nearer on a
   // shortest plan to it, depth first: a cell is done once the cells one
   // step nearer are (its fewest changes are theirs plus its own).
   void WorkOut(std::size_t goal) {
     const Grid& grid = search_->grid();
-    if (done_.empty()) {
-      toward_.assign(grid.size(), kSource);
+    if (state_.empty()) {
+      state_.assign(grid.size(), 0);
       changes_.assign(grid.size(), 0);
-      done_.assign(grid.size(), 0);
-      walked_.assign(grid.size(), 0);
     }
-    if (done_[goal]) return;
+    if (state_[goal] & kDone) return;
     const std::vector<std::int32_t>& steps = search_->steps();
+    const std::uint8_t* moves = search_->moves().data();
     const std::size_t w = static_cast<std::size_t>(grid.width());
     const std::size_t n = grid.size();
     const Cell* other_cells = other_.cells().data();
-    pending_.assign(1, Pending{goal, static_cast<std::uint32_t>(goal % w)});
+    pending_.assign(1, goal);
     while (!pending_.empty()) {
-      const Pending p = pending_.back();
-      const std::size_t i = p.cell;
-      const std::uint32_t c = p.column;
-      if (done_[i]) {
+      const std::size_t i = pending_.back();
+      if (state_[i] & kDone) {
         pending_.pop_back();
         continue;
       }
@@ -166,70 +169,64 @@ class FewestChangesPlans {
       const std::int32_t before = steps[i] - 1;
       if (before < 0) {
         changes_[i] = own;
-        toward_[i] = kSource;
-        MarkDone(i);
+        state_[i] |= kDone | kSource;
         pending_.pop_back();
         continue;
       }
       bool waiting = false;
-      auto await = [&](std::size_t j, std::uint32_t cj) {
-        if (steps[j] == before && !done_[j]) {
-          pending_.push_back(Pending{j, cj});
+      auto await = [&](std::size_t j) {
+        if (steps[j] == before && !(state_[j] & kDone)) {
+          pending_.push_back(j);
           waiting = true;
         }
       };
-      if (c + 1 < w) await(i + 1, c + 1);
-      if (c > 0) await(i - 1, c - 1);
-      if (i + w < n) await(i + w, c);
-      if (i >= w) await(i - w, c);
+      if (moves[i] & kToNextColumn) await(i + 1);
+      if (moves[i] & kToPreviousColumn) await(i - 1);
+      if (i + w < n) await(i + w);
+      if (i >= w) await(i - w);
       if (waiting) continue;
       pending_.pop_back();
       // The neighbours one step nearer, in the order +col, -col, +row,
       // -row (ties to the first).
       std::int32_t best = INT32_MAX;
+      std::uint8_t toward = kSource;
       auto consider = [&](std::size_t j, std::uint8_t direction) {
         if (steps[j] == before && changes_[j] < best) {
           best = changes_[j];
-          toward_[i] = direction;
+          toward = direction;
         }
       };
-      if (c + 1 < w) consider(i + 1, 0);
-      if (c > 0) consider(i - 1, 1);
+      if (moves[i] & kToNextColumn) consider(i + 1, 0);
+      if (moves[i] & kToPreviousColumn) consider(i - 1, 1);
       if (i + w < n) consider(i + w, 2);
       if (i >= w) consider(i - w, 3);
       changes_[i] = own + best;
-      MarkDone(i);
+      state_[i] |= kDone | toward;
     }
-  }
-  void MarkDone(std::size_t i) {
-    done_[i] = 1;
-    worked_out_.push_back(i);
   }
 
   // The cell before `i` on its plan; kNone at the source.
   std::size_t Previous(std::size_t i) const {
-    switch (toward_[i]) {
+    const std::size_t w = static_cast<std::size_t>(search_->grid().width());
+    switch (state_[i] & kToward) {
       case 0:
         return i + 1;
       case 1:
         return i - 1;
       case 2:
-        return i + width();
+        return i + w;
       case 3:
-        return i - width();
+        return i - w;
       default:
         return kNone;
     }
   }
-  std::size_t width() const { return static_cast<std::size_t>(search_->grid().width()); }
 
   const Grid& other_;
   const FreeSearch* search_ = nullptr;
-  std::vector<std::uint8_t> toward_;
+  std::vector<std::uint8_t> state_;
   std::vector<std::int32_t> changes_;
-  std::vector<std::uint8_t> done_, walked_;
-  std::vector<std::size_t> worked_out_, walked_cells_;  // the cells done_, walked_ mark
-  std::vector<Pending> pending_;
+  std::vector<std::size_t> pending_;  // cells waiting for those one step nearer
 };
 
 // Cells free in both grids, drawn by a fixed linear congruential sequence.
