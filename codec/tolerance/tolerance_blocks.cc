@@ -170,7 +170,9 @@ struct Mender {
 
 // What the distance checks read of the original map, which no round
 // changes, so it is worked out once: 1 where an occupied (a free) cell of
-// the original lies within T.
+// the original lies within T. (Its free regions are labelled again each
+// round: kept, they would add 4 bytes a cell to the peak of the plan
+// checks for some 2 % of the time.)
 struct OriginalNear {
   OriginalNear(const Grid& original, int t)
       : occupied(WithinDistance(original.width(), original.height(),
