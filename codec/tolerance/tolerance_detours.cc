@@ -47,10 +47,12 @@ class LocalPlans {
   // when one is asked for (AppendChanged), as most searches find every
   // plan holds.
   void Run(std::size_t source) {
-    for (const int k : order_) {
-      steps_[k] = -1;
-      previous_[k] = -1;
-      walked_[k] = 0;
+    for (const int k : order_) steps_[k] = -1;
+    if (tree_ready_) {
+      for (const int k : order_) {
+        previous_[k] = -1;
+        walked_[k] = 0;
+      }
     }
     tree_ready_ = false;
     const std::size_t w = static_cast<std::size_t>(grid_.width());
@@ -200,9 +202,11 @@ void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, Lo
     const int k = plans->window_index(n);
     const std::int32_t here = plans->StepsAt(k);
     if (here > radius) break;
-    const std::size_t goal = plans->reached(n);
-    if (other.cells()[goal] != Cell::kFree) continue;
+    // A cell the other search reached is free there; one it did not is
+    // looked up on the map.
     const std::int32_t there = other_plans.StepsAt(k);
+    const std::size_t goal = plans->reached(n);
+    if (there < 0 && other.cells()[goal] != Cell::kFree) continue;
     visit(plans, goal, there >= 0 && there <= here);
   }
 }
