@@ -34,7 +34,9 @@ class LocalPlans {
         previous_(steps_.size(), -1),
         walked_(steps_.size(), 0),
         column_of_(steps_.size()),
-        row_of_(steps_.size()) {
+        row_of_(steps_.size()),
+        order_(steps_.size()),
+        reached_(steps_.size()) {
     // The window's coordinates of each index, looked up: a division per
     // cell reached was a tenth of these searches' time.
     for (std::size_t k = 0; k < steps_.size(); ++k) {
@@ -47,11 +49,11 @@ class LocalPlans {
   // when one is asked for (AppendChanged), as most searches find every
   // plan holds.
   void Run(std::size_t source) {
-    for (const int k : order_) steps_[k] = -1;
+    for (std::size_t n = 0; n < count_; ++n) steps_[order_[n]] = -1;
     if (tree_ready_) {
-      for (const int k : order_) {
-        previous_[k] = -1;
-        walked_[k] = 0;
+      for (std::size_t n = 0; n < count_; ++n) {
+        previous_[order_[n]] = -1;
+        walked_[order_[n]] = 0;
       }
     }
     tree_ready_ = false;
@@ -60,11 +62,12 @@ class LocalPlans {
     r0_ = static_cast<int>(source / w) - depth_;
     SetBounds();
     const int centre = depth_ * side_ + depth_;
-    order_.assign(1, centre);
-    reached_.assign(1, source);
+    order_[0] = centre;
+    reached_[0] = source;
+    count_ = 1;
     steps_[centre] = 0;
     const Cell* cells = grid_.cells().data();
-    for (std::size_t head = 0; head < order_.size(); ++head) {
+    for (std::size_t head = 0; head < count_; ++head) {
       const int k = order_[head];
       const std::int32_t next = steps_[k] + 1;
       if (next > depth_) continue;
@@ -74,8 +77,9 @@ class LocalPlans {
       auto reach = [&](bool inside, int n, std::size_t j) {
         if (!inside || steps_[n] >= 0 || cells[j] != Cell::kFree) return;
         steps_[n] = next;
-        order_.push_back(n);
-        reached_.push_back(j);
+        order_[count_] = n;
+        reached_[count_] = j;
+        ++count_;
       };
       reach(lc + 1 < col_end_, k + 1, i + 1);
       reach(lc > col_begin_, k - 1, i - 1);
@@ -92,7 +96,7 @@ class LocalPlans {
   }
 
   // The cells reached, nearest first: map index, window index.
-  std::size_t reached_count() const { return reached_.size(); }
+  std::size_t reached_count() const { return count_; }
   std::size_t reached(std::size_t n) const { return reached_[n]; }
   int window_index(std::size_t n) const { return order_[n]; }
   // The steps to the cell of window index `k` (-1: not reached).
@@ -131,7 +135,7 @@ class LocalPlans {
   void FewestChangesTree() {
     tree_ready_ = true;
     changes_[order_[0]] = Changed(reached_[0]);
-    for (std::size_t n = 1; n < order_.size(); ++n) {
+    for (std::size_t n = 1; n < count_; ++n) {
       const int k = order_[n];
       const int lc = column_of_[k], lr = row_of_[k];
       const std::int32_t before = steps_[k] - 1;
@@ -168,8 +172,12 @@ class LocalPlans {
   std::vector<std::int32_t> steps_, changes_, previous_;
   std::vector<std::uint8_t> walked_;
   std::vector<int> column_of_, row_of_;  // window coordinates by index
-  std::vector<int> order_;               // window indices, nearest first
-  std::vector<std::size_t> reached_;     // the same cells as map indices
+  // The cells reached, nearest first: window indices, and the same cells
+  // as map indices; count_ of them. Sized for the whole window, so that
+  // adding one tests no capacity.
+  std::vector<int> order_;
+  std::vector<std::size_t> reached_;
+  std::size_t count_ = 0;
 };
 
 // Cells free in both maps with a 4-neighbour free in one map only.
