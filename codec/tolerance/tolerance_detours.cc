@@ -19,7 +19,9 @@ namespace {
 // does for the whole map). A search of `depth` steps stays within `depth`
 // cells of its source in each axis, so its arrays span that window only
 // ((2 depth + 1)^2 cells, reset cell by cell): a map of 36 Mcells would
-// otherwise need some 1.2 GB for them.
+// otherwise need some 1.2 GB for them. Two searches of the same depth and
+// clip from the same source share their window, so one's window index of a
+// cell is the other's (StepsAt).
 class LocalPlans {
  public:
   LocalPlans(const Grid& grid, const Grid& other, int depth)
@@ -30,48 +32,59 @@ class LocalPlans {
         steps_(static_cast<std::size_t>(side_) * side_, -1),
         changes_(steps_.size(), 0),
         previous_(steps_.size(), -1),
-        walked_(steps_.size(), 0) {}
-
-  void Run(std::size_t source) {
-    for (const int k : order_) {
-      steps_[k] = -1;
-      previous_[k] = -1;
-      walked_[k] = 0;
+        walked_(steps_.size(), 0),
+        column_of_(steps_.size()),
+        row_of_(steps_.size()),
+        order_(steps_.size()),
+        reached_(steps_.size()) {
+    // The window's coordinates of each index, looked up: a division per
+    // cell reached was a tenth of these searches' time.
+    for (std::size_t k = 0; k < steps_.size(); ++k) {
+      column_of_[k] = static_cast<int>(k % side_);
+      row_of_[k] = static_cast<int>(k / side_);
     }
+  }
+
+  // The steps only: the plans crossing the fewest changes are worked out
+  // when one is asked for (AppendChanged), as most searches find every
+  // plan holds.
+  void Run(std::size_t source) {
+    for (std::size_t n = 0; n < count_; ++n) steps_[order_[n]] = -1;
+    if (tree_ready_) {
+      for (std::size_t n = 0; n < count_; ++n) {
+        previous_[order_[n]] = -1;
+        walked_[order_[n]] = 0;
+      }
+    }
+    tree_ready_ = false;
     const std::size_t w = static_cast<std::size_t>(grid_.width());
     c0_ = static_cast<int>(source % w) - depth_;
     r0_ = static_cast<int>(source / w) - depth_;
+    SetBounds();
     const int centre = depth_ * side_ + depth_;
-    order_.assign(1, centre);
-    reached_.assign(1, source);
+    order_[0] = centre;
+    reached_[0] = source;
+    count_ = 1;
     steps_[centre] = 0;
-    changes_[centre] = Changed(source);
-    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-    for (std::size_t head = 0; head < order_.size(); ++head) {
+    const Cell* cells = grid_.cells().data();
+    for (std::size_t head = 0; head < count_; ++head) {
       const int k = order_[head];
-      const int lc = k % side_, lr = k / side_;
-      const int c = c0_ + lc, r = r0_ + lr;
-      if (steps_[k] > 0) {
-        // Every cell one step nearer was reached before this one left the
-        // queue: the fewest changes through any of them are final.
-        std::int32_t best = INT32_MAX;
-        for (int d = 0; d < 4; ++d) {
-          const int n = Local(c + dc[d], r + dr[d]);
-          if (n >= 0 && steps_[n] == steps_[k] - 1 && changes_[n] < best) {
-            best = changes_[n];
-            previous_[k] = n;
-          }
-        }
-        changes_[k] = Changed(grid_.Index(c, r)) + best;
-      }
-      if (steps_[k] == depth_) continue;
-      for (int d = 0; d < 4; ++d) {
-        const int n = Local(c + dc[d], r + dr[d]);
-        if (n < 0 || steps_[n] >= 0 || grid_.at(c + dc[d], r + dr[d]) != Cell::kFree) continue;
-        steps_[n] = steps_[k] + 1;
-        order_.push_back(n);
-        reached_.push_back(grid_.Index(c + dc[d], r + dr[d]));
-      }
+      const std::int32_t next = steps_[k] + 1;
+      if (next > depth_) continue;
+      const std::size_t i = reached_[head];
+      const int lc = column_of_[k], lr = row_of_[k];
+      // +col, -col, +row, -row, the order the plans' ties go by.
+      auto reach = [&](bool inside, int n, std::size_t j) {
+        if (!inside || steps_[n] >= 0 || cells[j] != Cell::kFree) return;
+        steps_[n] = next;
+        order_[count_] = n;
+        reached_[count_] = j;
+        ++count_;
+      };
+      reach(lc + 1 < col_end_, k + 1, i + 1);
+      reach(lc > col_begin_, k - 1, i - 1);
+      reach(lr + 1 < row_end_, k + side_, i + w);
+      reach(lr > row_begin_, k - side_, i - w);
     }
   }
   // Keeps the searches inside the cells [x0, x1) x [y0, y1) of the map.
@@ -82,17 +95,16 @@ class LocalPlans {
     clip_y1_ = y1;
   }
 
-  // The cells reached (map indices), nearest first, and their steps (-1:
-  // not reached).
-  const std::vector<std::size_t>& reached() const { return reached_; }
-  std::int32_t steps(std::size_t i) const {
-    const std::size_t w = static_cast<std::size_t>(grid_.width());
-    const int k = Local(static_cast<int>(i % w), static_cast<int>(i / w));
-    return k < 0 ? -1 : steps_[k];
-  }
+  // The cells reached, nearest first: map index, window index.
+  std::size_t reached_count() const { return count_; }
+  std::size_t reached(std::size_t n) const { return reached_[n]; }
+  int window_index(std::size_t n) const { return order_[n]; }
+  // The steps to the cell of window index `k` (-1: not reached).
+  std::int32_t StepsAt(int k) const { return steps_[k]; }
   // Appends the cells not free in `other` on the plan to `goal`, back to
   // where a plan of this search walked before.
   void AppendChanged(std::size_t goal, std::vector<std::size_t>* out) {
+    if (!tree_ready_) FewestChangesTree();
     const std::size_t w = static_cast<std::size_t>(grid_.width());
     for (int k = Local(static_cast<int>(goal % w), static_cast<int>(goal / w));
          k >= 0 && !walked_[k]; k = previous_[k]) {
@@ -103,11 +115,48 @@ class LocalPlans {
   }
 
  private:
+  // The window's cells inside the map and the clip: columns [col_begin_,
+  // col_end_), rows [row_begin_, row_end_) of the window.
+  void SetBounds() {
+    auto begin = [](int c0, int clip0) { return std::max({0, -c0, clip0 - c0}); };
+    auto end = [this](int c0, int size, int clip1) {
+      const std::int64_t in_clip = static_cast<std::int64_t>(clip1) - c0;
+      return static_cast<int>(std::min<std::int64_t>({side_, size - c0, in_clip}));
+    };
+    col_begin_ = begin(c0_, clip_x0_);
+    row_begin_ = begin(r0_, clip_y0_);
+    col_end_ = end(c0_, grid_.width(), clip_x1_);
+    row_end_ = end(r0_, grid_.height(), clip_y1_);
+  }
+  // For each cell reached, in the order reached (so every cell one step
+  // nearer is done first): the neighbour one step nearer through which the
+  // fewest cells not free in `other` lie (ties to the first of +col, -col,
+  // +row, -row), and that count.
+  void FewestChangesTree() {
+    tree_ready_ = true;
+    changes_[order_[0]] = Changed(reached_[0]);
+    for (std::size_t n = 1; n < count_; ++n) {
+      const int k = order_[n];
+      const int lc = column_of_[k], lr = row_of_[k];
+      const std::int32_t before = steps_[k] - 1;
+      std::int32_t best = INT32_MAX;
+      auto consider = [&](bool inside, int j) {
+        if (inside && steps_[j] == before && changes_[j] < best) {
+          best = changes_[j];
+          previous_[k] = j;
+        }
+      };
+      consider(lc + 1 < col_end_, k + 1);
+      consider(lc > col_begin_, k - 1);
+      consider(lr + 1 < row_end_, k + side_);
+      consider(lr > row_begin_, k - side_);
+      changes_[k] = Changed(reached_[n]) + best;
+    }
+  }
   // The window index of map cell (c, r); -1 outside the window or the map.
   int Local(int c, int r) const {
     const int lc = c - c0_, lr = r - r0_;
-    if (lc < 0 || lr < 0 || lc >= side_ || lr >= side_ || !grid_.Contains(c, r)) return -1;
-    if (c < clip_x0_ || r < clip_y0_ || c >= clip_x1_ || r >= clip_y1_) return -1;
+    if (lc < col_begin_ || lr < row_begin_ || lc >= col_end_ || lr >= row_end_) return -1;
     return lr * side_ + lc;
   }
   std::int32_t Changed(std::size_t i) const { return other_.cells()[i] != Cell::kFree ? 1 : 0; }
@@ -118,10 +167,17 @@ class LocalPlans {
   int c0_ = 0, r0_ = 0;            // the window's first cell
   int clip_x0_ = 0, clip_y0_ = 0;  // Clip(): the whole map unless set
   int clip_x1_ = INT32_MAX, clip_y1_ = INT32_MAX;
+  int col_begin_ = 0, col_end_ = 0, row_begin_ = 0, row_end_ = 0;  // SetBounds()
+  bool tree_ready_ = false;  // changes_ and previous_ are this search's
   std::vector<std::int32_t> steps_, changes_, previous_;
   std::vector<std::uint8_t> walked_;
-  std::vector<int> order_;            // window indices, nearest first
-  std::vector<std::size_t> reached_;  // the same cells as map indices
+  std::vector<int> column_of_, row_of_;  // window coordinates by index
+  // The cells reached, nearest first: window indices, and the same cells
+  // as map indices; count_ of them. Sized for the whole window, so that
+  // adding one tests no capacity.
+  std::vector<int> order_;
+  std::vector<std::size_t> reached_;
+  std::size_t count_ = 0;
 };
 
 // Cells free in both maps with a 4-neighbour free in one map only.
@@ -146,15 +202,19 @@ std::vector<std::size_t> ChangeSides(const Grid& original, const Grid& decoded) 
 
 // Calls visit(plans, goal, holds) for each plan of `plans` up to `radius`
 // steps to a cell free in `other`; it holds when `other_plans` (the same
-// source on `other`) makes it in as many steps.
+// source on `other`, the same depth) makes it in as many steps.
 template <typename Visit>
 void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, LocalPlans* plans,
                 Visit&& visit) {
-  for (const std::size_t goal : plans->reached()) {
-    const std::int32_t here = plans->steps(goal);
+  for (std::size_t n = 0; n < plans->reached_count(); ++n) {
+    const int k = plans->window_index(n);
+    const std::int32_t here = plans->StepsAt(k);
     if (here > radius) break;
-    if (other.cells()[goal] != Cell::kFree) continue;
-    const std::int32_t there = other_plans.steps(goal);
+    // A cell the other search reached is free there; one it did not is
+    // looked up on the map.
+    const std::int32_t there = other_plans.StepsAt(k);
+    const std::size_t goal = plans->reached(n);
+    if (there < 0 && other.cells()[goal] != Cell::kFree) continue;
     visit(plans, goal, there >= 0 && there <= here);
   }
 }
@@ -168,17 +228,17 @@ void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, cons
   // A search from a cell reaches `radius` steps, so no farther in
   // Chebyshev distance: where nothing changed that near since `checked`,
   // every plan it makes is as it was then.
-  std::vector<std::int32_t> near_change;
+  std::vector<std::uint8_t> near_change;
   if (checked != nullptr) {
     std::vector<std::uint8_t> changed(decoded.size());
     for (std::size_t i = 0; i < decoded.size(); ++i) {
       changed[i] = decoded.cells()[i] != checked->cells()[i];
     }
-    near_change = ChebyshevDistance(decoded.width(), decoded.height(), changed);
+    near_change = WithinDistance(decoded.width(), decoded.height(), changed, radius);
   }
   LocalPlans on_original(original, decoded, radius), on_decoded(decoded, original, radius);
   for (const std::size_t source : ChangeSides(original, decoded)) {
-    if (checked != nullptr && near_change[source] > radius) continue;
+    if (checked != nullptr && !near_change[source]) continue;
     // A plan of up to `radius` steps on one map must be there in as many
     // steps on the other: both searches go that deep.
     on_original.Run(source);
@@ -318,11 +378,13 @@ std::vector<std::size_t> StretchDetourCulprits(const Grid& original, const Grid&
       // within 3 % make a plan within 3 %. Holding them to their length
       // gave back a third of the cells of a 1024 x 1024 map of corridors
       // at T = 4 (336,130 against 6,609 before this check).
-      for (const std::size_t goal : on_original.reached()) {
-        const std::int32_t here = on_original.steps(goal);
+      for (std::size_t n = 0; n < on_original.reached_count(); ++n) {
+        const int k = on_original.window_index(n);
+        const std::int32_t here = on_original.StepsAt(k);
         if (here > steps) break;
+        const std::size_t goal = on_original.reached(n);
         if (decoded.cells()[goal] != Cell::kFree) continue;
-        const std::int32_t there = on_decoded.steps(goal);
+        const std::int32_t there = on_decoded.StepsAt(k);
         if (there >= 0 && PlansAgree(here, there)) continue;
         path.clear();
         on_original.AppendChanged(goal, &path);

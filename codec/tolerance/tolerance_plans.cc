@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "codec/tolerance/simplify.h"
@@ -18,35 +17,71 @@ namespace {
 constexpr int kSampledCells = 16;
 constexpr int kDrawsPerCell = 64;
 
-// Steps from `source` to every cell over free cells; -1 where unreachable.
-// `order` (when given) receives the cells in the order reached, that is by
-// steps.
-std::vector<std::int32_t> FreeSteps(const Grid& grid, std::size_t source,
-                                    std::vector<std::size_t>* order = nullptr) {
-  std::vector<std::int32_t> steps(grid.size(), -1);
-  std::vector<std::size_t> local;
-  std::vector<std::size_t>& queue = order ? *order : local;
-  queue.clear();
-  queue.reserve(1024);
-  steps[source] = 0;
-  queue.push_back(source);
-  // The neighbours by index, the map's edges tested by column and row (no
-  // per-neighbour Contains: these searches are most of the fitting's time).
+// Which ways a cell can be left within the map (its column decides the
+// first two), and whether it is free: a byte a cell that the searches read
+// instead of the grid, so that no cell's column is divided out of its index.
+enum Move : std::uint8_t { kFreeCell = 1, kToNextColumn = 2, kToPreviousColumn = 4 };
+
+std::vector<std::uint8_t> MovesOf(const Grid& grid) {
+  std::vector<std::uint8_t> moves(grid.size());
   const std::size_t w = static_cast<std::size_t>(grid.width());
-  const std::size_t h = static_cast<std::size_t>(grid.height());
   const Cell* cells = grid.cells().data();
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::size_t i = queue[head];
-    const std::int32_t s = steps[i] + 1;
-    ForEachNeighbour(w, h, i, [&](std::size_t n) {
-      if (steps[n] < 0 && cells[n] == Cell::kFree) {
-        steps[n] = s;
-        queue.push_back(n);
-      }
-    });
+  for (std::size_t row = 0; row < grid.size(); row += w) {
+    for (std::size_t c = 0; c < w; ++c) {
+      moves[row + c] = static_cast<std::uint8_t>((cells[row + c] == Cell::kFree ? kFreeCell : 0) |
+                                                 (c + 1 < w ? kToNextColumn : 0) |
+                                                 (c > 0 ? kToPreviousColumn : 0));
+    }
   }
-  return steps;
+  return moves;
 }
+
+// Breadth-first searches over the free cells of one grid, one source at a
+// time: the steps to every cell (-1 where unreachable) and the cells in the
+// order reached, that is by steps. The arrays are kept from one search to
+// the next and only the cells the last search reached are reset: a fresh
+// array of the whole map per search, filled, was a tenth of the fitting's
+// time (tsc at T = 1).
+class FreeSearch {
+ public:
+  explicit FreeSearch(const Grid& grid)
+      : grid_(grid), moves_(MovesOf(grid)), steps_(grid.size(), -1) {}
+
+  void Run(std::size_t source) {
+    for (const std::size_t i : order_) steps_[i] = -1;
+    order_.clear();
+    const std::size_t w = static_cast<std::size_t>(grid_.width());
+    const std::size_t n = grid_.size();
+    steps_[source] = 0;
+    order_.push_back(source);
+    for (std::size_t head = 0; head < order_.size(); ++head) {
+      const std::size_t i = order_[head];
+      const std::uint8_t moves = moves_[i];
+      const std::int32_t s = steps_[i] + 1;
+      auto reach = [&](std::size_t j) {
+        if (steps_[j] < 0 && (moves_[j] & kFreeCell)) {
+          steps_[j] = s;
+          order_.push_back(j);
+        }
+      };
+      if (moves & kToNextColumn) reach(i + 1);
+      if (moves & kToPreviousColumn) reach(i - 1);
+      if (i + w < n) reach(i + w);
+      if (i >= w) reach(i - w);
+    }
+  }
+  const Grid& grid() const { return grid_; }
+  const std::vector<std::uint8_t>& moves() const { return moves_; }
+  const std::vector<std::int32_t>& steps() const { return steps_; }
+  // The cells reached, by steps.
+  const std::vector<std::size_t>& order() const { return order_; }
+
+ private:
+  const Grid& grid_;
+  std::vector<std::uint8_t> moves_;
+  std::vector<std::int32_t> steps_;
+  std::vector<std::size_t> order_;
+};
 
 // The cells of one shortest path from the search's source to `goal`.
 void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::size_t goal,
@@ -65,84 +100,134 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
   }
 }
 
-// Of all shortest plans on `grid` from the search's source, the ones that
-// cross the fewest cells not free in `other`: for each reached cell, the
-// neighbour one step nearer the source through which the fewest such cells
-// lie (ties to the first of +col, -col, +row, -row). A plan that disagrees
-// is mended by giving back the cells of one plan; of a map's many equally
-// short plans (a 4-connected plan may take its turns anywhere) the one
-// along a wall the blocks thickened needs dozens, the one beside it one
-// or two (the cells of the doorway it passes).
+// Of all shortest plans of a search on a grid, the ones that cross the
+// fewest cells not free in `other`: for each reached cell, the neighbour
+// one step nearer the source through which the fewest such cells lie (ties
+// to the first of +col, -col, +row, -row). A plan that disagrees is mended
+// by giving back the cells of one plan; of a map's many equally short
+// plans (a 4-connected plan may take its turns anywhere) the one along a
+// wall the blocks thickened needs dozens, the one beside it one or two (the
+// cells of the doorway it passes). Only the cells on shortest plans to the
+// goals asked for are worked out: a search's disagreeing goals are few, and
+// working out every cell it reached was an eighth of tsc's T = 1 save. The
+// arrays (5 bytes a cell) are made on the first goal of a search and freed
+// when the next search begins, as before: most searches need none, and
+// kept, the two sides' arrays would raise the fitting's peak memory.
 class FewestChangesPlans {
  public:
-  FewestChangesPlans(const Grid& grid, const std::vector<std::int32_t>& steps,
-                     const std::vector<std::size_t>& order, const Grid& other)
-      : width_(static_cast<std::size_t>(grid.width())), toward_(grid.size(), kSource) {
-    std::vector<std::int32_t> changes(grid.size(), 0);
-    const std::size_t w = width_;
-    const std::size_t h = static_cast<std::size_t>(grid.height());
-    const Cell* other_cells = other.cells().data();
-    for (const std::size_t i : order) {
+  explicit FewestChangesPlans(const Grid& other) : other_(other) {}
+
+  // Forgets the plans of the last search: `search` has run again.
+  void Reset(const FreeSearch& search) {
+    search_ = &search;
+    std::vector<std::uint8_t>().swap(state_);
+    std::vector<std::int32_t>().swap(changes_);
+  }
+
+  // Walks the plan from `goal` back towards the source until a cell
+  // already walked since Reset (plans of one search form a tree),
+  // appending the cells whose value in `other` is not free.
+  void AppendUnfreeOnPath(std::size_t goal, std::vector<std::size_t>* out) {
+    WorkOut(goal);
+    for (std::size_t i = goal; i != kNone; i = Previous(i)) {
+      if (state_[i] & kWalked) break;
+      state_[i] |= kWalked;
+      if (other_.cells()[i] != Cell::kFree) out->push_back(i);
+    }
+  }
+
+ private:
+  static constexpr std::size_t kNone = SIZE_MAX;
+  // A cell's byte of state_: which neighbour comes before it (+col, -col,
+  // +row, -row as 0-3; kSource at the source) in the low bits, and
+  // whether it is worked out, and walked.
+  static constexpr std::uint8_t kToward = 7, kSource = 4, kDone = 8, kWalked = 16;
+
+  // Works out the plans to `goal` and to every cell one step nearer on a
+  // shortest plan to it, depth first: a cell is done once the cells one
+  // step nearer are (its fewest changes are theirs plus its own).
+  void WorkOut(std::size_t goal) {
+    const Grid& grid = search_->grid();
+    if (state_.empty()) {
+      state_.assign(grid.size(), 0);
+      changes_.assign(grid.size(), 0);
+    }
+    if (state_[goal] & kDone) return;
+    const std::vector<std::int32_t>& steps = search_->steps();
+    const std::uint8_t* moves = search_->moves().data();
+    const std::size_t w = static_cast<std::size_t>(grid.width());
+    const std::size_t n = grid.size();
+    const Cell* other_cells = other_.cells().data();
+    pending_.assign(1, goal);
+    while (!pending_.empty()) {
+      const std::size_t i = pending_.back();
+      if (state_[i] & kDone) {
+        pending_.pop_back();
+        continue;
+      }
       const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
       const std::int32_t before = steps[i] - 1;
       if (before < 0) {
-        changes[i] = own;
+        changes_[i] = own;
+        state_[i] |= kDone | kSource;
+        pending_.pop_back();
         continue;
       }
+      bool waiting = false;
+      auto await = [&](std::size_t j) {
+        if (steps[j] == before && !(state_[j] & kDone)) {
+          pending_.push_back(j);
+          waiting = true;
+        }
+      };
+      if (moves[i] & kToNextColumn) await(i + 1);
+      if (moves[i] & kToPreviousColumn) await(i - 1);
+      if (i + w < n) await(i + w);
+      if (i >= w) await(i - w);
+      if (waiting) continue;
+      pending_.pop_back();
       // The neighbours one step nearer, in the order +col, -col, +row,
       // -row (ties to the first).
       std::int32_t best = INT32_MAX;
-      ForEachNeighbour(w, h, i, [&](std::size_t j) {
-        if (steps[j] == before && changes[j] < best) {
-          best = changes[j];
-          toward_[i] = Direction(i, j);
+      std::uint8_t toward = kSource;
+      auto consider = [&](std::size_t j, std::uint8_t direction) {
+        if (steps[j] == before && changes_[j] < best) {
+          best = changes_[j];
+          toward = direction;
         }
-      });
-      changes[i] = own + best;
+      };
+      if (moves[i] & kToNextColumn) consider(i + 1, 0);
+      if (moves[i] & kToPreviousColumn) consider(i - 1, 1);
+      if (i + w < n) consider(i + w, 2);
+      if (i >= w) consider(i - w, 3);
+      changes_[i] = own + best;
+      state_[i] |= kDone | toward;
     }
   }
+
   // The cell before `i` on its plan; kNone at the source.
   std::size_t Previous(std::size_t i) const {
-    switch (toward_[i]) {
+    const std::size_t w = static_cast<std::size_t>(search_->grid().width());
+    switch (state_[i] & kToward) {
       case 0:
         return i + 1;
       case 1:
         return i - 1;
       case 2:
-        return i + width_;
+        return i + w;
       case 3:
-        return i - width_;
+        return i - w;
       default:
         return kNone;
     }
   }
-  static constexpr std::size_t kNone = SIZE_MAX;
 
- private:
-  // Which neighbour comes before each cell (+col, -col, +row, -row as
-  // 0-3; kSource at the source and unreached cells): a byte a cell rather
-  // than an index of 8, as one of these is made for the whole map per
-  // sampled start.
-  static constexpr std::uint8_t kSource = 4;
-  // Which neighbour of i the 4-neighbour j is, in the order Previous reads.
-  std::uint8_t Direction(std::size_t i, std::size_t j) const {
-    return j == i + 1 ? 0 : j + 1 == i ? 1 : j == i + width_ ? 2 : 3;
-  }
-  std::size_t width_;
-  std::vector<std::uint8_t> toward_;
+  const Grid& other_;
+  const FreeSearch* search_ = nullptr;
+  std::vector<std::uint8_t> state_;
+  std::vector<std::int32_t> changes_;
+  std::vector<std::size_t> pending_;  // cells waiting for those one step nearer
 };
-
-// Walks the plan from `goal` back towards the source until a cell already
-// walked (plans of one search form a tree), appending the cells whose
-// value in `other` is not free.
-void AppendUnfreeOnPath(const FewestChangesPlans& plans, std::size_t goal, const Grid& other,
-                        std::vector<std::uint8_t>* walked, std::vector<std::size_t>* out) {
-  for (std::size_t i = goal; i != FewestChangesPlans::kNone; i = plans.Previous(i)) {
-    if ((*walked)[i]) break;
-    (*walked)[i] = 1;
-    if (other.cells()[i] != Cell::kFree) out->push_back(i);
-  }
-}
 
 // Cells free in both grids, drawn by a fixed linear congruential sequence.
 std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
@@ -165,33 +250,30 @@ bool PlansAgree(std::int32_t la, std::int32_t lb) {
 
 std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {
   std::vector<std::size_t> out;
-  std::vector<std::size_t> order_a, order_b;
+  FreeSearch on_original(original), on_decoded(decoded);
+  FewestChangesPlans plans_a(decoded), plans_b(original);
+  const Cell* original_cells = original.cells().data();
+  const Cell* decoded_cells = decoded.cells().data();
   for (const std::size_t source : SampleCells(original, decoded)) {
-    const std::vector<std::int32_t> a = FreeSteps(original, source, &order_a);
-    const std::vector<std::int32_t> b = FreeSteps(decoded, source, &order_b);
-    std::vector<std::uint8_t> walked_a, walked_b;
-    std::unique_ptr<FewestChangesPlans> plans_a, plans_b;  // made on the first use
-    for (std::size_t g = 0; g < a.size(); ++g) {
+    on_original.Run(source);
+    on_decoded.Run(source);
+    const std::int32_t* a = on_original.steps().data();
+    const std::int32_t* b = on_decoded.steps().data();
+    plans_a.Reset(on_original);
+    plans_b.Reset(on_decoded);
+    for (std::size_t g = 0; g < original.size(); ++g) {
       // Equal steps (most cells) agree, and so do cells neither reaches.
-      if (a[g] == b[g] || g == source || original.cells()[g] != Cell::kFree ||
-          decoded.cells()[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
+      if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
+          decoded_cells[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
         continue;
       }
       // Longer or gone on the decode: the original plan crosses a cell that
       // is no longer free. Shorter or new: the decoded plan crosses a cell
       // that was not free.
       if (a[g] >= 0 && (b[g] < 0 || b[g] > a[g])) {
-        if (!plans_a) {
-          plans_a = std::make_unique<FewestChangesPlans>(original, a, order_a, decoded);
-          walked_a.assign(a.size(), 0);
-        }
-        AppendUnfreeOnPath(*plans_a, g, decoded, &walked_a, &out);
+        plans_a.AppendUnfreeOnPath(g, &out);
       } else {
-        if (!plans_b) {
-          plans_b = std::make_unique<FewestChangesPlans>(decoded, b, order_b, original);
-          walked_b.assign(b.size(), 0);
-        }
-        AppendUnfreeOnPath(*plans_b, g, original, &walked_b, &out);
+        plans_b.AppendUnfreeOnPath(g, &out);
       }
     }
   }
@@ -200,10 +282,12 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
 
 PlanFaults ComparePlans(const Grid& original, const Grid& decoded, bool want_paths) {
   PlanFaults out;
-  const std::vector<std::size_t> sources = SampleCells(original, decoded);
-  for (const std::size_t source : sources) {
-    const std::vector<std::int32_t> a = FreeSteps(original, source);
-    const std::vector<std::int32_t> b = FreeSteps(decoded, source);
+  FreeSearch on_original(original), on_decoded(decoded);
+  for (const std::size_t source : SampleCells(original, decoded)) {
+    on_original.Run(source);
+    on_decoded.Run(source);
+    const std::vector<std::int32_t>& a = on_original.steps();
+    const std::vector<std::int32_t>& b = on_decoded.steps();
     // Every cell free in both is a goal: the searches reach them all anyway.
     std::size_t worst = 0;
     double worst_excess = -1;

@@ -56,6 +56,51 @@ std::vector<std::int32_t> ChebyshevDistance(int width, int height,
 
 namespace {
 
+// out[p] = 1 where some in[q] (q < count) is non-zero with |q - p| <=
+// radius.
+void SpreadLine(const std::uint8_t* in, std::uint8_t* out, std::size_t count, std::size_t radius) {
+  std::size_t inside = 0;  // non-zero cells in the window of the next p
+  for (std::size_t q = 0; q < count + radius; ++q) {
+    if (q < count) inside += in[q] != 0;
+    if (q < radius) continue;
+    const std::size_t p = q - radius;
+    out[p] = inside > 0;
+    if (p >= radius) inside -= in[p - radius] != 0;
+  }
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> WithinDistance(int width, int height,
+                                         const std::vector<std::uint8_t>& mask, int radius) {
+  const std::size_t w = static_cast<std::size_t>(width);
+  const std::size_t h = static_cast<std::size_t>(height);
+  const std::size_t r = static_cast<std::size_t>(radius);
+  std::vector<std::uint8_t> rows(mask.size());
+  for (std::size_t y = 0; y < h; ++y) SpreadLine(&mask[y * w], &rows[y * w], w, r);
+  // The columns a row at a time, so that the passes read memory in order:
+  // `inside` counts the window's non-zero cells of each column.
+  std::vector<std::uint8_t> out(mask.size());
+  std::vector<std::uint32_t> inside(w, 0);
+  for (std::size_t q = 0; q < h + r; ++q) {
+    if (q < h) {
+      const std::uint8_t* add = &rows[q * w];
+      for (std::size_t x = 0; x < w; ++x) inside[x] += add[x];
+    }
+    if (q < r) continue;
+    const std::size_t p = q - r;
+    std::uint8_t* row = &out[p * w];
+    for (std::size_t x = 0; x < w; ++x) row[x] = inside[x] > 0;
+    if (p >= r) {
+      const std::uint8_t* drop = &rows[(p - r) * w];
+      for (std::size_t x = 0; x < w; ++x) inside[x] -= drop[x];
+    }
+  }
+  return out;
+}
+
+namespace {
+
 // Distinct (a, b) pairs of labels over the cells where both are non-zero
 // and `keep_a(a)` holds, sorted.
 template <typename Keep>
