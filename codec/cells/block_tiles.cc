@@ -149,7 +149,7 @@ Grid ComposeBlockCells(const Grid& original, const BlockCells& b) {
   const std::uint8_t* restored = b.restored.data();
   Cell* composed = out.mutable_cells().data();
   for (int y = 0; y < original.height(); ++y) {
-    const Cell* blocks = &b.blocks[static_cast<std::size_t>(y / f) * b.blocks_x];
+    const Cell* blocks = b.blocks.data() + static_cast<std::size_t>(y / f) * b.blocks_x;
     const std::size_t row = static_cast<std::size_t>(y) * w;
     for (std::size_t x0 = 0; x0 < w; x0 += side, ++blocks) {
       const std::size_t end = std::min(w, x0 + side);

@@ -121,15 +121,16 @@ namespace {
 // sections before: `*sum`) and 2^32 - 1.
 Status AddCount(std::uint64_t count, std::uint64_t limit, Limit which, const char* items,
                 const char* limit_name, std::uint64_t* sum, std::uint32_t* out) {
+  // Ids are 32-bit: no limit a caller sets makes such a section readable,
+  // so this is checked first and the file gets one error whatever the limits.
+  if (count > UINT32_MAX) {
+    return CorruptError(std::to_string(count) + " " + items + " in one section, above 2^32 - 1");
+  }
   // The sum stays below 2^64: each term is cut to limit + 1 first.
   *sum += std::min<std::uint64_t>(count, limit == UINT64_MAX ? limit : limit + 1);
   if (*sum > limit) {
     return OverLimitError(which, std::string(items) + " exceed the " + limit_name + " limit of " +
                                      std::to_string(limit));
-  }
-  // Ids are 32-bit: no limit a caller sets makes such a section readable.
-  if (count > UINT32_MAX) {
-    return CorruptError(std::to_string(count) + " " + items + " in one section, above 2^32 - 1");
   }
   *out = static_cast<std::uint32_t>(count);
   return Status::Ok();

@@ -16,12 +16,12 @@ namespace {
 // A breadth-first search over the free cells of `grid` from one cell, at
 // most `depth` steps, that keeps, of the shortest plans to each cell, the
 // one crossing the fewest cells not free in `other` (as FewestChangesPlans
-// does for the whole map). A search of `depth` steps stays within `depth`
-// cells of its source in each axis, so its arrays span that window only
-// ((2 depth + 1)^2 cells, reset cell by cell): a map of 36 Mcells would
-// otherwise need some 1.2 GB for them. Two searches of the same depth and
-// clip from the same source share their window, so one's window index of a
-// cell is the other's (StepsAt).
+// does over the whole map for the goals it is asked for). A search of
+// `depth` steps stays within `depth` cells of its source in each axis, so
+// its arrays span that window only ((2 depth + 1)^2 cells, reset cell by
+// cell): a map of 36 Mcells would otherwise need some 1.2 GB for them. Two
+// searches of the same depth and clip from the same source share their
+// window, so one's window index of a cell is the other's (StepsAt).
 class LocalPlans {
  public:
   LocalPlans(const Grid& grid, const Grid& other, int depth)
@@ -47,7 +47,9 @@ class LocalPlans {
 
   // The steps only: the plans crossing the fewest changes are worked out
   // when one is asked for (AppendChanged), as most searches find every
-  // plan holds.
+  // plan holds. `source` must lie inside the clip (callers search from the
+  // cells beside a change, within the clip's box): each step tests only the
+  // bound it moves towards.
   void Run(std::size_t source) {
     for (std::size_t n = 0; n < count_; ++n) steps_[order_[n]] = -1;
     if (tree_ready_) {

@@ -77,22 +77,22 @@ std::vector<std::uint8_t> WithinDistance(int width, int height,
   const std::size_t h = static_cast<std::size_t>(height);
   const std::size_t r = static_cast<std::size_t>(radius);
   std::vector<std::uint8_t> rows(mask.size());
-  for (std::size_t y = 0; y < h; ++y) SpreadLine(&mask[y * w], &rows[y * w], w, r);
+  for (std::size_t y = 0; y < h; ++y) SpreadLine(mask.data() + y * w, rows.data() + y * w, w, r);
   // The columns a row at a time, so that the passes read memory in order:
   // `inside` counts the window's non-zero cells of each column.
   std::vector<std::uint8_t> out(mask.size());
   std::vector<std::uint32_t> inside(w, 0);
   for (std::size_t q = 0; q < h + r; ++q) {
     if (q < h) {
-      const std::uint8_t* add = &rows[q * w];
+      const std::uint8_t* add = rows.data() + q * w;
       for (std::size_t x = 0; x < w; ++x) inside[x] += add[x];
     }
     if (q < r) continue;
     const std::size_t p = q - r;
-    std::uint8_t* row = &out[p * w];
+    std::uint8_t* row = out.data() + p * w;
     for (std::size_t x = 0; x < w; ++x) row[x] = inside[x] > 0;
     if (p >= r) {
-      const std::uint8_t* drop = &rows[(p - r) * w];
+      const std::uint8_t* drop = rows.data() + (p - r) * w;
       for (std::size_t x = 0; x < w; ++x) inside[x] -= drop[x];
     }
   }

@@ -41,9 +41,10 @@ struct EncodeOptions {
   int tolerance_cells = 0;
   // Largest map (cells) saved within a tolerance; 0: no limit. The
   // tolerance checks hold the whole grid and some of its distance maps,
-  // about 34 bytes a cell at their peak (a 6000 x 6000 map: 1.2 GB and a
-  // minute), so a larger map is refused with kResourceExhausted before any
-  // of them is made. The default, 2^26 cells (about 2.3 GB), keeps a
+  // about 44 bytes a cell at their peak (a 6000 x 6000 map at T = 1: 1.6 GB
+  // and two to three minutes), so a larger map is refused with
+  // kResourceExhausted before any of them is made. The default, 2^26 cells
+  // (about 3 GB), keeps a
   // robot's save from exhausting its memory; an exact save of any size
   // needs about 1 byte a cell.
   std::uint64_t max_tolerance_cells = std::uint64_t{1} << 26;

@@ -73,6 +73,7 @@ TEST(CodecTest, EdgeCases) {
   }
   grids.emplace_back(0, 0);
   grids.emplace_back(5, 0);
+  grids.emplace_back(0, 5);
   Grid no_free(20, 20, Cell::kUnknown);
   for (int i = 0; i < 20; ++i) no_free.set(i, i, Cell::kOccupied);
   grids.push_back(no_free);

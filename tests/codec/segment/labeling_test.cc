@@ -136,8 +136,9 @@ TEST(LabelingTest, MatchesFloodFillOnDenseGridsAndLateMerges) {
     }
   }
   for (int r = 0; r < stairs.height; ++r) {
-    for (int c = 0; c < stairs.width; ++c)
+    for (int c = 0; c < stairs.width; ++c) {
       stairs.bits[stairs.Index(c, r)] = (c + r) % 7 == 0 ? 0xFF : 0;  // any non-zero byte is set
+    }
   }
   for (bool eight : {false, true}) {
     ExpectMatchesFloodFill(comb, eight, "comb");
