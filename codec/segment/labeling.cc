@@ -76,6 +76,9 @@ Labeling LabelComponents(const BinaryMask& mask, Connectivity connectivity) {
   result.height = mask.height;
   const int w = mask.width;
   const int h = mask.height;
+  // A mask of no columns (or no rows) has no cells to label; its rows below
+  // would index an empty vector.
+  if (w == 0 || h == 0) return result;
   // First pass: provisional labels (union-find ids + 1; 0 = background),
   // one per run of set cells in a row, found eight cells at a time: a run
   // joins the runs above it that it touches. Cell by cell this pass and

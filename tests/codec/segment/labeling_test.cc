@@ -7,6 +7,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace linemap {
@@ -144,6 +145,20 @@ TEST(LabelingTest, MatchesFloodFillOnDenseGridsAndLateMerges) {
     ExpectMatchesFloodFill(comb, eight, "comb");
     ExpectMatchesFloodFill(flipped, eight, "flipped comb");
     ExpectMatchesFloodFill(stairs, eight, "stairs");
+  }
+}
+
+// A map of no columns (or no rows) has no components; its rows must not
+// be indexed (a 0 x 5 map saved within a tolerance labels its free space).
+TEST(LabelingTest, MasksWithoutCellsHaveNoComponents) {
+  for (const auto& [w, h] : {std::pair{0, 5}, std::pair{5, 0}, std::pair{0, 0}}) {
+    for (const Connectivity c : {Connectivity::kFour, Connectivity::kEight}) {
+      const Labeling l = LabelComponents(BinaryMask(w, h), c);
+      EXPECT_EQ(l.width, w);
+      EXPECT_EQ(l.height, h);
+      EXPECT_TRUE(l.labels.empty());
+      EXPECT_TRUE(l.components.empty());
+    }
   }
 }
 
