@@ -37,50 +37,60 @@ std::vector<std::uint8_t> MovesOf(const Grid& grid) {
 }
 
 // Breadth-first searches over the free cells of one grid, one source at a
-// time: the steps to every cell (-1 where unreachable) and the cells in the
-// order reached, that is by steps. The arrays are kept from one search to
-// the next and only the cells the last search reached are reset: a fresh
-// array of the whole map per search, filled, was a tenth of the fitting's
-// time (tsc at T = 1).
+// time: the steps to every cell (-1 where unreachable). The steps array is
+// kept from one search to the next and only the span of cells the last
+// search reached is reset: a fresh array of the whole map per search,
+// filled, was a tenth of the fitting's time (tsc at T = 1). The search
+// runs a level of steps at a time, so what it holds besides the steps is
+// two levels of cells, not every cell it reached (a list of those, 8 bytes
+// a cell reached in each of the two searches, was a third of the fitting's
+// peak memory).
 class FreeSearch {
  public:
   explicit FreeSearch(const Grid& grid)
       : grid_(grid), moves_(MovesOf(grid)), steps_(grid.size(), -1) {}
 
   void Run(std::size_t source) {
-    for (const std::size_t i : order_) steps_[i] = -1;
-    order_.clear();
+    if (reached_first_ <= reached_last_) {
+      std::fill(steps_.begin() + static_cast<std::ptrdiff_t>(reached_first_),
+                steps_.begin() + static_cast<std::ptrdiff_t>(reached_last_) + 1, -1);
+    }
     const std::size_t w = static_cast<std::size_t>(grid_.width());
     const std::size_t n = grid_.size();
+    reached_first_ = reached_last_ = source;
     steps_[source] = 0;
-    order_.push_back(source);
-    for (std::size_t head = 0; head < order_.size(); ++head) {
-      const std::size_t i = order_[head];
-      const std::uint8_t moves = moves_[i];
-      const std::int32_t s = steps_[i] + 1;
-      auto reach = [&](std::size_t j) {
-        if (steps_[j] < 0 && (moves_[j] & kFreeCell)) {
-          steps_[j] = s;
-          order_.push_back(j);
-        }
-      };
-      if (moves & kToNextColumn) reach(i + 1);
-      if (moves & kToPreviousColumn) reach(i - 1);
-      if (i + w < n) reach(i + w);
-      if (i >= w) reach(i - w);
+    level_.assign(1, source);
+    for (std::int32_t s = 1; !level_.empty(); ++s) {
+      next_.clear();
+      for (const std::size_t i : level_) {
+        const std::uint8_t moves = moves_[i];
+        auto reach = [&](std::size_t j) {
+          if (steps_[j] < 0 && (moves_[j] & kFreeCell)) {
+            steps_[j] = s;
+            next_.push_back(j);
+            reached_first_ = std::min(reached_first_, j);
+            reached_last_ = std::max(reached_last_, j);
+          }
+        };
+        if (moves & kToNextColumn) reach(i + 1);
+        if (moves & kToPreviousColumn) reach(i - 1);
+        if (i + w < n) reach(i + w);
+        if (i >= w) reach(i - w);
+      }
+      level_.swap(next_);
     }
   }
   const Grid& grid() const { return grid_; }
   const std::vector<std::uint8_t>& moves() const { return moves_; }
   const std::vector<std::int32_t>& steps() const { return steps_; }
-  // The cells reached, by steps.
-  const std::vector<std::size_t>& order() const { return order_; }
 
  private:
   const Grid& grid_;
   std::vector<std::uint8_t> moves_;
   std::vector<std::int32_t> steps_;
-  std::vector<std::size_t> order_;
+  // The span of cells the last search reached (empty: first > last).
+  std::size_t reached_first_ = 1, reached_last_ = 0;
+  std::vector<std::size_t> level_, next_;  // the cells of this and the next step
 };
 
 // The cells of one shortest path from the search's source to `goal`.
@@ -111,9 +121,9 @@ void AppendPath(const Grid& grid, const std::vector<std::int32_t>& steps, std::s
 // goals asked for are worked out: a search's disagreeing goals are few, and
 // working out every cell it reached was an eighth of tsc's T = 1 save. The
 // arrays (5 bytes a cell, against 2 before they were packed with the plans'
-// directions) are made on the first goal of a search and freed when the next
-// search begins: most searches need none, and kept, the two sides' arrays
-// would raise the fitting's peak memory.
+// directions) are made on the first goal of a search and freed once its
+// goals are walked: most searches need none, and one side's are freed
+// before the other side's are made (PlanCulprits).
 class FewestChangesPlans {
  public:
   explicit FewestChangesPlans(const Grid& other) : other_(other) {}
@@ -121,6 +131,11 @@ class FewestChangesPlans {
   // Forgets the plans of the last search: `search` has run again.
   void Reset(const FreeSearch& search) {
     search_ = &search;
+    Release();
+  }
+
+  // Frees the plans worked out (5 bytes a cell once a goal was asked).
+  void Release() {
     std::vector<std::uint8_t>().swap(state_);
     std::vector<std::int32_t>().swap(changes_);
   }
@@ -249,33 +264,76 @@ bool PlansAgree(std::int32_t la, std::int32_t lb) {
   return (la < 0) == (lb < 0) && (la < 0 || std::abs(lb - la) <= kPlanLengthTolerance * la);
 }
 
+namespace {
+
+// Which side's plan a disagreeing goal mends: longer or gone on the
+// decode, the original plan crosses a cell that is no longer free (kOnOriginal);
+// shorter or new, the decoded plan crosses a cell that was not free.
+enum class MendSide { kNone, kOnOriginal, kOnDecoded };
+MendSide SideToMend(std::int32_t a, std::int32_t b) {
+  // Equal steps (most cells) agree, and so do cells neither reaches.
+  if (a == b || PlansAgree(a, b)) return MendSide::kNone;
+  return a >= 0 && (b < 0 || b > a) ? MendSide::kOnOriginal : MendSide::kOnDecoded;
+}
+
+// The cells one side's walks appended for one goal: out[begin, end).
+struct GoalCells {
+  std::size_t goal, begin, end;
+};
+
+// Walks the plans of `plans` (reset on its search) to every goal free in
+// both grids whose disagreement `side` mends, in raster order, appending
+// to *cells and recording each goal's share in *shares.
+void WalkSide(const Grid& original, const Grid& decoded, std::size_t source, const std::int32_t* a,
+              const std::int32_t* b, MendSide side, FewestChangesPlans* plans,
+              std::vector<std::size_t>* cells, std::vector<GoalCells>* shares) {
+  const Cell* original_cells = original.cells().data();
+  const Cell* decoded_cells = decoded.cells().data();
+  for (std::size_t g = 0; g < original.size(); ++g) {
+    if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
+        decoded_cells[g] != Cell::kFree || SideToMend(a[g], b[g]) != side) {
+      continue;
+    }
+    const std::size_t begin = cells->size();
+    plans->AppendUnfreeOnPath(g, cells);
+    if (cells->size() > begin) shares->push_back({g, begin, cells->size()});
+  }
+  plans->Release();
+}
+
+}  // namespace
+
 std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {
   std::vector<std::size_t> out;
   FreeSearch on_original(original), on_decoded(decoded);
   FewestChangesPlans plans_a(decoded), plans_b(original);
-  const Cell* original_cells = original.cells().data();
-  const Cell* decoded_cells = decoded.cells().data();
+  std::vector<std::size_t> cells_a, cells_b;
+  std::vector<GoalCells> shares_a, shares_b;
   for (const std::size_t source : SampleCells(original, decoded)) {
     on_original.Run(source);
     on_decoded.Run(source);
     const std::int32_t* a = on_original.steps().data();
     const std::int32_t* b = on_decoded.steps().data();
+    // One side's plans at a time (each holds 5 bytes a cell while its
+    // goals are walked), then their cells in the goals' raster order, as
+    // if the two sides were walked goal by goal: the order decides which
+    // of two cells of one block unfills the block (Mender::Unfill).
+    cells_a.clear();
+    cells_b.clear();
+    shares_a.clear();
+    shares_b.clear();
     plans_a.Reset(on_original);
+    WalkSide(original, decoded, source, a, b, MendSide::kOnOriginal, &plans_a, &cells_a, &shares_a);
     plans_b.Reset(on_decoded);
-    for (std::size_t g = 0; g < original.size(); ++g) {
-      // Equal steps (most cells) agree, and so do cells neither reaches.
-      if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
-          decoded_cells[g] != Cell::kFree || PlansAgree(a[g], b[g])) {
-        continue;
-      }
-      // Longer or gone on the decode: the original plan crosses a cell that
-      // is no longer free. Shorter or new: the decoded plan crosses a cell
-      // that was not free.
-      if (a[g] >= 0 && (b[g] < 0 || b[g] > a[g])) {
-        plans_a.AppendUnfreeOnPath(g, &out);
-      } else {
-        plans_b.AppendUnfreeOnPath(g, &out);
-      }
+    WalkSide(original, decoded, source, a, b, MendSide::kOnDecoded, &plans_b, &cells_b, &shares_b);
+    std::size_t ia = 0, ib = 0;
+    while (ia < shares_a.size() || ib < shares_b.size()) {
+      const bool take_a =
+          ib == shares_b.size() || (ia < shares_a.size() && shares_a[ia].goal < shares_b[ib].goal);
+      const GoalCells& share = take_a ? shares_a[ia++] : shares_b[ib++];
+      const std::vector<std::size_t>& from = take_a ? cells_a : cells_b;
+      out.insert(out.end(), from.begin() + static_cast<std::ptrdiff_t>(share.begin),
+                 from.begin() + static_cast<std::ptrdiff_t>(share.end));
     }
   }
   return out;
