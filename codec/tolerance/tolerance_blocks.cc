@@ -211,33 +211,43 @@ void DistanceFaults(const Grid& original, const OriginalNear& near, const Grid& 
 // blocks made free in the joining component would, on a SLAM map, mend the
 // whole ragged edge of its free space.
 std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) {
-  const Labeling regions = codec_internal::LabelFree(original);
   const int w = original.width(), h = original.height();
-  std::vector<std::int32_t> owner(original.size(), 0);
-  std::vector<std::size_t> queue;
-  for (std::size_t i = 0; i < original.size(); ++i) {
-    const std::int32_t label = regions.labels[i];
-    if (label && decoded.cells()[i] == Cell::kFree) {
-      owner[i] = label;
-      queue.push_back(i);
-    }
+  const Cell* before = original.cells().data();
+  const Cell* after = decoded.cells().data();
+  // Each cell's region where it is free in both maps, 0 elsewhere: the
+  // search's sources, and then what it reached.
+  std::vector<std::int32_t> owner = std::move(codec_internal::LabelFree(original).labels);
+  for (std::size_t i = 0; i < owner.size(); ++i) {
+    if (after[i] != Cell::kFree) owner[i] = 0;
   }
   std::vector<std::size_t> bridges;
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const std::size_t i = queue[head];
+  std::vector<std::size_t> next;
+  const auto expand = [&](std::size_t i) {
     const int c = static_cast<int>(i % w), r = static_cast<int>(i / w);
-    const std::size_t next[4] = {i + 1, i - 1, i + w, i - w};
+    const std::size_t near[4] = {i + 1, i - 1, i + w, i - w};
     const bool inside[4] = {c + 1 < w, c > 0, r + 1 < h, r > 0};
     for (int k = 0; k < 4; ++k) {
-      if (!inside[k] || decoded.cells()[next[k]] != Cell::kFree) continue;
-      if (owner[next[k]] == 0) {
-        owner[next[k]] = owner[i];
-        queue.push_back(next[k]);
-      } else if (owner[next[k]] != owner[i]) {
+      if (!inside[k] || after[near[k]] != Cell::kFree) continue;
+      if (owner[near[k]] == 0) {
+        owner[near[k]] = owner[i];
+        next.push_back(near[k]);
+      } else if (owner[near[k]] != owner[i]) {
         bridges.push_back(i);
-        bridges.push_back(next[k]);
+        bridges.push_back(near[k]);
       }
     }
+  };
+  // A level at a time, the sources first in raster order: the order a
+  // first-in first-out queue holding every source would take, without
+  // holding them (8 bytes a free cell, the fitting's peak on office maps).
+  for (std::size_t i = 0; i < owner.size(); ++i) {
+    if (before[i] == Cell::kFree && after[i] == Cell::kFree) expand(i);
+  }
+  std::vector<std::size_t> level;
+  while (!next.empty()) {
+    level.swap(next);
+    next.clear();
+    for (const std::size_t i : level) expand(i);
   }
   return bridges;
 }
