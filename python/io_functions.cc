@@ -391,7 +391,7 @@ vectors=False) that decode in 2.3 against 1.0 ms at the median (a median
 3.5x per map, up to 7.1x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
-about 44 bytes a cell (the default, 2^26 cells, about 3 GB); exact saves
+about 27 bytes a cell (the default, 2^26 cells, about 1.8 GB); exact saves
 are not limited. Options the library refuses raise ValueError with its
 message.
 )doc");

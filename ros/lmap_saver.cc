@@ -116,13 +116,16 @@ StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
 // page's first touch costs about 12 us). Arrays of up to 64 MB (16 Mcells
 // of 4 bytes) come from the heap, freed memory of up to 256 MB stays with
 // the process for the next save, and one arena serves both of the
-// encoder's threads. A single save gains too (fewer arrays mapped twice
-// within it). A process-wide choice, so the node's, not the library's (the
-// `linemap` tool makes it too, with larger bounds: it saves once and exits).
+// encoder's threads (and roscpp's). A single save gains too (fewer arrays
+// mapped twice within it). A process-wide choice, so the node's, not the
+// library's (the `linemap` tool makes it too, with larger bounds: it saves
+// once and exits).
 void KeepSaveMemoryForReuse() {
 #if defined(__GLIBC__)
   constexpr int kMiB = 1 << 20;
-  mallopt(M_MMAP_THRESHOLD, 64 * kMiB);
+  // A glibc that refuses a threshold this high (older releases cap it at
+  // 32 MiB) gets 32 MiB.
+  if (mallopt(M_MMAP_THRESHOLD, 64 * kMiB) == 0) (void)mallopt(M_MMAP_THRESHOLD, 32 * kMiB);
   mallopt(M_TRIM_THRESHOLD, 256 * kMiB);
   mallopt(M_ARENA_MAX, 1);
 #endif

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "codec/tolerance/compare_internal.h"
@@ -212,13 +213,13 @@ void DistanceFaults(const Grid& original, const OriginalNear& near, const Grid& 
 // whole ragged edge of its free space.
 std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) {
   const int w = original.width(), h = original.height();
-  const Cell* before = original.cells().data();
-  const Cell* after = decoded.cells().data();
+  const Cell* original_cells = original.cells().data();
+  const Cell* decoded_cells = decoded.cells().data();
   // Each cell's region where it is free in both maps, 0 elsewhere: the
   // search's sources, and then what it reached.
   std::vector<std::int32_t> owner = std::move(codec_internal::LabelFree(original).labels);
   for (std::size_t i = 0; i < owner.size(); ++i) {
-    if (after[i] != Cell::kFree) owner[i] = 0;
+    if (decoded_cells[i] != Cell::kFree) owner[i] = 0;
   }
   std::vector<std::size_t> bridges;
   std::vector<std::size_t> next;
@@ -227,7 +228,7 @@ std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) 
     const std::size_t near[4] = {i + 1, i - 1, i + w, i - w};
     const bool inside[4] = {c + 1 < w, c > 0, r + 1 < h, r > 0};
     for (int k = 0; k < 4; ++k) {
-      if (!inside[k] || after[near[k]] != Cell::kFree) continue;
+      if (!inside[k] || decoded_cells[near[k]] != Cell::kFree) continue;
       if (owner[near[k]] == 0) {
         owner[near[k]] = owner[i];
         next.push_back(near[k]);
@@ -241,7 +242,7 @@ std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) 
   // first-in first-out queue holding every source would take, without
   // holding them (8 bytes a free cell, the fitting's peak on office maps).
   for (std::size_t i = 0; i < owner.size(); ++i) {
-    if (before[i] == Cell::kFree && after[i] == Cell::kFree) expand(i);
+    if (original_cells[i] == Cell::kFree && decoded_cells[i] == Cell::kFree) expand(i);
   }
   std::vector<std::size_t> level;
   while (!next.empty()) {

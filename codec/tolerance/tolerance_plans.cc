@@ -3,6 +3,7 @@
 // sampled start cells to every cell free in both grids.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -157,22 +158,19 @@ class FewestChangesPlans {
   // A cell's byte of state_: which neighbour comes before it (+col, -col,
   // +row, -row as 0-3; kSource at the source) in the low bits, and
   // whether it is worked out, and walked.
-  static constexpr std::uint8_t kToward = 7, kSource = 4, kDone = 8, kWalked = 16;
+  static constexpr std::uint8_t kTowardMask = 7, kSource = 4, kDone = 8, kWalked = 16;
 
   // Works out the plans to `goal` and to every cell one step nearer on a
   // shortest plan to it, depth first: a cell is done once the cells one
   // step nearer are (its fewest changes are theirs plus its own).
   void WorkOut(std::size_t goal) {
-    const Grid& grid = search_->grid();
+    const std::size_t n = search_->grid().size();
     if (state_.empty()) {
-      state_.assign(grid.size(), 0);
-      changes_.assign(grid.size(), 0);
+      state_.assign(n, 0);
+      changes_.assign(n, 0);
     }
     if (state_[goal] & kDone) return;
-    const std::vector<std::int32_t>& steps = search_->steps();
-    const std::uint8_t* moves = search_->moves().data();
-    const std::size_t w = static_cast<std::size_t>(grid.width());
-    const std::size_t n = grid.size();
+    const std::int32_t* steps = search_->steps().data();
     const Cell* other_cells = other_.cells().data();
     pending_.assign(1, goal);
     while (!pending_.empty()) {
@@ -182,49 +180,68 @@ class FewestChangesPlans {
         continue;
       }
       const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
-      const std::int32_t before = steps[i] - 1;
-      if (before < 0) {
+      if (steps[i] <= 0) {  // the source (a goal is reached: steps >= 0)
         changes_[i] = own;
         state_[i] |= kDone | kSource;
         pending_.pop_back();
-        continue;
+      } else if (!AwaitNearer(i)) {
+        pending_.pop_back();
+        Settle(i, own);
       }
-      bool waiting = false;
-      auto await = [&](std::size_t j) {
-        if (steps[j] == before && !(state_[j] & kDone)) {
-          pending_.push_back(j);
-          waiting = true;
-        }
-      };
-      if (moves[i] & kToNextColumn) await(i + 1);
-      if (moves[i] & kToPreviousColumn) await(i - 1);
-      if (i + w < n) await(i + w);
-      if (i >= w) await(i - w);
-      if (waiting) continue;
-      pending_.pop_back();
-      // The neighbours one step nearer, in the order +col, -col, +row,
-      // -row (ties to the first).
-      std::int32_t best = INT32_MAX;
-      std::uint8_t toward = kSource;
-      auto consider = [&](std::size_t j, std::uint8_t direction) {
-        if (steps[j] == before && changes_[j] < best) {
-          best = changes_[j];
-          toward = direction;
-        }
-      };
-      if (moves[i] & kToNextColumn) consider(i + 1, 0);
-      if (moves[i] & kToPreviousColumn) consider(i - 1, 1);
-      if (i + w < n) consider(i + w, 2);
-      if (i >= w) consider(i - w, 3);
-      changes_[i] = own + best;
-      state_[i] |= kDone | toward;
     }
+  }
+
+  // Calls f(j, direction) for each 4-neighbour j of cell i within the map,
+  // in the order +col, -col, +row, -row (directions 0-3): ForEachNeighbour
+  // with the direction, reading the search's moves rather than dividing
+  // out i's column.
+  template <typename F>
+  void ForEachWay(std::size_t i, F f) const {
+    const std::uint8_t moves = search_->moves()[i];
+    const std::size_t w = static_cast<std::size_t>(search_->grid().width());
+    if (moves & kToNextColumn) f(i + 1, std::uint8_t{0});
+    if (moves & kToPreviousColumn) f(i - 1, std::uint8_t{1});
+    if (i + w < search_->grid().size()) f(i + w, std::uint8_t{2});
+    if (i >= w) f(i - w, std::uint8_t{3});
+  }
+
+  // Queues the neighbours one step nearer the source that are not worked
+  // out yet; true when there were any (cell i waits for them).
+  bool AwaitNearer(std::size_t i) {
+    const std::int32_t* steps = search_->steps().data();
+    const std::int32_t before = steps[i] - 1;
+    bool waiting = false;
+    ForEachWay(i, [&](std::size_t j, std::uint8_t) {
+      if (steps[j] == before && !(state_[j] & kDone)) {
+        pending_.push_back(j);
+        waiting = true;
+      }
+    });
+    return waiting;
+  }
+
+  // Works out cell i, whose nearer neighbours are worked out: its fewest changes are
+  // the least of theirs (ties to the first in ForEachWay's order) plus its
+  // own (`own`: 1 when it is not free in `other`).
+  void Settle(std::size_t i, std::int32_t own) {
+    const std::int32_t* steps = search_->steps().data();
+    const std::int32_t before = steps[i] - 1;
+    std::int32_t best = INT32_MAX;
+    std::uint8_t toward = kSource;
+    ForEachWay(i, [&](std::size_t j, std::uint8_t direction) {
+      if (steps[j] == before && changes_[j] < best) {
+        best = changes_[j];
+        toward = direction;
+      }
+    });
+    changes_[i] = own + best;
+    state_[i] |= kDone | toward;
   }
 
   // The cell before `i` on its plan; kNone at the source.
   std::size_t Previous(std::size_t i) const {
     const std::size_t w = static_cast<std::size_t>(search_->grid().width());
-    switch (state_[i] & kToward) {
+    switch (state_[i] & kTowardMask) {
       case 0:
         return i + 1;
       case 1:
@@ -258,83 +275,96 @@ std::vector<std::size_t> SampleCells(const Grid& a, const Grid& b) {
   return cells;
 }
 
+// Which side's plan a disagreeing goal mends: longer or gone on the
+// decode, the original plan crosses a cell that is no longer free
+// (kOnOriginal); shorter or new, the decoded plan crosses a cell that was
+// not free (kOnDecoded).
+enum class MendSide { kNone, kOnOriginal, kOnDecoded };
+MendSide SideToMend(std::int32_t a, std::int32_t b) {
+  if (PlansAgree(a, b)) return MendSide::kNone;
+  return a >= 0 && (b < 0 || b > a) ? MendSide::kOnOriginal : MendSide::kOnDecoded;
+}
+
+// The two searches from one sampled source: steps on the original (a) and
+// on the decode (b).
+struct SourceSearches {
+  const Grid& original;
+  const Grid& decoded;
+  std::size_t source;
+  const std::int32_t* a;
+  const std::int32_t* b;
+};
+
+// What one side's walks appended: `cells`, goal by goal (a goal's cells are
+// cells[begin, end) of its share; goals that appended none have no share).
+struct SideWalks {
+  struct Share {
+    std::size_t goal, begin, end;
+  };
+  std::vector<std::size_t> cells;
+  std::vector<Share> shares;
+};
+
+// Walks `plans` (reset on the search of `side`) to every goal free in both
+// grids whose disagreement `side` mends, in raster order, then frees them.
+void WalkSide(const SourceSearches& s, MendSide side, FewestChangesPlans* plans, SideWalks* out) {
+  out->cells.clear();
+  out->shares.clear();
+  const Cell* original_cells = s.original.cells().data();
+  const Cell* decoded_cells = s.decoded.cells().data();
+  for (std::size_t g = 0; g < s.original.size(); ++g) {
+    // Equal steps (most cells) agree, and so do cells neither reaches: the
+    // first test skips them before the others are read.
+    if (s.a[g] == s.b[g] || g == s.source || original_cells[g] != Cell::kFree ||
+        decoded_cells[g] != Cell::kFree || SideToMend(s.a[g], s.b[g]) != side) {
+      continue;
+    }
+    const std::size_t begin = out->cells.size();
+    plans->AppendUnfreeOnPath(g, &out->cells);
+    if (out->cells.size() > begin) out->shares.push_back({g, begin, out->cells.size()});
+  }
+  plans->Release();
+}
+
+// Appends the two sides' cells to *out in their goals' raster order, as if
+// the goals had been walked one by one, each on its side.
+void AppendInGoalOrder(const SideWalks& x, const SideWalks& y, std::vector<std::size_t>* out) {
+  std::size_t ix = 0, iy = 0;
+  while (ix < x.shares.size() || iy < y.shares.size()) {
+    const bool take_x =
+        iy == y.shares.size() || (ix < x.shares.size() && x.shares[ix].goal < y.shares[iy].goal);
+    const SideWalks& side = take_x ? x : y;
+    const SideWalks::Share& share = take_x ? x.shares[ix++] : y.shares[iy++];
+    out->insert(out->end(), side.cells.begin() + static_cast<std::ptrdiff_t>(share.begin),
+                side.cells.begin() + static_cast<std::ptrdiff_t>(share.end));
+  }
+}
+
 }  // namespace
 
 bool PlansAgree(std::int32_t la, std::int32_t lb) {
   return (la < 0) == (lb < 0) && (la < 0 || std::abs(lb - la) <= kPlanLengthTolerance * la);
 }
 
-namespace {
-
-// Which side's plan a disagreeing goal mends: longer or gone on the
-// decode, the original plan crosses a cell that is no longer free (kOnOriginal);
-// shorter or new, the decoded plan crosses a cell that was not free.
-enum class MendSide { kNone, kOnOriginal, kOnDecoded };
-MendSide SideToMend(std::int32_t a, std::int32_t b) {
-  // Equal steps (most cells) agree, and so do cells neither reaches.
-  if (a == b || PlansAgree(a, b)) return MendSide::kNone;
-  return a >= 0 && (b < 0 || b > a) ? MendSide::kOnOriginal : MendSide::kOnDecoded;
-}
-
-// The cells one side's walks appended for one goal: out[begin, end).
-struct GoalCells {
-  std::size_t goal, begin, end;
-};
-
-// Walks the plans of `plans` (reset on its search) to every goal free in
-// both grids whose disagreement `side` mends, in raster order, appending
-// to *cells and recording each goal's share in *shares.
-void WalkSide(const Grid& original, const Grid& decoded, std::size_t source, const std::int32_t* a,
-              const std::int32_t* b, MendSide side, FewestChangesPlans* plans,
-              std::vector<std::size_t>* cells, std::vector<GoalCells>* shares) {
-  const Cell* original_cells = original.cells().data();
-  const Cell* decoded_cells = decoded.cells().data();
-  for (std::size_t g = 0; g < original.size(); ++g) {
-    if (a[g] == b[g] || g == source || original_cells[g] != Cell::kFree ||
-        decoded_cells[g] != Cell::kFree || SideToMend(a[g], b[g]) != side) {
-      continue;
-    }
-    const std::size_t begin = cells->size();
-    plans->AppendUnfreeOnPath(g, cells);
-    if (cells->size() > begin) shares->push_back({g, begin, cells->size()});
-  }
-  plans->Release();
-}
-
-}  // namespace
-
 std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded) {
   std::vector<std::size_t> out;
   FreeSearch on_original(original), on_decoded(decoded);
   FewestChangesPlans plans_a(decoded), plans_b(original);
-  std::vector<std::size_t> cells_a, cells_b;
-  std::vector<GoalCells> shares_a, shares_b;
+  SideWalks walks_a, walks_b;
   for (const std::size_t source : SampleCells(original, decoded)) {
     on_original.Run(source);
     on_decoded.Run(source);
-    const std::int32_t* a = on_original.steps().data();
-    const std::int32_t* b = on_decoded.steps().data();
+    const SourceSearches searches{original, decoded, source, on_original.steps().data(),
+                                  on_decoded.steps().data()};
     // One side's plans at a time (each holds 5 bytes a cell while its
-    // goals are walked), then their cells in the goals' raster order, as
-    // if the two sides were walked goal by goal: the order decides which
-    // of two cells of one block unfills the block (Mender::Unfill).
-    cells_a.clear();
-    cells_b.clear();
-    shares_a.clear();
-    shares_b.clear();
+    // goals are walked), then their cells in the goals' order: the order
+    // decides which of two cells of one block unfills the block
+    // (Mender::Unfill).
     plans_a.Reset(on_original);
-    WalkSide(original, decoded, source, a, b, MendSide::kOnOriginal, &plans_a, &cells_a, &shares_a);
+    WalkSide(searches, MendSide::kOnOriginal, &plans_a, &walks_a);
     plans_b.Reset(on_decoded);
-    WalkSide(original, decoded, source, a, b, MendSide::kOnDecoded, &plans_b, &cells_b, &shares_b);
-    std::size_t ia = 0, ib = 0;
-    while (ia < shares_a.size() || ib < shares_b.size()) {
-      const bool take_a =
-          ib == shares_b.size() || (ia < shares_a.size() && shares_a[ia].goal < shares_b[ib].goal);
-      const GoalCells& share = take_a ? shares_a[ia++] : shares_b[ib++];
-      const std::vector<std::size_t>& from = take_a ? cells_a : cells_b;
-      out.insert(out.end(), from.begin() + static_cast<std::ptrdiff_t>(share.begin),
-                 from.begin() + static_cast<std::ptrdiff_t>(share.end));
-    }
+    WalkSide(searches, MendSide::kOnDecoded, &plans_b, &walks_b);
+    AppendInGoalOrder(walks_a, walks_b, &out);
   }
   return out;
 }

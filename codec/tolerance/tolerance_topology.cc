@@ -121,18 +121,18 @@ std::vector<std::pair<std::int32_t, std::int32_t>> LabelPairs(const std::vector<
 }
 
 // The 4-neighbour i of cell j as a byte (kFromNone: none), and back.
-constexpr std::uint8_t kFromNone = 0, kFromPrevious = 1, kFromNext = 2, kFromRowBelow = 3,
-                       kFromRowAbove = 4;
+constexpr std::uint8_t kFromNone = 0, kFromPreviousColumn = 1, kFromNextColumn = 2,
+                       kFromRowBelow = 3, kFromRowAbove = 4;
 std::uint8_t FromOf(std::size_t i, std::size_t j, std::size_t w) {
-  if (i + 1 == j) return kFromPrevious;
-  if (i == j + 1) return kFromNext;
+  if (i + 1 == j) return kFromPreviousColumn;
+  if (i == j + 1) return kFromNextColumn;
   return i + w == j ? kFromRowBelow : kFromRowAbove;
 }
 std::size_t CellFrom(std::size_t j, std::uint8_t from, std::size_t w) {
   switch (from) {
-    case kFromPrevious:
+    case kFromPreviousColumn:
       return j - 1;
-    case kFromNext:
+    case kFromNextColumn:
       return j + 1;
     case kFromRowBelow:
       return j - w;
@@ -196,7 +196,9 @@ std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig
     });
   }
   std::vector<std::size_t> out;
-  std::vector<std::uint8_t>& walked = settled;  // settled is done with
+  // The search is over and `settled` is not read again: it marks the
+  // cells walked back from now on.
+  std::vector<std::uint8_t>& walked = settled;
   std::fill(walked.begin(), walked.end(), 0);
   for (const std::size_t first : piece_first) {
     std::size_t i = first;

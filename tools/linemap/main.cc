@@ -54,7 +54,9 @@ void PrintUsage(std::FILE* out) {
 void KeepLargeArraysForReuse() {
 #if defined(__GLIBC__)
   constexpr int kOneGiB = 1 << 30;
-  mallopt(M_MMAP_THRESHOLD, kOneGiB);
+  // A glibc that refuses a threshold this high (older releases cap it at
+  // 32 MiB) gets 32 MiB.
+  if (mallopt(M_MMAP_THRESHOLD, kOneGiB) == 0) (void)mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, kOneGiB);
   mallopt(M_ARENA_MAX, 1);
 #endif
