@@ -114,18 +114,21 @@ StatusOr<SaverArgs> ParseSaverArgs(const std::vector<std::string>& args) {
 // depot and 98 ms on its warehouse (1.7 Mcells) with glibc's defaults, 11
 // and 33 ms with the settings below (this project's 2-core VM, where a
 // page's first touch costs about 12 us). Arrays of up to 64 MB (16 Mcells
-// of 4 bytes) come from the heap, freed memory of up to 256 MB stays with
-// the process for the next save, and one arena serves both of the
-// encoder's threads (and roscpp's). A single save gains too (fewer arrays
-// mapped twice within it). A process-wide choice, so the node's, not the
-// library's (the `linemap` tool makes it too, with larger bounds: it saves
-// once and exits).
+// of 4 bytes; less where glibc caps the threshold, below) come from the
+// heap, freed memory of up to 256 MB stays with the process for the next
+// save, and one arena serves both of the encoder's threads (and roscpp's).
+// A single save gains too (fewer arrays mapped twice within it). A
+// process-wide choice, so the node's, not the library's (the `linemap`
+// tool makes it too, with larger bounds: it saves once and exits).
 void KeepSaveMemoryForReuse() {
 #if defined(__GLIBC__)
   constexpr int kMiB = 1 << 20;
-  // A glibc that refuses a threshold this high (older releases cap it at
-  // 32 MiB) gets 32 MiB.
-  if (mallopt(M_MMAP_THRESHOLD, 64 * kMiB) == 0) (void)mallopt(M_MMAP_THRESHOLD, 32 * kMiB);
+  // Older glibc refuses a threshold over half its heap size (32 MiB on
+  // 64-bit machines, 512 KiB on 32-bit ones): the largest it takes, halving
+  // down to its default of 128 KiB.
+  for (int bytes = 64 * kMiB; bytes >= 128 * 1024 && mallopt(M_MMAP_THRESHOLD, bytes) == 0;) {
+    bytes /= 2;
+  }
   mallopt(M_TRIM_THRESHOLD, 256 * kMiB);
   mallopt(M_ARENA_MAX, 1);
 #endif

@@ -180,7 +180,7 @@ class FewestChangesPlans {
         continue;
       }
       const std::int32_t own = other_cells[i] != Cell::kFree ? 1 : 0;
-      if (steps[i] <= 0) {  // the source (a goal is reached: steps >= 0)
+      if (steps[i] <= 0) {  // 0: the source (every cell queued is reached)
         changes_[i] = own;
         state_[i] |= kDone | kSource;
         pending_.pop_back();
@@ -220,9 +220,9 @@ class FewestChangesPlans {
     return waiting;
   }
 
-  // Works out cell i, whose nearer neighbours are worked out: its fewest changes are
-  // the least of theirs (ties to the first in ForEachWay's order) plus its
-  // own (`own`: 1 when it is not free in `other`).
+  // Works out cell i, whose nearer neighbours are worked out: its fewest
+  // changes are the least of theirs (ties to the first in ForEachWay's
+  // order) plus its own (`own`: 1 when it is not free in `other`).
   void Settle(std::size_t i, std::int32_t own) {
     const std::int32_t* steps = search_->steps().data();
     const std::int32_t before = steps[i] - 1;
@@ -305,8 +305,9 @@ struct SideWalks {
   std::vector<Share> shares;
 };
 
-// Walks `plans` (reset on the search of `side`) to every goal free in both
-// grids whose disagreement `side` mends, in raster order, then frees them.
+// Walks `plans` (reset on the search of the grid whose plans `side`
+// mends) to every goal free in both grids whose disagreement `side` mends,
+// in raster order, then frees them.
 void WalkSide(const SourceSearches& s, MendSide side, FewestChangesPlans* plans, SideWalks* out) {
   out->cells.clear();
   out->shares.clear();

@@ -150,9 +150,11 @@ void AddRasterOnly(const Grid& grid, MapResult* result) {
 // The files coded for size (--compact), with the layers and without, and
 // the decode time of the first (median of `repeats`), timed in blocks
 // beside the default file's decode (`default_file`) as that one is beside
-// libpng's: timed on its own, its first run took the fresh memory of the
-// encodes before it, and the median of three moved by half from one bench
-// run to the next (2.4 and 3.7 ms at the median map).
+// libpng's, so that each timed run follows an untimed one rather than the
+// encodes' fresh memory. (Only the compact times are kept: the report's
+// ratios divide them by the default file's times beside libpng's.) The
+// median still moves by a third from one bench run to the next on this
+// project's VM (2.6 and 3.6 ms at the median map).
 void AddCompact(const Grid& grid, const std::vector<std::uint8_t>& default_file, int repeats,
                 MapResult* result) {
   EncodeOptions options;

@@ -26,7 +26,8 @@ struct RivalCodec {
 };
 
 struct LmapMeasure {
-  int repeats = 5;                  // timed encode and decode runs of the default file
+  int repeats = 5;                  // timed runs: the default file's encode and decode, the
+                                    // --compact file's decode
   bool memory = true;               // peak memory of its encode and decode (forks)
   std::optional<RivalCodec> rival;  // none: the default file timed alone
 };

@@ -54,9 +54,12 @@ void PrintUsage(std::FILE* out) {
 void KeepLargeArraysForReuse() {
 #if defined(__GLIBC__)
   constexpr int kOneGiB = 1 << 30;
-  // A glibc that refuses a threshold this high (older releases cap it at
-  // 32 MiB) gets 32 MiB.
-  if (mallopt(M_MMAP_THRESHOLD, kOneGiB) == 0) (void)mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  // Older glibc refuses a threshold over half its heap size (32 MiB on
+  // 64-bit machines, 512 KiB on 32-bit ones): the largest it takes, halving
+  // down to its default of 128 KiB.
+  for (int bytes = kOneGiB; bytes >= 128 * 1024 && mallopt(M_MMAP_THRESHOLD, bytes) == 0;) {
+    bytes /= 2;
+  }
   mallopt(M_TRIM_THRESHOLD, kOneGiB);
   mallopt(M_ARENA_MAX, 1);
 #endif

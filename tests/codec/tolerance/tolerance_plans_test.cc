@@ -1,12 +1,17 @@
-// PlanCulprits against a reference written from its contract alone, cell
-// for cell and in order: the fitting gives the culprits back in the order
-// they come (two culprits in one block can unfill it either way), so the
-// order is part of the result. The reference keeps everything a search
-// finds (whole-map arrays per source and side), the plain way the library
-// avoids for memory.
+// PlanCulprits against a plain re-implementation, cell for cell and in
+// order: its contract (tolerance_internal.h) and the rules
+// tolerance_plans.cc fixes besides (the sampled sources' sequence, ties to
+// the first neighbour in the order +col, -col, +row, -row, the goals in
+// raster order, a walk stopping at a cell walked for the same source and
+// side). The fitting gives the culprits back in the order they come (two
+// culprits in one block can unfill it either way), so the order is part of
+// the result. The reference keeps everything a search finds (whole-map
+// arrays per source and side), the plain way the library avoids for memory.
 #include <gtest/gtest.h>
 
+#include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -91,7 +96,19 @@ bool Agree(std::int32_t a, std::int32_t b) {
   return a < 0 || std::abs(b - a) <= kPlanLengthTolerance * a;
 }
 
-std::vector<std::size_t> ReferenceCulprits(const Grid& original, const Grid& decoded) {
+// What the reference's walks met, so that the test can tell that the
+// trials reach every case.
+struct WalkCases {
+  std::size_t on_original = 0;    // walks of the original's plans
+  std::size_t on_decoded = 0;     // walks of the decode's plans
+  std::size_t both_sides = 0;     // sources with walks on both sides
+  std::size_t gone = 0;           // goals reached on the original only
+  std::size_t new_plans = 0;      // goals reached on the decode only
+  std::size_t stopped_early = 0;  // walks stopped at a cell walked before
+};
+
+std::vector<std::size_t> ReferenceCulprits(const Grid& original, const Grid& decoded,
+                                           WalkCases* cases) {
   std::vector<std::size_t> out;
   for (const std::size_t source : Sources(original, decoded)) {
     std::vector<std::size_t> order_a, order_b;
@@ -100,6 +117,7 @@ std::vector<std::size_t> ReferenceCulprits(const Grid& original, const Grid& dec
     const std::vector<std::size_t> before_a = FewestChangesBefore(original, decoded, a, order_a);
     const std::vector<std::size_t> before_b = FewestChangesBefore(decoded, original, b, order_b);
     std::vector<bool> walked_a(original.size(), false), walked_b(original.size(), false);
+    bool walked_on_original = false, walked_on_decoded = false;
     for (std::size_t g = 0; g < original.size(); ++g) {
       if (g == source || original.cells()[g] != Cell::kFree || decoded.cells()[g] != Cell::kFree ||
           Agree(a[g], b[g])) {
@@ -107,14 +125,21 @@ std::vector<std::size_t> ReferenceCulprits(const Grid& original, const Grid& dec
       }
       // Longer or gone on the decode: the original's plan; else the decode's.
       const bool on_original = a[g] >= 0 && (b[g] < 0 || b[g] > a[g]);
+      (on_original ? walked_on_original : walked_on_decoded) = true;
+      ++(on_original ? cases->on_original : cases->on_decoded);
+      cases->gone += a[g] >= 0 && b[g] < 0 ? 1 : 0;
+      cases->new_plans += a[g] < 0 && b[g] >= 0 ? 1 : 0;
       const std::vector<std::size_t>& before = on_original ? before_a : before_b;
       std::vector<bool>& walked = on_original ? walked_a : walked_b;
       const Grid& other = on_original ? decoded : original;
-      for (std::size_t i = g; i != kNoCell && !walked[i]; i = before[i]) {
+      std::size_t i = g;
+      for (; i != kNoCell && !walked[i]; i = before[i]) {
         walked[i] = true;
         if (other.cells()[i] != Cell::kFree) out.push_back(i);
       }
+      cases->stopped_early += i != kNoCell ? 1 : 0;
     }
+    cases->both_sides += walked_on_original && walked_on_decoded ? 1 : 0;
   }
   return out;
 }
@@ -159,17 +184,23 @@ Grid RandomDecode(const Grid& original, std::mt19937* rng) {
 
 TEST(PlanCulpritsTest, EqualsTheReferenceCellForCellAndInOrder) {
   std::mt19937 rng(20261129);
-  std::size_t nonempty = 0;
+  WalkCases cases;
   for (int trial = 0; trial < 60; ++trial) {
     const int w = 12 + trial % 29, h = 10 + (trial * 7) % 23;
     const Grid original = RandomPlan(w, h, &rng);
     const Grid decoded = RandomDecode(original, &rng);
-    const std::vector<std::size_t> expected = ReferenceCulprits(original, decoded);
+    const std::vector<std::size_t> expected = ReferenceCulprits(original, decoded, &cases);
     EXPECT_EQ(PlanCulprits(original, decoded), expected) << "trial " << trial;
-    nonempty += expected.empty() ? 0 : 1;
   }
-  // The trials must reach the walks, not only agree on nothing.
-  EXPECT_GE(nonempty, 30u);
+  // The trials must reach every kind of walk, not only agree on nothing:
+  // both sides, both within one source (the merge of the two), plans gone
+  // and new, and walks that stop where an earlier one passed.
+  EXPECT_GT(cases.on_original, 0u);
+  EXPECT_GT(cases.on_decoded, 0u);
+  EXPECT_GT(cases.both_sides, 0u);
+  EXPECT_GT(cases.gone, 0u);
+  EXPECT_GT(cases.new_plans, 0u);
+  EXPECT_GT(cases.stopped_early, 0u);
 }
 
 }  // namespace
