@@ -44,8 +44,8 @@ std::vector<std::uint8_t> MovesOf(const Grid& grid) {
 // filled, was a tenth of the fitting's time (tsc at T = 1). The search
 // runs a level of steps at a time, so what it holds besides the steps is
 // two levels of cells, not every cell it reached (a list of those, 8 bytes
-// a cell reached in each of the two searches, was a third of the fitting's
-// peak memory).
+// a cell reached in each of the two searches, was a fifth of the fitting's
+// peak memory on tsc at T = 1).
 class FreeSearch {
  public:
   explicit FreeSearch(const Grid& grid)
