@@ -14,6 +14,7 @@
 #include "format/byte_io.h"
 #include "format/container.h"
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "linemap/tolerance.h"
 #include "linemap/vector_layers.h"
@@ -282,6 +283,54 @@ TEST(CellTilesTest, EncoderPicksTheTileSideByTheMapsSide) {
       EXPECT_EQ(*decoded, grid);
     } else {
       EXPECT_TRUE(CheckTolerance(grid, *decoded, c.tolerance).Holds());
+    }
+  }
+}
+
+// The cells of `window` of `grid`, row by row.
+std::vector<Cell> CellsIn(const Grid& grid, const CellWindow& w) {
+  std::vector<Cell> cells;
+  for (int r = w.row0; r < w.row1; ++r) {
+    for (int c = w.col0; c < w.col1; ++c) cells.push_back(grid.at(c, r));
+  }
+  return cells;
+}
+
+// A tile whose canvas rows lie a multiple of 2048 cells apart has its hints
+// drawn into a buffer of its own, other tiles into the canvas: both decode
+// the map, whole and by windows, on one thread and on two (which share the
+// buffers). Maps 2048, 4096 and 2047 cells wide, windows 2048 cells wide
+// and not, tiles of 256 cells with the layers' walls, rooms and furniture.
+TEST(CellTilesTest, TilesDecodeAlikeWhateverTheCanvasStride) {
+  for (const int width : {2048, 4096, 2047}) {
+    SCOPED_TRACE("width " + std::to_string(width));
+    const Grid grid = testing::TiledMap(Depot(), width, 600);
+    EncodeOptions options;
+    options.tile_size_cells = 256;
+    StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
+    ASSERT_TRUE(file.ok()) << file.status().ToString();
+    ASSERT_FALSE(DecodeLmapVectors(*file)->walls.empty());
+    for (const int threads : {1, 2}) {
+      SCOPED_TRACE("threads " + std::to_string(threads));
+      DecodeLimits limits;
+      limits.max_threads = threads;
+      StatusOr<Grid> decoded = DecodeLmap(*file, limits);
+      ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
+      EXPECT_EQ(decoded->cells(), grid.cells());
+      const int row_width = std::min(width, 2048);  // 2047 on the 2047-cell map
+      const CellWindow windows[] = {
+          {0, 256, row_width, 512},            // whole tiles
+          {width - row_width, 0, width, 600},  // the same at the right edge
+          {10, 100, 2000, 590},                // tiles cut by the window
+          {0, 0, width, 600},                  // the whole map
+      };
+      for (const CellWindow& w : windows) {
+        SCOPED_TRACE("window " + std::to_string(w.col0) + "," + std::to_string(w.row0) + "," +
+                     std::to_string(w.col1) + "," + std::to_string(w.row1));
+        StatusOr<Grid> region = DecodeLmapRegion(*file, w, limits);
+        ASSERT_TRUE(region.ok()) << region.status().ToString();
+        EXPECT_EQ(region->cells(), CellsIn(grid, w));
+      }
     }
   }
 }
