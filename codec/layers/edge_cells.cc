@@ -68,7 +68,7 @@ void EdgeCells::ForEachNewNeighbour(std::optional<CellIndex> previous, CellIndex
   }
 }
 
-std::vector<std::pair<std::size_t, double>> EdgeCells::Near(const LatticeSegment& s) const {
+std::vector<std::pair<std::size_t, double>> EdgeCells::Near(const LatticeSegment& s) {
   // Each candidate once (neighbourhoods of consecutive raster cells
   // overlap in 20 of their 25 cells): marked in the edge bytes while the
   // call runs, rather than sorted.

@@ -109,8 +109,8 @@ StatusOr<VectorLayers> ExtractWholeMapLayers(const Grid& grid, const EncodeOptio
   // large map's segmentation peaks while that task runs. The covering
   // walls read the same cells (found a third time before, 1.5 % of an
   // encode).
-  const EdgeCells edges(grid);
-  DropRedundantSegments(edges, &*segments);
+  EdgeCells edges(grid);
+  DropRedundantSegments(&edges, &*segments);
   // Within a tolerance the cells keep the scan specks within T cells, and
   // the walls are the map's walls without them: 7,300 of 158,000 bytes at
   // T = 1 over the 25 maps.

@@ -52,8 +52,9 @@ class EdgeCells {
 
   // The edge cells within kNearCells (Euclidean, to the segment) of the
   // segment with their distances, by cell index. They lie within two cells
-  // of the segment's rasterisation.
-  std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s) const;
+  // of the segment's rasterisation. Not const: it marks the cells it lists
+  // in the edge bytes while it runs (so one object serves one thread).
+  std::vector<std::pair<std::size_t, double>> Near(const LatticeSegment& s);
 
   // One byte per cell, non-zero exactly at the edge cells (as
   // ComputeEdgeMap's is_edge), except while Near() runs: it marks the cells
@@ -78,7 +79,7 @@ StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const Encod
 
 // Drops the segments whose near edge cells other kept segments hold about
 // as near (wall_segments.cc says how near, and why).
-void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments);
+void DropRedundantSegments(EdgeCells* edges, std::vector<LatticeSegment>* segments);
 
 // JoinSegments without the canonical order: a map's blocks are ordered
 // once, all together (ExtractVectorLayers), not each on its own first.

@@ -143,15 +143,14 @@ void AddOnWalls(const Grid& grid, const LatticeSegment& s, std::vector<LatticeSe
 // CELL bytes and raised DisPL_ave 2 %.
 constexpr double kMoveSlack = 0.5;  // cells
 
-void StraightenSegments(const Grid& grid, const EdgeCells& edges,
-                        std::vector<LatticeSegment>* segments) {
+void StraightenSegments(const Grid& grid, EdgeCells* edges, std::vector<LatticeSegment>* segments) {
   for (LatticeSegment& s : *segments) {
     const int dc = s.b.col - s.a.col, dr = s.b.row - s.a.row;
     if (dc == 0 || dr == 0) continue;
     const bool col_main = std::abs(dc) >= std::abs(dr);
     const int minor = col_main ? dr : dc;
     if (std::abs(minor) > 2) continue;
-    const std::vector<std::pair<std::size_t, double>> near = edges.Near(s);
+    const std::vector<std::pair<std::size_t, double>> near = edges->Near(s);
     // Candidates: a and b each moved by up to one cell across the main axis.
     std::vector<LatticeSegment> cands;
     for (int ma = -1; ma <= 1; ++ma) {
@@ -240,14 +239,14 @@ namespace layer_extraction_internal {
 // StraightenSegments (above); dropping every segment whose edge cells
 // within one cell others hold saved 3,200 WALL bytes but cost 750 CELL
 // bytes and doubled DisPL_ave on some maps (nav2/depot 0.13 -> 0.29).
-void DropRedundantSegments(const EdgeCells& edges, std::vector<LatticeSegment>* segments) {
+void DropRedundantSegments(EdgeCells* edges, std::vector<LatticeSegment>* segments) {
   // Every (edge cell, segment near it) pair, grouped by cell: flat arrays,
   // not hash maps, since a large map has millions of pairs.
   std::vector<NearPair> pairs;
   std::vector<std::size_t> first(segments->size() + 1,
                                  0);  // segment i: pairs [first[i], first[i+1])
   for (std::size_t i = 0; i < segments->size(); ++i) {
-    for (const auto& [c, d] : edges.Near((*segments)[i])) pairs.push_back({c, i, d});
+    for (const auto& [c, d] : edges->Near((*segments)[i])) pairs.push_back({c, i, d});
     first[i + 1] = pairs.size();
   }
   std::vector<std::size_t> by_cell = PairsByCell(pairs);
@@ -304,7 +303,8 @@ StatusOr<std::vector<LatticeSegment>> WallSegments(const Grid& grid, const Encod
   for (const LineSegment& line : lines) {
     AddOnWalls(grid, ToLattice(line, grid.width(), grid.height()), &segments);
   }
-  StraightenSegments(grid, EdgeCells(grid), &segments);
+  EdgeCells edges(grid);
+  StraightenSegments(grid, &edges, &segments);
   return segments;
 }
 

@@ -77,7 +77,7 @@ TEST(EdgeCellsTest, NearFindsWhatTheWholeNeighbourhoodsHold) {
   std::mt19937 rng(11);
   for (const auto& [w, h] : {std::pair{1, 1}, {3, 14}, {14, 3}, {23, 19}}) {
     const Grid grid = RandomGrid(w, h, &rng);
-    const EdgeCells edges(grid);
+    EdgeCells edges(grid);
     const std::vector<std::uint8_t> before(edges.bytes(), edges.bytes() + grid.size());
     std::uniform_int_distribution<int> col(0, w - 1), row(0, h - 1);
     for (int k = 0; k < 200; ++k) {
