@@ -387,8 +387,8 @@ files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``;
 version 2.3): on the bench corpus about 4.5 % smaller files (8.5 % with
-vectors=False) that decode in 2.6 against 1.0 ms at the median (a median
-4.0x per map, up to 7.4x).
+vectors=False) that decode in 3.2 against 1.1 ms at the median (a median
+4.7x per map, up to 10.6x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 27 bytes a cell (the default, 2^26 cells, about 1.8 GB); exact saves
