@@ -177,21 +177,30 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
 
 namespace {
 
-// Canvas rows a multiple of 2048 bytes apart fall on two or fewer sets of
-// a 64-set L1 cache (a set recurs every 4 KiB) and on few sets of L2, so
-// a tile's hints drawn straight into such a canvas evict themselves: every
-// vertical wall and room side is walked down the tile, a row at a time.
-// Generated office maps (tiles of 1024 cells, one thread, hints drawn in
-// place, decode CPU per Mcell): 4096 x 4096 cells 2.1 ms against 1.76 for
-// 4000 x 4000, 2048 x 2048 1.80 against 1.65-1.73 for 2560 and 3072 cells
-// a side. Such tiles draw their hints into a buffer of their own, whose
-// rows are tw + kHintPadding bytes apart (the same decode, then: 1.81 and
-// 1.68 ms); other strides draw in place, where a buffer only costs (2-5 %
-// more on the 3000- and 4000-cell maps).
+// Canvas rows a multiple of 2048 cells (bytes) apart fall on at most two
+// sets of a 64-set L1 cache, whose sets recur every 4 KiB, and on few sets
+// of L2, so a tile's hints drawn straight into such a canvas evict
+// themselves: every vertical wall and room side is walked down the tile a
+// row at a time, and the next walk, often a column away, finds its lines
+// gone. Generated office maps, tiles of 1024 cells, one thread, decode CPU
+// per Mcell with the hints drawn in place: 4096 x 4096 cells 2.1-2.2 ms
+// against 1.73-1.77 for 4000 x 4000, and 2048 x 2048 1.8-2.0 against
+// 1.65-1.75 for 2560 and 3072 cells a side. Tiles on such a canvas draw
+// their hints into a buffer of their own instead (4096 x 4096: 1.77-1.84
+// ms; 2048 x 2048: 1.66-1.87), whose rows are kHintPadding bytes longer
+// than the tile, so that they start a cache line apart even when the tile
+// is a multiple of 2048 cells wide. Other canvases keep drawing in place:
+// there the buffer cost 2-5 % more (the 3000- and 4000-cell maps).
 constexpr std::ptrdiff_t kAliasingStride = 2048;
 constexpr int kHintPadding = 64;
+// Tiles of more cells than this (possible in a file, up to 65536 a side;
+// the encoder writes 1024 at most) draw in place whatever the canvas: a
+// buffer per thread for them could cost gigabytes.
+constexpr std::int64_t kMaxBufferedTileCells = std::int64_t{1} << 22;
 
-bool StrideAliases(std::ptrdiff_t stride) { return stride % kAliasingStride == 0; }
+bool DrawsIntoBuffer(std::ptrdiff_t stride, int tw, int th) {
+  return stride % kAliasingStride == 0 && std::int64_t{tw} * th <= kMaxBufferedTileCells;
+}
 
 // Hint buffers of the tiles being decoded at once: a tile takes one and
 // gives it back for the next, so that a decode touches one buffer's
@@ -215,6 +224,31 @@ class HintBuffers {
   std::vector<std::vector<std::uint8_t>> free_;
 };
 
+// Decodes the first `rows` rows of tile t into `cells` (row r at cells + r
+// * stride) against the layers' hints, drawn for those rows and the row
+// after them, which the last row decoded reads.
+Status DecodeTileOverLayers(const LayerIndex& layers, CellRect t, const std::uint8_t* data,
+                            std::size_t size, int rows, Cell* cells, std::ptrdiff_t stride,
+                            HintBuffers* buffers) {
+  const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
+  CellRect drawn = t;
+  drawn.y1 = std::min(t.y1, t.y0 + rows + 1);
+  if (DrawsIntoBuffer(stride, tw, th)) {
+    const int hint_stride = tw + kHintPadding;
+    std::vector<std::uint8_t> hints = buffers->Take();
+    hints.resize(static_cast<std::size_t>(hint_stride) * (drawn.y1 - drawn.y0));
+    layers.DrawTileHints(drawn, hints.data(), hint_stride);
+    const Status status =
+        DecodeTileRows(data, size, hints.data(), hint_stride, tw, th, rows, cells, stride);
+    buffers->Give(std::move(hints));
+    return status;
+  }
+  // Drawn where the cells go, the decode reading each row's hints before
+  // writing its cells over them.
+  layers.DrawTileHints(drawn, reinterpret_cast<std::uint8_t*>(cells), stride);
+  return DecodeTileRowsOverHints(data, size, tw, th, rows, cells, stride);
+}
+
 }  // namespace
 
 Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
@@ -227,33 +261,17 @@ Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& 
   const TileLayout layout(width, height, static_cast<int>(tile_size));
   LINEMAP_ASSIGN_OR_RETURN(TileIndex index, ReadTileIndex(body, layout, &cursor));
   HintBuffers buffers;
-  return DecodeTilesInWindow(
-      body, layout, index, window, threads, out,
-      [&](CellRect t, const std::uint8_t* data, std::size_t size, int rows, Cell* cells,
-          std::ptrdiff_t stride) {
-        const int tw = t.x1 - t.x0, th = t.y1 - t.y0;
-        // Without layers every hint is zero: none to draw.
-        if (layers.empty()) {
-          return DecodeTileRows(data, size, nullptr, 0, tw, th, rows, cells, stride);
-        }
-        // The hints are drawn where the cells go, the decode reading each
-        // row's before writing its cells over them; the last row decoded
-        // reads the hints of the row after it.
-        CellRect drawn = t;
-        drawn.y1 = std::min(t.y1, t.y0 + rows + 1);
-        if (StrideAliases(stride)) {
-          const int hint_stride = tw + kHintPadding;
-          std::vector<std::uint8_t> hints = buffers.Take();
-          hints.resize(static_cast<std::size_t>(hint_stride) * (drawn.y1 - drawn.y0));
-          layers.DrawTileHints(drawn, hints.data(), hint_stride);
-          const Status status =
-              DecodeTileRows(data, size, hints.data(), hint_stride, tw, th, rows, cells, stride);
-          buffers.Give(std::move(hints));
-          return status;
-        }
-        layers.DrawTileHints(drawn, reinterpret_cast<std::uint8_t*>(cells), stride);
-        return DecodeTileRowsOverHints(data, size, tw, th, rows, cells, stride);
-      });
+  return DecodeTilesInWindow(body, layout, index, window, threads, out,
+                             [&](CellRect t, const std::uint8_t* data, std::size_t size, int rows,
+                                 Cell* cells, std::ptrdiff_t stride) {
+                               // Without layers every hint is zero: none to draw.
+                               if (layers.empty()) {
+                                 return DecodeTileRows(data, size, nullptr, 0, t.x1 - t.x0,
+                                                       t.y1 - t.y0, rows, cells, stride);
+                               }
+                               return DecodeTileOverLayers(layers, t, data, size, rows, cells,
+                                                           stride, &buffers);
+                             });
 }
 
 }  // namespace linemap

@@ -87,7 +87,9 @@ std::vector<std::uint8_t> EncodeCellChunk(const Grid& grid, const LayerIndex& la
                                           int threads, bool compact = false);
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
-// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.
+// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0. On an error the
+// cells of `out` are unspecified (partly decoded tiles; every caller drops
+// them).
 Status DecodeCellChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
                        int height, CellRect window, int threads, Cell* out);
 

@@ -201,6 +201,7 @@ struct CellsChunk {
   std::string type;
   int tile_side = 0;
   int block_side = 0;
+  std::vector<std::uint8_t> body;  // the chunk's payload, unwrapped
 };
 
 CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
@@ -214,7 +215,7 @@ CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
     StatusOr<std::vector<std::uint8_t>> body =
         UnwrapPayload(chunk.payload, chunk.size, DecodeLimits{}, &coder);
     EXPECT_TRUE(body.ok()) << body.status().ToString();
-    if (!body.ok()) return {chunk.type, 0};
+    if (!body.ok()) return {chunk.type, 0, 0, {}};
     ByteCursor cursor(*body);
     int block_side = 0;
     if (blocks) {
@@ -224,7 +225,7 @@ CellsChunk CellsChunkOf(const std::vector<std::uint8_t>& file) {
     }
     StatusOr<std::uint64_t> side = cursor.ReadVarint("tile side");
     EXPECT_TRUE(side.ok());
-    return {chunk.type, side.ok() ? static_cast<int>(*side) : 0, block_side};
+    return {chunk.type, side.ok() ? static_cast<int>(*side) : 0, block_side, *body};
   }
   return {};
 }
@@ -309,7 +310,9 @@ TEST(CellTilesTest, TilesDecodeAlikeWhateverTheCanvasStride) {
     options.tile_size_cells = 256;
     StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
     ASSERT_TRUE(file.ok()) << file.status().ToString();
-    ASSERT_FALSE(DecodeLmapVectors(*file)->walls.empty());
+    StatusOr<LmapVectors> vectors = DecodeLmapVectors(*file);
+    ASSERT_TRUE(vectors.ok()) << vectors.status().ToString();
+    ASSERT_FALSE(vectors->walls.empty());
     for (const int threads : {1, 2}) {
       SCOPED_TRACE("threads " + std::to_string(threads));
       DecodeLimits limits;
@@ -320,7 +323,7 @@ TEST(CellTilesTest, TilesDecodeAlikeWhateverTheCanvasStride) {
       const int row_width = std::min(width, 2048);  // 2047 on the 2047-cell map
       const CellWindow windows[] = {
           {0, 256, row_width, 512},            // whole tiles
-          {width - row_width, 0, width, 600},  // the same at the right edge
+          {width - row_width, 0, width, 600},  // whole tiles, every row, at the right edge
           {10, 100, 2000, 590},                // tiles cut by the window
           {0, 0, width, 600},                  // the whole map
       };
@@ -332,6 +335,32 @@ TEST(CellTilesTest, TilesDecodeAlikeWhateverTheCanvasStride) {
         EXPECT_EQ(region->cells(), CellsIn(grid, w));
       }
     }
+  }
+}
+
+// A window that ends inside a tile 2048 cells wide decodes the tile's rows
+// up to the window's last into a scratch copy 2048 cells wide, which
+// aliases as a 2048-cell map does: the buffer of hints then holds those
+// rows and the one after, which the last row's layer context reads (the
+// tiles must be coded with it: lse_arena's are, depot's are not).
+TEST(CellTilesTest, WindowsEndingInsideWideTilesDecodeTheirLastRow) {
+  StatusOr<Grid> arena = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  ASSERT_TRUE(arena.ok()) << arena.status().ToString();
+  const Grid grid = testing::TiledMap(*arena, 2048, 300);
+  EncodeOptions options;
+  options.tile_size_cells = 2048;
+  StatusOr<std::vector<std::uint8_t>> file = EncodeLmap(grid, options);
+  ASSERT_TRUE(file.ok()) << file.status().ToString();
+  const TileLayout layout(grid.width(), grid.height(), 2048);
+  const std::vector<unsigned> models = TileModels(CellsChunkOf(*file).body, layout);
+  ASSERT_EQ(models.size(), 1u);
+  ASSERT_GE(models[0], 4u) << "the tile is not coded with the layer context";
+  for (const int row1 : {1, 2, 37, 150, 299}) {
+    SCOPED_TRACE("rows 0.." + std::to_string(row1));
+    const CellWindow w{0, 0, 2048, row1};
+    StatusOr<Grid> region = DecodeLmapRegion(*file, w);
+    ASSERT_TRUE(region.ok()) << region.status().ToString();
+    EXPECT_EQ(region->cells(), CellsIn(grid, w));
   }
 }
 
