@@ -391,7 +391,7 @@ vectors=False) that decode in 3.2 against 1.1 ms at the median (a median
 4.7x per map, up to 10.6x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
-about 27 bytes a cell (the default, 2^26 cells, about 1.8 GB); exact saves
+about 25 bytes a cell (the default, 2^26 cells, about 1.7 GB); exact saves
 are not limited. Options the library refuses raise ValueError with its
 message.
 )doc");

@@ -48,8 +48,8 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
         Limit::kToleranceCells,
         "a map of " + std::to_string(grid.size()) + " cells is over the limit of " +
             std::to_string(options.max_tolerance_cells) +
-            " cells for saving within a tolerance (its checks hold about 27 bytes a cell, " +
-            std::to_string(grid.size() * 27 / 1000000) +
+            " cells for saving within a tolerance (its checks hold about 25 bytes a cell, " +
+            std::to_string(grid.size() * 25 / 1000000) +
             " MB here): save it exact (tolerance 0) or raise the limit (max_tolerance_cells, "
             "--max-tolerance-cells)");
   }

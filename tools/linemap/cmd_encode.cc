@@ -53,7 +53,7 @@ const CommandSpec kEncodeSpec = {
         {"--lossless", "", "the same as --tolerance 0 (the default)"},
         {"--max-tolerance-cells", "N",
          "refuse to save a map of more than N cells within a tolerance (default 67108864 = "
-         "2^26; 0: no limit): the checks hold about 27 bytes a cell"},
+         "2^26; 0: no limit): the checks hold about 25 bytes a cell"},
         {"--raster-only", "",
          "leave the vector layers out (with --compact: the smallest exact file)"},
         {"--straight-walls", "",
