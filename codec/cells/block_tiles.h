@@ -52,7 +52,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeBlockChunk(const Grid& original, const
                                                      int threads);
 
 // Decodes the tiles that meet `window` (inside the grid, non-empty) into
-// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0.
+// `out`, a (x1 - x0) x (y1 - y0) array, row-major from y0. On an error the
+// cells of `out` are unspecified (every caller drops them).
 Status DecodeBlockChunk(const std::vector<std::uint8_t>& body, const LayerIndex& layers, int width,
                         int height, CellRect window, int threads, Cell* out);
 

@@ -193,9 +193,9 @@ namespace {
 // there the buffer cost 2-5 % more (the 3000- and 4000-cell maps).
 constexpr std::ptrdiff_t kAliasingStride = 2048;
 constexpr int kHintPadding = 64;
-// Tiles of more cells than this (possible in a file, up to 65536 a side;
-// the encoder writes 1024 at most) draw in place whatever the canvas: a
-// buffer per thread for them could cost gigabytes.
+// Tiles of more cells than this (up to 65536 a side in a file, as
+// `tile_size_cells` asks; 1024 by default) draw in place whatever the
+// canvas: a buffer per thread for them could cost gigabytes.
 constexpr std::int64_t kMaxBufferedTileCells = std::int64_t{1} << 22;
 
 bool DrawsIntoBuffer(std::ptrdiff_t stride, int tw, int th) {

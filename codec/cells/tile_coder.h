@@ -128,7 +128,8 @@ Status DecodeTileRows(const std::uint8_t* data, std::size_t size, const std::uin
 // are read before its cells are written over them, so a tile needs no
 // buffer of hints of its own (a megabyte for a 1024-cell tile, whose pages
 // cost more to fault in than drawing the hints; DecodeCellChunk keeps one
-// per thread for canvases whose rows would share cache sets). On an error
+// per thread for tiles of up to 2^22 cells on canvases whose rows would
+// share cache sets). On an error
 // every cell of the rows wanted (and of the row after them) is unknown.
 Status DecodeTileRowsOverHints(const std::uint8_t* data, std::size_t size, int tile_width,
                                int tile_height, int rows_wanted, Cell* canvas,

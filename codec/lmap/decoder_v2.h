@@ -44,7 +44,8 @@ class V2CellDecoder {
   // wall segment and outline) the tile side does not need.
   static StatusOr<int> TileSizeOf(const V2File& file);
   // The cells of `window` (inside the map, non-empty) into `out`, a
-  // (x1 - x0) x (y1 - y0) array, row-major from y0; errors name the chunk.
+  // (x1 - x0) x (y1 - y0) array, row-major from y0; errors name the chunk,
+  // and leave the cells of `out` unspecified.
   Status Decode(CellRect window, int threads, Cell* out) const;
 
  private:

@@ -220,7 +220,7 @@ std::vector<std::size_t> ReconnectingCells(const std::vector<std::int32_t>& orig
   std::vector<std::uint8_t> piece_seen(dec_components + 1, 0);
   std::vector<std::size_t> piece_first;  // the first cell settled of each other piece
   std::vector<std::uint8_t> settled(n, 0);
-  for (std::size_t i; order.Pop(&i);) {
+  for (std::size_t i = 0; order.Pop(&i);) {
     if (settled[i]) continue;
     settled[i] = 1;
     if (dec[i] && dec[i] != main_piece[orig[i]] && !piece_seen[dec[i]]) {
