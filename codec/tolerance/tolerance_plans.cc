@@ -38,39 +38,39 @@ std::vector<std::uint8_t> MovesOf(const Grid& grid) {
 }
 
 // Breadth-first searches over the free cells of one grid, one source at a
-// time: the steps to every cell (-1 where unreachable). The steps array is
-// kept from one search to the next and only the span of cells the last
-// search reached is reset: a fresh array of the whole map per search,
-// filled, was a tenth of the fitting's time (tsc at T = 1). The search
-// runs a level of steps at a time, so what it holds besides the steps is
-// two levels of cells, not every cell it reached (a list of those, 8 bytes
-// a cell reached in each of the two searches, was a fifth of the fitting's
-// peak memory on tsc at T = 1).
+// time: the steps to every cell (-1 where a free cell is unreachable, -2 on
+// a cell that is not free). The steps array is kept from one search to the
+// next and only the span of cells the last search reached is reset: a fresh
+// array of the whole map per search, filled, was a tenth of the fitting's
+// time (tsc at T = 1). Cells that are not free hold -2 for good, so that a
+// search tests one array per neighbour (steps == -1: free and not reached
+// yet) rather than the steps and the cell. The search runs a level of steps
+// at a time, so what it holds besides the steps is two levels of cells, not
+// every cell it reached (a list of those, 8 bytes a cell reached in each of
+// the two searches, was a fifth of the fitting's peak memory on tsc at
+// T = 1).
 class FreeSearch {
  public:
-  explicit FreeSearch(const Grid& grid)
-      : grid_(grid), moves_(MovesOf(grid)), steps_(grid.size(), -1) {}
+  explicit FreeSearch(const Grid& grid) : grid_(grid), moves_(MovesOf(grid)), steps_(grid.size()) {
+    ResetSteps(0, grid.size());
+  }
 
   void Run(std::size_t source) {
-    if (reached_first_ <= reached_last_) {
-      std::fill(steps_.begin() + static_cast<std::ptrdiff_t>(reached_first_),
-                steps_.begin() + static_cast<std::ptrdiff_t>(reached_last_) + 1, -1);
-    }
+    if (reached_first_ <= reached_last_) ResetSteps(reached_first_, reached_last_ + 1);
     const std::size_t w = static_cast<std::size_t>(grid_.width());
     const std::size_t n = grid_.size();
-    reached_first_ = reached_last_ = source;
-    steps_[source] = 0;
+    std::int32_t* steps = steps_.data();
+    std::size_t first = source, last = source;
+    steps[source] = 0;
     level_.assign(1, source);
     for (std::int32_t s = 1; !level_.empty(); ++s) {
       next_.clear();
       for (const std::size_t i : level_) {
         const std::uint8_t moves = moves_[i];
         auto reach = [&](std::size_t j) {
-          if (steps_[j] < 0 && (moves_[j] & kFreeCell)) {
-            steps_[j] = s;
+          if (steps[j] == kUnreached) {
+            steps[j] = s;
             next_.push_back(j);
-            reached_first_ = std::min(reached_first_, j);
-            reached_last_ = std::max(reached_last_, j);
           }
         };
         if (moves & kToNextColumn) reach(i + 1);
@@ -78,14 +78,33 @@ class FreeSearch {
         if (i + w < n) reach(i + w);
         if (i >= w) reach(i - w);
       }
+      // The span reached, a level at a time (a level is not in cell order).
+      for (const std::size_t j : next_) {
+        first = std::min(first, j);
+        last = std::max(last, j);
+      }
       level_.swap(next_);
     }
+    reached_first_ = first;
+    reached_last_ = last;
   }
   const Grid& grid() const { return grid_; }
   const std::vector<std::uint8_t>& moves() const { return moves_; }
   const std::vector<std::int32_t>& steps() const { return steps_; }
 
  private:
+  static constexpr std::int32_t kUnreached = -1, kNotFree = -2;
+
+  // Steps [begin, end) back to before any search: -1 on free cells, -2 on
+  // the others.
+  void ResetSteps(std::size_t begin, std::size_t end) {
+    const std::uint8_t* moves = moves_.data();
+    std::int32_t* steps = steps_.data();
+    for (std::size_t i = begin; i < end; ++i) {
+      steps[i] = (moves[i] & kFreeCell) ? kUnreached : kNotFree;
+    }
+  }
+
   const Grid& grid_;
   std::vector<std::uint8_t> moves_;
   std::vector<std::int32_t> steps_;
