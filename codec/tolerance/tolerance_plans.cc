@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "codec/tolerance/simplify.h"
@@ -324,21 +325,41 @@ struct SideWalks {
   std::vector<Share> shares;
 };
 
-// Walks `plans` (reset on the search of the grid whose plans `side`
-// mends) to every goal free in both grids whose disagreement `side` mends,
-// in raster order, then frees them.
-void WalkSide(const SourceSearches& s, MendSide side, FewestChangesPlans* plans, SideWalks* out) {
-  out->cells.clear();
-  out->shares.clear();
+// The goals (cells free in both grids, but the source) whose plans
+// disagree, in raster order, by the side that mends them. Most cells have
+// equal steps (or neither search reaches them): stretches of equal steps
+// are skipped with memcmp, a block at a time, before any cell is read.
+void DisagreeingGoals(const SourceSearches& s, std::vector<std::size_t>* on_original,
+                      std::vector<std::size_t>* on_decoded) {
+  on_original->clear();
+  on_decoded->clear();
   const Cell* original_cells = s.original.cells().data();
   const Cell* decoded_cells = s.decoded.cells().data();
-  for (std::size_t g = 0; g < s.original.size(); ++g) {
-    // Equal steps (most cells) agree, and so do cells neither reaches: the
-    // first test skips them before the others are read.
-    if (s.a[g] == s.b[g] || g == s.source || original_cells[g] != Cell::kFree ||
-        decoded_cells[g] != Cell::kFree || SideToMend(s.a[g], s.b[g]) != side) {
+  const std::size_t n = s.original.size();
+  constexpr std::size_t kBlock = 64;
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t end = std::min(n, begin + kBlock);
+    if (std::memcmp(s.a + begin, s.b + begin, (end - begin) * sizeof(std::int32_t)) == 0) {
       continue;
     }
+    for (std::size_t g = begin; g < end; ++g) {
+      if (s.a[g] == s.b[g] || g == s.source || original_cells[g] != Cell::kFree ||
+          decoded_cells[g] != Cell::kFree) {
+        continue;
+      }
+      const MendSide side = SideToMend(s.a[g], s.b[g]);
+      if (side == MendSide::kOnOriginal) on_original->push_back(g);
+      if (side == MendSide::kOnDecoded) on_decoded->push_back(g);
+    }
+  }
+}
+
+// Walks `plans` (reset on the search of the grid whose plans the goals'
+// side mends) to each of `goals`, in order, then frees them.
+void WalkSide(const std::vector<std::size_t>& goals, FewestChangesPlans* plans, SideWalks* out) {
+  out->cells.clear();
+  out->shares.clear();
+  for (const std::size_t g : goals) {
     const std::size_t begin = out->cells.size();
     plans->AppendUnfreeOnPath(g, &out->cells);
     if (out->cells.size() > begin) out->shares.push_back({g, begin, out->cells.size()});
@@ -371,6 +392,7 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
   FreeSearch on_original(original), on_decoded(decoded);
   FewestChangesPlans plans_a(decoded), plans_b(original);
   SideWalks walks_a, walks_b;
+  std::vector<std::size_t> goals_a, goals_b;
   for (const std::size_t source : SampleCells(original, decoded)) {
     on_original.Run(source);
     on_decoded.Run(source);
@@ -380,10 +402,11 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded)
     // goals are walked), then their cells in the goals' order: the order
     // decides which of two cells of one block unfills the block
     // (Mender::Unfill).
+    DisagreeingGoals(searches, &goals_a, &goals_b);
     plans_a.Reset(on_original);
-    WalkSide(searches, MendSide::kOnOriginal, &plans_a, &walks_a);
+    WalkSide(goals_a, &plans_a, &walks_a);
     plans_b.Reset(on_decoded);
-    WalkSide(searches, MendSide::kOnDecoded, &plans_b, &walks_b);
+    WalkSide(goals_b, &plans_b, &walks_b);
     AppendInGoalOrder(walks_a, walks_b, &out);
   }
   return out;
