@@ -2,7 +2,7 @@
 // file and the PNG-9 of coarser maps, on ../shared/maps.
 //
 //   bench_tolerance [--maps DIR] [--only SUBSTR] [--cells-only] [--dump DIR] [--coarse-lmap]
-//                   [--svg OUT.svg]
+//                   [--free-space] [--svg OUT.svg]
 //
 // For T = 0..4 each map is saved as `linemap encode --tolerance T` saves it
 // (EncodeLmap with tolerance_cells = T, with and without the vector layers),
@@ -14,8 +14,9 @@
 // Plans from starts the checks never sample are counted too (cells-only
 // files). --cells-only skips the files with vector layers (much faster).
 // --coarse-lmap also prints the exact file of the coarser maps and of them
-// drawn back at full size. --dump writes PNGs of the decodes. --svg draws
-// the curve of bytes against T beside the anchors.
+// drawn back at full size. --free-space prints what the free space alone
+// costs, exact (FreeSpaceBytes), beside the anchors. --dump writes PNGs of
+// the decodes. --svg draws the curve of bytes against T beside the anchors.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -87,6 +88,24 @@ long LmapBytes(const Grid& g, bool layers) {
   EncodeOptions options;
   options.vector_layers = layers;
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(g, options);
+  return bytes.ok() ? static_cast<long>(bytes->size()) : -1;
+}
+
+// The map as free or not free, exact, coded as small as the codec codes
+// a map (--compact --raster-only): what the edge of the free space costs
+// when none of it moves. The plan guarantee holds every plan of up to 16
+// steps beside a change to its length, which lets little of that edge move
+// (a bump taken off a wall shortens the plans along it by 2 steps), so this
+// is the scale of what a file within a tolerance must spend on it.
+long FreeSpaceBytes(const Grid& g) {
+  Grid mask = g;
+  for (Cell& c : mask.mutable_cells()) {
+    if (c != Cell::kFree) c = Cell::kOccupied;
+  }
+  EncodeOptions options;
+  options.vector_layers = false;
+  options.compact = true;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(mask, options);
   return bytes.ok() ? static_cast<long>(bytes->size()) : -1;
 }
 
@@ -170,6 +189,7 @@ struct Row {
   std::string name;
   bool tuning = false;
   long png2 = 0, png4 = 0;
+  long free_space = -1;         // FreeSpaceBytes, with --free-space
   long cells[kMaxT + 1] = {};   // vector_layers = false
   long layers[kMaxT + 1] = {};  // default options
   bool holds[kMaxT + 1] = {};
@@ -206,6 +226,30 @@ void PrintSummary(const std::vector<Row>& rows, bool tuning, bool with_layers) {
                   kind ? "layers" : "cells", Median(e), mx(e), Median(p2), mx(p2), Median(p4),
                   mx(p4), held, n);
     }
+  }
+}
+
+// FreeSpaceBytes against the anchors and the files at T = 1 and 3 (cells
+// only), medians of the tuning and of the held-out maps.
+void PrintFreeSpace(const std::vector<Row>& rows) {
+  std::printf(
+      "\nthe free space alone, exact (free / not free, --compact --raster-only):\n"
+      "  maps      med/png2x  max/png2x  med/png4x  max/png4x  T=1 file/it  T=3 file/it\n");
+  for (const bool tuning : {true, false}) {
+    std::vector<double> p2, p4, t1, t3;
+    for (const Row& r : rows) {
+      if (r.tuning != tuning || r.free_space <= 0) continue;
+      const double f = static_cast<double>(r.free_space);
+      p2.push_back(f / r.png2);
+      p4.push_back(f / r.png4);
+      t1.push_back(r.cells[1] / f);
+      t3.push_back(r.cells[3] / f);
+    }
+    if (p2.empty()) continue;
+    auto mx = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+    std::printf("  %-8s  %9.3f  %9.3f  %9.3f  %9.3f  %11.3f  %11.3f\n",
+                tuning ? "tuning" : "held-out", Median(p2), mx(p2), Median(p4), mx(p4), Median(t1),
+                Median(t3));
   }
 }
 
@@ -319,6 +363,7 @@ int Run(int argc, char** argv) {
   std::string only;
   std::string dump;  // folder for PNGs of the original and simplified grids
   bool coarse_lmap = false;
+  bool free_space = false;
   std::string svg_path;  // the curve's figure
   bool with_layers = true;
   for (int i = 1; i < argc; ++i) {
@@ -332,6 +377,8 @@ int Run(int argc, char** argv) {
       dump = next();
     } else if (a == "--coarse-lmap") {
       coarse_lmap = true;
+    } else if (a == "--free-space") {
+      free_space = true;
     } else if (a == "--svg") {
       svg_path = next();
     } else if (a == "--cells-only") {
@@ -392,10 +439,15 @@ int Run(int argc, char** argv) {
                   LmapBytes(Upsampled(Coarser(g, 2), 2, g), false),
                   LmapBytes(Upsampled(Coarser(g, 4), 4, g), false));
     }
+    if (free_space) {
+      row.free_space = FreeSpaceBytes(g);
+      std::printf("    free space alone, exact: %ld bytes\n", row.free_space);
+    }
     rows.push_back(row);
   }
   PrintSummary(rows, true, with_layers);
   PrintSummary(rows, false, with_layers);
+  if (free_space) PrintFreeSpace(rows);
   PrintOtherPlans(rows);
   if (!svg_path.empty() && !rows.empty()) {
     std::FILE* f = std::fopen(svg_path.c_str(), "w");
