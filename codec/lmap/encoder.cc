@@ -111,8 +111,8 @@ StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
   const auto after_round = [&options](int rounds) {
     if (options.progress) options.progress(ToleranceRoundsProgress(rounds));
   };
-  LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks,
-                           FitBlockCells(grid, options.tolerance_cells, after_round));
+  LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks, FitBlockCells(grid, options.tolerance_cells,
+                                                            after_round, options.max_threads));
   *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
                        [](std::uint8_t r) { return r != 0; });
   const int f = blocks.block_cells;

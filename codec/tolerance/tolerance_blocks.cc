@@ -257,8 +257,9 @@ std::vector<std::size_t> LeakBridges(const Grid& original, const Grid& decoded) 
 // otherwise mends what fails first (distances, then topology, then plans).
 // `checked`: the decode the local plan check last ran on (empty before the
 // first), which the round updates when it runs it; `stretch_checked` the
-// same for the check along long stretches.
-bool MendRound(Mender* m, const OriginalNear& near, int t, Grid* checked, Grid* stretch_checked) {
+// same for the check along long stretches. `threads`: for the plan checks.
+bool MendRound(Mender* m, const OriginalNear& near, int t, int threads, Grid* checked,
+               Grid* stretch_checked) {
   std::vector<std::size_t> faults, lost_free;
   DistanceFaults(m->original, near, m->decoded, t, &faults, &lost_free);
   if (!faults.empty() || !lost_free.empty()) {
@@ -293,9 +294,11 @@ bool MendRound(Mender* m, const OriginalNear& near, int t, Grid* checked, Grid* 
   // ones agree, had cost tsc 5.1 s at T = 1 against 4.3.)
   std::vector<std::size_t> culprits = tolerance_internal::LocalDetourCulprits(
       m->original, m->decoded, LocalCheckSteps(m->b->block_cells),
-      checked->empty() ? nullptr : checked);
+      checked->empty() ? nullptr : checked, threads);
   *checked = m->decoded;
-  if (culprits.empty()) culprits = tolerance_internal::PlanCulprits(m->original, m->decoded);
+  if (culprits.empty()) {
+    culprits = tolerance_internal::PlanCulprits(m->original, m->decoded, threads);
+  }
   // The long stretches last: they are few, and most of their detours are
   // gone once the plans above agree.
   if (culprits.empty()) {
@@ -312,7 +315,7 @@ bool MendRound(Mender* m, const OriginalNear& near, int t, Grid* checked, Grid* 
 }  // namespace
 
 StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
-                                   const std::function<void(int)>& after_round) {
+                                   const std::function<void(int)>& after_round, int threads) {
   if (tolerance_cells < 1 || tolerance_cells > kMaxToleranceCells) {
     return InvalidArgumentError("tolerance " + std::to_string(tolerance_cells) +
                                 " cells is outside 1.." + std::to_string(kMaxToleranceCells));
@@ -323,7 +326,7 @@ StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
   for (int round = 0; round < kMaxRounds; ++round) {
     const Grid decoded = ComposeBlockCells(grid, b);
     Mender mender{grid, decoded, &b};
-    if (MendRound(&mender, near, tolerance_cells, &checked, &stretch_checked)) return b;
+    if (MendRound(&mender, near, tolerance_cells, threads, &checked, &stretch_checked)) return b;
     if (mender.mended == 0) break;  // nothing left to mend: the exact map below
     if (after_round) after_round(round + 1);
   }

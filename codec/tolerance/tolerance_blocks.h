@@ -27,9 +27,11 @@ namespace linemap {
 // cell restored (the exact map). `after_round`, when given, is called after
 // each round that mended cells without settling, with the number of rounds
 // done so far (the caller's progress: the rounds that run are not known
-// ahead).
+// ahead). The plan checks run on up to `threads` threads (0: one per core);
+// the result does not depend on them.
 StatusOr<BlockCells> FitBlockCells(const Grid& grid, int tolerance_cells,
-                                   const std::function<void(int)>& after_round = nullptr);
+                                   const std::function<void(int)>& after_round = nullptr,
+                                   int threads = 1);
 
 }  // namespace linemap
 

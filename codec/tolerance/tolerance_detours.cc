@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "codec/cells/cell_tiles.h"
 #include "codec/tolerance/simplify.h"
 #include "codec/tolerance/tolerance_internal.h"
 
@@ -221,34 +222,60 @@ void VisitPlans(int radius, const Grid& other, const LocalPlans& other_plans, Lo
   }
 }
 
-// Calls visit(plans, goal, holds) for every plan of up to `radius` steps
-// on either map from a cell free in both beside a change (see
-// LocalDetourCulprits; with `checked`, only from cells near a change since).
-template <typename Visit>
-void VisitLocalPlans(const Grid& original, const Grid& decoded, int radius, const Grid* checked,
-                     Visit&& visit) {
-  // A search from a cell reaches `radius` steps, so no farther in
-  // Chebyshev distance: where nothing changed that near since `checked`,
-  // every plan it makes is as it was then.
-  std::vector<std::uint8_t> near_change;
-  if (checked != nullptr) {
-    std::vector<std::uint8_t> changed(decoded.size());
-    for (std::size_t i = 0; i < decoded.size(); ++i) {
-      changed[i] = decoded.cells()[i] != checked->cells()[i];
+// The cells the local check searches from: free in both maps beside a
+// cell free in one only (ChangeSides), and with `checked`, only those near
+// a cell that differs from it. A search from a cell reaches `radius` steps,
+// so no farther in Chebyshev distance: where nothing changed that near
+// since `checked`, every plan it makes is as it was then.
+std::vector<std::size_t> LocalSources(const Grid& original, const Grid& decoded, int radius,
+                                      const Grid* checked) {
+  std::vector<std::size_t> sources = ChangeSides(original, decoded);
+  if (checked == nullptr) return sources;
+  std::vector<std::uint8_t> changed(decoded.size());
+  for (std::size_t i = 0; i < decoded.size(); ++i) {
+    changed[i] = decoded.cells()[i] != checked->cells()[i];
+  }
+  const std::vector<std::uint8_t> near_change =
+      WithinDistance(decoded.width(), decoded.height(), changed, radius);
+  std::erase_if(sources, [&near_change](std::size_t i) { return !near_change[i]; });
+  return sources;
+}
+
+// Sources per share of the local check's work. Each share makes its own
+// pair of searches (arrays of (2 radius + 1)^2 cells, some 140 KB at 32
+// steps) and its own result, and the shares' results are joined in order,
+// so the result does not depend on the threads.
+constexpr std::size_t kSourcesPerShare = 4096;
+
+// For each share of LocalSources, in order: visit(plans, goal, holds,
+// &result) for every plan of up to `radius` steps on either map from each
+// of its sources, `result` the share's own (a Result{} at first); the
+// shares run on up to `threads` threads (0: one per core). Returns the
+// shares' results in order.
+template <typename Result, typename Visit>
+std::vector<Result> VisitLocalPlans(const Grid& original, const Grid& decoded, int radius,
+                                    const Grid* checked, int threads, Visit&& visit) {
+  const std::vector<std::size_t> sources = LocalSources(original, decoded, radius, checked);
+  const std::size_t shares = (sources.size() + kSourcesPerShare - 1) / kSourcesPerShare;
+  std::vector<Result> results(shares);
+  ForEachIndexParallel(shares, threads, [&](std::uint64_t k) {
+    LocalPlans on_original(original, decoded, radius), on_decoded(decoded, original, radius);
+    const std::size_t end = std::min(sources.size(), (k + 1) * kSourcesPerShare);
+    Result& result = results[k];
+    const auto visit_share = [&](LocalPlans* plans, std::size_t goal, bool holds) {
+      visit(plans, goal, holds, &result);
+    };
+    for (std::size_t n = k * kSourcesPerShare; n < end; ++n) {
+      // A plan of up to `radius` steps on one map must be there in as many
+      // steps on the other: both searches go that deep.
+      on_original.Run(sources[n]);
+      on_decoded.Run(sources[n]);
+      // Longer on the decode (a detour), then shorter (a shortcut).
+      VisitPlans(radius, decoded, on_decoded, &on_original, visit_share);
+      VisitPlans(radius, original, on_original, &on_decoded, visit_share);
     }
-    near_change = WithinDistance(decoded.width(), decoded.height(), changed, radius);
-  }
-  LocalPlans on_original(original, decoded, radius), on_decoded(decoded, original, radius);
-  for (const std::size_t source : ChangeSides(original, decoded)) {
-    if (checked != nullptr && !near_change[source]) continue;
-    // A plan of up to `radius` steps on one map must be there in as many
-    // steps on the other: both searches go that deep.
-    on_original.Run(source);
-    on_decoded.Run(source);
-    // Longer on the decode (a detour), then shorter (a shortcut).
-    VisitPlans(radius, decoded, on_decoded, &on_original, visit);
-    VisitPlans(radius, original, on_original, &on_decoded, visit);
-  }
+  });
+  return results;
 }
 
 // A component (8-connected) of cells free on the original map only: its box
@@ -401,22 +428,30 @@ std::vector<std::size_t> StretchDetourCulprits(const Grid& original, const Grid&
 }
 
 std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
-                                             const Grid* checked) {
+                                             const Grid* checked, int threads) {
+  const std::vector<std::vector<std::size_t>> shares = VisitLocalPlans<std::vector<std::size_t>>(
+      original, decoded, radius, checked, threads,
+      [](LocalPlans* plans, std::size_t goal, bool holds, std::vector<std::size_t>* out) {
+        if (!holds) plans->AppendChanged(goal, out);
+      });
   std::vector<std::size_t> out;
-  VisitLocalPlans(original, decoded, radius, checked,
-                  [&out](LocalPlans* plans, std::size_t goal, bool holds) {
-                    if (!holds) plans->AppendChanged(goal, &out);
-                  });
+  for (const std::vector<std::size_t>& share : shares) {
+    out.insert(out.end(), share.begin(), share.end());
+  }
   return out;
 }
 
 LocalPlanCount CountLocalPlans(const Grid& original, const Grid& decoded, int radius) {
+  const auto count_plan = [](LocalPlans*, std::size_t, bool holds, LocalPlanCount* share) {
+    ++share->plans;
+    share->disagreements += holds ? 0 : 1;
+  };
   LocalPlanCount count;
-  VisitLocalPlans(original, decoded, radius, nullptr,
-                  [&count](LocalPlans*, std::size_t, bool holds) {
-                    ++count.plans;
-                    count.disagreements += holds ? 0 : 1;
-                  });
+  for (const LocalPlanCount& share :
+       VisitLocalPlans<LocalPlanCount>(original, decoded, radius, nullptr, 1, count_plan)) {
+    count.plans += share.plans;
+    count.disagreements += share.disagreements;
+  }
   return count;
 }
 

@@ -78,9 +78,10 @@ std::vector<std::size_t> FreeCover(const Grid& original, const Grid& decoded,
 // start plans through is found this way. With `checked` (a decode this
 // check found nothing on, or whose culprits were all mended since), only
 // the cells near a cell that differs from it are searched from: the plans
-// of the others are as they were.
+// of the others are as they were. The searches run on up to `threads`
+// threads (0: one per core); the result does not depend on them.
 std::vector<std::size_t> LocalDetourCulprits(const Grid& original, const Grid& decoded, int radius,
-                                             const Grid* checked = nullptr);
+                                             const Grid* checked = nullptr, int threads = 1);
 
 // The detours LocalDetourCulprits cannot see: a wall grown along a stretch
 // of free space longer than its `radius` steps, which a plan that runs along
@@ -131,8 +132,10 @@ bool PlansAgree(std::int32_t la, std::int32_t lb);
 // longer or missing, and the cells of the decoded plan that are not free in
 // the original where it is shorter or new. Giving them back their original
 // value makes those plans agree (the original plan is there again, the
-// shortcut gone), so a fitting loop settles in a few rounds.
-std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded);
+// shortcut gone), so a fitting loop settles in a few rounds. A start's two
+// searches run side by side when `threads` allows (0: one per core); the
+// result does not depend on it.
+std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded, int threads = 1);
 
 }  // namespace linemap::tolerance_internal
 

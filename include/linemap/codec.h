@@ -66,8 +66,10 @@ struct EncodeOptions {
   // Threads the encoder may use (the calling one included); 0 = one per
   // core (the default). 2.x files code their tiles in parallel and extract
   // the walls beside the rooms, on maps over 4096 cells a side the layers
-  // of two 2048-cell blocks at a time (each holds some 55 MB meanwhile).
-  // The bytes are the same for any number.
+  // of two 2048-cell blocks at a time (each holds some 55 MB meanwhile);
+  // within a tolerance the short plans' searches are shared out, and each
+  // sampled start's two whole-map searches run side by side. The bytes are
+  // the same for any number.
   int max_threads = 0;
   // Line extractor for the wall segments.
   LineMethod method = LineMethod::kLinemap;

@@ -379,6 +379,24 @@ TEST(ToleranceTest, GuaranteesHoldOnBundledMaps) {
   }
 }
 
+// The plan checks share their searches out over the encoder's threads; the
+// file must not depend on how many there are.
+TEST(ToleranceTest, FilesAreTheSameOnAnyNumberOfThreads) {
+  const Grid g = LoadBundled("turtlebot_apps/willow-2010-02-18-0.10.yaml");
+  ASSERT_FALSE(g.empty());
+  for (int t : {1, 3}) {
+    EncodeOptions options;
+    options.tolerance_cells = t;
+    options.vector_layers = false;
+    options.max_threads = 1;
+    StatusOr<std::vector<std::uint8_t>> one = EncodeLmap(g, options);
+    options.max_threads = 3;
+    StatusOr<std::vector<std::uint8_t>> three = EncodeLmap(g, options);
+    ASSERT_TRUE(one.ok() && three.ok());
+    EXPECT_EQ(*one, *three) << "T = " << t;
+  }
+}
+
 // On the bundled kth map at T = 3 the blocks grow walls along 39-45 cells
 // of free space, longer than the local plan check reaches: plans from these
 // two starts that run along such a wall and leave on the same side were 4

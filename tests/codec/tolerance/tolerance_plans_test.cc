@@ -191,6 +191,8 @@ TEST(PlanCulpritsTest, EqualsTheReferenceCellForCellAndInOrder) {
     const Grid decoded = RandomDecode(original, &rng);
     const std::vector<std::size_t> expected = ReferenceCulprits(original, decoded, &cases);
     EXPECT_EQ(PlanCulprits(original, decoded), expected) << "trial " << trial;
+    // A start's two searches side by side change nothing.
+    EXPECT_EQ(PlanCulprits(original, decoded, 2), expected) << "trial " << trial;
   }
   // The trials must reach every kind of walk, not only agree on nothing:
   // both sides, both within one source (the merge of the two), plans gone
