@@ -286,12 +286,14 @@ bool MendRound(Mender* m, const OriginalNear& near, int t, int threads, Grid* ch
   // looks only near what changed since it last ran, while the sampled
   // starts' plans are two searches of the whole map per start (32 a round,
   // most of a round's time). Those run once the short plans agree, and
-  // their few culprits cost a round of their own now and then. Over the 25
-  // maps of ../shared/maps at T = 1..4 (cells only) the saves took 130 s of
-  // CPU against 168 s when both ran every round (with FreeSearch's one-array
-  // test, which alone saves 3-9 %), and the files were 296,600 bytes
-  // against 296,713. (The opposite order, the short plans once the sampled
-  // ones agree, had cost tsc 5.1 s at T = 1 against 4.3.)
+  // their few culprits cost a round of their own now and then (over the 25
+  // maps of ../shared/maps at T = 1..4, 54 rounds more in all, at most 3
+  // more and 17 in all for one save). The saves (cells only) took 130 s of
+  // CPU against 168 s when both ran every round; 3-9 % of that is
+  // FreeSearch's one-array test, which came with it. The files were 296,600
+  // bytes against 296,713. (The opposite order, the short plans only once
+  // the sampled ones agree, had cost tsc 5.1 s at T = 1, in an older build,
+  // against 4.3 s with both every round.)
   std::vector<std::size_t> culprits = tolerance_internal::LocalDetourCulprits(
       m->original, m->decoded, LocalCheckSteps(m->b->block_cells),
       checked->empty() ? nullptr : checked, threads);

@@ -326,44 +326,48 @@ struct SideWalks {
   std::vector<Share> shares;
 };
 
-// The goals (cells free in both grids, but the source) whose plans
-// disagree, in raster order, by the side that mends them. Most cells have
-// equal steps (or neither search reaches them): stretches of equal steps
-// are skipped with memcmp, a block at a time, before any cell is read.
-void DisagreeingGoals(const SourceSearches& s, std::vector<std::size_t>* on_original,
-                      std::vector<std::size_t>* on_decoded) {
-  on_original->clear();
-  on_decoded->clear();
-  const Cell* original_cells = s.original.cells().data();
-  const Cell* decoded_cells = s.decoded.cells().data();
+// Cells per block of DifferingBlocks.
+constexpr std::size_t kStepBlock = 64;
+
+// The blocks of kStepBlock cells (block k: cells [64 k, 64 k + 64)) where
+// the two searches' steps differ, in order. Most cells have equal steps:
+// cells free in both grids that both searches reach as fast, or that
+// neither reaches (-1 on both), and cells free in neither (-2 on both), so
+// stretches of them are skipped with memcmp before any cell is read. Kept
+// as block numbers, at most an eighth of a byte a cell, rather than as the
+// goals: this is the phase the save's peak memory is budgeted for.
+void DifferingBlocks(const SourceSearches& s, std::vector<std::size_t>* blocks) {
+  blocks->clear();
   const std::size_t n = s.original.size();
-  constexpr std::size_t kBlock = 64;
-  for (std::size_t begin = 0; begin < n; begin += kBlock) {
-    const std::size_t end = std::min(n, begin + kBlock);
-    if (std::memcmp(s.a + begin, s.b + begin, (end - begin) * sizeof(std::int32_t)) == 0) {
-      continue;
-    }
-    for (std::size_t g = begin; g < end; ++g) {
-      if (s.a[g] == s.b[g] || g == s.source || original_cells[g] != Cell::kFree ||
-          decoded_cells[g] != Cell::kFree) {
-        continue;
-      }
-      const MendSide side = SideToMend(s.a[g], s.b[g]);
-      if (side == MendSide::kOnOriginal) on_original->push_back(g);
-      if (side == MendSide::kOnDecoded) on_decoded->push_back(g);
+  for (std::size_t begin = 0; begin < n; begin += kStepBlock) {
+    const std::size_t end = std::min(n, begin + kStepBlock);
+    if (std::memcmp(s.a + begin, s.b + begin, (end - begin) * sizeof(std::int32_t)) != 0) {
+      blocks->push_back(begin / kStepBlock);
     }
   }
 }
 
-// Walks `plans` (reset on the search of the grid whose plans the goals'
-// side mends) to each of `goals`, in order, then frees them.
-void WalkSide(const std::vector<std::size_t>& goals, FewestChangesPlans* plans, SideWalks* out) {
+// Walks `plans` (reset on the search of the grid whose plans `side` mends)
+// to every goal of `blocks` whose disagreement `side` mends: cells free in
+// both grids, but the source, in raster order. Then frees the plans.
+void WalkSide(const SourceSearches& s, const std::vector<std::size_t>& blocks, MendSide side,
+              FewestChangesPlans* plans, SideWalks* out) {
   out->cells.clear();
   out->shares.clear();
-  for (const std::size_t g : goals) {
-    const std::size_t begin = out->cells.size();
-    plans->AppendUnfreeOnPath(g, &out->cells);
-    if (out->cells.size() > begin) out->shares.push_back({g, begin, out->cells.size()});
+  const Cell* original_cells = s.original.cells().data();
+  const Cell* decoded_cells = s.decoded.cells().data();
+  const std::size_t n = s.original.size();
+  for (const std::size_t block : blocks) {
+    const std::size_t end = std::min(n, (block + 1) * kStepBlock);
+    for (std::size_t g = block * kStepBlock; g < end; ++g) {
+      if (s.a[g] == s.b[g] || g == s.source || original_cells[g] != Cell::kFree ||
+          decoded_cells[g] != Cell::kFree || SideToMend(s.a[g], s.b[g]) != side) {
+        continue;
+      }
+      const std::size_t begin = out->cells.size();
+      plans->AppendUnfreeOnPath(g, &out->cells);
+      if (out->cells.size() > begin) out->shares.push_back({g, begin, out->cells.size()});
+    }
   }
   plans->Release();
 }
@@ -393,7 +397,7 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded,
   FreeSearch on_original(original), on_decoded(decoded);
   FewestChangesPlans plans_a(decoded), plans_b(original);
   SideWalks walks_a, walks_b;
-  std::vector<std::size_t> goals_a, goals_b;
+  std::vector<std::size_t> blocks;
   for (const std::size_t source : SampleCells(original, decoded)) {
     // The two searches share nothing but the source: side by side on two
     // threads, without any memory more (the arrays are there anyway).
@@ -405,11 +409,11 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded,
     // goals are walked), then their cells in the goals' order: the order
     // decides which of two cells of one block unfills the block
     // (Mender::Unfill).
-    DisagreeingGoals(searches, &goals_a, &goals_b);
+    DifferingBlocks(searches, &blocks);
     plans_a.Reset(on_original);
-    WalkSide(goals_a, &plans_a, &walks_a);
+    WalkSide(searches, blocks, MendSide::kOnOriginal, &plans_a, &walks_a);
     plans_b.Reset(on_decoded);
-    WalkSide(goals_b, &plans_b, &walks_b);
+    WalkSide(searches, blocks, MendSide::kOnDecoded, &plans_b, &walks_b);
     AppendInGoalOrder(walks_a, walks_b, &out);
   }
   return out;

@@ -238,7 +238,7 @@ void PrintFreeSpace(const std::vector<Row>& rows) {
   for (const bool tuning : {true, false}) {
     std::vector<double> p2, p4, t1, t3;
     for (const Row& r : rows) {
-      if (r.tuning != tuning || r.free_space <= 0) continue;
+      if (r.tuning != tuning || r.free_space <= 0 || r.cells[1] < 0 || r.cells[3] < 0) continue;
       const double f = static_cast<double>(r.free_space);
       p2.push_back(f / r.png2);
       p4.push_back(f / r.png4);
