@@ -41,8 +41,8 @@ struct EncodeOptions {
   int tolerance_cells = 0;
   // Largest map (cells) saved within a tolerance; 0: no limit. The
   // tolerance checks hold the whole grid and some of its distance maps,
-  // about 25 bytes a cell at their peak (a 6000 x 6000 map at T = 1: 0.82
-  // GB and about 85 seconds), so a larger map is refused with
+  // about 25 bytes a cell at their peak (a 6000 x 6000 map at T = 1: 0.83
+  // GB and about 80 s of CPU), so a larger map is refused with
   // kResourceExhausted before any of them is made. The default, 2^26 cells
   // (about 1.7 GB), keeps a robot's save from exhausting its memory; an
   // exact save of any size needs about 1 byte a cell.
