@@ -400,7 +400,7 @@ std::vector<std::size_t> PlanCulprits(const Grid& original, const Grid& decoded,
   std::vector<std::size_t> blocks;
   for (const std::size_t source : SampleCells(original, decoded)) {
     // The two searches share nothing but the source: side by side on two
-    // threads, without any memory more (the arrays are there anyway).
+    // threads, with no more memory (both arrays exist anyway).
     ForEachIndexParallel(
         2, threads, [&](std::uint64_t map) { (map == 0 ? on_original : on_decoded).Run(source); });
     const SourceSearches searches{original, decoded, source, on_original.steps().data(),
