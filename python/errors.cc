@@ -1,8 +1,50 @@
 #include "python/errors.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdlib>
 
 namespace linemap::python {
+
+namespace {
+
+// The folder a new file for `path` is made in (format/file_io.cc's rule).
+std::string DirectoryOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+// Why writing `path` fails, as an errno, following the library's
+// AtomicFileWriter: an existing file (symlinks followed) is replaced only
+// when writable, by us and by someone (mode 0444 is refused even for root);
+// the new file is made in the target's folder. 0 when nothing here refuses.
+int WriteErrno(const std::string& path) {
+  std::string target = path;
+  struct stat st;
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISREG(st.st_mode)) {
+      if (::access(path.c_str(), W_OK) != 0) return errno;
+      if ((st.st_mode & 0222) == 0) return EACCES;
+    }
+    if (char* resolved = ::realpath(path.c_str(), nullptr)) {
+      target = resolved;
+      std::free(resolved);
+    }
+  } else if (errno != ENOENT) {
+    return errno;  // ENOTDIR, EACCES, ELOOP, ...: as open() fails
+  }
+  const std::string dir = DirectoryOf(target);
+  if (::stat(dir.c_str(), &st) != 0) return errno;
+  if (!S_ISDIR(st.st_mode)) return ENOTDIR;
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) return errno;
+  return 0;
+}
+
+}  // namespace
 
 PyObject* ExceptionTypeFor(StatusCode code) {
   switch (code) {
@@ -49,6 +91,21 @@ void RaiseStatus(const Status& status) {
     PyErr_SetString(ExceptionTypeFor(status.code()), status.message().c_str());
   }
   throw pybind11::error_already_set();
+}
+
+void RaiseWriteStatus(const Status& status, const std::vector<std::string>& outputs) {
+  if (status.code() == StatusCode::kIoError) {
+    for (const std::string& output : outputs) {
+      const int error_number = WriteErrno(output);
+      if (error_number == 0) continue;
+      // OSError(errno, message, filename) makes the subclass of errno's kind.
+      const pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(PyExc_OSError)(
+          error_number, status.message(), output);
+      PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+      throw pybind11::error_already_set();
+    }
+  }
+  RaiseStatus(status);
 }
 
 }  // namespace linemap::python

@@ -12,12 +12,20 @@
 //                                                as max_cells, not the machine's memory;
 //                                                .limit its keyword, or None)
 //   kInternal                                 -> RuntimeError
+//
+// A save's kIoError that the file system explains (a missing folder, a
+// read-only file or folder) is raised as open(path, "w") raises it: the
+// OSError subclass of its errno (FileNotFoundError ENOENT, PermissionError
+// EACCES, NotADirectoryError ENOTDIR) with the output as `filename`
+// (RaiseWriteStatus).
 #ifndef LINEMAP_PYTHON_ERRORS_H_
 #define LINEMAP_PYTHON_ERRORS_H_
 
 #include <pybind11/pybind11.h>
 
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "linemap/status.h"
 
@@ -28,6 +36,14 @@ PyObject* ExceptionTypeFor(StatusCode code);
 
 // Raises `status` (not OK) as its Python exception. Needs the GIL.
 [[noreturn]] void RaiseStatus(const Status& status);
+
+// Raises `status` (not OK) of a save that writes `outputs` (in the order the
+// library opens them): a kIoError with the errno of the first output the
+// file system refuses (what open() would say; a file of mode 0444 is
+// EACCES even for root, as the library refuses it) as that OSError
+// subclass, errno, library message and output `filename`; anything else as
+// RaiseStatus. Needs the GIL.
+[[noreturn]] void RaiseWriteStatus(const Status& status, const std::vector<std::string>& outputs);
 
 inline void RaiseIfError(const Status& status) {
   if (!status.ok()) RaiseStatus(status);

@@ -88,7 +88,7 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg,
   std::optional<CellWindow> window;
   if (!window_cells_arg.is_none()) {
     window = WindowCellsArgument(window_cells_arg);
-    if (!IsLmapPath(path)) {
+    if (!IsLmapFile(path)) {
       throw py::value_error("'" + path +
                             "': window_cells needs an .lmap file (a map image is "
                             "read whole: load it and slice Map.cells)");
@@ -143,13 +143,21 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
-  if (!yaml && !EndsWith(path, ".lmap")) {
+  if (!yaml && !HasLmapName(path)) {
     throw py::value_error("'" + path + "': linemap.save writes .lmap or map .yaml files");
   }
   if (yaml) {
     CheckNoLmapOptions(path, tolerance, vectors, straight_walls, compact, max_tolerance_cells);
   }
   const Grid grid = GridFromMap(map);
+  // A map of no cells is a valid .lmap file (the format's width and height
+  // may be 0), but not a map image: PGM and map_server need a pixel.
+  if (yaml && grid.empty()) {
+    throw py::value_error("'" + path + "': cannot save a map of " + std::to_string(grid.width()) +
+                          " x " + std::to_string(grid.height()) +
+                          " cells as YAML + PGM: a map image has at least one row and one "
+                          "column (save an empty map as .lmap)");
+  }
   Status saved;
   {
     py::gil_scoped_release release;
@@ -158,7 +166,10 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
                             EncodeOptionsFor(tolerance, vectors, straight_walls, compact,
                                              max_tolerance_cells));
   }
-  RaiseIfError(saved);
+  if (!saved.ok()) {
+    RaiseWriteStatus(saved, yaml ? std::vector<std::string>{SavedImagePath(path), path}
+                                 : std::vector<std::string>{path});
+  }
 }
 
 void Convert(const py::object& source_arg, const py::object& path_arg, int tolerance, bool vectors,
@@ -167,17 +178,26 @@ void Convert(const py::object& source_arg, const py::object& path_arg, int toler
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string source = PathArgument(source_arg);
   const std::string path = PathArgument(path_arg);
-  if (!EndsWith(path, ".lmap")) {
+  if (!HasLmapName(path)) {
     throw py::value_error("'" + path + "': linemap.convert writes .lmap files");
   }
+  bool lmap_source = false;
   StatusOr<LmapSaveSummary> saved = InvalidArgumentError("not saved");
   {
     py::gil_scoped_release release;
-    saved = SaveRosMapAsLmap(
-        source, path,
-        EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
+    lmap_source = IsLmapFile(source);
+    if (!lmap_source) {
+      saved = SaveRosMapAsLmap(
+          source, path,
+          EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
+    }
   }
-  RaiseIfError(saved.status());
+  if (lmap_source) {
+    throw py::value_error("'" + source +
+                          "': linemap.convert reads a map YAML or a PGM / PNG image, not .lmap "
+                          "files; re-encode an .lmap file with save(path, load(source), ...)");
+  }
+  if (!saved.ok()) RaiseWriteStatus(saved.status(), {path});
 }
 
 py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls, bool compact,
@@ -376,10 +396,12 @@ names the file.
              py::arg("compact") = false,
              py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
-``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem) when it
-ends in .yaml or .yml; other names raise ValueError. The other options apply
-to .lmap files only: given other than their defaults with a .yaml path, they
-raise ValueError naming them. ``tolerance`` (cells) is how far the decoded
+``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem, .pgm)
+when it ends in .yaml or .yml, extensions in any case; other names raise
+ValueError. A map of 0 rows or columns saves as .lmap (the format allows it)
+but raises ValueError for a .yaml path (a map image has at least one
+pixel). The other options apply to .lmap files only: given other than their
+defaults with a .yaml path, they raise ValueError naming them. ``tolerance`` (cells) is how far the decoded
 map may differ from ``map``; 0 is exact. ``vectors`` stores the vector
 layers (walls, rooms, furniture) besides the cells.
 ``straight_walls`` draws one wall segment per straight wall (smaller exact
@@ -393,19 +415,25 @@ vectors=False) that decode in 3.2 against 1.1 ms at the median (a median
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 25 bytes a cell (the default, 2^26 cells, about 1.7 GB); exact saves
 are not limited. Options the library refuses raise ValueError with its
-message.
+message. An output that cannot be written raises the OSError open() would,
+with its errno and ``filename``: FileNotFoundError for a missing folder,
+PermissionError for a read-only file (mode 0444 is refused even for root)
+or folder; other write failures OSError.
 )doc");
   module.def("convert", &Convert, py::arg("source"), py::arg("path"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,
              py::arg("compact") = false,
              py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
 Saves the ROS map file ``source`` (a map YAML naming its image, or a bare
-PGM / PNG image) as the .lmap file ``path``, without making a Map: the
-bytes ``save(path, load(source), ...)`` writes (options as for save()). An
-exact file of a map over 4096 cells a side is coded as the image is read,
-a row of 2048-cell blocks at a time, so the grid is never held whole (a
-282-Mcell map in 0.8-0.9 bytes of memory per cell). Errors as load() and
-save() raise them, naming the file.
+PGM / PNG image) as the .lmap file ``path`` (extension in any case),
+without making a Map: the bytes ``save(path, load(source), ...)`` writes
+(options as for save()). An exact file of a map over 4096 cells a side is
+coded as the image is read, a row of 2048-cell blocks at a time, so the
+grid is never held whole (a 282-Mcell map in 0.8-0.9 bytes of memory per
+cell). An .lmap ``source``
+(by name or signature) raises ValueError: re-encode one with
+``save(path, load(source), ...)``. Errors as load() and save() raise them,
+naming the file.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
              py::arg("straight_walls") = false, py::arg("compact") = false,

@@ -1,6 +1,8 @@
 // How the module tells map files apart, as the CLI does
 // (tools/linemap/map_input.cc): .lmap files by name or signature, map YAML
-// by name, anything else as a bare image.
+// by name, anything else as a bare image. Names are matched in any case
+// ("MAP.LMAP", "Map.Yaml"), as the library's map readers and the CLI's
+// output checks match them.
 #ifndef LINEMAP_PYTHON_MAP_FILES_H_
 #define LINEMAP_PYTHON_MAP_FILES_H_
 
@@ -13,9 +15,18 @@
 
 namespace linemap::python {
 
-bool EndsWith(const std::string& text, const std::string& suffix);
+// True when `text` ends in `suffix` (lower case), in any case.
+bool EndsWithIgnoringCase(const std::string& text, const std::string& suffix);
 
+// A name ending in .yaml or .yml, in any case.
 bool IsYamlPath(const std::string& path);
+
+// A name ending in .lmap, in any case (whether or not the file exists).
+bool HasLmapName(const std::string& path);
+
+// An .lmap file by its name (HasLmapName) or, for a file that exists, by
+// its signature (IsLmapPath).
+bool IsLmapFile(const std::string& path);
 
 // An .lmap file within `limits`, or a map YAML or bare image refused beyond
 // limits.max_cells cells. Runs without the GIL.

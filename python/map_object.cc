@@ -316,7 +316,8 @@ nav_msgs/OccupancyGrid. Values are ``linemap.FREE`` (0), ``OCCUPIED`` (1) and
           py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0),
           "Map(cells, resolution=0.05, origin=(0, 0, 0)). `cells` is kept, not copied; "
           "an array of another dtype raises TypeError, of another shape or with values "
-          "other than 0, 1, 2 ValueError.")
+          "other than 0, 1, 2 ValueError. An array of 0 rows or columns is a map of no "
+          "cells, as the library's Grid: save() writes it as .lmap, not as .yaml.")
       .def_property(
           "cells", [](const Map& map) { return map.cells; },
           [](Map& map, const py::object& cells) {

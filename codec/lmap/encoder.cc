@@ -237,26 +237,36 @@ StatusOr<std::vector<std::uint8_t>> EncodeMapFile(const std::string& map_path,
   return names_the_map ? bytes.status() : bytes.status().WithContext(where);
 }
 
+Status WriteAndCommit(const std::vector<std::uint8_t>& bytes, AtomicFileWriter* out) {
+  LINEMAP_RETURN_IF_ERROR(
+      out->Append(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size())));
+  return out->Commit();
+}
+
 }  // namespace
 
 StatusOr<LmapSaveSummary> SaveRosMapAsLmap(const std::string& map_path,
                                            const std::string& lmap_path,
                                            const EncodeOptions& options, const MapLoadOptions& load,
                                            Durability durability) {
+  // The output is opened first: a missing directory or a read-only file
+  // is reported before the encode (minutes within a tolerance on a large
+  // map) rather than after it; the unnamed temporary leaves no trace when
+  // the encode fails.
+  LINEMAP_ASSIGN_OR_RETURN(AtomicFileWriter out, AtomicFileWriter::Open(lmap_path, durability));
   LmapSaveSummary summary;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
                            EncodeMapFile(map_path, options, load, &summary));
-  LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(
-      lmap_path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
-      durability));
+  LINEMAP_RETURN_IF_ERROR(WriteAndCommit(bytes, &out));
   summary.bytes = bytes.size();
   return summary;
 }
 
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options) {
+  // Opened first, as in SaveRosMapAsLmap.
+  LINEMAP_ASSIGN_OR_RETURN(AtomicFileWriter out, AtomicFileWriter::Open(path));
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes, EncodeLmap(grid, options));
-  return WriteFileAtomic(
-      path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  return WriteAndCommit(bytes, &out);
 }
 
 }  // namespace linemap

@@ -212,8 +212,10 @@ StatusOr<MapFileSummary> DecodeLmapToRosMap(const std::string& lmap_path,
                                             const DecodeLimits& limits = {},
                                             Durability durability = Durability::kSynced);
 
-// save(): encodes, then writes atomically (temporary file, fsync, rename), so
-// a crash or a full disk never leaves a broken file where a good one was.
+// save(): opens the output (a missing directory, a read-only file or a
+// directory there is reported before any work), encodes, then writes
+// atomically (temporary file, fsync, rename), so a crash or a full disk never
+// leaves a broken file where a good one was.
 Status SaveLmap(const std::string& path, const Grid& grid, const EncodeOptions& options = {});
 
 // What SaveRosMapAsLmap saved: the map's size (cells) and the file's bytes.
@@ -226,7 +228,7 @@ struct LmapSaveSummary {
 // Saves the ROS map at `map_path` (a map YAML or a bare PGM / PNG image,
 // read as LoadRosMap(map_path, load) reads it) as `lmap_path`: the bytes
 // EncodeLmap writes for that grid, written atomically (as SaveLmap, with
-// `durability`). An exact file (tolerance 0) of a map over 4096 cells a
+// `durability`; the output is opened before the map is read). An exact file (tolerance 0) of a map over 4096 cells a
 // side (more than one layer section) is coded as the image is read, a row of
 // 2048-cell layer blocks at a time, so the grid is never held whole: the 20,768 x
 // 13,612-cell office map (282 Mcells) saves with a peak of 0.8-0.9 bytes

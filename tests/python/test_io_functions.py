@@ -251,6 +251,175 @@ def test_save_refuses_other_suffixes_and_negative_tolerance(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("lmap_name,yaml_name", [
+    ("PYX.LMAP", "PYY.YAML"), ("Map.Lmap", "Map.YML"), ("up.lMaP", "up.Yml")])
+def test_save_and_convert_take_extensions_in_any_case(tmp_path, lmap_name, yaml_name):
+    # As load() and the CLI (`linemap encode D -o UP.LMAP`) take them.
+    m = linemap.load(BUNDLED["lse_arena"])
+    linemap.save(tmp_path / "lower.lmap", m)
+    linemap.save(tmp_path / lmap_name, m)
+    assert (tmp_path / lmap_name).read_bytes() == (tmp_path / "lower.lmap").read_bytes()
+    assert_same_map(linemap.load(tmp_path / lmap_name), m)
+    linemap.save(tmp_path / lmap_name, m, compact=True)  # .lmap options apply
+    assert_same_map(linemap.load(tmp_path / lmap_name), m)
+    yaml = tmp_path / yaml_name
+    linemap.save(yaml, m)
+    stem = yaml_name.rsplit(".", 1)[0]
+    assert (tmp_path / (stem + ".pgm")).exists()
+    assert_same_map(linemap.load(yaml), m)
+    with pytest.raises(ValueError, match=r"appl(y|ies) to \.lmap files"):
+        linemap.save(yaml, m, compact=True)  # still a YAML path
+    linemap.convert(yaml, tmp_path / ("converted." + lmap_name.rsplit(".", 1)[1]))
+    assert ((tmp_path / ("converted." + lmap_name.rsplit(".", 1)[1])).read_bytes() ==
+            (tmp_path / "lower.lmap").read_bytes())
+
+
+def test_window_cells_of_a_missing_upper_case_lmap_raise_file_not_found(tmp_path):
+    with pytest.raises(FileNotFoundError, match="NONE.LMAP"):
+        linemap.load(tmp_path / "NONE.LMAP", window_cells=(0, 0, 1, 1))
+
+
+@pytest.mark.parametrize("name", ["map.lmap", "map.yaml"])
+def test_save_into_a_missing_folder_raises_file_not_found_with_errno(tmp_path, name):
+    m = linemap.load(BUNDLED["lse_arena"])
+    target = tmp_path / "nodir" / name
+    with pytest.raises(FileNotFoundError) as caught:
+        linemap.save(target, m)
+    error = caught.value
+    assert error.errno == errno.ENOENT
+    # The output that could not be made: the .lmap, or the YAML's image
+    # (written first), as the library's message names it.
+    written = str(target) if name.endswith(".lmap") else str(target.with_suffix(".pgm"))
+    assert error.filename == written
+    assert written in error.strerror and "No such file or directory" in error.strerror
+    assert not target.parent.exists()
+
+
+def test_convert_into_a_missing_folder_raises_file_not_found_with_errno(tmp_path):
+    target = tmp_path / "nodir" / "map.lmap"
+    with pytest.raises(FileNotFoundError) as caught:
+        linemap.convert(BUNDLED["lse_arena"], target)
+    assert caught.value.errno == errno.ENOENT
+    assert caught.value.filename == str(target)
+    assert str(target) in caught.value.strerror
+
+
+def test_save_into_a_file_raises_not_a_directory(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    (tmp_path / "plain").write_bytes(b"")
+    with pytest.raises(NotADirectoryError) as caught:
+        linemap.save(tmp_path / "plain" / "map.lmap", m)
+    assert caught.value.errno == errno.ENOTDIR
+
+
+def read_only(path):
+    """chmod 0444 `path`; skips the test where the file system keeps no
+    mode bits."""
+    path.chmod(0o444)
+    if path.stat().st_mode & 0o222:
+        pytest.skip("the file system ignores chmod: no read-only file to save over")
+
+
+def save_over_read_only(target, save):
+    """The PermissionError of save() over the read-only `target`. The
+    library refuses a file of mode 0444 even for root (format/file_io.cc);
+    were it to write one where root may (open() would), the test skips."""
+    try:
+        save()
+    except PermissionError as error:
+        return error
+    if os.geteuid() == 0 and os.access(target, os.W_OK):
+        pytest.skip("root may write a 0444 file here and the library wrote it")
+    pytest.fail("saving over the read-only " + str(target) + " raised nothing")
+
+
+def test_save_over_a_read_only_file_raises_permission_error_and_leaves_it(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    target = tmp_path / "ro.lmap"
+    target.write_bytes(b"old")
+    read_only(target)
+    try:
+        error = save_over_read_only(target, lambda: linemap.save(target, m))
+        assert error.errno == errno.EACCES
+        assert error.filename == str(target)
+        assert str(target) in error.strerror and "read-only" in error.strerror
+        assert target.read_bytes() == b"old"
+        error = save_over_read_only(
+            target, lambda: linemap.convert(BUNDLED["lse_arena"], target))
+        assert error.errno == errno.EACCES and error.filename == str(target)
+        assert target.read_bytes() == b"old"
+    finally:
+        target.chmod(0o644)
+
+
+def test_yaml_save_over_a_read_only_image_names_the_image(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    yaml = tmp_path / "map.yaml"
+    linemap.save(yaml, m)
+    image = tmp_path / "map.pgm"
+    before = (yaml.read_bytes(), image.read_bytes())
+    read_only(image)
+    try:
+        empty = linemap.Map(np.zeros((2, 2), np.uint8))
+        error = save_over_read_only(image, lambda: linemap.save(yaml, empty))
+        assert error.errno == errno.EACCES
+        assert error.filename == str(image)
+        assert (yaml.read_bytes(), image.read_bytes()) == before
+    finally:
+        image.chmod(0o644)
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into a folder of mode 0555")
+def test_save_into_a_read_only_folder_raises_permission_error(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o555)
+    try:
+        with pytest.raises(PermissionError) as caught:
+            linemap.save(folder / "map.lmap", m)
+        assert caught.value.errno == errno.EACCES
+        assert caught.value.filename == str(folder / "map.lmap")
+    finally:
+        folder.chmod(0o755)
+
+
+@pytest.mark.parametrize("shape", [(0, 3), (3, 0), (0, 0)])
+def test_an_empty_map_saves_as_lmap_and_is_refused_as_yaml(tmp_path, shape):
+    # The library's Grid and the .lmap format take 0 rows or columns; a map
+    # image (PGM, map_server) has at least one pixel.
+    m = linemap.Map(np.zeros(shape, np.uint8), 0.05, (1.0, 2.0, 0.0))
+    assert (m.height, m.width) == shape
+    linemap.save(tmp_path / "e.lmap", m)
+    back = linemap.load(tmp_path / "e.lmap")
+    assert back.cells.shape == shape and back.origin == (1.0, 2.0, 0.0)
+    assert (tmp_path / "e.lmap").read_bytes() == linemap.encode(m)
+    assert linemap.decode(linemap.encode(m)).cells.shape == shape
+    for name in ("e.yaml", "E.YML"):
+        with pytest.raises(ValueError) as caught:
+            linemap.save(tmp_path / name, m)
+        message = str(caught.value)
+        assert name in message
+        assert "%d x %d cells" % (shape[1], shape[0]) in message
+        assert "at least one row and one column" in message and ".lmap" in message
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["e.lmap"]
+
+
+def test_convert_refuses_lmap_sources_naming_load_and_save(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    lmap = tmp_path / "depot.lmap"
+    linemap.save(lmap, m)
+    renamed = tmp_path / "depot.bin"  # an .lmap file by its signature
+    renamed.write_bytes(lmap.read_bytes())
+    for source in (lmap, renamed, tmp_path / "UP.LMAP"):
+        with pytest.raises(ValueError) as caught:
+            linemap.convert(source, tmp_path / "x.lmap")
+        message = str(caught.value)
+        assert str(source) in message and "not .lmap files" in message
+        assert "save(path, load(source)" in message
+    assert not (tmp_path / "x.lmap").exists()
+
+
 @pytest.mark.parametrize("options,named", [
     ({"tolerance": 1}, ["tolerance"]),
     ({"compact": True}, ["compact"]),

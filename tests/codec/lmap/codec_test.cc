@@ -257,6 +257,33 @@ TEST(CodecTest, SaveAndLoad) {
   EXPECT_EQ(missing.status().code(), StatusCode::kNotFound);
 }
 
+// An output that cannot be written is reported before any work: the
+// encoder's progress callback is never called, and nothing is left behind.
+TEST(CodecTest, SavesRefuseAnUnwritableOutputBeforeEncoding) {
+  const std::string dir = testing::MakeTempDir("codec_save_early");
+  std::mt19937 rng(5);
+  const Grid grid = RandomGrid(rng, 40, 30, 7);
+  const std::string map_path = dir + "/map.yaml";
+  ASSERT_TRUE(SaveRosMap(map_path, grid).ok());
+  int progress_calls = 0;
+  EncodeOptions options;
+  options.progress = [&progress_calls](double) { ++progress_calls; };
+  const std::string missing = dir + "/missing/map.lmap";
+  const Status saved = SaveLmap(missing, grid, options);
+  EXPECT_FALSE(saved.ok());
+  EXPECT_NE(saved.ToString().find("missing"), std::string::npos) << saved.ToString();
+  const StatusOr<LmapSaveSummary> converted = SaveRosMapAsLmap(map_path, missing, options);
+  EXPECT_FALSE(converted.ok());
+  // A directory where the file should go.
+  EXPECT_FALSE(SaveLmap(dir, grid, options).ok());
+  EXPECT_FALSE(SaveRosMapAsLmap(map_path, dir, options).ok());
+  EXPECT_EQ(progress_calls, 0);
+  // The same options save once the output can be written.
+  ASSERT_TRUE(SaveLmap(dir + "/map.lmap", grid, options).ok());
+  EXPECT_GT(progress_calls, 0);
+  EXPECT_EQ(testing::ListDir(dir).size(), 3u);  // map.yaml, map.pgm, map.lmap
+}
+
 TEST(CompareGridsTest, CountsLeaksBetweenLargeRegions) {
   // Two 10x10 free rooms split by an occupied column; the decode opens it.
   Grid original(21, 10, Cell::kFree);
