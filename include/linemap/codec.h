@@ -228,12 +228,12 @@ struct LmapSaveSummary {
 // Saves the ROS map at `map_path` (a map YAML or a bare PGM / PNG image,
 // read as LoadRosMap(map_path, load) reads it) as `lmap_path`: the bytes
 // EncodeLmap writes for that grid, written atomically (as SaveLmap, with
-// `durability`; the output is opened before the map is read). An exact file (tolerance 0) of a map over 4096 cells a
-// side (more than one layer section) is coded as the image is read, a row of
-// 2048-cell layer blocks at a time, so the grid is never held whole: the 20,768 x
-// 13,612-cell office map (282 Mcells) saves with a peak of 0.8-0.9 bytes
-// per cell, where loading its grid alone takes 1. Other files are coded from
-// the loaded grid. Errors name the map file or its image.
+// `durability`; the output is opened before the map is read). An exact file
+// (tolerance 0) of a map over 4096 cells a side (more than one layer
+// section) is coded as the image is read, a row of 2048-cell layer blocks at
+// a time, so the grid is never held whole: the 20,768 x 13,612-cell office map (282 Mcells) saves
+// with a peak of 0.8-0.9 bytes per cell, where loading its grid alone takes 1. Other files are
+// coded from the loaded grid. Errors name the map file or its image.
 StatusOr<LmapSaveSummary> SaveRosMapAsLmap(const std::string& map_path,
                                            const std::string& lmap_path,
                                            const EncodeOptions& options = {},
