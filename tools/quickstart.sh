@@ -25,5 +25,5 @@ echo
 echo "== linemap export: the layers over the map -> $OUT/depot.svg (open it in a browser)"
 build/linemap export "$OUT/depot.lmap" -o "$OUT/depot.svg"
 echo
-echo "== linemap encode --raster-only: the smallest exact file, cells only"
+echo "== linemap encode --raster-only: an exact file of the cells alone (with --compact too: the smallest)"
 build/linemap encode "$MAP" --raster-only -o "$OUT/depot_cells.lmap"

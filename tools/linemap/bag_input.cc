@@ -74,6 +74,11 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
   if (!selection.all && IsDirectory(selection.out)) {
     return InvalidArgumentError("'" + selection.out + "' is a directory");
   }
+  // Before the bag is read: an output that cannot be written is refused
+  // now, not after every map on the topic has been encoded.
+  LINEMAP_RETURN_IF_ERROR(selection.all
+                              ? CheckOutputFolderWritable(selection.out, /*make_parents=*/false)
+                              : CheckOutputWritable(selection.out));
   // The int8 occupancies are read with map_saver's thresholds (0.65 / 0.25)
   // unless these are given.
   if (args.Get("--occupied-thresh")) {

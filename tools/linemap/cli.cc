@@ -1,10 +1,16 @@
 #include "tools/linemap/cli.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <limits>
 
@@ -45,6 +51,83 @@ std::string Alternatives(const std::vector<std::string>& items) {
     text += items[i];
   }
   return text;
+}
+
+// The folder holding `path` ("." for a bare name).
+std::string FolderOf(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+// The file a save to `path` replaces: the end of its chain of symlinks, as
+// the atomic save resolves it (a "current map" link keeps pointing at the
+// new file; a dangling link gives the name it points at). A link that
+// cannot be read is left to the save to report.
+std::string ResolveLinks(const std::string& path) {
+  constexpr int kMaxHops = 40;  // as the kernel's ELOOP limit
+  std::string target = path;
+  for (int hop = 0; hop < kMaxHops; ++hop) {
+    struct stat st;
+    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
+    char link[PATH_MAX];
+    const ssize_t n = ::readlink(target.c_str(), link, sizeof(link));
+    if (n <= 0 || static_cast<std::size_t>(n) >= sizeof(link)) return target;
+    const std::string text(link, static_cast<std::size_t>(n));
+    target = text[0] == '/' ? text : FolderOf(target) + "/" + text;
+  }
+  return target;
+}
+
+// `folder` exists, is a folder and we may make files in it; `what` names
+// the output the message is about.
+Status CheckFolderTakesFiles(const std::string& folder, const std::string& what) {
+  struct stat st;
+  if (::stat(folder.c_str(), &st) != 0) {
+    if (errno == ENOENT) {
+      return InvalidArgumentError("cannot write '" + what + "': the folder '" + folder +
+                                  "' does not exist");
+    }
+    return InvalidArgumentError("cannot write '" + what + "': cannot reach the folder '" + folder +
+                                "' (" + std::strerror(errno) + ")");
+  }
+  if (!S_ISDIR(st.st_mode)) {
+    return InvalidArgumentError("cannot write '" + what + "': '" + folder + "' is not a folder");
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    return InvalidArgumentError("cannot write '" + what + "': no new file can be made in '" +
+                                folder + "' (" + std::strerror(errno) + ")");
+  }
+  return Status::Ok();
+}
+
+// The option of `command` that raises `limit`, or "" when it has none.
+std::string LimitOption(const std::string& command, Limit limit) {
+  const char* name = "";
+  switch (limit) {
+    case Limit::kCells:
+      name = "--max-cells";
+      break;
+    case Limit::kFileBytes:
+      name = "--max-file-bytes";
+      break;
+    case Limit::kSegments:
+      name = "--max-segments";
+      break;
+    case Limit::kObjects:
+      name = "--max-objects";
+      break;
+    case Limit::kToleranceCells:
+      name = "--max-tolerance-cells";
+      break;
+    default:  // the chunk, inflated and chain limits have no option
+      return "";
+  }
+  for (const CommandEntry& entry : Commands()) {
+    if (entry.spec->name == command && FindOption(*entry.spec, name) != nullptr) return name;
+  }
+  return "";
 }
 
 }  // namespace
@@ -171,7 +254,9 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
       std::optional<std::string> value = inline_value;
       if (!value && i + 1 < args.size()) value = args[++i];
       if (!value) return usage_error(name + " needs a value (" + option->value_name + ")");
-      if (option->output && parsed.values.count(name) > 0) {
+      // Any value option, not only outputs: `--tolerance 2 --tolerance 0`
+      // would otherwise save exact without a word about the 2.
+      if (parsed.values.count(name) > 0) {
         return usage_error(name + " given twice ('" + parsed.values[name] + "' and '" + *value +
                            "'); give one " + option->value_name);
       }
@@ -198,15 +283,72 @@ bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix) {
 
 Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,
                             const std::string& format) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
   for (const std::string& extension : extensions) {
+    // "dir/.yaml" ends in .yaml but names no file before it (decode would
+    // write a hidden ".yaml" and ".pgm").
+    if (base.size() == extension.size() && EndsWithIgnoringCase("name" + base, extension)) {
+      return InvalidArgumentError("output '" + path + "' has no file name before " + extension +
+                                  ": give one, as in 'map" + extension + "'");
+    }
     if (EndsWithIgnoringCase(path, extension)) return Status::Ok();
   }
   return InvalidArgumentError("output '" + path + "' must end in " + Alternatives(extensions) +
                               ": it is written as " + format);
 }
 
+Status CheckOutputWritable(const std::string& path) {
+  if (path.empty()) return InvalidArgumentError("empty output file name");
+  const std::string target = ResolveLinks(path);
+  struct stat st;
+  if (::stat(target.c_str(), &st) == 0) {
+    if (S_ISDIR(st.st_mode)) {
+      return InvalidArgumentError("'" + path + "' is a directory; give a file name");
+    }
+    if (!S_ISREG(st.st_mode)) {
+      return InvalidArgumentError("'" + path + "' is not a regular file; not replacing it");
+    }
+    // As the save: no write permission for us, or none for anyone (root may
+    // write anything, but a 0444 map was made read-only on purpose).
+    if (::access(target.c_str(), W_OK) != 0 || (st.st_mode & 0222) == 0) {
+      char mode[8];
+      std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(st.st_mode & 07777));
+      return InvalidArgumentError("cannot replace '" + path + "': the file is read-only (mode " +
+                                  mode + "; make it writable or remove it)");
+    }
+  }
+  // The new file is made beside the one it replaces, then renamed over it.
+  return CheckFolderTakesFiles(FolderOf(target), path);
+}
+
+Status CheckOutputFolderWritable(const std::string& dir, bool make_parents) {
+  if (dir.empty()) return InvalidArgumentError("empty output folder name");
+  struct stat st;
+  if (::stat(dir.c_str(), &st) == 0) {
+    if (!S_ISDIR(st.st_mode)) return InvalidArgumentError("'" + dir + "' is not a folder");
+    return CheckFolderTakesFiles(dir, dir);
+  }
+  std::string parent = dir;
+  while (parent.size() > 1 && parent.back() == '/') parent.pop_back();
+  parent = FolderOf(parent);
+  if (make_parents) {
+    // create_directories makes every missing folder down from the nearest
+    // existing one.
+    while (parent != "." && parent != "/" && ::stat(parent.c_str(), &st) != 0 && errno == ENOENT) {
+      parent = FolderOf(parent);
+    }
+  }
+  return CheckFolderTakesFiles(parent, dir);
+}
+
 int ReportError(const std::string& command, const Status& status) {
-  std::cerr << "linemap " << command << ": " << status.message() << "\n";
+  std::string message = status.message();
+  const std::string option = LimitOption(command, status.limit());
+  if (!option.empty() && message.find(option) == std::string::npos) {
+    message += " (" + option + " N raises the limit)";
+  }
+  std::cerr << "linemap " << command << ": " << message << "\n";
   switch (status.code()) {
     case StatusCode::kInvalidArgument:
     case StatusCode::kNotFound:

@@ -24,9 +24,9 @@ struct OptionSpec {
   std::string name;        // "--json"
   std::string value_name;  // "X,Y"; empty for a flag without a value
   std::string help;        // one line, with the unit and the default
-  // Names a file or folder the command writes. ParseArgs refuses it given
-  // twice: the last one would win and the first file would silently never
-  // be written.
+  // Names a file or folder the command writes. ParseArgs refuses every
+  // option with a value given twice (the last one would win without a
+  // word: for an output the first file would silently never be written).
   bool output = false;
 };
 
@@ -82,9 +82,25 @@ bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix);
 Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,
                             const std::string& format);
 
+// Refuses, before any work, an output file that the atomic save at the end
+// would refuse after it: a directory, a file that is not regular or is
+// read-only, or a name whose folder is missing or not writable (symlinks are
+// followed as the save follows them). Creates nothing. kInvalidArgument
+// naming `path`: an output that cannot be written at all is bad usage (exit
+// 2), and finding it now spares minutes of encoding a large map.
+Status CheckOutputWritable(const std::string& path);
+
+// The same for a folder a command writes files into, making it when missing
+// (bench --svg-dir, encode BAG --all -o DIR): an existing `dir` must be a
+// writable folder; a missing one needs a writable parent folder, or with
+// `make_parents` (create_directories) a writable nearest existing ancestor.
+Status CheckOutputFolderWritable(const std::string& dir, bool make_parents);
+
 // Prints "linemap <command>: <message>" on stderr and returns the exit code
 // for the status: 2 for bad input (invalid, missing, corrupt, unsupported,
-// over a limit), 1 otherwise.
+// over a limit), 1 otherwise. A refusal over a limit (Status::limit()) that
+// the command has an option for names the option (--max-cells N) unless the
+// message does already.
 int ReportError(const std::string& command, const Status& status);
 
 // A command's entry point: argv after the command name.

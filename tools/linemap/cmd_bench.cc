@@ -70,21 +70,37 @@ struct BenchArgs {
 
 StatusOr<BenchArgs> BenchArgsFrom(const ParsedArgs& parsed) {
   BenchArgs args;
-  // A misnamed output is refused before the corpus is read, not after the
-  // run (minutes).
+  // A misnamed output, or one that cannot be written, is refused before the
+  // corpus is read, not after the run (minutes).
   args.md = parsed.Get("--md");
-  if (args.md) LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.md, {".md"}, "Markdown"));
+  if (args.md) {
+    LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.md, {".md"}, "Markdown"));
+    LINEMAP_RETURN_IF_ERROR(CheckOutputWritable(*args.md));
+  }
   args.csv = parsed.Get("--csv");
-  if (args.csv) LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.csv, {".csv"}, "CSV"));
+  if (args.csv) {
+    LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(*args.csv, {".csv"}, "CSV"));
+    LINEMAP_RETURN_IF_ERROR(CheckOutputWritable(*args.csv));
+  }
+  args.svg_dir = parsed.Get("--svg-dir");
+  if (args.svg_dir) {
+    LINEMAP_RETURN_IF_ERROR(CheckOutputFolderWritable(*args.svg_dir, /*make_parents=*/true));
+  }
   args.dirs = parsed.positional.empty() ? bench::DefaultCorpusDirs() : parsed.positional;
   if (args.dirs.empty()) return NotFoundError("no corpus: give a folder of maps");
-  args.svg_dir = parsed.Get("--svg-dir");
   LINEMAP_ASSIGN_OR_RETURN(args.options.repeats, parsed.GetInt("--repeats", 5));
   if (args.options.repeats < 1 || args.options.repeats > 100) {
     return InvalidArgumentError("--repeats must be in 1..100");
   }
-  LINEMAP_ASSIGN_OR_RETURN(args.scaling_max, parsed.GetInt("--scaling-max", 64));
-  if (args.scaling_max < 0) return InvalidArgumentError("--scaling-max must be >= 0");
+  // The scaling table has rows of 1, 4, 16 and 64 Mcells; another value
+  // would silently stop at the row below it.
+  const StatusOr<int> scaling_max = parsed.GetInt("--scaling-max", 64);
+  if (!scaling_max.ok() || (*scaling_max != 0 && *scaling_max != 1 && *scaling_max != 4 &&
+                            *scaling_max != 16 && *scaling_max != 64)) {
+    return InvalidArgumentError("--scaling-max must be 0 (skip), 1, 4, 16 or 64, not '" +
+                                parsed.Get("--scaling-max").value_or("") + "'");
+  }
+  args.scaling_max = *scaling_max;
   args.options.measure_memory = !parsed.Has("--no-memory");
   args.options.jbig = !parsed.Has("--no-jbig");
   args.options.webp = !parsed.Has("--no-webp");

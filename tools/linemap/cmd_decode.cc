@@ -19,16 +19,20 @@ namespace {
 // Refuses outputs that are no map YAML or would replace the input file (only
 // possible when an .lmap is named *.yaml or *.pgm; by device and inode, so
 // links count too).
+// Before any decoding, which takes long on a huge map: SaveRosMap refuses
+// the name and the save an output it cannot write, but only once the map or
+// a window has been decoded.
 Status CheckOutput(const std::string& out, const std::string& in) {
   if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
-  // Before any decoding: SaveRosMap refuses the name too, but only once a
-  // window or a huge map has been decoded.
   LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(out, {".yaml", ".yml"}, "a map YAML"));
   for (const std::string& written : {out, SavedImagePath(out)}) {
     if (IsSameFile(written, in)) {
       return InvalidArgumentError("output '" + written + "' is the input file '" + in +
                                   "'; give another output name");
     }
+  }
+  for (const std::string& written : {out, SavedImagePath(out)}) {
+    LINEMAP_RETURN_IF_ERROR(CheckOutputWritable(written));
   }
   return Status::Ok();
 }

@@ -82,7 +82,8 @@ const CommandSpec kEncodeSpec = {
          "robot pose in map-frame metres (on the map), stored as metadata; the wall lines and "
          "rooms are then those of its free space"},
         {"--time", "TEXT",
-         "creation time stored as metadata (default: none, for reproducible output)"},
+         "creation time stored as metadata, ISO 8601 as the format's `time` key is (default: "
+         "none, for reproducible output); control characters such as a newline are refused"},
         {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
         {"--no-png-ratio", "",
          "skip making the PNG-9 the ratio is printed against (skipped anyway above 2^26 "
@@ -147,7 +148,21 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     LINEMAP_ASSIGN_OR_RETURN(std::vector<double> pose, args.GetDoubleList("--pose", 2, 3));
     options.robot_pose = Pose2D{pose[0], pose[1], pose.size() > 2 ? pose[2] : 0.0};
   }
-  if (std::optional<std::string> time = args.Get("--time")) options.time = *time;
+  if (std::optional<std::string> time = args.Get("--time")) {
+    // The spec's `time` is ISO 8601 text, which holds no control character;
+    // a newline would also split the line `linemap info` prints it on.
+    const auto control = std::find_if(time->begin(), time->end(), [](char c) {
+      const auto byte = static_cast<unsigned char>(c);
+      return byte < 0x20 || byte == 0x7f;
+    });
+    if (control != time->end()) {
+      char code[8];
+      std::snprintf(code, sizeof(code), "0x%02x", static_cast<unsigned char>(*control));
+      return InvalidArgumentError(std::string("--time holds the control character ") + code +
+                                  ": give an ISO 8601 time such as 2024-05-01T12:00:00Z");
+    }
+    options.time = *time;
+  }
   if (args.Has("--metadata")) {
     options.creator = std::string("linemap ") + LINEMAP_VERSION_STRING;
     options.frame_id = "map";
@@ -157,11 +172,12 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
 
 // Refuses an output that would destroy the input: the map file itself or the
 // image its YAML names (same file by device and inode, so links count too).
+// Then refuses an output the save at the end could not write (a missing or
+// read-only folder, a read-only file, a directory) before the encode,
+// which takes minutes on a large map within a tolerance.
 Status CheckOutput(const std::string& out, const std::string& map_path) {
   if (IsDirectory(out)) return InvalidArgumentError("'" + out + "' is a directory");
-  if (!EndsWithIgnoringCase(out, ".lmap")) {
-    return InvalidArgumentError("output '" + out + "' must end in .lmap");
-  }
+  LINEMAP_RETURN_IF_ERROR(CheckOutputExtension(out, {".lmap"}, "an .lmap file"));
   if (IsSameFile(out, map_path)) {
     return InvalidArgumentError("output '" + out + "' is the input map '" + map_path +
                                 "'; give another output name");
@@ -172,7 +188,7 @@ Status CheckOutput(const std::string& out, const std::string& map_path) {
     return InvalidArgumentError("output '" + out + "' is the image '" + *image +
                                 "' of the input map '" + map_path + "'; give another output name");
   }
-  return Status::Ok();
+  return CheckOutputWritable(out);
 }
 
 // The pose must fall in a cell of the map (the cell whose square holds it).
@@ -203,19 +219,24 @@ struct EncodeReport {
   double seconds = 0;
 };
 
-// "2.2x smaller" / "1.1x larger" / "the same size" for a size ratio.
+// "2.2x smaller" / "1.1x larger" / "the same size" for a size ratio. Within
+// half a percent of 1 the factor would print as "1.00x" whichever way it
+// goes, so a percentage with two significant digits says it instead
+// ("0.22 % smaller").
 std::string SmallerOrLarger(double ratio) {
   char text[48];
-  // Two decimals near 1, where one would round 0.97 to "1.0x smaller".
-  const char* format_smaller = ratio > 0.8 ? "%.2fx smaller" : "%.1fx smaller";
-  const char* format_larger = ratio < 1.25 ? "%.2fx larger" : "%.1fx larger";
-  if (ratio > 0 && ratio < 1) {
-    std::snprintf(text, sizeof(text), format_smaller, 1.0 / ratio);
-  } else if (ratio > 1) {
-    std::snprintf(text, sizeof(text), format_larger, ratio);
-  } else {
-    std::snprintf(text, sizeof(text), "the same size");
+  if (!(ratio > 0) || ratio == 1) return "the same size";
+  const double factor = ratio < 1 ? 1.0 / ratio : ratio;
+  const char* direction = ratio < 1 ? "smaller" : "larger";
+  if (factor < 1.005) {
+    const double percent = ratio < 1 ? (1 - ratio) * 100 : (ratio - 1) * 100;
+    const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(percent))), 1, 9);
+    std::snprintf(text, sizeof(text), "%.*f %% %s", decimals, percent, direction);
+    return text;
   }
+  // Two decimals near 1, where one would round 0.97 to "1.0x smaller".
+  const bool near_one = ratio < 1 ? ratio > 0.8 : ratio < 1.25;
+  std::snprintf(text, sizeof(text), near_one ? "%.2fx %s" : "%.1fx %s", factor, direction);
   return text;
 }
 

@@ -44,8 +44,9 @@ const CommandSpec kExportSpec = {
     "CSV: rows layer,x1,y1,x2,y2, one per wall segment and per edge of every\n"
     "closed chain (a one-cell chain gives one zero-length row).\n"
     "GeoJSON: a FeatureCollection; walls are LineStrings, rooms and furniture\n"
-    "Polygons (rings of fewer than four positions padded with their last\n"
-    "point); properties layer and id, plus kind for rooms and room_id (null\n"
+    "Polygons (rings counter-clockwise, as RFC 7946 asks; rings of fewer than\n"
+    "four positions padded with their last point); properties layer and id, plus kind for rooms "
+    "and room_id (null\n"
     "when in no room) for furniture.\n"
     "SVG: the decoded map (free light, occupied black, unknown grey, as\n"
     "map_saver writes it) with walls in red, room borders in blue and\n"
@@ -74,9 +75,9 @@ int RunExport(const std::vector<std::string>& args) {
         "export",
         InvalidArgumentError("'" + *out + "' must end in .csv, .geojson (or .json) or .svg"));
   }
-  if (IsDirectory(*out)) {
-    return ReportError("export", InvalidArgumentError("'" + *out + "' is a directory"));
-  }
+  // Before the layers (and for SVG the map) are decoded.
+  const Status writable = CheckOutputWritable(*out);
+  if (!writable.ok()) return ReportError("export", writable);
   const Status limits_apply = CheckLayerLimitsApplyTo({parsed->positional[0]}, *parsed);
   if (!limits_apply.ok()) return ReportError("export", limits_apply);
   StatusOr<DecodeLimits> limits = DecodeLimitsFrom(*parsed);

@@ -1,5 +1,9 @@
 // linemap info MAP [--json]: size, resolution, origin and cell counts.
 #include <cstdio>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "linemap/codec.h"
 #include "tools/linemap/commands.h"
@@ -18,12 +22,19 @@ const CommandSpec kInfoSpec = {
     "or an .lmap file: then its version, header, chunks (size, coder), the\n"
     "decoded cell counts and its vector layers are printed: walls (polylines\n"
     "and the straight segments they are made of), rooms and furniture objects\n"
-    "(for a version 1.0 file: segments, room chains and blobs).",
+    "(for a version 1.0 file: segments, room chains and blobs), and its metadata\n"
+    "(creator, time, frame_id, robot_pose), one 'meta:' line per entry, with\n"
+    "control characters and backslashes escaped as in C (\\n, \\x1b, \\\\): the\n"
+    "format does not check the text (encode refuses them in --time).",
     WithMapLoadOptions({{"--json", "",
                          "print one JSON object with keys width, height, "
                          "resolution, origin, free, occupied, unknown (an .lmap file "
                          "also: version, lossless, walls, wall_segments, rooms, furniture, "
-                         "chunks; a 1.0 file segments, room_chains, blobs)"}}),
+                         "chunks, and metadata: an object of the file's metadata as text, "
+                         "such as creator, time, frame_id and robot_pose (\"x y yaw\"), "
+                         "from encode --metadata, --time and --pose, {} when it has none, a "
+                         "key stored more than once giving an array of its values; a 1.0 "
+                         "file also segments, room_chains, blobs)"}}),
     1,
     1,
 };
@@ -54,6 +65,57 @@ LayerCounts CountLayers(const LmapContents& c) {
     n.furniture = c.blob_outlines.size();
   }
   return n;
+}
+
+// The metadata as one JSON object. The format keeps a key stored more than
+// once with all its values, in order (spec/format.md, 4.3); such a key gets
+// the array of them, so that every key is named once.
+std::string MetadataJson(const std::vector<std::pair<std::string, std::string>>& metadata) {
+  std::vector<std::string> keys;
+  std::map<std::string, std::vector<std::string>> values;
+  for (const auto& [key, value] : metadata) {
+    if (values.count(key) == 0) keys.push_back(key);
+    values[key].push_back(value);
+  }
+  JsonObject json;
+  for (const std::string& key : keys) {
+    const std::vector<std::string>& all = values[key];
+    if (all.size() == 1) {
+      json.Add(key, all.front());
+      continue;
+    }
+    std::string array = "[";
+    for (const std::string& value : all) array += (array.size() > 1 ? "," : "") + JsonString(value);
+    json.AddRaw(key, array + "]");
+  }
+  return json.str();
+}
+
+// Metadata text as one line: the format does not validate it (linemap's
+// encode refuses control characters in --time, other writers may store
+// them), so control characters and backslashes are escaped as in C ("\n",
+// "\x1b", "\\") rather than breaking info's one field per line.
+std::string Printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02x", byte);
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 // `linemap info X.lmap`: the header fields, each chunk with its size and
@@ -97,7 +159,8 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
     json.Add("free", std::uint64_t{counts.free})
         .Add("occupied", std::uint64_t{counts.occupied})
         .Add("unknown", std::uint64_t{counts.unknown})
-        .AddRaw("chunks", chunks);
+        .AddRaw("chunks", chunks)
+        .AddRaw("metadata", MetadataJson(contents->metadata));
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -125,7 +188,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   std::printf("decoded:    %zu free, %zu occupied, %zu unknown\n", counts.free, counts.occupied,
               counts.unknown);
   for (const auto& [key, value] : contents->metadata) {
-    std::printf("meta:       %s = %s\n", key.c_str(), value.c_str());
+    std::printf("meta:       %s = %s\n", Printable(key).c_str(), Printable(value).c_str());
   }
   for (const LmapChunkInfo& c : contents->chunks) {
     std::printf("chunk:      %s %8zu bytes  %s\n", c.type.c_str(), c.payload_bytes,

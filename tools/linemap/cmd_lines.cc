@@ -111,7 +111,9 @@ int RunLines(const std::vector<std::string>& args) {
   std::optional<ParsedArgs> parsed = ParseArgs(kLinesSpec, args, &exit_code);
   if (!parsed) return exit_code;
   if (std::optional<std::string> out = parsed->Get("-o")) {
-    const Status named = CheckOutputExtension(*out, {".csv"}, "CSV");
+    Status named = CheckOutputExtension(*out, {".csv"}, "CSV");
+    // Before the extraction, not after it.
+    if (named.ok()) named = CheckOutputWritable(*out);
     if (!named.ok()) return ReportError("lines", named);
   }
   const std::string& map_path = parsed->positional[0];
@@ -125,8 +127,7 @@ int RunLines(const std::vector<std::string>& args) {
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!extraction.ok()) {
-    return ReportError("lines", Status(extraction.status().code(),
-                                       map_path + ": " + extraction.status().message()));
+    return ReportError("lines", extraction.status().WithContext("'" + map_path + "'"));
   }
   const LineFidelity fidelity = MeasureLineFidelity(extraction->edges, extraction->segments);
 

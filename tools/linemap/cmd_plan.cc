@@ -223,7 +223,9 @@ int RunPlan(const std::vector<std::string>& args) {
   std::optional<ParsedArgs> parsed = ParseArgs(kPlanSpec, args, &exit_code);
   if (!parsed) return exit_code;
   if (std::optional<std::string> svg = parsed->Get("--svg")) {
-    const Status named = CheckOutputExtension(*svg, {".svg"}, "SVG");
+    Status named = CheckOutputExtension(*svg, {".svg"}, "SVG");
+    // Before the plan, not after it.
+    if (named.ok()) named = CheckOutputWritable(*svg);
     if (!named.ok()) return ReportError("plan", named);
   }
   StatusOr<PlanRequest> request = RequestFrom(*parsed);
@@ -238,18 +240,18 @@ int RunPlan(const std::vector<std::string>& args) {
   StatusOr<Planner> planner = Planner::Create(*options, grid->meta.resolution);
   if (!planner.ok()) return ReportError("plan", planner.status());
   StatusOr<PlanResult> result = planner->Plan(*grid, *request);
-  if (!result.ok()) return ReportError("plan", result.status().WithContext(map_path));
+  if (!result.ok()) return ReportError("plan", result.status().WithContext("'" + map_path + "'"));
   const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 
   if (parsed->Get("--svg") && result->outcome != PlanOutcome::kStartOutsideMap &&
       result->outcome != PlanOutcome::kGoalOutsideMap) {
     const std::string svg_path = *parsed->Get("--svg");
     Status written = WriteFileAtomic(svg_path, Svg(*grid, *result));
-    if (!written.ok()) return ReportError("plan", written.WithContext(svg_path));
+    if (!written.ok()) return ReportError("plan", written);  // it names the file
   }
   if (parsed->Has("--json")) std::printf("%s\n", ResultJson(*result, ms).c_str());
   if (!result->found()) {
-    std::fprintf(stderr, "linemap plan: %s: %s\n", map_path.c_str(), result->message.c_str());
+    std::fprintf(stderr, "linemap plan: '%s': %s\n", map_path.c_str(), result->message.c_str());
     // A point off the map is bad input, as a --pose off the map is for
     // encode and segment; a start in an obstacle or a goal out of reach is
     // the planner's answer about this map.

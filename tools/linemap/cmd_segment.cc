@@ -2,7 +2,9 @@
 // [--pose X,Y] [--paper-border]: rooms split at doorways (default) or the
 // paper's room-border chains (Kosteley et al., section 3.2 B and C), and
 // furniture blobs, written in map-frame metres through cell centres.
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -67,6 +69,24 @@ std::string ChainJson(const Grid& grid, const std::vector<CellIndex>& chain, boo
   }
   if (close_ring && !chain.empty()) out += "," + PointJson(grid, chain.front());
   return out + "]";
+}
+
+// A closed GeoJSON ring through the chain, counter-clockwise as RFC 7946
+// asks of exterior rings: a chain traced clockwise is written backwards from
+// the same first cell. The turn is the same in cells and in metres (the
+// origin's yaw rotates, it does not mirror), so it is taken exactly on the
+// cell indices.
+std::string RingJson(const Grid& grid, const std::vector<CellIndex>& chain) {
+  std::int64_t twice_area = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const CellIndex& p = chain[i];
+    const CellIndex& q = chain[(i + 1) % chain.size()];
+    twice_area += std::int64_t{p.col} * q.row - std::int64_t{q.col} * p.row;
+  }
+  if (twice_area >= 0) return ChainJson(grid, chain, true);
+  std::vector<CellIndex> reversed = chain;
+  std::reverse(reversed.begin() + 1, reversed.end());
+  return ChainJson(grid, reversed, true);
 }
 
 std::string BoxJson(const Grid& grid, const BoundingBox& box) {
@@ -165,8 +185,7 @@ std::string GeoFeature(const JsonObject& props, const std::string& type,
 // A blob's ring: its outline, or its box when the outline has fewer than
 // the 3 distinct points a GeoJSON ring needs.
 std::string BlobRing(const Grid& grid, const FurnitureBlob& blob) {
-  return blob.outline.size() >= 3 ? ChainJson(grid, blob.outline, true)
-                                  : BoxRingJson(grid, blob.box);
+  return blob.outline.size() >= 3 ? RingJson(grid, blob.outline) : BoxRingJson(grid, blob.box);
 }
 
 std::string DoorJson(const Grid& grid, const Doorway& door) {
@@ -226,7 +245,7 @@ std::string RoomsGeoJson(const Grid& grid, const Segmentation& seg) {
         .Add("kind", RoomKindName(room.kind));
     // A ring needs 3 distinct points; a room that thin gets its box.
     const std::string ring =
-        room.chain.size() >= 3 ? ChainJson(grid, room.chain, true) : BoxRingJson(grid, room.box);
+        room.chain.size() >= 3 ? RingJson(grid, room.chain) : BoxRingJson(grid, room.box);
     add(GeoFeature(props, "Polygon", "[" + ring + "]"));
   }
   for (const Doorway& door : seg.doors) {
@@ -252,13 +271,18 @@ std::string RoomsGeoJson(const Grid& grid, const Segmentation& seg) {
   return top.str() + "\n";
 }
 
+// "1 corridor", "0 corridors", "2 rooms".
+std::string Counted(std::size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 void PrintRooms(const Segmentation& seg, double wall_ms) {
   std::size_t corridors = 0;
   for (const RoomBorder& room : seg.rooms) corridors += room.kind == RoomKind::kCorridor;
-  std::printf(
-      "rooms: %zu (%zu rooms, %zu corridors)  doors: %zu  blobs: %zu  time: %.2f ms (wall)\n",
-      seg.rooms.size(), seg.rooms.size() - corridors, corridors, seg.doors.size(), seg.blobs.size(),
-      wall_ms);
+  std::printf("rooms: %zu (%s, %s)  doors: %zu  blobs: %zu  time: %.2f ms (wall)\n",
+              seg.rooms.size(), Counted(seg.rooms.size() - corridors, "room", "rooms").c_str(),
+              Counted(corridors, "corridor", "corridors").c_str(), seg.doors.size(),
+              seg.blobs.size(), wall_ms);
   for (const RoomBorder& room : seg.rooms) {
     std::printf("room %d: %-8s %8.2f m^2  width %.2f m  chain %zu cells\n", room.id,
                 RoomKindName(room.kind), room.area_m2, room.width_m, room.chain.size());
@@ -272,14 +296,14 @@ std::string GeoJson(const Grid& grid, const Segmentation& seg) {
   std::string features;
   for (std::size_t i = 0; i < seg.rooms.size(); ++i) {
     if (!features.empty()) features += ",";
-    features += Feature("room_border", ChainJson(grid, seg.rooms[i].chain, true), i);
+    features += Feature("room_border", RingJson(grid, seg.rooms[i].chain), i);
   }
   for (std::size_t i = 0; i < seg.blobs.size(); ++i) {
     if (!features.empty()) features += ",";
     const FurnitureBlob& blob = seg.blobs[i];
     // A GeoJSON ring needs 3 distinct points; tiny blobs get their box.
-    const std::string ring = blob.outline.size() >= 3 ? ChainJson(grid, blob.outline, true)
-                                                      : BoxRingJson(grid, blob.box);
+    const std::string ring =
+        blob.outline.size() >= 3 ? RingJson(grid, blob.outline) : BoxRingJson(grid, blob.box);
     features += Feature("furniture", ring, i);
   }
   JsonObject top;
@@ -304,7 +328,9 @@ int RunSegment(const std::vector<std::string>& args) {
   if (!out_path || out_path->empty()) {
     return ReportError("segment", InvalidArgumentError("missing -o OUT.json"));
   }
-  const Status named = CheckOutputName(*out_path, *parsed);
+  Status named = CheckOutputName(*out_path, *parsed);
+  // Before the segmentation, not after it.
+  if (named.ok()) named = CheckOutputWritable(*out_path);
   if (!named.ok()) return ReportError("segment", named);
   const std::string& map_path = parsed->positional[0];
   StatusOr<Grid> grid = LoadMapArgument(map_path, *parsed);
@@ -343,13 +369,13 @@ int RunSegment(const std::vector<std::string>& args) {
   StatusOr<Segmentation> seg = SegmentMap(*grid, options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!seg.ok()) return ReportError("segment", seg.status().WithContext(map_path));
+  if (!seg.ok()) return ReportError("segment", seg.status().WithContext("'" + map_path + "'"));
   const bool geojson = parsed->Has("--geojson");
   const std::string text =
       paper ? (geojson ? GeoJson(*grid, *seg) : PlainJson(*grid, *seg))
             : (geojson ? RoomsGeoJson(*grid, *seg) : RoomsPlainJson(*grid, *seg));
   const Status written = WriteFileAtomic(*out_path, text);
-  if (!written.ok()) return ReportError("segment", written.WithContext(*out_path));
+  if (!written.ok()) return ReportError("segment", written);  // it names the file
   if (!paper) {
     PrintRooms(*seg, ms);
     return kExitOk;

@@ -27,6 +27,46 @@ std::string BoxText(const MetreBox& b) {
   return text;
 }
 
+// What the map covers, for a window past it. Unturned, the map's cell
+// centres span an axis-aligned box, which says it all. Turned by a yaw, the
+// box around its rectangle's corners also holds points off the map (a
+// window inside that box can still be refused), so the text says that the
+// window is taken in map-frame metres into the turned grid, which columns
+// and rows the grid has, and gives that box as the map's extent.
+std::string ExtentText(const MapMetadata& meta, int width, int height) {
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = meta;
+  char text[400];
+  if (meta.origin.yaw == 0) {
+    double ax, ay, bx, by;
+    frame.CellToWorld(0, 0, &ax, &ay);
+    frame.CellToWorld(width - 1, height - 1, &bx, &by);
+    std::snprintf(text, sizeof(text), "the map's %d x %d cells have centres from %g,%g to %g,%g m",
+                  width, height, ax, ay, bx, by);
+    return text;
+  }
+  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
+  bool first = true;
+  for (double col : {-0.5, width - 0.5}) {
+    for (double row : {-0.5, height - 0.5}) {
+      double x, y;
+      frame.CellToWorld(col, row, &x, &y);
+      min_x = first ? x : std::min(min_x, x);
+      min_y = first ? y : std::min(min_y, y);
+      max_x = first ? x : std::max(max_x, x);
+      max_y = first ? y : std::max(max_y, y);
+      first = false;
+    }
+  }
+  std::snprintf(text, sizeof(text),
+                "the window is taken in map-frame metres, and the map's grid (columns 0..%d, "
+                "rows 0..%d) is turned by its origin's yaw of %g rad: the cells are those the "
+                "window's corners fall in; the turned map spans x %g..%g m, y %g..%g m, a box "
+                "not all of which is on the map",
+                width - 1, height - 1, meta.origin.yaw, min_x, max_x, min_y, max_y);
+  return text;
+}
+
 StatusOr<CellWindow> WindowFromCellList(const std::vector<double>& v) {
   for (double x : v) {
     if (x != std::floor(x) || std::abs(x) > std::numeric_limits<int>::max()) {
@@ -72,17 +112,8 @@ StatusOr<CellWindow> WindowFromMetres(const MetreBox& box, const MapMetadata& me
     return InvalidArgumentError("--window " + BoxText(box) + " holds no cell centre");
   }
   if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height) {
-    Grid corners;
-    corners.meta = meta;
-    double ax, ay, bx, by;
-    corners.CellToWorld(0, 0, &ax, &ay);
-    corners.CellToWorld(width - 1, height - 1, &bx, &by);
-    char extent[160];
-    std::snprintf(extent, sizeof(extent),
-                  "the map's %d x %d cells have centres from %g,%g to %g,%g m", width, height, ax,
-                  ay, bx, by);
     return InvalidArgumentError("--window " + BoxText(box) + " covers " + WindowText(w) +
-                                ", past the map's border: " + extent);
+                                ", past the map's border: " + ExtentText(meta, width, height));
   }
   return w;
 }

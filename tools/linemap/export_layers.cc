@@ -1,5 +1,7 @@
 #include "tools/linemap/export_layers.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "tools/linemap/json.h"
@@ -37,15 +39,39 @@ std::string Properties(const ExportLayer& layer, const LayerFeature& f) {
   return o.str();
 }
 
+// Whether the ring through `points` runs clockwise (x east, y north): its
+// signed area (shoelace formula, taken about the first point so that
+// georeferenced origins far from 0 keep the precision) is below zero by more
+// than rounding. A chain enclosing nothing (out and back along a line)
+// keeps its order.
+bool IsClockwise(const std::vector<WorldPoint>& points) {
+  if (points.size() < 3) return false;
+  const WorldPoint& o = points.front();
+  double twice_area = 0;
+  double extent = 0;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const double px = points[i].x - o.x, py = points[i].y - o.y;
+    const double qx = points[i + 1].x - o.x, qy = points[i + 1].y - o.y;
+    twice_area += px * qy - qx * py;
+    extent = std::max({extent, std::abs(px), std::abs(py), std::abs(qx), std::abs(qy)});
+  }
+  return twice_area < -1e-9 * extent * extent;
+}
+
 std::string Geometry(const ExportLayer& layer, const LayerFeature& f) {
+  std::vector<WorldPoint> points = f.points;
+  // RFC 7946 3.1.6: an exterior ring runs counter-clockwise. The chains run
+  // either way (a room's border as it was traced), so a clockwise one is
+  // written backwards from the same first point.
+  if (layer.closed && IsClockwise(points)) std::reverse(points.begin() + 1, points.end());
   std::string coords;
-  for (const WorldPoint& p : f.points) coords += (coords.empty() ? "" : ",") + Position(p);
+  for (const WorldPoint& p : points) coords += (coords.empty() ? "" : ",") + Position(p);
   if (!layer.closed) return "{\"type\":\"LineString\",\"coordinates\":[" + coords + "]}";
   // A linear ring repeats its first position and has at least four: chains
   // of one or two cells (small furniture) are padded with their last point.
   std::size_t positions = f.points.size() + 1;
-  for (; positions < 4; ++positions) coords += "," + Position(f.points.back());
-  coords += "," + Position(f.points.front());
+  for (; positions < 4; ++positions) coords += "," + Position(points.back());
+  coords += "," + Position(points.front());
   return "{\"type\":\"Polygon\",\"coordinates\":[[" + coords + "]]}";
 }
 

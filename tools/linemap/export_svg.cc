@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string_view>
 
 #include "tools/linemap/lmap_cli_util.h"
 
@@ -30,6 +31,8 @@ LayerStyle StyleOf(const std::string& layer) {
 std::string Px(double v) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.2f", v);
+  // -0.004 (or -0.0: the rotation of a map without yaw) prints "-0.00".
+  if (std::string_view(text) == "-0.00") return "0.00";
   return text;
 }
 

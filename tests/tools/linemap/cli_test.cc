@@ -2,8 +2,15 @@
 // lmap_cli_util.cc), through the built CLI: counts and sizes are whole
 // numbers, and the help shows which parts of a pose are optional.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/testing/test_support.h"
@@ -280,6 +287,228 @@ TEST(CliTest, AnOutputNameWithTheRightExtensionIsWritten) {
     const CliResult r = RunCli(argv);
     EXPECT_EQ(r.exit_code, 0) << argv[0] << " " << argv.back() << ": " << r.err;
     EXPECT_TRUE(testing::FileExists(argv.back())) << argv.back();
+  }
+}
+
+// Every command that writes after its work refuses, before the work, an
+// output it could not write: into a missing folder, over a read-only file,
+// or a bench folder under a file. Exit 2 (bad usage, as an output that is a
+// directory), one line naming the output, nothing created anywhere and the
+// read-only file untouched. Before, encode ran the whole encode (minutes
+// within a tolerance on a large map) and plan the whole plan, then exit 1.
+TEST(CliTest, AnOutputThatCannotBeWrittenIsRefusedBeforeTheWork) {
+  namespace fs = std::filesystem;
+  const std::string dir = testing::MakeTempDir("cli_output_unwritable");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  const std::string corpus = testing::BundledMapsDir() + "/navtut";
+  const std::string missing = dir + "/no_such_folder";
+  testing::WriteFile(dir + "/file", "a file, not a folder\n");
+  struct Case {
+    std::vector<std::string> argv;  // the output last but for the ro_* name
+    std::string read_only;          // a name in `dir` to make read-only, or ""
+    std::string named;              // what the message must name
+  };
+  const std::vector<Case> cases = {
+      {{"encode", map, "-o", missing + "/x.lmap"}, "", "no_such_folder"},
+      {{"encode", map, "-o", missing + "/x.lmap", "--tolerance", "1"}, "", "no_such_folder"},
+      {{"encode", map, "-o", dir + "/ro.lmap"}, "ro.lmap", "read-only"},
+      {{"decode", lmap, "-o", missing + "/x.yaml"}, "", "no_such_folder"},
+      {{"decode", lmap, "-o", dir + "/ro.yaml"}, "ro.yaml", "read-only"},
+      // The image decode writes beside the YAML.
+      {{"decode", lmap, "-o", dir + "/img.yaml"}, "img.pgm", "img.pgm"},
+      {{"export", lmap, "-o", missing + "/x.svg"}, "", "no_such_folder"},
+      {{"export", lmap, "-o", dir + "/ro.geojson"}, "ro.geojson", "read-only"},
+      {{"lines", map, "-o", missing + "/x.csv"}, "", "no_such_folder"},
+      {{"lines", map, "-o", dir + "/ro.csv"}, "ro.csv", "read-only"},
+      {{"segment", map, "-o", missing + "/x.json"}, "", "no_such_folder"},
+      {{"segment", map, "-o", dir + "/ro.json"}, "ro.json", "read-only"},
+      {{"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5", "--svg", missing + "/x.svg"},
+       "",
+       "no_such_folder"},
+      {{"plan", map, "--from", "0.5,0.5", "--to", "3.5,2.5", "--svg", dir + "/ro.svg"},
+       "ro.svg",
+       "read-only"},
+      {{"bench", corpus, "--scaling-max", "0", "--md", missing + "/x.md"}, "", "no_such_folder"},
+      {{"bench", corpus, "--scaling-max", "0", "--csv", dir + "/ro.csv"}, "ro.csv", "read-only"},
+      {{"bench", corpus, "--scaling-max", "0", "--svg-dir", dir + "/file/svg"}, "", "file"},
+  };
+  for (const Case& c : cases) {
+    if (!c.read_only.empty()) {
+      testing::WriteFile(dir + "/" + c.read_only, "keep me\n");
+      ASSERT_EQ(::chmod((dir + "/" + c.read_only).c_str(), 0444), 0);
+    }
+    const std::vector<std::string> before = testing::ListDir(dir);
+    const CliResult r = RunCli(c.argv);
+    std::string where;
+    for (const std::string& a : c.argv) where += a + " ";
+    SCOPED_TRACE(where + "\nstderr: " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+    EXPECT_NE(r.err.find(c.named), std::string::npos);
+    // Refused before the work: the encode, the plan and the bench print
+    // their results only once done.
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(testing::ListDir(dir), before);
+    EXPECT_FALSE(fs::exists(missing));
+    if (!c.read_only.empty()) {
+      EXPECT_EQ(testing::ReadFile(dir + "/" + c.read_only), "keep me\n");
+      ::chmod((dir + "/" + c.read_only).c_str(), 0644);
+      fs::remove(dir + "/" + c.read_only);
+    }
+  }
+  // A folder without write permission (root writes anyway: not checked then).
+  if (::geteuid() != 0) {
+    fs::create_directories(dir + "/locked");
+    ASSERT_EQ(::chmod((dir + "/locked").c_str(), 0555), 0);
+    const CliResult r = RunCli({"encode", map, "-o", dir + "/locked/x.lmap"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("locked"), std::string::npos) << r.err;
+    ::chmod((dir + "/locked").c_str(), 0755);
+    EXPECT_TRUE(testing::ListDir(dir + "/locked").empty());
+  }
+  fs::remove_all(dir);
+}
+
+// The names of the commands (`linemap --help`) and, from each command's
+// --help, its options that take a value.
+std::vector<std::pair<std::string, std::vector<std::string>>> ValueOptionsOfEveryCommand() {
+  std::vector<std::pair<std::string, std::vector<std::string>>> result;
+  std::istringstream usage(RunCli({"--help"}).out);
+  std::string line;
+  bool in_commands = false;
+  while (std::getline(usage, line)) {
+    if (line == "Commands:") {
+      in_commands = true;
+      continue;
+    }
+    if (!in_commands || line.rfind("  ", 0) != 0) {
+      if (in_commands && line.empty()) break;
+      continue;
+    }
+    std::istringstream words(line);
+    std::string command;
+    words >> command;
+    std::vector<std::string> options;
+    std::istringstream help(RunCli({command, "--help"}).out);
+    bool in_options = false;
+    while (std::getline(help, line)) {
+      if (line == "Options:") {
+        in_options = true;
+        continue;
+      }
+      if (!in_options || line.rfind("  -", 0) != 0) continue;
+      std::istringstream parts(line);
+      std::string name, value;
+      parts >> name >> value;
+      // A value is in capitals (OUT.lmap, X,Y[,YAW], rooms|paper); help
+      // text starts in lower case.
+      const bool takes_value =
+          !value.empty() && (std::isupper(static_cast<unsigned char>(value[0])) != 0 ||
+                             value.find('|') != std::string::npos);
+      if (takes_value) options.push_back(name);
+    }
+    result.emplace_back(command, options);
+  }
+  return result;
+}
+
+// A repeated option used to take its last value without a word:
+// `encode D -o t.lmap --tolerance 2 --tolerance 0` saved exact. Every
+// option with a value, of every command, is refused given twice (exit 2,
+// naming it), whatever the values and however given.
+TEST(CliTest, EveryValueOptionGivenTwiceIsRefused) {
+  const auto commands = ValueOptionsOfEveryCommand();
+  ASSERT_GE(commands.size(), 9u);
+  std::size_t checked = 0;
+  for (const auto& [command, options] : commands) {
+    EXPECT_FALSE(options.empty()) << command;
+    for (const std::string& option : options) {
+      for (const bool inline_first : {false, true}) {
+        // An input that is not there: were the option taken, the command
+        // would stop at once (bench on its default corpus would run for
+        // minutes).
+        std::vector<std::string> argv = {command, "/nonexistent/linemap-input"};
+        if (inline_first) {
+          argv.push_back(option + "=1");
+        } else {
+          argv.insert(argv.end(), {option, "1"});
+        }
+        argv.insert(argv.end(), {option, "2"});
+        const CliResult r = RunCli(argv);
+        SCOPED_TRACE(command + " " + option + ": " + r.err);
+        EXPECT_EQ(r.exit_code, 2);
+        EXPECT_NE(r.err.find(option + " given twice"), std::string::npos);
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 100u);
+  // The audit's cases, with everything else right.
+  const std::string dir = testing::MakeTempDir("cli_value_twice");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  const CliResult tolerance =
+      RunCli({"encode", depot, "-o", dir + "/t.lmap", "--tolerance", "2", "--tolerance", "0"});
+  EXPECT_EQ(tolerance.exit_code, 2);
+  EXPECT_NE(tolerance.err.find("--tolerance given twice ('2' and '0')"), std::string::npos)
+      << tolerance.err;
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/d.lmap"}).exit_code, 0);
+  const CliResult window = RunCli({"decode", dir + "/d.lmap", "-o", dir + "/w.yaml",
+                                   "--window-cells", "0,0,10,10", "--window-cells", "0,0,20,20"});
+  EXPECT_EQ(window.exit_code, 2);
+  EXPECT_NE(window.err.find("--window-cells given twice"), std::string::npos) << window.err;
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"d.lmap"});
+  // A flag given twice is still taken.
+  EXPECT_EQ(RunCli({"encode", depot, "-o", dir + "/c.lmap", "--compact", "--compact"}).exit_code,
+            0);
+}
+
+// A refusal over a limit names the option that raises it (the library's
+// messages name only the limit), whichever command it comes through.
+TEST(CliTest, LimitErrorsNameTheOptionThatRaisesThem) {
+  const std::string dir = testing::MakeTempDir("cli_limit_option");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  const std::vector<std::vector<std::string>> cells = {
+      {"info", lmap, "--max-cells", "100"},
+      {"info", map, "--max-cells", "100"},
+      {"decode", lmap, "-o", dir + "/o.yaml", "--max-cells", "100"},
+      {"export", lmap, "-o", dir + "/o.csv", "--max-cells", "100"},
+      {"encode", map, "-o", dir + "/o.lmap", "--max-cells", "100"},
+      {"lines", lmap, "--max-cells", "100"},
+      {"segment", lmap, "-o", dir + "/o.json", "--max-cells", "100"},
+      {"plan", lmap, "--from", "1,1", "--to", "2,2", "--max-cells", "100"},
+      {"eval", map, lmap, "--max-cells", "100"},
+  };
+  for (const std::vector<std::string>& argv : cells) {
+    const CliResult r = RunCli(argv);
+    SCOPED_TRACE(argv[0] + " " + argv[1] + ": " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("limit of 100 cells (--max-cells N raises the limit)\n"),
+              std::string::npos);
+  }
+  const CliResult bytes = RunCli({"decode", lmap, "-o", dir + "/o.yaml", "--max-file-bytes", "10"});
+  EXPECT_EQ(bytes.exit_code, 2);
+  EXPECT_NE(bytes.err.find("--max-file-bytes"), std::string::npos) << bytes.err;
+  EXPECT_TRUE(testing::ListDir(dir).empty());
+}
+
+// plan, segment and lines put the map's name in quotes, as every other
+// command does.
+TEST(CliTest, ErrorsAboutAMapQuoteItsName) {
+  const std::string dir = testing::MakeTempDir("cli_quoted_name");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::vector<std::vector<std::string>> commands = {
+      {"plan", map, "--from", "100,100", "--to", "1,1"},
+      {"segment", map, "-o", dir + "/s.json", "--pose", "100,100"},
+      {"segment", map, "-o", dir + "/s.json", "--doors", "2,1"},
+      {"lines", map, "--pose", "100,100"},
+  };
+  for (const std::vector<std::string>& argv : commands) {
+    const CliResult r = RunCli(argv);
+    SCOPED_TRACE(argv[0] + ": " + r.err);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.err.rfind("linemap " + argv[0] + ": '" + map + "': ", 0), 0u);
   }
 }
 

@@ -114,5 +114,21 @@ TEST(CmdBenchTest, BadUsageExitsTwo) {
   EXPECT_EQ(RunCli({"bench", "--no-such-option"}).exit_code, 2);
 }
 
+// --help lists 0, 1, 4, 16 or 64 Mcells; 3 used to be taken (and stop the
+// table at 1). Refused before the corpus is read.
+TEST(CmdBenchTest, ScalingMaxOutsideTheTableIsRefused) {
+  const std::string corpus = OneMapCorpus();
+  for (const char* value : {"3", "2", "5", "63", "65", "128", "-1", "x"}) {
+    const CliResult r =
+        RunCli({"bench", corpus, "--scaling-max", value, "--no-memory", "--repeats", "1"});
+    EXPECT_EQ(r.exit_code, 2) << value;
+    EXPECT_NE(r.err.find("--scaling-max must be 0 (skip), 1, 4, 16 or 64, not '" +
+                         std::string(value) + "'"),
+              std::string::npos)
+        << value << ": " << r.err;
+    EXPECT_EQ(r.out, "") << value;
+  }
+}
+
 }  // namespace
 }  // namespace linemap::testing

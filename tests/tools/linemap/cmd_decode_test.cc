@@ -50,5 +50,21 @@ TEST(CmdDecodeTest, RefusesToOverwriteItsInput) {
   }
 }
 
+// An output that is only the extension names no file: decode said it "must
+// end in .yaml or .yml", which it does.
+TEST(CmdDecodeTest, OutputWithoutANameBeforeTheExtensionIsRefused) {
+  const std::string dir = testing::MakeTempDir("decode_no_stem");
+  const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";
+  for (const std::string name : {".yaml", ".YML", "sub/.yaml"}) {
+    const std::string out = dir + "/" + name;
+    const CliResult r = RunCli({"decode", lmap, "-o", out});
+    EXPECT_EQ(r.exit_code, 2) << name;
+    EXPECT_NE(r.err.find("output '" + out + "' has no file name before "), std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.err.find("must end in"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(testing::ListDir(dir).empty());
+}
+
 }  // namespace
 }  // namespace linemap

@@ -303,5 +303,37 @@ TEST(CmdDecodeWindowTest, ThreadsAndVersion1Files) {
   ExpectWindow(v1, dir, whole, {"--window", "0.5,0.5,1,2"}, {10, 10, 20, 40});
 }
 
+// On a map turned by its origin's yaw, a window inside the box around the
+// map can still reach past its grid. The message used to give two corner
+// cells' centres as the map's extent ("from 1.00995,2.03393 to 20.1339,
+// 29.9156 m", which holds the window): it now says the window is taken in
+// map-frame metres, which cells the grid has, and the box around the turned
+// map, computed here from its four corners.
+TEST(CmdDecodeWindowTest, RefusalOnATurnedMapStatesItsExtent) {
+  const std::string dir = testing::MakeTempDir("decode_window_turned_extent");
+  const std::string lmap = dir + "/rot.lmap";
+  ASSERT_EQ(RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", lmap,
+                    "--origin", "1,2,0.5"})
+                .exit_code,
+            0);
+  const CliResult r = RunCli({"decode", lmap, "-o", dir + "/r.yaml", "--window", "18,4,20,6"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("past the map's border"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("map-frame metres"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("columns 0..603, rows 0..306"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("1.00995,2.03393"), std::string::npos) << r.err;
+  // 604 x 307 cells of 0.05 m from (1, 2), turned by 0.5 rad.
+  const double c = std::cos(0.5), s = std::sin(0.5), w = 604 * 0.05, h = 307 * 0.05;
+  const double xs[] = {1, 1 + c * w, 1 - s * h, 1 + c * w - s * h};
+  const double ys[] = {2, 2 + s * w, 2 + c * h, 2 + s * w + c * h};
+  char extent[128];
+  std::snprintf(extent, sizeof(extent), "x %g..%g m, y %g..%g m", *std::min_element(xs, xs + 4),
+                *std::max_element(xs, xs + 4), *std::min_element(ys, ys + 4),
+                *std::max_element(ys, ys + 4));
+  EXPECT_NE(r.err.find(extent), std::string::npos) << extent << "\n" << r.err;
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"rot.lmap"});
+}
+
 }  // namespace
 }  // namespace linemap

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -100,14 +102,48 @@ void ExpectPosition(const YAML::Node& pos, Xy want) {
   EXPECT_NEAR(pos[1].as<double>(), want.y, 1e-6);
 }
 
-// A closed chain as a GeoJSON ring: the points, padded with the last to at
-// least three, then the first again.
+// Twice the signed area of a chain of cells: positive counter-clockwise.
+std::int64_t TwiceCellArea(const std::vector<CellIndex>& chain) {
+  std::int64_t sum = 0;
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    const CellIndex& p = chain[i];
+    const CellIndex& q = chain[(i + 1) % chain.size()];
+    sum += std::int64_t{p.col} * q.row - std::int64_t{q.col} * p.row;
+  }
+  return sum;
+}
+
+// A closed chain as a GeoJSON ring: the points from the first cell,
+// counter-clockwise (RFC 7946; a clockwise chain is written backwards, one
+// enclosing nothing either way), padded with the last to at least three,
+// then the first again.
 void ExpectRing(const YAML::Node& ring, const MapMetadata& meta,
                 const std::vector<CellIndex>& chain) {
-  std::vector<CellIndex> want = chain;
-  while (want.size() < 3) want.push_back(chain.back());
-  want.push_back(chain.front());
-  ASSERT_EQ(ring.size(), want.size());
+  std::vector<CellIndex> forwards = chain;
+  std::vector<CellIndex> backwards = chain;
+  std::reverse(backwards.begin() + 1, backwards.end());
+  const std::int64_t area = TwiceCellArea(chain);
+  std::vector<std::vector<CellIndex>> candidates;
+  if (area >= 0) candidates.push_back(forwards);
+  if (area <= 0) candidates.push_back(backwards);
+  for (std::vector<CellIndex>& want : candidates) {
+    const CellIndex last = want.back();
+    while (want.size() < 3) want.push_back(last);
+    want.push_back(want.front());
+  }
+  ASSERT_EQ(ring.size(), candidates.front().size());
+  const auto near = [&](const std::vector<CellIndex>& want) {
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const Xy e = Expected(meta, want[i]);
+      if (std::abs(ring[i][0].as<double>() - e.x) > 2e-6 ||
+          std::abs(ring[i][1].as<double>() - e.y) > 2e-6) {
+        return false;
+      }
+    }
+    return true;
+  };
+  const std::vector<CellIndex>& want =
+      near(candidates.front()) || candidates.size() == 1 ? candidates.front() : candidates.back();
   for (std::size_t i = 0; i < want.size(); ++i) ExpectPosition(ring[i], Expected(meta, want[i]));
 }
 
@@ -311,6 +347,66 @@ TEST(CmdExportTest, RasterOnlyAndVersion1Files) {
     EXPECT_NEAR(x2, b.x, 1e-6);
     EXPECT_NEAR(y2, b.y, 1e-6);
   }
+}
+
+// Twice the signed area of a GeoJSON ring (its last position repeats the
+// first), taken about the first position: positive counter-clockwise.
+double TwiceRingArea(const YAML::Node& ring) {
+  const double x0 = ring[0][0].as<double>(), y0 = ring[0][1].as<double>();
+  double sum = 0;
+  for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
+    const double px = ring[i][0].as<double>() - x0, py = ring[i][1].as<double>() - y0;
+    const double qx = ring[i + 1][0].as<double>() - x0, qy = ring[i + 1][1].as<double>() - y0;
+    sum += px * qy - qx * py;
+  }
+  return sum;
+}
+
+// RFC 7946 3.1.6: exterior rings run counter-clockwise. Every Polygon ring
+// that export and segment --geojson write has a signed area of at least 0
+// (0 for a chain enclosing nothing, up to the 1e-6 m rounding of the
+// positions). Many of depot's room and furniture chains run clockwise, so
+// written as they were traced they broke it.
+TEST(CmdExportTest, GeoJsonRingsRunCounterClockwise) {
+  const std::string dir = testing::MakeTempDir("export_ring_orientation");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/plain.lmap"}).exit_code, 0);
+  const std::vector<std::vector<std::string>> writers = {
+      {"export", EncodedDepot(dir), "-o", dir + "/turned.geojson"},
+      {"export", dir + "/plain.lmap", "-o", dir + "/plain.geojson"},
+      {"segment", depot, "--geojson", "-o", dir + "/rooms.geojson"},
+      {"segment", depot, "--geojson", "--method", "paper", "-o", dir + "/paper.geojson"},
+  };
+  for (const std::vector<std::string>& argv : writers) {
+    const CliResult r = RunCli(argv);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const YAML::Node features = YAML::LoadFile(argv.back())["features"];
+    std::size_t rings = 0, positive = 0;
+    for (const YAML::Node& f : features) {
+      if (f["geometry"]["type"].as<std::string>() != "Polygon") continue;
+      for (const YAML::Node& ring : f["geometry"]["coordinates"]) {
+        const double area = TwiceRingArea(ring);
+        EXPECT_GE(area, -1e-9) << argv.back() << " ring " << rings;
+        positive += area > 0;
+        ++rings;
+      }
+    }
+    SCOPED_TRACE(argv.back());
+    EXPECT_GT(rings, 30u);
+    EXPECT_GT(positive, 30u);
+  }
+}
+
+// A map without yaw is drawn turned by 0 degrees, not "-0.00".
+TEST(CmdExportTest, SvgOfAMapWithoutYawHasNoNegativeZero) {
+  const std::string dir = testing::MakeTempDir("export_svg_zero");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/d.lmap"}).exit_code, 0);
+  const CliResult r = RunCli({"export", dir + "/d.lmap", "-o", dir + "/d.svg"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = testing::ReadFile(dir + "/d.svg");
+  EXPECT_NE(svg.find("transform=\"rotate(0.00 "), std::string::npos);
+  EXPECT_EQ(svg.find("-0.00"), std::string::npos);
 }
 
 }  // namespace

@@ -1,10 +1,15 @@
 // The built `linemap` binary: info, --help, --version, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
+#include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -197,6 +202,59 @@ TEST(CmdInfoTest, SharedEmptyRoomYamlNamesAMissingImage) {
   const CliResult r = RunCli({"info", shared + "/nav2/empty_room.yaml"});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("empty.pgm"), std::string::npos) << r.err;
+}
+
+// The metadata `encode --metadata --time --pose` stores, which the text
+// output printed and --json left out, is in the JSON as the object
+// "metadata"; a file without any has {}.
+TEST(CmdInfoTest, JsonHoldsTheMetadata) {
+  const std::string dir = MakeTempDir("cli_info_metadata");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/m.lmap", "--metadata", "--time",
+                    "2024-05-01T12:00:00Z", "--pose", "5,5,0.5"})
+                .exit_code,
+            0);
+  const CliResult text = RunCli({"info", dir + "/m.lmap"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("meta:       time = 2024-05-01T12:00:00Z\n"), std::string::npos)
+      << text.out;
+  const CliResult json = RunCli({"info", dir + "/m.lmap", "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NE(json.out.find("\"metadata\":{\"creator\":\"linemap "), std::string::npos) << json.out;
+  for (const char* entry : {"\"time\":\"2024-05-01T12:00:00Z\"", "\"frame_id\":\"map\"",
+                            "\"robot_pose\":\"5 5 0.5\""}) {
+    EXPECT_NE(json.out.find(entry), std::string::npos) << entry << "\n" << json.out;
+  }
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/plain.lmap"}).exit_code, 0);
+  const CliResult plain = RunCli({"info", dir + "/plain.lmap", "--json"});
+  EXPECT_NE(plain.out.find("\"metadata\":{}"), std::string::npos) << plain.out;
+  const CliResult help = RunCli({"info", "--help"});
+  EXPECT_NE(help.out.find("metadata"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("robot_pose"), std::string::npos) << help.out;
+}
+
+// Metadata from another writer may hold control characters (the format
+// does not check its text): info prints each entry on one line, escaped,
+// and --json escapes them as JSON does.
+TEST(CmdInfoTest, ControlCharactersInMetadataAreEscaped) {
+  const std::string dir = MakeTempDir("cli_info_metadata_escape");
+  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  ASSERT_TRUE(grid.ok());
+  EncodeOptions options;
+  options.time = "a\nb";
+  options.creator = "tab\there \\ \x1b";
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().message();
+  WriteFile(dir + "/m.lmap", std::string(bytes->begin(), bytes->end()));
+  const CliResult text = RunCli({"info", dir + "/m.lmap"});
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("meta:       time = a\\nb\n"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("meta:       creator = tab\\there \\\\ \\x1b\n"), std::string::npos)
+      << text.out;
+  const CliResult json = RunCli({"info", dir + "/m.lmap", "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NE(json.out.find("\"time\":\"a\\nb\""), std::string::npos) << json.out;
+  EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1) << json.out;
 }
 
 }  // namespace

@@ -130,10 +130,25 @@ TEST(CmdSegmentTest, PoseOnTheLowerEdgeAndOffTheMap) {
   const testing::CliResult off =
       testing::RunCli({"segment", map, "--pose", "-1,0.5", "-o", dir + "/b.json"});
   EXPECT_EQ(off.exit_code, 2);
-  EXPECT_NE(off.err.find("free.pgm: robot position -1.000,0.500 m is outside the map"),
+  EXPECT_NE(off.err.find("free.pgm': robot position -1.000,0.500 m is outside the map"),
             std::string::npos)
       << off.err;
   EXPECT_FALSE(testing::FileExists(dir + "/b.json"));
+}
+
+// One corridor is "1 corridor", one room "1 room".
+TEST(CmdSegmentTest, CountsAreSingularForOne) {
+  const std::string dir = testing::MakeTempDir("cmd_segment_singular");
+  const testing::CliResult depot = testing::RunCli(
+      {"segment", testing::BundledMapsDir() + "/nav2/depot.yaml", "-o", dir + "/d.json"});
+  ASSERT_EQ(depot.exit_code, 0) << depot.err;
+  EXPECT_NE(depot.out.find("rooms: 8 (7 rooms, 1 corridor)  doors: 0"), std::string::npos)
+      << depot.out;
+  // Doorways too narrow to split anything: the arena is one corridor.
+  const testing::CliResult one =
+      testing::RunCli({"segment", Arena(), "-o", dir + "/a.json", "--doors", "0.1,0.2"});
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_NE(one.out.find("rooms: 1 (0 rooms, 1 corridor)"), std::string::npos) << one.out;
 }
 
 }  // namespace
