@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "linemap/lmap_vectors.h"
+#include "tools/linemap/lmap_cli_util.h"
 
 namespace linemap::cli {
 
@@ -45,19 +46,7 @@ std::string ExtentText(const MapMetadata& meta, int width, int height) {
                   width, height, ax, ay, bx, by);
     return text;
   }
-  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
-  bool first = true;
-  for (double col : {-0.5, width - 0.5}) {
-    for (double row : {-0.5, height - 0.5}) {
-      double x, y;
-      frame.CellToWorld(col, row, &x, &y);
-      min_x = first ? x : std::min(min_x, x);
-      min_y = first ? y : std::min(min_y, y);
-      max_x = first ? x : std::max(max_x, x);
-      max_y = first ? y : std::max(max_y, y);
-      first = false;
-    }
-  }
+  const auto [min_x, min_y, max_x, max_y] = MapExtentMetres(meta, width, height);
   std::snprintf(text, sizeof(text),
                 "the window is taken in map-frame metres, and the map's grid (columns 0..%d, "
                 "rows 0..%d) is turned by its origin's yaw of %g rad: the cells are those the "

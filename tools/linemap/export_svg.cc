@@ -193,19 +193,7 @@ std::string Base64(const std::vector<std::uint8_t>& bytes) {
 StatusOr<std::string> LayersToSvg(const std::vector<ExportLayer>& layers, const Grid& grid) {
   // The map's extent in metres: the corners of its outer cells (a yaw turns
   // the rectangle).
-  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
-  bool first = true;
-  for (double col : {-0.5, grid.width() - 0.5}) {
-    for (double row : {-0.5, grid.height() - 0.5}) {
-      double x, y;
-      grid.CellToWorld(col, row, &x, &y);
-      min_x = first ? x : std::min(min_x, x);
-      min_y = first ? y : std::min(min_y, y);
-      max_x = first ? x : std::max(max_x, x);
-      max_y = first ? y : std::max(max_y, y);
-      first = false;
-    }
-  }
+  const auto [min_x, min_y, max_x, max_y] = MapExtentMetres(grid.meta, grid.width(), grid.height());
   // About one pixel per cell, between 800 and 2000 pixels along the longer
   // side, so that small maps are not tiny and big ones stay viewable.
   const double long_metres = std::max(max_x - min_x, max_y - min_y);
