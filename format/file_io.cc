@@ -218,11 +218,11 @@ bool IsTemporaryOf(const std::string& name, const std::string& base) {
 // Removes the temporaries of `target` that a killed save left behind. A
 // save names its unnamed file just before the rename, so a kill in that
 // instant (or during a slow close or the flush of a YAML's image) leaves
-// one. A live save writes its temporary within seconds, so one untouched
-// for kStaleTemporarySeconds belongs to no live save, or to one that named
-// it at Open and writes it last (a map's YAML, after a long decode): that
-// save's Finish() sees its name gone and fails before any rename, leaving
-// every target as it was. Best effort: failures to list or remove are
+// one. A temporary untouched for kStaleTemporarySeconds belongs to no live
+// save, or to one that named it at Open and writes it late (a map's YAML
+// after a long decode; an .lmap after a long encode, where the file system
+// has no unnamed files): that save's Finish() sees its name gone and fails
+// before any rename, leaving every target as it was. Best effort: failures to list or remove are
 // ignored.
 void RemoveStaleTemporaries(const std::string& target) {
   const std::string dir = DirectoryOf(target);
@@ -254,6 +254,28 @@ void SyncDirectory(const std::string& dir) {
 }
 
 }  // namespace
+
+Status CheckSaveTarget(const std::string& path) {
+  if (path.empty()) return InvalidArgumentError("empty output file name");
+  LINEMAP_ASSIGN_OR_RETURN(std::string target, ResolveTarget(path));
+  LINEMAP_RETURN_IF_ERROR(CheckReplaceable(path, target).status());
+  // The folder, probed as Open creates its file: an unnamed file, gone when
+  // closed. Where the file system has none (EOPNOTSUPP, or EISDIR from an
+  // old kernel) the permission bits are all there is to go by.
+  const std::string dir = DirectoryOf(target);
+  const int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd >= 0) {
+    ::close(fd);
+    return Status::Ok();
+  }
+  int err = errno;
+  if (err == EOPNOTSUPP || err == EISDIR || err == EINVAL) {
+    err = ::access(dir.c_str(), W_OK | X_OK) == 0 ? 0 : errno;
+  }
+  if (err == 0) return Status::Ok();
+  return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
+                 ErrnoText(err));
+}
 
 StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durability durability) {
   if (path.empty()) return InvalidArgumentError("empty output file name");
@@ -358,6 +380,15 @@ Status AtomicFileWriter::Finish() {
   if (durability_ == Durability::kSynced && ::fsync(fd_) != 0) {
     return IoError("cannot flush " + Quoted(path_) + " to disk: " + ErrnoText(errno));
   }
+  // Looked at again: Open may have been a long encode ago (SaveLmap opens
+  // before it encodes), and a file made read-only, replaced or created
+  // meanwhile is what the caller now has there.
+  StatusOr<ExistingFile> existing = CheckReplaceable(path_, target_);
+  if (!existing.ok()) return existing.status();
+  replaces_ = existing->exists;
+  mode_ = existing->st.st_mode & 0777;
+  uid_ = existing->st.st_uid;
+  gid_ = existing->st.st_gid;
   mode_t mode = mode_;
   if (replaces_) {
     // Best effort, as the replaced file's owner is not ours to insist on:

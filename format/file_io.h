@@ -153,6 +153,15 @@ struct FileToWrite {
 Status WriteFilesAtomic(const std::vector<FileToWrite>& files,
                         Durability durability = Durability::kSynced);
 
+// What AtomicFileWriter::Open(path) would refuse, found without creating,
+// removing or changing anything: an empty name, a symlink chain that cannot
+// be followed, a directory or other non-regular file or a read-only file at
+// the target, a folder that is missing or takes no new file (probed with an
+// unnamed file where the file system has them). A caller about to do long
+// work before its save (a decode, a plan) checks first. Open still checks
+// again: the file system may change meanwhile.
+Status CheckSaveTarget(const std::string& path);
+
 // True when `path` names an existing directory.
 bool IsDirectory(const std::string& path);
 

@@ -137,6 +137,18 @@ void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bo
                         " to .lmap files only (a map .yaml is saved exact, as YAML + PGM)");
 }
 
+// An output named only by its extension ("maps/.yaml") would be written as
+// a hidden file; the CLI refuses such names too.
+void CheckNameBeforeExtension(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::size_t dot = base.find_last_of('.');
+  if (dot == 0) {
+    throw py::value_error("'" + path + "': no file name before " + base + ": give one, as in 'map" +
+                          base + "'");
+  }
+}
+
 void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
           bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
   CheckTolerance(tolerance);
@@ -146,6 +158,7 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   if (!yaml && !HasLmapName(path)) {
     throw py::value_error("'" + path + "': linemap.save writes .lmap or map .yaml files");
   }
+  CheckNameBeforeExtension(path);
   if (yaml) {
     CheckNoLmapOptions(path, tolerance, vectors, straight_walls, compact, max_tolerance_cells);
   }
@@ -181,6 +194,7 @@ void Convert(const py::object& source_arg, const py::object& path_arg, int toler
   if (!HasLmapName(path)) {
     throw py::value_error("'" + path + "': linemap.convert writes .lmap files");
   }
+  CheckNameBeforeExtension(path);
   bool lmap_source = false;
   StatusOr<LmapSaveSummary> saved = InvalidArgumentError("not saved");
   {

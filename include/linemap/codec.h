@@ -233,7 +233,8 @@ struct LmapSaveSummary {
 // section) is coded as the image is read, a row of 2048-cell layer blocks at
 // a time, so the grid is never held whole: the 20,768 x 13,612-cell office map (282 Mcells) saves
 // with a peak of 0.8-0.9 bytes per cell, where loading its grid alone takes 1. Other files are
-// coded from the loaded grid. Errors name the map file or its image.
+// coded from the loaded grid. Errors name the map file or its image, or the
+// output (checked first).
 StatusOr<LmapSaveSummary> SaveRosMapAsLmap(const std::string& map_path,
                                            const std::string& lmap_path,
                                            const EncodeOptions& options = {},

@@ -328,6 +328,60 @@ TEST(AtomicFileWriterTest, WriterDroppedBeforeCommitLeavesTheOldFile) {
   EXPECT_FALSE(AtomicFileWriter::Open(dir + "/no/such/folder/map.pgm").ok());
 }
 
+// SaveLmap opens its writer before a long encode: what happens to the
+// target meanwhile is what the commit goes by. A file made read-only is
+// refused then; one replaced meanwhile gives its own mode to the new file.
+TEST(AtomicFileWriterTest, CommitLooksAtTheTargetAgain) {
+  const std::string dir = MakeTempDir("afw_again");
+  const std::string target = dir + "/map.lmap";
+  WriteFile(target, "old");
+  StatusOr<AtomicFileWriter> writer = AtomicFileWriter::Open(target);
+  ASSERT_TRUE(writer.ok()) << writer.status().message();
+  ASSERT_EQ(::chmod(target.c_str(), 0444), 0);
+  ASSERT_TRUE(writer->Append("new").ok());
+  const Status refused = writer->Commit();
+  EXPECT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("read-only"), std::string::npos) << refused.message();
+  EXPECT_EQ(ReadFile(target), "old");
+  EXPECT_EQ(ModeOf(target), 0444u);
+  ASSERT_EQ(::chmod(target.c_str(), 0644), 0);
+  // Opened while there was no file; one with mode 0640 appeared meanwhile.
+  const std::string fresh = dir + "/fresh.lmap";
+  StatusOr<AtomicFileWriter> second = AtomicFileWriter::Open(fresh);
+  ASSERT_TRUE(second.ok()) << second.status().message();
+  WriteFile(fresh, "theirs");
+  ASSERT_EQ(::chmod(fresh.c_str(), 0640), 0);
+  ASSERT_TRUE(second->Append("ours").ok());
+  ASSERT_TRUE(second->Commit().ok());
+  EXPECT_EQ(ReadFile(fresh), "ours");
+  EXPECT_EQ(ModeOf(fresh), 0640u);
+  EXPECT_EQ(testing::ListDir(dir), (std::vector<std::string>{"fresh.lmap", "map.lmap"}));
+}
+
+// CheckSaveTarget refuses what Open refuses, and leaves no trace either way.
+TEST(FileIoTest, CheckSaveTargetRefusesWhatOpenRefusesAndCreatesNothing) {
+  const std::string dir = MakeTempDir("fio_check");
+  WriteFile(dir + "/ro.lmap", "keep");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0444), 0);
+  ASSERT_EQ(::symlink("missing/map.lmap", (dir + "/dangling.lmap").c_str()), 0);
+  const std::vector<std::string> refused = {"",
+                                            dir,
+                                            dir + "/ro.lmap",
+                                            dir + "/no/map.lmap",
+                                            dir + "/dangling.lmap",
+                                            dir + "/ro.lmap/x.lmap"};
+  for (const std::string& path : refused) {
+    EXPECT_FALSE(CheckSaveTarget(path).ok()) << path;
+    EXPECT_FALSE(AtomicFileWriter::Open(path).ok()) << path;
+  }
+  EXPECT_TRUE(CheckSaveTarget(dir + "/new.lmap").ok());
+  EXPECT_TRUE(
+      CheckSaveTarget(dir + "/../" + dir.substr(dir.find_last_of('/') + 1) + "/n.lmap").ok());
+  EXPECT_EQ(testing::ListDir(dir), (std::vector<std::string>{"dangling.lmap", "ro.lmap"}));
+  EXPECT_EQ(ReadFile(dir + "/ro.lmap"), "keep");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0644), 0);
+}
+
 // A pair committed together: a failed write in either (a 64 KiB file-size
 // limit standing in for a full disk) leaves both old files.
 TEST(AtomicFileWriterTest, FailedWriteInAPairLeavesBothOldFiles) {

@@ -274,6 +274,18 @@ def test_save_and_convert_take_extensions_in_any_case(tmp_path, lmap_name, yaml_
             (tmp_path / "lower.lmap").read_bytes())
 
 
+@pytest.mark.parametrize("name", [".lmap", ".yaml", ".YML"])
+def test_save_and_convert_refuse_a_name_that_is_only_an_extension(tmp_path, name):
+    # As `linemap decode -o maps/.yaml`: a hidden file was never meant.
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match="no file name before"):
+        linemap.save(tmp_path / name, m)
+    if name == ".lmap":
+        with pytest.raises(ValueError, match="no file name before"):
+            linemap.convert(BUNDLED["lse_arena"], tmp_path / name)
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_window_cells_of_a_missing_upper_case_lmap_raise_file_not_found(tmp_path):
     with pytest.raises(FileNotFoundError, match="NONE.LMAP"):
         linemap.load(tmp_path / "NONE.LMAP", window_cells=(0, 0, 1, 1))

@@ -7,12 +7,13 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <limits>
+
+#include "format/file_io.h"
 
 namespace linemap::cli {
 namespace {
@@ -59,25 +60,6 @@ std::string FolderOf(const std::string& path) {
   if (slash == std::string::npos) return ".";
   if (slash == 0) return "/";
   return path.substr(0, slash);
-}
-
-// The file a save to `path` replaces: the end of its chain of symlinks, as
-// the atomic save resolves it (a "current map" link keeps pointing at the
-// new file; a dangling link gives the name it points at). A link that
-// cannot be read is left to the save to report.
-std::string ResolveLinks(const std::string& path) {
-  constexpr int kMaxHops = 40;  // as the kernel's ELOOP limit
-  std::string target = path;
-  for (int hop = 0; hop < kMaxHops; ++hop) {
-    struct stat st;
-    if (::lstat(target.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return target;
-    char link[PATH_MAX];
-    const ssize_t n = ::readlink(target.c_str(), link, sizeof(link));
-    if (n <= 0 || static_cast<std::size_t>(n) >= sizeof(link)) return target;
-    const std::string text(link, static_cast<std::size_t>(n));
-    target = text[0] == '/' ? text : FolderOf(target) + "/" + text;
-  }
-  return target;
 }
 
 // `folder` exists, is a folder and we may make files in it; `what` names
@@ -254,8 +236,8 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
       std::optional<std::string> value = inline_value;
       if (!value && i + 1 < args.size()) value = args[++i];
       if (!value) return usage_error(name + " needs a value (" + option->value_name + ")");
-      // Any value option, not only outputs: `--tolerance 2 --tolerance 0`
-      // would otherwise save exact without a word about the 2.
+      // The last would win without a word: `--tolerance 2 --tolerance 0`
+      // would save exact, `-o a -o b` never write a.
       if (parsed.values.count(name) > 0) {
         return usage_error(name + " given twice ('" + parsed.values[name] + "' and '" + *value +
                            "'); give one " + option->value_name);
@@ -299,27 +281,11 @@ Status CheckOutputExtension(const std::string& path, const std::vector<std::stri
 }
 
 Status CheckOutputWritable(const std::string& path) {
-  if (path.empty()) return InvalidArgumentError("empty output file name");
-  const std::string target = ResolveLinks(path);
-  struct stat st;
-  if (::stat(target.c_str(), &st) == 0) {
-    if (S_ISDIR(st.st_mode)) {
-      return InvalidArgumentError("'" + path + "' is a directory; give a file name");
-    }
-    if (!S_ISREG(st.st_mode)) {
-      return InvalidArgumentError("'" + path + "' is not a regular file; not replacing it");
-    }
-    // As the save: no write permission for us, or none for anyone (root may
-    // write anything, but a 0444 map was made read-only on purpose).
-    if (::access(target.c_str(), W_OK) != 0 || (st.st_mode & 0222) == 0) {
-      char mode[8];
-      std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(st.st_mode & 07777));
-      return InvalidArgumentError("cannot replace '" + path + "': the file is read-only (mode " +
-                                  mode + "; make it writable or remove it)");
-    }
-  }
-  // The new file is made beside the one it replaces, then renamed over it.
-  return CheckFolderTakesFiles(FolderOf(target), path);
+  // The library's own rules (AtomicFileWriter::Open's), found without a
+  // trace; refused here, before the work, they are a usage error.
+  const Status target = CheckSaveTarget(path);
+  if (target.ok()) return target;
+  return InvalidArgumentError(target.message());
 }
 
 Status CheckOutputFolderWritable(const std::string& dir, bool make_parents) {

@@ -24,10 +24,6 @@ struct OptionSpec {
   std::string name;        // "--json"
   std::string value_name;  // "X,Y"; empty for a flag without a value
   std::string help;        // one line, with the unit and the default
-  // Names a file or folder the command writes. ParseArgs refuses every
-  // option with a value given twice (the last one would win without a
-  // word: for an output the first file would silently never be written).
-  bool output = false;
 };
 
 struct CommandSpec {
@@ -83,11 +79,10 @@ Status CheckOutputExtension(const std::string& path, const std::vector<std::stri
                             const std::string& format);
 
 // Refuses, before any work, an output file that the atomic save at the end
-// would refuse after it: a directory, a file that is not regular or is
-// read-only, or a name whose folder is missing or not writable (symlinks are
-// followed as the save follows them). Creates nothing. kInvalidArgument
-// naming `path`: an output that cannot be written at all is bad usage (exit
-// 2), and finding it now spares minutes of encoding a large map.
+// would refuse after it (CheckSaveTarget, format/file_io.h: the save's own
+// rules). Creates nothing. kInvalidArgument naming `path`: an output that
+// cannot be written at all is bad usage (exit 2), and finding it now spares
+// minutes of encoding a large map.
 Status CheckOutputWritable(const std::string& path);
 
 // The same for a folder a command writes files into, making it when missing

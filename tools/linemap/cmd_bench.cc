@@ -40,13 +40,10 @@ const CommandSpec kBenchSpec = {
     "decode CPU time against libpng (the two timed in turn, run for run), each\n"
     "with PASS / FAIL.",
     {
-        {"--md", "OUT.md", "also write the tables as Markdown (the name ends in .md)",
-         /*output=*/true},
-        {"--csv", "OUT.csv", "also write every figure of every map as CSV (the name ends in .csv)",
-         /*output=*/true},
+        {"--md", "OUT.md", "also write the tables as Markdown (the name ends in .md)"},
+        {"--csv", "OUT.csv", "also write every figure of every map as CSV (the name ends in .csv)"},
         {"--svg-dir", "DIR",
-         "write per-map overlay SVGs (the 2.0 file's walls, rooms, furniture) and summary.svg",
-         /*output=*/true},
+         "write per-map overlay SVGs (the 2.0 file's walls, rooms, furniture) and summary.svg"},
         {"--repeats", "N", "timed runs per map up to 1 Mcell (default 5; 3 to 4 Mcells, 1 above)"},
         {"--scaling-max", "MCELLS",
          "largest map of the scaling table: 0 (skip), 1, 4, 16 or 64 (default 64)"},

@@ -77,7 +77,7 @@ StatusOr<MapFileSummary> SaveRoom(const std::string& in, const ParsedArgs& args,
 
 std::vector<OptionSpec> DecodeOptions() {
   std::vector<OptionSpec> options = {
-      {"-o", "OUT.yaml", "output YAML; the PGM goes beside it", /*output=*/true},
+      {"-o", "OUT.yaml", "output YAML; the PGM goes beside it"},
       {"--window", "X0,Y0,X1,Y1",
        "decode only the cells whose centres lie in the box [X0, X1] x [Y0, Y1] (map-frame metres, "
        "edges included)"},

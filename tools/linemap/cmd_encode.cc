@@ -44,7 +44,7 @@ const CommandSpec kEncodeSpec = {
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
     "map or the image its YAML names.",
     WithBagOptions(WithMapLoadOptions({
-        {"-o", "OUT.lmap", "output file (required; ends in .lmap)", /*output=*/true},
+        {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
          "largest distance (cells, 0..4) by which the decode may differ: 0 exact (the default); "
          "1..4 draw the map in blocks of T + 1 cells a side (a version 2.3 file), keeping cells "

@@ -19,8 +19,7 @@ namespace {
 
 std::vector<OptionSpec> ExportOptions() {
   std::vector<OptionSpec> options = {
-      {"-o", "OUT", "output file; its extension (.csv, .geojson, .json, .svg) picks the format",
-       /*output=*/true},
+      {"-o", "OUT", "output file; its extension (.csv, .geojson, .json, .svg) picks the format"},
       {"--window", "X0,Y0,X1,Y1",
        "only the items whose box meets the cells whose centres lie in the box (map-frame metres, "
        "edges included)"},

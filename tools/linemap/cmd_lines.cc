@@ -26,8 +26,7 @@ const CommandSpec kLinesSpec = {
     "largest such distance in cells, and the extraction time in ms.",
     WithMapLoadOptions({
         {"-o", "LINES.csv",
-         "write the segments as CSV (layer,x1,y1,x2,y2; metres); the name ends in .csv",
-         /*output=*/true},
+         "write the segments as CSV (layer,x1,y1,x2,y2; metres); the name ends in .csv"},
         {"--method", "NAME", "linemap (default) or rmline (the paper's method)"},
         {"--dtheta", "D", "RM-Line ray angle step in degrees (default 1)"},
         {"--ds", "S", "RM-Line scoring point spacing in cells, (0, 1] (default 0.5)"},

@@ -40,8 +40,7 @@ const CommandSpec kPlanSpec = {
          "print one JSON object: found, length_m, commands, waypoints, "
          "alternatives, ms, and every trajectory"},
         {"--svg", "OUT.svg",
-         "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg)",
-         /*output=*/true},
+         "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg)"},
     }),
     1,
     1,

@@ -30,8 +30,7 @@ const CommandSpec kSegmentSpec = {
     "algorithm. Coordinates are map-frame metres of cell centres.",
     WithMapLoadOptions({
         {"-o", "OUT.json",
-         "output file (required; ends in .json, with --geojson in .geojson or .json)",
-         /*output=*/true},
+         "output file (required; ends in .json, with --geojson in .geojson or .json)"},
         {"--geojson", "",
          "write GeoJSON (Polygon per room with id, area_m2, kind and per blob "
          "outline; Point per door; property layer: room | door | furniture, "

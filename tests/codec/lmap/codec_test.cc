@@ -271,7 +271,7 @@ TEST(CodecTest, SavesRefuseAnUnwritableOutputBeforeEncoding) {
   const std::string missing = dir + "/missing/map.lmap";
   const Status saved = SaveLmap(missing, grid, options);
   EXPECT_FALSE(saved.ok());
-  EXPECT_NE(saved.ToString().find("missing"), std::string::npos) << saved.ToString();
+  EXPECT_NE(saved.ToString().find("No such file"), std::string::npos) << saved.ToString();
   const StatusOr<LmapSaveSummary> converted = SaveRosMapAsLmap(map_path, missing, options);
   EXPECT_FALSE(converted.ok());
   // A directory where the file should go.

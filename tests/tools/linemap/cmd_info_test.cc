@@ -257,5 +257,35 @@ TEST(CmdInfoTest, ControlCharactersInMetadataAreEscaped) {
   EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1) << json.out;
 }
 
+// JSON is UTF-8: metadata another tool wrote in Latin-1 (or any stray byte)
+// must not make `info --json` print invalid JSON; well-formed UTF-8 passes.
+TEST(CmdInfoTest, JsonReplacesBytesThatAreNotUtf8) {
+  const std::string dir = MakeTempDir("cli_info_metadata_utf8");
+  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  ASSERT_TRUE(grid.ok());
+  EncodeOptions options;
+  // K\xfcche: Latin-1; then a lone continuation byte, an overlong '/', a
+  // surrogate and a sequence cut short; then well-formed "K\u00fcche \u20ac".
+  options.creator =
+      "K\xfc"
+      "che|\x80|\xc0\xaf|\xed\xa0\x80|\xe2\x82";
+  options.frame_id =
+      "K\xc3\xbc"
+      "che \xe2\x82\xac";
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().message();
+  WriteFile(dir + "/m.lmap", std::string(bytes->begin(), bytes->end()));
+  const CliResult json = RunCli({"info", dir + "/m.lmap", "--json"});
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_NE(json.out.find("\"creator\":\"K\\ufffdche|\\ufffd|\\ufffd\\ufffd|"
+                          "\\ufffd\\ufffd\\ufffd|\\ufffd\\ufffd\""),
+            std::string::npos)
+      << json.out;
+  EXPECT_NE(json.out.find("\"frame_id\":\"K\xc3\xbc"
+                          "che \xe2\x82\xac\""),
+            std::string::npos)
+      << json.out;
+}
+
 }  // namespace
 }  // namespace linemap
