@@ -1,5 +1,6 @@
 #include "linemap/grid.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "format/large_vector.h"
@@ -70,6 +71,25 @@ std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, in
   // Written so that NaN fails it too.
   if (!(col >= 0 && row >= 0 && col < width && row < height)) return std::nullopt;
   return CellIndex{static_cast<int>(col), static_cast<int>(row)};
+}
+
+MetreBounds MapBoundsMetres(const MapMetadata& meta, int width, int height) {
+  Grid frame;  // only its metadata: the map's cell <-> metre transform
+  frame.meta = meta;
+  MetreBounds box;
+  bool first = true;
+  for (double col : {-0.5, width - 0.5}) {
+    for (double row : {-0.5, height - 0.5}) {
+      double x, y;
+      frame.CellToWorld(col, row, &x, &y);
+      box.min_x = first ? x : std::min(box.min_x, x);
+      box.min_y = first ? y : std::min(box.min_y, y);
+      box.max_x = first ? x : std::max(box.max_x, x);
+      box.max_y = first ? y : std::max(box.max_y, y);
+      first = false;
+    }
+  }
+  return box;
 }
 
 std::optional<CellIndex> Grid::CellHolding(double x, double y) const {

@@ -9,7 +9,10 @@
 // save goes to an unnamed temporary file that is flushed and renamed over
 // NAME.lmap (SaveLmap), so a saver killed at any moment leaves the previous
 // file whole. Exit codes: 0 saved, 1 no master or a failed write, 2 bad
-// usage or a map message that is not a map (sizes that do not agree).
+// usage, an output that cannot be written (checked at startup) or a map
+// message that is not a map (sizes that do not agree). With --every a map
+// that cannot be saved is reported and the saver waits for the next one;
+// its exit code is then that of the last map's save.
 #include <ros/ros.h>
 
 #if defined(__GLIBC__)
@@ -21,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/tolerance.h"
 #include "ros/node_support.h"
@@ -34,7 +38,8 @@ constexpr const char* kUsage =
     "                  [--tolerance T] [--raster-only] [--compact] [--wait-master S]\n"
     "  -f NAME          output file NAME.lmap (default map.lmap; .lmap is added when missing)\n"
     "  -t TOPIC         map topic (default map; also remappable as map:=TOPIC)\n"
-    "  --every          keep running and rewrite the file on every new map\n"
+    "  --every          keep running and rewrite the file on every new map; a map that\n"
+    "                   cannot be saved is reported and the last file kept\n"
     "  --occ P          occupancy in percent at or above which a cell is occupied (default 65)\n"
     "  --free P         occupancy in percent at or below which a cell is free (default 25)\n"
     "  --tolerance T    cells (0..4) by which the stored map may differ (default 0: exact)\n"
@@ -150,9 +155,13 @@ class MapSaver {
     if (!saved.ok()) {
       std::fprintf(stderr, "lmap_saver: %s\n", saved.message().c_str());
       exit_code_ = ExitCodeFor(saved);
-      ros::shutdown();
+      // A robot's periodic save outlives one bad message (a glitched map, a
+      // full disk for a while): the last good file stays, the next map is
+      // saved, and the exit code says whether the last save failed.
+      if (!args_.every) ros::shutdown();
       return;
     }
+    exit_code_ = kExitOk;
     ROS_INFO("lmap_saver: wrote %s (%u x %u cells at %.3f m/cell)", args_.path.c_str(),
              message->info.width, message->info.height, message->info.resolution);
     if (!args_.every) ros::shutdown();
@@ -177,6 +186,12 @@ int Run(int argc, char** argv) {
   StatusOr<SaverArgs> args = ParseSaverArgs(NonRosArguments(argc, argv));
   if (!args.ok()) {
     std::fprintf(stderr, "lmap_saver: %s\n%s", args.status().message().c_str(), kUsage);
+    return kExitBadInput;
+  }
+  // An output that cannot be written is refused now, not when the first
+  // map arrives (maybe hours later with --every).
+  if (const Status target = CheckSaveTarget(args->path); !target.ok()) {
+    std::fprintf(stderr, "lmap_saver: %s\n", target.message().c_str());
     return kExitBadInput;
   }
   KeepSaveMemoryForReuse();

@@ -54,69 +54,13 @@ StatusOr<Window> ParseWindow(const std::string& text) {
 
 namespace {
 
-std::string WindowText(const Window& window) {
-  char text[128];
-  std::snprintf(text, sizeof(text), "window %g,%g,%g,%g m", window.x0, window.y0, window.x1,
-                window.y1);
-  return text;
-}
-
-// The cells a window in metres covers on a map of `width` x `height` cells
-// with `meta`'s resolution and origin; refused when it reaches past the map,
-// as `linemap decode --window` refuses such a window: the map served is
-// then what was asked for, or nothing.
+// The cells of a window in metres on a map of `width` x `height` cells in
+// `meta`'s frame: the rule of `linemap decode --window` (CellWindowOfMetres),
+// so that the same window serves and writes the same cells.
 StatusOr<CellWindow> WindowCells(int width, int height, const MapMetadata& meta,
                                  const Window& window) {
-  Grid frame;  // only its metadata: the map's cell <-> metre transform
-  frame.meta = meta;
-  // The window's corners in cell units (cell centres at integers), then the
-  // cells c with c - 0.5 < u1 and c + 0.5 > u0. The small slack keeps a
-  // window edge that lies on a cell border (1.0 m at 0.05 m per cell reads
-  // 19.5000000004 cells) from taking in a cell it does not overlap, and so
-  // an edge on the map's border from reaching past it.
-  constexpr double kSlack = 1e-6;
-  double col_min = INFINITY, col_max = -INFINITY, row_min = INFINITY, row_max = -INFINITY;
-  for (const double x : {window.x0, window.x1}) {
-    for (const double y : {window.y0, window.y1}) {
-      double col = 0.0, row = 0.0;
-      frame.WorldToCell(x, y, &col, &row);
-      col_min = std::min(col_min, col);
-      col_max = std::max(col_max, col);
-      row_min = std::min(row_min, row);
-      row_max = std::max(row_max, row);
-    }
-  }
-  // First and last cells, inclusive; still doubles, as a window far off the
-  // map gives indices no int holds.
-  const double c0 = std::floor(col_min - 0.5 + kSlack) + 1.0;
-  const double r0 = std::floor(row_min - 0.5 + kSlack) + 1.0;
-  const double c1 = std::ceil(col_max + 0.5 - kSlack) - 1.0;
-  const double r1 = std::ceil(row_max + 0.5 - kSlack) - 1.0;
-  if (c0 > c1 || r0 > r1) {
-    // Only a window thinner than the slack, along a cell border.
-    return InvalidArgumentError(WindowText(window) + " overlaps no cell");
-  }
-  // Negated, so that a NaN (a window near the limits of a double, turned)
-  // is refused too.
-  if (!(c0 >= 0 && r0 >= 0 && c1 <= width - 1 && r1 <= height - 1)) {
-    // The cells named as `linemap decode` names them (half-open), held to
-    // a few map sizes off the map so that they print as whole numbers.
-    const double limit = 4.0 * std::max(width, height) + 4;
-    auto cell = [&](double v) {
-      return std::isnan(v) ? 0LL : static_cast<long long>(std::clamp(v, -limit, limit));
-    };
-    double ax = 0, ay = 0, bx = 0, by = 0;
-    frame.CellToWorld(-0.5, -0.5, &ax, &ay);
-    frame.CellToWorld(width - 0.5, height - 0.5, &bx, &by);
-    char text[320];
-    std::snprintf(text, sizeof(text),
-                  " meets cells [%lld, %lld) x [%lld, %lld), past the map's border: the map's "
-                  "%d x %d cells span from %g,%g to %g,%g m",
-                  cell(c0), cell(c1 + 1), cell(r0), cell(r1 + 1), width, height, ax, ay, bx, by);
-    return InvalidArgumentError(WindowText(window) + text);
-  }
-  return CellWindow{static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c1) + 1,
-                    static_cast<int>(r1) + 1};
+  return CellWindowOfMetres(meta, width, height, window.x0, window.y0, window.x1, window.y1,
+                            "window");
 }
 
 }  // namespace

@@ -28,12 +28,13 @@ StatusOr<Window> ParseWindow(const std::string& text);
 // Checks four numbers the same way (the ~window parameter given as a list).
 StatusOr<Window> WindowFromValues(const double* values, int count);
 
-// The cells of `grid` whose squares overlap the window's interior, as a grid
-// of their own whose origin is the lower-left corner of its first cell (the
-// yaw is kept; for a rotated map the window's bounding box in cells is
-// taken). Fails (invalid argument) when those cells reach past the map's
-// border (a window whose edges lie on the border does not), naming the
-// window and the map's extent, and when no cell overlaps.
+// The cells of `grid` whose centres lie in the window, as `linemap decode
+// --window` takes them (CellWindowOfMetres, linemap/codec.h), as a grid of
+// their own whose origin is the lower-left corner of its first cell (the
+// yaw is kept; for a rotated map the cell rectangle around the window's
+// corners is taken). Fails (invalid argument) when those cells reach past
+// the map's border, naming the window and the map's extent, and when the
+// window holds no cell centre.
 StatusOr<Grid> CropToWindow(const Grid& grid, const Window& window);
 
 // A decode limit lmap_server takes as the private parameter ~NAME: a whole

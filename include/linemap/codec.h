@@ -2,7 +2,8 @@
 // format of spec/format.md and decode it back, bit-exactly and without
 // floating point in the decoding path.
 //
-// A 2.0 file (the default) decodes to the input cell for cell and carries
+// A 2.x file (the default: version 2.2; 2.3 with compact cells or within a
+// tolerance) decodes to the input cell for cell and carries
 // the map's vector layers: walls as polylines, one border chain per room,
 // furniture outlines; the cells are coded in tiles against what the layers
 // draw. Within a tolerance (EncodeOptions::tolerance_cells) the file is
@@ -37,7 +38,10 @@ struct EncodeOptions {
   // refused (invalid argument). Within a tolerance the walls are straight,
   // fitted within T cells, and leave the scan specks and lone pieces
   // shorter than 2T + 1 cells to the cells; room
-  // outlines are simplified within T + 1 cells (2 when exact).
+  // outlines are simplified within T + 1 cells (2 when exact). Where the
+  // simplified cells would not be smaller than the exact ones (an all-free
+  // map, a clean plan) the exact file is written: never larger, and marked
+  // lossless.
   int tolerance_cells = 0;
   // Largest map (cells) saved within a tolerance; 0: no limit. The
   // tolerance checks hold the whole grid and some of its distance maps,
@@ -185,6 +189,20 @@ struct CellWindow {
   int row1 = 0;
 };
 
+// The window of a width x height map in `meta`'s frame that a box [x0, x1]
+// x [y0, y1] of map-frame metres covers: the cells whose centres lie in the
+// box, centres on its edges included (within 1e-9 cell, so that an edge
+// typed in decimal on a centre keeps it). With a yaw in the origin the
+// box's corners are taken into the grid and the window is the cell
+// rectangle around them. Invalid argument when the box is inverted or not
+// finite, holds no centre, or its window reaches past the map (not
+// clipped: what is served or written is what was asked for, or nothing);
+// the message starts with `label` and the box and states the map's extent.
+// `linemap decode --window` and lmap_server's ~window both take this rule.
+StatusOr<CellWindow> CellWindowOfMetres(const MapMetadata& meta, int width, int height, double x0,
+                                        double y0, double x1, double y1,
+                                        const std::string& label = "window");
+
 // The cells of `window` (non-empty, inside the map; else invalid argument)
 // as a grid whose origin is the window's lower-left corner in the map frame.
 // A 2.0 file decodes only the tiles the window meets, each only up to the
@@ -269,6 +287,7 @@ struct GridComparison {
 };
 inline constexpr std::size_t kLeakRegionCells = 50;
 
+// Part of the full library (linemap::linemap), not of the decoder alone.
 GridComparison CompareGrids(const Grid& original, const Grid& decoded);
 
 }  // namespace linemap

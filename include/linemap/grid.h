@@ -127,6 +127,14 @@ class Grid {
 std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
                                           double y);
 
+// The box in map-frame metres around the outer corners of a width x
+// height map's cells in `meta`'s frame (a yaw turns the rectangle, so the
+// box then also holds points off the map).
+struct MetreBounds {
+  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
+};
+MetreBounds MapBoundsMetres(const MapMetadata& meta, int width, int height);
+
 }  // namespace linemap
 
 #endif  // LINEMAP_GRID_H_

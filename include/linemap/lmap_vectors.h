@@ -54,6 +54,7 @@ struct LayerFidelity {
   }
 };
 // `original` must have the vectors' width and height (else invalid argument).
+// Part of the full library (linemap::linemap), not of the decoder alone.
 StatusOr<LayerFidelity> MeasureLayerFidelity(const Grid& original, const LmapVectors& vectors);
 
 StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
@@ -78,8 +79,8 @@ StatusOr<LmapHeader> LoadLmapHeader(const std::string& path, const DecodeLimits&
 // The items of the layers whose bounding box (of their points or polygon
 // vertices, which holds their cells) meets `window`, in file order, with
 // their ids: exactly the items of LoadLmapVectors that meet it. `window`
-// must be non-empty and inside the map (else invalid argument). A 2.2 file
-// reads only the layer sections whose box meets the window (spec 5.6), and
+// must be non-empty and inside the map (else invalid argument). A file of
+// version 2.2 or later reads only the layer sections whose box meets the window (spec 5.6), and
 // like DecodeLmapRegion leaves the other sections' streams unchecked; older
 // files are read whole and filtered.
 StatusOr<LmapVectors> DecodeLmapVectorsInWindow(const std::vector<std::uint8_t>& bytes,

@@ -133,7 +133,7 @@ Status SaveRosMap(const std::string& yaml_path, const Grid& grid,
 // existing files untouched and no temporary behind.
 class RosMapWriter {
  public:
-  // Starts writing `yaml_path` (must end in .yaml) and its image
+  // Starts writing `yaml_path` (must end in .yaml or .yml) and its image
   // SavedImagePath(yaml_path) for a width x height map (both >= 1) with
   // metadata `meta` (written as SaveRosMap writes a grid's). Refuses, before
   // creating anything, outputs that are directories or read-only files.

@@ -246,6 +246,54 @@ TEST(LmapSaverTest, MalformedMapExitsTwoWithoutAFile) {
   EXPECT_TRUE(ListDir(dir).empty());
 }
 
+// With --every one bad message does not end a robot's periodic save: it is
+// reported, the last good file stays, the next map is saved, and the exit
+// code on shutdown says the last save went well.
+TEST(LmapSaverTest, EveryKeepsSavingAfterAMalformedMap) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v5/map", 1, /*latch=*/true);
+  const OccupancyGridMsg good = MessageWithLevels(LoadBundledMap("navtut/lse_arena.yaml"));
+  OccupancyGridMsg bad = ReferenceMessage(LoadBundledMap("nav2/depot.yaml"), "map");
+  bad.data.resize(bad.data.size() - 1);  // one value short of width x height
+  const std::string dir = MakeTempDir("every_bad");
+  const std::string path = dir + "/robot.lmap";
+  auto saver = StartSaver(master, "/v5/map", dir + "/robot", {"--every"});
+  publisher.publish(good);
+  ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(good)); }, 20))
+      << saver->Stderr();
+  publisher.publish(bad);
+  ASSERT_TRUE(WaitFor([&] { return saver->Stderr().find("/v5/map") != std::string::npos; }, 20))
+      << saver->Stderr();
+  EXPECT_FALSE(saver->Wait(0.5).has_value()) << "--every exited on a bad map: " << saver->Stderr();
+  EXPECT_TRUE(FileHoldsCells(path, ExpectedGrid(good)));
+  const OccupancyGridMsg next = MessageWithLevels(LoadBundledMap("nav2/depot.yaml"));
+  publisher.publish(next);
+  ASSERT_TRUE(WaitFor([&] { return FileHoldsCells(path, ExpectedGrid(next)); }, 20))
+      << saver->Stderr();
+  EXPECT_EQ(saver->Stop(SIGINT), 0) << saver->Stderr();
+  EXPECT_EQ(ListDir(dir), std::vector<std::string>{"robot.lmap"});
+}
+
+// An output that cannot be written is refused at startup, before the master
+// is waited for (none runs here), naming it: not when a map arrives.
+TEST(LmapSaverTest, UnwritableOutputExitsTwoAtStartup) {
+  const std::string scratch = MakeTempDir("unwritable");
+  // A missing folder, and a folder where the file should go (".lmap" is
+  // added to a name without it, so the folder has it already).
+  ASSERT_EQ(::mkdir((scratch + "/folder.lmap").c_str(), 0755), 0);
+  for (const std::string& name : {scratch + "/nodir/map", scratch + "/folder.lmap"}) {
+    ChildProcess saver({LmapSaverPath(), "-f", name, "--every", "--wait-master", "60"},
+                       {"ROS_MASTER_URI=http://127.0.0.1:1/", "ROS_HOME=" + scratch}, scratch,
+                       "saver");
+    const std::optional<int> code = saver.Wait(10);
+    ASSERT_TRUE(code.has_value()) << name << ": still running after 10 s";
+    EXPECT_EQ(*code, 2) << name << ": " << saver.Stderr();
+    EXPECT_NE(saver.Stderr().find(name), std::string::npos) << saver.Stderr();
+    EXPECT_EQ(saver.Stderr().find("no ROS master"), std::string::npos) << saver.Stderr();
+  }
+}
+
 TEST(LmapSaverTest, NoMasterExitsOneWithinTheWait) {
   const std::string uri = "http://127.0.0.1:" + std::to_string(FreePort()) + "/";
   const std::string scratch = MakeTempDir("nomaster");

@@ -67,16 +67,19 @@ void ReceiveServedMap(RosMaster& master, const std::string& ns, std::vector<std:
 }
 
 // The reference crop, cell by cell: the cells of an unrotated map whose
-// squares overlap the open window (x0, x1) x (y0, y1).
+// centres lie in the closed window [x0, x1] x [y0, y1], as `linemap decode
+// --window` takes them.
 Grid ReferenceCrop(const Grid& grid, double x0, double y0, double x1, double y1) {
   const double r = grid.meta.resolution;
   const double ox = grid.meta.origin.x, oy = grid.meta.origin.y;
   std::vector<int> cols, rows;
   for (int c = 0; c < grid.width(); ++c) {
-    if (ox + (c + 1) * r > x0 + 1e-9 && ox + c * r < x1 - 1e-9) cols.push_back(c);
+    const double centre = ox + (c + 0.5) * r;
+    if (centre >= x0 - 1e-9 && centre <= x1 + 1e-9) cols.push_back(c);
   }
   for (int w = 0; w < grid.height(); ++w) {
-    if (oy + (w + 1) * r > y0 + 1e-9 && oy + w * r < y1 - 1e-9) rows.push_back(w);
+    const double centre = oy + (w + 0.5) * r;
+    if (centre >= y0 - 1e-9 && centre <= y1 + 1e-9) rows.push_back(w);
   }
   Grid out(static_cast<int>(cols.size()), static_cast<int>(rows.size()));
   for (std::size_t j = 0; j < rows.size(); ++j) {
@@ -146,9 +149,10 @@ TEST(LmapServerTest, PublishesMapYamlInTheGivenFrame) {
 TEST(LmapServerTest, WindowPublishesOnlyTheRegionWithItsOrigin) {
   RosMaster& master = SharedMaster();
   const Grid whole = LoadBundledMap("strands/kth/map.yaml");
-  // Edges on cell borders (-5.0) and inside cells (-2.32, 3.01, 8.93).
+  // Edges on cell borders (-5.0) and inside cells (-2.32, 3.01, 8.93). The
+  // centres -7 + (c + 0.5) 0.05 in [-5, 3.01] are those of columns 40..199.
   const Grid expected = ReferenceCrop(whole, -5.0, -2.32, 3.01, 8.93);
-  ASSERT_EQ(expected.width(), 161);
+  ASSERT_EQ(expected.width(), 160);
   OccupancyGridMsg map;
   ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(
       master, "/s3",
@@ -237,10 +241,10 @@ TEST(LmapServerTest, WindowPastTheMapExitsTwoNamingTheWindowAndTheMapsExtent) {
       // 604 x 307 cells at 0.05 m from the origin 0,0: the window's lower
       // left lies off the map.
       {SourceDir() + "/tests/data/lmap/depot_lossless.lmap", "-5,-5,1,1",
-       "604 x 307 cells span from 0,0 to 30.2,15.35 m"},
+       "the map's 604 x 307 cells have centres from 0.025,0.025 to 30.175,15.325 m"},
       // 260 x 781 cells from -7,-17.5: only x = 6..6.5 lies off the map.
       {BundledMapsDir() + "/strands/kth/map.yaml", "-5,-5,6.5,1",
-       "260 x 781 cells span from -7,-17.5 to 6,21.55 m"},
+       "the map's 260 x 781 cells have centres from -6.975,-17.475 to 5.975,21.525 m"},
   };
   for (const Case& c : cases) {
     auto server = StartServerWithoutMaster({c.map, "_window:=[" + c.window + "]"}, 60);
@@ -267,7 +271,7 @@ TEST(LmapServerTest, WindowParameterPastTheMapExitsTwo) {
   ASSERT_TRUE(code.has_value()) << "lmap_server did not exit";
   EXPECT_EQ(*code, 2) << server->Stderr();
   EXPECT_NE(server->Stderr().find("window 25,10,31,12 m"), std::string::npos) << server->Stderr();
-  EXPECT_NE(server->Stderr().find("span from 0,0 to 30.2,15.35 m"), std::string::npos)
+  EXPECT_NE(server->Stderr().find("centres from 0.025,0.025 to 30.175,15.325 m"), std::string::npos)
       << server->Stderr();
 }
 

@@ -43,9 +43,10 @@ TEST(ServedMapTest, WindowOutsideTheMapIsRefused) {
   EXPECT_FALSE(CropToWindow(grid, {5.0, 5.0, 6.0, 6.0}).ok());  // map is 1 x 0.5 m
 }
 
-// A window holds the cells whose squares overlap it; one that reaches past
-// the map's border is refused, not clipped, naming the window and the map's
-// extent, while one whose edges lie on the border holds the whole map.
+// A window holds the cells whose centres lie in it (as `linemap decode
+// --window`); one that reaches a centre past the map's border is refused,
+// not clipped, naming the window and the map's extent, while one whose edges
+// lie on the border holds the whole map, and one a little past it too.
 TEST(ServedMapTest, WindowPastTheMapsBorderIsRefused) {
   const Grid grid = testing::NoiseMap(20, 10, 1);  // 1 x 0.5 m from 0,0
   StatusOr<Grid> whole = CropToWindow(grid, {0.0, 0.0, 1.0, 0.5});
@@ -53,15 +54,20 @@ TEST(ServedMapTest, WindowPastTheMapsBorderIsRefused) {
   EXPECT_EQ(whole->width(), 20);
   EXPECT_EQ(whole->height(), 10);
   EXPECT_EQ(whole->cells(), grid.cells());
+  // Short of the outer cells' centres (0.025 m inside the border): still whole.
+  StatusOr<Grid> nearly = CropToWindow(grid, {-0.02, -0.02, 1.02, 0.52});
+  ASSERT_TRUE(nearly.ok()) << nearly.status().message();
+  EXPECT_EQ(nearly->cells(), grid.cells());
   for (const Window& past :
-       {Window{-0.01, 0.0, 0.5, 0.25}, Window{0.5, 0.25, 1.01, 0.4}, Window{0.1, -1e6, 0.2, 0.1},
+       {Window{-0.03, 0.0, 0.5, 0.25}, Window{0.5, 0.25, 1.03, 0.4}, Window{0.1, -1e6, 0.2, 0.1},
         Window{0.1, 0.1, 0.2, 0.6}, Window{-1e300, -1e300, 1e300, 1e300}}) {
     const StatusOr<Grid> crop = CropToWindow(grid, past);
     ASSERT_FALSE(crop.ok()) << past.x0 << "," << past.y0 << "," << past.x1 << "," << past.y1;
     EXPECT_EQ(crop.status().code(), StatusCode::kInvalidArgument);
     EXPECT_NE(crop.status().message().find("past the map"), std::string::npos)
         << crop.status().message();
-    EXPECT_NE(crop.status().message().find("20 x 10 cells span from 0,0 to 1,0.5 m"),
+    EXPECT_NE(crop.status().message().find(
+                  "the map's 20 x 10 cells have centres from 0.025,0.025 to 0.975,0.475 m"),
               std::string::npos)
         << crop.status().message();
   }
@@ -81,7 +87,8 @@ TEST(ServedMapTest, LoadServedMapRefusesAWindowPastTheMap) {
     ASSERT_FALSE(grid.ok()) << path;
     EXPECT_EQ(grid.status().code(), StatusCode::kInvalidArgument);
     EXPECT_NE(grid.status().message().find(path), std::string::npos) << grid.status().message();
-    EXPECT_NE(grid.status().message().find("604 x 307 cells span from 0,0 to 30.2,15.35 m"),
+    EXPECT_NE(grid.status().message().find(
+                  "the map's 604 x 307 cells have centres from 0.025,0.025 to 30.175,15.325 m"),
               std::string::npos)
         << grid.status().message();
     EXPECT_TRUE(LoadServedMap(path, Window{0, 0, 30.2, 15.35}).ok()) << path;
@@ -111,16 +118,27 @@ TEST(ServedMapTest, CropOfARotatedMapKeepsEveryCellWhereItWas) {
       ASSERT_EQ(crop->at(c, r), grid.at(col0 + c, row0 + r)) << c << "," << r;
     }
   }
-  // The window's corners fall inside the crop's cells.
+  // The crop is the cell rectangle around the window's corners, by their
+  // centres: the corners' extreme columns lie within a cell outside the
+  // first and last centres kept (0 and width - 1), and so do the rows.
+  double min_col = INFINITY, max_col = -INFINITY, min_row = INFINITY, max_row = -INFINITY;
   for (const double wx : {window.x0, window.x1}) {
     for (const double wy : {window.y0, window.y1}) {
       crop->WorldToCell(wx, wy, &col, &row);
-      EXPECT_GE(col, -0.5);
-      EXPECT_GE(row, -0.5);
-      EXPECT_LE(col, crop->width() - 0.5);
-      EXPECT_LE(row, crop->height() - 0.5);
+      min_col = std::min(min_col, col);
+      max_col = std::max(max_col, col);
+      min_row = std::min(min_row, row);
+      max_row = std::max(max_row, row);
     }
   }
+  EXPECT_GT(min_col, -1.0);
+  EXPECT_LE(min_col, 0.0);
+  EXPECT_GE(max_col, crop->width() - 1.0);
+  EXPECT_LT(max_col, crop->width());
+  EXPECT_GT(min_row, -1.0);
+  EXPECT_LE(min_row, 0.0);
+  EXPECT_GE(max_row, crop->height() - 1.0);
+  EXPECT_LT(max_row, crop->height());
 }
 
 const LimitParameter& Limit(const std::string& name) {

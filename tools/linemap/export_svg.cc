@@ -193,7 +193,7 @@ std::string Base64(const std::vector<std::uint8_t>& bytes) {
 StatusOr<std::string> LayersToSvg(const std::vector<ExportLayer>& layers, const Grid& grid) {
   // The map's extent in metres: the corners of its outer cells (a yaw turns
   // the rectangle).
-  const auto [min_x, min_y, max_x, max_y] = MapExtentMetres(grid.meta, grid.width(), grid.height());
+  const auto [min_x, min_y, max_x, max_y] = MapBoundsMetres(grid.meta, grid.width(), grid.height());
   // About one pixel per cell, between 800 and 2000 pixels along the longer
   // side, so that small maps are not tiny and big ones stay viewable.
   const double long_metres = std::max(max_x - min_x, max_y - min_y);

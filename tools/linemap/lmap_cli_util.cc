@@ -100,23 +100,4 @@ double NowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-MapExtent MapExtentMetres(const MapMetadata& meta, int width, int height) {
-  Grid frame;  // only its metadata: the map's cell <-> metre transform
-  frame.meta = meta;
-  MapExtent box;
-  bool first = true;
-  for (double col : {-0.5, width - 0.5}) {
-    for (double row : {-0.5, height - 0.5}) {
-      double x, y;
-      frame.CellToWorld(col, row, &x, &y);
-      box.min_x = first ? x : std::min(box.min_x, x);
-      box.min_y = first ? y : std::min(box.min_y, y);
-      box.max_x = first ? x : std::max(box.max_x, x);
-      box.max_y = first ? y : std::max(box.max_y, y);
-      first = false;
-    }
-  }
-  return box;
-}
-
 }  // namespace linemap::cli

@@ -43,14 +43,6 @@ StatusOr<std::size_t> SmallestTrinaryPngBytes(const Grid& grid);
 // Seconds on a monotonic clock.
 double NowSeconds();
 
-// The box in map-frame metres around the corners of a width x height grid's
-// outer cells under `meta` (a yaw turns the rectangle, so the box then also
-// holds points off the map).
-struct MapExtent {
-  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;
-};
-MapExtent MapExtentMetres(const MapMetadata& meta, int width, int height);
-
 }  // namespace linemap::cli
 
 #endif  // LINEMAP_TOOLS_LINEMAP_LMAP_CLI_UTIL_H_
