@@ -8,7 +8,8 @@
 // with --every it keeps running and rewrites the file on every new map. Each
 // save goes to an unnamed temporary file that is flushed and renamed over
 // NAME.lmap (SaveLmap), so a saver killed at any moment leaves the previous
-// file whole. Exit codes: 0 saved, 1 no master or a failed write, 2 bad
+// file whole. Exit codes: 0 saved (or stopped before any map came), 1 no
+// master or a failed write, 2 bad
 // usage, an output that cannot be written (checked at startup) or a map
 // message that is not a map (sizes that do not agree). With --every a map
 // that cannot be saved is reported and the saver waits for the next one;

@@ -24,8 +24,10 @@ StatusOr<Window> WindowFromValues(const double* values, int count) {
     if (!std::isfinite(values[i])) return InvalidArgumentError("window: numbers must be finite");
   }
   const Window window{values[0], values[1], values[2], values[3]};
-  if (!(window.x0 < window.x1) || !(window.y0 < window.y1)) {
-    return InvalidArgumentError("window: needs x0 < x1 and y0 < y1 (metres)");
+  // A box of no width may hold a row of centres: CellWindowOfMetres says
+  // whether it holds any, as for `linemap decode --window`.
+  if (!(window.x0 <= window.x1) || !(window.y0 <= window.y1)) {
+    return InvalidArgumentError("window: needs x0 <= x1 and y0 <= y1 (metres)");
   }
   return window;
 }

@@ -23,7 +23,7 @@ struct Window {
 };
 
 // Parses "x0,y0,x1,y1" (metres; also "[x0, y0, x1, y1]"). Fails on anything but four finite numbers
-// with x0 < x1 and y0 < y1.
+// with x0 <= x1 and y0 <= y1.
 StatusOr<Window> ParseWindow(const std::string& text);
 // Checks four numbers the same way (the ~window parameter given as a list).
 StatusOr<Window> WindowFromValues(const double* values, int count);

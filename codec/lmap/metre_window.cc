@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "linemap/codec.h"
@@ -12,12 +13,15 @@ namespace linemap {
 namespace {
 
 // Cell-unit slack for box edges that fall on a cell centre: 0.025 m at
-// 0.05 m/cell is 0.49999999999999994 cells in doubles.
-constexpr double kEdgeSlackCells = 1e-9;
-
-std::string CellsText(const CellWindow& w) {
-  return "cells [" + std::to_string(w.col0) + ", " + std::to_string(w.col1) + ") x [" +
-         std::to_string(w.row0) + ", " + std::to_string(w.row1) + ")";
+// 0.05 m/cell is 0.49999999999999994 cells in doubles. The rounding grows
+// with the coordinates (an origin at a UTM northing of 5,412,345.67 m puts
+// an edge typed on a centre 2e-8 cells off at 0.05 m/cell), so the slack
+// does too: a few units in the last place of the largest coordinate, in
+// cells.
+double EdgeSlackCells(const MapMetadata& meta, double x0, double y0, double x1, double y1) {
+  const double scale = std::max({std::abs(x0), std::abs(y0), std::abs(x1), std::abs(y1)}) +
+                       std::abs(meta.origin.x) + std::abs(meta.origin.y);
+  return 1e-9 + 16 * std::numeric_limits<double>::epsilon() * scale / meta.resolution;
 }
 
 std::string BoxText(const std::string& label, double x0, double y0, double x1, double y1) {
@@ -47,9 +51,9 @@ std::string ExtentText(const MapMetadata& meta, int width, int height) {
   const MetreBounds b = MapBoundsMetres(meta, width, height);
   std::snprintf(text, sizeof(text),
                 "the window is taken in map-frame metres, and the map's grid (columns 0..%d, "
-                "rows 0..%d) is turned by its origin's yaw of %g rad: the cells are those the "
-                "window's corners fall in; the turned map spans x %g..%g m, y %g..%g m, a box "
-                "not all of which is on the map",
+                "rows 0..%d) is turned by its origin's yaw of %g rad: the cells are those whose "
+                "centres lie within the window's corners taken into the grid; the turned map "
+                "spans x %g..%g m, y %g..%g m, a box not all of which is on the map",
                 width - 1, height - 1, meta.origin.yaw, b.min_x, b.max_x, b.min_y, b.max_y);
   return text;
 }
@@ -78,22 +82,31 @@ StatusOr<CellWindow> CellWindowOfMetres(const MapMetadata& meta, int width, int 
       first = false;
     }
   }
-  // Far outside the map the indices would overflow an int: such a box is
-  // past the border anyway.
-  const double limit = 4.0 * std::max(width, height) + 4;
-  auto clamp = [&](double v) { return std::isnan(v) ? -limit : std::clamp(v, -limit, limit); };
-  CellWindow w;
-  w.col0 = static_cast<int>(std::ceil(clamp(min_col - kEdgeSlackCells)));
-  w.col1 = static_cast<int>(std::floor(clamp(max_col + kEdgeSlackCells))) + 1;
-  w.row0 = static_cast<int>(std::ceil(clamp(min_row - kEdgeSlackCells)));
-  w.row1 = static_cast<int>(std::floor(clamp(max_row + kEdgeSlackCells))) + 1;
-  if (w.col0 >= w.col1 || w.row0 >= w.row1) {
+  // The first and last centres, inclusive, still in doubles: far off the
+  // map (or on a map over 2^29 cells wide) no int holds them.
+  const double slack = EdgeSlackCells(meta, x0, y0, x1, y1);
+  const double c0 = std::ceil(min_col - slack), c1 = std::floor(max_col + slack);
+  const double r0 = std::ceil(min_row - slack), r1 = std::floor(max_row + slack);
+  // Negated, so that a NaN fails too.
+  if (!(c0 <= c1 && r0 <= r1)) {
     return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) + " holds no cell centre");
   }
-  if (w.col0 < 0 || w.row0 < 0 || w.col1 > width || w.row1 > height) {
-    return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) + " covers " + CellsText(w) +
+  if (!(c0 >= 0 && r0 >= 0 && c1 <= width - 1.0 && r1 <= height - 1.0)) {
+    // Held to a few map sizes off the map, so that they print as whole
+    // numbers.
+    const double limit = 4.0 * std::max(width, height) + 4;
+    auto index = [&](double v) { return static_cast<long long>(std::clamp(v, -limit, limit)); };
+    char cells[160];
+    std::snprintf(cells, sizeof(cells), "cells [%lld, %lld) x [%lld, %lld)", index(c0),
+                  index(c1) + 1, index(r0), index(r1) + 1);
+    return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) + " covers " + cells +
                                 ", past the map's border: " + ExtentText(meta, width, height));
   }
+  CellWindow w;
+  w.col0 = static_cast<int>(c0);
+  w.col1 = static_cast<int>(c1) + 1;
+  w.row0 = static_cast<int>(r0);
+  w.row1 = static_cast<int>(r1) + 1;
   return w;
 }
 

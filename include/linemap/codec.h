@@ -191,8 +191,9 @@ struct CellWindow {
 
 // The window of a width x height map in `meta`'s frame that a box [x0, x1]
 // x [y0, y1] of map-frame metres covers: the cells whose centres lie in the
-// box, centres on its edges included (within 1e-9 cell, so that an edge
-// typed in decimal on a centre keeps it). With a yaw in the origin the
+// box, centres on its edges included (within 1e-9 cell, more at large
+// coordinates: a few units in their last place, so that an edge typed in
+// decimal on a centre keeps it, also at a UTM origin). With a yaw in the origin the
 // box's corners are taken into the grid and the window is the cell
 // rectangle around them. Invalid argument when the box is inverted or not
 // finite, holds no centre, or its window reaches past the map (not

@@ -32,8 +32,9 @@ TEST(ServedMapTest, ParsesWindowTextAndRefusesBadOnes) {
   EXPECT_TRUE(ParseWindow("1,2,3,4").ok());
   EXPECT_FALSE(ParseWindow("1,2,3").ok());
   EXPECT_FALSE(ParseWindow("1,2,3,4,5").ok());
-  EXPECT_FALSE(ParseWindow("3,2,1,4").ok());  // x0 > x1
-  EXPECT_FALSE(ParseWindow("1,2,3,2").ok());  // y0 = y1
+  EXPECT_FALSE(ParseWindow("3,2,1,4").ok());    // x0 > x1
+  EXPECT_TRUE(ParseWindow("1,2,3,2").ok());     // y0 = y1: a row of centres, maybe
+  EXPECT_FALSE(ParseWindow("1,2,3,1.9").ok());  // y0 > y1
   EXPECT_FALSE(ParseWindow("1,2,x,4").ok());
   EXPECT_FALSE(ParseWindow("1,2,nan,4").ok());
 }
@@ -41,6 +42,14 @@ TEST(ServedMapTest, ParsesWindowTextAndRefusesBadOnes) {
 TEST(ServedMapTest, WindowOutsideTheMapIsRefused) {
   Grid grid = testing::NoiseMap(20, 10, 1);
   EXPECT_FALSE(CropToWindow(grid, {5.0, 5.0, 6.0, 6.0}).ok());  // map is 1 x 0.5 m
+  // A window of no height on row 3's centres (0.175 m) holds that row, as
+  // `linemap decode --window` takes it; one between two rows holds none.
+  StatusOr<Grid> row = CropToWindow(grid, {0.0, 0.175, 1.0, 0.175});
+  ASSERT_TRUE(row.ok()) << row.status().message();
+  EXPECT_EQ(row->width(), 20);
+  EXPECT_EQ(row->height(), 1);
+  for (int c = 0; c < 20; ++c) EXPECT_EQ(row->at(c, 0), grid.at(c, 3));
+  EXPECT_FALSE(CropToWindow(grid, {0.0, 0.2, 1.0, 0.2}).ok());
 }
 
 // A window holds the cells whose centres lie in it (as `linemap decode

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "linemap/codec.h"
@@ -57,6 +59,35 @@ TEST(CellWindowOfMetresTest, RefusesBoxesPastTheMapOrWithoutACentre) {
   const StatusOr<CellWindow> label = CellWindowOfMetres(Depot(), 604, 307, 2, 1, 1, 2, "--window");
   EXPECT_EQ(label.status().message().rfind("--window 2,1,1,2 m", 0), 0u)
       << label.status().message();
+}
+
+// Edges typed in decimal on a centre keep it at a UTM-sized origin too,
+// where the doubles' rounding is far above 1e-9 cell: each column alone.
+TEST(CellWindowOfMetresTest, EdgesOnCentresHoldAtLargeOrigins) {
+  for (const double origin_x : {12.34, 512345.67, 5412345.67}) {
+    const MapMetadata meta = Depot(origin_x, 0);
+    for (int c = 0; c < 1000; ++c) {
+      char typed[64];
+      std::snprintf(typed, sizeof(typed), "%.3f", origin_x + (c + 0.5) * 0.05);
+      const double x = std::strtod(typed, nullptr);
+      const StatusOr<CellWindow> w = CellWindowOfMetres(meta, 1000, 10, x, 0.025, x, 0.025);
+      ASSERT_TRUE(w.ok()) << origin_x << " " << typed << ": " << w.status().message();
+      ASSERT_EQ(w->col0, c) << origin_x << " " << typed;
+      ASSERT_EQ(w->col1, c + 1) << origin_x << " " << typed;
+    }
+  }
+}
+
+// A map wider than 2^29 cells: indices past an int are refused with whole
+// numbers in the message, not a cast's garbage.
+TEST(CellWindowOfMetresTest, WindowFarRightOfAVeryWideMapIsRefusedPlainly) {
+  const StatusOr<CellWindow> far =
+      CellWindowOfMetres(Depot(), 600000000, 1, 1e12, 0.01, 2e12, 0.04);
+  ASSERT_FALSE(far.ok());
+  EXPECT_NE(far.status().message().find("covers cells [2400000004, 2400000005)"), std::string::npos)
+      << far.status().message();
+  ExpectWindow(CellWindowOfMetres(Depot(), 600000000, 1, 29999999.0, 0.0, 29999999.99, 0.05),
+               599999980, 0, 600000000, 1);
 }
 
 // A turned map: the cell rectangle around the window's corners, and a
