@@ -222,8 +222,8 @@ bool IsTemporaryOf(const std::string& name, const std::string& base) {
 // save, or to one that named it at Open and writes it late (a map's YAML
 // after a long decode; an .lmap after a long encode, where the file system
 // has no unnamed files): that save's Finish() sees its name gone and fails
-// before any rename, leaving every target as it was. Best effort: failures to list or remove are
-// ignored.
+// before any rename, leaving every target as it was. Best effort: failures
+// to list or remove are ignored.
 void RemoveStaleTemporaries(const std::string& target) {
   const std::string dir = DirectoryOf(target);
   const std::size_t slash = target.find_last_of('/');
