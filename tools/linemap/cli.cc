@@ -84,30 +84,29 @@ Status CheckFolderTakesFiles(const std::string& folder, const std::string& what)
   return Status::Ok();
 }
 
+// The options that raise a limit (the chunk, inflated and chain limits have
+// none).
+struct LimitFlag {
+  Limit limit;
+  const char* option;
+};
+constexpr LimitFlag kLimitFlags[] = {
+    {Limit::kCells, "--max-cells"},
+    {Limit::kFileBytes, "--max-file-bytes"},
+    {Limit::kSegments, "--max-segments"},
+    {Limit::kObjects, "--max-objects"},
+    {Limit::kToleranceCells, "--max-tolerance-cells"},
+};
+
 // The option of `command` that raises `limit`, or "" when it has none.
 std::string LimitOption(const std::string& command, Limit limit) {
-  const char* name = "";
-  switch (limit) {
-    case Limit::kCells:
-      name = "--max-cells";
-      break;
-    case Limit::kFileBytes:
-      name = "--max-file-bytes";
-      break;
-    case Limit::kSegments:
-      name = "--max-segments";
-      break;
-    case Limit::kObjects:
-      name = "--max-objects";
-      break;
-    case Limit::kToleranceCells:
-      name = "--max-tolerance-cells";
-      break;
-    default:  // the chunk, inflated and chain limits have no option
-      return "";
-  }
-  for (const CommandEntry& entry : Commands()) {
-    if (entry.spec->name == command && FindOption(*entry.spec, name) != nullptr) return name;
+  for (const LimitFlag& flag : kLimitFlags) {
+    if (flag.limit != limit) continue;
+    for (const CommandEntry& entry : Commands()) {
+      if (entry.spec->name == command && FindOption(*entry.spec, flag.option) != nullptr) {
+        return flag.option;
+      }
+    }
   }
   return "";
 }

@@ -233,25 +233,33 @@ TEST(CmdInfoTest, JsonHoldsTheMetadata) {
   EXPECT_NE(help.out.find("robot_pose"), std::string::npos) << help.out;
 }
 
+// lse_arena saved with `options` (metadata text as another writer may store
+// it) as m.lmap in a new folder tagged `tag`; the file's path.
+std::string LseArenaFileWith(const EncodeOptions& options, const std::string& tag) {
+  const std::string dir = MakeTempDir(tag);
+  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
+  EXPECT_TRUE(grid.ok()) << grid.status().message();
+  if (!grid.ok()) return dir + "/m.lmap";
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
+  EXPECT_TRUE(bytes.ok()) << bytes.status().message();
+  if (bytes.ok()) WriteFile(dir + "/m.lmap", std::string(bytes->begin(), bytes->end()));
+  return dir + "/m.lmap";
+}
+
 // Metadata from another writer may hold control characters (the format
 // does not check its text): info prints each entry on one line, escaped,
 // and --json escapes them as JSON does.
 TEST(CmdInfoTest, ControlCharactersInMetadataAreEscaped) {
-  const std::string dir = MakeTempDir("cli_info_metadata_escape");
-  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
-  ASSERT_TRUE(grid.ok());
   EncodeOptions options;
   options.time = "a\nb";
   options.creator = "tab\there \\ \x1b";
-  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
-  ASSERT_TRUE(bytes.ok()) << bytes.status().message();
-  WriteFile(dir + "/m.lmap", std::string(bytes->begin(), bytes->end()));
-  const CliResult text = RunCli({"info", dir + "/m.lmap"});
+  const std::string lmap = LseArenaFileWith(options, "cli_info_metadata_escape");
+  const CliResult text = RunCli({"info", lmap});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("meta:       time = a\\nb\n"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("meta:       creator = tab\\there \\\\ \\x1b\n"), std::string::npos)
       << text.out;
-  const CliResult json = RunCli({"info", dir + "/m.lmap", "--json"});
+  const CliResult json = RunCli({"info", lmap, "--json"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
   EXPECT_NE(json.out.find("\"time\":\"a\\nb\""), std::string::npos) << json.out;
   EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1) << json.out;
@@ -260,9 +268,6 @@ TEST(CmdInfoTest, ControlCharactersInMetadataAreEscaped) {
 // JSON is UTF-8: metadata another tool wrote in Latin-1 (or any stray byte)
 // must not make `info --json` print invalid JSON; well-formed UTF-8 passes.
 TEST(CmdInfoTest, JsonReplacesBytesThatAreNotUtf8) {
-  const std::string dir = MakeTempDir("cli_info_metadata_utf8");
-  StatusOr<Grid> grid = LoadRosMap(testing::BundledMapsDir() + "/navtut/lse_arena.yaml");
-  ASSERT_TRUE(grid.ok());
   EncodeOptions options;
   // K\xfcche: Latin-1; then a lone continuation byte, an overlong '/', a
   // surrogate and a sequence cut short; then well-formed "K\u00fcche \u20ac".
@@ -272,10 +277,8 @@ TEST(CmdInfoTest, JsonReplacesBytesThatAreNotUtf8) {
   options.frame_id =
       "K\xc3\xbc"
       "che \xe2\x82\xac";
-  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
-  ASSERT_TRUE(bytes.ok()) << bytes.status().message();
-  WriteFile(dir + "/m.lmap", std::string(bytes->begin(), bytes->end()));
-  const CliResult json = RunCli({"info", dir + "/m.lmap", "--json"});
+  const CliResult json =
+      RunCli({"info", LseArenaFileWith(options, "cli_info_metadata_utf8"), "--json"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
   EXPECT_NE(json.out.find("\"creator\":\"K\\ufffdche|\\ufffd|\\ufffd\\ufffd|"
                           "\\ufffd\\ufffd\\ufffd|\\ufffd\\ufffd\""),
