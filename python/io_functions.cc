@@ -384,6 +384,44 @@ py::object RoomAt(const py::object& source, double x, double y, const py::object
   return out;
 }
 
+StatusOr<LmapHeader> ReadHeader(const std::vector<std::uint8_t>& bytes,
+                                const DecodeLimits& limits) {
+  return DecodeLmapHeader(bytes, limits);
+}
+StatusOr<LmapHeader> ReadHeader(const std::string& path, const DecodeLimits& limits) {
+  return LoadLmapHeader(path, limits);
+}
+
+// What `linemap info --json` says of a file's frame and fidelity, read from
+// its header and metadata only (no layers, no cells).
+py::dict Info(const py::object& source, const py::object& limits_arg) {
+  const DecodeLimits limits = LimitsArgument(limits_arg, py::none());
+  StatusOr<LmapHeader> read =
+      ReadSource(source, [&](const auto& file) { return ReadHeader(file, limits); });
+  const LmapHeader header = ValueOrRaise(std::move(read));
+  py::dict out;
+  out["version"] = std::to_string(header.major) + "." + std::to_string(header.minor);
+  out["width"] = header.width;
+  out["height"] = header.height;
+  out["resolution"] = header.meta.resolution;
+  out["origin"] =
+      py::make_tuple(header.meta.origin.x, header.meta.origin.y, header.meta.origin.yaw);
+  out["lossless"] = header.lossless;
+  const std::optional<int> tolerance = ToleranceCellsOf(header.metadata);
+  out["tolerance"] = header.lossless || !tolerance ? py::object(py::none()) : py::int_(*tolerance);
+  // Metadata is not validated UTF-8: bytes that are not become U+FFFD.
+  const auto text = [](const std::string& bytes) {
+    PyObject* decoded =
+        PyUnicode_DecodeUTF8(bytes.data(), static_cast<Py_ssize_t>(bytes.size()), "replace");
+    if (decoded == nullptr) throw py::error_already_set();
+    return py::reinterpret_steal<py::str>(decoded);
+  };
+  py::dict metadata;  // a repeated key keeps its last value
+  for (const auto& [key, value] : header.metadata) metadata[text(key)] = text(value);
+  out["metadata"] = metadata;
+  return out;
+}
+
 }  // namespace
 
 void BindIo(py::module_& module) {
@@ -491,6 +529,19 @@ its lower-left corner as load(window_cells=...) returns it}; None when no
 room's border encloses the point (unknown space, a file without rooms). A
 point off the map raises ValueError naming it; ``limits`` and other errors
 as for load().
+)doc");
+  module.def("info", &Info, py::arg("source"), py::kw_only(), py::arg("limits") = py::none(),
+             R"doc(
+What an .lmap file (a path) or .lmap bytes says of itself, read from its
+header and metadata without its layers or cells (as ``linemap info --json``
+without the counts): a dict {``version`` ("2.3"), ``width``, ``height``
+(cells), ``resolution`` (m/cell), ``origin`` (x, y, yaw: metres, radians),
+``lossless`` (the file is the map cell for cell), ``tolerance`` (cells: the
+T of ``save(..., tolerance=T)`` a file simplified within a tolerance was
+saved at, whose guarantees then hold; None for an exact file and for files
+that do not name it), ``metadata`` (dict of str: the file's metadata, such
+as ``creator``, ``time``, ``frame_id``, ``robot_pose``; a repeated key keeps
+its last value)}. Errors as for load().
 )doc");
 }
 

@@ -158,6 +158,7 @@ def vectors(
     *,
     limits: Optional[DecodeLimits] = None,
 ) -> dict[str, Any]: ...
+def info(source: _Source, *, limits: Optional[DecodeLimits] = None) -> dict[str, Any]: ...
 def room_at(
     source: _Source,
     x: float,

@@ -1,7 +1,9 @@
 #include "codec/lmap/chunk_coding.h"
 
 #include <bit>
+#include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <tuple>
 
 #include "format/deflate.h"
@@ -197,6 +199,25 @@ StatusOr<std::vector<std::pair<std::string, std::string>>> ReadMetadata(
   }
   if (!c.empty()) return CorruptError("metadata has trailing bytes");
   return entries;
+}
+
+std::optional<int> ToleranceCellsOf(
+    const std::vector<std::pair<std::string, std::string>>& metadata) {
+  for (auto entry = metadata.rbegin(); entry != metadata.rend(); ++entry) {
+    if (entry->first != kToleranceMetadataKey) continue;
+    const std::string& text = entry->second;
+    // Plain decimal only: no sign, no spaces, no leading zero, at most ten
+    // digits (so the sum below cannot overflow before the range check).
+    if (text.empty() || text.size() > 10 || text[0] == '0') return std::nullopt;
+    std::int64_t value = 0;
+    for (char ch : text) {
+      if (ch < '0' || ch > '9') return std::nullopt;
+      value = value * 10 + (ch - '0');
+    }
+    if (value > INT32_MAX) return std::nullopt;
+    return static_cast<int>(value);
+  }
+  return std::nullopt;
 }
 
 StatusOr<std::vector<LatticeSegment>> ReadSegments(const std::vector<std::uint8_t>& body, int width,

@@ -149,15 +149,17 @@ StatusOr<std::vector<std::uint8_t>> EncodeV2(const Grid& grid, const EncodeOptio
   // cells, with cells restored where a guarantee fails (FitBlockCells
   // checks every one on exactly what the file decodes to). Where the blocks
   // save nothing (a clean plan at T = 1) the exact cells are kept: never
-  // larger than the exact file.
+  // larger than the exact file. The files are compared whole: the blocks'
+  // file also names its tolerance in the metadata.
   bool exact = false;
   if (options.progress) options.progress(ToleranceRoundsProgress(0));
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> block_cells,
                            CellsWithinTolerance(grid, options, layers, &exact));
-  if (block_cells.size() >= exact_cells.size()) {
-    return WriteV2(FrameOf(grid), options, layers, section_side, true, kCellChunk, exact_cells);
-  }
-  return WriteV2(FrameOf(grid), options, layers, section_side, exact, kBlockChunk, block_cells);
+  std::vector<std::uint8_t> blocks_file =
+      WriteV2(FrameOf(grid), options, layers, section_side, exact, kBlockChunk, block_cells);
+  std::vector<std::uint8_t> cells_file =
+      WriteV2(FrameOf(grid), options, layers, section_side, true, kCellChunk, exact_cells);
+  return blocks_file.size() < cells_file.size() ? blocks_file : cells_file;
 }
 
 // The file EncodeLmap returns (its progress reports aside).

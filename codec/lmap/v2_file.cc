@@ -21,7 +21,12 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
   ContainerWriter writer(kFormatMajor, static_cast<std::uint8_t>(minor));
   writer.AddChunk(kHeaderChunk,
                   WriteHeader(HeaderFields{frame.width, frame.height, frame.meta, exact}));
-  const auto metadata = MetadataOf(options);
+  auto metadata = MetadataOf(options);
+  // A reader learns what a file promises from the file itself: the guarantees
+  // of a map simplified within T cells (linemap/tolerance.h) depend on T.
+  if (!exact && options.tolerance_cells > 0) {
+    metadata.emplace_back(kToleranceMetadataKey, std::to_string(options.tolerance_cells));
+  }
   if (!metadata.empty()) {
     writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));
   }

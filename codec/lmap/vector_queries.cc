@@ -31,6 +31,21 @@ StatusOr<LmapHeader> HeaderOf(const ContainerView& view, const DecodeLimits& lim
   header.width = fields->width;
   header.height = fields->height;
   header.meta = fields->meta;
+  // A corrupt `meta` chunk rejects the file in a whole-file read, so it does
+  // here too; the last one holds the file's metadata.
+  for (const Chunk& chunk : view.chunks) {
+    if (chunk.type != kMetadataChunk) continue;
+    PayloadCoder coder = PayloadCoder::kRaw;
+    StatusOr<std::vector<std::uint8_t>> body =
+        UnwrapPayload(chunk.payload, chunk.size, limits, &coder);
+    if (body.ok() && coder == PayloadCoder::kDraco) {
+      body = CorruptError("the Draco payload coder is for SEGS only");
+    }
+    if (!body.ok()) return body.status().WithContext("chunk meta");
+    StatusOr<std::vector<std::pair<std::string, std::string>>> entries = ReadMetadata(*body);
+    if (!entries.ok()) return entries.status().WithContext("chunk meta");
+    header.metadata = std::move(*entries);
+  }
   return header;
 }
 

@@ -175,6 +175,20 @@ struct LmapContents {
   std::vector<LmapChunkInfo> chunks;
 };
 
+// The metadata key (spec/format.md 4.3) under which the encoder records the
+// tolerance a file's map was simplified within: T in cells, in decimal, in
+// every file that is not exact (as the CLI's --tolerance and the Python
+// module's `tolerance`). The guarantees of linemap/tolerance.h that
+// a planner may rely on depend on T, so the file says it itself.
+inline constexpr char kToleranceMetadataKey[] = "tolerance";
+// The T that `metadata` names (its last `tolerance` entry, a whole
+// number from 1 to 2^31 - 1 in plain decimal), or nullopt: an exact file, a
+// file written before the key existed or by another encoder, or a value
+// that is no such number (metadata is informational: it never rejects a
+// file).
+std::optional<int> ToleranceCellsOf(
+    const std::vector<std::pair<std::string, std::string>>& metadata);
+
 StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options = {});
 StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {});
 StatusOr<LmapContents> DecodeLmapContents(const std::vector<std::uint8_t>& bytes,

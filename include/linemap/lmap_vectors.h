@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linemap/cells.h"
@@ -62,8 +63,8 @@ StatusOr<LmapVectors> DecodeLmapVectors(const std::vector<std::uint8_t>& bytes,
 StatusOr<LmapVectors> LoadLmapVectors(const std::string& path, const DecodeLimits& limits = {});
 
 // What a viewer of a large map reads first: the map's size and frame from
-// the file's header, without its layers or cells (on a 282-Mcell map the
-// layers alone take about 0.2 s to read).
+// the file's header, and the file's metadata, without its layers or cells
+// (on a 282-Mcell map the layers alone take about 0.2 s to read).
 struct LmapHeader {
   int major = 0;
   int minor = 0;
@@ -71,6 +72,10 @@ struct LmapHeader {
   int width = 0;   // cells
   int height = 0;  // cells
   MapMetadata meta;
+  // The entries of the file's last `meta` chunk (spec/format.md 4.3), key
+  // and value, in file order: `creator`, `time`, `frame_id`, `robot_pose`,
+  // `tolerance` (ToleranceCellsOf() reads it) and any others.
+  std::vector<std::pair<std::string, std::string>> metadata;
 };
 StatusOr<LmapHeader> DecodeLmapHeader(const std::vector<std::uint8_t>& bytes,
                                       const DecodeLimits& limits = {});

@@ -197,6 +197,13 @@ body13[first] = (body13[first] & ~31) | 13
 open(bad + 'v2_3_tile_model_13.lmap', 'wb').write(
     build(head23, [c if c[0] != b'CELL' else [b'CELL', bytes(body13)] for c in chunks23]))
 
+# The tolerance file's metadata (its T) with a byte after its last entry:
+# corrupt for every reader, the header-only one included.
+head23t, chunks23t = parse(open('tests/data/lmap/willow_v2_3_tolerance_1.lmap', 'rb').read())
+assert any(c[0] == b'meta' for c in chunks23t)
+open(bad + 'v2_3_meta_trailing_bytes.lmap', 'wb').write(
+    build(head23t, [c if c[0] != b'meta' else [b'meta', c[1] + b'\x00'] for c in chunks23t]))
+
 # A file without cells must still hold valid layers: the 2.2 file's LAYR
 # with the last byte of its stream set to 0 (a stream may not end in a zero
 # byte), and no CELL chunk.

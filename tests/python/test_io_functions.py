@@ -824,3 +824,43 @@ def test_room_at_off_the_map_raises_value_error_naming_the_point(depot_lmap):
         linemap.room_at(path, float("nan"), 1.0)
     with pytest.raises(FileNotFoundError):
         linemap.room_at(path.parent / "none.lmap", 1.0, 1.0)
+
+
+@pytest.mark.parametrize("args", [
+    [],
+    ["--tolerance", "2"],
+    ["--metadata", "--time", "2024-05-01T12:00:00Z", "--pose", "5,5,0.5", "--tolerance", "1"],
+])
+def test_info_says_what_the_cli_info_json_says(args, tmp_path, cli):
+    lmap = tmp_path / "depot.lmap"
+    linemap_cli.run(cli, "encode", BUNDLED["depot"], "-o", lmap, "--no-sync", *args)
+    want = linemap_cli.run_json(cli, "info", lmap, "--json")
+    for source in (lmap, lmap.read_bytes()):
+        got = linemap.info(source)
+        for key in ("version", "width", "height", "resolution", "lossless", "metadata"):
+            assert got[key] == want[key], key
+        assert list(got["origin"]) == want["origin"]
+        assert got["tolerance"] == want["tolerance_cells"]
+    expected_tolerance = int(args[args.index("--tolerance") + 1]) if "--tolerance" in args else None
+    assert got["tolerance"] == expected_tolerance
+    assert ("robot_pose" in got["metadata"]) == ("--pose" in args)
+
+
+def test_info_of_a_file_saved_within_a_tolerance_names_it(tmp_path):
+    m = linemap.load(BUNDLED["depot"])
+    path = tmp_path / "t3.lmap"
+    linemap.save(path, m, tolerance=3)
+    info = linemap.info(path)
+    assert info["lossless"] is False and info["tolerance"] == 3
+    assert info["metadata"] == {"tolerance": "3"}
+    linemap.save(path, m)
+    assert linemap.info(path)["tolerance"] is None and linemap.info(path)["lossless"] is True
+
+
+def test_info_errors_name_the_file(tmp_path):
+    with pytest.raises(FileNotFoundError, match="nope.lmap"):
+        linemap.info(tmp_path / "nope.lmap")
+    bad = tmp_path / "bad.lmap"
+    bad.write_bytes(b"not an lmap file")
+    with pytest.raises(ValueError, match="bad.lmap"):
+        linemap.info(bad)

@@ -1,6 +1,7 @@
 // linemap info MAP [--json]: size, resolution, origin and cell counts.
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,16 +24,20 @@ const CommandSpec kInfoSpec = {
     "decoded cell counts and its vector layers are printed: walls (polylines\n"
     "and the straight segments they are made of), rooms and furniture objects\n"
     "(for a version 1.0 file: segments, room chains and blobs), and its metadata\n"
-    "(creator, time, frame_id, robot_pose), one 'meta:' line per entry, with\n"
-    "control characters and backslashes escaped as in C (\\n, \\x1b, \\\\): the\n"
-    "format does not check the text (encode refuses them in --time).",
+    "(creator, time, frame_id, robot_pose; tolerance, the T of a file saved\n"
+    "with --tolerance T), one 'meta:' line per entry, with control characters\n"
+    "and backslashes escaped as in C (\\n, \\x1b, \\\\): the format does not\n"
+    "check the text (encode refuses them in --time). A file saved within a\n"
+    "tolerance says so on its first line, with T in cells and metres.",
     WithMapLoadOptions({{"--json", "",
                          "print one JSON object with keys width, height, "
                          "resolution, origin, free, occupied, unknown (an .lmap file "
-                         "also: version, lossless, walls, wall_segments, rooms, furniture, "
-                         "chunks, and metadata: an object of the file's metadata as text, "
-                         "such as creator, time, frame_id and robot_pose (\"x y yaw\"), "
-                         "from encode --metadata, --time and --pose, {} when it has none, a "
+                         "also: version, lossless, tolerance_cells (the T a file saved within "
+                         "a tolerance names, else null), walls, wall_segments, rooms, "
+                         "furniture, chunks, and metadata: an object of the file's metadata "
+                         "as text, such as creator, time, frame_id and robot_pose (\"x y "
+                         "yaw\") from encode --metadata, --time and --pose, and tolerance "
+                         "from --tolerance, {} when it has none, a "
                          "key stored more than once giving an array of its values; a 1.0 "
                          "file also segments, room_chains, blobs)"}}),
     1,
@@ -131,6 +136,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   const CellCounts counts = grid.Count();
   const LayerCounts layers = CountLayers(*contents);
   const bool v1 = contents->major < 2;
+  const std::optional<int> tolerance = ToleranceCellsOf(contents->metadata);
   if (args.Has("--json")) {
     std::string chunks = "[";
     for (const LmapChunkInfo& c : contents->chunks) {
@@ -147,6 +153,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
         .Add("origin",
              std::vector<double>{grid.meta.origin.x, grid.meta.origin.y, grid.meta.origin.yaw})
         .Add("lossless", contents->lossless)
+        .AddRaw("tolerance_cells", tolerance ? std::to_string(*tolerance) : "null")
         .Add("walls", std::uint64_t{layers.walls})
         .Add("wall_segments", std::uint64_t{layers.wall_segments})
         .Add("rooms", std::uint64_t{layers.rooms})
@@ -166,11 +173,18 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   }
   // A 2.x file that is not exact was saved within a tolerance (its cells
   // in blocks); only the former 1.0 mode wrote lossy files without one.
-  const char* fidelity = contents->lossless    ? "lossless"
+  // Files written before the metadata named T say no more than that.
+  std::string fidelity = contents->lossless    ? "lossless"
                          : contents->major > 1 ? "within a tolerance"
                                                : "lossy";
+  if (!contents->lossless && tolerance) {
+    char text[96];
+    std::snprintf(text, sizeof text, " of %d cell%s (%g m)", *tolerance, *tolerance == 1 ? "" : "s",
+                  *tolerance * grid.meta.resolution);
+    fidelity += text;
+  }
   std::printf("file:       %s (.lmap version %d.%d, %s)\n", path.c_str(), contents->major,
-              contents->minor, fidelity);
+              contents->minor, fidelity.c_str());
   std::printf("size:       %d x %d cells\n", grid.width(), grid.height());
   std::printf("resolution: %g m/cell\n", grid.meta.resolution);
   std::printf("origin:     x %g m, y %g m, yaw %g rad\n", grid.meta.origin.x, grid.meta.origin.y,

@@ -67,6 +67,7 @@ const BadFile kBadFiles[] = {
      "chunk LAYR: section 0: point out of the grid (or its section's box) or malformed"},
     // Version 2.3 (the same script).
     {"v2_3_tile_model_13.lmap", "chunk CELL: tile 0: tile cells: unknown model 13"},
+    {"v2_3_meta_trailing_bytes.lmap", "chunk meta: metadata has trailing bytes"},
     // Checked whatever a decoder has to draw (the same script): layers in a
     // file without cells, the cells' chunk of a grid without cells.
     {"v2_2_layr_stream_corrupt_without_cells.lmap",

@@ -1,11 +1,15 @@
 // Chunk bodies read from crafted bytes: positions that must not wrap, counts
 // that are corrupt (impossible for the body) or over a caller's limit
-// (resource exhausted), and reserved payload coders (unsupported).
+// (resource exhausted), reserved payload coders (unsupported), and the
+// metadata's tolerance.
 #include "codec/lmap/chunk_coding.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "format/byte_io.h"
@@ -156,6 +160,29 @@ TEST(ChunkCodingTest, UnknownAncillaryCoderIsNotReadLastMetaWins) {
   ASSERT_TRUE(decoded.ok()) << decoded.status().ToString();
   ASSERT_EQ(decoded->metadata.size(), 1u);
   EXPECT_EQ(decoded->metadata[0].second, "second");
+}
+
+// The tolerance a file names: plain decimal whole numbers only, the last
+// entry winning; anything else names none (metadata never rejects a file).
+TEST(ChunkCodingTest, ToleranceCellsOfReadsOnlyPlainWholeNumbers) {
+  using Entries = std::vector<std::pair<std::string, std::string>>;
+  const std::pair<std::string, std::optional<int>> values[] = {
+      {"1", 1},           {"4", 4},
+      {"17", 17},         {"2147483647", 2147483647},
+      {"0", {}},          {"", {}},
+      {"02", {}},         {"+2", {}},
+      {"-2", {}},         {" 2", {}},
+      {"2 ", {}},         {"2.0", {}},
+      {"2147483648", {}}, {"99999999999", {}},
+      {"two", {}},
+  };
+  for (const auto& [text, want] : values) {
+    EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", text}}), want) << "'" << text << "'";
+  }
+  EXPECT_EQ(ToleranceCellsOf(Entries{}), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(Entries{{"Tolerance", "2"}, {"tolerance_cells", "2"}}), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", "1"}, {"creator", "x"}, {"tolerance", "3"}}), 3);
+  EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", "1"}, {"tolerance", "x"}}), std::nullopt);
 }
 
 }  // namespace

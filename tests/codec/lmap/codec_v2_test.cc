@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "codec/tolerance/simplify.h"
@@ -402,11 +404,43 @@ TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
       auto simplified = SimplifyWithinTolerance(*grid, t);
       ASSERT_TRUE(simplified.ok());
       EXPECT_TRUE(*decoded == *simplified || *decoded == *grid) << map << " T = " << t;
-      // The header says whether the file is exact.
+      // The header says whether the file is exact, and a file that is not
+      // names its tolerance in its metadata.
       auto contents = DecodeLmapContents(*bytes);
       ASSERT_TRUE(contents.ok());
       EXPECT_EQ(contents->lossless, *decoded == *grid) << map << " T = " << t;
+      const std::pair<std::string, std::string> named{"tolerance", std::to_string(t)};
+      const auto& metadata = contents->metadata;
+      if (contents->lossless) {
+        EXPECT_TRUE(metadata.empty()) << map << " T = " << t;
+        EXPECT_EQ(ToleranceCellsOf(metadata), std::nullopt);
+      } else {
+        EXPECT_EQ(metadata, (std::vector{named})) << map << " T = " << t;
+        EXPECT_EQ(ToleranceCellsOf(metadata), t);
+      }
     }
+  }
+}
+
+// The caller's metadata comes first, then the tolerance; an exact save
+// names none, whatever the caller gives.
+TEST(CodecV2Test, ToleranceIsNamedBesideTheCallersMetadata) {
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(grid.ok());
+  EncodeOptions options;
+  options.creator = "robot 7";
+  options.frame_id = "map";
+  using Entries = std::vector<std::pair<std::string, std::string>>;
+  for (int t : {0, 2}) {
+    options.tolerance_cells = t;
+    auto bytes = EncodeLmap(*grid, options);
+    ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
+    auto contents = DecodeLmapContents(*bytes);
+    ASSERT_TRUE(contents.ok());
+    ASSERT_EQ(contents->lossless, t == 0) << "depot is simplified at T = 2";
+    Entries want{{"creator", "robot 7"}, {"frame_id", "map"}};
+    if (t > 0) want.emplace_back("tolerance", "2");
+    EXPECT_EQ(contents->metadata, want) << "T = " << t;
   }
 }
 

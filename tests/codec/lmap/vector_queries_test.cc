@@ -11,6 +11,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "format/file_io.h"
@@ -109,7 +110,8 @@ void ExpectSameItems(const LmapVectors& got, const LmapVectors& want) {
 
 TEST(VectorQueriesTest, HeaderGivesTheDecodedMapsSizeAndFrame) {
   for (const char* name : {"depot_v2.lmap", "depot_v2_0.lmap", "depot_v2_raster_only.lmap",
-                           "depot_lossless.lmap", "willow_v2_2_tolerance_1.lmap"}) {
+                           "depot_lossless.lmap", "willow_v2_2_tolerance_1.lmap",
+                           "willow_v2_3_tolerance_1.lmap", "depot_v1_room_chains.lmap"}) {
     SCOPED_TRACE(name);
     const std::vector<std::uint8_t> bytes = Fixture(name);
     StatusOr<LmapHeader> header = DecodeLmapHeader(bytes);
@@ -125,8 +127,26 @@ TEST(VectorQueriesTest, HeaderGivesTheDecodedMapsSizeAndFrame) {
     EXPECT_EQ(header->meta.origin.x, whole->grid.meta.origin.x);
     EXPECT_EQ(header->meta.origin.y, whole->grid.meta.origin.y);
     EXPECT_EQ(header->meta.origin.yaw, whole->grid.meta.origin.yaw);
+    EXPECT_EQ(header->metadata, whole->metadata);
   }
+  // With metadata: a fixture of 1.0 holds four entries, a tolerance file
+  // of 2.3 its T.
+  const StatusOr<LmapHeader> v1 = DecodeLmapHeader(Fixture("depot_v1_room_chains.lmap"));
+  ASSERT_TRUE(v1.ok());
+  EXPECT_EQ(v1->metadata.size(), 4u);
+  const StatusOr<LmapHeader> t1 = DecodeLmapHeader(Fixture("willow_v2_3_tolerance_1.lmap"));
+  ASSERT_TRUE(t1.ok());
+  EXPECT_EQ(t1->metadata, (std::vector<std::pair<std::string, std::string>>{{"tolerance", "1"}}));
+  EXPECT_EQ(DecodeLmapHeader(Fixture("willow_v2_2_tolerance_1.lmap"))->metadata.size(), 0u)
+      << "written before files named their tolerance";
   EXPECT_FALSE(DecodeLmapHeader(Fixture("truncated.lmap")).ok());
+  // A corrupt `meta` chunk rejects the file here as in the whole-file read.
+  const StatusOr<LmapHeader> bad_meta = LoadLmapHeader(
+      testing::SourceDir() + "/tests/data/bad/lmap_decode/v2_3_meta_trailing_bytes.lmap");
+  ASSERT_FALSE(bad_meta.ok());
+  EXPECT_NE(bad_meta.status().message().find("chunk meta: metadata has trailing bytes"),
+            std::string::npos)
+      << bad_meta.status().message();
   const StatusOr<LmapHeader> missing = LoadLmapHeader("/nonexistent/dir/map.lmap");
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.status().message().find("/nonexistent/dir/map.lmap"), std::string::npos);

@@ -73,8 +73,9 @@ TEST(CmdInfoTest, LmapCountsTheVectorLayers) {
   EXPECT_NE(text.out.find("chunk:      CELL"), std::string::npos) << text.out;
 }
 
-// What the first line says a file is: exact, within a tolerance (2.x cells
-// in blocks), or the former lossy 1.0 file (a fixture: 1.0 is no longer
+// What the first line says a file is: exact, within a tolerance of the T
+// it names (2.x cells in blocks; a file of 2.2 written before files named T
+// says only that), or the former lossy 1.0 file (a fixture: 1.0 is no longer
 // written).
 TEST(CmdInfoTest, FirstLineSaysHowExactTheFileIs) {
   const std::string dir = MakeTempDir("cli_info_fidelity");
@@ -82,11 +83,13 @@ TEST(CmdInfoTest, FirstLineSaysHowExactTheFileIs) {
       testing::SourceDir() + "/tests/data/maps/turtlebot_apps/" + "willow-2010-02-18-0.10.yaml";
   ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/exact.lmap"}).exit_code, 0);
   ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/t2.lmap", "--tolerance", "2"}).exit_code, 0);
-  const std::string lossy_v1 = testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap";
+  const std::string fixtures = testing::SourceDir() + "/tests/data/lmap/";
   const std::pair<std::string, std::string> cases[] = {
       {dir + "/exact.lmap", ", lossless)\n"},
-      {dir + "/t2.lmap", ", within a tolerance)\n"},
-      {lossy_v1, "(.lmap version 1.0, lossy)\n"},
+      {dir + "/t2.lmap", ", within a tolerance of 2 cells (0.2 m))\n"},
+      {fixtures + "willow_v2_3_tolerance_1.lmap", ", within a tolerance of 1 cell (0.1 m))\n"},
+      {fixtures + "willow_v2_2_tolerance_1.lmap", "(.lmap version 2.2, within a tolerance)\n"},
+      {fixtures + "depot_lossy.lmap", "(.lmap version 1.0, lossy)\n"},
   };
   for (const auto& [file, label] : cases) {
     const CliResult r = RunCli({"info", file});
@@ -228,6 +231,11 @@ TEST(CmdInfoTest, JsonHoldsTheMetadata) {
   ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/plain.lmap"}).exit_code, 0);
   const CliResult plain = RunCli({"info", dir + "/plain.lmap", "--json"});
   EXPECT_NE(plain.out.find("\"metadata\":{}"), std::string::npos) << plain.out;
+  EXPECT_NE(plain.out.find("\"tolerance_cells\":null"), std::string::npos) << plain.out;
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/t1.lmap", "--tolerance", "1"}).exit_code, 0);
+  const CliResult t1 = RunCli({"info", dir + "/t1.lmap", "--json"});
+  EXPECT_NE(t1.out.find("\"lossless\":false,\"tolerance_cells\":1,"), std::string::npos) << t1.out;
+  EXPECT_NE(t1.out.find("\"metadata\":{\"tolerance\":\"1\"}"), std::string::npos) << t1.out;
   const CliResult help = RunCli({"info", "--help"});
   EXPECT_NE(help.out.find("metadata"), std::string::npos) << help.out;
   EXPECT_NE(help.out.find("robot_pose"), std::string::npos) << help.out;
