@@ -72,17 +72,9 @@ std::string ChainJson(const Grid& grid, const std::vector<CellIndex>& chain, boo
 
 // A closed GeoJSON ring through the chain, counter-clockwise as RFC 7946
 // asks of exterior rings: a chain traced clockwise is written backwards from
-// the same first cell. The turn is the same in cells and in metres (the
-// origin's yaw rotates, it does not mirror), so it is taken exactly on the
-// cell indices.
+// the same first cell.
 std::string RingJson(const Grid& grid, const std::vector<CellIndex>& chain) {
-  std::int64_t twice_area = 0;
-  for (std::size_t i = 0; i < chain.size(); ++i) {
-    const CellIndex& p = chain[i];
-    const CellIndex& q = chain[(i + 1) % chain.size()];
-    twice_area += std::int64_t{p.col} * q.row - std::int64_t{q.col} * p.row;
-  }
-  if (twice_area >= 0) return ChainJson(grid, chain, true);
+  if (!RunsClockwise(chain)) return ChainJson(grid, chain, true);
   std::vector<CellIndex> reversed = chain;
   std::reverse(reversed.begin() + 1, reversed.end());
   return ChainJson(grid, reversed, true);

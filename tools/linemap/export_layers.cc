@@ -39,31 +39,12 @@ std::string Properties(const ExportLayer& layer, const LayerFeature& f) {
   return o.str();
 }
 
-// Whether the ring through `points` runs clockwise (x east, y north): its
-// signed area (shoelace formula, taken about the first point so that
-// georeferenced origins far from 0 keep the precision) is below zero by more
-// than rounding. A chain enclosing nothing (out and back along a line)
-// keeps its order.
-bool IsClockwise(const std::vector<WorldPoint>& points) {
-  if (points.size() < 3) return false;
-  const WorldPoint& o = points.front();
-  double twice_area = 0;
-  double extent = 0;
-  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
-    const double px = points[i].x - o.x, py = points[i].y - o.y;
-    const double qx = points[i + 1].x - o.x, qy = points[i + 1].y - o.y;
-    twice_area += px * qy - qx * py;
-    extent = std::max({extent, std::abs(px), std::abs(py), std::abs(qx), std::abs(qy)});
-  }
-  return twice_area < -1e-9 * extent * extent;
-}
-
 std::string Geometry(const ExportLayer& layer, const LayerFeature& f) {
   std::vector<WorldPoint> points = f.points;
   // RFC 7946 3.1.6: an exterior ring runs counter-clockwise. The chains run
   // either way (a room's border as it was traced), so a clockwise one is
   // written backwards from the same first point.
-  if (layer.closed && IsClockwise(points)) std::reverse(points.begin() + 1, points.end());
+  if (layer.closed && f.clockwise) std::reverse(points.begin() + 1, points.end());
   std::string coords;
   for (const WorldPoint& p : points) coords += (coords.empty() ? "" : ",") + Position(p);
   if (!layer.closed) return "{\"type\":\"LineString\",\"coordinates\":[" + coords + "]}";
@@ -91,14 +72,15 @@ std::vector<ExportLayer> LayersOf(const LmapVectors& vectors) {
   }
   ExportLayer rooms{"room_border", true, {}};
   for (const RoomOutline& room : vectors.rooms) {
-    rooms.features.push_back(
-        {room.id, RoomKindName(room.kind), std::nullopt, ToWorld(vectors, room.chain)});
+    rooms.features.push_back({room.id, RoomKindName(room.kind), std::nullopt,
+                              ToWorld(vectors, room.chain), RunsClockwise(room.chain)});
   }
   ExportLayer furniture{"furniture", true, {}};
   for (const FurnitureObject& object : vectors.furniture) {
     std::optional<std::int32_t> room;
     if (object.room_id >= 0) room = object.room_id;
-    furniture.features.push_back({object.id, "", room, ToWorld(vectors, object.outline)});
+    furniture.features.push_back(
+        {object.id, "", room, ToWorld(vectors, object.outline), RunsClockwise(object.outline)});
   }
   return {walls, rooms, furniture};
 }

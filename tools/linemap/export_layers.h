@@ -23,6 +23,7 @@ struct LayerFeature {
   std::string kind;                     // rooms only: "room", "corridor", ...
   std::optional<std::int32_t> room_id;  // furniture only; nullopt when in no room
   std::vector<WorldPoint> points;       // closed features do not repeat the first point
+  bool clockwise = false;               // closed features: the ring runs clockwise
 };
 
 struct ExportLayer {
