@@ -47,23 +47,26 @@ StatusOr<InputFile> InputFile::Open(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) {
     const int err = errno;
-    if (err == ENOENT) return NotFoundError(Quoted(path) + ": no such file");
+    if (err == ENOENT) return NotFoundError(Quoted(path) + ": no such file").WithErrno(err);
     // An input the caller may not read is bad input, not a failure of ours
     // (exit 2), but a kind of its own: Python raises PermissionError.
     if (err == EACCES || err == EPERM) {
-      return PermissionDeniedError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
+      return PermissionDeniedError("cannot open " + Quoted(path) + ": " + ErrnoText(err))
+          .WithErrno(err);
     }
-    return InvalidArgumentError("cannot open " + Quoted(path) + ": " + ErrnoText(err));
+    return InvalidArgumentError("cannot open " + Quoted(path) + ": " + ErrnoText(err))
+        .WithErrno(err);
   }
   struct stat st;
   if (::fstat(fd, &st) != 0) {
     const int err = errno;
     ::close(fd);
-    return IoError("cannot stat " + Quoted(path) + ": " + ErrnoText(err));
+    return IoError("cannot stat " + Quoted(path) + ": " + ErrnoText(err)).WithErrno(err);
   }
   if (S_ISDIR(st.st_mode)) {
     ::close(fd);
-    return InvalidArgumentError(Quoted(path) + " is a directory, not a file");
+    // Opening a directory for reading succeeds; reading it is what fails.
+    return InvalidArgumentError(Quoted(path) + " is a directory, not a file").WithErrno(EISDIR);
   }
   const bool regular = S_ISREG(st.st_mode);
   return InputFile(path, fd, regular, regular ? static_cast<std::uint64_t>(st.st_size) : 0);
@@ -98,8 +101,11 @@ StatusOr<std::size_t> InputFile::Read(std::uint8_t* out, std::size_t size) {
       if (errno == EINTR) continue;
       const int err = errno;
       // Reading a directory opened on some systems fails with EISDIR.
-      if (err == EISDIR) return InvalidArgumentError(Quoted(path_) + " is a directory");
-      return InvalidArgumentError("cannot read " + Quoted(path_) + ": " + ErrnoText(err));
+      if (err == EISDIR) {
+        return InvalidArgumentError(Quoted(path_) + " is a directory").WithErrno(err);
+      }
+      return InvalidArgumentError("cannot read " + Quoted(path_) + ": " + ErrnoText(err))
+          .WithErrno(err);
     }
     if (n == 0) break;
     done += static_cast<std::size_t>(n);
@@ -144,7 +150,9 @@ StatusOr<std::string> ResolveTarget(const std::string& path) {
     std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
     const ssize_t n = ::readlink(target.c_str(), link.data(), link.size());
     if (n < 0) {
-      return IoError("cannot read the symlink " + Quoted(target) + ": " + ErrnoText(errno));
+      const int err = errno;
+      return IoError("cannot read the symlink " + Quoted(target) + ": " + ErrnoText(err))
+          .WithErrno(err);
     }
     if (static_cast<std::size_t>(n) >= link.size()) {
       return IoError("the symlink " + Quoted(target) + " changed while being read");
@@ -152,7 +160,8 @@ StatusOr<std::string> ResolveTarget(const std::string& path) {
     link.resize(static_cast<std::size_t>(n));
     target = link[0] == '/' ? link : DirectoryOf(target) + "/" + link;
   }
-  return IoError(Quoted(path) + ": too many levels of symbolic links");
+  // ELOOP: what open() says after as many hops.
+  return IoError(Quoted(path) + ": too many levels of symbolic links").WithErrno(ELOOP);
 }
 
 // What a replaced file keeps: its permission bits and owner.
@@ -170,8 +179,12 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   // created; creating the temporary file beside it reports what is wrong.
   if (::stat(target.c_str(), &existing.st) != 0) return existing;
   existing.exists = true;
+  // The refusals stand in for open(target, O_WRONLY | O_CREAT) and carry
+  // the errno it gives: EISDIR for a directory, EACCES for a file without
+  // write permission (for root too, whose open() would write it).
   if (S_ISDIR(existing.st.st_mode)) {
-    return InvalidArgumentError(Quoted(path) + " is a directory; give a file name");
+    return InvalidArgumentError(Quoted(path) + " is a directory; give a file name")
+        .WithErrno(EISDIR);
   }
   if (!S_ISREG(existing.st.st_mode)) {
     return InvalidArgumentError(Quoted(path) + " is not a regular file; not replacing it");
@@ -180,7 +193,8 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
     char mode[8];
     std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(existing.st.st_mode & 07777));
     return IoError("cannot replace " + Quoted(path) + ": " + ErrnoText(EACCES) +
-                   " (the file is read-only, mode " + mode + "; make it writable or remove it)");
+                   " (the file is read-only, mode " + mode + "; make it writable or remove it)")
+        .WithErrno(EACCES);
   }
   return existing;
 }
@@ -274,7 +288,8 @@ Status CheckSaveTarget(const std::string& path) {
   }
   if (err == 0) return Status::Ok();
   return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
-                 ErrnoText(err));
+                 ErrnoText(err))
+      .WithErrno(err);
 }
 
 StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durability durability) {
@@ -302,8 +317,10 @@ StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durab
     writer.temp_name_ = writer.target_ + kTemporaryMarker + "XXXXXX";
     fd = ::mkstemp(writer.temp_name_.data());
     if (fd < 0) {
+      const int err = errno;
       return IoError("cannot create a file in " + Quoted(dir) + " for " + Quoted(path) + ": " +
-                     ErrnoText(errno));
+                     ErrnoText(err))
+          .WithErrno(err);
     }
     ::fcntl(fd, F_SETFD, FD_CLOEXEC);
   }
@@ -360,8 +377,9 @@ Status AtomicFileWriter::WriteAt(std::uint64_t offset, std::string_view data) {
   while (left > 0) {
     const ssize_t n = ::pwrite(fd_, p, left, static_cast<off_t>(at));
     if (n < 0) {
-      if (errno == EINTR) continue;
-      error_ = IoError("cannot write " + Quoted(path_) + ": " + ErrnoText(errno));
+      const int err = errno;
+      if (err == EINTR) continue;
+      error_ = IoError("cannot write " + Quoted(path_) + ": " + ErrnoText(err)).WithErrno(err);
       return error_;
     }
     p += n;
@@ -378,7 +396,8 @@ Status AtomicFileWriter::Finish() {
   if (!error_.ok()) return error_;
   if (fd_ < 0) return InternalError(Quoted(path_) + ": committed twice");
   if (durability_ == Durability::kSynced && ::fsync(fd_) != 0) {
-    return IoError("cannot flush " + Quoted(path_) + " to disk: " + ErrnoText(errno));
+    const int err = errno;
+    return IoError("cannot flush " + Quoted(path_) + " to disk: " + ErrnoText(err)).WithErrno(err);
   }
   // Looked at again: Open may have been a long encode ago (SaveLmap opens
   // before it encodes), and a file made read-only, replaced or created
@@ -401,7 +420,9 @@ Status AtomicFileWriter::Finish() {
     mode = 0666 & ~mask;
   }
   if (::fchmod(fd_, mode) != 0) {
-    return IoError("cannot set the permissions of " + Quoted(path_) + ": " + ErrnoText(errno));
+    const int err = errno;
+    return IoError("cannot set the permissions of " + Quoted(path_) + ": " + ErrnoText(err))
+        .WithErrno(err);
   }
   if (temp_name_.empty()) {
     // Named only now, just before the rename: a save killed while writing
@@ -411,12 +432,14 @@ Status AtomicFileWriter::Finish() {
       const std::string name = TemporaryName(target_, attempt);
       if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, name.c_str(), AT_SYMLINK_FOLLOW) == 0) {
         temp_name_ = name;
-      } else if (errno != EEXIST) {
-        return IoError("cannot name the new file for " + Quoted(path_) + ": " + ErrnoText(errno));
+      } else if (const int err = errno; err != EEXIST) {
+        return IoError("cannot name the new file for " + Quoted(path_) + ": " + ErrnoText(err))
+            .WithErrno(err);
       }
     }
     if (temp_name_.empty()) {
-      return IoError("cannot name the new file for " + Quoted(path_) + ": every name taken");
+      return IoError("cannot name the new file for " + Quoted(path_) + ": every name taken")
+          .WithErrno(EEXIST);
     }
   }
   // A temporary named from the start and left untouched for
@@ -424,13 +447,21 @@ Status AtomicFileWriter::Finish() {
   // been removed by another save of the target: then no file of the set is
   // renamed (CommitFilesAtomic finishes them all first).
   struct stat named, open_file;
-  if (::fstat(fd_, &open_file) != 0 || ::stat(temp_name_.c_str(), &named) != 0 ||
-      named.st_ino != open_file.st_ino || named.st_dev != open_file.st_dev) {
-    return IoError("the new file for " + Quoted(path_) + " was removed while it was written");
+  if (::fstat(fd_, &open_file) != 0) {
+    const int err = errno;
+    return IoError("cannot stat the new file for " + Quoted(path_) + ": " + ErrnoText(err))
+        .WithErrno(err);
+  }
+  // ENOENT also when another file has taken the name: ours is gone from it.
+  if (::stat(temp_name_.c_str(), &named) != 0 || named.st_ino != open_file.st_ino ||
+      named.st_dev != open_file.st_dev) {
+    return IoError("the new file for " + Quoted(path_) + " was removed while it was written")
+        .WithErrno(ENOENT);
   }
   const int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) {
-    return IoError("cannot close " + Quoted(path_) + ": " + ErrnoText(errno));
+    const int err = errno;
+    return IoError("cannot close " + Quoted(path_) + ": " + ErrnoText(err)).WithErrno(err);
   }
   return Status::Ok();
 }
@@ -448,8 +479,10 @@ Status CommitFilesAtomic(const std::vector<AtomicFileWriter*>& writers) {
   for (std::size_t i = 0; i < writers.size(); ++i) {
     AtomicFileWriter& w = *writers[i];
     if (::rename(w.temp_name_.c_str(), w.target_.c_str()) != 0) {
+      const int err = errno;
       const Status failed =
-          IoError("cannot rename the new file onto " + Quoted(w.path_) + ": " + ErrnoText(errno));
+          IoError("cannot rename the new file onto " + Quoted(w.path_) + ": " + ErrnoText(err))
+              .WithErrno(err);
       for (std::size_t j = i; j < writers.size(); ++j) writers[j]->Discard();
       return failed;
     }

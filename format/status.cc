@@ -54,7 +54,16 @@ std::string Status::ToString() const { return ok() ? std::string("OK") : message
 
 Status Status::WithContext(const std::string& prefix) const {
   if (ok()) return *this;
-  return Status(code_, prefix + ": " + message_, limit_);
+  Status status = *this;
+  status.message_ = prefix + ": " + message_;
+  return status;
+}
+
+Status Status::WithErrno(int err) const {
+  if (ok()) return *this;
+  Status status = *this;
+  status.sys_errno_ = err;
+  return status;
 }
 
 }  // namespace linemap

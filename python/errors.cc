@@ -1,47 +1,36 @@
 #include "python/errors.h"
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cerrno>
-#include <cstdlib>
+
+#include "format/file_io.h"
 
 namespace linemap::python {
 
 namespace {
 
-// The folder a new file for `path` is made in (format/file_io.cc's rule).
-std::string DirectoryOf(const std::string& path) {
-  const std::size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  if (slash == 0) return "/";
-  return path.substr(0, slash);
+// Raises OSError(errno, message, filename), which Python makes the subclass
+// of errno's kind (FileNotFoundError for ENOENT, NotADirectoryError for
+// ENOTDIR, ...) as its own open() does. `filename` None for none.
+[[noreturn]] void RaiseOsError(int error_number, const std::string& message,
+                               const pybind11::object& filename) {
+  const pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(PyExc_OSError)(
+      error_number, message, filename);
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+  throw pybind11::error_already_set();
 }
 
-// Why writing `path` fails, as an errno, following the library's
-// AtomicFileWriter: an existing file (symlinks followed) is replaced only
-// when writable, by us and by someone (mode 0444 is refused even for root);
-// the new file is made in the target's folder. 0 when nothing here refuses.
-int WriteErrno(const std::string& path) {
-  std::string target = path;
-  struct stat st;
-  if (::stat(path.c_str(), &st) == 0) {
-    if (S_ISREG(st.st_mode)) {
-      if (::access(path.c_str(), W_OK) != 0) return errno;
-      if ((st.st_mode & 0222) == 0) return EACCES;
-    }
-    if (char* resolved = ::realpath(path.c_str(), nullptr)) {
-      target = resolved;
-      std::free(resolved);
-    }
-  } else if (errno != ENOENT) {
-    return errno;  // ENOTDIR, EACCES, ELOOP, ...: as open() fails
+// Which of a save's `outputs` a kIoError is about. The Status names no file
+// (only its message does), so: the first output the library's own
+// CheckSaveTarget refuses (the files are opened in that order); else the
+// only output; else None (a failure the check does not see, such as a full
+// disk, in a save of two files). Only the file is looked for here: the
+// errno is the status's own.
+pybind11::object FailedOutput(const std::vector<std::string>& outputs) {
+  for (const std::string& output : outputs) {
+    if (!CheckSaveTarget(output).ok()) return pybind11::str(output);
   }
-  const std::string dir = DirectoryOf(target);
-  if (::stat(dir.c_str(), &st) != 0) return errno;
-  if (!S_ISDIR(st.st_mode)) return ENOTDIR;
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) return errno;
-  return 0;
+  if (outputs.size() == 1) return pybind11::str(outputs[0]);
+  return pybind11::none();
 }
 
 }  // namespace
@@ -69,14 +58,18 @@ PyObject* ExceptionTypeFor(StatusCode code) {
 
 void RaiseStatus(const Status& status) {
   // The OSErrors that say why a file could not be opened carry their errno,
-  // as Python's own open() gives them (the message stays the library's).
-  const int error_number = status.code() == StatusCode::kNotFound           ? ENOENT
-                           : status.code() == StatusCode::kPermissionDenied ? EACCES
-                                                                            : 0;
-  if (error_number != 0) {
+  // as Python's own open() gives them (the message stays the library's):
+  // the failed call's, or for an error no call is behind the one its kind
+  // stands for.
+  if (status.code() == StatusCode::kNotFound || status.code() == StatusCode::kPermissionDenied) {
+    const int error_number = status.sys_errno() != 0                  ? status.sys_errno()
+                             : status.code() == StatusCode::kNotFound ? ENOENT
+                                                                      : EACCES;
     PyObject* args = Py_BuildValue("(is)", error_number, status.message().c_str());
     PyErr_SetObject(ExceptionTypeFor(status.code()), args);
     Py_XDECREF(args);
+  } else if (status.code() == StatusCode::kIoError && status.sys_errno() != 0) {
+    RaiseOsError(status.sys_errno(), status.message(), pybind11::none());
   } else if (status.code() == StatusCode::kResourceExhausted) {
     // A refusal over a limit names it as `limit`, the keyword that lifts it
     // (DecodeLimits(max_segments=...), save(max_tolerance_cells=...)); None
@@ -94,16 +87,8 @@ void RaiseStatus(const Status& status) {
 }
 
 void RaiseWriteStatus(const Status& status, const std::vector<std::string>& outputs) {
-  if (status.code() == StatusCode::kIoError) {
-    for (const std::string& output : outputs) {
-      const int error_number = WriteErrno(output);
-      if (error_number == 0) continue;
-      // OSError(errno, message, filename) makes the subclass of errno's kind.
-      const pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(PyExc_OSError)(
-          error_number, status.message(), output);
-      PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
-      throw pybind11::error_already_set();
-    }
+  if (status.code() == StatusCode::kIoError && status.sys_errno() != 0) {
+    RaiseOsError(status.sys_errno(), status.message(), FailedOutput(outputs));
   }
   RaiseStatus(status);
 }

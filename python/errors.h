@@ -6,18 +6,21 @@
 //   kNotFound                                 -> FileNotFoundError (an OSError;
 //                                                errno ENOENT)
 //   kPermissionDenied                         -> PermissionError (an OSError;
-//                                                errno EACCES)
-//   kIoError                                  -> OSError
+//                                                errno EACCES, or EPERM)
+//   kIoError                                  -> OSError (the subclass of its
+//                                                errno when it has one)
 //   kResourceExhausted                        -> MemoryError (a caller-set limit such
 //                                                as max_cells, not the machine's memory;
 //                                                .limit its keyword, or None)
 //   kInternal                                 -> RuntimeError
 //
-// A save's kIoError that the file system explains (a missing folder, a
-// read-only file or folder) is raised as open(path, "w") raises it: the
-// OSError subclass of its errno (FileNotFoundError ENOENT, PermissionError
-// EACCES, NotADirectoryError ENOTDIR) with the output as `filename`
-// (RaiseWriteStatus).
+// The errno is the Status's sys_errno(): the one the failed system call
+// gave (kNotFound and kPermissionDenied fall back to ENOENT and EACCES
+// where no call is behind them). A save's kIoError with an errno (a
+// missing folder, a read-only file or folder, a full disk) is raised as
+// open(path, "w") raises it: the OSError subclass of its errno
+// (FileNotFoundError ENOENT, PermissionError EACCES, NotADirectoryError
+// ENOTDIR) with the output as `filename` (RaiseWriteStatus).
 #ifndef LINEMAP_PYTHON_ERRORS_H_
 #define LINEMAP_PYTHON_ERRORS_H_
 
@@ -38,11 +41,11 @@ PyObject* ExceptionTypeFor(StatusCode code);
 [[noreturn]] void RaiseStatus(const Status& status);
 
 // Raises `status` (not OK) of a save that writes `outputs` (in the order the
-// library opens them): a kIoError with the errno of the first output the
-// file system refuses (what open() would say; a file of mode 0444 is
-// EACCES even for root, as the library refuses it) as that OSError
-// subclass, errno, library message and output `filename`; anything else as
-// RaiseStatus. Needs the GIL.
+// library opens them): a kIoError with an errno as the OSError subclass of
+// that errno (a file of mode 0444 is EACCES even for root, as the library
+// refuses it), with the library's message and as `filename` the first
+// output CheckSaveTarget refuses, else the only output, else None;
+// anything else as RaiseStatus. Needs the GIL.
 [[noreturn]] void RaiseWriteStatus(const Status& status, const std::vector<std::string>& outputs);
 
 inline void RaiseIfError(const Status& status) {

@@ -470,7 +470,9 @@ are not limited. Options the library refuses raise ValueError with its
 message. An output that cannot be written raises the OSError open() would,
 with its errno and ``filename``: FileNotFoundError for a missing folder,
 PermissionError for a read-only file (mode 0444 is refused even for root)
-or folder; other write failures OSError.
+or folder; other write failures the OSError of the errno the failed call
+gave (a full disk: ENOSPC), ``filename`` None when the file of a YAML +
+image pair it was about is not known.
 )doc");
   module.def("convert", &Convert, py::arg("source"), py::arg("path"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,

@@ -59,19 +59,32 @@ class [[nodiscard]] Status {
   const std::string& message() const { return message_; }
   // The limit a kResourceExhausted error is over; kNone otherwise.
   Limit limit() const { return limit_; }
+  // The errno of the system call that failed (ENOENT, EACCES, ENOSPC, ...),
+  // or of the call the library's own refusal stands in for (EISDIR for a
+  // directory given as the file to write); 0 when no system call is behind
+  // the error. A front end maps it to its own error types (Python's OSError
+  // subclasses and their `errno`) rather than probing the file again, which
+  // may find another cause or none, or reading it from the message.
+  int sys_errno() const { return sys_errno_; }
 
   // "message" for errors, "OK" for success.
   std::string ToString() const;
 
-  // Returns a copy whose message is "prefix: message" (the code and the
-  // limit kept); used to add the file name or the chunk that failed as the
-  // error travels up.
+  // Returns a copy whose message is "prefix: message" (the code, the limit
+  // and the errno kept); used to add the file name or the chunk that failed
+  // as the error travels up.
   Status WithContext(const std::string& prefix) const;
+
+  // Returns a copy carrying `err` as its sys_errno(), as in
+  // `IoError("cannot write ...").WithErrno(err)`. An OK status stays OK
+  // with no errno.
+  Status WithErrno(int err) const;
 
  private:
   StatusCode code_ = StatusCode::kOk;
   std::string message_;
   Limit limit_ = Limit::kNone;
+  int sys_errno_ = 0;
 };
 
 inline Status InvalidArgumentError(std::string m) {

@@ -3,6 +3,7 @@
 // limit as a stand-in for a full disk, a missing folder) leaves the old file.
 #include "format/file_io.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -12,6 +13,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <ctime>
 #include <random>
 #include <string>
@@ -80,12 +83,14 @@ TEST(FileIoTest, FailedWriteLeavesTheOldFile) {
     struct rlimit limit = {4096, 4096};
     ::setrlimit(RLIMIT_FSIZE, &limit);
     const Status status = WriteFileAtomic(target, Version('n', 1 << 20));
-    _exit(status.ok() ? 0 : (status.code() == StatusCode::kIoError ? 3 : 4));
+    if (status.ok()) _exit(0);
+    if (status.code() != StatusCode::kIoError) _exit(4);
+    _exit(status.sys_errno() == EFBIG ? 3 : 5);  // write(2) fails so over RLIMIT_FSIZE
   }
   int wstatus = 0;
   ::waitpid(pid, &wstatus, 0);
   ASSERT_TRUE(WIFEXITED(wstatus));
-  EXPECT_EQ(WEXITSTATUS(wstatus), 3) << "the write should fail with an I/O error";
+  EXPECT_EQ(WEXITSTATUS(wstatus), 3) << "the write should fail with an I/O error, errno EFBIG";
   EXPECT_EQ(ReadFile(target), "old complete file");
   EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"map.lmap"}) << "temporary left";
   EXPECT_FALSE(WriteFileAtomic(dir + "/no/such/folder/map.lmap", "x").ok());
@@ -380,6 +385,102 @@ TEST(FileIoTest, CheckSaveTargetRefusesWhatOpenRefusesAndCreatesNothing) {
   EXPECT_EQ(testing::ListDir(dir), (std::vector<std::string>{"dangling.lmap", "ro.lmap"}));
   EXPECT_EQ(ReadFile(dir + "/ro.lmap"), "keep");
   ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0644), 0);
+}
+
+// The errno `path` gives a plain create, the reference the library's
+// refusals are held to; 0 when it succeeds (the file it made is removed).
+int CreateErrno(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return errno;
+  ::close(fd);
+  ::unlink(path.c_str());
+  return 0;
+}
+
+// Each refusal carries the errno open() gives for the same path, whether
+// from a call that failed (the folder) or standing in for one (a directory,
+// a symlink loop, a read-only file).
+TEST(FileIoTest, SaveRefusalsCarryTheErrnoOpenGives) {
+  const std::string dir = MakeTempDir("fio_errno");
+  WriteFile(dir + "/file", "x");
+  ASSERT_EQ(::mkdir((dir + "/folder.lmap").c_str(), 0755), 0);
+  ASSERT_EQ(::symlink("missing/map.lmap", (dir + "/dangling.lmap").c_str()), 0);
+  ASSERT_EQ(::symlink("loop-b.lmap", (dir + "/loop-a.lmap").c_str()), 0);
+  ASSERT_EQ(::symlink("loop-a.lmap", (dir + "/loop-b.lmap").c_str()), 0);
+  WriteFile(dir + "/ro.lmap", "keep");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0444), 0);
+  std::vector<std::string> paths = {dir + "/no/map.lmap", dir + "/file/map.lmap",
+                                    dir + "/folder.lmap", dir + "/dangling.lmap",
+                                    dir + "/loop-a.lmap"};
+  // Root's open() writes a read-only file, which the library refuses
+  // anyway (ReadOnlyFileIsRefusedWithEacces).
+  if (::geteuid() != 0) paths.push_back(dir + "/ro.lmap");
+  for (const std::string& path : paths) {
+    const int expected = CreateErrno(path);
+    ASSERT_NE(expected, 0) << path << ": open() should have refused it";
+    const Status checked = CheckSaveTarget(path);
+    EXPECT_EQ(checked.sys_errno(), expected)
+        << path << ": " << std::strerror(expected) << " expected, " << checked.message();
+    const Status opened = AtomicFileWriter::Open(path).status();
+    EXPECT_EQ(opened.sys_errno(), expected)
+        << path << ": " << std::strerror(expected) << " expected, " << opened.message();
+  }
+  EXPECT_EQ(AtomicFileWriter::Open(dir + "/folder.lmap").status().sys_errno(), EISDIR);
+  EXPECT_EQ(WriteFileAtomic(dir + "/no/map.lmap", "x").sys_errno(), ENOENT);
+  EXPECT_EQ(testing::ListDir(dir),
+            (std::vector<std::string>{"dangling.lmap", "file", "folder.lmap", "loop-a.lmap",
+                                      "loop-b.lmap", "ro.lmap"}));
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0644), 0);
+}
+
+// A folder that takes no new file although its permission bits say it
+// does: CheckSaveTarget cannot see it, but Open reports the errno the
+// create gave, not a guess.
+TEST(FileIoTest, OpenInAPseudoFileSystemCarriesTheCreatesErrno) {
+  const std::string path = "/proc/linemap-errno-test.lmap";
+  const int expected = CreateErrno(path);
+  if (expected == 0) GTEST_SKIP() << path << " could be created here";
+  const Status opened = AtomicFileWriter::Open(path).status();
+  EXPECT_EQ(opened.code(), StatusCode::kIoError);
+  EXPECT_EQ(opened.sys_errno(), expected) << opened.message();
+}
+
+TEST(FileIoTest, ReadOnlyFileIsRefusedWithEacces) {
+  const std::string dir = MakeTempDir("fio_ro_errno");
+  WriteFile(dir + "/ro.lmap", "keep");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0444), 0);
+  EXPECT_EQ(CheckSaveTarget(dir + "/ro.lmap").sys_errno(), EACCES);
+  EXPECT_EQ(WriteFileAtomic(dir + "/ro.lmap", "new").sys_errno(), EACCES);
+  EXPECT_EQ(ReadFile(dir + "/ro.lmap"), "keep");
+  ASSERT_EQ(::chmod((dir + "/ro.lmap").c_str(), 0644), 0);
+}
+
+// Read failures carry the errno of open(path, O_RDONLY), and a directory
+// the EISDIR reading it gives.
+TEST(FileIoTest, ReadFailuresCarryTheErrnoOpenGives) {
+  const std::string dir = MakeTempDir("fio_read_errno");
+  WriteFile(dir + "/file", "x");
+  WriteFile(dir + "/locked", "x");
+  ASSERT_EQ(::chmod((dir + "/locked").c_str(), 0), 0);
+  std::vector<std::string> paths = {dir + "/missing", dir + "/no/missing", dir + "/file/x"};
+  if (::access((dir + "/locked").c_str(), R_OK) != 0) paths.push_back(dir + "/locked");
+  for (const std::string& path : paths) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    const int expected = fd < 0 ? errno : 0;
+    if (fd >= 0) ::close(fd);
+    ASSERT_NE(expected, 0) << path;
+    const Status read = ReadFileBytes(path, 100).status();
+    EXPECT_EQ(read.sys_errno(), expected) << path << ": " << read.message();
+    EXPECT_EQ(InputFile::Open(path).status().sys_errno(), expected) << path;
+  }
+  EXPECT_EQ(ReadFileBytes(dir + "/missing", 100).status().code(), StatusCode::kNotFound);
+  const Status directory = ReadFileBytes(dir, 100).status();
+  EXPECT_EQ(directory.code(), StatusCode::kInvalidArgument);
+  EXPECT_EQ(directory.sys_errno(), EISDIR);
+  // Not a system call's failure: no errno.
+  WriteFile(dir + "/big", std::string(101, 'x'));
+  EXPECT_EQ(ReadFileBytes(dir + "/big", 100).status().sys_errno(), 0);
+  ASSERT_EQ(::chmod((dir + "/locked").c_str(), 0644), 0);
 }
 
 // A pair committed together: a failed write in either (a 64 KiB file-size

@@ -2,6 +2,7 @@
 maps, the cells the `linemap` program writes, and errors that name the file."""
 import errno
 import os
+import pathlib
 import shutil
 import subprocess
 import sys
@@ -394,6 +395,73 @@ def test_save_into_a_read_only_folder_raises_permission_error(tmp_path):
         assert caught.value.filename == str(folder / "map.lmap")
     finally:
         folder.chmod(0o755)
+
+
+def create_error(path):
+    """The OSError of creating `path` as open(path, "w") does, or None where
+    that succeeds (the file it made is removed)."""
+    try:
+        os.close(os.open(path, os.O_WRONLY | os.O_CREAT, 0o644))
+    except OSError as error:
+        return error
+    os.unlink(path)
+    return None
+
+
+def test_save_raises_the_errno_of_the_failed_create(tmp_path):
+    # The errno the library's failed call gave, not one guessed by looking
+    # at the path afterwards: /proc and /sys take no new file although
+    # their folders' permission bits let root make one, which a look at
+    # the folder does not show.
+    (tmp_path / "plain").write_bytes(b"")
+    os.symlink("loop-b.lmap", tmp_path / "loop-a.lmap")
+    os.symlink("loop-a.lmap", tmp_path / "loop-b.lmap")
+    m = linemap.Map(np.zeros((4, 4), np.uint8))
+    targets = [tmp_path / "nodir" / "map.lmap", tmp_path / "plain" / "map.lmap",
+               tmp_path / "loop-a.lmap", pathlib.Path("/proc/linemap-errno-test.lmap"),
+               pathlib.Path("/sys/linemap-errno-test.lmap")]
+    checked = 0
+    for target in targets:
+        expected = create_error(target)
+        if expected is None:
+            continue
+        for save in (lambda: linemap.save(target, m),
+                     lambda: linemap.convert(BUNDLED["lse_arena"], target)):
+            with pytest.raises(OSError) as caught:
+                save()
+            error = caught.value
+            assert (type(error), error.errno) == (type(expected), expected.errno), (target, error)
+            assert error.filename == str(target)
+            assert str(target) in error.strerror
+        # A YAML's image is made first, beside it (no symlink loop there).
+        image_error = create_error(target.with_suffix(".pgm"))
+        if image_error is not None:
+            with pytest.raises(OSError) as caught:
+                linemap.save(target.with_suffix(".yaml"), m)
+            assert caught.value.errno == image_error.errno, (target, caught.value)
+        checked += 1
+    assert checked >= 3
+
+
+def test_load_raises_the_errno_of_the_failed_open(tmp_path):
+    locked = tmp_path / "locked.lmap"
+    locked.write_bytes(linemap.encode(linemap.Map(np.zeros((4, 4), np.uint8))))
+    locked.chmod(0)
+    try:
+        targets = [tmp_path / "none.lmap", tmp_path / "nodir" / "none.yaml"]
+        unreadable = str(locked) if not os.access(locked, os.R_OK) else unreadable_file()
+        if unreadable is not None:
+            targets.append(unreadable)
+        for target in targets:
+            with pytest.raises(OSError) as expected:
+                os.close(os.open(target, os.O_RDONLY))
+            with pytest.raises(OSError) as caught:
+                linemap.load(target)
+            error = caught.value
+            assert (type(error), error.errno) == (type(expected.value), expected.value.errno)
+            assert str(target) in str(error)
+    finally:
+        locked.chmod(0o600)
 
 
 @pytest.mark.parametrize("shape", [(0, 3), (3, 0), (0, 0)])

@@ -39,11 +39,15 @@ StatusOr<SubprocessRun> RunSubprocessTimed(const std::vector<std::string>& argv)
   pid_t pid = 0;
   const int err = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (err != 0) return NotFoundError(argv[0] + ": cannot run: " + std::strerror(err));
+  if (err != 0) {
+    return NotFoundError(argv[0] + ": cannot run: " + std::strerror(err)).WithErrno(err);
+  }
   int status = 0;
   struct rusage usage {};
   while (::wait4(pid, &status, 0, &usage) < 0) {
-    if (errno != EINTR) return IoError(argv[0] + ": wait4 failed");
+    if (const int err = errno; err != EINTR) {
+      return IoError(argv[0] + ": wait4 failed: " + std::strerror(err)).WithErrno(err);
+    }
   }
   if (WIFEXITED(status)) {
     // posix_spawnp reports a missing program as exit code 127 from the child.
@@ -69,7 +73,9 @@ StatusOr<ScratchDir> ScratchDir::Create(const std::string& tag) {
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/linemap-" + tag + "-XXXXXX";
   if (::mkdtemp(pattern.data()) == nullptr) {
-    return IoError("cannot create a scratch folder " + pattern + ": " + std::strerror(errno));
+    const int err = errno;
+    return IoError("cannot create a scratch folder " + pattern + ": " + std::strerror(err))
+        .WithErrno(err);
   }
   return ScratchDir(pattern);
 }
@@ -82,7 +88,10 @@ StatusOr<std::string> ScratchDir::WriteScratchFile(const std::string& name,
                                                    std::string_view data) const {
   const std::string path = path_ + "/" + name;
   std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return IoError(path + ": " + std::strerror(errno));
+  if (!f) {
+    const int err = errno;
+    return IoError(path + ": " + std::strerror(err)).WithErrno(err);
+  }
   const bool written = std::fwrite(data.data(), 1, data.size(), f) == data.size();
   if (std::fclose(f) != 0 || !written) return IoError(path + ": write failed");
   return path;

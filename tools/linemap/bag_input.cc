@@ -99,7 +99,8 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
 StatusOr<bool> EnsureFolder(const std::string& dir) {
   if (IsDirectory(dir)) return false;
   if (::mkdir(dir.c_str(), 0777) != 0) {
-    return IoError("cannot make the folder '" + dir + "': " + std::strerror(errno));
+    const int err = errno;
+    return IoError("cannot make the folder '" + dir + "': " + std::strerror(err)).WithErrno(err);
   }
   return true;
 }

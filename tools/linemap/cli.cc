@@ -67,19 +67,25 @@ std::string FolderOf(const std::string& path) {
 Status CheckFolderTakesFiles(const std::string& folder, const std::string& what) {
   struct stat st;
   if (::stat(folder.c_str(), &st) != 0) {
-    if (errno == ENOENT) {
+    const int err = errno;
+    if (err == ENOENT) {
       return InvalidArgumentError("cannot write '" + what + "': the folder '" + folder +
-                                  "' does not exist");
+                                  "' does not exist")
+          .WithErrno(err);
     }
     return InvalidArgumentError("cannot write '" + what + "': cannot reach the folder '" + folder +
-                                "' (" + std::strerror(errno) + ")");
+                                "' (" + std::strerror(err) + ")")
+        .WithErrno(err);
   }
   if (!S_ISDIR(st.st_mode)) {
-    return InvalidArgumentError("cannot write '" + what + "': '" + folder + "' is not a folder");
+    return InvalidArgumentError("cannot write '" + what + "': '" + folder + "' is not a folder")
+        .WithErrno(ENOTDIR);
   }
   if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    const int err = errno;
     return InvalidArgumentError("cannot write '" + what + "': no new file can be made in '" +
-                                folder + "' (" + std::strerror(errno) + ")");
+                                folder + "' (" + std::strerror(err) + ")")
+        .WithErrno(err);
   }
   return Status::Ok();
 }
