@@ -200,6 +200,24 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
 }
 
 constexpr char kTemporaryMarker[] = ".linemap-tmp-";
+// A file name's longest (NAME_MAX on Linux's file systems): a temporary's
+// name is the target's, the marker and 6 letters or digits, so the target's
+// name is cut to leave them room (open() takes a target of 255 bytes).
+constexpr std::size_t kMaxFileName = 255;
+constexpr std::size_t kTemporaryTail = sizeof(kTemporaryMarker) - 1 + 6;
+
+// The file name `base` (of a target) as a temporary's name starts with it:
+// the whole name, or its first bytes when the temporary's would be too long.
+std::string TemporaryBase(const std::string& base) {
+  return base.substr(0, kMaxFileName - kTemporaryTail);
+}
+
+// A temporary's path for `target` without its 6 last characters.
+std::string TemporaryPrefix(const std::string& target) {
+  const std::size_t slash = target.find_last_of('/');
+  const std::size_t name_start = slash == std::string::npos ? 0 : slash + 1;
+  return target.substr(0, name_start) + TemporaryBase(target.substr(name_start)) + kTemporaryMarker;
+}
 
 // A name for a temporary beside `target` that no other save uses: the
 // clock and the process id, varied by `attempt` on a clash.
@@ -207,19 +225,21 @@ std::string TemporaryName(const std::string& target, std::uint64_t attempt) {
   const std::uint64_t seed =
       static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
       (static_cast<std::uint64_t>(::getpid()) << 32);
-  char suffix[32];
-  std::snprintf(suffix, sizeof(suffix), ".linemap-tmp-%06llx",
+  char suffix[8];
+  std::snprintf(suffix, sizeof(suffix), "%06llx",
                 static_cast<unsigned long long>((seed + attempt * 0x9e3779b9u) & 0xffffff));
-  return target + suffix;
+  return TemporaryPrefix(target) + suffix;
 }
 
 std::string ProcFdPath(int fd) { return "/proc/self/fd/" + std::to_string(fd); }
 
-// True for `name` == `base` + ".linemap-tmp-" + 6 ASCII letters or digits:
-// the names TemporaryName and mkstemp give the temporaries of target
-// `base` (a marker no user file is likely to carry, unlike ".tmp-").
+// True for `name` == TemporaryBase(`base`) + ".linemap-tmp-" + 6 ASCII
+// letters or digits: the names TemporaryName and mkstemp give the
+// temporaries of target `base` (a marker no user file is likely to carry,
+// unlike ".tmp-"). Targets whose names share their first 236 bytes share
+// their temporaries' names; only stale ones are ever removed.
 bool IsTemporaryOf(const std::string& name, const std::string& base) {
-  const std::string prefix = base + kTemporaryMarker;
+  const std::string prefix = TemporaryBase(base) + kTemporaryMarker;
   if (name.size() != prefix.size() + 6 || name.compare(0, prefix.size(), prefix) != 0) {
     return false;
   }
@@ -314,7 +334,7 @@ StatusOr<AtomicFileWriter> AtomicFileWriter::Open(const std::string& path, Durab
     fd = -1;
   }
   if (fd < 0) {  // no unnamed files here (old kernel, some file systems)
-    writer.temp_name_ = writer.target_ + kTemporaryMarker + "XXXXXX";
+    writer.temp_name_ = TemporaryPrefix(writer.target_) + "XXXXXX";
     fd = ::mkstemp(writer.temp_name_.data());
     if (fd < 0) {
       const int err = errno;

@@ -46,6 +46,37 @@ TEST(FileIoTest, ReadsBackWhatWasWritten) {
   EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"a.bin"});
 }
 
+// Any name open() takes can be saved, up to the longest a file system
+// allows (255 bytes): the temporary's name, the target's plus 19 bytes,
+// is cut to fit.
+TEST(FileIoTest, TargetsWithTheLongestNamesAreSaved) {
+  const std::string dir = MakeTempDir("fio");
+  for (std::size_t length : {236u, 237u, 250u, 255u}) {
+    SCOPED_TRACE(length);
+    const std::string name = std::string(length - 5, 'm') + ".lmap";
+    const std::string target = dir + "/" + name;
+    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    ASSERT_GE(fd, 0) << "the file system takes no name of " << length << " bytes";
+    ::close(fd);
+    ::unlink(target.c_str());
+    for (Durability durability : {Durability::kSynced, Durability::kUnsynced}) {
+      ASSERT_TRUE(WriteFileAtomic(target, "first", durability).ok());
+      const Status replaced = WriteFileAtomic(target, "second", durability);
+      ASSERT_TRUE(replaced.ok()) << replaced.ToString();
+      StatusOr<std::vector<std::uint8_t>> bytes = ReadFileBytes(target, 100);
+      ASSERT_TRUE(bytes.ok());
+      EXPECT_EQ(std::string(bytes->begin(), bytes->end()), "second");
+    }
+    EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{name});
+    ::unlink(target.c_str());
+  }
+  // One byte more is refused as open() refuses it.
+  const std::string too_long = dir + "/" + std::string(256, 'm');
+  const Status refused = WriteFileAtomic(too_long, "x");
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.sys_errno(), ENAMETOOLONG) << refused.ToString();
+}
+
 TEST(FileIoTest, UnsyncedWriteReplacesTheFileWhole) {
   const std::string dir = MakeTempDir("fio");
   ASSERT_TRUE(WriteFileAtomic(dir + "/a.bin", "old contents").ok());
@@ -294,6 +325,17 @@ TEST(FileIoTest, SaveRemovesOnlyStaleTemporariesOfItsOwnTarget) {
   EXPECT_EQ(testing::ListDir(dir), expected);
   EXPECT_TRUE(IsWholeVersion(ReadFile(target), 16));
   EXPECT_EQ(ReadFile(target)[0], 'b');
+}
+
+// A target of 250 bytes: its temporaries' names hold its first 236.
+TEST(FileIoTest, StaleTemporariesOfALongNamedTargetAreRemoved) {
+  const std::string dir = MakeTempDir("fio");
+  const std::string name = std::string(245, 'm') + ".lmap";
+  const std::string stale = std::string(236, 'm') + ".linemap-tmp-0a1b2c";
+  WriteFile(dir + "/" + stale, "x");
+  AgeFile(dir + "/" + stale, kStaleTemporarySeconds + 5);
+  ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, Version('a', 16)).ok());
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{name});
 }
 
 // Streamed saves (AtomicFileWriter): the pieces land where they were
