@@ -47,6 +47,20 @@ double TimeOnce(const std::function<void()>& op) {
   return CpuMs() - start;
 }
 
+// Runs per timed sample for an operation that took `once_ms`: enough for
+// kMinSampleMs, at most kMaxLoops.
+int LoopsFor(double once_ms) {
+  if (!(once_ms > 0)) return kMaxLoops;
+  return static_cast<int>(std::clamp(std::ceil(kMinSampleMs / once_ms), 1.0, double{kMaxLoops}));
+}
+
+// One sample: the mean CPU time of `loops` runs back to back.
+double TimeSample(const std::function<void()>& op, int loops) {
+  const double start = CpuMs();
+  for (int i = 0; i < loops; ++i) op();
+  return (CpuMs() - start) / loops;
+}
+
 }  // namespace
 
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats) {
@@ -61,8 +75,8 @@ std::pair<std::vector<double>, std::vector<double>> TimeRunsInBlocks(const std::
   std::pair<std::vector<double>, std::vector<double>> ms;
   const int total = std::max(1, repeats);
   const auto block = [](const std::function<void()>& op, int runs, std::vector<double>* out) {
-    (void)TimeOnce(op);  // settles the heap for `op`; not counted
-    for (int i = 0; i < runs; ++i) out->push_back(TimeOnce(op));
+    const int loops = LoopsFor(TimeOnce(op));  // also settles the heap for `op`; not counted
+    for (int i = 0; i < runs; ++i) out->push_back(TimeSample(op, loops));
   };
   const int first_half = (total + 1) / 2, second_half = total / 2;
   block(a, first_half, &ms.first);

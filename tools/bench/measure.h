@@ -14,8 +14,17 @@ namespace linemap::bench {
 // machines are shared, and another process's load must not show up here.
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 
+// In TimeRunsInBlocks, a timed sample of an operation under kMinSampleMs is
+// the mean of as many runs back to back as reach it (at most kMaxLoops),
+// the count set by the block's untimed run: a single sub-millisecond run is
+// at the mercy of the machine (nav2 depot's default file decodes in about
+// 0.4 ms; in 5 single runs it came out 1.07x faster than libpng, in 21
+// 1.75x). Both codecs of a comparison are sampled the same way.
+inline constexpr double kMinSampleMs = 10.0;
+inline constexpr int kMaxLoops = 100;
+
 // The same for two operations timed in blocks: one untimed run of `a`, then
-// half of a's timed runs (rounded up), then the same for `b`; then, with
+// half of a's timed samples (rounded up), then the same for `b`; then, with
 // `repeats` of 2 or more, b's block before a's for the other half. Each
 // block's untimed run adds a run per operation and round (maps of one
 // timed run take about twice as long as before). Blocks rather than runs
@@ -24,8 +33,8 @@ std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 // 4 kB, and which are reused), and interleaved decodes of one map swung
 // up to 3x with it (avz5floor_plan: 0.22 ms alone, 0.66 ms in turn with
 // libpng's, libpng's 0.67 and 1.25 ms). The two orders still put a rival
-// codec and ours in the same phase of a shared machine. Returns the runs
-// of a, then of b.
+// codec and ours in the same phase of a shared machine. Returns the
+// samples of a, then of b (each in ms per run).
 std::pair<std::vector<double>, std::vector<double>> TimeRunsInBlocks(const std::function<void()>& a,
                                                                      const std::function<void()>& b,
                                                                      int repeats);

@@ -64,19 +64,37 @@ TEST(BenchMeasureTest, MedianAndRepeats) {
   EXPECT_EQ(TimeRuns([] {}, 4).size(), 4u);
 }
 
+// Spins for `ms` of the process's CPU time.
+void SpinCpuMs(double ms) {
+  const auto cpu_ms = [] {
+    timespec ts{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+  };
+  const double start = cpu_ms();
+  while (cpu_ms() - start < ms) {
+  }
+}
+
 TEST(BenchMeasureTest, TwoOperationsAreTimedInBlocks) {
   // Each block starts with an untimed run, and the second round puts the
   // blocks in the other order: a, 3 timed a, b, 3 timed b, b, 2 timed b, a,
-  // 2 timed a.
+  // 2 timed a. (Runs of kMinSampleMs: one run a sample.)
   std::string order;
-  const auto [a_ms, b_ms] =
-      TimeRunsInBlocks([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/5);
+  const auto a = [&] {
+    order += 'a';
+    SpinCpuMs(kMinSampleMs);
+  };
+  const auto b = [&] {
+    order += 'b';
+    SpinCpuMs(kMinSampleMs);
+  };
+  const auto [a_ms, b_ms] = TimeRunsInBlocks(a, b, /*repeats=*/5);
   EXPECT_EQ(order, "aaaabbbbbbbaaa");
   EXPECT_EQ(a_ms.size(), 5u);
   EXPECT_EQ(b_ms.size(), 5u);
   order.clear();
-  const auto [one_a, one_b] =
-      TimeRunsInBlocks([&] { order += 'a'; }, [&] { order += 'b'; }, /*repeats=*/1);
+  const auto [one_a, one_b] = TimeRunsInBlocks(a, b, /*repeats=*/1);
   EXPECT_EQ(order, "aabb");
   EXPECT_EQ(one_a.size(), 1u);
   EXPECT_EQ(one_b.size(), 1u);
@@ -88,6 +106,32 @@ TEST(BenchMeasureTest, TwoOperationsAreTimedInBlocks) {
       },
       [] {}, 2);
   EXPECT_GT(Median(busy_ms), 10 * Median(idle_ms) + 1.0);
+}
+
+// A run shorter than kMinSampleMs is timed in loops: a sample is the mean
+// of enough runs back to back to reach it, so it is one run's time.
+TEST(BenchMeasureTest, ShortRunsAreSampledInLoops) {
+  int fast_runs = 0, slow_runs = 0;
+  const auto [fast_ms, slow_ms] = TimeRunsInBlocks(
+      [&] {
+        ++fast_runs;
+        SpinCpuMs(0.5);
+      },
+      [&] {
+        ++slow_runs;
+        SpinCpuMs(2 * kMinSampleMs);
+      },
+      /*repeats=*/3);
+  EXPECT_EQ(slow_runs, 2 + 3) << "two untimed runs, one run per sample";
+  // 0.5 ms a run (more on a loaded machine): up to 20 runs a sample.
+  EXPECT_GE(fast_runs, 2 + 3 * 2);
+  EXPECT_LE(fast_runs, 2 + 3 * 20);
+  ASSERT_EQ(fast_ms.size(), 3u);
+  for (double ms : fast_ms) {
+    EXPECT_GE(ms, 0.5);
+    EXPECT_LT(ms, 2.5);  // a run's time, not a loop's
+  }
+  for (double ms : slow_ms) EXPECT_GE(ms, 2 * kMinSampleMs);
 }
 
 TEST(BenchMeasureTest, PeakMemorySeesATouchedAllocation) {
