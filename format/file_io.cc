@@ -177,7 +177,15 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   ExistingFile existing;
   // A target that cannot be looked at (missing, or its folder is) is
   // created; creating the temporary file beside it reports what is wrong.
-  if (::stat(target.c_str(), &existing.st) != 0) return existing;
+  // A name too long for the file system is refused now: only the rename at
+  // the end would see it, after the work.
+  if (::stat(target.c_str(), &existing.st) != 0) {
+    const int err = errno;
+    if (err == ENAMETOOLONG) {
+      return IoError("cannot write " + Quoted(path) + ": " + ErrnoText(err)).WithErrno(err);
+    }
+    return existing;
+  }
   existing.exists = true;
   // The refusals stand in for open(target, O_WRONLY | O_CREAT) and carry
   // the errno it gives: EISDIR for a directory, EACCES for a file without
@@ -189,12 +197,17 @@ StatusOr<ExistingFile> CheckReplaceable(const std::string& path, const std::stri
   if (!S_ISREG(existing.st.st_mode)) {
     return InvalidArgumentError(Quoted(path) + " is not a regular file; not replacing it");
   }
-  if (::access(target.c_str(), W_OK) != 0 || (existing.st.st_mode & 0222) == 0) {
+  const int denied = ::access(target.c_str(), W_OK) == 0 ? 0 : errno;
+  if ((existing.st.st_mode & 0222) == 0 || denied == EACCES || denied == EPERM) {
+    const int err = denied != 0 ? denied : EACCES;
     char mode[8];
     std::snprintf(mode, sizeof(mode), "%04o", static_cast<unsigned>(existing.st.st_mode & 07777));
-    return IoError("cannot replace " + Quoted(path) + ": " + ErrnoText(EACCES) +
+    return IoError("cannot replace " + Quoted(path) + ": " + ErrnoText(err) +
                    " (the file is read-only, mode " + mode + "; make it writable or remove it)")
-        .WithErrno(EACCES);
+        .WithErrno(err);
+  }
+  if (denied != 0) {  // EROFS: a writable file on a read-only file system, ...
+    return IoError("cannot replace " + Quoted(path) + ": " + ErrnoText(denied)).WithErrno(denied);
   }
   return existing;
 }
@@ -207,9 +220,14 @@ constexpr std::size_t kMaxFileName = 255;
 constexpr std::size_t kTemporaryTail = sizeof(kTemporaryMarker) - 1 + 6;
 
 // The file name `base` (of a target) as a temporary's name starts with it:
-// the whole name, or its first bytes when the temporary's would be too long.
+// the whole name, or its first bytes when the temporary's would be too long,
+// cut before a character rather than inside one (file systems that check
+// UTF-8 refuse a name ending in part of a character).
 std::string TemporaryBase(const std::string& base) {
-  return base.substr(0, kMaxFileName - kTemporaryTail);
+  std::size_t cut = kMaxFileName - kTemporaryTail;
+  if (base.size() <= cut) return base;
+  while (cut > 0 && (static_cast<unsigned char>(base[cut]) & 0xC0) == 0x80) --cut;
+  return base.substr(0, cut);
 }
 
 // A temporary's path for `target` without its 6 last characters.

@@ -56,20 +56,30 @@ PyObject* ExceptionTypeFor(StatusCode code) {
   return PyExc_RuntimeError;
 }
 
+namespace {
+
+// Whether `status` is a system call's failure (or a refusal standing in for
+// one), which Python reports as the OSError subclass of its errno.
+bool IsOsError(const Status& status) {
+  return status.sys_errno() != 0 && status.code() != StatusCode::kResourceExhausted &&
+         status.code() != StatusCode::kInternal;
+}
+
+}  // namespace
+
 void RaiseStatus(const Status& status) {
-  // The OSErrors that say why a file could not be opened carry their errno,
-  // as Python's own open() gives them (the message stays the library's):
-  // the failed call's, or for an error no call is behind the one its kind
-  // stands for.
-  if (status.code() == StatusCode::kNotFound || status.code() == StatusCode::kPermissionDenied) {
-    const int error_number = status.sys_errno() != 0                  ? status.sys_errno()
-                             : status.code() == StatusCode::kNotFound ? ENOENT
-                                                                      : EACCES;
+  // A failed system call raises what Python's own open() would for its
+  // errno (FileNotFoundError, NotADirectoryError, IsADirectoryError, ...),
+  // with that errno; the message stays the library's. A missing or
+  // unreadable file without one gets the errno its kind stands for.
+  if (IsOsError(status)) {
+    RaiseOsError(status.sys_errno(), status.message(), pybind11::none());
+  } else if (status.code() == StatusCode::kNotFound ||
+             status.code() == StatusCode::kPermissionDenied) {
+    const int error_number = status.code() == StatusCode::kNotFound ? ENOENT : EACCES;
     PyObject* args = Py_BuildValue("(is)", error_number, status.message().c_str());
     PyErr_SetObject(ExceptionTypeFor(status.code()), args);
     Py_XDECREF(args);
-  } else if (status.code() == StatusCode::kIoError && status.sys_errno() != 0) {
-    RaiseOsError(status.sys_errno(), status.message(), pybind11::none());
   } else if (status.code() == StatusCode::kResourceExhausted) {
     // A refusal over a limit names it as `limit`, the keyword that lifts it
     // (DecodeLimits(max_segments=...), save(max_tolerance_cells=...)); None
@@ -87,7 +97,7 @@ void RaiseStatus(const Status& status) {
 }
 
 void RaiseWriteStatus(const Status& status, const std::vector<std::string>& outputs) {
-  if (status.code() == StatusCode::kIoError && status.sys_errno() != 0) {
+  if (IsOsError(status)) {
     RaiseOsError(status.sys_errno(), status.message(), FailedOutput(outputs));
   }
   RaiseStatus(status);

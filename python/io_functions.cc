@@ -384,11 +384,11 @@ py::object RoomAt(const py::object& source, double x, double y, const py::object
   return out;
 }
 
-StatusOr<LmapHeader> ReadHeader(const std::vector<std::uint8_t>& bytes,
-                                const DecodeLimits& limits) {
+StatusOr<LmapHeader> ReadLmapHeaderFrom(const std::vector<std::uint8_t>& bytes,
+                                        const DecodeLimits& limits) {
   return DecodeLmapHeader(bytes, limits);
 }
-StatusOr<LmapHeader> ReadHeader(const std::string& path, const DecodeLimits& limits) {
+StatusOr<LmapHeader> ReadLmapHeaderFrom(const std::string& path, const DecodeLimits& limits) {
   return LoadLmapHeader(path, limits);
 }
 
@@ -397,7 +397,7 @@ StatusOr<LmapHeader> ReadHeader(const std::string& path, const DecodeLimits& lim
 py::dict Info(const py::object& source, const py::object& limits_arg) {
   const DecodeLimits limits = LimitsArgument(limits_arg, py::none());
   StatusOr<LmapHeader> read =
-      ReadSource(source, [&](const auto& file) { return ReadHeader(file, limits); });
+      ReadSource(source, [&](const auto& file) { return ReadLmapHeaderFrom(file, limits); });
   const LmapHeader header = ValueOrRaise(std::move(read));
   py::dict out;
   out["version"] = std::to_string(header.major) + "." + std::to_string(header.minor);
@@ -407,8 +407,9 @@ py::dict Info(const py::object& source, const py::object& limits_arg) {
   out["origin"] =
       py::make_tuple(header.meta.origin.x, header.meta.origin.y, header.meta.origin.yaw);
   out["lossless"] = header.lossless;
-  const std::optional<int> tolerance = ToleranceCellsOf(header.metadata);
-  out["tolerance"] = header.lossless || !tolerance ? py::object(py::none()) : py::int_(*tolerance);
+  const std::optional<int> tolerance =
+      ToleranceCellsOf(header.major, header.lossless, header.metadata);
+  out["tolerance"] = tolerance ? py::object(py::int_(*tolerance)) : py::object(py::none());
   // Metadata is not validated UTF-8: bytes that are not become U+FFFD.
   const auto text = [](const std::string& bytes) {
     PyObject* decoded =
@@ -535,8 +536,9 @@ as for load().
   module.def("info", &Info, py::arg("source"), py::kw_only(), py::arg("limits") = py::none(),
              R"doc(
 What an .lmap file (a path) or .lmap bytes says of itself, read from its
-header and metadata without its layers or cells (as ``linemap info --json``
-without the counts): a dict {``version`` ("2.3"), ``width``, ``height``
+header and metadata without its layers or cells (``linemap info --json``
+also counts the layers and cells, calls the tolerance ``tolerance_cells``
+and lists every value of a repeated metadata key): a dict {``version`` ("2.3"), ``width``, ``height``
 (cells), ``resolution`` (m/cell), ``origin`` (x, y, yaw: metres, radians),
 ``lossless`` (the file is the map cell for cell), ``tolerance`` (cells: the
 T of ``save(..., tolerance=T)`` a file simplified within a tolerance was

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -202,7 +203,8 @@ StatusOr<std::vector<std::pair<std::string, std::string>>> ReadMetadata(
 }
 
 std::optional<int> ToleranceCellsOf(
-    const std::vector<std::pair<std::string, std::string>>& metadata) {
+    int major, bool lossless, const std::vector<std::pair<std::string, std::string>>& metadata) {
+  if (major < 2 || lossless) return std::nullopt;
   for (auto entry = metadata.rbegin(); entry != metadata.rend(); ++entry) {
     if (entry->first != kToleranceMetadataKey) continue;
     const std::string& text = entry->second;
@@ -214,7 +216,7 @@ std::optional<int> ToleranceCellsOf(
       if (ch < '0' || ch > '9') return std::nullopt;
       value = value * 10 + (ch - '0');
     }
-    if (value > INT32_MAX) return std::nullopt;
+    if (value > std::numeric_limits<int>::max()) return std::nullopt;
     return static_cast<int>(value);
   }
   return std::nullopt;

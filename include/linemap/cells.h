@@ -5,7 +5,6 @@
 #define LINEMAP_CELLS_H_
 
 #include <algorithm>
-#include <cstddef>
 #include <vector>
 
 namespace linemap {
@@ -36,21 +35,11 @@ inline BoundingBox BoxOfCells(const std::vector<CellIndex>& cells) {
 
 // Whether a closed ring of cells (its last point joined to its first) runs
 // clockwise, columns east and rows north as in the map frame: its signed
-// area by the shoelace formula is below zero. Exact on the indices (each
-// term fits in 64 bits, their sum over a ring of up to the chain limit of
-// points in 128). A ring enclosing nothing (out and back along a line) is
-// not clockwise. The turn is the same in map-frame metres: an origin's yaw
-// rotates the grid, it never mirrors it.
-inline bool RunsClockwise(const std::vector<CellIndex>& ring) {
-  __extension__ typedef __int128 Int128;  // a GCC and Clang extension
-  Int128 twice_area = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const CellIndex& p = ring[i];
-    const CellIndex& q = ring[(i + 1) % ring.size()];
-    twice_area += static_cast<long long>(p.col) * q.row - static_cast<long long>(q.col) * p.row;
-  }
-  return twice_area < 0;
-}
+// area by the shoelace formula is below zero, summed exactly. A ring
+// enclosing nothing (out and back along a line) is not clockwise. The turn
+// is the same in map-frame metres: an origin's yaw rotates the grid, it
+// never mirrors it.
+bool RunsClockwise(const std::vector<CellIndex>& ring);
 
 }  // namespace linemap
 

@@ -181,13 +181,14 @@ struct LmapContents {
 // module's `tolerance`). The guarantees of linemap/tolerance.h that
 // a planner may rely on depend on T, so the file says it itself.
 inline constexpr char kToleranceMetadataKey[] = "tolerance";
-// The T that `metadata` names (its last `tolerance` entry, a whole
-// number from 1 to 2^31 - 1 in plain decimal), or nullopt: an exact file, a
-// file written before the key existed or by another encoder, or a value
-// that is no such number (metadata is informational: it never rejects a
-// file).
+// The T a file simplified within a tolerance names: of a file of version
+// 2.x whose header's lossless flag is clear, the last `tolerance` entry of
+// its metadata, a whole number from 1 to 2^31 - 1 in plain decimal. nullopt
+// for an exact file (the key means nothing there), a 1.0 file, a file
+// written before the key existed or by another encoder, or a value that is
+// no such number (metadata is informational: it never rejects a file).
 std::optional<int> ToleranceCellsOf(
-    const std::vector<std::pair<std::string, std::string>>& metadata);
+    int major, bool lossless, const std::vector<std::pair<std::string, std::string>>& metadata);
 
 StatusOr<std::vector<std::uint8_t>> EncodeLmap(const Grid& grid, const EncodeOptions& options = {});
 StatusOr<Grid> DecodeLmap(const std::vector<std::uint8_t>& bytes, const DecodeLimits& limits = {});

@@ -34,8 +34,9 @@ TEST(CellsTest, RingsEnclosingNothingAreNotClockwise) {
   EXPECT_FALSE(RunsClockwise({{0, 0}, {1, 0}, {2, 0}, {1, 0}}));  // out and back
 }
 
-// Near 2^31 each shoelace term is near 2^62 and their sum passes 2^63:
-// 64-bit arithmetic would wrap and give the wrong turn.
+// Near 2^31 the big square's shoelace terms are near 2^62 and their sum
+// passes 2^63: 64-bit arithmetic would wrap and give the wrong turn. (The
+// corner ring's products are near 2^62 too, but each term's two cancel.)
 TEST(CellsTest, RunsClockwiseIsExactAtTheLargestIndices) {
   const int far = 2147483647;
   const std::vector<CellIndex> big = {{0, 0}, {far, 0}, {far, far}, {0, far}};

@@ -5,7 +5,9 @@
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/time.h>
@@ -132,6 +134,37 @@ TEST(FileIoTest, WriteIntoAReadOnlyFileSystemFails) {
   const Status status = WriteFileAtomic("/proc/linemap-test.lmap", "x");
   EXPECT_FALSE(status.ok());
   EXPECT_NE(status.message().find("/proc/linemap-test.lmap"), std::string::npos);
+}
+
+// A writable file on a file system mounted read-only: the refusal carries
+// EROFS, as open() gives it, not the EACCES of a read-only file. Needs a
+// private mount namespace (root); skipped without one.
+TEST(FileIoTest, ReplacingAFileOnAReadOnlyMountCarriesErofs) {
+  const std::string dir = MakeTempDir("fio_rofs");
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (::unshare(CLONE_NEWNS) != 0 ||
+        ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+        ::mount("none", dir.c_str(), "tmpfs", 0, nullptr) != 0) {
+      _exit(77);
+    }
+    const std::string target = dir + "/map.lmap";
+    if (!WriteFileAtomic(target, "old").ok()) _exit(4);
+    if (::mount(nullptr, dir.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr) != 0) _exit(77);
+    if (::access(target.c_str(), W_OK) == 0 || errno != EROFS) _exit(77);
+    const Status replaced = WriteFileAtomic(target, "new");
+    if (replaced.ok()) _exit(5);
+    if (replaced.sys_errno() != EROFS) _exit(6);
+    if (replaced.message().find("read-only, mode") != std::string::npos) _exit(7);
+    _exit(CheckSaveTarget(target).sys_errno() == EROFS ? 0 : 8);
+  }
+  int wstatus = 0;
+  ::waitpid(pid, &wstatus, 0);
+  ASSERT_TRUE(WIFEXITED(wstatus));
+  if (WEXITSTATUS(wstatus) == 77) GTEST_SKIP() << "no private mount namespace here";
+  EXPECT_EQ(WEXITSTATUS(wstatus), 0) << "4: first save failed, 5: replaced, 6: errno not EROFS, "
+                                        "7: called the file read-only, 8: CheckSaveTarget";
 }
 
 mode_t ModeOf(const std::string& path) {
@@ -327,15 +360,24 @@ TEST(FileIoTest, SaveRemovesOnlyStaleTemporariesOfItsOwnTarget) {
   EXPECT_EQ(ReadFile(target)[0], 'b');
 }
 
-// A target of 250 bytes: its temporaries' names hold its first 236.
+// A target of 250 bytes: its temporaries' names hold its first 236, or
+// fewer where byte 236 is inside a UTF-8 character (here "é", 2 bytes, from
+// byte 235: the name is cut before it).
 TEST(FileIoTest, StaleTemporariesOfALongNamedTargetAreRemoved) {
-  const std::string dir = MakeTempDir("fio");
-  const std::string name = std::string(245, 'm') + ".lmap";
-  const std::string stale = std::string(236, 'm') + ".linemap-tmp-0a1b2c";
-  WriteFile(dir + "/" + stale, "x");
-  AgeFile(dir + "/" + stale, kStaleTemporarySeconds + 5);
-  ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, Version('a', 16)).ok());
-  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{name});
+  std::string accented = "a";
+  while (accented.size() < 249) accented += "\xC3\xA9";  // é
+  const std::pair<std::string, std::string> cases[] = {
+      {std::string(245, 'm') + ".lmap", std::string(236, 'm')},
+      {accented + ".lmap", accented.substr(0, 235)},
+  };
+  for (const auto& [name, kept_bytes] : cases) {
+    const std::string dir = MakeTempDir("fio");
+    const std::string stale = kept_bytes + ".linemap-tmp-0a1b2c";
+    WriteFile(dir + "/" + stale, "x");
+    AgeFile(dir + "/" + stale, kStaleTemporarySeconds + 5);
+    ASSERT_TRUE(WriteFileAtomic(dir + "/" + name, Version('a', 16)).ok());
+    EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{name});
+  }
 }
 
 // Streamed saves (AtomicFileWriter): the pieces land where they were

@@ -417,9 +417,11 @@ def test_save_raises_the_errno_of_the_failed_create(tmp_path):
     os.symlink("loop-b.lmap", tmp_path / "loop-a.lmap")
     os.symlink("loop-a.lmap", tmp_path / "loop-b.lmap")
     m = linemap.Map(np.zeros((4, 4), np.uint8))
+    (tmp_path / "folder.lmap").mkdir()
     targets = [tmp_path / "nodir" / "map.lmap", tmp_path / "plain" / "map.lmap",
                tmp_path / "loop-a.lmap", pathlib.Path("/proc/linemap-errno-test.lmap"),
-               pathlib.Path("/sys/linemap-errno-test.lmap")]
+               pathlib.Path("/sys/linemap-errno-test.lmap"), tmp_path / "folder.lmap",
+               tmp_path / ("n" * 300 + ".lmap")]
     checked = 0
     for target in targets:
         expected = create_error(target)
@@ -444,11 +446,17 @@ def test_save_raises_the_errno_of_the_failed_create(tmp_path):
 
 
 def test_load_raises_the_errno_of_the_failed_open(tmp_path):
+    # NotADirectoryError for a file used as a folder, as open() raises, not
+    # ValueError: every failed call raises the OSError of its errno.
     locked = tmp_path / "locked.lmap"
     locked.write_bytes(linemap.encode(linemap.Map(np.zeros((4, 4), np.uint8))))
     locked.chmod(0)
     try:
-        targets = [tmp_path / "none.lmap", tmp_path / "nodir" / "none.yaml"]
+        plain = tmp_path / "plain"
+        plain.write_text("a file, not a folder")
+        (tmp_path / "loop.lmap").symlink_to(tmp_path / "loop.lmap")
+        targets = [tmp_path / "none.lmap", tmp_path / "nodir" / "none.yaml",
+                   plain / "x.lmap", tmp_path / "loop.lmap", tmp_path / ("n" * 300 + ".lmap")]
         unreadable = str(locked) if not os.access(locked, os.R_OK) else unreadable_file()
         if unreadable is not None:
             targets.append(unreadable)

@@ -111,8 +111,8 @@ void AddSpeed(const Grid& grid, const std::vector<std::uint8_t>& file, const Lma
     result->figures[key::kLmapEncodeMs] = Median(lmap_encode);
     result->figures[key::kLmapDecodeMs] = Median(lmap_decode);
   } else {
-    result->figures[key::kLmapEncodeMs] = Median(TimeRuns(encode, what.repeats));
-    result->figures[key::kLmapDecodeMs] = Median(TimeRuns(decode, what.repeats));
+    result->figures[key::kLmapEncodeMs] = Median(TimeSamples(encode, what.repeats));
+    result->figures[key::kLmapDecodeMs] = Median(TimeSamples(decode, what.repeats));
   }
   if (!what.memory) return;
   if (auto peak = PeakExtraMemoryBytes(encode)) {
@@ -192,9 +192,9 @@ Status AddLmapFigures(const Grid& grid, const LmapMeasure& what, MapResult* resu
     result->figures[key::kLmapCellsWrong] = static_cast<double>(grid.size());
     if (what.rival) {  // nothing to take turns with
       result->figures[what.rival->encode_ms_key] =
-          Median(TimeRuns(what.rival->encode, what.repeats));
+          Median(TimeSamples(what.rival->encode, what.repeats));
       result->figures[what.rival->decode_ms_key] =
-          Median(TimeRuns(what.rival->decode, what.repeats));
+          Median(TimeSamples(what.rival->decode, what.repeats));
     }
     return file.status();
   }

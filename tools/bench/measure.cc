@@ -69,14 +69,21 @@ std::vector<double> TimeRuns(const std::function<void()>& op, int repeats) {
   return ms;
 }
 
+std::vector<double> TimeSamples(const std::function<void()>& op, int repeats) {
+  const int loops = LoopsFor(TimeOnce(op));  // also settles the heap for `op`; not counted
+  std::vector<double> ms;
+  for (int i = 0; i < std::max(1, repeats); ++i) ms.push_back(TimeSample(op, loops));
+  return ms;
+}
+
 std::pair<std::vector<double>, std::vector<double>> TimeRunsInBlocks(const std::function<void()>& a,
                                                                      const std::function<void()>& b,
                                                                      int repeats) {
   std::pair<std::vector<double>, std::vector<double>> ms;
   const int total = std::max(1, repeats);
   const auto block = [](const std::function<void()>& op, int runs, std::vector<double>* out) {
-    const int loops = LoopsFor(TimeOnce(op));  // also settles the heap for `op`; not counted
-    for (int i = 0; i < runs; ++i) out->push_back(TimeSample(op, loops));
+    const std::vector<double> ms = TimeSamples(op, runs);
+    out->insert(out->end(), ms.begin(), ms.end());
   };
   const int first_half = (total + 1) / 2, second_half = total / 2;
   block(a, first_half, &ms.first);

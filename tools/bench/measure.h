@@ -14,7 +14,7 @@ namespace linemap::bench {
 // machines are shared, and another process's load must not show up here.
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 
-// In TimeRunsInBlocks, a timed sample of an operation under kMinSampleMs is
+// In TimeSamples and TimeRunsInBlocks, a timed sample of an operation under kMinSampleMs is
 // the mean of as many runs back to back as reach it (at most kMaxLoops),
 // the count set by the block's untimed run: a single sub-millisecond run is
 // at the mercy of the machine (nav2 depot's default file decodes in about
@@ -22,6 +22,10 @@ std::vector<double> TimeRuns(const std::function<void()>& op, int repeats);
 // 1.75x). Both codecs of a comparison are sampled the same way.
 inline constexpr double kMinSampleMs = 10.0;
 inline constexpr int kMaxLoops = 100;
+
+// `repeats` such samples of `op` (ms per run), after one untimed run that
+// sets the loop count.
+std::vector<double> TimeSamples(const std::function<void()>& op, int repeats);
 
 // The same for two operations timed in blocks: one untimed run of `a`, then
 // half of a's timed samples (rounded up), then the same for `b`; then, with

@@ -136,7 +136,8 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   const CellCounts counts = grid.Count();
   const LayerCounts layers = CountLayers(*contents);
   const bool v1 = contents->major < 2;
-  const std::optional<int> tolerance = ToleranceCellsOf(contents->metadata);
+  const std::optional<int> tolerance =
+      ToleranceCellsOf(contents->major, contents->lossless, contents->metadata);
   if (args.Has("--json")) {
     std::string chunks = "[";
     for (const LmapChunkInfo& c : contents->chunks) {
@@ -177,7 +178,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   std::string fidelity = contents->lossless    ? "lossless"
                          : contents->major > 1 ? "within a tolerance"
                                                : "lossy";
-  if (!contents->lossless && tolerance) {
+  if (tolerance) {
     char text[96];
     std::snprintf(text, sizeof text, " of %d cell%s (%g m)", *tolerance, *tolerance == 1 ? "" : "s",
                   *tolerance * grid.meta.resolution);

@@ -177,12 +177,23 @@ TEST(ChunkCodingTest, ToleranceCellsOfReadsOnlyPlainWholeNumbers) {
       {"two", {}},
   };
   for (const auto& [text, want] : values) {
-    EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", text}}), want) << "'" << text << "'";
+    EXPECT_EQ(ToleranceCellsOf(2, false, Entries{{"tolerance", text}}), want) << "'" << text << "'";
   }
-  EXPECT_EQ(ToleranceCellsOf(Entries{}), std::nullopt);
-  EXPECT_EQ(ToleranceCellsOf(Entries{{"Tolerance", "2"}, {"tolerance_cells", "2"}}), std::nullopt);
-  EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", "1"}, {"creator", "x"}, {"tolerance", "3"}}), 3);
-  EXPECT_EQ(ToleranceCellsOf(Entries{{"tolerance", "1"}, {"tolerance", "x"}}), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(2, false, Entries{}), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(2, false, Entries{{"Tolerance", "2"}, {"tolerance_cells", "2"}}),
+            std::nullopt);
+  EXPECT_EQ(
+      ToleranceCellsOf(2, false, Entries{{"tolerance", "1"}, {"creator", "x"}, {"tolerance", "3"}}),
+      3);
+  EXPECT_EQ(ToleranceCellsOf(2, false, Entries{{"tolerance", "1"}, {"tolerance", "x"}}),
+            std::nullopt);
+  // Only a file simplified within a tolerance names one: not an exact file,
+  // not one of version 1.0 (whose lossy mode had no T).
+  const Entries two{{"tolerance", "2"}};
+  EXPECT_EQ(ToleranceCellsOf(2, true, two), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(1, false, two), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(1, true, two), std::nullopt);
+  EXPECT_EQ(ToleranceCellsOf(3, false, two), 2);
 }
 
 }  // namespace

@@ -413,10 +413,10 @@ TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
       const auto& metadata = contents->metadata;
       if (contents->lossless) {
         EXPECT_TRUE(metadata.empty()) << map << " T = " << t;
-        EXPECT_EQ(ToleranceCellsOf(metadata), std::nullopt);
+        EXPECT_EQ(ToleranceCellsOf(2, true, metadata), std::nullopt);
       } else {
         EXPECT_EQ(metadata, (std::vector{named})) << map << " T = " << t;
-        EXPECT_EQ(ToleranceCellsOf(metadata), t);
+        EXPECT_EQ(ToleranceCellsOf(2, false, metadata), t);
       }
     }
   }
