@@ -314,6 +314,23 @@ std::optional<LmapVectors> StoredLayers(const py::object& decoded, const DecodeL
   return ValueOrRaise(std::move(vectors));
 }
 
+// The T an .lmap file at `decoded` names (saved within a tolerance), when
+// the checks take it; nullopt for a Map, another file or an exact one.
+std::optional<int> FileTolerance(const py::object& decoded, const DecodeLimits& limits) {
+  if (py::isinstance<Map>(decoded)) return std::nullopt;
+  const std::string path = PathArgument(decoded);
+  if (!IsLmapPath(path)) return std::nullopt;
+  StatusOr<LmapHeader> header = InternalError("not read");
+  {
+    py::gil_scoped_release release;
+    header = LoadLmapHeader(path, limits);
+  }
+  const LmapHeader h = ValueOrRaise(std::move(header));
+  const std::optional<int> t = ToleranceCellsOf(h.major, h.lossless, h.metadata);
+  if (t && *t <= kMaxToleranceCells) return t;
+  return std::nullopt;
+}
+
 // eval()'s tolerance: None, or a whole number of cells 0..kMaxToleranceCells.
 std::optional<int> ToleranceArgument(const py::object& tolerance) {
   if (tolerance.is_none()) return std::nullopt;
@@ -342,6 +359,10 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
                           ": eval compares maps of the same size");
   }
   const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, limits);
+  // Without `tolerance`, an .lmap file saved within one is checked at the T
+  // it names, as `linemap eval` does.
+  const std::optional<int> file_tolerance =
+      tolerance ? std::nullopt : FileTolerance(decoded_arg, limits);
   GridComparison m;
   StatusOr<LayerFidelity> fidelity = InternalError("not measured");
   std::optional<ToleranceReport> guarantees;
@@ -350,6 +371,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     m = CompareGrids(original, decoded);
     if (layers) fidelity = MeasureLayerFidelity(original, *layers);
     if (tolerance) guarantees = CheckTolerance(original, decoded, *tolerance);
+    if (file_tolerance) guarantees = CheckTolerance(original, decoded, *file_tolerance);
   }
   py::dict out;
   out["same_geometry"] = m.same_geometry;
@@ -386,6 +408,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   }
   if (guarantees) {
     VisitToleranceFigures(*guarantees, [&out](const char* key, auto value) { out[key] = value; });
+    out["tolerance_from_file"] = file_tolerance.has_value();
   }
   return out;
 }
@@ -451,7 +474,9 @@ edge_share_* figures. With ``tolerance`` (cells, 0..4) also the guarantees
 of a save within that tolerance, as ``linemap eval --tolerance T --json``:
 the Hausdorff distances both ways, the wall surface kept, free cells moved
 or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
-and local plans that disagree, and tolerance_holds. ``max_cells`` and
+and local plans that disagree, and tolerance_holds; with ``tolerance`` None,
+an .lmap file saved within a tolerance is checked at the T it names (then
+``tolerance_from_file`` is True). ``max_cells`` and
 ``limits`` as for load(). Maps of different sizes raise ValueError.
 )doc");
 }

@@ -245,3 +245,19 @@ def test_eval_tolerance_must_be_a_whole_number_of_cells_up_to_4():
 def test_eval_refuses_maps_of_different_sizes():
     with pytest.raises(ValueError, match="same size"):
         linemap.eval(BUNDLED["depot"], BUNDLED["kth"])
+
+
+def test_eval_checks_a_tolerance_file_at_the_t_it_names(tmp_path, cli):
+    depot = BUNDLED["depot"]
+    path = tmp_path / "t2.lmap"
+    linemap.save(path, linemap.load(depot), tolerance=2)
+    named = linemap.eval(depot, path)
+    assert named["tolerance_from_file"] is True and named["tolerance_holds"] is True
+    given = linemap.eval(depot, path, tolerance=2)
+    assert given["tolerance_from_file"] is False
+    figures = {k: v for k, v in given.items() if k != "tolerance_from_file"}
+    assert {k: named[k] for k in figures} == figures
+    assert named == linemap_cli.run_json(cli, "eval", depot, path, "--json")
+    exact = tmp_path / "exact.lmap"
+    linemap.save(exact, linemap.load(depot))
+    assert "tolerance_holds" not in linemap.eval(depot, exact)

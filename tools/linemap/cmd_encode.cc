@@ -254,6 +254,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
       json.Add("png_bytes", std::uint64_t{*report.png_bytes}).Add("ratio_to_png", ratio);
     }
     json.Add("exact", report.exact)
+        .AddRaw("tolerance_cells", report.exact ? "null" : std::to_string(options.tolerance_cells))
         .Add("vector_layers", options.vector_layers)
         .Add("seconds", report.seconds);
     std::printf("%s\n", json.str().c_str());
@@ -261,9 +262,12 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
   }
   std::printf("input:   %d x %d = %llu cells\n", report.width, report.height,
               static_cast<unsigned long long>(cells));
+  char within[64];
+  std::snprintf(within, sizeof within, "within a tolerance of %d cell%s", options.tolerance_cells,
+                options.tolerance_cells == 1 ? "" : "s");
   std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
               static_cast<unsigned long long>(report.bytes),
-              !report.exact           ? "within the tolerance"
+              !report.exact           ? within
               : options.vector_layers ? "exact, with walls, rooms and furniture"
                                       : "exact, cells only");
   if (report.png_bytes) {

@@ -45,7 +45,8 @@ const CommandSpec kEvalSpec = {
     "free in both) that exist on one map only or differ in length by more than\n"
     "3 %, and plans of up to 16 steps from every cell beside a change that are\n"
     "not on the other map in as many steps; and whether all hold\n"
-    "(exit status 0 either way).",
+    "(exit status 0 either way). Without --tolerance, an .lmap file saved\n"
+    "within a tolerance is checked at the T it names (its metadata).",
     WithMapLoadOptions(
         {{"--json", "", "print one JSON object"},
          {"--tolerance", "T", "also check the guarantees of a save within T cells (0..4)"}}),
@@ -109,6 +110,7 @@ int RunEval(const std::vector<std::string>& args) {
                     ": eval compares maps of the same size"));
   }
   std::optional<ToleranceReport> tol;
+  bool tolerance_from_file = false;
   if (parsed->Get("--tolerance")) {
     StatusOr<int> t = parsed->GetInt("--tolerance", 0);
     if (!t.ok() || *t < 0 || *t > kMaxToleranceCells) {
@@ -117,6 +119,17 @@ int RunEval(const std::vector<std::string>& args) {
                                        std::to_string(kMaxToleranceCells)));
     }
     tol = CheckTolerance(*original, *decoded, *t);
+  } else if (IsLmapPath(decoded_path)) {
+    // A file saved within a tolerance promises its guarantees at the T it
+    // names: check those (a T beyond what the checks take names none).
+    StatusOr<LmapHeader> header = LoadLmapHeader(decoded_path, decoded_options.lmap);
+    if (!header.ok()) return ReportError("eval", header.status());
+    const std::optional<int> t =
+        ToleranceCellsOf(header->major, header->lossless, header->metadata);
+    if (t && *t <= kMaxToleranceCells) {
+      tol = CheckTolerance(*original, *decoded, *t);
+      tolerance_from_file = true;
+    }
   }
   const GridComparison m = CompareGrids(*original, *decoded);
   // The layers' fidelity when the second file is an .lmap.
@@ -160,6 +173,7 @@ int RunEval(const std::vector<std::string>& args) {
     }
     if (tol) {
       VisitToleranceFigures(*tol, [&json](const char* key, auto value) { json.Add(key, value); });
+      json.Add("tolerance_from_file", tolerance_from_file);
     }
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
@@ -187,7 +201,10 @@ int RunEval(const std::vector<std::string>& args) {
                 share(fidelity->within_1_of_wall, fidelity->edge_cells));
     std::printf("  or in furniture:    %.4f\n", share(fidelity->covered, fidelity->edge_cells));
   }
-  if (tol) PrintToleranceReport(*tol);
+  if (tol) {
+    if (tolerance_from_file) std::printf("tolerance named by the file's metadata\n");
+    PrintToleranceReport(*tol);
+  }
   return kExitOk;
 }
 

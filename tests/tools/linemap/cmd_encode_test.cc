@@ -209,7 +209,13 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
     const bool says_exact = r.out.find("\"exact\":true") != std::string::npos;
     EXPECT_EQ(says_exact, decodes_exactly) << map << " T = " << t << ": " << r.out;
     EXPECT_EQ(says_exact, t != "1") << map << " T = " << t;
+    // The T the file keeps its guarantees at, or null for an exact file.
+    const std::string named = says_exact ? "null" : t;
+    EXPECT_NE(r.out.find("\"tolerance_cells\":" + named + ","), std::string::npos) << r.out;
   }
+  const CliResult text = RunCli({"encode", depot, "-o", dir + "/t2.lmap", "--tolerance", "2"});
+  EXPECT_NE(text.out.find(" bytes (within a tolerance of 2 cells)\n"), std::string::npos)
+      << text.out;
 }
 
 // --compact writes an exact version 2.3 file no larger than the default

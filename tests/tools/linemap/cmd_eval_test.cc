@@ -113,6 +113,29 @@ TEST(CmdEvalTest, ToleranceReportsTheGuaranteesFigures) {
   EXPECT_GT(JsonCount(within.out, "plan_disagreements"), 0) << within.out;
 }
 
+// Without --tolerance an .lmap file saved within one is checked at the T
+// its metadata names, the figures being those --tolerance T prints; an
+// exact file gets no tolerance check.
+TEST(CmdEvalTest, ToleranceFileIsCheckedAtTheTItNames) {
+  const std::string dir = MakeTempDir("eval_file_tolerance");
+  const std::string depot = testing::BundledMapsDir() + "/nav2/depot.yaml";
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/t2.lmap", "--tolerance", "2"}).exit_code, 0);
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/exact.lmap"}).exit_code, 0);
+  const CliResult named = RunCli({"eval", depot, dir + "/t2.lmap"});
+  ASSERT_EQ(named.exit_code, 0) << named.err;
+  EXPECT_NE(named.out.find("tolerance named by the file's metadata\n"), std::string::npos)
+      << named.out;
+  const CliResult given = RunCli({"eval", depot, dir + "/t2.lmap", "--tolerance", "2"});
+  const std::string report = given.out.substr(given.out.find("tolerance:"));
+  EXPECT_NE(report.find("tolerance:            2 cells"), std::string::npos) << given.out;
+  EXPECT_NE(named.out.find(report), std::string::npos) << named.out << "\n---\n" << report;
+  const CliResult json = RunCli({"eval", depot, dir + "/t2.lmap", "--json"});
+  EXPECT_NE(json.out.find("\"tolerance_holds\":true"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"tolerance_from_file\":true"), std::string::npos) << json.out;
+  const CliResult exact = RunCli({"eval", depot, dir + "/exact.lmap"});
+  EXPECT_EQ(exact.out.find("tolerance"), std::string::npos) << exact.out;
+}
+
 TEST(CmdEvalTest, ToleranceOutsideTheRangeIsBadUsage) {
   const std::string dir = MakeTempDir("eval_tolerance_range");
   const std::string original = SaveRoom(dir, "a", 10);
