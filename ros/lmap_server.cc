@@ -198,6 +198,21 @@ int Refuse(const Status& status) {
   return ExitCodeFor(status);
 }
 
+// ", saved within a tolerance of T cells (x m)" for an .lmap file that names
+// its T, which tells whoever reads the log what the served map promises;
+// "" otherwise (the header is read again: a few milliseconds).
+std::string ToleranceNote(const std::string& path, double resolution, const DecodeLimits& limits) {
+  if (!IsLmapPath(path)) return "";
+  const StatusOr<LmapHeader> header = LoadLmapHeader(path, limits);
+  if (!header.ok()) return "";
+  const std::optional<int> t = ToleranceCellsOf(header->major, header->lossless, header->metadata);
+  if (!t) return "";
+  char text[96];
+  std::snprintf(text, sizeof text, ", saved within a tolerance of %d cell%s (%g m)", *t,
+                *t == 1 ? "" : "s", *t * resolution);
+  return text;
+}
+
 // The map named on the command line, before the master is waited for: a
 // map that cannot be read, one over a limit given or a window past it is
 // refused at once (exit 2), not after the wait. Loaded when the limits that
@@ -287,8 +302,9 @@ int Run(int argc, char** argv) {
     grid = std::move(*loaded);
   }
   MapServer server(RosMessageFromGrid(*grid, frame_id, ros::Time::now()));
-  ROS_INFO("lmap_server: serving %s: %d x %d cells at %.3f m/cell, frame '%s'", map_path->c_str(),
-           grid->width(), grid->height(), grid->meta.resolution, frame_id.c_str());
+  ROS_INFO("lmap_server: serving %s: %d x %d cells at %.3f m/cell, frame '%s'%s", map_path->c_str(),
+           grid->width(), grid->height(), grid->meta.resolution, frame_id.c_str(),
+           ToleranceNote(*map_path, grid->meta.resolution, LimitsOf(*limits, {})).c_str());
   ros::spin();
   return kExitOk;
 }

@@ -133,6 +133,30 @@ TEST(LmapServerTest, PublishesBundledLmapAndServesItOnStaticMap) {
   EXPECT_EQ(server->Stop(SIGINT), 0) << server->Stderr();
 }
 
+// The log line says what a file saved within a tolerance promises; an
+// exact file's says nothing of it.
+TEST(LmapServerTest, LogNamesTheToleranceTheFileWasSavedWithin) {
+  RosMaster& master = SharedMaster();
+  const std::pair<std::string, bool> files[] = {
+      {SourceDir() + "/tests/data/lmap/willow_v2_3_tolerance_1.lmap", true},
+      {SourceDir() + "/tests/data/lmap/depot_v2.lmap", false},
+  };
+  int n = 0;
+  for (const auto& [lmap, named] : files) {
+    const std::string ns = "/tol" + std::to_string(n++);
+    MapListener listener(ns);
+    auto server = StartServer(master, ns, {lmap});
+    ASSERT_TRUE(WaitFor([&] { return listener.Received() || server->Wait(0); }, 20))
+        << server->Stderr();
+    ASSERT_TRUE(listener.Received()) << "lmap_server exited: " << server->Stderr();
+    EXPECT_EQ(server->Stop(SIGINT), 0) << server->Stderr();
+    const std::string log = server->Stdout();
+    EXPECT_NE(log.find("lmap_server: serving " + lmap), std::string::npos) << log;
+    EXPECT_EQ(log.find(", saved within a tolerance of 1 cell (0.1 m)") != std::string::npos, named)
+        << log;
+  }
+}
+
 TEST(LmapServerTest, PublishesMapYamlInTheGivenFrame) {
   RosMaster& master = SharedMaster();
   // Non-zero origin: the origin travels into the message.
