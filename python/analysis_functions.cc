@@ -314,21 +314,18 @@ std::optional<LmapVectors> StoredLayers(const py::object& decoded, const DecodeL
   return ValueOrRaise(std::move(vectors));
 }
 
-// The T an .lmap file at `decoded` names (saved within a tolerance), when
-// the checks take it; nullopt for a Map, another file or an exact one.
-std::optional<int> FileTolerance(const py::object& decoded, const DecodeLimits& limits) {
+// The T an .lmap file at `decoded` names (saved within a tolerance);
+// nullopt for a Map, another file or an exact one.
+std::optional<int> NamedTolerance(const py::object& decoded, const DecodeLimits& limits) {
   if (py::isinstance<Map>(decoded)) return std::nullopt;
   const std::string path = PathArgument(decoded);
   if (!IsLmapPath(path)) return std::nullopt;
-  StatusOr<LmapHeader> header = InternalError("not read");
+  StatusOr<std::optional<int>> named = InternalError("not read");
   {
     py::gil_scoped_release release;
-    header = LoadLmapHeader(path, limits);
+    named = LoadLmapToleranceCells(path, limits);
   }
-  const LmapHeader h = ValueOrRaise(std::move(header));
-  const std::optional<int> t = ToleranceCellsOf(h.major, h.lossless, h.metadata);
-  if (t && *t <= kMaxToleranceCells) return t;
-  return std::nullopt;
+  return ValueOrRaise(std::move(named));
 }
 
 // eval()'s tolerance: None, or a whole number of cells 0..kMaxToleranceCells.
@@ -360,9 +357,14 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   }
   const std::optional<LmapVectors> layers = StoredLayers(decoded_arg, limits);
   // Without `tolerance`, an .lmap file saved within one is checked at the T
-  // it names, as `linemap eval` does.
+  // it names, as `linemap eval` does: T up to 4, maps up to the default
+  // memory bound of a save within a tolerance.
+  const std::optional<int> named = tolerance ? std::nullopt : NamedTolerance(decoded_arg, limits);
   const std::optional<int> file_tolerance =
-      tolerance ? std::nullopt : FileTolerance(decoded_arg, limits);
+      named && *named <= kMaxToleranceCells &&
+              original.size() <= EncodeOptions{}.max_tolerance_cells
+          ? named
+          : std::nullopt;
   GridComparison m;
   StatusOr<LayerFidelity> fidelity = InternalError("not measured");
   std::optional<ToleranceReport> guarantees;
@@ -410,6 +412,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     VisitToleranceFigures(*guarantees, [&out](const char* key, auto value) { out[key] = value; });
     out["tolerance_from_file"] = file_tolerance.has_value();
   }
+  if (named) out["tolerance_named_cells"] = *named;
   return out;
 }
 
@@ -476,7 +479,9 @@ the Hausdorff distances both ways, the wall surface kept, free cells moved
 or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
 and local plans that disagree, and tolerance_holds; with ``tolerance`` None,
 an .lmap file saved within a tolerance is checked at the T it names (then
-``tolerance_from_file`` is True). ``max_cells`` and
+``tolerance_from_file`` is True; ``tolerance_named_cells`` is that T, also
+when it is not checked: above 4, or on a map over 2^26 cells).
+``max_cells`` and
 ``limits`` as for load(). Maps of different sizes raise ValueError.
 )doc");
 }

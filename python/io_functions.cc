@@ -462,7 +462,7 @@ files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``;
 version 2.3): on the bench corpus about 4.5 % smaller files (8.5 % with
-vectors=False) that decode in 3-4x the time at the median (4.8 against 1.2
+vectors=False) that decode in about 4x the time at the median (4.8 against 1.2
 ms in the last bench; a median 5.5x per map, up to 9.2x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need

@@ -200,16 +200,14 @@ int Refuse(const Status& status) {
 
 // ", saved within a tolerance of T cells (x m)" for an .lmap file that names
 // its T, which tells whoever reads the log what the served map promises;
-// "" otherwise (the header is read again: a few milliseconds).
+// "" otherwise (the file is read again, its layers and cells not decoded).
 std::string ToleranceNote(const std::string& path, double resolution, const DecodeLimits& limits) {
   if (!IsLmapPath(path)) return "";
-  const StatusOr<LmapHeader> header = LoadLmapHeader(path, limits);
-  if (!header.ok()) return "";
-  const std::optional<int> t = ToleranceCellsOf(header->major, header->lossless, header->metadata);
-  if (!t) return "";
+  const StatusOr<std::optional<int>> t = LoadLmapToleranceCells(path, limits);
+  if (!t.ok() || !*t) return "";
   char text[96];
-  std::snprintf(text, sizeof text, ", saved within a tolerance of %d cell%s (%g m)", *t,
-                *t == 1 ? "" : "s", *t * resolution);
+  std::snprintf(text, sizeof(text), ", saved within a tolerance of %d cell%s (%g m)", **t,
+                **t == 1 ? "" : "s", **t * resolution);
   return text;
 }
 

@@ -113,8 +113,9 @@ StatusOr<std::vector<std::uint8_t>> CellsWithinTolerance(const Grid& grid,
   };
   LINEMAP_ASSIGN_OR_RETURN(BlockCells blocks, FitBlockCells(grid, options.tolerance_cells,
                                                             after_round, options.max_threads));
-  *exact = std::all_of(blocks.restored.begin(), blocks.restored.end(),
-                       [](std::uint8_t r) { return r != 0; });
+  // Exact when what the blocks draw is the map, restored everywhere or not
+  // (blocks of one value each draw it too): then the file names no T.
+  *exact = ComposeBlockCells(grid, blocks).cells() == grid.cells();
   const int f = blocks.block_cells;
   int tile = TileSide(grid.width(), grid.height(), options.tile_size_cells) / f * f;
   if (tile < kMinTileSize) tile += f;  // a side of 16 with blocks of 3 or 5

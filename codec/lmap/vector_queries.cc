@@ -114,6 +114,12 @@ StatusOr<LmapHeader> LoadLmapHeader(const std::string& path, const DecodeLimits&
   return NamingFile(DecodeLmapHeader(bytes, limits), path);
 }
 
+StatusOr<std::optional<int>> LoadLmapToleranceCells(const std::string& path,
+                                                    const DecodeLimits& limits) {
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(path, limits));
+  return ToleranceCellsOf(header.major, header.lossless, header.metadata);
+}
+
 StatusOr<LmapVectors> DecodeLmapVectorsInWindow(const std::vector<std::uint8_t>& bytes,
                                                 const CellWindow& window,
                                                 const DecodeLimits& limits) {

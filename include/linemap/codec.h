@@ -93,7 +93,7 @@ struct EncodeOptions {
   // tries the two codings that code every cell of a changed row with mixed
   // predictions (spec/tile_coding.md models 3 and 12) and keeps the
   // smallest. Over ../shared/maps the files are a median 4.5 % smaller
-  // (8.5 % without layers), decode in 3-4x the time (up to 9-11x per map;
+  // (8.5 % without layers), decode in about 4x the time (up to 9-11x per map;
   // milliseconds for a building) and encode in about 1.3x. Files are
   // version 2.3. (Cells saved within a tolerance are always coded that way.)
   bool compact = false;

@@ -80,6 +80,12 @@ struct LmapHeader {
 StatusOr<LmapHeader> DecodeLmapHeader(const std::vector<std::uint8_t>& bytes,
                                       const DecodeLimits& limits = {});
 StatusOr<LmapHeader> LoadLmapHeader(const std::string& path, const DecodeLimits& limits = {});
+// The T the .lmap file at `path` was saved within, as its header and
+// metadata name it (ToleranceCellsOf); nullopt for an exact file or one
+// that names none. Reads the file (its CRCs checked) but decodes neither
+// layers nor cells.
+StatusOr<std::optional<int>> LoadLmapToleranceCells(const std::string& path,
+                                                    const DecodeLimits& limits = {});
 
 // The items of the layers whose bounding box (of their points or polygon
 // vertices, which holds their cells) meets `window`, in file order, with

@@ -247,17 +247,24 @@ def test_eval_refuses_maps_of_different_sizes():
         linemap.eval(BUNDLED["depot"], BUNDLED["kth"])
 
 
-def test_eval_checks_a_tolerance_file_at_the_t_it_names(tmp_path, cli):
+def test_eval_checks_a_tolerance_file_at_the_t_it_names(tmp_path):
     depot = BUNDLED["depot"]
     path = tmp_path / "t2.lmap"
     linemap.save(path, linemap.load(depot), tolerance=2)
     named = linemap.eval(depot, path)
     assert named["tolerance_from_file"] is True and named["tolerance_holds"] is True
+    assert named["tolerance_named_cells"] == 2
     given = linemap.eval(depot, path, tolerance=2)
-    assert given["tolerance_from_file"] is False
+    assert given["tolerance_from_file"] is False and "tolerance_named_cells" not in given
     figures = {k: v for k, v in given.items() if k != "tolerance_from_file"}
     assert {k: named[k] for k in figures} == figures
-    assert named == linemap_cli.run_json(cli, "eval", depot, path, "--json")
     exact = tmp_path / "exact.lmap"
     linemap.save(exact, linemap.load(depot))
     assert "tolerance_holds" not in linemap.eval(depot, exact)
+
+
+def test_eval_of_a_tolerance_file_equals_the_cli(tmp_path, cli):
+    depot = BUNDLED["depot"]
+    path = tmp_path / "t2.lmap"
+    linemap.save(path, linemap.load(depot), tolerance=2)
+    assert linemap.eval(depot, path) == linemap_cli.run_json(cli, "eval", depot, path, "--json")

@@ -168,7 +168,8 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
       {"Speed and memory",
        "CPU time per run, median of `runs` samples (5 up to 1 Mcell, 3 up to 4 Mcells, 1 "
        "above; a sample of an operation under 10 ms is the mean of as many runs back to back "
-       "as reach 10 ms), libpng's and the .lmap file's in blocks (an untimed run, then half "
+       "as reach 10 ms, at most 100), libpng's and the .lmap file's in blocks (an untimed run, "
+       "then half "
        "the samples; libpng, .lmap, .lmap, libpng); peak = "
        "resident memory the operation adds, in MB, measured once in a forked child; "
        "Mcells/s = cells / CPU time. lmap2 = the default .lmap 2.0 file (encode with its "

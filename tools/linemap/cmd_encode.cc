@@ -64,7 +64,7 @@ const CommandSpec kEncodeSpec = {
         {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
         {"--compact", "",
          "code the cells for size (a version 2.3 file): about 4.5 % smaller (8.5 % with "
-         "--raster-only), 3-4x the decode time at the median (a median 5.5x per map, up "
+         "--raster-only), about 4x the decode time at the median (a median 5.5x per map, up "
          "to 9.2x) and 1.3x the encode time (files saved with --tolerance code their blocks "
          "that way already)"},
         {"--threads", "N",
@@ -263,7 +263,7 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
   std::printf("input:   %d x %d = %llu cells\n", report.width, report.height,
               static_cast<unsigned long long>(cells));
   char within[64];
-  std::snprintf(within, sizeof within, "within a tolerance of %d cell%s", options.tolerance_cells,
+  std::snprintf(within, sizeof(within), "within a tolerance of %d cell%s", options.tolerance_cells,
                 options.tolerance_cells == 1 ? "" : "s");
   std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
               static_cast<unsigned long long>(report.bytes),

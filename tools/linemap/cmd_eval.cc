@@ -1,6 +1,7 @@
 // linemap eval ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]: the
-// quality measures of a decoded map against the original, and with
-// --tolerance the guarantees of a save within T cells.
+// quality measures of a decoded map against the original, and the
+// guarantees of a save within T cells: the T of --tolerance, or the one an
+// .lmap file names.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -46,7 +47,9 @@ const CommandSpec kEvalSpec = {
     "3 %, and plans of up to 16 steps from every cell beside a change that are\n"
     "not on the other map in as many steps; and whether all hold\n"
     "(exit status 0 either way). Without --tolerance, an .lmap file saved\n"
-    "within a tolerance is checked at the T it names (its metadata).",
+    "within a tolerance is checked at the T it names (its metadata), on maps\n"
+    "of up to 2^26 cells (the checks need some 25 bytes a cell; --tolerance T\n"
+    "checks any map) and for T up to 4; otherwise a line says why not.",
     WithMapLoadOptions(
         {{"--json", "", "print one JSON object"},
          {"--tolerance", "T", "also check the guarantees of a save within T cells (0..4)"}}),
@@ -58,13 +61,15 @@ namespace {
 
 // A Hausdorff distance as text; -1 stands for "the other map has no
 // obstacle at all".
+std::string CellsText(int cells) {
+  return std::to_string(cells) + (cells == 1 ? " cell" : " cells");
+}
 std::string DistanceText(int cells) {
-  return cells < 0 ? std::string("infinite (no obstacle on the other map)")
-                   : std::to_string(cells) + " cells";
+  return cells < 0 ? std::string("infinite (no obstacle on the other map)") : CellsText(cells);
 }
 
 void PrintToleranceReport(const ToleranceReport& t) {
-  std::printf("tolerance:            %d cells (Chebyshev)\n", t.tolerance_cells);
+  std::printf("tolerance:            %s (Chebyshev)\n", CellsText(t.tolerance_cells).c_str());
   std::printf("  Hausdorff orig->dec: %s\n", DistanceText(t.hausdorff_original_to_decoded).c_str());
   std::printf("  Hausdorff dec->orig: %s\n", DistanceText(t.hausdorff_decoded_to_original).c_str());
   std::printf("  wall surface kept:  %.4f (%zu of %zu within T)\n", t.WallSurfaceShare(),
@@ -111,6 +116,7 @@ int RunEval(const std::vector<std::string>& args) {
   }
   std::optional<ToleranceReport> tol;
   bool tolerance_from_file = false;
+  std::optional<int> named;  // the T an .lmap file names, when not given
   if (parsed->Get("--tolerance")) {
     StatusOr<int> t = parsed->GetInt("--tolerance", 0);
     if (!t.ok() || *t < 0 || *t > kMaxToleranceCells) {
@@ -121,13 +127,14 @@ int RunEval(const std::vector<std::string>& args) {
     tol = CheckTolerance(*original, *decoded, *t);
   } else if (IsLmapPath(decoded_path)) {
     // A file saved within a tolerance promises its guarantees at the T it
-    // names: check those (a T beyond what the checks take names none).
-    StatusOr<LmapHeader> header = LoadLmapHeader(decoded_path, decoded_options.lmap);
-    if (!header.ok()) return ReportError("eval", header.status());
-    const std::optional<int> t =
-        ToleranceCellsOf(header->major, header->lossless, header->metadata);
-    if (t && *t <= kMaxToleranceCells) {
-      tol = CheckTolerance(*original, *decoded, *t);
+    // names: check those, where the checks take that T and fit the default
+    // memory bound of a save within a tolerance.
+    StatusOr<std::optional<int>> t = LoadLmapToleranceCells(decoded_path, decoded_options.lmap);
+    if (!t.ok()) return ReportError("eval", t.status());
+    named = *t;
+    if (named && *named <= kMaxToleranceCells &&
+        original->size() <= EncodeOptions{}.max_tolerance_cells) {
+      tol = CheckTolerance(*original, *decoded, *named);
       tolerance_from_file = true;
     }
   }
@@ -175,6 +182,7 @@ int RunEval(const std::vector<std::string>& args) {
       VisitToleranceFigures(*tol, [&json](const char* key, auto value) { json.Add(key, value); });
       json.Add("tolerance_from_file", tolerance_from_file);
     }
+    if (named) json.Add("tolerance_named_cells", *named);
     std::printf("%s\n", json.str().c_str());
     return kExitOk;
   }
@@ -204,6 +212,12 @@ int RunEval(const std::vector<std::string>& args) {
   if (tol) {
     if (tolerance_from_file) std::printf("tolerance named by the file's metadata\n");
     PrintToleranceReport(*tol);
+  } else if (named) {
+    std::printf(
+        "tolerance:            the file names %s; not checked (%s; --tolerance T "
+        "checks T = 0..4 on any map)\n",
+        CellsText(*named).c_str(),
+        *named > kMaxToleranceCells ? "eval checks T = 0..4" : "a map over 2^26 cells");
   }
   return kExitOk;
 }

@@ -180,8 +180,8 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
                                                : "lossy";
   if (tolerance) {
     char text[96];
-    std::snprintf(text, sizeof text, " of %d cell%s (%g m)", *tolerance, *tolerance == 1 ? "" : "s",
-                  *tolerance * grid.meta.resolution);
+    std::snprintf(text, sizeof(text), " of %d cell%s (%g m)", *tolerance,
+                  *tolerance == 1 ? "" : "s", *tolerance * grid.meta.resolution);
     fidelity += text;
   }
   std::printf("file:       %s (.lmap version %d.%d, %s)\n", path.c_str(), contents->major,

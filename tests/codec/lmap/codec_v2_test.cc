@@ -422,6 +422,32 @@ TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
   }
 }
 
+// A map of 2 x 2 blocks of one value each is drawn exactly by the blocks of
+// T = 1: the file decodes to the map, so it says it is exact and names no T
+// (whether its cells are BLKS or CELL).
+TEST(CodecV2Test, BlocksThatDrawTheMapExactlyMakeAnExactFile) {
+  std::mt19937 rng(7);
+  Grid grid(256, 256, Cell::kFree);
+  for (int r = 0; r < 256; r += 2) {
+    for (int c = 0; c < 256; c += 2) {
+      const Cell value = static_cast<Cell>(rng() % 3);
+      for (int dr = 0; dr < 2; ++dr) {
+        for (int dc = 0; dc < 2; ++dc) grid.set(c + dc, r + dr, value);
+      }
+    }
+  }
+  grid.meta.resolution = 0.05;
+  EncodeOptions options;
+  options.tolerance_cells = 1;
+  auto bytes = EncodeLmap(grid, options);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
+  auto contents = DecodeLmapContents(*bytes);
+  ASSERT_TRUE(contents.ok());
+  EXPECT_EQ(contents->grid.cells(), grid.cells());
+  EXPECT_TRUE(contents->lossless);
+  EXPECT_TRUE(contents->metadata.empty());
+}
+
 // The caller's metadata comes first, then the tolerance; an exact save
 // names none, whatever the caller gives.
 TEST(CodecV2Test, ToleranceIsNamedBesideTheCallersMetadata) {

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <initializer_list>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "format/container.h"
+#include "format/file_io.h"
 #include "linemap/grid.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
@@ -134,6 +138,33 @@ TEST(CmdEvalTest, ToleranceFileIsCheckedAtTheTItNames) {
   EXPECT_NE(json.out.find("\"tolerance_from_file\":true"), std::string::npos) << json.out;
   const CliResult exact = RunCli({"eval", depot, dir + "/exact.lmap"});
   EXPECT_EQ(exact.out.find("tolerance"), std::string::npos) << exact.out;
+  // A file naming a T the checks do not take (another writer's) says so.
+  StatusOr<std::vector<std::uint8_t>> bytes = ReadFileBytes(dir + "/t2.lmap", 1 << 20);
+  ASSERT_TRUE(bytes.ok());
+  StatusOr<ContainerView> view = ParseContainer(*bytes, 1 << 20);
+  ASSERT_TRUE(view.ok());
+  ContainerWriter out(view->major, view->minor);
+  for (const Chunk& chunk : view->chunks) {
+    std::vector<std::uint8_t> payload(chunk.payload, chunk.payload + chunk.size);
+    if (chunk.type == "meta")
+      payload = {0, 1, 9, 't', 'o', 'l', 'e', 'r', 'a', 'n', 'c', 'e', 1, '7'};
+    if (chunk.type != "LEND") out.AddChunk(chunk.type, payload);
+  }
+  const std::vector<std::uint8_t> seven = out.Finish();
+  ASSERT_TRUE(
+      WriteFileAtomic(dir + "/t7.lmap",
+                      std::string_view(reinterpret_cast<const char*>(seven.data()), seven.size()))
+          .ok());
+  const CliResult beyond = RunCli({"eval", depot, dir + "/t7.lmap"});
+  ASSERT_EQ(beyond.exit_code, 0) << beyond.err;
+  EXPECT_NE(beyond.out.find("tolerance:            the file names 7 cells; not checked (eval "
+                            "checks T = 0..4"),
+            std::string::npos)
+      << beyond.out;
+  const CliResult beyond_json = RunCli({"eval", depot, dir + "/t7.lmap", "--json"});
+  EXPECT_NE(beyond_json.out.find("\"tolerance_named_cells\":7"), std::string::npos)
+      << beyond_json.out;
+  EXPECT_EQ(beyond_json.out.find("tolerance_holds"), std::string::npos) << beyond_json.out;
 }
 
 TEST(CmdEvalTest, ToleranceOutsideTheRangeIsBadUsage) {
