@@ -359,9 +359,9 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   // Without `tolerance`, an .lmap file saved within one is checked at the T
   // it names, as `linemap eval` does: T up to 4, maps up to the default
   // memory bound of a save within a tolerance.
-  const std::optional<int> named = tolerance ? std::nullopt : NamedTolerance(decoded_arg, limits);
+  const std::optional<int> named = NamedTolerance(decoded_arg, limits);
   const std::optional<int> file_tolerance =
-      named && *named <= kMaxToleranceCells &&
+      !tolerance && named && *named <= kMaxToleranceCells &&
               original.size() <= EncodeOptions{}.max_tolerance_cells
           ? named
           : std::nullopt;
@@ -479,8 +479,9 @@ the Hausdorff distances both ways, the wall surface kept, free cells moved
 or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
 and local plans that disagree, and tolerance_holds; with ``tolerance`` None,
 an .lmap file saved within a tolerance is checked at the T it names (then
-``tolerance_from_file`` is True; ``tolerance_named_cells`` is that T, also
-when it is not checked: above 4, or on a map over 2^26 cells).
+``tolerance_from_file`` is True). ``tolerance_named_cells`` is the T such
+a file names, whether checked at it or not (``tolerance`` given, a T above
+4, a map over 2^26 cells).
 ``max_cells`` and
 ``limits`` as for load(). Maps of different sizes raise ValueError.
 )doc");

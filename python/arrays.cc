@@ -21,7 +21,14 @@ py::tuple WorldPoint(const Grid& frame, const CellIndex& point) {
 }
 
 std::string PathArgument(const py::handle& path) {
-  return py::module_::import("os").attr("fsdecode")(path).cast<std::string>();
+  // The file system's bytes (os.fsencode), as open() takes a path: a name
+  // that is not UTF-8 arrives as a str with surrogate escapes, which a
+  // UTF-8 cast refuses.
+  const py::bytes encoded = py::module_::import("os").attr("fsencode")(path);
+  std::string bytes = encoded;
+  // The C library would end the name at a NUL and open another file.
+  if (bytes.find('\0') != std::string::npos) throw py::value_error("embedded null byte");
+  return bytes;
 }
 
 std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, std::size_t min_size,

@@ -35,7 +35,8 @@ py::array_t<double> WorldPoints(const Grid& frame, const std::vector<CellIndex>&
 // (x, y) in map-frame metres of one lattice point.
 py::tuple WorldPoint(const Grid& frame, const CellIndex& point);
 
-// A file name from str, bytes or os.PathLike (os.fsdecode).
+// A file name from str, bytes or os.PathLike, as the file system's bytes
+// (os.fsencode); ValueError for one holding a NUL byte.
 std::string PathArgument(const py::handle& path);
 
 // Between min_size and max_size finite floats from a Python sequence, e.g.

@@ -8,13 +8,23 @@ namespace linemap::python {
 
 namespace {
 
+// Text of the library's (a message or a file name) as a Python str: file
+// names are the file system's bytes, which need not be UTF-8, so bytes that
+// are not come back as surrogate escapes, as os.fsdecode gives them.
+pybind11::str Text(const std::string& bytes) {
+  PyObject* text =
+      PyUnicode_DecodeUTF8(bytes.data(), static_cast<Py_ssize_t>(bytes.size()), "surrogateescape");
+  if (text == nullptr) throw pybind11::error_already_set();
+  return pybind11::reinterpret_steal<pybind11::str>(text);
+}
+
 // Raises OSError(errno, message, filename), which Python makes the subclass
 // of errno's kind (FileNotFoundError for ENOENT, NotADirectoryError for
 // ENOTDIR, ...) as its own open() does. `filename` None for none.
 [[noreturn]] void RaiseOsError(int error_number, const std::string& message,
                                const pybind11::object& filename) {
   const pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(PyExc_OSError)(
-      error_number, message, filename);
+      error_number, Text(message), filename);
   PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
   throw pybind11::error_already_set();
 }
@@ -27,9 +37,9 @@ namespace {
 // errno is the status's own.
 pybind11::object FailedOutput(const std::vector<std::string>& outputs) {
   for (const std::string& output : outputs) {
-    if (!CheckSaveTarget(output).ok()) return pybind11::str(output);
+    if (!CheckSaveTarget(output).ok()) return Text(output);
   }
-  if (outputs.size() == 1) return pybind11::str(outputs[0]);
+  if (outputs.size() == 1) return Text(outputs[0]);
   return pybind11::none();
 }
 
@@ -77,21 +87,20 @@ void RaiseStatus(const Status& status) {
   } else if (status.code() == StatusCode::kNotFound ||
              status.code() == StatusCode::kPermissionDenied) {
     const int error_number = status.code() == StatusCode::kNotFound ? ENOENT : EACCES;
-    PyObject* args = Py_BuildValue("(is)", error_number, status.message().c_str());
-    PyErr_SetObject(ExceptionTypeFor(status.code()), args);
-    Py_XDECREF(args);
+    const pybind11::tuple args = pybind11::make_tuple(error_number, Text(status.message()));
+    PyErr_SetObject(ExceptionTypeFor(status.code()), args.ptr());
   } else if (status.code() == StatusCode::kResourceExhausted) {
     // A refusal over a limit names it as `limit`, the keyword that lifts it
     // (DecodeLimits(max_segments=...), save(max_tolerance_cells=...)); None
     // when no keyword does (a save whose layers decoders would refuse).
     pybind11::object error = pybind11::reinterpret_borrow<pybind11::object>(
-        ExceptionTypeFor(status.code()))(status.message());
+        ExceptionTypeFor(status.code()))(Text(status.message()));
     error.attr("limit") = status.limit() == Limit::kNone
                               ? pybind11::none()
                               : pybind11::object(pybind11::str(LimitFieldName(status.limit())));
     PyErr_SetObject(ExceptionTypeFor(status.code()), error.ptr());
   } else {
-    PyErr_SetString(ExceptionTypeFor(status.code()), status.message().c_str());
+    PyErr_SetObject(ExceptionTypeFor(status.code()), Text(status.message()).ptr());
   }
   throw pybind11::error_already_set();
 }

@@ -940,3 +940,29 @@ def test_info_errors_name_the_file(tmp_path):
     bad.write_bytes(b"not an lmap file")
     with pytest.raises(ValueError, match="bad.lmap"):
         linemap.info(bad)
+
+
+def test_paths_are_the_file_systems_bytes(tmp_path):
+    # A name that is not UTF-8 (os.fsdecode gives it surrogate escapes) is
+    # saved, read and reported under its own bytes, as open() would.
+    m = linemap.load(BUNDLED["depot"])
+    name = os.fsdecode(os.fsencode(str(tmp_path)) + b"/lat\xff.lmap")
+    linemap.save(name, m)
+    assert os.listdir(tmp_path) == ["lat\udcff.lmap"]
+    assert linemap.info(name)["width"] == m.width
+    assert linemap.load(os.fsencode(name)).width == m.width
+    missing = os.fsdecode(os.fsencode(str(tmp_path)) + b"/no\xff/x.lmap")
+    with pytest.raises(FileNotFoundError) as caught:
+        linemap.load(missing)
+    assert missing in str(caught.value)
+
+
+def test_a_path_with_a_nul_byte_is_refused_as_open_refuses_it(tmp_path):
+    # The C library would end the name at the NUL and write another file.
+    m = linemap.load(BUNDLED["depot"])
+    with pytest.raises(ValueError):
+        open(tmp_path / "x\0.lmap", "wb")
+    for call in (lambda p: linemap.save(p, m), linemap.load, linemap.info):
+        with pytest.raises(ValueError, match="null byte"):
+            call(str(tmp_path / "new") + "\0x.lmap")
+    assert os.listdir(tmp_path) == []

@@ -262,9 +262,10 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
   }
   std::printf("input:   %d x %d = %llu cells\n", report.width, report.height,
               static_cast<unsigned long long>(cells));
-  char within[64];
-  std::snprintf(within, sizeof(within), "within a tolerance of %d cell%s", options.tolerance_cells,
-                options.tolerance_cells == 1 ? "" : "s");
+  char within[96];
+  std::snprintf(within, sizeof(within), "within a tolerance of %d cell%s, %s",
+                options.tolerance_cells, options.tolerance_cells == 1 ? "" : "s",
+                options.vector_layers ? "with walls, rooms and furniture" : "cells only");
   std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
               static_cast<unsigned long long>(report.bytes),
               !report.exact           ? within

@@ -114,29 +114,42 @@ int RunEval(const std::vector<std::string>& args) {
                     std::to_string(decoded->width()) + " x " + std::to_string(decoded->height()) +
                     ": eval compares maps of the same size"));
   }
+  // An ORIGINAL saved within a tolerance is not the map the robot made:
+  // most likely the two files were given the other way round.
+  if (IsLmapPath(original_path)) {
+    StatusOr<std::optional<int>> t = LoadLmapToleranceCells(original_path, decoded_options.lmap);
+    if (t.ok() && *t) {
+      std::fprintf(stderr,
+                   "linemap eval: warning: ORIGINAL '%s' was saved within a tolerance of %d "
+                   "cell%s: it is not the original map (are the two files the other way "
+                   "round?)\n",
+                   original_path.c_str(), **t, **t == 1 ? "" : "s");
+    }
+  }
   std::optional<ToleranceReport> tol;
   bool tolerance_from_file = false;
-  std::optional<int> named;  // the T an .lmap file names, when not given
+  std::optional<int> named;  // the T the decoded .lmap file names
+  if (IsLmapPath(decoded_path)) {
+    StatusOr<std::optional<int>> t = LoadLmapToleranceCells(decoded_path, decoded_options.lmap);
+    if (!t.ok()) return ReportError("eval", t.status());
+    named = *t;
+  }
   if (parsed->Get("--tolerance")) {
     StatusOr<int> t = parsed->GetInt("--tolerance", 0);
     if (!t.ok() || *t < 0 || *t > kMaxToleranceCells) {
       return ReportError(
           "eval", InvalidArgumentError("--tolerance must be a whole number of cells from 0 to " +
-                                       std::to_string(kMaxToleranceCells)));
+                                       std::to_string(kMaxToleranceCells) + ", not '" +
+                                       *parsed->Get("--tolerance") + "'"));
     }
     tol = CheckTolerance(*original, *decoded, *t);
-  } else if (IsLmapPath(decoded_path)) {
+  } else if (named && *named <= kMaxToleranceCells &&
+             original->size() <= EncodeOptions{}.max_tolerance_cells) {
     // A file saved within a tolerance promises its guarantees at the T it
     // names: check those, where the checks take that T and fit the default
     // memory bound of a save within a tolerance.
-    StatusOr<std::optional<int>> t = LoadLmapToleranceCells(decoded_path, decoded_options.lmap);
-    if (!t.ok()) return ReportError("eval", t.status());
-    named = *t;
-    if (named && *named <= kMaxToleranceCells &&
-        original->size() <= EncodeOptions{}.max_tolerance_cells) {
-      tol = CheckTolerance(*original, *decoded, *named);
-      tolerance_from_file = true;
-    }
+    tol = CheckTolerance(*original, *decoded, *named);
+    tolerance_from_file = true;
   }
   const GridComparison m = CompareGrids(*original, *decoded);
   // The layers' fidelity when the second file is an .lmap.
@@ -210,7 +223,12 @@ int RunEval(const std::vector<std::string>& args) {
     std::printf("  or in furniture:    %.4f\n", share(fidelity->covered, fidelity->edge_cells));
   }
   if (tol) {
-    if (tolerance_from_file) std::printf("tolerance named by the file's metadata\n");
+    if (tolerance_from_file) {
+      std::printf("tolerance named by the file's metadata\n");
+    } else if (named && *named != tol->tolerance_cells) {
+      std::printf("tolerance:            the file names %s; checked at %s (--tolerance)\n",
+                  CellsText(*named).c_str(), CellsText(tol->tolerance_cells).c_str());
+    }
     PrintToleranceReport(*tol);
   } else if (named) {
     std::printf(

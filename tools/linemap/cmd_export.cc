@@ -2,6 +2,7 @@
 // of an .lmap file (wall, room_border, furniture) in map-frame metres.
 // CSV and GeoJSON read only the layers; SVG also decodes the map to draw
 // the layers over it.
+#include <cstdio>
 #include <string>
 
 #include "format/file_io.h"
@@ -100,6 +101,11 @@ int RunExport(const std::vector<std::string>& args) {
   }
   Status written = WriteFileAtomic(*out, text);
   if (!written.ok()) return ReportError("export", written);
+  // An empty export is what a cells-only file holds, not a failure; say so.
+  if (vectors->walls.empty() && vectors->rooms.empty() && vectors->furniture.empty()) {
+    std::fprintf(stderr, "linemap export: '%s' has no walls, rooms or furniture%s\n", in.c_str(),
+                 *window ? " in the window" : " (saved with --raster-only?)");
+  }
   return kExitOk;
 }
 

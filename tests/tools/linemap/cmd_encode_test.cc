@@ -214,8 +214,15 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
     EXPECT_NE(r.out.find("\"tolerance_cells\":" + named + ","), std::string::npos) << r.out;
   }
   const CliResult text = RunCli({"encode", depot, "-o", dir + "/t2.lmap", "--tolerance", "2"});
-  EXPECT_NE(text.out.find(" bytes (within a tolerance of 2 cells)\n"), std::string::npos)
+  EXPECT_NE(
+      text.out.find(" bytes (within a tolerance of 2 cells, with walls, rooms and furniture)\n"),
+      std::string::npos)
       << text.out;
+  const CliResult raster =
+      RunCli({"encode", depot, "-o", dir + "/r1.lmap", "--tolerance", "1", "--raster-only"});
+  EXPECT_NE(raster.out.find(" bytes (within a tolerance of 1 cell, cells only)\n"),
+            std::string::npos)
+      << raster.out;
 }
 
 // --compact writes an exact version 2.3 file no larger than the default

@@ -133,6 +133,21 @@ TEST(CmdEvalTest, ToleranceFileIsCheckedAtTheTItNames) {
   const std::string report = given.out.substr(given.out.find("tolerance:"));
   EXPECT_NE(report.find("tolerance:            2 cells"), std::string::npos) << given.out;
   EXPECT_NE(named.out.find(report), std::string::npos) << named.out << "\n---\n" << report;
+  // Checked at another T: the file's own is said too.
+  const CliResult other = RunCli({"eval", depot, dir + "/t2.lmap", "--tolerance", "1", "--json"});
+  EXPECT_NE(other.out.find("\"tolerance_named_cells\":2"), std::string::npos) << other.out;
+  EXPECT_NE(RunCli({"eval", depot, dir + "/t2.lmap", "--tolerance", "1"})
+                .out.find("the file names 2 cells; checked at 1 cell (--tolerance)"),
+            std::string::npos);
+  // The files the other way round: the "original" was saved within 2 cells.
+  const CliResult swapped = RunCli({"eval", dir + "/t2.lmap", depot});
+  ASSERT_EQ(swapped.exit_code, 0) << swapped.err;
+  EXPECT_NE(swapped.err.find("ORIGINAL '" + dir +
+                             "/t2.lmap' was saved within a tolerance of 2 "
+                             "cells: it is not the original map"),
+            std::string::npos)
+      << swapped.err;
+  EXPECT_EQ(RunCli({"eval", depot, dir + "/t2.lmap"}).err, "");
   const CliResult json = RunCli({"eval", depot, dir + "/t2.lmap", "--json"});
   EXPECT_NE(json.out.find("\"tolerance_holds\":true"), std::string::npos) << json.out;
   EXPECT_NE(json.out.find("\"tolerance_from_file\":true"), std::string::npos) << json.out;

@@ -323,8 +323,15 @@ TEST(CmdExportTest, RasterOnlyAndVersion1Files) {
   const std::string dir = testing::MakeTempDir("export_kinds");
   const std::string arena = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
   ASSERT_EQ(RunCli({"encode", arena, "--raster-only", "-o", dir + "/r.lmap"}).exit_code, 0);
-  ASSERT_EQ(RunCli({"export", dir + "/r.lmap", "-o", dir + "/r.csv"}).exit_code, 0);
+  const CliResult empty = RunCli({"export", dir + "/r.lmap", "-o", dir + "/r.csv"});
+  ASSERT_EQ(empty.exit_code, 0);
   EXPECT_EQ(testing::ReadFile(dir + "/r.csv"), "layer,x1,y1,x2,y2\n");
+  // The empty file is explained, and only then.
+  EXPECT_NE(empty.err.find("has no walls, rooms or furniture (saved with --raster-only?)"),
+            std::string::npos)
+      << empty.err;
+  ASSERT_EQ(RunCli({"encode", arena, "-o", dir + "/d.lmap"}).exit_code, 0);
+  EXPECT_EQ(RunCli({"export", dir + "/d.lmap", "-o", dir + "/d.csv"}).err, "");
   ASSERT_EQ(RunCli({"export", dir + "/r.lmap", "-o", dir + "/r.svg"}).exit_code, 0);
   EXPECT_NE(testing::ReadFile(dir + "/r.svg").find("data:image/png;base64,"), std::string::npos);
 
