@@ -331,14 +331,7 @@ std::optional<int> NamedTolerance(const py::object& decoded, const DecodeLimits&
 // eval()'s tolerance: None, or a whole number of cells 0..kMaxToleranceCells.
 std::optional<int> ToleranceArgument(const py::object& tolerance) {
   if (tolerance.is_none()) return std::nullopt;
-  const std::string range = "0.." + std::to_string(kMaxToleranceCells);
-  if (!py::isinstance<py::int_>(tolerance) || py::isinstance<py::bool_>(tolerance)) {
-    throw py::type_error("tolerance must be a whole number of cells, " + range + ", or None");
-  }
-  if (tolerance < py::int_(0) || tolerance > py::int_(kMaxToleranceCells)) {
-    throw py::value_error("tolerance must be " + range + " cells");
-  }
-  return tolerance.cast<int>();
+  return ToleranceCellsArgument(tolerance);
 }
 
 py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
@@ -360,11 +353,10 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   // it names, as `linemap eval` does: T up to 4, maps up to the default
   // memory bound of a save within a tolerance.
   const std::optional<int> named = NamedTolerance(decoded_arg, limits);
-  const std::optional<int> file_tolerance =
-      !tolerance && named && *named <= kMaxToleranceCells &&
-              original.size() <= EncodeOptions{}.max_tolerance_cells
-          ? named
-          : std::nullopt;
+  const bool from_file = !tolerance && named && *named <= kMaxToleranceCells &&
+                         original.size() <= EncodeOptions{}.max_tolerance_cells;
+  // The T the guarantees are checked at; -1 for none.
+  const int check_at = tolerance ? *tolerance : from_file ? *named : -1;
   GridComparison m;
   StatusOr<LayerFidelity> fidelity = InternalError("not measured");
   std::optional<ToleranceReport> guarantees;
@@ -372,8 +364,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
     py::gil_scoped_release release;
     m = CompareGrids(original, decoded);
     if (layers) fidelity = MeasureLayerFidelity(original, *layers);
-    if (tolerance) guarantees = CheckTolerance(original, decoded, *tolerance);
-    if (file_tolerance) guarantees = CheckTolerance(original, decoded, *file_tolerance);
+    if (check_at >= 0) guarantees = CheckTolerance(original, decoded, check_at);
   }
   py::dict out;
   out["same_geometry"] = m.same_geometry;
@@ -410,7 +401,7 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
   }
   if (guarantees) {
     VisitToleranceFigures(*guarantees, [&out](const char* key, auto value) { out[key] = value; });
-    out["tolerance_from_file"] = file_tolerance.has_value();
+    out["tolerance_from_file"] = from_file;
   }
   if (named) out["tolerance_named_cells"] = *named;
   return out;

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "linemap/tolerance.h"
+
 namespace linemap::python {
 
 py::array_t<double> WorldPoints(const Grid& frame, const std::vector<CellIndex>& points) {
@@ -29,6 +31,19 @@ std::string PathArgument(const py::handle& path) {
   // The C library would end the name at a NUL and open another file.
   if (bytes.find('\0') != std::string::npos) throw py::value_error("embedded null byte");
   return bytes;
+}
+
+int ToleranceCellsArgument(const py::handle& tolerance) {
+  const std::string range = "0.." + std::to_string(kMaxToleranceCells);
+  const std::string given = py::repr(tolerance).cast<std::string>();
+  if (!py::isinstance<py::int_>(tolerance) || py::isinstance<py::bool_>(tolerance)) {
+    throw py::type_error("tolerance must be a whole number of cells, " + range + ", not " + given);
+  }
+  const auto value = py::reinterpret_borrow<py::int_>(tolerance);
+  if (value < py::int_(0) || value > py::int_(kMaxToleranceCells)) {
+    throw py::value_error("tolerance must be " + range + " cells, not " + given);
+  }
+  return value.cast<int>();
 }
 
 std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, std::size_t min_size,

@@ -39,6 +39,11 @@ py::tuple WorldPoint(const Grid& frame, const CellIndex& point);
 // (os.fsencode); ValueError for one holding a NUL byte.
 std::string PathArgument(const py::handle& path);
 
+// A tolerance in whole cells, 0..kMaxToleranceCells (linemap/tolerance.h):
+// TypeError for anything but an int (a bool included), ValueError outside
+// the range, both quoting the value given.
+int ToleranceCellsArgument(const py::handle& tolerance);
+
 // Between min_size and max_size finite floats from a Python sequence, e.g.
 // an origin (x, y[, yaw]); raises ValueError naming `what` otherwise.
 std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, std::size_t min_size,

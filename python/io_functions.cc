@@ -102,10 +102,6 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg,
   return MapFromGrid(ValueOrRaise(std::move(grid)));
 }
 
-void CheckTolerance(int tolerance) {
-  if (tolerance < 0) throw py::value_error("tolerance must be at least 0 cells");
-}
-
 // max_tolerance_cells: a whole number of cells, 0 for no limit (as
 // EncodeOptions::max_tolerance_cells).
 std::uint64_t MaxToleranceCellsArgument(const py::object& value) {
@@ -149,9 +145,9 @@ void CheckNameBeforeExtension(const std::string& path) {
   }
 }
 
-void Save(const py::object& path_arg, const Map& map, int tolerance, bool vectors,
+void Save(const py::object& path_arg, const Map& map, const py::object& tolerance_arg, bool vectors,
           bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
-  CheckTolerance(tolerance);
+  const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string path = PathArgument(path_arg);
   const bool yaml = IsYamlPath(path);
@@ -185,9 +181,10 @@ void Save(const py::object& path_arg, const Map& map, int tolerance, bool vector
   }
 }
 
-void Convert(const py::object& source_arg, const py::object& path_arg, int tolerance, bool vectors,
-             bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
-  CheckTolerance(tolerance);
+void Convert(const py::object& source_arg, const py::object& path_arg,
+             const py::object& tolerance_arg, bool vectors, bool straight_walls, bool compact,
+             const py::object& max_tolerance_cells_arg) {
+  const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string source = PathArgument(source_arg);
   const std::string path = PathArgument(path_arg);
@@ -214,9 +211,9 @@ void Convert(const py::object& source_arg, const py::object& path_arg, int toler
   if (!saved.ok()) RaiseWriteStatus(saved.status(), {path});
 }
 
-py::bytes Encode(const Map& map, int tolerance, bool vectors, bool straight_walls, bool compact,
-                 const py::object& max_tolerance_cells_arg) {
-  CheckTolerance(tolerance);
+py::bytes Encode(const Map& map, const py::object& tolerance_arg, bool vectors, bool straight_walls,
+                 bool compact, const py::object& max_tolerance_cells_arg) {
+  const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");

@@ -966,3 +966,20 @@ def test_a_path_with_a_nul_byte_is_refused_as_open_refuses_it(tmp_path):
         with pytest.raises(ValueError, match="null byte"):
             call(str(tmp_path / "new") + "\0x.lmap")
     assert os.listdir(tmp_path) == []
+
+
+@pytest.mark.parametrize("bad, error", [(True, TypeError), (2.0, TypeError), ("2", TypeError),
+                                        (None, TypeError), (-1, ValueError), (5, ValueError)])
+def test_save_tolerance_is_checked_as_eval_checks_it(bad, error, tmp_path):
+    # One rule and one message for save, convert, encode and eval: a bool
+    # is not a number of cells (True saved a T = 1 file before).
+    m = linemap.load(BUNDLED["lse_arena"])
+    calls = [lambda: linemap.save(tmp_path / "x.lmap", m, tolerance=bad),
+             lambda: linemap.convert(BUNDLED["lse_arena"], tmp_path / "x.lmap", tolerance=bad),
+             lambda: linemap.encode(m, tolerance=bad)]
+    if bad is not None:
+        calls.append(lambda: linemap.eval(m, m, tolerance=bad))
+    for call in calls:
+        with pytest.raises(error, match=r"tolerance must be .*0\.\.4.*not " + repr(bad)):
+            call()
+    assert not (tmp_path / "x.lmap").exists()
