@@ -1,7 +1,8 @@
-// linemap eval ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]: the
-// quality measures of a decoded map against the original, and the
+// linemap eval ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json] [--check]:
+// the quality measures of a decoded map against the original, and the
 // guarantees of a save within T cells: the T of --tolerance, or the one an
-// .lmap file names.
+// .lmap file names; with --check, an exit status that says whether the
+// second map keeps its promise.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -18,7 +19,7 @@ namespace linemap::cli {
 
 const CommandSpec kEvalSpec = {
     "eval",
-    "ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json]",
+    "ORIGINAL DECODED_OR_LMAP [--tolerance T] [--json] [--check]",
     "compare a decoded map with the original, cell by cell",
     "DECODED_OR_LMAP is a map (YAML or image) or an .lmap file, which is decoded.\n"
     "Prints: cells equal, obstacle recall and precision within 1 cell, free-space\n"
@@ -45,13 +46,22 @@ const CommandSpec kEvalSpec = {
     "plans (4-connected, over free cells, from 16 sampled starts to every cell\n"
     "free in both) that exist on one map only or differ in length by more than\n"
     "3 %, and plans of up to 16 steps from every cell beside a change that are\n"
-    "not on the other map in as many steps; and whether all hold\n"
-    "(exit status 0 either way). Without --tolerance, an .lmap file saved\n"
-    "within a tolerance is checked at the T it names (its metadata), on maps\n"
-    "of up to 2^26 cells (the checks need some 25 bytes a cell; --tolerance T\n"
-    "checks any map) and for T up to 4; otherwise a line says why not.",
+    "not on the other map in as many steps; and whether all hold.\n"
+    "Without --tolerance, an .lmap file saved within a tolerance is checked\n"
+    "at the T it names (its metadata), on maps of up to 2^26 cells (the\n"
+    "checks need some 25 bytes a cell; --tolerance T checks any map) and for\n"
+    "T up to 4; otherwise a line says why not.\n"
+    "If ORIGINAL is an .lmap file saved within a tolerance, a warning on\n"
+    "stderr says the two files may be the other way round.\n"
+    "Exit status 0, whatever the figures; with --check, 0 only when the\n"
+    "second map keeps its promise (the same size, resolution and origin, and\n"
+    "then the guarantees hold at the T checked, or, with no T checked, every\n"
+    "cell is equal: an exact save) and 1 when not, with a last line (JSON:\n"
+    "check_passed, check) saying why. Bad input exits 2 either way.",
     WithMapLoadOptions(
         {{"--json", "", "print one JSON object"},
+         {"--check", "",
+          "exit status 1 when the second map breaks its promise (guarantees or exactness)"},
          {"--tolerance", "T", "also check the guarantees of a save within T cells (0..4)"}}),
     2,
     2,
@@ -82,6 +92,32 @@ void PrintToleranceReport(const ToleranceReport& t) {
   std::printf("  local plans:        %zu of %zu disagree (up to %d steps, beside a change)\n",
               t.local_plan_disagreements, t.local_plans, kLocalPlanSteps);
   std::printf("  guarantees:         %s\n", t.Holds() ? "hold" : "BROKEN");
+}
+
+// What --check decides: whether the second map keeps its promise, and why.
+// A map checked within a tolerance promises its guarantees; any other, an
+// exact copy (a file named within a T that eval did not check included:
+// what it guarantees is then unknown). Both keep the map's frame: a map
+// moved or rescaled puts every wall elsewhere in the world.
+struct CheckVerdict {
+  bool passed = false;
+  std::string why;
+};
+
+CheckVerdict VerdictOf(const GridComparison& m, const std::optional<ToleranceReport>& tol) {
+  if (!m.same_geometry) {
+    return {false, "the two maps' resolution or origin differ"};
+  }
+  if (tol) {
+    return {tol->Holds(), std::string("the guarantees within ") + CellsText(tol->tolerance_cells) +
+                              (tol->Holds() ? " hold" : " are broken")};
+  }
+  const std::size_t differ = m.cells - m.cells_equal;
+  if (differ > 0) {
+    return {false, std::to_string(differ) + (differ == 1 ? " cell differs" : " cells differ") +
+                       " and no tolerance was checked (an exact copy was expected)"};
+  }
+  return {true, "every cell is equal"};
 }
 
 }  // namespace
@@ -161,6 +197,8 @@ int RunEval(const std::vector<std::string>& args) {
     if (!measured.ok()) return ReportError("eval", measured.status());
     fidelity = *measured;
   }
+  const bool check = parsed->Has("--check");
+  const CheckVerdict verdict = VerdictOf(m, tol);
   const double cm_per_cell = original->meta.resolution * 100;
   auto share = [](std::size_t n, std::size_t of) {
     return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 1.0;
@@ -196,8 +234,9 @@ int RunEval(const std::vector<std::string>& args) {
       json.Add("tolerance_from_file", tolerance_from_file);
     }
     if (named) json.Add("tolerance_named_cells", *named);
+    if (check) json.Add("check_passed", verdict.passed).Add("check", verdict.why);
     std::printf("%s\n", json.str().c_str());
-    return kExitOk;
+    return check && !verdict.passed ? kExitFailure : kExitOk;
   }
   std::printf("same geometry:        %s\n", m.same_geometry ? "yes" : "NO");
   std::printf("cells equal:          %zu of %zu (%.4f)\n", m.cells_equal, m.cells,
@@ -236,6 +275,11 @@ int RunEval(const std::vector<std::string>& args) {
         "checks T = 0..4 on any map)\n",
         CellsText(*named).c_str(),
         *named > kMaxToleranceCells ? "eval checks T = 0..4" : "a map over 2^26 cells");
+  }
+  if (check) {
+    std::printf("check:                %s (%s)\n", verdict.passed ? "PASS" : "FAIL",
+                verdict.why.c_str());
+    return verdict.passed ? kExitOk : kExitFailure;
   }
   return kExitOk;
 }

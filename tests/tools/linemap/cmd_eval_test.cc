@@ -180,6 +180,61 @@ TEST(CmdEvalTest, ToleranceFileIsCheckedAtTheTItNames) {
   EXPECT_NE(beyond_json.out.find("\"tolerance_named_cells\":7"), std::string::npos)
       << beyond_json.out;
   EXPECT_EQ(beyond_json.out.find("tolerance_holds"), std::string::npos) << beyond_json.out;
+  // --check: the file checked at its T keeps its promise; the one whose T
+  // is not checked is held to exactness, which it breaks.
+  const CliResult checked = RunCli({"eval", depot, dir + "/t2.lmap", "--check"});
+  EXPECT_EQ(checked.exit_code, 0) << checked.out;
+  EXPECT_NE(checked.out.find("check:                PASS (the guarantees within 2 cells hold)\n"),
+            std::string::npos)
+      << checked.out;
+  const CliResult unchecked = RunCli({"eval", depot, dir + "/t7.lmap", "--check"});
+  EXPECT_EQ(unchecked.exit_code, 1) << unchecked.out;
+  EXPECT_NE(unchecked.out.find("check:                FAIL ("), std::string::npos) << unchecked.out;
+  EXPECT_NE(unchecked.out.find("no tolerance was checked (an exact copy was expected))\n"),
+            std::string::npos)
+      << unchecked.out;
+  EXPECT_EQ(RunCli({"eval", depot, dir + "/exact.lmap", "--check"}).exit_code, 0);
+}
+
+// --check turns the verdict into the exit status (1: the promise is
+// broken), on the room whose obstacle moves by 3 cells: 2 cells differ,
+// and within 2 cells the obstacle's surface is lost (see above). Without
+// --check the status is 0 whatever the figures.
+TEST(CmdEvalTest, CheckExitsOneWhenTheSecondMapBreaksItsPromise) {
+  const std::string dir = MakeTempDir("eval_check");
+  const std::string original = SaveRoom(dir, "a", 10);
+  const std::string moved = SaveRoom(dir, "b", 13);
+  EXPECT_EQ(RunCli({"eval", original, moved}).exit_code, 0);
+  const CliResult exact = RunCli({"eval", original, moved, "--check"});
+  EXPECT_EQ(exact.exit_code, 1) << exact.err;
+  EXPECT_NE(exact.out.find("check:                FAIL (2 cells differ and no tolerance was "
+                           "checked (an exact copy was expected))\n"),
+            std::string::npos)
+      << exact.out;
+  const CliResult within = RunCli({"eval", original, moved, "--tolerance", "2", "--check"});
+  EXPECT_EQ(within.exit_code, 1) << within.out;
+  EXPECT_NE(within.out.find("FAIL (the guarantees within 2 cells are broken)"), std::string::npos)
+      << within.out;
+  const CliResult json = RunCli({"eval", original, moved, "--check", "--json"});
+  EXPECT_EQ(json.exit_code, 1);
+  ExpectJsonHas(json.out, {"\"check_passed\":false", "\"check\":\"2 cells differ"});
+  const CliResult same = RunCli({"eval", original, original, "--check"});
+  EXPECT_EQ(same.exit_code, 0) << same.out;
+  EXPECT_NE(same.out.find("check:                PASS (every cell is equal)\n"), std::string::npos)
+      << same.out;
+  const CliResult same_json =
+      RunCli({"eval", original, original, "--tolerance", "1", "--check", "--json"});
+  EXPECT_EQ(same_json.exit_code, 0) << same_json.out;
+  ExpectJsonHas(same_json.out, {"\"check_passed\":true"});
+  // The same cells at another resolution: every wall elsewhere in metres.
+  StatusOr<Grid> room = LoadRosMap(original);
+  ASSERT_TRUE(room.ok());
+  room->meta.resolution *= 2;
+  ASSERT_TRUE(SaveRosMap(dir + "/coarse.yaml", *room).ok());
+  const CliResult coarse = RunCli({"eval", original, dir + "/coarse.yaml", "--check"});
+  EXPECT_EQ(coarse.exit_code, 1) << coarse.out;
+  EXPECT_NE(coarse.out.find("FAIL (the two maps' resolution or origin differ)"), std::string::npos)
+      << coarse.out;
 }
 
 TEST(CmdEvalTest, ToleranceOutsideTheRangeIsBadUsage) {
