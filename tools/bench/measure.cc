@@ -54,14 +54,15 @@ int LoopsFor(double once_ms) {
   return static_cast<int>(std::clamp(std::ceil(kMinSampleMs / once_ms), 1.0, double{kMaxLoops}));
 }
 
-// One sample: the mean CPU time of `loops` runs back to back.
+}  // namespace
+
 double TimeSample(const std::function<void()>& op, int loops) {
   const double start = CpuMs();
   for (int i = 0; i < loops; ++i) op();
   return (CpuMs() - start) / loops;
 }
 
-}  // namespace
+int SampleLoops(const std::function<void()>& op) { return LoopsFor(TimeOnce(op)); }
 
 std::vector<double> TimeRuns(const std::function<void()>& op, int repeats) {
   std::vector<double> ms;
@@ -70,7 +71,7 @@ std::vector<double> TimeRuns(const std::function<void()>& op, int repeats) {
 }
 
 std::vector<double> TimeSamples(const std::function<void()>& op, int repeats) {
-  const int loops = LoopsFor(TimeOnce(op));  // also settles the heap for `op`; not counted
+  const int loops = SampleLoops(op);  // also settles the heap for `op`; not counted
   std::vector<double> ms;
   for (int i = 0; i < std::max(1, repeats); ++i) ms.push_back(TimeSample(op, loops));
   return ms;

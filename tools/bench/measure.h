@@ -27,6 +27,12 @@ inline constexpr int kMaxLoops = 100;
 // sets the loop count.
 std::vector<double> TimeSamples(const std::function<void()>& op, int repeats);
 
+// The pieces of TimeSamples, for callers that take the samples of several
+// operations in turns (the scaling table's rounds): the loop count of `op`
+// from one untimed run, and one sample of `loops` runs (ms per run).
+int SampleLoops(const std::function<void()>& op);
+double TimeSample(const std::function<void()>& op, int loops);
+
 // The same for two operations timed in blocks: one untimed run of `a`, then
 // half of a's timed samples (rounded up), then the same for `b`; then, with
 // `repeats` of 2 or more, b's block before a's for the other half. Each

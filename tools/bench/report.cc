@@ -275,7 +275,7 @@ std::optional<double> Spread(const std::vector<ScalingRow>& rows, const ScalingF
 // decode), blank where `columns` holds no figure, and none for the window.
 std::vector<std::string> SpreadRow(const std::string& label, const std::vector<ScalingRow>& rows,
                                    const std::vector<ScalingFigure>& columns) {
-  std::vector<std::string> cells = {label, ""};
+  std::vector<std::string> cells = {label, "", ""};
   for (const ScalingFigure& figure : columns) {
     cells.push_back(figure ? FormatFixed(Spread(rows, figure), 0) : "");
   }
@@ -286,14 +286,15 @@ std::vector<std::string> SpreadRow(const std::string& label, const std::vector<S
 }  // namespace
 
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
-  Table table({"Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
+  Table table({"map", "Mcells", "runs", "PNG enc ms/Mcell", "PNG dec ms/Mcell", "RM-Line ms/Mcell",
                "linemap lines ms/Mcell", "lmap2 enc ms/Mcell", "lmap2 dec ms/Mcell",
                "1 % window ms", "window x faster", "room ms"});
   for (const ScalingRow& row : rows) {
     table.AddRow(
-        {FormatFixed(row.mcells, 0), std::to_string(row.repeats),
-         FormatFixed(row.png_encode_ms_per_mcell, 1), FormatFixed(row.png_decode_ms_per_mcell, 1),
-         FormatFixed(row.rmline_ms_per_mcell, 1), FormatFixed(row.linemap_lines_ms_per_mcell, 1),
+        {std::to_string(row.width) + " x " + std::to_string(row.height), FormatFixed(row.mcells, 1),
+         std::to_string(row.repeats), FormatFixed(row.png_encode_ms_per_mcell, 1),
+         FormatFixed(row.png_decode_ms_per_mcell, 1), FormatFixed(row.rmline_ms_per_mcell, 1),
+         FormatFixed(row.linemap_lines_ms_per_mcell, 1),
          FormatFixed(row.lmap_encode_ms_per_mcell, 1), FormatFixed(row.lmap_decode_ms_per_mcell, 1),
          FormatFixed(row.lmap_window_ms, 2), FormatFixed(row.lmap_window_speedup, 1),
          FormatFixed(row.lmap_room_ms, 2)});
@@ -314,20 +315,22 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
        [](const ScalingRow& r) { return r.lmap_decode_fastest_ms_per_mcell; }}));
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
-          "4096^2 and 8192^2 cells, each drawn anew rather than tiled (zlib would find the "
-          "repeated tiles and speed up); lmap2 = the default .lmap 2.0 file; CPU time per Mcell "
-          "(median of `runs`: at least 9 up to 16 Mcells, 5 at 64; RM-Line and linemap lines one "
-          "run). spread = largest / smallest - 1 (goal: within 25%), of the medians and of "
-          "each size's fastest run (a shared machine only adds time, so a slow phase that "
-          "moved one size's median shows as a gap between the two). 1 % window: a tenth of each "
-          "side from 30 % of it, decoded with "
-          "DecodeLmapRegion (median ms), and how many times faster than the whole map "
-          "(goal: 20x; the window meets at least one tile, 1024 cells a side up to 4096 and "
-          "512 beyond, and on maps up to 4096 cells a side it reads all the layers, which "
-          "are one section there, so it cannot gain much on those). room: one room as a "
-          "viewer loads it when the user picks a point near the window's centre "
-          "(DecodeLmapRoomAt: the header, the layer sections around the point, the tiles of "
-          "the room's box; median ms).",
+          "4096^2 and 8192^2 cells and of 20,768 x 13,612 (the largest map nav2 users have "
+          "reported, navigation2#635; the 20,768-cell square's corner), each drawn anew rather "
+          "than tiled (zlib would find the repeated tiles and speed up); lmap2 = the default "
+          ".lmap 2.0 file; Mcells = millions of cells; CPU time per Mcell (median of `runs` "
+          "samples: at least 9 up to 16 Mcells, 5 at 67 and 3 at 283; a sample of an operation "
+          "under 10 ms is the mean of as many runs back to back as reach 10 ms, at most 100; "
+          "RM-Line and linemap lines one run). spread = largest / smallest - 1 (goal: within "
+          "25%), of the medians and of each size's fastest sample (a shared machine only adds "
+          "time, so a slow phase that moved one size's median shows as a gap between the two). "
+          "1 % window: a tenth of each side from 30 % of it, decoded with DecodeLmapRegion "
+          "(median ms), and how many times faster than the whole map (goal: 20x; the window "
+          "meets at least one tile, 1024 cells a side up to 4096 and 512 beyond, and on maps up "
+          "to 4096 cells a side it reads all the layers, which are one section there, so it "
+          "cannot gain much on those). room: one room as a viewer loads it when the user picks "
+          "a point near the window's centre (DecodeLmapRoomAt: the header, the layer sections "
+          "around the point, the tiles of the room's box; median ms).",
           table};
 }
 

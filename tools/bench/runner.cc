@@ -272,21 +272,33 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
 
 namespace {
 
-// Sides (in Kcells) of the scaling maps up to `max_mcells` Mcells.
-std::vector<int> ScalingSides(int max_mcells) {
-  std::vector<int> sides;
+// A map of the scaling table: width x height cells.
+struct ScalingSize {
+  int width = 0;
+  int height = 0;
+  double mcells() const { return static_cast<double>(width) * height / 1e6; }
+};
+
+// The scaling maps up to `max_mcells` (1, 4, 16, 64 or 282): squares of
+// 1024, 2048, 4096 and 8192 cells a side, then the largest map nav2 users
+// have reported (navigation2#635: 20,768 x 13,612 cells, 282 Mcells).
+std::vector<ScalingSize> ScalingSizes(int max_mcells) {
+  std::vector<ScalingSize> sizes;
   for (int side : {1, 2, 4, 8}) {
-    if (side * side <= max_mcells) sides.push_back(side);
+    if (side * side <= max_mcells) sizes.push_back({1024 * side, 1024 * side});
   }
-  return sides;
+  if (max_mcells >= 282) sizes.push_back({20768, 13612});
+  return sizes;
 }
 
-// Timed runs per scaling map: at least 9 up to 16 Mcells and 5 at 64, so
-// that each row is a median of warm runs (the first run of a process pays for
-// fresh memory) and a few slow runs on a shared machine do not move it.
-int ScalingRuns(int side, int repeats) {
-  const std::size_t cells = (static_cast<std::size_t>(side) * side) << 20;  // (1024 side)^2
-  return std::max(side <= 4 ? 9 : 5, RepeatsFor(cells, repeats));
+// Timed samples per scaling map: at least 9 up to 16 Mcells, 5 at 64 and
+// 3 at 282, so that each row is a median of warm runs (the first run of a
+// process pays for fresh memory) and a few slow runs on a shared machine do
+// not move it; a round of the 282-Mcell map takes about half a minute.
+int ScalingRuns(const ScalingSize& size, int repeats) {
+  const std::size_t cells = static_cast<std::size_t>(size.width) * size.height;
+  const int least = cells <= (std::size_t{16} << 20) ? 9 : cells <= (std::size_t{64} << 20) ? 5 : 3;
+  return std::max(least, RepeatsFor(cells, repeats));
 }
 
 // A tenth of each side from 30 % of it: 1 % of the map, away from the
@@ -296,9 +308,11 @@ CellWindow OnePercentWindow(const Grid& grid) {
   return {c0, r0, c0 + std::max(1, grid.width() / 10), r0 + std::max(1, grid.height() / 10)};
 }
 
-// One scaling map and its timings so far.
+// One scaling map and its timings so far. Each timed sample of an
+// operation is the mean of `loops` runs back to back (TimeSample): the
+// 1-Mcell map decodes in under 2 ms, the window in 1.
 struct ScalingMap {
-  int side = 0;
+  ScalingSize size;
   int runs = 0;
   Grid grid;
   std::string png;
@@ -309,6 +323,9 @@ struct ScalingMap {
   std::optional<CellIndex> room_cell;
   std::vector<double> lmap_room_ms;
   bool room_failed = false;
+  struct Loops {
+    int png_encode = 1, png_decode = 1, lmap_encode = 1, lmap_decode = 1, window = 1, room = 1;
+  } loops;
   double rmline_ms = 0;
   double linemap_lines_ms = 0;
 };
@@ -334,35 +351,89 @@ std::optional<CellIndex> CellInARoom(const std::vector<std::uint8_t>& lmap,
 }  // namespace
 
 int ScalingProgressSteps(int max_mcells, int repeats) {
-  const std::vector<int> sides = ScalingSides(max_mcells);
+  const std::vector<ScalingSize> sizes = ScalingSizes(max_mcells);
   int rounds = 0;
-  for (int side : sides) rounds = std::max(rounds, ScalingRuns(side, repeats));
-  return sides.empty() ? 0 : static_cast<int>(sides.size()) + rounds;
+  for (const ScalingSize& size : sizes) rounds = std::max(rounds, ScalingRuns(size, repeats));
+  return sizes.empty() ? 0 : static_cast<int>(sizes.size()) + rounds;
 }
+
+namespace {
+
+// Generates the map, makes its PNG and .lmap, times the line extractors once
+// and sets each operation's loops (SampleLoops: an untimed run each).
+ScalingMap PrepareScalingMap(const ScalingSize& size, int repeats) {
+  ScalingMap map;
+  map.size = size;
+  map.runs = ScalingRuns(size, repeats);
+  map.grid = GenerateOfficeMapOfSize(size.width, size.height);
+  if (StatusOr<std::string> png = EncodeTrinaryPng(map.grid, PngLayout::kGrey8, 9); png.ok()) {
+    map.png = *std::move(png);
+  }
+  if (StatusOr<std::vector<std::uint8_t>> lmap = EncodeLmap(map.grid, EncodeOptions()); lmap.ok()) {
+    map.lmap = *std::move(lmap);
+    map.room_cell = CellInARoom(map.lmap, OnePercentWindow(map.grid));
+  }
+  LineExtractionOptions options;
+  options.method = LineMethod::kRmLine;
+  map.rmline_ms = TimeRuns([&] { (void)ExtractLines(map.grid, options); }, 1)[0];
+  const LineExtractionOptions linemap_defaults;
+  map.linemap_lines_ms = TimeRuns([&] { (void)ExtractLines(map.grid, linemap_defaults); }, 1)[0];
+  // The PNG's and the .lmap file's encodes take tens of ms at the least: a
+  // run each (their loop count would be 1).
+  if (!map.png.empty()) {
+    map.loops.png_decode = SampleLoops([&] { (void)DecodeTrinaryPng(Bytes(map.png)); });
+  }
+  if (!map.lmap.empty()) {
+    map.loops.lmap_decode = SampleLoops([&] { (void)DecodeLmap(map.lmap); });
+    const CellWindow window = OnePercentWindow(map.grid);
+    map.loops.window = SampleLoops([&] { (void)DecodeLmapRegion(map.lmap, window); });
+    if (map.room_cell) {
+      map.loops.room = SampleLoops([&] { (void)DecodeLmapRoomAt(map.lmap, *map.room_cell); });
+    }
+  }
+  return map;
+}
+
+// One round's sample of every operation of `map`.
+void TimeScalingRound(ScalingMap* map) {
+  const ScalingMap::Loops& loops = map->loops;
+  map->png_encode_ms.push_back(TimeSample(
+      [&] { (void)EncodeTrinaryPng(map->grid, PngLayout::kGrey8, 9); }, loops.png_encode));
+  if (!map->png.empty()) {
+    map->png_decode_ms.push_back(
+        TimeSample([&] { (void)DecodeTrinaryPng(Bytes(map->png)); }, loops.png_decode));
+  }
+  if (map->lmap.empty()) return;
+  map->lmap_encode_ms.push_back(
+      TimeSample([&] { (void)EncodeLmap(map->grid, EncodeOptions()); }, loops.lmap_encode));
+  map->lmap_decode_ms.push_back(
+      TimeSample([&] { (void)DecodeLmap(map->lmap); }, loops.lmap_decode));
+  const CellWindow window = OnePercentWindow(map->grid);
+  bool window_ok = true;
+  map->lmap_window_ms.push_back(TimeSample(
+      [&] { window_ok = window_ok && DecodeLmapRegion(map->lmap, window).ok(); }, loops.window));
+  map->window_failed = map->window_failed || !window_ok;
+  if (map->room_cell) {
+    bool room_ok = true;
+    map->lmap_room_ms.push_back(TimeSample(
+        [&] {
+          const StatusOr<std::optional<LmapRoom>> room =
+              DecodeLmapRoomAt(map->lmap, *map->room_cell);
+          room_ok = room_ok && room.ok() && room->has_value();
+        },
+        loops.room));
+    map->room_failed = map->room_failed || !room_ok;
+  }
+}
+
+}  // namespace
 
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
                                    const std::function<void(const std::string&)>& progress) {
   std::vector<ScalingMap> maps;
-  for (int side : ScalingSides(max_mcells)) {
-    progress("preparing " + std::to_string(side * side) + " Mcells");
-    ScalingMap map;
-    map.side = side;
-    map.runs = ScalingRuns(side, repeats);
-    map.grid = GenerateOfficeMap(1024 * side);
-    if (StatusOr<std::string> png = EncodeTrinaryPng(map.grid, PngLayout::kGrey8, 9); png.ok()) {
-      map.png = *std::move(png);
-    }
-    if (StatusOr<std::vector<std::uint8_t>> lmap = EncodeLmap(map.grid, EncodeOptions());
-        lmap.ok()) {
-      map.lmap = *std::move(lmap);
-      map.room_cell = CellInARoom(map.lmap, OnePercentWindow(map.grid));
-    }
-    LineExtractionOptions options;
-    options.method = LineMethod::kRmLine;
-    map.rmline_ms = TimeRuns([&] { (void)ExtractLines(map.grid, options); }, 1)[0];
-    const LineExtractionOptions linemap_defaults;
-    map.linemap_lines_ms = TimeRuns([&] { (void)ExtractLines(map.grid, linemap_defaults); }, 1)[0];
-    maps.push_back(std::move(map));
+  for (const ScalingSize& size : ScalingSizes(max_mcells)) {
+    progress("preparing " + FormatFixed(size.mcells(), 1) + " Mcells");
+    maps.push_back(PrepareScalingMap(size, repeats));
   }
   // The runs are interleaved (round k times every size once), so that a slow
   // phase of a shared machine slows every size alike rather than one row.
@@ -371,38 +442,16 @@ std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,
   for (int round = 0; round < rounds; ++round) {
     progress("round " + std::to_string(round + 1) + "/" + std::to_string(rounds));
     for (ScalingMap& map : maps) {
-      if (round >= map.runs) continue;
-      const auto once = [](const std::function<void()>& op) { return TimeRuns(op, 1)[0]; };
-      map.png_encode_ms.push_back(
-          once([&] { (void)EncodeTrinaryPng(map.grid, PngLayout::kGrey8, 9); }));
-      if (!map.png.empty()) {
-        map.png_decode_ms.push_back(once([&] { (void)DecodeTrinaryPng(Bytes(map.png)); }));
-      }
-      if (!map.lmap.empty()) {
-        map.lmap_encode_ms.push_back(once([&] { (void)EncodeLmap(map.grid, EncodeOptions()); }));
-        map.lmap_decode_ms.push_back(once([&] { (void)DecodeLmap(map.lmap); }));
-        const CellWindow window = OnePercentWindow(map.grid);
-        bool window_ok = true;
-        map.lmap_window_ms.push_back(
-            once([&] { window_ok = DecodeLmapRegion(map.lmap, window).ok(); }));
-        map.window_failed = map.window_failed || !window_ok;
-        if (map.room_cell) {
-          bool room_ok = true;
-          map.lmap_room_ms.push_back(once([&] {
-            const StatusOr<std::optional<LmapRoom>> room =
-                DecodeLmapRoomAt(map.lmap, *map.room_cell);
-            room_ok = room.ok() && room->has_value();
-          }));
-          map.room_failed = map.room_failed || !room_ok;
-        }
-      }
+      if (round < map.runs) TimeScalingRound(&map);
     }
   }
   std::vector<ScalingRow> rows;
   for (const ScalingMap& map : maps) {
-    const double mcells = map.side * map.side;
+    const double mcells = map.size.mcells();
     ScalingRow row;
     row.mcells = mcells;
+    row.width = map.size.width;
+    row.height = map.size.height;
     row.repeats = map.runs;
     const auto fastest = [](const std::vector<double>& v) {
       return *std::min_element(v.begin(), v.end());

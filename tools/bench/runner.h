@@ -28,7 +28,9 @@ MapResult MeasureMap(const std::string& name, const std::string& source_path, co
 
 // One row of the scaling table.
 struct ScalingRow {
-  double mcells = 0;
+  int width = 0;  // cells
+  int height = 0;
+  double mcells = 0;  // millions of cells
   int repeats = 0;
   double png_encode_ms_per_mcell = 0;
   double png_decode_ms_per_mcell = 0;
@@ -56,8 +58,9 @@ struct ScalingRow {
   std::optional<double> lmap_room_ms;
 };
 
-// Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells (1, 4, 16
-// and 64 Mcells, up to `max_mcells`), timed in interleaved rounds; `progress`
+// Generated office maps of 1024^2, 2048^2, 4096^2 and 8192^2 cells and of
+// 20,768 x 13,612 (1, 4, 16, 64 and 282 Mcells, as `max_mcells` names them;
+// those up to it), timed in interleaved rounds; `progress`
 // is called ScalingProgressSteps(max_mcells, repeats) times: once per size
 // while it is prepared, then once per round.
 std::vector<ScalingRow> RunScaling(int max_mcells, int repeats,

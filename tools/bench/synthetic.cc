@@ -1,6 +1,7 @@
 #include "tools/bench/synthetic.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace linemap::bench {
 namespace {
@@ -80,6 +81,18 @@ Grid GenerateOfficeMap(int size, std::uint32_t seed) {
     if (grid.at(c, r) == Cell::kFree) grid.set(c, r, i % 2 ? Cell::kOccupied : Cell::kUnknown);
   }
   return grid;
+}
+
+Grid GenerateOfficeMapOfSize(int width, int height, std::uint32_t seed) {
+  const Grid square = GenerateOfficeMap(std::max(width, height), seed);
+  if (square.width() == width && square.height() == height) return square;
+  Grid map(width, height);
+  map.meta = square.meta;
+  for (int r = 0; r < height; ++r) {
+    std::copy_n(square.cells().begin() + static_cast<std::ptrdiff_t>(square.Index(0, r)), width,
+                map.mutable_cells().begin() + static_cast<std::ptrdiff_t>(map.Index(0, r)));
+  }
+  return map;
 }
 
 }  // namespace linemap::bench

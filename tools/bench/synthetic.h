@@ -15,6 +15,11 @@ namespace linemap::bench {
 // repeats a compressor would find).
 Grid GenerateOfficeMap(int size, std::uint32_t seed = 1);
 
+// A `width` x `height` map: the lower-left corner of
+// GenerateOfficeMap(max(width, height), seed), so that a map of nav2 users'
+// largest reported size (20,768 x 13,612) is an office like the squares.
+Grid GenerateOfficeMapOfSize(int width, int height, std::uint32_t seed = 1);
+
 }  // namespace linemap::bench
 
 #endif  // LINEMAP_TOOLS_BENCH_SYNTHETIC_H_

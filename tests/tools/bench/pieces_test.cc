@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "tools/bench/general_codecs.h"
 #include "tools/bench/measure.h"
@@ -201,6 +202,22 @@ TEST(BenchSyntheticTest, OfficeMapIsDeterministicAndHasAllThreeStates) {
   EXPECT_GT(counts.occupied, 0u);
   EXPECT_GT(counts.unknown, 0u);
   EXPECT_EQ(a.at(0, 0), Cell::kUnknown);  // the margin
+}
+
+// A map of another shape is the square of its larger side, cut at the
+// origin: every cell equal, and the frame kept.
+TEST(BenchSyntheticTest, OfficeMapOfSizeIsTheSquaresCorner) {
+  const Grid square = GenerateOfficeMap(300, 3);
+  for (const auto& [width, height] : {std::pair{300, 120}, std::pair{90, 300}}) {
+    const Grid cut = GenerateOfficeMapOfSize(width, height, 3);
+    ASSERT_EQ(cut.width(), width);
+    ASSERT_EQ(cut.height(), height);
+    EXPECT_EQ(cut.meta.resolution, square.meta.resolution);
+    for (int r = 0; r < height; ++r) {
+      for (int c = 0; c < width; ++c) ASSERT_EQ(cut.at(c, r), square.at(c, r)) << c << "," << r;
+    }
+  }
+  EXPECT_EQ(GenerateOfficeMapOfSize(300, 300, 3), square);
 }
 
 TEST(BenchSvgTest, Base64KnownAnswers) {

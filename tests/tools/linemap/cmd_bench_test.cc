@@ -57,10 +57,13 @@ TEST(CmdBenchTest, ScalingTableHasARowPerSizeAndTheSpread) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::size_t table = r.out.find("== Scaling ==");
   ASSERT_NE(table, std::string::npos) << r.out;
-  // The 1-Mcell row has its 9 interleaved runs, then the two spread rows.
-  const std::size_t row = r.out.find("\n1 ", table);
+  // The 1024 x 1024 row (1.0 Mcells: 1,048,576 cells) has its 9
+  // interleaved samples, then the two spread rows.
+  const std::size_t row = r.out.find("\n1024 x 1024 ", table);
   ASSERT_NE(row, std::string::npos) << r.out.substr(table);
-  const std::size_t runs = r.out.find_first_not_of(' ', row + 2);
+  const std::size_t mcells = r.out.find_first_not_of(' ', row + 13);
+  EXPECT_EQ(r.out.compare(mcells, 4, "1.0 "), 0) << r.out.substr(row, 80);
+  const std::size_t runs = r.out.find_first_not_of(' ', mcells + 4);
   EXPECT_EQ(r.out.compare(runs, 2, "9 "), 0) << r.out.substr(row, 80);
   EXPECT_NE(r.out.find("\nspread % ", table), std::string::npos);
   EXPECT_NE(r.out.find("\nspread % of the fastest runs ", table), std::string::npos);
@@ -114,15 +117,15 @@ TEST(CmdBenchTest, BadUsageExitsTwo) {
   EXPECT_EQ(RunCli({"bench", "--no-such-option"}).exit_code, 2);
 }
 
-// --help lists 0, 1, 4, 16 or 64 Mcells; 3 used to be taken (and stop the
-// table at 1). Refused before the corpus is read.
+// --help lists 0, 1, 4, 16, 64 or 282 Mcells; 3 used to be taken (and stop
+// the table at 1). Refused before the corpus is read.
 TEST(CmdBenchTest, ScalingMaxOutsideTheTableIsRefused) {
   const std::string corpus = OneMapCorpus();
-  for (const char* value : {"3", "2", "5", "63", "65", "128", "-1", "x"}) {
+  for (const char* value : {"3", "2", "5", "63", "65", "128", "270", "283", "-1", "x"}) {
     const CliResult r =
         RunCli({"bench", corpus, "--scaling-max", value, "--no-memory", "--repeats", "1"});
     EXPECT_EQ(r.exit_code, 2) << value;
-    EXPECT_NE(r.err.find("--scaling-max must be 0 (skip), 1, 4, 16 or 64, not '" +
+    EXPECT_NE(r.err.find("--scaling-max must be 0 (skip), 1, 4, 16, 64 or 282, not '" +
                          std::string(value) + "'"),
               std::string::npos)
         << value << ": " << r.err;
