@@ -395,7 +395,9 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
       out["displ_ave_cm"] = py::none();
       out["displ_max_cells"] = py::none();
     }
-    out["edge_share_within_1"] = share(f.within_1_of_wall);
+    // None without walls to be within 1 cell of, as the CLI's null.
+    out["edge_share_within_1"] =
+        f.displ_ave_cells ? py::object(py::float_(share(f.within_1_of_wall))) : py::none();
     out["edge_share_in_furniture"] = share(f.in_furniture);
     out["edge_share_within_1_or_furniture"] = share(f.covered);
   }

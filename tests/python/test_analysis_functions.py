@@ -209,6 +209,19 @@ def test_eval_equals_the_cli(name, tmp_path, cli):
     assert linemap.eval(original, decoded) == cells_only
 
 
+def test_eval_of_a_raster_only_file_has_no_wall_figures(tmp_path, cli):
+    # No walls: no distance and no share within 1 cell of one (None, as the
+    # CLI's null), rather than a share of 0 that reads as every wall lost.
+    lmap = tmp_path / "cells.lmap"
+    linemap_cli.run(cli, "encode", BUNDLED["depot"], "-o", lmap, "--raster-only", "--no-sync")
+    expected = linemap_cli.run_json(cli, "eval", BUNDLED["depot"], lmap, "--json")
+    figures = linemap.eval(BUNDLED["depot"], lmap)
+    assert figures == expected
+    assert figures["edge_share_within_1"] is None
+    assert figures["displ_ave_cells"] is None
+    assert figures["edge_share_within_1_or_furniture"] == 0
+
+
 @pytest.mark.parametrize("t", [1, 3])
 def test_eval_with_a_tolerance_equals_the_cli(t, tmp_path, cli):
     path = BUNDLED["depot"]

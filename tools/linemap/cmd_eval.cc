@@ -104,9 +104,28 @@ struct CheckVerdict {
   std::string why;
 };
 
-CheckVerdict VerdictOf(const GridComparison& m, const std::optional<ToleranceReport>& tol) {
+// What differs between the two maps' frames (same size: eval refuses
+// others), e.g. "resolution 0.05 against 0.1 m/cell"; empty when nothing.
+std::string FrameDifference(const MapMetadata& a, const MapMetadata& b) {
+  std::string out;
+  char text[160];
+  if (a.resolution != b.resolution) {
+    std::snprintf(text, sizeof(text), "resolution %g against %g m/cell", a.resolution,
+                  b.resolution);
+    out += text;
+  }
+  if (!(a.origin == b.origin)) {
+    std::snprintf(text, sizeof(text), "%sorigin %g,%g,%g against %g,%g,%g", out.empty() ? "" : "; ",
+                  a.origin.x, a.origin.y, a.origin.yaw, b.origin.x, b.origin.y, b.origin.yaw);
+    out += text;
+  }
+  return out;
+}
+
+CheckVerdict VerdictOf(const GridComparison& m, const std::string& frame_difference,
+                       const std::optional<ToleranceReport>& tol) {
   if (!m.same_geometry) {
-    return {false, "the two maps' resolution or origin differ"};
+    return {false, "the two maps' frames differ: " + frame_difference};
   }
   if (tol) {
     return {tol->Holds(), std::string("the guarantees within ") + CellsText(tol->tolerance_cells) +
@@ -198,7 +217,8 @@ int RunEval(const std::vector<std::string>& args) {
     fidelity = *measured;
   }
   const bool check = parsed->Has("--check");
-  const CheckVerdict verdict = VerdictOf(m, tol);
+  const std::string frame_difference = FrameDifference(original->meta, decoded->meta);
+  const CheckVerdict verdict = VerdictOf(m, frame_difference, tol);
   const double cm_per_cell = original->meta.resolution * 100;
   auto share = [](std::size_t n, std::size_t of) {
     return of > 0 ? static_cast<double>(n) / static_cast<double>(of) : 1.0;
@@ -225,8 +245,12 @@ int RunEval(const std::vector<std::string>& args) {
             .AddRaw("displ_ave_cm", "null")
             .AddRaw("displ_max_cells", "null");
       }
-      json.Add("edge_share_within_1", share(fidelity->within_1_of_wall, fidelity->edge_cells))
-          .Add("edge_share_in_furniture", share(fidelity->in_furniture, fidelity->edge_cells))
+      if (fidelity->displ_ave_cells) {
+        json.Add("edge_share_within_1", share(fidelity->within_1_of_wall, fidelity->edge_cells));
+      } else {
+        json.AddRaw("edge_share_within_1", "null");  // no walls to be within 1 cell of
+      }
+      json.Add("edge_share_in_furniture", share(fidelity->in_furniture, fidelity->edge_cells))
           .Add("edge_share_within_1_or_furniture", share(fidelity->covered, fidelity->edge_cells));
     }
     if (tol) {
@@ -238,7 +262,8 @@ int RunEval(const std::vector<std::string>& args) {
     std::printf("%s\n", json.str().c_str());
     return check && !verdict.passed ? kExitFailure : kExitOk;
   }
-  std::printf("same geometry:        %s\n", m.same_geometry ? "yes" : "NO");
+  std::printf("same geometry:        %s\n",
+              m.same_geometry ? "yes" : ("NO (" + frame_difference + ")").c_str());
   std::printf("cells equal:          %zu of %zu (%.4f)\n", m.cells_equal, m.cells,
               m.cells ? static_cast<double>(m.cells_equal) / m.cells : 1.0);
   std::printf("obstacle recall:      %.4f (within 1 cell)\n", m.obstacle_recall_1);
@@ -257,8 +282,12 @@ int RunEval(const std::vector<std::string>& args) {
     } else {
       std::printf("DisPL_ave:            n/a (the file has no walls)\n");
     }
-    std::printf("within 1 of a wall:   %.4f\n",
-                share(fidelity->within_1_of_wall, fidelity->edge_cells));
+    if (fidelity->displ_ave_cells) {
+      std::printf("within 1 of a wall:   %.4f\n",
+                  share(fidelity->within_1_of_wall, fidelity->edge_cells));
+    } else {
+      std::printf("within 1 of a wall:   n/a (the file has no walls)\n");
+    }
     std::printf("  or in furniture:    %.4f\n", share(fidelity->covered, fidelity->edge_cells));
   }
   if (tol) {

@@ -164,9 +164,15 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
           .Add("room_chains", std::uint64_t{contents->room_chains.size()})
           .Add("blobs", std::uint64_t{contents->blob_outlines.size()});
     }
+    // The pixel fields, as for a map YAML: the text prints them, and a
+    // decoded map's YAML carries them.
     json.Add("free", std::uint64_t{counts.free})
         .Add("occupied", std::uint64_t{counts.occupied})
         .Add("unknown", std::uint64_t{counts.unknown})
+        .Add("mode", MapModeName(grid.meta.mode))
+        .Add("negate", grid.meta.negate)
+        .Add("occupied_thresh", grid.meta.occupied_thresh)
+        .Add("free_thresh", grid.meta.free_thresh)
         .AddRaw("chunks", chunks)
         .AddRaw("metadata", MetadataJson(contents->metadata));
     std::printf("%s\n", json.str().c_str());

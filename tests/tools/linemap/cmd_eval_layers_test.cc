@@ -197,9 +197,13 @@ TEST(CmdEvalLayersTest, RasterOnlyFileHasNoDistance) {
   const CliResult r = RunCli({"eval", map, dir + "/r.lmap", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("\"displ_ave_cells\":null"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"edge_share_within_1\":null,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"edge_share_within_1_or_furniture\":0}"), std::string::npos) << r.out;
   const CliResult text = RunCli({"eval", map, dir + "/r.lmap"});
   EXPECT_NE(text.out.find("DisPL_ave:            n/a (the file has no walls)"), std::string::npos)
+      << text.out;
+  // Not 0: no wall is missing, there are none.
+  EXPECT_NE(text.out.find("within 1 of a wall:   n/a (the file has no walls)\n"), std::string::npos)
       << text.out;
 }
 

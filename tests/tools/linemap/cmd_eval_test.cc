@@ -233,7 +233,12 @@ TEST(CmdEvalTest, CheckExitsOneWhenTheSecondMapBreaksItsPromise) {
   ASSERT_TRUE(SaveRosMap(dir + "/coarse.yaml", *room).ok());
   const CliResult coarse = RunCli({"eval", original, dir + "/coarse.yaml", "--check"});
   EXPECT_EQ(coarse.exit_code, 1) << coarse.out;
-  EXPECT_NE(coarse.out.find("FAIL (the two maps' resolution or origin differ)"), std::string::npos)
+  EXPECT_NE(coarse.out.find("same geometry:        NO (resolution 0.05 against 0.1 m/cell)\n"),
+            std::string::npos)
+      << coarse.out;
+  EXPECT_NE(
+      coarse.out.find("FAIL (the two maps' frames differ: resolution 0.05 against 0.1 m/cell)\n"),
+      std::string::npos)
       << coarse.out;
 }
 

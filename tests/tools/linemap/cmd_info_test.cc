@@ -63,6 +63,13 @@ TEST(CmdInfoTest, LmapCountsTheVectorLayers) {
   EXPECT_NE(json.out.find("\"version\":\"2."), std::string::npos) << json.out;
   EXPECT_NE(json.out.find("{\"type\":\"LAYR\","), std::string::npos) << json.out;
   EXPECT_EQ(json.out.find("\"segments\""), std::string::npos) << json.out;  // 1.0 keys only
+  // The pixel fields the file keeps, as `info` prints them for the map YAML.
+  const CliResult yaml = RunCli({"info", testing::BundledMapsDir() + "/nav2/depot.yaml", "--json"});
+  const std::size_t mode = yaml.out.find("\"mode\":");
+  ASSERT_NE(mode, std::string::npos) << yaml.out;
+  const std::string pixels = yaml.out.substr(mode, yaml.out.find('}', mode) - mode);
+  EXPECT_NE(pixels.find("\"free_thresh\":"), std::string::npos) << pixels;
+  EXPECT_NE(json.out.find(pixels), std::string::npos) << pixels << "\n" << json.out;
   const CliResult text = RunCli({"info", dir + "/d.lmap"});
   ASSERT_EQ(text.exit_code, 0) << text.err;
   const std::string line = "layers:     " + std::to_string(v->walls.size()) + " walls (" +
