@@ -49,9 +49,11 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
     auto length_or = cursor.ReadVarint("chunk length");
     if (!length_or.ok()) return CorruptError("chunk " + name + " has a malformed length");
     const std::uint64_t length = *length_or;
-    // Past the end of the file is corrupt whatever the limit; over the
-    // caller's limit, resource exhausted.
-    if (length > cursor.remaining()) return CorruptError("chunk " + name + " is truncated");
+    // Past the end of the file (the payload and its 4-byte CRC) is corrupt
+    // whatever the limit; over the caller's limit, resource exhausted.
+    if (cursor.remaining() < 4 || length > cursor.remaining() - 4) {
+      return CorruptError("chunk " + name + " is truncated");
+    }
     if (length > max_chunk_bytes) {
       return OverLimitError(Limit::kChunkBytes, "chunk " + name + " has " + std::to_string(length) +
                                                     " bytes, over the limit of " +

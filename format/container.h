@@ -19,7 +19,9 @@ namespace linemap {
 
 inline constexpr std::array<std::uint8_t, 8> kLmapSignature = {0x8A, 'L',  'M',  'A',
                                                                'P',  0x0D, 0x0A, 0x1A};
-// The newest version this code writes; it reads majors 1 and 2.
+// The version of a file of the 2.0 chunk set, the container's default; the
+// encoder raises the minor to what a file holds (2.1 BLKS, 2.2 LAYR, 2.3
+// model 12, spec/format.md 13). Decoders read majors 1 and 2.
 inline constexpr std::uint8_t kFormatMajor = 2;
 inline constexpr std::uint8_t kFormatMinor = 0;
 inline constexpr std::uint8_t kOldestFormatMajor = 1;
@@ -48,7 +50,7 @@ StatusOr<ContainerView> ParseContainer(const std::vector<std::uint8_t>& bytes,
 // Builds a file: signature, version, the chunks in order, LEND.
 class ContainerWriter {
  public:
-  // A file of version major.minor (default: the newest).
+  // A file of version major.minor (default 2.0).
   explicit ContainerWriter(std::uint8_t major = kFormatMajor, std::uint8_t minor = kFormatMinor);
   void AddChunk(const std::string& type, const std::vector<std::uint8_t>& payload);
   // Appends LEND and returns the file.

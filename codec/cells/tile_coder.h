@@ -88,8 +88,8 @@ constexpr TileModel LayerContextWithout(unsigned dropped) {
 // calls: tiles may be coded on several threads at once.
 
 // Codes the cells of `cells` (width*height Cell values, grid-row order)
-// inside `tile` exactly. Reads cells only inside `tile` (hints may be read
-// anywhere: they are global), so every tile decodes on its own.
+// inside `tile` exactly. Reads cells and hints only inside `tile`
+// (spec/tile_coding.md section 1), so every tile decodes on its own.
 // Deterministic. `tile` must lie inside the grid (an empty tile gives no
 // bytes); `hints` may be null (= all zero).
 std::vector<std::uint8_t> EncodeTileCells(const Cell* cells, const std::uint8_t* hints, int width,

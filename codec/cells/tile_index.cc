@@ -18,17 +18,26 @@ void WriteTiles(const TileLayout& layout, int threads,
 StatusOr<TileIndex> ReadTileIndex(const std::vector<std::uint8_t>& body, const TileLayout& layout,
                                   ByteCursor* cursor) {
   if (layout.count() > cursor->remaining()) return CorruptError("tile index past the chunk's end");
+  // Every check of spec 6.1 is made in a first pass, before the offsets
+  // are allocated (the sum stays below 2^64: each length is at most the
+  // body's size, and there are fewer lengths than bytes).
+  ByteCursor lengths = *cursor;
+  std::uint64_t sum = 0;
+  for (std::uint64_t i = 0; i < layout.count(); ++i) {
+    LINEMAP_ASSIGN_OR_RETURN(std::uint64_t len, lengths.ReadVarint("tile length"));
+    if (len > body.size()) return CorruptError("tile length past the chunk's end");
+    sum += len;
+  }
+  if (sum != lengths.remaining()) {
+    return CorruptError("tile lengths do not add up to the chunk's size");
+  }
   TileIndex index;
   index.offsets.assign(layout.count() + 1, 0);
   for (std::uint64_t i = 0; i < layout.count(); ++i) {
     LINEMAP_ASSIGN_OR_RETURN(std::uint64_t len, cursor->ReadVarint("tile length"));
-    if (len > body.size()) return CorruptError("tile length past the chunk's end");
     index.offsets[i + 1] = index.offsets[i] + len;
   }
   index.base = cursor->position();
-  if (index.offsets.back() != body.size() - index.base) {
-    return CorruptError("tile lengths do not add up to the chunk's size");
-  }
   return index;
 }
 

@@ -18,7 +18,7 @@
 namespace linemap {
 
 // Largest n (bit length of v + 1, minus 1) a stream may use: values up to
-// 2^40 - 2; a longer unary prefix is corrupt.
+// 2^41 - 2; a longer unary prefix is corrupt.
 inline constexpr int kMaxIntBits = 40;
 
 struct UIntModel {

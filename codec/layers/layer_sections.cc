@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "codec/layers/layer_coding.h"
 #include "format/byte_io.h"
@@ -117,15 +118,32 @@ std::vector<std::uint8_t> EncodeLayerSections(const std::vector<WallPolyline>& w
 
 namespace {
 
-// A count of one section's items, at most the limit (summed with the
-// sections before: `*sum`) and 2^32 - 1.
+// Ids are 32-bit (a room's is stored, an object's is its place in the
+// chunk), so no limit a caller sets makes a section of more than 2^32 - 1
+// items, or more than 2^32 rooms or objects in the chunk, readable: these
+// are checked for all three counts of an entry before any limit, and the
+// file gets one error whatever the limits. `*rooms` and `*objects` are the
+// chunk's totals so far (below 2^64: at most 2^32 after each entry).
+Status CheckEntryCounts(std::uint64_t w, std::uint64_t r, std::uint64_t o, std::uint64_t* rooms,
+                        std::uint64_t* objects) {
+  for (const auto& [count, items] :
+       {std::pair{w, "walls"}, std::pair{r, "rooms"}, std::pair{o, "objects"}}) {
+    if (count > UINT32_MAX) {
+      return CorruptError(std::to_string(count) + " " + items + " in one section, above 2^32 - 1");
+    }
+  }
+  *rooms += r;
+  *objects += o;
+  if (*rooms > std::uint64_t{1} << 32 || *objects > std::uint64_t{1} << 32) {
+    return CorruptError("more than 2^32 rooms or objects in the chunk (their ids are 32-bit)");
+  }
+  return Status::Ok();
+}
+
+// A count of one section's items (at most 2^32 - 1: CheckEntryCounts), at
+// most the limit summed with the sections before (`*sum`).
 Status AddCount(std::uint64_t count, std::uint64_t limit, Limit which, const char* items,
                 const char* limit_name, std::uint64_t* sum, std::uint32_t* out) {
-  // Ids are 32-bit: no limit a caller sets makes such a section readable,
-  // so this is checked first and the file gets one error whatever the limits.
-  if (count > UINT32_MAX) {
-    return CorruptError(std::to_string(count) + " " + items + " in one section, above 2^32 - 1");
-  }
   // The sum stays below 2^64: each term is cut to limit + 1 first.
   *sum += std::min<std::uint64_t>(count, limit == UINT64_MAX ? limit : limit + 1);
   if (*sum > limit) {
@@ -172,12 +190,14 @@ StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t
     return CorruptError(std::to_string(grid.count()) + " sections do not fit the chunk");
   }
   std::uint64_t rooms = 0, objects = 0, stream_bytes = 0;
+  std::uint64_t all_rooms = 0, all_objects = 0;  // not capped, for the 32-bit ids
   for (std::int64_t k = 0; k < grid.count(); ++k) {
     LayerSection e;
     std::uint64_t w = 0, r = 0, o = 0;
     LINEMAP_ASSIGN_OR_RETURN(w, cursor.ReadVarint("section wall count"));
     LINEMAP_ASSIGN_OR_RETURN(r, cursor.ReadVarint("section room count"));
     LINEMAP_ASSIGN_OR_RETURN(o, cursor.ReadVarint("section object count"));
+    LINEMAP_RETURN_IF_ERROR(CheckEntryCounts(w, r, o, &all_rooms, &all_objects));
     LINEMAP_RETURN_IF_ERROR(AddCount(w, limits.max_segments, Limit::kSegments, "walls", "segment",
                                      &table.walls, &e.walls));
     LINEMAP_RETURN_IF_ERROR(

@@ -51,8 +51,9 @@ struct LayerSectionTable {
   std::vector<LayerSection> sections;
 };
 // Corrupt: a side outside 16..2^31-1, a table or stream past the body's end,
-// streams that do not fill it, a box outside the grid; resource exhausted:
-// counts above the limits (summed over the sections).
+// streams that do not fill it, a box outside the grid, a count above
+// 2^32 - 1 or more than 2^32 rooms or objects (ids are 32-bit); resource
+// exhausted: counts above the limits (summed over the sections).
 StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t>& body, int width,
                                                   int height, const DecodeLimits& limits);
 

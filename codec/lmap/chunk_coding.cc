@@ -153,8 +153,10 @@ StatusOr<HeaderFields> ReadHeader(const std::uint8_t* data, std::size_t size,
     LINEMAP_ASSIGN_OR_RETURN(bits[5], c.ReadU64("free threshold"));
   }
   if (!IsPositiveFinite(bits[0])) return CorruptError("resolution is not a positive number");
+  constexpr const char* kNames[6] = {"resolution", "origin x",           "origin y",
+                                     "origin yaw", "occupied threshold", "free threshold"};
   for (int i = 1; i < 6; ++i) {
-    if (!IsFinite(bits[i])) return CorruptError("header number is not finite");
+    if (!IsFinite(bits[i])) return CorruptError(std::string(kNames[i]) + " is not finite");
   }
   if (!c.empty()) return CorruptError("header has trailing bytes");
   h.width = static_cast<int>(width);

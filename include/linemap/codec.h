@@ -120,9 +120,10 @@ struct EncodeOptions {
 // The defaults read the largest maps nav2 users have reported (20,768 x
 // 13,612 cells) with their layers. Layer items cost memory out of
 // proportion to their bytes: a layer's range-coded stream reads zeros past
-// its end and zeros decode as the smallest item (a one-cell wall, a
-// one-vertex room), so a file of some 60 bytes may hold as many items as
-// the limits allow. Within the defaults that is 2^24 walls (about 1.1 GB
+// its end and zeros decode as the smallest item (a one-vertex room or
+// object; a wall of two points a column on from the last one's end), so a
+// file of some 60 bytes may hold as many items as the limits (and, for
+// walls, the grid's width) allow. Within the defaults that is 2^24 walls (about 1.1 GB
 // and 9 s to read here) or 2^20 rooms and as many furniture objects (some
 // 150 MB each); lower max_segments and max_objects for untrusted files.
 struct DecodeLimits {

@@ -173,6 +173,30 @@ assert dc > 0
 narrow = layr[1][:dc_at] + varint(dc - 1) + layr[1][q:]
 assert len(varint(dc - 1)) == len(varint(dc))
 open(bad + 'v2_2_item_outside_its_section_box.lmap', 'wb').write(with_layr(narrow))
+# The table's checks (5.6), on the same first section with items: a box
+# one column wider than the grid (c0 + dc = width); a B one larger, the
+# streams unchanged (the B no longer add up to the bytes left); and the
+# body cut a few bytes after S (fewer than 3n bytes for the n sections).
+width, _ = read_varint(chunks22[0][1], 0)
+q = dc_at + len(varint(dc))
+assert len(varint(width - c0)) == len(varint(dc))
+wide = layr[1][:dc_at] + varint(width - c0) + layr[1][q:]
+open(bad + 'v2_2_section_box_outside_the_grid.lmap', 'wb').write(with_layr(wide))
+dr, b_at = read_varint(layr[1], q)
+b, q = read_varint(layr[1], b_at)
+assert len(varint(b + 1)) == len(varint(b))
+longer = layr[1][:b_at] + varint(b + 1) + layr[1][q:]
+open(bad + 'v2_2_section_lengths_do_not_add_up.lmap', 'wb').write(with_layr(longer))
+open(bad + 'v2_2_section_table_under_3_bytes_a_section.lmap', 'wb').write(
+    with_layr(layr[1][:p + 6]))
+# A table of one section (S = 1024 on depot) whose walls exceed the
+# default segment limit (2^24 + 1) and whose rooms are 2^32: no limit makes
+# 2^32 rooms readable (32-bit ids), so the file is corrupt, not over a
+# limit that --max-segments would raise (all three counts are checked
+# before the sums).
+open(bad + 'v2_2_section_room_count_2_32_beside_walls_over_the_limit.lmap', 'wb').write(
+    build(head22, [chunks22[0], [b'LAYR', b'\x00' + varint(1024) + varint((1 << 24) + 1) +
+                               varint(1 << 32) + varint(0) + varint(0)], [b'LEND', b'']]))
 
 # Version 2.3: the compact file's tiles name models 12 and 3; one named 13
 # (reserved) must fail. CELL payload: coder byte 0, tile side, the index.
@@ -203,6 +227,28 @@ head23t, chunks23t = parse(open('tests/data/lmap/willow_v2_3_tolerance_1.lmap', 
 assert any(c[0] == b'meta' for c in chunks23t)
 open(bad + 'v2_3_meta_trailing_bytes.lmap', 'wb').write(
     build(head23t, [c if c[0] != b'meta' else [b'meta', c[1] + b'\x00'] for c in chunks23t]))
+# Its metadata with a count of entries above body size / 2 (4.3): 7 in a
+# body of 13 bytes.
+meta = [c for c in chunks23t if c[0] == b'meta'][0]
+count, q = read_varint(meta[1], 1)
+count = (len(meta[1]) - 1) // 2 + 1  # the body: the payload after its coder byte
+assert len(varint(count)) == q - 1
+open(bad + 'v2_meta_count_over_body_size.lmap', 'wb').write(
+    build(head23t, [c if c[0] != b'meta' else [b'meta', b'\x00' + varint(count) + meta[1][q:]]
+                    for c in chunks23t]))
+# Its BLKS (one tile) with the first tile's block data length a one byte
+# past the tile's end (6.4); the varint keeps its size.
+blks = [c for c in chunks23t if c[0] == b'BLKS'][0]
+width, q = read_varint(chunks23t[0][1], 0)
+height, q = read_varint(chunks23t[0][1], q)
+side, q = read_varint(blks[1], 2)
+assert math.ceil(width / side) * math.ceil(height / side) == 1
+n, q = read_varint(blks[1], q)
+a, r = read_varint(blks[1], q)
+assert len(varint(n - (r - q) + 1)) == r - q
+open(bad + 'v2_1_block_data_past_the_tile.lmap', 'wb').write(
+    build(head23t, [c if c[0] != b'BLKS' else [b'BLKS', blks[1][:q] + varint(n - (r - q) + 1) +
+                                               blks[1][r:]] for c in chunks23t]))
 
 # A file without cells must still hold valid layers: the 2.2 file's LAYR
 # with the last byte of its stream set to 0 (a stream may not end in a zero
@@ -229,4 +275,51 @@ open(bad + 'v2_empty_grid_tile_size_5.lmap', 'wb').write(
 open(bad + 'v2_1_empty_grid_block_side_0.lmap', 'wb').write(
     build(head21, [empty_grid(chunks21[0]), [b'BLKS', b'\x00\x00' + varint(16)],
                    [b'LEND', b'']]))
+
+# The index of depot_v2.lmap's CELL (6.1; one tile of 1024 cells): a tile
+# side of 65537; a tile length of 2^20, above the body size; and a body of
+# the tile side 64 alone, where 10 x 5 tiles need at least 50 bytes.
+cell = [c for c in chunks2 if c[0] == b'CELL'][0]
+side, q = read_varint(cell[1], 1)
+n, r = read_varint(cell[1], q)
+
+def with_cell(payload):
+    return build(head2, [c if c[0] != b'CELL' else [b'CELL', payload] for c in chunks2])
+
+open(bad + 'v2_tile_size_65537.lmap', 'wb').write(with_cell(b'\x00' + varint(65537) + cell[1][q:]))
+open(bad + 'v2_tile_length_over_body_size.lmap', 'wb').write(
+    with_cell(cell[1][:q] + varint(1 << 20) + cell[1][r:]))
+open(bad + 'v2_tile_count_over_bytes_left.lmap', 'wb').write(with_cell(b'\x00' + varint(64)))
+
+# depot_v2.lmap's header (4.2): flag bit 5 (reserved) set; an origin
+# (flag bit 4, its x and y after the resolution) of x NaN, then of y -inf.
+def with_header(payload):
+    return build(head2, [[b'LMHD', payload]] + chunks2[1:])
+
+lmhd = chunks2[0][1]
+_, q = read_varint(lmhd, 0)
+_, q = read_varint(lmhd, q)  # the flags
+assert not lmhd[q] & 0xF0
+
+def with_origin(x, y):  # after the flags: the mode (1 byte), the resolution (8)
+    return (lmhd[:q] + bytes([lmhd[q] | 0x10]) + lmhd[q + 1:q + 10] + struct.pack('<dd', x, y) +
+            lmhd[q + 10:])
+
+open(bad + 'v2_header_reserved_flag_bit_5.lmap', 'wb').write(
+    with_header(lmhd[:q] + bytes([lmhd[q] | 0x20]) + lmhd[q + 1:]))
+open(bad + 'v2_origin_x_nan.lmap', 'wb').write(with_header(with_origin(float('nan'), 0.0)))
+open(bad + 'v2_origin_y_infinite.lmap', 'wb').write(with_header(with_origin(0.0, float('-inf'))))
+
+# depot_v2.lmap's LAYR deflated (payload coder 1, 4.1) and cut short: the
+# zlib stream is written by hand (one stored block, so that it does not
+# depend on the zlib at hand) and loses its second half.
+layr2 = [c for c in chunks2 if c[0] == b'LAYR'][0][1][1:]
+assert len(layr2) < 65536
+zstream = (b'\x78\x01\x01' + struct.pack('<HH', len(layr2), len(layr2) ^ 0xFFFF) + layr2 +
+           struct.pack('>I', zlib.adler32(layr2)))
+assert zlib.decompress(zstream) == layr2
+open(bad + 'v2_2_layr_deflate_stream_truncated.lmap', 'wb').write(
+    build(head2, [c if c[0] != b'LAYR' else
+                  [b'LAYR', b'\x01' + varint(len(layr2)) + zstream[:len(zstream) // 2]]
+                  for c in chunks2]))
 PY

@@ -106,6 +106,24 @@ TEST(ContainerTest, ChunkLengthOverTheLimitIsRefused) {
   EXPECT_EQ(view.status().code(), StatusCode::kResourceExhausted);
 }
 
+// A chunk whose payload fits the file but whose CRC does not is past the
+// end of the file: corrupt (truncated) whatever the chunk limit, as a
+// payload past the end is, and not "over the limit" with a small one.
+TEST(ContainerTest, ChunkWhoseCrcIsCutOffIsTruncatedWhateverTheLimit) {
+  ContainerWriter writer;
+  writer.AddChunk("meta", std::vector<std::uint8_t>(40, 7));
+  std::vector<std::uint8_t> bytes = writer.Finish();
+  // Signature (8), version (2), "meta" (4), length (1), 40 bytes: the file
+  // ends there, without the chunk's CRC and the LEND chunk.
+  bytes.resize(8 + 2 + 4 + 1 + 40);
+  for (std::uint64_t limit : {kNoLimit, std::uint64_t{20}}) {
+    auto view = ParseContainer(bytes, limit);
+    ASSERT_FALSE(view.ok());
+    EXPECT_EQ(view.status().code(), StatusCode::kCorrupt) << limit;
+    EXPECT_EQ(view.status().message(), "chunk meta is truncated") << limit;
+  }
+}
+
 TEST(DeflateTest, Crc32CheckValue) {
   const std::string text = "123456789";
   EXPECT_EQ(Crc32(0, reinterpret_cast<const std::uint8_t*>(text.data()), text.size()), 0xCBF43926u);

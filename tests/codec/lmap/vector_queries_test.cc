@@ -11,9 +11,11 @@
 #include <random>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include "format/container.h"
 #include "format/file_io.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
@@ -150,6 +152,39 @@ TEST(VectorQueriesTest, HeaderGivesTheDecodedMapsSizeAndFrame) {
   const StatusOr<LmapHeader> missing = LoadLmapHeader("/nonexistent/dir/map.lmap");
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.status().message().find("/nonexistent/dir/map.lmap"), std::string::npos);
+}
+
+// The layers are read without the cells' body, but a cells' chunk whose
+// payload coder no decoder reads (Draco is for 1.0 segments; 7 is reserved)
+// refuses the file as the whole read does, rather than exporting its
+// layers as if the file were fine. depot_v2.lmap with the CELL payload's
+// first byte replaced.
+TEST(VectorQueriesTest, LayersAloneRefuseACellsChunkOfAnUnknownCoder) {
+  const std::vector<std::uint8_t> depot = Fixture("depot_v2.lmap");
+  for (const auto& [coder, code, message] :
+       {std::tuple{std::uint8_t{7}, StatusCode::kUnsupported,
+                   "chunk CELL: unknown payload coder 7"},
+        std::tuple{std::uint8_t{2}, StatusCode::kCorrupt,
+                   "chunk CELL: the Draco payload coder is for SEGS only"}}) {
+    StatusOr<ContainerView> view = ParseContainer(depot, 1 << 20);
+    ASSERT_TRUE(view.ok());
+    ContainerWriter out(view->major, view->minor);
+    for (const Chunk& chunk : view->chunks) {
+      std::vector<std::uint8_t> payload(chunk.payload, chunk.payload + chunk.size);
+      if (chunk.type == "CELL") payload[0] = coder;
+      if (chunk.type != "LEND") out.AddChunk(chunk.type, payload);
+    }
+    const std::vector<std::uint8_t> bytes = out.Finish();
+    const StatusOr<LmapVectors> vectors = DecodeLmapVectors(bytes);
+    ASSERT_FALSE(vectors.ok()) << int{coder};
+    EXPECT_EQ(vectors.status().code(), code);
+    EXPECT_NE(vectors.status().message().find(message), std::string::npos)
+        << vectors.status().message();
+    const StatusOr<LmapContents> whole = DecodeLmapContents(bytes);
+    ASSERT_FALSE(whole.ok());
+    EXPECT_EQ(whole.status().code(), code);
+  }
+  EXPECT_TRUE(DecodeLmapVectors(depot).ok());
 }
 
 TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
