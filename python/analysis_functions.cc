@@ -253,6 +253,12 @@ py::dict Plan(const Map& map, const py::object& start, const py::object& goal, d
     ms = MillisecondsSince(t0);
   }
   const PlanResult result = ValueOrRaise(std::move(planned));
+  // A point off the map is bad input (the CLI's exit status 2); a start in
+  // an obstacle or a goal out of reach is the planner's answer: a result.
+  if (result.outcome == PlanOutcome::kStartOutsideMap ||
+      result.outcome == PlanOutcome::kGoalOutsideMap) {
+    throw py::value_error(result.message);
+  }
   py::list all;
   for (const PlannedTrajectory& t : result.trajectories) {
     py::dict one;
@@ -452,12 +458,13 @@ A turn-and-move trajectory from ``start`` (x, y[, heading]) to ``goal``
 (x, y), metres and radians, as ``linemap plan --json``: found, length_m,
 commands ([{"turn_deg": d} | {"move_m": m}]), waypoints ((K, 2) array),
 alternatives, ms, stages_ms, trajectories (every trajectory, best first)
-and error (None). A goal that cannot be reached is no exception: found is
-False, error says why, length_m is None, commands and trajectories are
-empty lists, waypoints a (0, 2) array and stages_ms 0 for the stages that
-did not run (the dict has the same keys either way).
-Robot size, margin and the shortest / longest move are in metres;
-options the planner refuses raise ValueError.
+and error (None). A start or goal in an obstacle or too close to one, or a
+goal that cannot be reached, is no exception: found is False, error says
+why, length_m is None, commands and trajectories are empty lists,
+waypoints a (0, 2) array and stages_ms 0 for the stages that did not run
+(the dict has the same keys either way). Robot size, margin and the
+shortest / longest move are in metres; options the planner refuses, and a
+start or goal outside the map, raise ValueError (the CLI's exit status 2).
 )doc");
   module.def("eval", &Eval, py::arg("original"), py::arg("decoded"), py::kw_only(),
              py::arg("max_cells") = py::none(), py::arg("tolerance") = py::none(),

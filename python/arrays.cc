@@ -60,12 +60,15 @@ std::vector<double> FiniteFloats(const py::handle& sequence, const char* what, s
                           std::to_string(items.size()));
   }
   std::vector<double> values;
-  for (const py::handle item : items) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    // Owned, not a handle: a sequence may make each item as it is asked for
+    // (a numpy array makes a new scalar), and only this reference keeps it.
+    const py::object item = items[i];
     // Numbers only: float() would also parse strings.
     if (!PyNumber_Check(item.ptr()) || py::isinstance<py::str>(item)) {
       throw py::value_error(std::string(what) + " must hold numbers");
     }
-    const double v = py::float_(py::reinterpret_borrow<py::object>(item));
+    const double v = py::float_(item);
     if (!std::isfinite(v)) throw py::value_error(std::string(what) + " must be finite");
     values.push_back(v);
   }

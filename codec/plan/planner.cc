@@ -99,7 +99,9 @@ std::string OutcomeMessage(PlanOutcome outcome, const PlanRequest& q, double d_s
     case PlanOutcome::kGoalUnsafe: {
       char text[96];
       std::snprintf(text, sizeof(text),
-                    " is within the safe distance d_save = %.3f m of an obstacle", d_save_m);
+                    " is within the safe distance d_save = %.3f m of an obstacle, an "
+                    "unknown cell or the map's edge",
+                    d_save_m);
       return std::string(where) + text;
     }
     case PlanOutcome::kUnreachable:

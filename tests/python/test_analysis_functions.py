@@ -123,14 +123,13 @@ def test_options_the_cli_refuses_are_refused(function, options, error, match):
         getattr(linemap, function)(m, **options)
 
 
-# plan()'s keys, found or not (the CLI's JSON leaves out those that do not
-# apply).
+# plan()'s keys, found or not, as the CLI's JSON.
 PLAN_KEYS = {"found", "error", "length_m", "commands", "waypoints", "alternatives", "ms",
              "stages_ms", "trajectories"}
 
 
 def compare_plans(got, expected):
-    assert set(got) == PLAN_KEYS and set(expected) <= PLAN_KEYS
+    assert set(got) == PLAN_KEYS and set(expected) == PLAN_KEYS
     for key, value in without_timings(expected).items():
         if key == "waypoints":
             assert got[key].tolist() == value
@@ -184,6 +183,37 @@ def test_plan_robot_options_are_passed_on(cli):
     got = linemap.plan(linemap.load(BUNDLED["depot"]), (1, 1), (20, 10), robot_width=0.6,
                        margin=0.1, d_max=3.0)
     compare_plans(got, expected)
+
+
+def test_plan_start_or_goal_off_the_map_raises_value_error(cli):
+    # Bad input, as the CLI's exit status 2 says; a start in an obstacle or
+    # a goal out of reach is the planner's answer (found False).
+    m = linemap.load(BUNDLED["depot"])
+    with pytest.raises(ValueError, match="start -5.000,1.000 is outside the map"):
+        linemap.plan(m, (-5, 1), (20, 10))
+    with pytest.raises(ValueError, match="goal 1.000,99.000 is outside the map"):
+        linemap.plan(m, (1, 1), (1, 99))
+    off = linemap_cli.run_json(cli, "plan", BUNDLED["depot"], "--from", "-5,1", "--to",
+                               "20,10", "--json", expect_exit=2)
+    assert off["error"] == "start -5.000,1.000 is outside the map"
+
+
+def test_plan_accepts_numpy_points_as_sequences(cli):
+    # A numpy array makes each item as it is read; its points and door
+    # widths are numbers like a tuple's (this crashed the interpreter).
+    m = linemap.load(BUNDLED["depot"])
+    assert compare_plans(linemap.plan(m, np.array([1.0, 1.0]), np.array([20.0, 10.0])),
+                         linemap_cli.run_json(cli, "plan", BUNDLED["depot"], "--from", "1,1",
+                                              "--to", "20,10", "--json")) is None
+    rooms = linemap.segment(m, doors=np.array([0.5, 1.2]))
+    assert rooms["rooms"] and len(rooms["rooms"]) == len(linemap.segment(m)["rooms"])
+    paper = linemap.segment(m, pose=np.array([2.0, 2.0]))
+    assert len(paper["rooms"]) == len(linemap.segment(m, pose=(2.0, 2.0))["rooms"])
+    assert linemap.lines(m, pose=np.array([2.0, 2.0]))["segments"].shape == \
+        linemap.lines(m, pose=(2.0, 2.0))["segments"].shape
+    for bad in (np.array([1.0]), np.array([[1.0, 2.0]]), np.array([np.nan, 1.0])):
+        with pytest.raises(ValueError):
+            linemap.plan(m, bad, (20, 10))
 
 
 def test_plan_options_the_planner_refuses_raise_value_error():

@@ -23,8 +23,13 @@ const CommandSpec kPlanSpec = {
     "(counter-clockwise from the map's +x axis, default 0). Start and goal snap to the\n"
     "centre of their cell. The safe zone keeps the robot centre farther than\n"
     "d_save = max(W/2, L/2) + M from every occupied or unknown cell and from the map\n"
-    "edge. Every trajectory found is printed, best first (fewest moves, then\n"
-    "shortest), as `turn <degrees>` (positive = left) and `move <metres>` commands.\n"
+    "edge. Every trajectory found is printed, best first: fewest moves, then\n"
+    "shortest, except that one more than 1 % longer than the shortest found\n"
+    "comes after all the others (fewer turns win only near-ties). Besides the\n"
+    "planner's own trajectories, the shortest paths straightened (marked\n"
+    "'straightened') are candidates too; they keep --dmax and the safe zone but\n"
+    "not --dmin. Commands are `turn <degrees>` (positive = left) and\n"
+    "`move <metres>`.\n"
     "A start or goal outside the map is bad input (exit code 2); one in an obstacle,\n"
     "too close to one, or a goal that cannot be reached gives a message and exit\n"
     "code 1.",
@@ -34,11 +39,14 @@ const CommandSpec kPlanSpec = {
         {"--robot-width", "W", "robot width in metres (default 0.4)"},
         {"--robot-length", "L", "robot length in metres (default 0.4)"},
         {"--margin", "M", "extra turning margin d_extra in metres (default 0.05)"},
-        {"--dmin", "A", "shortest straight move in metres, except the last (default 0.1)"},
+        {"--dmin", "A",
+         "shortest straight move in metres, except the last and in straightened paths "
+         "(default 0.1)"},
         {"--dmax", "B", "longest straight move in metres (default 5.0)"},
         {"--json", "",
-         "print one JSON object: found, length_m, commands, waypoints, "
-         "alternatives, ms, and every trajectory"},
+         "print one JSON object: found, error, length_m, commands, waypoints, "
+         "alternatives, ms, stages_ms, and every trajectory (the same keys when "
+         "none is found: error says why, length_m null, the lists empty)"},
         {"--svg", "OUT.svg",
          "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg)"},
     }),
@@ -99,12 +107,16 @@ std::string WaypointsJson(const PlannedTrajectory& t) {
 
 std::string ResultJson(const PlanResult& r, double ms) {
   JsonObject json;
+  // The same keys whether found or not, as the Python module's plan(): a
+  // script reads "commands" before testing "found".
   json.Add("found", r.found());
-  if (!r.found()) {
-    json.Add("error", r.message).Add("alternatives", 0).Add("ms", ms);
-    return json.str();
+  if (r.found()) {
+    json.AddRaw("error", "null");
+  } else {
+    json.Add("error", r.message);
   }
-  const PlannedTrajectory& best = r.trajectories.front();
+  const PlannedTrajectory none;
+  const PlannedTrajectory& best = r.found() ? r.trajectories.front() : none;
   std::string all = "[";
   for (const PlannedTrajectory& t : r.trajectories) {
     if (all.size() > 1) all += ",";
@@ -121,8 +133,12 @@ std::string ResultJson(const PlanResult& r, double ms) {
       .Add("wave", r.times.wave_ms)
       .Add("regions", r.times.regions_ms)
       .Add("generation", r.times.generation_ms);
-  json.Add("length_m", best.length_m)
-      .AddRaw("commands", CommandsJson(best))
+  if (r.found()) {
+    json.Add("length_m", best.length_m);
+  } else {
+    json.AddRaw("length_m", "null");
+  }
+  json.AddRaw("commands", CommandsJson(best))
       .AddRaw("waypoints", WaypointsJson(best))
       .Add("alternatives", static_cast<std::uint64_t>(r.trajectories.size()))
       .Add("ms", ms)
