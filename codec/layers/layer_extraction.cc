@@ -17,21 +17,6 @@
 #include "codec/layers/wall_cover.h"
 
 namespace linemap {
-namespace layer_extraction_internal {
-
-std::optional<CellPoint> RobotCell(const Grid& grid, const EncodeOptions& options) {
-  if (!options.robot_pose) return std::nullopt;
-  CellPoint robot;
-  grid.WorldToCell(options.robot_pose->x, options.robot_pose->y, &robot.col, &robot.row);
-  if (!grid.Contains(static_cast<int>(std::nearbyint(robot.col)),
-                     static_cast<int>(std::nearbyint(robot.row)))) {
-    return std::nullopt;
-  }
-  return robot;
-}
-
-}  // namespace layer_extraction_internal
-
 namespace {
 
 using layer_extraction_internal::DropRedundantSegments;
@@ -178,9 +163,7 @@ bool LayersWithin(const VectorLayers& layers, int x0, int y0, int x1, int y1) {
 
 StatusOr<VectorLayers> ExtractBlockLayers(const Grid& block, int x0, int y0,
                                           const EncodeOptions& options, bool with_chains) {
-  EncodeOptions block_options = options;
-  block_options.robot_pose.reset();  // it names one block's free space only
-  LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractWholeMapLayers(block, block_options, false));
+  LINEMAP_ASSIGN_OR_RETURN(VectorLayers layers, ExtractWholeMapLayers(block, options, false));
   DropRepeatedWallPoints(&layers.walls);
   if (!with_chains) DropChains(&layers);
   if (!LayersWithin(layers, 0, 0, block.width(), block.height())) {

@@ -22,11 +22,6 @@
 
 namespace linemap::layer_extraction_internal {
 
-// The cell of options.robot_pose, or none when there is no pose or it lies
-// off the map: the line extractor and the segmentation keep to the free
-// space it is in.
-std::optional<CellPoint> RobotCell(const Grid& grid, const EncodeOptions& options);
-
 // Distance (cells) from `p` to the segment from `a` to `b`.
 inline double PointSegmentDistance(CellIndex p, CellIndex a, CellIndex b) {
   const double dx = b.col - a.col, dy = b.row - a.row;

@@ -104,8 +104,9 @@ std::vector<CellIndex> FurniturePolygon(const FurnitureBlob& blob) {
 
 Status RoomAndFurnitureLayers(const Grid& grid, const EncodeOptions& options,
                               VectorLayers* layers) {
-  SegmentationOptions seg_options;
-  seg_options.robot = RobotCell(grid, options);
+  // The rooms of the whole map, whatever the robot's pose (the rooms
+  // method reads none).
+  const SegmentationOptions seg_options;
   LINEMAP_ASSIGN_OR_RETURN(Segmentation seg, SegmentMap(grid, seg_options));
   for (RoomBorder& room : seg.rooms) {
     if (!IsStorableChain(room.chain, grid.width(), grid.height())) continue;

@@ -17,8 +17,6 @@
 namespace linemap {
 namespace {
 
-using layer_extraction_internal::RobotCell;
-
 // The file's walls follow the pixel steps of slanted walls and keep both
 // faces of a two-cell wall where that pays in distance, as the RM-Line
 // paper's DisPL_ave (the mean distance of the edge cells to the nearest
@@ -68,7 +66,9 @@ StatusOr<std::vector<LineSegment>> ExtractWallLines(const Grid& grid,
   line_options.method = options.method;
   line_options.epsilon_cells =
       std::max(options.epsilon_cells, static_cast<double>(options.tolerance_cells));
-  line_options.robot = RobotCell(grid, options);
+  // Not seeded from the robot's pose: a file's walls are the whole map's
+  // (seeded, the walls of the other free spaces were left to the covering
+  // pieces: on depot 889 walls at a DisPL_ave of 4.4 cm against 320 at 0.46).
   return ExtractLineSegments(grid, line_options);
 }
 

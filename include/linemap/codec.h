@@ -97,8 +97,12 @@ struct EncodeOptions {
   // milliseconds for a building) and encode in about 1.3x. Files are
   // version 2.3. (Cells saved within a tolerance are always coded that way.)
   bool compact = false;
-  // Robot position in map-frame metres, stored in the metadata and used to
-  // seed the edge map when given.
+  // Robot position in map-frame metres, stored in the metadata
+  // (`robot_pose`). The layers are the whole map's whatever the pose: seeded
+  // from it, the line extractor fitted the robot's free space and left the
+  // others' walls to short covering pieces (nav2 depot: 889 walls at a
+  // DisPL_ave of 4.4 cm against 320 at 0.46), and rooms are split at
+  // doorways over the whole map anyway.
   std::optional<Pose2D> robot_pose;
   // Called on the calling thread with the share of the work done (0 to 1),
   // at least once, with 1, when the file is complete; an exact file of a

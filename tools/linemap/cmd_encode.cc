@@ -79,8 +79,8 @@ const CommandSpec kEncodeSpec = {
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
         {"--epsilon", "E", "linemap extractor tolerance in cells, at least 0.5 (default 1.0)"},
         {"--pose", "X,Y[,YAW]",
-         "robot pose in map-frame metres (on the map), stored as metadata; the wall lines and "
-         "rooms are then those of its free space"},
+         "robot pose in map-frame metres (on the map), stored as metadata (the layers are the "
+         "whole map's whatever the pose)"},
         {"--time", "TEXT",
          "creation time stored as metadata, ISO 8601 as the format's `time` key is (default: "
          "none, for reproducible output); control characters such as a newline are refused"},

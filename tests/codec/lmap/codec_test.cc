@@ -18,6 +18,7 @@
 #include "format/byte_io.h"
 #include "format/container.h"
 #include "format/deflate.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "tests/testing/test_support.h"
 
@@ -113,6 +114,33 @@ TEST(CodecTest, MetadataChunkIsReadBack) {
   EXPECT_EQ(contents->metadata[0], (std::pair<std::string, std::string>{"creator", "unit test"}));
   EXPECT_EQ(contents->metadata[1].second, "2026-11-22T04:00:00Z");
   EXPECT_EQ(contents->metadata[3].first, "robot_pose");
+}
+
+// The robot's pose is metadata: the layers are the whole map's wherever the
+// robot stands (seeded from a pose in a small free space, the walls were
+// that space's plus covering pieces elsewhere, 889 against 320 on depot).
+TEST(CodecTest, RobotPoseChangesOnlyTheMetadata) {
+  auto grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
+  ASSERT_TRUE(grid.ok());
+  auto plain = EncodeLmap(*grid, EncodeOptions{});
+  ASSERT_TRUE(plain.ok());
+  auto plain_vectors = DecodeLmapVectors(*plain);
+  ASSERT_TRUE(plain_vectors.ok());
+  for (const Pose2D& pose : {Pose2D{30.19, 15.34, 0}, Pose2D{10, 5, 0.5}}) {
+    EncodeOptions options;
+    options.robot_pose = pose;
+    auto posed = EncodeLmap(*grid, options);
+    ASSERT_TRUE(posed.ok());
+    auto vectors = DecodeLmapVectors(*posed);
+    ASSERT_TRUE(vectors.ok());
+    EXPECT_EQ(vectors->walls, plain_vectors->walls) << pose.x;
+    EXPECT_EQ(vectors->rooms, plain_vectors->rooms) << pose.x;
+    EXPECT_EQ(vectors->furniture, plain_vectors->furniture) << pose.x;
+    auto contents = DecodeLmapContents(*posed);
+    ASSERT_TRUE(contents.ok());
+    ASSERT_EQ(contents->metadata.size(), 1u);
+    EXPECT_EQ(contents->metadata[0].first, "robot_pose");
+  }
 }
 
 TEST(CodecTest, EncodingIsDeterministic) {
