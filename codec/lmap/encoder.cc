@@ -68,6 +68,15 @@ Status CheckEncodeOptions(const EncodeOptions& options) {
                                 " cells: must be 0 (exact) to " +
                                 std::to_string(kMaxToleranceCells));
   }
+  if (options.simplified_within_cells < 0) {
+    return InvalidArgumentError("simplified_within_cells must not be negative");
+  }
+  if (options.simplified_within_cells > 0 && options.tolerance_cells > 0) {
+    return InvalidArgumentError(
+        "a map already simplified within " + std::to_string(options.simplified_within_cells) +
+        " cells cannot be saved within a tolerance again (the guarantees against the original "
+        "map would not hold): save the original map within the tolerance");
+  }
   if (options.tile_size_cells != 0 &&
       (options.tile_size_cells < kMinTileSize || options.tile_size_cells > kMaxTileSize)) {
     return InvalidArgumentError("tile size must be 0 (automatic) or 16..65536 cells");

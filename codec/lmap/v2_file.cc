@@ -19,13 +19,16 @@ std::vector<std::uint8_t> WriteV2(const MapFrame& frame, const EncodeOptions& op
       !layers.walls.empty() || !layers.rooms.empty() || !layers.furniture.empty();
   const int minor = options.compact || blocks ? 3 : has_layers ? 2 : 0;
   ContainerWriter writer(kFormatMajor, static_cast<std::uint8_t>(minor));
-  writer.AddChunk(kHeaderChunk,
-                  WriteHeader(HeaderFields{frame.width, frame.height, frame.meta, exact}));
+  // Cells that are exactly a map simplified before (a file saved within a
+  // tolerance, saved again) are not the robot's map either.
+  const int simplified = exact ? options.simplified_within_cells : options.tolerance_cells;
+  writer.AddChunk(kHeaderChunk, WriteHeader(HeaderFields{frame.width, frame.height, frame.meta,
+                                                         /*lossless=*/simplified == 0}));
   auto metadata = MetadataOf(options);
   // A reader learns what a file promises from the file itself: the guarantees
   // of a map simplified within T cells (linemap/tolerance.h) depend on T.
-  if (!exact && options.tolerance_cells > 0) {
-    metadata.emplace_back(kToleranceMetadataKey, std::to_string(options.tolerance_cells));
+  if (simplified > 0) {
+    metadata.emplace_back(kToleranceMetadataKey, std::to_string(simplified));
   }
   if (!metadata.empty()) {
     writer.AddChunk(kMetadataChunk, WrapPayload(WriteMetadata(metadata), true));

@@ -43,6 +43,15 @@ struct EncodeOptions {
   // map, a clean plan) the exact file is written: never larger, and marked
   // lossless.
   int tolerance_cells = 0;
+  // For a grid that is itself a map simplified within this many cells (one
+  // decoded from a file saved within a tolerance, which names its T): its
+  // exact file is marked so (header lossless flag clear, metadata key
+  // `tolerance`), since its cells are not the robot's own map and only the
+  // guarantees within that T hold against it. 0 (the default): the grid is
+  // the robot's map. At most 2^31 - 1; with tolerance_cells above 0 the
+  // guarantees would not add up, and the save is refused (invalid
+  // argument): simplify the original map instead.
+  int simplified_within_cells = 0;
   // Largest map (cells) saved within a tolerance; 0: no limit. The
   // tolerance checks hold the whole grid and some of its distance maps,
   // about 25 bytes a cell at their peak (a 6000 x 6000 map at T = 1: 0.83

@@ -15,6 +15,7 @@
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 #include "tools/bench/progress.h"
 #include "tools/linemap/bag_input.h"
@@ -170,6 +171,38 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   return options;
 }
 
+// An .lmap input saved again keeps what its metadata says of it: the T of a
+// map saved within a tolerance (its cells are not the robot's map, and the
+// copy says so), and its creator, time, frame and robot pose unless given
+// here.
+Status InheritFromLmap(const std::string& map_path, const ParsedArgs& parsed,
+                       EncodeOptions* options) {
+  if (!IsLmapPath(map_path)) return Status::Ok();
+  LINEMAP_ASSIGN_OR_RETURN(MapReadOptions read, MapReadOptionsFrom(parsed));
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(map_path, read.lmap));
+  if (const std::optional<int> t =
+          ToleranceCellsOf(header.major, header.lossless, header.metadata)) {
+    if (options->tolerance_cells > 0) {
+      return InvalidArgumentError(
+          "'" + map_path + "' was saved within a tolerance of " + std::to_string(*t) +
+          " cells: saving it within another would not keep the guarantees against the "
+          "original map; save the original map with --tolerance");
+    }
+    options->simplified_within_cells = *t;
+  }
+  for (const auto& [key, value] : header.metadata) {
+    if (key == "creator" && options->creator.empty()) options->creator = value;
+    if (key == "time" && options->time.empty()) options->time = value;
+    if (key == "frame_id" && options->frame_id.empty()) options->frame_id = value;
+    double x = 0, y = 0, yaw = 0;
+    if (key == "robot_pose" && !options->robot_pose &&
+        std::sscanf(value.c_str(), "%lf %lf %lf", &x, &y, &yaw) == 3) {
+      options->robot_pose = Pose2D{x, y, yaw};
+    }
+  }
+  return Status::Ok();
+}
+
 // Refuses an output that would destroy the input: the map file itself or the
 // image its YAML names (same file by device and inode, so links count too).
 // Then refuses an output the save at the end could not write (a missing or
@@ -253,8 +286,11 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
     if (report.png_bytes) {
       json.Add("png_bytes", std::uint64_t{*report.png_bytes}).Add("ratio_to_png", ratio);
     }
+    // The T the file names: the save's, or the input's when an .lmap saved
+    // within a tolerance was saved again exactly.
+    const int named = !report.exact ? options.tolerance_cells : options.simplified_within_cells;
     json.Add("exact", report.exact)
-        .AddRaw("tolerance_cells", report.exact ? "null" : std::to_string(options.tolerance_cells))
+        .AddRaw("tolerance_cells", named > 0 ? std::to_string(named) : "null")
         .Add("vector_layers", options.vector_layers)
         .Add("seconds", report.seconds);
     std::printf("%s\n", json.str().c_str());
@@ -266,11 +302,17 @@ int PrintReport(const EncodeReport& report, const std::string& out, const Parsed
   std::snprintf(within, sizeof(within), "within a tolerance of %d cell%s, %s",
                 options.tolerance_cells, options.tolerance_cells == 1 ? "" : "s",
                 options.vector_layers ? "with walls, rooms and furniture" : "cells only");
+  char copy[128];
+  std::snprintf(copy, sizeof(copy),
+                "exact copy of a map saved within a tolerance of %d cell%s, which it names, %s",
+                options.simplified_within_cells, options.simplified_within_cells == 1 ? "" : "s",
+                options.vector_layers ? "with walls, rooms and furniture" : "cells only");
   std::printf("output:  %s, %llu bytes (%s)\n", out.c_str(),
               static_cast<unsigned long long>(report.bytes),
-              !report.exact           ? within
-              : options.vector_layers ? "exact, with walls, rooms and furniture"
-                                      : "exact, cells only");
+              !report.exact                         ? within
+              : options.simplified_within_cells > 0 ? copy
+              : options.vector_layers               ? "exact, with walls, rooms and furniture"
+                                                    : "exact, cells only");
   if (report.png_bytes) {
     std::printf("png-9:   %zu bytes; lmap / png = %.4f (%s)\n", *report.png_bytes, ratio,
                 SmallerOrLarger(ratio).c_str());
@@ -346,6 +388,8 @@ int RunEncode(const std::vector<std::string>& args) {
   if (!output_ok.ok()) return ReportError("encode", output_ok);
   StatusOr<EncodeOptions> options = EncodeOptionsFrom(*parsed);
   if (!options.ok()) return ReportError("encode", options.status());
+  const Status inherited = InheritFromLmap(map_path, *parsed, &*options);
+  if (!inherited.ok()) return ReportError("encode", inherited);
   // A bar on stderr when it is a terminal (not with --json): a huge map
   // takes seconds.
   bench::ProgressBar bar(100, stderr, !parsed->Has("--json") && isatty(fileno(stderr)) != 0);

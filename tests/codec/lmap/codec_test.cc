@@ -143,6 +143,28 @@ TEST(CodecTest, RobotPoseChangesOnlyTheMetadata) {
   }
 }
 
+// A grid that is itself a map simplified within T cells is saved exact but
+// marked as not the robot's map: lossless flag clear, T named; it cannot be
+// simplified again.
+TEST(CodecTest, SimplifiedGridSavedExactlyNamesItsTolerance) {
+  const Grid grid(16, 8, Cell::kFree);
+  EncodeOptions options;
+  options.simplified_within_cells = 3;
+  auto bytes = EncodeLmap(grid, options);
+  ASSERT_TRUE(bytes.ok());
+  auto contents = DecodeLmapContents(*bytes);
+  ASSERT_TRUE(contents.ok());
+  EXPECT_EQ(contents->grid.cells(), grid.cells());
+  EXPECT_FALSE(contents->lossless);
+  EXPECT_EQ(contents->metadata,
+            (std::vector<std::pair<std::string, std::string>>{{"tolerance", "3"}}));
+  options.tolerance_cells = 1;
+  EXPECT_EQ(EncodeLmap(grid, options).status().code(), StatusCode::kInvalidArgument);
+  options.tolerance_cells = 0;
+  options.simplified_within_cells = -1;
+  EXPECT_EQ(EncodeLmap(grid, options).status().code(), StatusCode::kInvalidArgument);
+}
+
 TEST(CodecTest, EncodingIsDeterministic) {
   const std::string map = testing::BundledMapsDir() + "/nav2/depot.yaml";
   auto grid = LoadRosMap(map);

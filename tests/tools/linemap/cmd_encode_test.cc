@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "linemap/codec.h"
@@ -227,6 +228,55 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
 
 // --compact writes an exact version 2.3 file no larger than the default
 // one (each tile keeps the smallest of more codings).
+// An .lmap saved again (to make it --compact, say) keeps what its metadata
+// says: a file saved within 2 cells, copied exactly, still names T = 2
+// (its cells are not the robot's map: checked against the original, only
+// the guarantees within 2 cells hold), and its creator and time stay. It
+// cannot be simplified again: the guarantees against the original would not
+// add up.
+TEST(CmdEncodeTest, AnLmapSavedAgainKeepsItsToleranceAndMetadata) {
+  const std::string dir = MakeTempDir("encode_again");
+  const std::string depot = CopyDepot(dir);
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/t2.lmap", "--tolerance", "2", "--metadata",
+                    "--time", "2026-01-01T00:00:00Z"})
+                .exit_code,
+            0);
+  const CliResult again =
+      RunCli({"encode", dir + "/t2.lmap", "-o", dir + "/copy.lmap", "--compact", "--json"});
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("\"exact\":true,\"tolerance_cells\":2,"), std::string::npos)
+      << again.out;
+  StatusOr<LmapContents> copy = LoadLmapContents(dir + "/copy.lmap");
+  StatusOr<Grid> simplified = LoadLmap(dir + "/t2.lmap");
+  ASSERT_TRUE(copy.ok() && simplified.ok());
+  EXPECT_EQ(copy->grid.cells(), simplified->cells());
+  EXPECT_FALSE(copy->lossless);
+  EXPECT_EQ(ToleranceCellsOf(copy->major, copy->lossless, copy->metadata), 2);
+  const auto has = [&copy](const std::string& key, const std::string& value) {
+    return std::find(copy->metadata.begin(), copy->metadata.end(),
+                     std::pair<std::string, std::string>{key, value}) != copy->metadata.end();
+  };
+  EXPECT_TRUE(has("time", "2026-01-01T00:00:00Z"));
+  EXPECT_TRUE(has("frame_id", "map"));
+  const CliResult text = RunCli({"encode", dir + "/t2.lmap", "-o", dir + "/copy2.lmap"});
+  EXPECT_NE(text.out.find("(exact copy of a map saved within a tolerance of 2 cells, which it "
+                          "names, with walls, rooms and furniture)\n"),
+            std::string::npos)
+      << text.out;
+  EXPECT_EQ(RunCli({"eval", depot, dir + "/copy.lmap", "--check"}).exit_code, 0);
+  const CliResult twice =
+      RunCli({"encode", dir + "/t2.lmap", "-o", dir + "/t3.lmap", "--tolerance", "1"});
+  EXPECT_EQ(twice.exit_code, 2);
+  EXPECT_NE(twice.err.find("was saved within a tolerance of 2 cells"), std::string::npos)
+      << twice.err;
+  // An exact file saved again is exact and names no T.
+  ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/exact.lmap"}).exit_code, 0);
+  const CliResult exact =
+      RunCli({"encode", dir + "/exact.lmap", "-o", dir + "/exact2.lmap", "--json"});
+  EXPECT_NE(exact.out.find("\"exact\":true,\"tolerance_cells\":null,"), std::string::npos)
+      << exact.out;
+}
+
 TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
   const std::string dir = MakeTempDir("encode_compact");
   const std::string yaml = CopyDepot(dir);
