@@ -28,8 +28,9 @@ std::string DescribeTopics(const rosbag::Bag& bag) {
     if (!seen.insert(connection->topic).second) continue;
     rosbag::View topic_view(bag, rosbag::TopicQuery(connection->topic));
     if (!text.empty()) text += ", ";
-    text += connection->topic + " (" + connection->datatype + ", " +
-            std::to_string(topic_view.size()) + " messages)";
+    const std::size_t n = topic_view.size();
+    text += connection->topic + " (" + connection->datatype + ", " + std::to_string(n) +
+            (n == 1 ? " message)" : " messages)");
   }
   return text.empty() ? "no messages" : text;
 }

@@ -3,6 +3,7 @@
 // (--lossless), so that they decode to the messages cell for cell.
 #include <gtest/gtest.h>
 #include <rosbag/bag.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <climits>
@@ -150,6 +151,65 @@ TEST_F(BagTest, MissingTopicExitsTwoNamingWhatTheBagHolds) {
   EXPECT_NE(result.err.find("/map_metadata (nav_msgs/MapMetaData, 3 messages)"), std::string::npos)
       << result.err;
   EXPECT_FALSE(FileExists(dir_ + "/x.lmap"));
+}
+
+// --json prints one object per map written (a line each), which a script
+// parses; the file name's case does not hide a bag.
+TEST_F(BagTest, JsonPrintsAnObjectPerMapWritten) {
+  const CliResult one =
+      RunCli({"encode", bag_path_, "--lossless", "--json", "--index", "1", "-o", dir_ + "/j.lmap"});
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const std::string expected = "{\"topic\":\"/map\",\"index\":1,\"count\":3,\"width\":" +
+                               std::to_string(messages_[1].info.width) +
+                               ",\"height\":" + std::to_string(messages_[1].info.height) +
+                               ",\"output\":\"" + dir_ + "/j.lmap\",\"bytes\":";
+  EXPECT_EQ(one.out.rfind(expected, 0), 0u) << one.out;
+  EXPECT_EQ(std::count(one.out.begin(), one.out.end(), '\n'), 1) << one.out;
+  const CliResult all =
+      RunCli({"encode", bag_path_, "--lossless", "--json", "--all", "-o", dir_ + "/all/"});
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_EQ(std::count(all.out.begin(), all.out.end(), '\n'), 3) << all.out;
+  EXPECT_EQ(std::count(all.out.begin(), all.out.end(), '{'), 3) << all.out;
+  ASSERT_EQ(::link(bag_path_.c_str(), (dir_ + "/UPPER.BAG").c_str()), 0);
+  const CliResult upper = RunCli({"encode", dir_ + "/UPPER.BAG", "-o", dir_ + "/u.lmap"});
+  EXPECT_EQ(upper.exit_code, 0) << upper.err;
+  ExpectFileIsMessage(dir_ + "/u.lmap", 2);
+}
+
+// The bag options on a map YAML, an image or an .lmap say so, rather than
+// the bag reader failing to read a YAML as a bag.
+TEST_F(BagTest, BagOptionsOnAMapAreRefusedNamingThem) {
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  for (const std::vector<std::string>& option :
+       {std::vector<std::string>{"--topic", "/map"}, {"--index", "0"}, {"--all"}}) {
+    std::vector<std::string> argv = {"encode", map, "-o", dir_ + "/x.lmap"};
+    argv.insert(argv.end(), option.begin(), option.end());
+    const CliResult result = RunCli(argv);
+    EXPECT_EQ(result.exit_code, 2) << option[0];
+    EXPECT_NE(result.err.find("--topic, --index and --all read a ROS 1 bag; '" + map +
+                              "' is a map or an .lmap file"),
+              std::string::npos)
+        << result.err;
+  }
+}
+
+// A map of no cells in a bag is refused when it is read, not saved as a
+// file that no map server could serve.
+TEST_F(BagTest, MapOfNoCellsIsRefused) {
+  const std::string path = dir_ + "/empty_map.bag";
+  rosbag::Bag bag;
+  bag.open(path, rosbag::bagmode::Write);
+  OccupancyGridMsg message = messages_[1];
+  message.info.width = 0;
+  message.info.height = 0;
+  message.data.clear();
+  bag.write("/map", ros::Time(1800000000, 7), message);
+  bag.close();
+  const CliResult result = RunCli({"encode", path, "-o", dir_ + "/e.lmap"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("a map of 0 x 0 cells: nothing to save"), std::string::npos)
+      << result.err;
+  EXPECT_FALSE(FileExists(dir_ + "/e.lmap"));
 }
 
 TEST_F(BagTest, TopicOfAnotherTypeExitsTwo) {

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "linemap/map_io.h"
 #include "linemap/occupancy_grid.h"
 #include "ros/bag_reader.h"
+#include "tools/linemap/json.h"
 
 namespace linemap::cli {
 
@@ -31,8 +33,38 @@ std::vector<OptionSpec> WithBagOptions(std::vector<OptionSpec> options) {
   return options;
 }
 
+namespace {
+
+// Whether `path` ends in `.ext`, whatever the case of its letters.
+bool EndsWithExtension(const std::string& path, std::string_view ext) {
+  if (path.size() < ext.size() + 1 || path[path.size() - ext.size() - 1] != '.') return false;
+  for (std::size_t i = 0; i < ext.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i]) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool HasBagOption(const ParsedArgs& args) {
+  return args.Get("--topic") || args.Get("--index") || args.Has("--all");
+}
+
+}  // namespace
+
 bool IsBagInput(const std::string& input, const ParsedArgs& args) {
-  return input.ends_with(".bag") || args.Get("--topic") || args.Get("--index") || args.Has("--all");
+  return EndsWithExtension(input, "bag") || HasBagOption(args);
+}
+
+Status CheckBagOptionsApplyTo(const std::string& input, const ParsedArgs& args) {
+  if (!HasBagOption(args)) return Status::Ok();
+  for (const char* ext : {"yaml", "yml", "pgm", "png", "lmap"}) {
+    if (EndsWithExtension(input, ext)) {
+      return InvalidArgumentError("--topic, --index and --all read a ROS 1 bag; '" + input +
+                                  "' is a map or an .lmap file");
+    }
+  }
+  return Status::Ok();
 }
 
 namespace {
@@ -159,6 +191,7 @@ struct EncodeVisit {
   const BagSelection* selection;
   const EncodeOptions* options;
   std::string bag_path;
+  bool json = false;              // one JSON object per map written, a line each
   std::set<std::string> names{};  // --all: file names given so far
   bool made_folder = false;       // --all: the folder was made for this run
   std::size_t written = 0;        // files written
@@ -188,6 +221,12 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
       "'" + visit->bag_path + "' " + selection.topic + " message " + std::to_string(index);
   StatusOr<Grid> grid = GridFromOccupancyGrid(message, selection.thresholds, selection.max_cells);
   if (!grid.ok()) return grid.status().WithContext(where);
+  // A map of no cells is no map a robot saved, and its file would decode
+  // to nothing a map server can serve.
+  if (grid->size() == 0) {
+    return InvalidArgumentError(where + ": a map of " + std::to_string(grid->width()) + " x " +
+                                std::to_string(grid->height()) + " cells: nothing to save");
+  }
   if (const std::optional<Pose2D>& pose = visit->options->robot_pose) {
     // As for a map file, the pose must fall in a cell (the one whose square
     // holds it) of every map it is stored with.
@@ -204,6 +243,18 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
       out, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
       selection.durability));
   ++visit->written;
+  if (visit->json) {
+    JsonObject json;
+    json.Add("topic", selection.topic)
+        .Add("index", std::uint64_t{index})
+        .Add("count", std::uint64_t{count})
+        .Add("width", grid->width())
+        .Add("height", grid->height())
+        .Add("output", out)
+        .Add("bytes", std::uint64_t{bytes->size()});
+    std::printf("%s\n", json.str().c_str());
+    return Status::Ok();
+  }
   std::printf("%s message %llu of %llu: %d x %d cells -> %s, %zu bytes\n", selection.topic.c_str(),
               static_cast<unsigned long long>(index), static_cast<unsigned long long>(count),
               grid->width(), grid->height(), out.c_str(), bytes->size());
@@ -224,7 +275,10 @@ int EncodeBag(const std::string& bag_path, const ParsedArgs& args, const EncodeO
   if (!reader.ok()) return ReportError("encode", reader.status().WithContext("'" + bag_path + "'"));
   StatusOr<BagSelection> selection = BagSelectionFrom(args);
   if (!selection.ok()) return ReportError("encode", selection.status());
-  EncodeVisit visit{.selection = &*selection, .options = &options, .bag_path = bag_path};
+  EncodeVisit visit{.selection = &*selection,
+                    .options = &options,
+                    .bag_path = bag_path,
+                    .json = args.Has("--json")};
   ros_bridge::BagMapRequest request;
   request.bag_path = bag_path;
   request.topic = selection->topic;

@@ -17,9 +17,14 @@ namespace linemap::cli {
 // --topic, --index, --all: appended to `encode`'s options.
 std::vector<OptionSpec> WithBagOptions(std::vector<OptionSpec> options);
 
-// True when `encode` should read `input` as a bag: its name ends in .bag, or
-// a bag option is given.
+// True when `encode` should read `input` as a bag: its name ends in .bag
+// (any case), or a bag option is given.
 bool IsBagInput(const std::string& input, const ParsedArgs& args);
+
+// Refuses --topic, --index and --all with an input named as a map YAML, an
+// image or an .lmap file (they read a bag; the bag reader's own error about
+// such a file would not say so).
+Status CheckBagOptionsApplyTo(const std::string& input, const ParsedArgs& args);
 
 // Encodes the maps of `bag_path` chosen by `args` (the last message on
 // --topic, default /map; --index K the K-th, counted from 0; --all every one,

@@ -93,7 +93,9 @@ const CommandSpec kEncodeSpec = {
         {"--no-sync", "",
          "skip flushing the file to disk (fsync); it is still replaced atomically, but a "
          "power cut right after may lose it"},
-        {"--json", "", "print one JSON object instead of text"},
+        {"--json", "",
+         "print one JSON object instead of text (a bag: one per map written, a line each: "
+         "topic, index, count, width, height, output, bytes)"},
     })),
     1,
     1,
@@ -377,6 +379,8 @@ int RunEncode(const std::vector<std::string>& args) {
   const Status limits_apply = CheckLayerLimitsApplyTo({map_path}, *parsed);
   if (!limits_apply.ok()) return ReportError("encode", limits_apply);
   // A ROS 1 bag of nav_msgs/OccupancyGrid messages: tools/linemap/bag_input.cc.
+  const Status bag_options_apply = CheckBagOptionsApplyTo(map_path, *parsed);
+  if (!bag_options_apply.ok()) return ReportError("encode", bag_options_apply);
   if (IsBagInput(map_path, *parsed)) {
     const Status image_options = CheckImageOptionsApplyToBag(map_path, *parsed);
     if (!image_options.ok()) return ReportError("encode", image_options);
