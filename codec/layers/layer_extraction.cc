@@ -3,9 +3,11 @@
 #include "codec/layers/layer_extraction.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <future>
+#include <string>
 #include <system_error>
 
 #include "codec/cells/cell_tiles.h"
@@ -242,9 +244,14 @@ std::vector<std::pair<std::string, std::string>> MetadataOf(const EncodeOptions&
   if (!options.time.empty()) entries.emplace_back("time", options.time);
   if (!options.frame_id.empty()) entries.emplace_back("frame_id", options.frame_id);
   if (options.robot_pose) {
-    char text[96];
-    std::snprintf(text, sizeof(text), "%.17g %.17g %.17g", options.robot_pose->x,
-                  options.robot_pose->y, options.robot_pose->yaw);
+    // Each number the shortest decimal that reads back as the same double
+    // ("30.19", not "30.190000000000001").
+    std::string text;
+    for (const double v : {options.robot_pose->x, options.robot_pose->y, options.robot_pose->yaw}) {
+      char number[32];
+      const std::to_chars_result end = std::to_chars(number, number + sizeof(number), v);
+      text += (text.empty() ? "" : " ") + std::string(number, end.ptr);
+    }
     entries.emplace_back("robot_pose", text);
   }
   return entries;

@@ -123,6 +123,15 @@ std::string Printable(const std::string& text) {
   return out;
 }
 
+// The resolution and origin, each the shortest decimal that reads back as
+// the same double (as the JSON and a decoded map's YAML give them): six
+// significant digits put a UTM-sized origin metres away.
+void PrintFrame(const MapMetadata& meta) {
+  std::printf("resolution: %s m/cell\n", JsonNumber(meta.resolution).c_str());
+  std::printf("origin:     x %s m, y %s m, yaw %s rad\n", JsonNumber(meta.origin.x).c_str(),
+              JsonNumber(meta.origin.y).c_str(), JsonNumber(meta.origin.yaw).c_str());
+}
+
 // `linemap info X.lmap`: the header fields, each chunk with its size and
 // coder, and the counts of the vector layers.
 int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
@@ -193,9 +202,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   std::printf("file:       %s (.lmap version %d.%d, %s)\n", path.c_str(), contents->major,
               contents->minor, fidelity.c_str());
   std::printf("size:       %d x %d cells\n", grid.width(), grid.height());
-  std::printf("resolution: %g m/cell\n", grid.meta.resolution);
-  std::printf("origin:     x %g m, y %g m, yaw %g rad\n", grid.meta.origin.x, grid.meta.origin.y,
-              grid.meta.origin.yaw);
+  PrintFrame(grid.meta);
   std::printf("pixels:     mode %s, negate %d, occupied_thresh %g, free_thresh %g\n",
               MapModeName(grid.meta.mode), grid.meta.negate ? 1 : 0, grid.meta.occupied_thresh,
               grid.meta.free_thresh);
@@ -250,9 +257,7 @@ int RunInfo(const std::vector<std::string>& args) {
   std::printf("map:        %s\n", parsed->positional[0].c_str());
   std::printf("size:       %d x %d cells (%.2f x %.2f m)\n", grid->width(), grid->height(),
               grid->width() * meta.resolution, grid->height() * meta.resolution);
-  std::printf("resolution: %g m/cell\n", meta.resolution);
-  std::printf("origin:     x %g m, y %g m, yaw %g rad\n", meta.origin.x, meta.origin.y,
-              meta.origin.yaw);
+  PrintFrame(meta);
   std::printf("pixels:     mode %s, negate %d, occupied_thresh %g, free_thresh %g\n",
               MapModeName(meta.mode), meta.negate ? 1 : 0, meta.occupied_thresh, meta.free_thresh);
   std::printf("free:       %zu (%.1f%%)\n", counts.free, share(counts.free));

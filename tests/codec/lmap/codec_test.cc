@@ -113,7 +113,13 @@ TEST(CodecTest, MetadataChunkIsReadBack) {
   ASSERT_EQ(contents->metadata.size(), 4u);
   EXPECT_EQ(contents->metadata[0], (std::pair<std::string, std::string>{"creator", "unit test"}));
   EXPECT_EQ(contents->metadata[1].second, "2026-11-22T04:00:00Z");
-  EXPECT_EQ(contents->metadata[3].first, "robot_pose");
+  // The shortest decimals that read back as the pose's doubles.
+  EXPECT_EQ(contents->metadata[3],
+            (std::pair<std::string, std::string>{"robot_pose", "1.5 -2 0.25"}));
+  options.robot_pose = Pose2D{30.19, 15.34, 0.1};
+  auto posed = DecodeLmapContents(*EncodeLmap(Grid(4, 4, Cell::kFree), options));
+  ASSERT_TRUE(posed.ok());
+  EXPECT_EQ(posed->metadata[3].second, "30.19 15.34 0.1");
 }
 
 // The robot's pose is metadata: the layers are the whole map's wherever the

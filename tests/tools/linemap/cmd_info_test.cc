@@ -113,6 +113,27 @@ TEST(CmdInfoTest, TextOutputOnABundledMap) {
   EXPECT_NE(r.out.find("resolution: 0.05 m/cell"), std::string::npos) << r.out;
 }
 
+// A UTM-sized origin is printed to the last digit given (six significant
+// digits put y 3.2 m away), for a map and for its .lmap.
+TEST(CmdInfoTest, TextGivesTheOriginInFull) {
+  const std::string dir = MakeTempDir("cli_info_origin");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::vector<std::string> origin = {"--origin", "500123.456,4649776.789,0.123456789",
+                                           "--resolution", "0.025"};
+  std::vector<std::string> info = {"info", map};
+  info.insert(info.end(), origin.begin(), origin.end());
+  std::vector<std::string> encode = {"encode", map, "-o", dir + "/utm.lmap"};
+  encode.insert(encode.end(), origin.begin(), origin.end());
+  ASSERT_EQ(RunCli(encode).exit_code, 0);
+  for (const CliResult& r : {RunCli(info), RunCli({"info", dir + "/utm.lmap"})}) {
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("resolution: 0.025 m/cell\norigin:     x 500123.456 m, y 4649776.789 m, "
+                         "yaw 0.123456789 rad\n"),
+              std::string::npos)
+        << r.out;
+  }
+}
+
 TEST(CmdInfoTest, BareImageTakesCommandLineOverrides) {
   const std::string dir = MakeTempDir("cli");
   WriteFile(dir + "/m.pgm", std::string("P5 2 1 255\n") + std::string("\x00\xcd", 2));
