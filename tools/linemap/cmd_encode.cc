@@ -78,7 +78,8 @@ const CommandSpec kEncodeSpec = {
          "section up to 4096 cells a side, 2048 beyond); a window reads only the sections "
          "reaching its tiles"},
         {"--method", "NAME", "wall-line extractor: linemap (default) or rmline"},
-        {"--epsilon", "E", "linemap extractor tolerance in cells, at least 0.5 (default 1.0)"},
+        {"--epsilon", "E",
+         "linemap extractor tolerance in cells, at least 0.5 (default 1.0; not with rmline)"},
         {"--pose", "X,Y[,YAW]",
          "robot pose in map-frame metres (on the map), stored as metadata (the layers are the "
          "whole map's whatever the pose)"},
@@ -139,6 +140,13 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
       options.method = LineMethod::kLinemap;
     } else if (*method == "rmline") {
       options.method = LineMethod::kRmLine;
+      // Options of the linemap extractor would be ignored without a word.
+      for (const char* option : {"--epsilon", "--straight-walls"}) {
+        if (args.Has(option)) {
+          return InvalidArgumentError(std::string(option) +
+                                      " is an option of the linemap extractor, not of rmline");
+        }
+      }
     } else {
       return InvalidArgumentError("--method must be linemap or rmline, not '" + *method + "'");
     }

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "format/file_io.h"
 #include "linemap/lines.h"
@@ -23,7 +24,14 @@ const CommandSpec kLinesSpec = {
     "layer,x1,y1,x2,y2 and one row per segment (layer 'segment'), in map-frame metres\n"
     "through cell centres. Printed: the number of lines, DisPL_ave (mean distance from\n"
     "an edge cell centre to the nearest segment, RM-Line Eq. 5) in cm and cells, the\n"
-    "largest such distance in cells, and the extraction time in ms.",
+    "largest such distance in cells, and the extraction time in ms. The linemap\n"
+    "extractor leaves the edge cells of furniture blobs (stand-alone objects) to\n"
+    "the furniture layer an .lmap file stores beside the walls (`segment` lists\n"
+    "them); they have no segment here, so on maps with furniture DisPL_ave and\n"
+    "'within 1' count them far from every line ('furniture:' says how many;\n"
+    "`eval` of the .lmap counts the cells in furniture as covered).\n"
+    "The options marked linemap or RM-Line apply to that method only; given with\n"
+    "the other they are refused.",
     WithMapLoadOptions({
         {"-o", "LINES.csv",
          "write the segments as CSV (layer,x1,y1,x2,y2; metres); the name ends in .csv"},
@@ -54,6 +62,16 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
   LineExtractionOptions options;
   if (args.Has("--straight-walls")) options = StraightWalls(options);
   const std::string method = args.Get("--method").value_or("linemap");
+  // An option of the other method would be ignored without a word.
+  const bool rmline = method == "rmline";
+  for (const char* option :
+       rmline ? std::vector<const char*>{"--epsilon", "--max-added-cost", "--straight-walls"}
+              : std::vector<const char*>{"--dtheta", "--ds"}) {
+    if (args.Has(option)) {
+      return InvalidArgumentError(std::string(option) + " is an option of the " +
+                                  (rmline ? "linemap" : "rmline") + " method, not of " + method);
+    }
+  }
   if (method == "rmline") {
     options.method = LineMethod::kRmLine;
   } else if (method == "linemap") {

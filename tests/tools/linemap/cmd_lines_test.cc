@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "linemap/grid.h"
 #include "linemap/map_io.h"
@@ -96,7 +98,7 @@ TEST(CmdLinesTest, BadInputExitsWithTwoAndWritesNothing) {
   const std::string yaml = WriteWallMap(dir);
   const std::string out = dir + "/never.csv";
   EXPECT_EQ(RunCli({"lines", yaml, "--method", "hough", "-o", out}).exit_code, 2);
-  EXPECT_EQ(RunCli({"lines", yaml, "--dtheta", "0", "-o", out}).exit_code, 2);
+  EXPECT_EQ(RunCli({"lines", yaml, "--method", "rmline", "--dtheta", "0", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", yaml, "--epsilon", "0.2", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", yaml, "--max-added-cost", "-1", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "100,100", "-o", out}).exit_code, 2);
@@ -104,6 +106,32 @@ TEST(CmdLinesTest, BadInputExitsWithTwoAndWritesNothing) {
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "2.25,2.35", "-o", out}).exit_code, 2);
   EXPECT_EQ(RunCli({"lines", dir + "/missing.yaml", "-o", out}).exit_code, 2);
   EXPECT_FALSE(testing::FileExists(out));
+}
+
+// An option of the other method would change nothing: it is refused, naming
+// the method it belongs to (encode alike for its extractor).
+TEST(CmdLinesTest, OptionsOfTheOtherMethodAreRefused) {
+  const std::string dir = testing::MakeTempDir("lines_cli_method");
+  const std::string yaml = WriteWallMap(dir);
+  for (const auto& [argv, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"lines", yaml, "--dtheta", "5"}, "--dtheta is an option of the rmline method"},
+           {{"lines", yaml, "--ds", "0.25"}, "--ds is an option of the rmline method"},
+           {{"lines", yaml, "--method", "rmline", "--epsilon", "2"},
+            "--epsilon is an option of the linemap method"},
+           {{"lines", yaml, "--method", "rmline", "--straight-walls"},
+            "--straight-walls is an option of the linemap method"},
+           {{"lines", yaml, "--method", "rmline", "--max-added-cost", "1"},
+            "--max-added-cost is an option of the linemap method"},
+           {{"encode", yaml, "-o", dir + "/x.lmap", "--method", "rmline", "--epsilon", "2"},
+            "--epsilon is an option of the linemap extractor, not of rmline"},
+           {{"encode", yaml, "-o", dir + "/x.lmap", "--method", "rmline", "--straight-walls"},
+            "--straight-walls is an option of the linemap extractor, not of rmline"}}) {
+    const testing::CliResult r = RunCli(argv);
+    EXPECT_EQ(r.exit_code, 2) << message;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(RunCli({"lines", yaml, "--method", "rmline", "--dtheta", "5"}).exit_code, 0);
+  EXPECT_FALSE(testing::FileExists(dir + "/x.lmap"));
 }
 
 }  // namespace
