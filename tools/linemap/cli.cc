@@ -144,6 +144,11 @@ StatusOr<int> ParsedArgs::GetInt(const std::string& name, int fallback) const {
   if (!text) return fallback;
   int v = 0;
   auto result = std::from_chars(text->data(), text->data() + text->size(), v);
+  if (result.ec == std::errc::result_out_of_range && result.ptr == text->data() + text->size()) {
+    return InvalidArgumentError(
+        name + " is out of range (" + std::to_string(std::numeric_limits<int>::min()) + " to " +
+        std::to_string(std::numeric_limits<int>::max()) + "), not '" + *text + "'");
+  }
   if (result.ec != std::errc() || result.ptr != text->data() + text->size()) {
     return InvalidArgumentError(name + " expects a whole number, not '" + *text + "'");
   }

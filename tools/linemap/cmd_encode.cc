@@ -10,6 +10,7 @@
 #include <future>
 #include <memory>
 #include <optional>
+#include <regex>
 #include <string_view>
 #include <system_error>
 
@@ -104,6 +105,17 @@ const CommandSpec kEncodeSpec = {
 
 namespace {
 
+// The extended ISO 8601 forms a map's `time` takes: a date (YYYY-MM-DD),
+// optionally "T" and hh:mm[:ss[.fraction]], optionally a zone (Z, +hh:mm,
+// +hhmm or +hh, or -). The format's `time` key is ISO 8601 text, which a
+// reader may parse; "yesterday" would be stored and fail there.
+bool IsIso8601DateTime(const std::string& text) {
+  static const std::regex kForm(
+      R"((\d{4})-(0[1-9]|1[0-2])-(0[1-9]|[12]\d|3[01]))"
+      R"((T([01]\d|2[0-3]):[0-5]\d(:([0-5]\d|60)(\.\d+)?)?(Z|[+-]([01]\d|2[0-3])(:?[0-5]\d)?)?)?)");
+  return std::regex_match(text, kForm);
+}
+
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   EncodeOptions options;
   options.vector_layers = !args.Has("--raster-only");
@@ -171,6 +183,11 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
       std::snprintf(code, sizeof(code), "0x%02x", static_cast<unsigned char>(*control));
       return InvalidArgumentError(std::string("--time holds the control character ") + code +
                                   ": give an ISO 8601 time such as 2024-05-01T12:00:00Z");
+    }
+    if (!IsIso8601DateTime(*time)) {
+      return InvalidArgumentError("--time '" + *time +
+                                  "' is not an ISO 8601 date or time such as "
+                                  "2024-05-01T12:00:00Z (or 2024-05-01, 2024-05-01T12:00+02:00)");
     }
     options.time = *time;
   }

@@ -1,4 +1,5 @@
 // linemap info MAP [--json]: size, resolution, origin and cell counts.
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -209,6 +210,13 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   if (v1) {
     std::printf("geometry:   %zu segments, %zu room chains, %zu blobs\n", contents->segments.size(),
                 contents->room_chains.size(), contents->blob_outlines.size());
+  } else if (std::none_of(contents->chunks.begin(), contents->chunks.end(),
+                          [](const LmapChunkInfo& c) {
+                            return c.type == "LAYR" || c.type == "WALL" || c.type == "ROOM" ||
+                                   c.type == "FURN";
+                          })) {
+    // Saved --raster-only: no layer chunk, rather than layers found empty.
+    std::printf("layers:     none (cells only)\n");
   } else {
     std::printf("layers:     %zu walls (%zu segments), %zu rooms, %zu furniture\n", layers.walls,
                 layers.wall_segments, layers.rooms, layers.furniture);

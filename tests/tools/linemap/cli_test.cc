@@ -24,6 +24,25 @@ using testing::RunCli;
 // --max-cells (every command that reads a map, and the .lmap commands),
 // --max-segments, --max-objects and --max-file-bytes take 1 .. 2^64 - 1 in decimal digits: no
 // exponent, fraction, sign or overflow (1e30 used to become "a limit of 0 cells", 1.5 became 1).
+// A whole number past an int is out of range, not "not a whole number".
+TEST(CliTest, IntOptionPastTheRangeSaysSo) {
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  const std::string out = testing::MakeTempDir("cli_int_range") + "/o.lmap";
+  for (const char* big : {"2147483648", "-2147483649", "99999999999999"}) {
+    const CliResult r = RunCli({"encode", map, "-o", out, "--section-size", big});
+    EXPECT_EQ(r.exit_code, 2) << big;
+    EXPECT_NE(r.err.find(std::string("--section-size is out of range (-2147483648 to "
+                                     "2147483647), not '") +
+                         big + "'"),
+              std::string::npos)
+        << r.err;
+  }
+  const CliResult fraction = RunCli({"encode", map, "-o", out, "--section-size", "1e3"});
+  EXPECT_NE(fraction.err.find("--section-size expects a whole number, not '1e3'"),
+            std::string::npos)
+      << fraction.err;
+}
+
 TEST(CliTest, LimitsAreWholeNumbers) {
   const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
   const std::string lmap = testing::SourceDir() + "/tests/data/lmap/lse_arena_lossy.lmap";

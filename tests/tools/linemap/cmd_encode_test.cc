@@ -324,15 +324,15 @@ TEST(CmdEncodeTest, HelpShowsTheOptionalYaw) {
   EXPECT_EQ(r.out.find("X,Y,YAW"), std::string::npos) << r.out;
 }
 
-// A printable text of `n` characters that deflate cannot shrink much (a
-// fixed pseudo-random sequence), to grow the file byte by byte.
+// An ISO 8601 time (--time takes no other text) whose second has a
+// fraction of `n` digits that deflate cannot shrink much (a fixed
+// pseudo-random sequence), to grow the file byte by byte.
 std::string Filler(int n) {
-  static const char kChars[] = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
-  std::string text;
+  std::string text = "2024-05-01T12:00:00.";
   std::uint32_t state = 12345;
   for (int i = 0; i < n; ++i) {
     state = state * 1103515245u + 12345u;
-    text += kChars[(state >> 16) % (sizeof(kChars) - 1)];
+    text += static_cast<char>('0' + (state >> 16) % 10);
   }
   return text;
 }
@@ -390,6 +390,23 @@ TEST(CmdEncodeTest, TimeWithAControlCharacterIsRefused) {
   const CliResult ok =
       RunCli({"encode", yaml, "-o", dir + "/x.lmap", "--time", "2024-05-01T12:00:00Z"});
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+// Nor is a text that is no ISO 8601 date or time (a reader of the `time`
+// key parses it), while the forms map savers write pass.
+TEST(CmdEncodeTest, TimeThatIsNotIso8601IsRefused) {
+  const std::string dir = MakeTempDir("encode_time_iso");
+  const std::string yaml = CopyDepot(dir);
+  for (const char* time : {"yesterday", "2026-13-01", "2026-02-30x", "2026-01-01 12:00", "2026-1-1",
+                           "12:00", "2026-01-01T25:00", "2026-01-01T12:00:00+2", "\xff\xfe"}) {
+    ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--time", time}, dir,
+                  {"--time", "is not an ISO 8601 date or time"});
+  }
+  for (const char* time :
+       {"2026-01-01", "2026-01-01T12:00", "2026-01-01T12:00:00Z", "2026-01-01T12:00:00.125+02:00",
+        "2026-01-01T12:00:00-0500", "2026-01-01T23:59:60Z"}) {
+    EXPECT_EQ(RunCli({"encode", yaml, "-o", dir + "/x.lmap", "--time", time}).exit_code, 0) << time;
+  }
 }
 
 }  // namespace

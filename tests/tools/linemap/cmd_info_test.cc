@@ -134,6 +134,18 @@ TEST(CmdInfoTest, TextGivesTheOriginInFull) {
   }
 }
 
+// A file saved --raster-only has no layers, which info says, rather than
+// counting zero walls as if the map had none.
+TEST(CmdInfoTest, RasterOnlyFileHasNoLayers) {
+  const std::string dir = MakeTempDir("cli_info_raster");
+  const std::string map = testing::BundledMapsDir() + "/navtut/lse_arena.yaml";
+  ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/r.lmap", "--raster-only"}).exit_code, 0);
+  const CliResult r = RunCli({"info", dir + "/r.lmap"});
+  EXPECT_NE(r.out.find("layers:     none (cells only)\n"), std::string::npos) << r.out;
+  ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/l.lmap"}).exit_code, 0);
+  EXPECT_NE(RunCli({"info", dir + "/l.lmap"}).out.find(" walls ("), std::string::npos);
+}
+
 TEST(CmdInfoTest, BareImageTakesCommandLineOverrides) {
   const std::string dir = MakeTempDir("cli");
   WriteFile(dir + "/m.pgm", std::string("P5 2 1 255\n") + std::string("\x00\xcd", 2));
