@@ -193,6 +193,24 @@ TEST_F(BagTest, BagOptionsOnAMapAreRefusedNamingThem) {
   }
 }
 
+// --metadata stores the frame a message names (the fixture's is "map"; one
+// in "world" keeps it).
+TEST_F(BagTest, MetadataNamesTheMessagesFrame) {
+  const std::string path = dir_ + "/world.bag";
+  rosbag::Bag bag;
+  bag.open(path, rosbag::bagmode::Write);
+  OccupancyGridMsg message = messages_[1];
+  message.header.frame_id = "world";
+  bag.write("/map", ros::Time(1800000000, 7), message);
+  bag.close();
+  ASSERT_EQ(RunCli({"encode", path, "--metadata", "-o", dir_ + "/w.lmap"}).exit_code, 0);
+  StatusOr<LmapContents> contents = LoadLmapContents(dir_ + "/w.lmap");
+  ASSERT_TRUE(contents.ok());
+  EXPECT_NE(std::find(contents->metadata.begin(), contents->metadata.end(),
+                      std::pair<std::string, std::string>{"frame_id", "world"}),
+            contents->metadata.end());
+}
+
 // A map of no cells in a bag is refused when it is read, not saved as a
 // file that no map server could serve.
 TEST_F(BagTest, MapOfNoCellsIsRefused) {

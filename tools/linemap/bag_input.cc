@@ -236,7 +236,10 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
                                   std::to_string(grid->height()) + " cells)");
     }
   }
-  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, *visit->options);
+  // --metadata names the map's frame: a message says its own.
+  EncodeOptions options = *visit->options;
+  if (!options.frame_id.empty() && !message.frame_id.empty()) options.frame_id = message.frame_id;
+  StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
   if (!bytes.ok()) return bytes.status().WithContext(where);
   LINEMAP_ASSIGN_OR_RETURN(std::string out, OutputPath(visit, stamp));
   LINEMAP_RETURN_IF_ERROR(WriteFileAtomic(

@@ -85,9 +85,12 @@ const CommandSpec kEncodeSpec = {
          "robot pose in map-frame metres (on the map), stored as metadata (the layers are the "
          "whole map's whatever the pose)"},
         {"--time", "TEXT",
-         "creation time stored as metadata, ISO 8601 as the format's `time` key is (default: "
-         "none, for reproducible output); control characters such as a newline are refused"},
-        {"--metadata", "", "also store creator (linemap and its version) and frame id 'map'"},
+         "creation time stored as metadata: an ISO 8601 date or time as the format's `time` "
+         "key is, e.g. 2024-05-01T12:00:00Z (default: none, for reproducible output); other "
+         "text is refused"},
+        {"--metadata", "",
+         "also store creator (linemap and its version) and the frame id: 'map', or a bag "
+         "message's own"},
         {"--no-png-ratio", "",
          "skip making the PNG-9 the ratio is printed against (skipped anyway above 2^26 "
          "cells, where it costs as much time and memory as the save)"},
