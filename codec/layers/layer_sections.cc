@@ -198,6 +198,7 @@ StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t
     LINEMAP_ASSIGN_OR_RETURN(r, cursor.ReadVarint("section room count"));
     LINEMAP_ASSIGN_OR_RETURN(o, cursor.ReadVarint("section object count"));
     LINEMAP_RETURN_IF_ERROR(CheckEntryCounts(w, r, o, &all_rooms, &all_objects));
+    e.first_wall = table.walls;
     LINEMAP_RETURN_IF_ERROR(AddCount(w, limits.max_segments, Limit::kSegments, "walls", "segment",
                                      &table.walls, &e.walls));
     LINEMAP_RETURN_IF_ERROR(
@@ -239,8 +240,12 @@ Status DecodeSection(const std::uint8_t* data, const LayerSection& e, int width,
   const std::size_t size = static_cast<std::size_t>(e.stream_bytes);
   RangeDecoder dec(data + e.stream_offset, size);
   const CellIndex origin{e.c0, e.r0};
+  const std::size_t first_wall = out->walls.size();
   LINEMAP_RETURN_IF_ERROR(DecodeWallItems(&dec, e.walls, bounds, limits.max_segments, max_points,
                                           points, origin, &out->walls));
+  for (std::size_t i = first_wall; i < out->walls.size(); ++i) {
+    out->wall_indices.push_back(e.first_wall + (i - first_wall));
+  }
   const std::size_t first_room = out->rooms.size();
   LINEMAP_RETURN_IF_ERROR(
       DecodeRoomItems(&dec, e.rooms, bounds, limits, totals, origin, expand_chains, &out->rooms));

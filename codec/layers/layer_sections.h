@@ -41,6 +41,7 @@ struct LayerSection {
   std::uint64_t index = 0;             // in the section grid, row-major
   int c0 = 0, r0 = 0, c1 = 0, r1 = 0;  // the box of its points, inclusive
   std::uint32_t walls = 0, rooms = 0, objects = 0;
+  std::uint64_t first_wall = 0;     // walls in the sections before it
   std::uint64_t first_object = 0;   // objects in the sections before it
   std::uint64_t stream_offset = 0;  // in the body
   std::uint64_t stream_bytes = 0;
@@ -65,6 +66,10 @@ StatusOr<LayerSectionTable> ReadLayerSectionTable(const std::vector<std::uint8_t
 // section's box, room ids not increasing), resource exhausted.
 struct DecodedLayers {
   std::vector<WallPolyline> walls;
+  // Of each of `walls`, its index among the walls of all the sections in
+  // file order (the wall's number in a whole read): a region's walls are
+  // not numbered from 0.
+  std::vector<std::uint64_t> wall_indices;
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
 };

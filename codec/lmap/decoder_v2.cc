@@ -136,6 +136,7 @@ Status ReadSectionsMeeting(const DecodeLimits& limits, bool expand_chains, const
                           file->header.height, limits, expand_chains, region);
   if (!layers.ok()) return layers.status().WithContext(std::string("chunk ") + kLayerChunk);
   file->walls = std::move(layers->walls);
+  file->wall_indices = std::move(layers->wall_indices);
   file->rooms = std::move(layers->rooms);
   file->furniture = std::move(layers->furniture);
   return Status::Ok();
@@ -179,6 +180,7 @@ Status CheckLayersWithoutCells(const DecodeLimits& limits, V2File* file) {
   if (!file->has_layer_sections || file->has_cells) return Status::Ok();
   LINEMAP_RETURN_IF_ERROR(ReadLayerSections(limits, /*expand_chains=*/false, nullptr, file));
   std::vector<WallPolyline>().swap(file->walls);
+  std::vector<std::uint64_t>().swap(file->wall_indices);
   std::vector<RoomOutline>().swap(file->rooms);
   std::vector<FurnitureObject>().swap(file->furniture);
   return Status::Ok();

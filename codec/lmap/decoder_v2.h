@@ -20,6 +20,9 @@ namespace linemap {
 struct V2File {
   HeaderFields header;
   std::vector<WallPolyline> walls;
+  // LAYR's: the index of each of `walls` among all the file's walls
+  // (DecodedLayers::wall_indices); empty for WALL's, read whole.
+  std::vector<std::uint64_t> wall_indices;
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
   std::vector<std::pair<std::string, std::string>> metadata;

@@ -2,6 +2,7 @@
 // (include/linemap/lmap_vectors.h): the header, the layers' items near a
 // window, and the room at a cell with the cells of its box.
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <string>
 #include <utility>
@@ -63,8 +64,22 @@ void KeepMeeting(const CellWindow& window, Points points_of, std::vector<Item>* 
 }
 
 void KeepItemsMeeting(const CellWindow& window, LmapVectors* v) {
-  KeepMeeting(
-      window, [](const WallPolyline& w) -> const auto& { return w.points; }, &v->walls);
+  // The walls keep their whole-file indices: a wall's id is its index.
+  if (v->wall_indices.empty()) {
+    v->wall_indices.resize(v->walls.size());
+    std::iota(v->wall_indices.begin(), v->wall_indices.end(), std::uint64_t{0});
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < v->walls.size(); ++i) {
+    if (!BoxMeets(v->walls[i].points, window)) continue;
+    if (kept != i) {  // a self-move would empty the wall
+      v->walls[kept] = std::move(v->walls[i]);
+      v->wall_indices[kept] = v->wall_indices[i];
+    }
+    ++kept;
+  }
+  v->walls.resize(kept);
+  v->wall_indices.resize(kept);
   KeepMeeting(
       window, [](const RoomOutline& r) -> const auto& { return r.polygon; }, &v->rooms);
   KeepMeeting(
@@ -136,6 +151,7 @@ StatusOr<LmapVectors> DecodeLmapVectorsInWindow(const std::vector<std::uint8_t>&
     const CellRect rect{window.col0, window.row0, window.col1, window.row1};
     LINEMAP_RETURN_IF_ERROR(ReadLayersMeeting(limits, rect, &file));
     v.walls = std::move(file.walls);
+    v.wall_indices = std::move(file.wall_indices);
     v.rooms = std::move(file.rooms);
     v.furniture = std::move(file.furniture);
   } else {

@@ -31,7 +31,17 @@ struct LmapVectors {
   std::vector<WallPolyline> walls;
   std::vector<RoomOutline> rooms;
   std::vector<FurnitureObject> furniture;
+  // Walls have no stored id: a wall's id is its index among the walls of
+  // the whole file. A read of part of the file (DecodeLmapVectorsInWindow)
+  // keeps some of them, and says which here: walls[i] is the file's wall
+  // wall_indices[i] (increasing). Empty when `walls` are all of the file's
+  // walls, in order (DecodeLmapVectors). WallIndex() reads either.
+  std::vector<std::uint64_t> wall_indices;
 
+  // The index of walls[i] among the walls of the whole file.
+  std::uint64_t WallIndex(std::size_t i) const {
+    return wall_indices.empty() ? std::uint64_t{i} : wall_indices[i];
+  }
   // Map-frame metres of a lattice point.
   void ToWorld(const CellIndex& p, double* x, double* y) const;
 };
@@ -89,7 +99,8 @@ StatusOr<std::optional<int>> LoadLmapToleranceCells(const std::string& path,
 
 // The items of the layers whose bounding box (of their points or polygon
 // vertices, which holds their cells) meets `window`, in file order, with
-// their ids: exactly the items of LoadLmapVectors that meet it. `window`
+// their ids: exactly the items of LoadLmapVectors that meet it, the walls'
+// whole-file indices in `wall_indices` (always filled here, one per wall). `window`
 // must be non-empty and inside the map (else invalid argument). A file of
 // version 2.2 or later reads only the layer sections whose box meets the window (spec 5.6), and
 // like DecodeLmapRegion leaves the other sections' streams unchecked; older

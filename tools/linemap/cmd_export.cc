@@ -47,14 +47,16 @@ const CommandSpec kExportSpec = {
     "Polygons (rings counter-clockwise, as RFC 7946 asks; rings of fewer than\n"
     "four positions padded with their last point); properties layer and id, plus kind for rooms "
     "and room_id (null\n"
-    "when in no room) for furniture.\n"
+    "when in no room) for furniture. A wall's id is its index among the file's\n"
+    "walls; rooms and furniture have the ids the file stores.\n"
     "SVG: the decoded map (free light, occupied black, unknown grey, as\n"
     "map_saver writes it) with walls in red, room borders in blue and\n"
     "furniture in green over it, north (map +y) up, a scale bar and a legend.\n"
     "With --window or --window-cells (as linemap decode reads them) only the\n"
     "items whose box meets the window are written, whole (not cut at its\n"
-    "edge), reading only the layer sections that reach it; an SVG draws the\n"
-    "window's cells and the items clipped to them.",
+    "edge), with the ids they have in the whole file (the exports of several\n"
+    "windows merge), reading only the layer sections that reach it; an SVG\n"
+    "draws the window's cells and the items clipped to them.",
     ExportOptions(),
     1,
     1,

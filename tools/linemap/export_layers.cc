@@ -27,7 +27,7 @@ std::string Position(const WorldPoint& p) {
 
 std::string Properties(const ExportLayer& layer, const LayerFeature& f) {
   JsonObject o;
-  o.Add("layer", layer.name).Add("id", std::uint64_t{f.id});
+  o.Add("layer", layer.name).Add("id", f.id);
   if (layer.name == "room_border") o.Add("kind", f.kind);
   if (layer.name == "furniture") {
     if (f.room_id) {
@@ -67,8 +67,8 @@ std::string CoordText(double metres) {
 std::vector<ExportLayer> LayersOf(const LmapVectors& vectors) {
   ExportLayer walls{"wall", false, {}};
   for (std::size_t i = 0; i < vectors.walls.size(); ++i) {
-    walls.features.push_back({static_cast<std::uint32_t>(i), "", std::nullopt,
-                              ToWorld(vectors, vectors.walls[i].points)});
+    walls.features.push_back(
+        {vectors.WallIndex(i), "", std::nullopt, ToWorld(vectors, vectors.walls[i].points)});
   }
   ExportLayer rooms{"room_border", true, {}};
   for (const RoomOutline& room : vectors.rooms) {

@@ -19,7 +19,9 @@ struct WorldPoint {
 
 // One wall polyline, room border or furniture outline.
 struct LayerFeature {
-  std::uint32_t id = 0;
+  // A room's or object's id; a wall's index among the walls of the whole
+  // file (LmapVectors::WallIndex), also when a window read only some.
+  std::uint64_t id = 0;
   std::string kind;                     // rooms only: "room", "corridor", ...
   std::optional<std::int32_t> room_id;  // furniture only; nullopt when in no room
   std::vector<WorldPoint> points;       // closed features do not repeat the first point

@@ -211,6 +211,50 @@ TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
   }
 }
 
+// A wall has no stored id: its id is its index among the file's walls, so
+// a window's walls carry their whole-file indices (exports of several
+// windows merge). The expected indices are the positions, in the whole
+// read, of the walls the test's own box test keeps; on files of sections
+// of 16 and 64 cells most windows skip the sections before theirs.
+TEST(VectorQueriesTest, WallsInAWindowKeepTheirIndicesInTheWholeFile) {
+  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files = {
+      {"one section", Depot(0)},
+      {"sections of 64", Fixture("depot_v2_2_sections_64.lmap")},
+      {"sections of 16", Depot(16)},
+      {"2.0 chunks", Fixture("depot_v2_0.lmap")},
+      {"1.0", Fixture("depot_v1_room_chains.lmap")}};
+  for (const auto& [name, bytes] : files) {
+    SCOPED_TRACE(name);
+    StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
+    ASSERT_TRUE(all.ok()) << all.status().message();
+    // The whole read numbers its walls 0, 1, ... and says so by an empty list.
+    EXPECT_TRUE(all->wall_indices.empty());
+    for (std::size_t i = 0; i < all->walls.size(); ++i) EXPECT_EQ(all->WallIndex(i), i);
+    std::size_t renumbered = 0;  // windows whose first wall is not the file's first
+    for (const CellWindow& w : Windows(all->width, all->height, 11)) {
+      SCOPED_TRACE(std::to_string(w.col0) + "," + std::to_string(w.row0) + "," +
+                   std::to_string(w.col1) + "," + std::to_string(w.row1));
+      std::vector<std::uint64_t> want;
+      for (std::size_t i = 0; i < all->walls.size(); ++i) {
+        if (MeetsWindow(all->walls[i].points, w)) want.push_back(i);
+      }
+      StatusOr<LmapVectors> got = DecodeLmapVectorsInWindow(bytes, w);
+      ASSERT_TRUE(got.ok()) << got.status().message();
+      ASSERT_EQ(got->walls.size(), want.size());
+      EXPECT_EQ(got->wall_indices, want);
+      for (std::size_t i = 0; i < want.size(); ++i) {
+        EXPECT_EQ(got->WallIndex(i), want[i]);
+        EXPECT_EQ(got->walls[i], all->walls[want[i]]);
+      }
+      renumbered += !want.empty() && want[0] != 0;
+    }
+    // (The 1.0 fixture has no segments.)
+    if (!all->walls.empty()) {
+      EXPECT_GT(renumbered, 0u) << "no window tells the indices from positions";
+    }
+  }
+}
+
 TEST(VectorQueriesTest, WindowsEmptyOrPastTheBorderAreRefused) {
   const std::vector<std::uint8_t> bytes = Depot(0);  // 604 x 307
   for (const CellWindow& w : std::vector<CellWindow>{

@@ -317,6 +317,67 @@ TEST(CmdExportTest, WindowKeepsTheItemsWhoseBoxMeetsIt) {
   EXPECT_FALSE(testing::FileExists(dir + "/p.csv"));
 }
 
+// A window's features carry the ids they have in the whole file, so that
+// the exports of several windows merge: a wall's id is its index among the
+// file's walls (the whole read's order), not its place in the window. The
+// expected walls are those of the whole read whose box meets the window,
+// with their whole-read indices; on the default file (one layer section)
+// and on one of sections of 16 cells (the window reads few of them).
+TEST(CmdExportTest, WindowFeaturesKeepTheirIdsInTheWholeFile) {
+  const std::string dir = testing::MakeTempDir("export_window_ids");
+  const std::string sectioned = dir + "/depot16.lmap";
+  const CliResult encoded = RunCli({"encode", testing::BundledMapsDir() + "/nav2/depot.yaml",
+                                    "--section-size", "16", "-o", sectioned});
+  ASSERT_EQ(encoded.exit_code, 0) << encoded.err;
+  for (const std::string& lmap : {EncodedDepot(dir), sectioned}) {
+    SCOPED_TRACE(lmap);
+    StatusOr<LmapVectors> all = LoadLmapVectors(lmap);
+    ASSERT_TRUE(all.ok()) << all.status().message();
+    const CellWindow w{200, 100, 320, 180};
+    const auto meets = [&](const std::vector<CellIndex>& points) {
+      const BoundingBox b = BoxOfCells(points);
+      return b.max_col >= w.col0 && b.min_col < w.col1 && b.max_row >= w.row0 && b.min_row < w.row1;
+    };
+    std::vector<std::size_t> walls;
+    for (std::size_t i = 0; i < all->walls.size(); ++i) {
+      if (meets(all->walls[i].points)) walls.push_back(i);
+    }
+    std::vector<std::uint32_t> rooms, objects;
+    for (const RoomOutline& room : all->rooms) {
+      if (meets(room.polygon)) rooms.push_back(room.id);
+    }
+    for (const FurnitureObject& object : all->furniture) {
+      if (meets(object.polygon)) objects.push_back(object.id);
+    }
+    ASSERT_GT(walls.size(), 1u);
+    ASSERT_GT(walls.front(), 0u) << "a window whose first wall is the file's first shows nothing";
+    const CliResult r =
+        RunCli({"export", lmap, "-o", dir + "/w.geojson", "--window-cells", "200,100,320,180"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const YAML::Node features = YAML::LoadFile(dir + "/w.geojson")["features"];
+    ASSERT_EQ(features.size(), walls.size() + rooms.size() + objects.size());
+    std::size_t i = 0;
+    for (const std::size_t wall : walls) {
+      const YAML::Node f = features[i++];
+      EXPECT_EQ(f["properties"]["layer"].as<std::string>(), "wall");
+      EXPECT_EQ(f["properties"]["id"].as<std::size_t>(), wall);
+      const YAML::Node coords = f["geometry"]["coordinates"];
+      ASSERT_EQ(coords.size(), all->walls[wall].points.size());
+      for (std::size_t k = 0; k < coords.size(); ++k) {
+        ExpectPosition(coords[k], Expected(all->meta, all->walls[wall].points[k]));
+      }
+    }
+    for (const std::uint32_t id : rooms) {
+      EXPECT_EQ(features[i]["properties"]["layer"].as<std::string>(), "room_border");
+      EXPECT_EQ(features[i++]["properties"]["id"].as<std::uint32_t>(), id);
+    }
+    for (const std::uint32_t id : objects) {
+      EXPECT_EQ(features[i]["properties"]["layer"].as<std::string>(), "furniture");
+      EXPECT_EQ(features[i++]["properties"]["id"].as<std::uint32_t>(), id);
+    }
+  }
+}
+
 // A --raster-only file has no layers: CSV is the header, the SVG still shows
 // the map. A 1.0 file's segments are two-point walls.
 TEST(CmdExportTest, RasterOnlyAndVersion1Files) {
