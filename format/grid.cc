@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "format/large_vector.h"
+#include "format/metre_cells.h"
 
 namespace linemap {
 
@@ -60,14 +62,27 @@ void Grid::CellToWorld(double col, double row, double* x, double* y) const {
   *y = meta.origin.y + s * u + c * v;
 }
 
-std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
-                                          double y) {
+CellPosition CellPositionOf(const MapMetadata& meta, double x, double y) {
   Grid frame;  // only its metadata: the map's cell <-> metre transform
   frame.meta = meta;
-  double col = 0, row = 0;
-  frame.WorldToCell(x, y, &col, &row);
-  col = std::floor(col + 0.5);
-  row = std::floor(row + 0.5);
+  CellPosition p;
+  frame.WorldToCell(x, y, &p.col, &p.row);
+  const double c = std::abs(std::cos(meta.origin.yaw)), s = std::abs(std::sin(meta.origin.yaw));
+  const double along_x = std::abs(x) + std::abs(meta.origin.x);
+  const double along_y = std::abs(y) + std::abs(meta.origin.y);
+  const double ulps = 16 * std::numeric_limits<double>::epsilon() / meta.resolution;
+  p.col_slack = 1e-9 + ulps * (c * along_x + s * along_y);
+  p.row_slack = 1e-9 + ulps * (s * along_x + c * along_y);
+  return p;
+}
+
+std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
+                                          double y) {
+  // Cell c's square is [c - 0.5, c + 0.5): a point within the slack below
+  // its lower or left edge was typed on that edge.
+  const CellPosition p = CellPositionOf(meta, x, y);
+  const double col = std::floor(p.col + 0.5 + p.col_slack);
+  const double row = std::floor(p.row + 0.5 + p.row_slack);
   // Written so that NaN fails it too.
   if (!(col >= 0 && row >= 0 && col < width && row < height)) return std::nullopt;
   return CellIndex{static_cast<int>(col), static_cast<int>(row)};

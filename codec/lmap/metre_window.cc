@@ -3,25 +3,27 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 
+#include "format/metre_cells.h"
 #include "linemap/codec.h"
 #include "linemap/grid.h"
 
 namespace linemap {
 namespace {
 
-// Cell-unit slack for box edges that fall on a cell centre: 0.025 m at
-// 0.05 m/cell is 0.49999999999999994 cells in doubles. The rounding grows
-// with the coordinates (an origin at a UTM northing of 5,412,345.67 m puts
-// an edge typed on a centre 2e-8 cells off at 0.05 m/cell), so the slack
-// does too: a few units in the last place of the largest coordinate, in
-// cells.
-double EdgeSlackCells(const MapMetadata& meta, double x0, double y0, double x1, double y1) {
-  const double scale = std::max({std::abs(x0), std::abs(y0), std::abs(x1), std::abs(y1)}) +
-                       std::abs(meta.origin.x) + std::abs(meta.origin.y);
-  return 1e-9 + 16 * std::numeric_limits<double>::epsilon() * scale / meta.resolution;
+// A first or last cell index (whole, in a double): in full while a double
+// holds every whole number around it, else rounded to 4 digits (a window of
+// -1e18 m starts at column -2e+19, which no 64-bit integer holds).
+std::string IndexText(double index) {
+  index += 0.0;  // -0 (the ceiling of -0.4) prints as 0
+  char text[64];
+  if (std::abs(index) <= 1e15) {
+    std::snprintf(text, sizeof(text), "%.0f", index);
+  } else {
+    std::snprintf(text, sizeof(text), "%.4g", index);
+  }
+  return text;
 }
 
 std::string BoxText(const std::string& label, double x0, double y0, double x1, double y1) {
@@ -67,38 +69,33 @@ StatusOr<CellWindow> CellWindowOfMetres(const MapMetadata& meta, int width, int 
     return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) +
                                 ": X0 must not exceed X1, nor Y0 Y1 (finite metres)");
   }
-  Grid frame;  // only its metadata: the map's cell <-> metre transform
-  frame.meta = meta;
-  double min_col = 0, max_col = 0, min_row = 0, max_row = 0;
+  // The first and last centres, inclusive, still in doubles: far off the
+  // map (or on a map over 2^29 cells wide) no int holds them. A centre on
+  // an edge is taken within the slack of that corner's coordinate
+  // (CellPositionOf): the same rule as a point on a cell's edge.
+  double c0 = 0, c1 = 0, r0 = 0, r1 = 0;
   bool first = true;
   for (double x : {x0, x1}) {
     for (double y : {y0, y1}) {
-      double col, row;
-      frame.WorldToCell(x, y, &col, &row);
-      min_col = first ? col : std::min(min_col, col);
-      max_col = first ? col : std::max(max_col, col);
-      min_row = first ? row : std::min(min_row, row);
-      max_row = first ? row : std::max(max_row, row);
+      const CellPosition p = CellPositionOf(meta, x, y);
+      const double lo_col = std::ceil(p.col - p.col_slack),
+                   hi_col = std::floor(p.col + p.col_slack);
+      const double lo_row = std::ceil(p.row - p.row_slack),
+                   hi_row = std::floor(p.row + p.row_slack);
+      c0 = first ? lo_col : std::min(c0, lo_col);
+      c1 = first ? hi_col : std::max(c1, hi_col);
+      r0 = first ? lo_row : std::min(r0, lo_row);
+      r1 = first ? hi_row : std::max(r1, hi_row);
       first = false;
     }
   }
-  // The first and last centres, inclusive, still in doubles: far off the
-  // map (or on a map over 2^29 cells wide) no int holds them.
-  const double slack = EdgeSlackCells(meta, x0, y0, x1, y1);
-  const double c0 = std::ceil(min_col - slack), c1 = std::floor(max_col + slack);
-  const double r0 = std::ceil(min_row - slack), r1 = std::floor(max_row + slack);
   // Negated, so that a NaN fails too.
   if (!(c0 <= c1 && r0 <= r1)) {
     return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) + " holds no cell centre");
   }
   if (!(c0 >= 0 && r0 >= 0 && c1 <= width - 1.0 && r1 <= height - 1.0)) {
-    // Held to a few map sizes off the map, so that they print as whole
-    // numbers.
-    const double limit = 4.0 * std::max(width, height) + 4;
-    auto index = [&](double v) { return static_cast<long long>(std::clamp(v, -limit, limit)); };
-    char cells[160];
-    std::snprintf(cells, sizeof(cells), "cells [%lld, %lld) x [%lld, %lld)", index(c0),
-                  index(c1) + 1, index(r0), index(r1) + 1);
+    const std::string cells = "cells [" + IndexText(c0) + ", " + IndexText(c1 + 1) + ") x [" +
+                              IndexText(r0) + ", " + IndexText(r1 + 1) + ")";
     return InvalidArgumentError(BoxText(label, x0, y0, x1, y1) + " covers " + cells +
                                 ", past the map's border: " + ExtentText(meta, width, height));
   }

@@ -224,10 +224,13 @@ struct CellWindow {
 // coordinates: a few units in their last place, so that an edge typed in
 // decimal on a centre keeps it, also at a UTM origin). With a yaw in the origin the
 // box's corners are taken into the grid and the window is the cell
-// rectangle around them. Invalid argument when the box is inverted or not
-// finite, holds no centre, or its window reaches past the map (not
-// clipped: what is served or written is what was asked for, or nothing);
-// the message starts with `label` and the box and states the map's extent.
+// rectangle around them. (CellHoldingPoint, linemap/grid.h, takes a point
+// on a cell's edge by the same slack.) Invalid argument when the box is
+// inverted or not finite, holds no centre, or its window reaches past the
+// map (not clipped: what is served or written is what was asked for, or
+// nothing); the message starts with `label` and the box, gives the cells
+// the box covers (in full, or to 4 digits past 1e15) and states the map's
+// extent.
 // `linemap decode --window` and lmap_server's ~window both take this rule.
 StatusOr<CellWindow> CellWindowOfMetres(const MapMetadata& meta, int width, int height, double x0,
                                         double y0, double x1, double y1,

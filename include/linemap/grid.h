@@ -123,6 +123,10 @@ class Grid {
 // c + 0.5) x [r - 0.5, r + 0.5) (cell units, centres on whole numbers)
 // holds the map-frame point (x, y) in metres: a point on a cell's lower or
 // left edge is in that cell, one on its upper or right edge in the next.
+// "On" an edge as typed in decimal: -6.9 m from an origin at -7 m at 0.05
+// m/cell is 1.4999999999999929 cells in doubles, and is taken as the left
+// edge of column 2, within the slack (1e-9 cell, more at large coordinates)
+// by which CellWindowOfMetres takes a centre on a window's edge.
 // nullopt off the map, and for a point that is not finite.
 std::optional<CellIndex> CellHoldingPoint(const MapMetadata& meta, int width, int height, double x,
                                           double y);

@@ -15,8 +15,19 @@ namespace {
 
 StatusOr<CellWindow> WindowFromCellList(const std::vector<double>& v) {
   for (double x : v) {
-    if (x != std::floor(x) || std::abs(x) > std::numeric_limits<int>::max()) {
+    // Written so that NaN fails it too.
+    if (!(std::isfinite(x) && x == std::floor(x))) {
       return InvalidArgumentError("--window-cells takes whole cell indices C0,R0,C1,R1");
+    }
+  }
+  for (double x : v) {
+    if (std::abs(x) > std::numeric_limits<int>::max()) {
+      char text[64];
+      std::snprintf(text, sizeof(text), "%.15g", x);
+      return InvalidArgumentError(std::string("--window-cells index ") + text +
+                                  " is out of range (a cell index lies within +-" +
+                                  std::to_string(std::numeric_limits<int>::max()) +
+                                  ", and a window inside the map)");
     }
   }
   return CellWindow{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]),

@@ -79,15 +79,48 @@ TEST(CellWindowOfMetresTest, EdgesOnCentresHoldAtLargeOrigins) {
 }
 
 // A map wider than 2^29 cells: indices past an int are refused with whole
-// numbers in the message, not a cast's garbage.
+// numbers in the message, not a cast's garbage: 1e12 / 0.05 = 2e13 cells,
+// 2e12 m the centre of column 4e13 - 0.5, so columns [2e13, 4e13).
 TEST(CellWindowOfMetresTest, WindowFarRightOfAVeryWideMapIsRefusedPlainly) {
   const StatusOr<CellWindow> far =
       CellWindowOfMetres(Depot(), 600000000, 1, 1e12, 0.01, 2e12, 0.04);
   ASSERT_FALSE(far.ok());
-  EXPECT_NE(far.status().message().find("covers cells [2400000004, 2400000005)"), std::string::npos)
+  EXPECT_NE(far.status().message().find("covers cells [20000000000000, 40000000000000) x [0, 1)"),
+            std::string::npos)
       << far.status().message();
   ExpectWindow(CellWindowOfMetres(Depot(), 600000000, 1, 29999999.0, 0.0, 29999999.99, 0.05),
                599999980, 0, 600000000, 1);
+}
+
+// Huge metres on one axis leave the other's cells as they are: kth's frame
+// (origin -7, -17.5; 260 x 781 cells). Rows: y = 0 is row 17.5 / 0.05 - 0.5
+// = 349.5, y = 1 row 369.5, so rows [350, 370); columns: x = 0 is column
+// 7 / 0.05 - 0.5 = 139.5, so the first is 140. The refusal stands, with the
+// true cells: -1e18 m is column -2e19 (to 4 digits: no 64-bit integer holds
+// it), 9.3e15 m column 1.86e17. The slack of the rounding used to grow with
+// the largest of the four numbers on both axes and moved the rows by up to
+// 71,000 cells (they printed as [-3128, 3129), held to four map sizes).
+TEST(CellWindowOfMetresTest, HugeMetresOnOneAxisGiveTheTrueCellsInTheRefusal) {
+  const MapMetadata kth = Depot(-7, -17.5);
+  const StatusOr<CellWindow> left = CellWindowOfMetres(kth, 260, 781, -1e18, 0, 0, 1, "--window");
+  ASSERT_FALSE(left.ok());
+  EXPECT_EQ(left.status().code(), StatusCode::kInvalidArgument);
+  EXPECT_NE(left.status().message().find("covers cells [-2e+19, 140) x [350, 370), past the map"),
+            std::string::npos)
+      << left.status().message();
+  const StatusOr<CellWindow> right = CellWindowOfMetres(kth, 260, 781, 0, 0, 9.3e15, 1);
+  ASSERT_FALSE(right.ok());
+  EXPECT_NE(
+      right.status().message().find("covers cells [140, 1.86e+17) x [350, 370), past the map"),
+      std::string::npos)
+      << right.status().message();
+  const StatusOr<CellWindow> up = CellWindowOfMetres(kth, 260, 781, 0, 0, 1, 4e17);
+  ASSERT_FALSE(up.ok());
+  EXPECT_NE(up.status().message().find("covers cells [140, 160) x [350, 8e+18)"), std::string::npos)
+      << up.status().message();
+  // Inside the map the same boxes' parts give those cells.
+  ExpectWindow(CellWindowOfMetres(kth, 260, 781, -6.975, 0, 0, 1), 0, 350, 140, 370);
+  ExpectWindow(CellWindowOfMetres(kth, 260, 781, 0, 0, 5.975, 1), 140, 350, 260, 370);
 }
 
 // A turned map: the cell rectangle around the window's corners, and a

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <random>
@@ -277,6 +278,79 @@ TEST(CmdDecodeWindowTest, RoomAtWritesTheRoomsWindow) {
   // off the map, one just inside it in the last column.
   ExpectRefused(lmap, dir, {"--room-at", "30.2,1"}, "lies outside the map's 604 x 307 cells");
   ExpectRefused(lmap, dir, {"--room-at", "1"}, "2 comma-separated numbers");
+}
+
+// kth (260 x 781 cells of 0.05 m, origin -7, -17.5), encoded once per test.
+std::string EncodedKth(const std::string& dir) {
+  const std::string lmap = dir + "/kth.lmap";
+  const CliResult r =
+      RunCli({"encode", testing::BundledMapsDir() + "/strands/kth/map.yaml", "-o", lmap});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return lmap;
+}
+
+// --room-at on a cell's left edge typed in decimal: -6.9 m is column 2's
+// left edge ((-6.9 + 7) / 0.05 = 2 cell widths from the map's), -17.175 m
+// the middle of row 6 (0.325 / 0.05 = 6.5), so the cell is (2, 6), the room
+// the test's own transcription of spec 8.2 finds there. Plain division put
+// the point in column 1 (outside every room's border), while -6.899999999
+// (inside column 2) found the room. Then the same on other decimal left
+// edges of the corridor, against the reference's room at each.
+TEST(CmdDecodeWindowTest, RoomAtOnACellsLeftEdgeTypedInDecimalIsInThatCell) {
+  const std::string dir = testing::MakeTempDir("decode_room_at_edge");
+  std::filesystem::create_directories(dir + "/out");
+  const std::string lmap = EncodedKth(dir);
+  StatusOr<LmapVectors> vectors = LoadLmapVectors(lmap);
+  ASSERT_TRUE(vectors.ok()) << vectors.status().message();
+  const RoomOutline* room = testing::ReferenceRoomAt(vectors->rooms, 2, 6);
+  ASSERT_NE(room, nullptr);
+  for (const char* point : {"-6.9,-17.175", "-6.899999999,-17.175"}) {
+    const CliResult r = RunCli({"decode", lmap, "-o", dir + "/e.yaml", "--room-at", point});
+    ASSERT_EQ(r.exit_code, 0) << point << ": " << r.err;
+    EXPECT_NE(r.out.find(", room " + std::to_string(room->id) + " ("), std::string::npos)
+        << point << ": " << r.out;
+  }
+  // Column k's left edge is -7 + 0.05 k m, written from whole hundredths;
+  // row 400's middle is -17.5 + 400.5 * 0.05 = 2.525 m.
+  int checked = 0;
+  for (int k = 100; k < 160; k += 3) {
+    const RoomOutline* want = testing::ReferenceRoomAt(vectors->rooms, k, 400);
+    const int hundredths = -700 + 5 * k;
+    char point[64];
+    std::snprintf(point, sizeof(point), "%s%d.%02d,2.525", hundredths < 0 ? "-" : "",
+                  std::abs(hundredths) / 100, std::abs(hundredths) % 100);
+    SCOPED_TRACE(point);
+    if (want == nullptr) {
+      ExpectRefused(lmap, dir, {"--room-at", point},
+                    "encloses cell (" + std::to_string(k) + ", 400)");
+      continue;
+    }
+    const CliResult r = RunCli({"decode", lmap, "-o", dir + "/e.yaml", "--room-at", point});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(", room " + std::to_string(want->id) + " ("), std::string::npos) << r.out;
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+// Refusals of windows far off the map give the cells the box covers: a
+// huge X leaves the rows alone (y 0..1 m: rows 349.5..369.5, so [350, 370);
+// x = 0: column 139.5, so from 140). --window-cells with a whole index
+// past an int says it is out of range, not that it is not whole.
+TEST(CmdDecodeWindowTest, RefusalsOfHugeWindowsGiveTheTrueCells) {
+  const std::string dir = testing::MakeTempDir("decode_window_huge");
+  std::filesystem::create_directories(dir + "/out");
+  const std::string lmap = EncodedKth(dir);
+  ExpectRefused(lmap, dir, {"--window=-1e18,0,0,1"}, "covers cells [-2e+19, 140) x [350, 370)");
+  ExpectRefused(lmap, dir, {"--window=0,0,9.3e15,1"}, "covers cells [140, 1.86e+17) x [350, 370)");
+  ExpectRefused(lmap, dir, {"--window-cells", "0,0,2147483648,1"},
+                "--window-cells index 2147483648 is out of range");
+  ExpectRefused(lmap, dir, {"--window-cells", "-3000000000,0,1,1"},
+                "--window-cells index -3000000000 is out of range");
+  ExpectRefused(lmap, dir, {"--window-cells", "0,0,2.5,1"}, "whole cell indices");
+  // The largest int is whole and in range: refused as past the map.
+  ExpectRefused(lmap, dir, {"--window-cells", "0,0,2147483647,1"},
+                "not inside the map's 260 x 781 cells");
 }
 
 // The tiles decode on any number of threads to the same files; a 1.0 file
