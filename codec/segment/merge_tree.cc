@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 
+#include "codec/segment/chamfer.h"
 #include "codec/segment/range_scan.h"
 #include "format/large_vector.h"
 
@@ -138,7 +139,7 @@ std::int32_t NeighbourRoot(std::vector<std::int32_t>& parent, std::int32_t nb) {
 // neighbours, -1 for none; more than one distinct): it joins the highest
 // piece (the first of them on a tie), and the others join it unless they
 // meet at a doorway, where their contact is kept.
-void JoinAtCell(const std::vector<std::uint16_t>& dist, const DoorRule& rule,
+void JoinAtCell(const std::vector<std::uint16_t>& dist, int pw, const DoorRule& rule,
                 bool keep_wide_narrowings, std::int32_t cell, int level,
                 const std::int32_t (&roots)[4], std::vector<std::int32_t>* parent_out,
                 std::vector<Contact>* contacts) {
@@ -162,7 +163,9 @@ void JoinAtCell(const std::vector<std::uint16_t>& dist, const DoorRule& rule,
     const bool narrowing =
         dist[other] >= s + rule.constriction && dist[primary] >= s + rule.constriction;
     if (narrowing && (s <= rule.max_door || keep_wide_narrowings)) {
-      contacts->push_back({cell, other, static_cast<std::uint16_t>(s)});
+      const int width = PassageWidth(dist, pw, cell, s, roots, primary, other);
+      contacts->push_back(
+          {cell, other, static_cast<std::uint16_t>(s), static_cast<std::uint16_t>(width)});
     } else {
       parent[other] = primary;
     }
@@ -170,6 +173,17 @@ void JoinAtCell(const std::vector<std::uint16_t>& dist, const DoorRule& rule,
 }
 
 }  // namespace
+
+int PassageWidth(const std::vector<std::uint16_t>& dist, int pw, std::int32_t cell, int s,
+                 const std::int32_t (&roots)[4], std::int32_t a, std::int32_t b) {
+  const std::int32_t neighbours[4] = {cell - 1, cell + 1, cell - pw, cell + pw};  // W, E, N, S
+  bool second_middle = false;
+  for (int k = 0; k < 4; ++k) {
+    if (roots[k] == a || roots[k] == b) continue;
+    second_middle |= dist[neighbours[k]] == s;
+  }
+  return 2 * s - kChamferSide + (second_middle ? kChamferSide : 0);
+}
 
 std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int pw,
                                     const DoorRule& rule, bool join_plateaus,
@@ -242,7 +256,7 @@ std::vector<Contact> FloodMergeTree(const std::vector<std::uint16_t>& dist, int 
     } else if (one_piece) {
       parent[cell] = first;
     } else {
-      JoinAtCell(dist, rule, keep_wide_narrowings, cell, level, roots, &parent, &contacts);
+      JoinAtCell(dist, pw, rule, keep_wide_narrowings, cell, level, roots, &parent, &contacts);
     }
   }
   return contacts;

@@ -61,7 +61,7 @@ PieceGraph::PieceGraph(std::vector<std::int32_t> parent,
   for (const Contact& contact : contacts) {
     const std::int32_t a = piece_of_[contact.cell];
     const std::int32_t b = piece_of_[contact.other];
-    if (a != b) Connect(a, b, {contact.clearance, contact.cell});
+    if (a != b) Connect(a, b, {contact.clearance, contact.width, contact.cell});
   }
 }
 
@@ -94,10 +94,15 @@ std::int32_t PieceGraph::PieceAbove(std::int32_t cell,
 }
 
 void PieceGraph::Connect(std::int32_t a, std::int32_t b, const PieceEdge& edge) {
+  // The widest contact: the highest clearance, then the widest passage.
+  const auto wider = [&](const PieceEdge& than) {
+    return edge.clearance > than.clearance ||
+           (edge.clearance == than.clearance && edge.width > than.width);
+  };
   PieceEdge& ab = adjacency_[a][b];
-  if (edge.clearance > ab.clearance) ab = edge;
+  if (wider(ab)) ab = edge;
   PieceEdge& ba = adjacency_[b][a];
-  if (edge.clearance > ba.clearance) ba = edge;
+  if (wider(ba)) ba = edge;
 }
 
 void PieceGraph::Merge(std::int32_t from, std::int32_t into) {

@@ -15,7 +15,8 @@ namespace linemap::segment_internal {
 
 struct PieceEdge {
   std::uint16_t clearance = 0;
-  std::int32_t cell = 0;  // padded cell of the widest contact
+  std::uint16_t width = 0;  // the passage's there (PassageWidth), chamfer units
+  std::int32_t cell = 0;    // padded cell of the widest contact
 };
 
 // The pieces of the merge tree, their areas, peaks and the passages between

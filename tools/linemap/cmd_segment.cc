@@ -25,6 +25,12 @@ const CommandSpec kSegmentSpec = {
     "(passages 0.5-1.2 m wide narrower than both sides); each room is the closed\n"
     "chain of its boundary cells, with an id, its area and its kind (room or\n"
     "corridor). Blobs are stand-alone obstacles inside rooms (furniture).\n"
+    "A doorway is told by the clearance c (cells) at the passage's middle, so\n"
+    "the range has up to a cell of slack below and two above: an opening of n\n"
+    "cells along the grid (c = ceil(n/2)) is a door when 3c lies in\n"
+    "[round(1.5 MIN/res), round(1.5 (MAX/res + 2))]; the default 0.5,1.2 takes\n"
+    "openings of 0.45-1.30 m at 0.05 m/cell, 0.5-1.4 m at 0.1 m/cell. A door's\n"
+    "width_m is the opening's width (n cells x resolution).\n"
     "paper: each room is the free space around the robot (--pose) or every free\n"
     "component of at least 400 cells, its border closed by morphology and the Lee\n"
     "algorithm. Coordinates are map-frame metres of cell centres.",
@@ -38,11 +44,15 @@ const CommandSpec kSegmentSpec = {
         {"--method", "rooms|paper", "segmentation method (default: rooms)"},
         {"--doors", "MIN,MAX",
          "rooms: width range of doorways in metres (default 0.5,1.2; passages in it "
-         "split rooms when narrower than both sides)"},
+         "split rooms when narrower than both sides; up to a cell of slack below, two above, as "
+         "said above)"},
         {"--max-room-area", "M2",
          "rooms: spaces joined by an opening wider than a door stay apart when "
          "together larger than this (square metres; default 0 = no limit)"},
-        {"--pose", "X,Y", "robot position in map-frame metres (implies --method paper)"},
+        {"--pose", "X,Y",
+         "robot position in map-frame metres (implies --method paper); a position off free "
+         "space moves to the nearest free cell at most 3 cells away in column and row (0.15 m at "
+         "0.05 m/cell; nearest by that count), else it is refused"},
         {"--paper-border", "",
          "heavy border exactly as the paper: the shortest path may "
          "also cut across narrow parts of the room (implies --method paper)"},
@@ -80,10 +90,37 @@ std::string RingJson(const Grid& grid, const std::vector<CellIndex>& chain) {
   return ChainJson(grid, reversed, true);
 }
 
-std::string BoxJson(const Grid& grid, const BoundingBox& box) {
+// A blob's bbox: [x0, y0, x1, y1], the axis-aligned box in map-frame
+// metres around the squares of its outline's cells (which run around its
+// cells, and around the unknown core or the gaps of a group: the blob's
+// cell box) and of its cells (x0 <= x1, y0 <= y1). With a yaw in the origin
+// the squares are turned, so the box is that of their turned corners, not
+// two corners of the cell box taken into metres. A blob without either
+// gets the box of its cell box's corners.
+std::string BlobBoxJson(const Grid& grid, const FurnitureBlob& blob) {
   double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  grid.CellToWorld(box.min_col - 0.5, box.min_row - 0.5, &x0, &y0);
-  grid.CellToWorld(box.max_col + 0.5, box.max_row + 0.5, &x1, &y1);
+  bool first = true;
+  const auto add_square = [&](double col, double row) {
+    for (const double dc : {-0.5, 0.5}) {
+      for (const double dr : {-0.5, 0.5}) {
+        double x = 0, y = 0;
+        grid.CellToWorld(col + dc, row + dr, &x, &y);
+        x0 = first ? x : std::min(x0, x);
+        y0 = first ? y : std::min(y0, y);
+        x1 = first ? x : std::max(x1, x);
+        y1 = first ? y : std::max(y1, y);
+        first = false;
+      }
+    }
+  };
+  for (const CellIndex& cell : blob.outline) add_square(cell.col, cell.row);
+  for (const CellIndex& cell : blob.cells) add_square(cell.col, cell.row);
+  if (first) {
+    add_square(blob.box.min_col, blob.box.min_row);
+    add_square(blob.box.max_col, blob.box.max_row);
+    add_square(blob.box.min_col, blob.box.max_row);
+    add_square(blob.box.max_col, blob.box.min_row);
+  }
   return "[" + JsonNumber(x0) + "," + JsonNumber(y0) + "," + JsonNumber(x1) + "," + JsonNumber(y1) +
          "]";
 }
@@ -113,7 +150,7 @@ std::string BlobsJson(const Grid& grid, const std::vector<FurnitureBlob>& blobs,
     json.Add("against_wall", blob.against_wall)
         .Add("cell_count", std::uint64_t{blob.cell_count})
         .AddRaw("first_cell", PointJson(grid, blob.first_cell))
-        .AddRaw("bbox", BoxJson(grid, blob.box))
+        .AddRaw("bbox", BlobBoxJson(grid, blob))
         .AddRaw("outline", ChainJson(grid, blob.outline, false));
     out += (i ? "," : "") + json.str();
   }
@@ -254,7 +291,7 @@ std::string RoomsGeoJson(const Grid& grid, const Segmentation& seg) {
         .Add("index", std::uint64_t{i})
         .Add("room", blob.room)
         .Add("cells", std::uint64_t{blob.cell_count})
-        .AddRaw("bbox", BoxJson(grid, blob.box));
+        .AddRaw("bbox", BlobBoxJson(grid, blob));
     add(GeoFeature(props, "Polygon", "[" + BlobRing(grid, blob) + "]"));
   }
   JsonObject top;
@@ -337,6 +374,15 @@ int RunSegment(const std::vector<std::string>& args) {
   if (method && *method == "rooms" && (parsed->Has("--pose") || parsed->Has("--paper-border"))) {
     return ReportError("segment",
                        InvalidArgumentError("--pose and --paper-border need --method paper"));
+  }
+  // The reverse: the rooms method's options would be ignored by the paper's.
+  for (const char* rooms_only : {"--doors", "--max-room-area"}) {
+    if (paper && parsed->Has(rooms_only)) {
+      return ReportError(
+          "segment", InvalidArgumentError(std::string(rooms_only) +
+                                          " is an option of --method rooms; --method paper (which "
+                                          "--pose and --paper-border imply) has no doorways"));
+    }
   }
   options.method = paper ? SegmentationMethod::kPaperBorder : SegmentationMethod::kRooms;
   if (parsed->Has("--doors")) {

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -205,6 +206,32 @@ TEST(RoomsTest, SplitsOnlyAtDoorWidths) {
   ASSERT_TRUE(wide.ok());
   EXPECT_EQ(wide->rooms.size(), 1u);
   EXPECT_TRUE(wide->doors.empty());
+}
+
+// Which openings the default range 0.5..1.2 m takes, and the width a door
+// reports. The rule goes by the clearance c = ceil(n / 2) cells at the
+// middle of an opening of n cells (segmentation.h): 3 c within
+// [round(1.5 * 0.5 / res), round(1.5 * (1.2 / res + 2))], which is [15, 39]
+// at 0.05 m/cell, so c in 5..13 and n in 9..26 (0.45..1.30 m), and [8, 21]
+// at 0.1 m/cell, so c in 3..7 and n in 5..14 (0.5..1.4 m), worked out by
+// hand here. The door's width_m is n cells: a 1.40 m opening of 0.1 m cells
+// used to read 1.3 (2 c - 1 cells), a 0.50 m one of 0.05 m cells 0.45.
+TEST(RoomsTest, DoorsAreTheOpeningsTheDocumentedSlackTakesAtTheirOwnWidth) {
+  for (const auto& [res, first, last] : {std::tuple{0.05, 9, 26}, std::tuple{0.1, 5, 14}}) {
+    for (int gap = first - 3; gap <= last + 3; ++gap) {
+      SCOPED_TRACE(std::to_string(res) + " m/cell, opening of " + std::to_string(gap) + " cells");
+      Grid grid = TwoRooms(gap);
+      grid.meta.resolution = res;
+      StatusOr<Segmentation> seg = SegmentMap(grid);
+      ASSERT_TRUE(seg.ok()) << seg.status().message();
+      const bool door = gap >= first && gap <= last;
+      EXPECT_EQ(seg->rooms.size(), door ? 2u : 1u);
+      ASSERT_EQ(seg->doors.size(), door ? 1u : 0u);
+      if (door) {
+        EXPECT_NEAR(seg->doors[0].width_m, gap * res, 1e-12);
+      }
+    }
+  }
 }
 
 TEST(RoomsTest, DoorRangeIsAnOption) {
