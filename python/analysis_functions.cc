@@ -135,7 +135,7 @@ py::dict RoomDict(const Grid& grid, const RoomBorder& room, bool by_rooms) {
 // split at doorways (whose widths and area limit the library checks).
 SegmentationOptions SegmentOptionsFor(const Grid& grid, const py::object& method_arg,
                                       const py::object& pose, const py::object& doors,
-                                      double max_room_area, bool paper_border) {
+                                      const py::object& max_room_area, bool paper_border) {
   SegmentationOptions options;
   options.robot = PoseArgument(grid, pose);
   const bool implied = options.robot.has_value() || paper_border;
@@ -154,16 +154,27 @@ SegmentationOptions SegmentOptionsFor(const Grid& grid, const py::object& method
   }
   options.method =
       method == "paper" ? SegmentationMethod::kPaperBorder : SegmentationMethod::kRooms;
-  const std::vector<double> widths = FiniteFloats(doors, "doors (min, max) in metres", 2, 2);
-  options.min_door_width_m = widths[0];
-  options.max_door_width_m = widths[1];
-  options.max_room_area_m2 = max_room_area;
+  // The rooms method's options would be ignored by the paper's (None:
+  // not given, the defaults).
+  if (method == "paper" && (!doors.is_none() || !max_room_area.is_none())) {
+    throw py::value_error(
+        std::string(!doors.is_none() ? "doors" : "max_room_area") +
+        " is an option of method=\"rooms\"; method=\"paper\" (which pose and paper_border "
+        "imply) has no doorways");
+  }
+  if (!doors.is_none()) {
+    const std::vector<double> widths = FiniteFloats(doors, "doors (min, max) in metres", 2, 2);
+    options.min_door_width_m = widths[0];
+    options.max_door_width_m = widths[1];
+  }
+  if (!max_room_area.is_none()) options.max_room_area_m2 = max_room_area.cast<double>();
   options.protect_room_interior = !paper_border;
   return options;
 }
 
 py::dict Segment(const Map& map, const py::object& method, const py::object& pose,
-                 const py::object& door_widths, double max_room_area, bool paper_border) {
+                 const py::object& door_widths, const py::object& max_room_area,
+                 bool paper_border) {
   const Grid grid = GridFromMap(map);
   const SegmentationOptions options =
       SegmentOptionsFor(grid, method, pose, door_widths, max_room_area, paper_border);
@@ -430,8 +441,8 @@ tolerance; ``straight_walls`` one segment per straight wall; ``pose`` (x, y)
 in metres floods only the robot's free space.
 )doc");
   module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("method") = py::none(),
-             py::arg("pose") = py::none(), py::arg("doors") = py::make_tuple(0.5, 1.2),
-             py::arg("max_room_area") = 0.0, py::arg("paper_border") = false, R"doc(
+             py::arg("pose") = py::none(), py::arg("doors") = py::none(),
+             py::arg("max_room_area") = py::none(), py::arg("paper_border") = false, R"doc(
 Rooms, doorways and furniture blobs, as ``linemap segment -o OUT.json``
 writes them (without its timings), in map-frame metres. Without ``pose`` the
 free space is split into rooms and corridors at doorways:
@@ -445,11 +456,12 @@ of the robot's free component (``linemap segment --pose``): method "paper",
 rooms [{free_cells, enclosed_free_cells, closed_by_lee, chain, chain_cells}],
 no doors, blobs without room. Options as ``linemap segment``'s flags:
 ``method`` "rooms" or "paper" (default rooms, paper with ``pose`` or
-``paper_border``); ``doors`` (min, max) doorway widths in metres (default
-(0.5, 1.2)); ``max_room_area`` square metres above which spaces joined by a
-wide opening stay apart (0 = no limit); ``paper_border`` the paper's heavy
-border exactly (its shortest path may cut across narrow parts of a room).
-Values the library refuses raise ValueError.
+``paper_border``); ``doors`` (min, max) doorway widths in metres (None: the
+default (0.5, 1.2)); ``max_room_area`` square metres above which spaces
+joined by a wide opening stay apart (None or 0: no limit); both are options
+of the rooms method, and given with the paper's they raise ValueError;
+``paper_border`` the paper's heavy border exactly (its shortest path may cut
+across narrow parts of a room). Values the library refuses raise ValueError.
 )doc");
   module.def("plan", &Plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::kw_only(),
              py::arg("robot_width") = 0.4, py::arg("robot_length") = 0.4, py::arg("margin") = 0.05,

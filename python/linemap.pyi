@@ -188,8 +188,8 @@ def segment(
     *,
     method: Optional[str] = None,
     pose: Optional[Sequence[float]] = None,
-    doors: Tuple[float, float] = (0.5, 1.2),
-    max_room_area: float = 0.0,
+    doors: Optional[Sequence[float]] = None,
+    max_room_area: Optional[float] = None,
     paper_border: bool = False,
 ) -> dict[str, Any]: ...
 def plan(

@@ -113,6 +113,10 @@ REFUSED_OPTIONS = [
     ("segment", {"method": "rooms", "pose": (1, 1)}, ValueError, "paper"),
     ("segment", {"doors": (0.5,)}, ValueError, "doors"),
     ("segment", {"doors": (1.2, 0.5)}, ValueError, None),
+    # The rooms method's options with the paper's, as the CLI refuses them.
+    ("segment", {"pose": (2, 2), "doors": (0.6, 1.0)}, ValueError, "doors is an option of"),
+    ("segment", {"method": "paper", "max_room_area": 10}, ValueError, "max_room_area"),
+    ("segment", {"paper_border": True, "doors": (0.5, 1.2)}, ValueError, "method=\"rooms\""),
 ]
 
 
