@@ -167,7 +167,14 @@ SegmentationOptions SegmentOptionsFor(const Grid& grid, const py::object& method
     options.min_door_width_m = widths[0];
     options.max_door_width_m = widths[1];
   }
-  if (!max_room_area.is_none()) options.max_room_area_m2 = max_room_area.cast<double>();
+  if (!max_room_area.is_none()) {
+    // A number, as the other float options take (a bool or a str is no area).
+    if (py::isinstance<py::bool_>(max_room_area) ||
+        !(py::isinstance<py::float_>(max_room_area) || py::isinstance<py::int_>(max_room_area))) {
+      throw py::type_error("max_room_area must be a number of square metres or None");
+    }
+    options.max_room_area_m2 = max_room_area.cast<double>();
+  }
   options.protect_room_interior = !paper_border;
   return options;
 }

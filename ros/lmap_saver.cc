@@ -45,9 +45,9 @@ constexpr const char* kUsage =
     "  --free P         occupancy in percent at or below which a cell is free (default 25)\n"
     "  --tolerance T    cells (0..4) by which the stored map may differ (default 0: exact)\n"
     "  --raster-only    store the cells only, no vector layers\n"
-    "  --compact        code the cells for size: about 4.5 % smaller, 4.1x the decode time\n"
-    "                   (4.8 against 1.2 ms at the median; a median 5.5x per map, up to\n"
-    "                   9.2x); with --raster-only the smallest exact file\n"
+    "  --compact        code the cells for size: about 4.5 % smaller, 2.8x the decode time\n"
+    "                   (3.2 against 1.1 ms at the median; a median 4.7x per map, up to\n"
+    "                   9.6x); with --raster-only the smallest exact file\n"
     "  --wait-master S  seconds to wait for the ROS master (default 10)\n";
 
 struct SaverArgs {

@@ -83,7 +83,7 @@ TEST(GridTest, PointOnACellsLeftOrLowerEdgeTypedInDecimalIsInThatCell) {
     }
   }
   EXPECT_EQ(were_off, 24) << "plain division no longer shows the case";
-  // -6.9 m, -17.175 m: column 2's left edge, row 6's middle (the audit's).
+  // -6.9 m, -17.175 m: column 2's left edge, row 6's middle (a point on kth's map).
   const std::optional<CellIndex> audit = CellHoldingPoint(meta, 260, 781, -6.9, -17.175);
   ASSERT_TRUE(audit.has_value());
   EXPECT_EQ(audit->col, 2);

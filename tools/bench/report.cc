@@ -316,7 +316,7 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
   return {"Scaling",
           "Generated office maps (96-cell rooms, doors, furniture, speckle) of 1024^2, 2048^2, "
           "4096^2 and 8192^2 cells and of 20,768 x 13,612 (the largest map nav2 users have "
-          "reported, navigation2#635; the 20,768-cell square's corner), each drawn anew rather "
+          "reported; the 20,768-cell square's corner), each drawn anew rather "
           "than tiled (zlib would find the repeated tiles and speed up); lmap2 = the default "
           ".lmap 2.0 file; Mcells = millions of cells; CPU time per Mcell (median of `runs` "
           "samples: at least 9 up to 16 Mcells, 5 at 67 and 3 at 283; a sample of an operation "

@@ -281,7 +281,7 @@ struct ScalingSize {
 
 // The scaling maps up to `max_mcells` (1, 4, 16, 64 or 282): squares of
 // 1024, 2048, 4096 and 8192 cells a side, then the largest map nav2 users
-// have reported (navigation2#635: 20,768 x 13,612 cells, 282 Mcells).
+// have reported (20,768 x 13,612 cells, 282 Mcells).
 std::vector<ScalingSize> ScalingSizes(int max_mcells) {
   std::vector<ScalingSize> sizes;
   for (int side : {1, 2, 4, 8}) {

@@ -224,8 +224,14 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
   // A map of no cells is no map a robot saved, and its file would decode
   // to nothing a map server can serve.
   if (grid->size() == 0) {
-    return InvalidArgumentError(where + ": a map of " + std::to_string(grid->width()) + " x " +
-                                std::to_string(grid->height()) + " cells: nothing to save");
+    const std::string what = where + ": a map of " + std::to_string(grid->width()) + " x " +
+                             std::to_string(grid->height()) + " cells: nothing to save";
+    // With --all the other maps are still saved; the empty one is named.
+    if (selection.all) {
+      std::fprintf(stderr, "linemap encode: %s (skipped)\n", what.c_str());
+      return Status::Ok();
+    }
+    return InvalidArgumentError(what);
   }
   if (const std::optional<Pose2D>& pose = visit->options->robot_pose) {
     // As for a map file, the pose must fall in a cell (the one whose square

@@ -44,7 +44,11 @@ const CommandSpec kEncodeSpec = {
     "A progress bar is drawn on stderr when it is a terminal (not with --json).\n"
     "The output is written atomically: an existing OUT.lmap is replaced only\n"
     "by a complete new file. OUT.lmap must end in .lmap and may not be the input\n"
-    "map or the image its YAML names.",
+    "map or the image its YAML names.\n"
+    "An .lmap as MAP is saved again with its metadata; one saved within a\n"
+    "tolerance stays marked with its T (its cells are not the robot's map) and\n"
+    "cannot take --tolerance again; one that does not name its T (written\n"
+    "before files named it, or a lossy 1.0 file) is refused.",
     WithBagOptions(WithMapLoadOptions({
         {"-o", "OUT.lmap", "output file (required; ends in .lmap)"},
         {"--tolerance", "T",
@@ -66,8 +70,8 @@ const CommandSpec kEncodeSpec = {
         {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
         {"--compact", "",
          "code the cells for size (a version 2.3 file): about 4.5 % smaller (8.5 % with "
-         "--raster-only), about 4x the decode time at the median (a median 5.5x per map, up "
-         "to 9.2x) and 1.3x the encode time (files saved with --tolerance code their blocks "
+         "--raster-only), about 3x the decode time at the median (a median 4.7x per map, up "
+         "to 9.6x) and 1.3x the encode time (files saved with --tolerance code their blocks "
          "that way already)"},
         {"--threads", "N",
          "threads to use, 0..4096 (default 0: one per core); the bytes do not depend on it"},
@@ -85,7 +89,7 @@ const CommandSpec kEncodeSpec = {
          "robot pose in map-frame metres (on the map), stored as metadata (the layers are the "
          "whole map's whatever the pose)"},
         {"--time", "TEXT",
-         "creation time stored as metadata: an ISO 8601 date or time as the format's `time` "
+         "creation time stored as metadata: an ISO 8601 date or date-time as the format's `time` "
          "key is, e.g. 2024-05-01T12:00:00Z (default: none, for reproducible output); other "
          "text is refused"},
         {"--metadata", "",
@@ -189,7 +193,7 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     }
     if (!IsIso8601DateTime(*time)) {
       return InvalidArgumentError("--time '" + *time +
-                                  "' is not an ISO 8601 date or time such as "
+                                  "' is not an ISO 8601 date or date-time such as "
                                   "2024-05-01T12:00:00Z (or 2024-05-01, 2024-05-01T12:00+02:00)");
     }
     options.time = *time;
@@ -209,23 +213,41 @@ Status InheritFromLmap(const std::string& map_path, const ParsedArgs& parsed,
                        EncodeOptions* options) {
   if (!IsLmapPath(map_path)) return Status::Ok();
   LINEMAP_ASSIGN_OR_RETURN(MapReadOptions read, MapReadOptionsFrom(parsed));
+  // What the command line gave wins over the input's metadata.
+  const struct {
+    bool creator, time, frame_id, robot_pose;
+  } given{!options->creator.empty(), !options->time.empty(), !options->frame_id.empty(),
+          options->robot_pose.has_value()};
   LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(map_path, read.lmap));
-  if (const std::optional<int> t =
-          ToleranceCellsOf(header.major, header.lossless, header.metadata)) {
+  if (!header.lossless) {
+    const std::optional<int> t = ToleranceCellsOf(header.major, header.lossless, header.metadata);
+    const std::string what = t ? "within a tolerance of " + std::to_string(*t) + " cells"
+                             : header.major < 2
+                                 ? "lossy (version 1.0)"
+                                 : "within a tolerance it does not name (written before files "
+                                   "named their T)";
     if (options->tolerance_cells > 0) {
-      return InvalidArgumentError(
-          "'" + map_path + "' was saved within a tolerance of " + std::to_string(*t) +
-          " cells: saving it within another would not keep the guarantees against the "
-          "original map; save the original map with --tolerance");
+      return InvalidArgumentError("'" + map_path + "' was saved " + what +
+                                  ": saving it within another tolerance would not keep the "
+                                  "guarantees against the original map; save the original map "
+                                  "with --tolerance");
+    }
+    // A copy must say its cells are not the robot's map, and which
+    // guarantees hold: without a T it could only claim to be exact.
+    if (!t) {
+      return InvalidArgumentError("'" + map_path + "' was saved " + what +
+                                  ": a copy could not say which guarantees hold against the "
+                                  "original map; save the original map");
     }
     options->simplified_within_cells = *t;
   }
+  // The last entry of a repeated key, as readers take it.
   for (const auto& [key, value] : header.metadata) {
-    if (key == "creator" && options->creator.empty()) options->creator = value;
-    if (key == "time" && options->time.empty()) options->time = value;
-    if (key == "frame_id" && options->frame_id.empty()) options->frame_id = value;
+    if (key == "creator" && !given.creator) options->creator = value;
+    if (key == "time" && !given.time) options->time = value;
+    if (key == "frame_id" && !given.frame_id) options->frame_id = value;
     double x = 0, y = 0, yaw = 0;
-    if (key == "robot_pose" && !options->robot_pose &&
+    if (key == "robot_pose" && !given.robot_pose &&
         std::sscanf(value.c_str(), "%lf %lf %lf", &x, &y, &yaw) == 3) {
       options->robot_pose = Pose2D{x, y, yaw};
     }

@@ -107,17 +107,18 @@ struct CheckVerdict {
 // What differs between the two maps' frames (same size: eval refuses
 // others), e.g. "resolution 0.05 against 0.1 m/cell"; empty when nothing.
 std::string FrameDifference(const MapMetadata& a, const MapMetadata& b) {
+  // Shortest exact decimals: six digits would print 0.05 against 0.05.
+  const auto pose = [](const Pose2D& p) {
+    return JsonNumber(p.x) + "," + JsonNumber(p.y) + "," + JsonNumber(p.yaw);
+  };
   std::string out;
-  char text[160];
   if (a.resolution != b.resolution) {
-    std::snprintf(text, sizeof(text), "resolution %g against %g m/cell", a.resolution,
-                  b.resolution);
-    out += text;
+    out = "resolution " + JsonNumber(a.resolution) + " against " + JsonNumber(b.resolution) +
+          " m/cell";
   }
   if (!(a.origin == b.origin)) {
-    std::snprintf(text, sizeof(text), "%sorigin %g,%g,%g against %g,%g,%g", out.empty() ? "" : "; ",
-                  a.origin.x, a.origin.y, a.origin.yaw, b.origin.x, b.origin.y, b.origin.yaw);
-    out += text;
+    out += (out.empty() ? "" : "; ") + std::string("origin ") + pose(a.origin) + " against " +
+           pose(b.origin);
   }
   return out;
 }
@@ -134,7 +135,8 @@ CheckVerdict VerdictOf(const GridComparison& m, const std::string& frame_differe
   const std::size_t differ = m.cells - m.cells_equal;
   if (differ > 0) {
     return {false, std::to_string(differ) + (differ == 1 ? " cell differs" : " cells differ") +
-                       " and no tolerance was checked (an exact copy was expected)"};
+                       " and no tolerance was checked (an exact copy was expected; --tolerance T "
+                       "checks the guarantees within T)"};
   }
   return {true, "every cell is equal"};
 }

@@ -32,7 +32,8 @@ const CommandSpec kInfoSpec = {
     "tolerance says so on its first line, with T in cells and metres.",
     WithMapLoadOptions({{"--json", "",
                          "print one JSON object with keys width, height, "
-                         "resolution, origin, free, occupied, unknown (an .lmap file "
+                         "resolution, origin, free, occupied, unknown, mode, negate, "
+                         "occupied_thresh, free_thresh (an .lmap file "
                          "also: version, lossless, tolerance_cells (the T a file saved within "
                          "a tolerance names, else null), walls, wall_segments, rooms, "
                          "furniture, chunks, and metadata: an object of the file's metadata "

@@ -62,6 +62,13 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
   LineExtractionOptions options;
   if (args.Has("--straight-walls")) options = StraightWalls(options);
   const std::string method = args.Get("--method").value_or("linemap");
+  if (method == "rmline") {
+    options.method = LineMethod::kRmLine;
+  } else if (method == "linemap") {
+    options.method = LineMethod::kLinemap;
+  } else {
+    return InvalidArgumentError("--method must be rmline or linemap, not '" + method + "'");
+  }
   // An option of the other method would be ignored without a word.
   const bool rmline = method == "rmline";
   for (const char* option :
@@ -71,13 +78,6 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
       return InvalidArgumentError(std::string(option) + " is an option of the " +
                                   (rmline ? "linemap" : "rmline") + " method, not of " + method);
     }
-  }
-  if (method == "rmline") {
-    options.method = LineMethod::kRmLine;
-  } else if (method == "linemap") {
-    options.method = LineMethod::kLinemap;
-  } else {
-    return InvalidArgumentError("--method must be rmline or linemap, not '" + method + "'");
   }
   LINEMAP_ASSIGN_OR_RETURN(options.rmline_dtheta_deg,
                            args.GetDouble("--dtheta", options.rmline_dtheta_deg));

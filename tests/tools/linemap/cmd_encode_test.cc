@@ -226,8 +226,6 @@ TEST(CmdEncodeTest, JsonSaysWhetherAToleranceFileIsExact) {
       << raster.out;
 }
 
-// --compact writes an exact version 2.3 file no larger than the default
-// one (each tile keeps the smallest of more codings).
 // An .lmap saved again (to make it --compact, say) keeps what its metadata
 // says: a file saved within 2 cells, copied exactly, still names T = 2
 // (its cells are not the robot's map: checked against the original, only
@@ -269,6 +267,15 @@ TEST(CmdEncodeTest, AnLmapSavedAgainKeepsItsToleranceAndMetadata) {
   EXPECT_EQ(twice.exit_code, 2);
   EXPECT_NE(twice.err.find("was saved within a tolerance of 2 cells"), std::string::npos)
       << twice.err;
+  // A file simplified without naming its T (written before files named it,
+  // or a lossy 1.0 file) cannot be copied as exact, nor said to keep a T.
+  for (const char* old : {"willow_v2_2_tolerance_1.lmap", "lse_arena_lossy.lmap"}) {
+    const CliResult r = RunCli(
+        {"encode", testing::SourceDir() + "/tests/data/lmap/" + old, "-o", dir + "/old.lmap"});
+    EXPECT_EQ(r.exit_code, 2) << old;
+    EXPECT_NE(r.err.find("a copy could not say which guarantees hold"), std::string::npos) << r.err;
+    EXPECT_FALSE(testing::FileExists(dir + "/old.lmap"));
+  }
   // An exact file saved again is exact and names no T.
   ASSERT_EQ(RunCli({"encode", depot, "-o", dir + "/exact.lmap"}).exit_code, 0);
   const CliResult exact =
@@ -277,6 +284,8 @@ TEST(CmdEncodeTest, AnLmapSavedAgainKeepsItsToleranceAndMetadata) {
       << exact.out;
 }
 
+// --compact writes an exact version 2.3 file no larger than the default
+// one (each tile keeps the smallest of more codings).
 TEST(CmdEncodeTest, CompactFileIsExactVersionTwoThreeAndNoLarger) {
   const std::string dir = MakeTempDir("encode_compact");
   const std::string yaml = CopyDepot(dir);
@@ -397,10 +406,10 @@ TEST(CmdEncodeTest, TimeWithAControlCharacterIsRefused) {
 TEST(CmdEncodeTest, TimeThatIsNotIso8601IsRefused) {
   const std::string dir = MakeTempDir("encode_time_iso");
   const std::string yaml = CopyDepot(dir);
-  for (const char* time : {"yesterday", "2026-13-01", "2026-02-30x", "2026-01-01 12:00", "2026-1-1",
-                           "12:00", "2026-01-01T25:00", "2026-01-01T12:00:00+2", "\xff\xfe"}) {
+  for (const char* time : {"yesterday", "2026-13-01", "2026-01-01 12:00", "2026-1-1", "12:00",
+                           "2026-01-01T25:00", "2026-01-01T12:00:00+2", "\xff\xfe"}) {
     ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--time", time}, dir,
-                  {"--time", "is not an ISO 8601 date or time"});
+                  {"--time", "is not an ISO 8601 date or date-time"});
   }
   for (const char* time :
        {"2026-01-01", "2026-01-01T12:00", "2026-01-01T12:00:00Z", "2026-01-01T12:00:00.125+02:00",

@@ -190,7 +190,9 @@ TEST(CmdEvalTest, ToleranceFileIsCheckedAtTheTItNames) {
   const CliResult unchecked = RunCli({"eval", depot, dir + "/t7.lmap", "--check"});
   EXPECT_EQ(unchecked.exit_code, 1) << unchecked.out;
   EXPECT_NE(unchecked.out.find("check:                FAIL ("), std::string::npos) << unchecked.out;
-  EXPECT_NE(unchecked.out.find("no tolerance was checked (an exact copy was expected))\n"),
+  EXPECT_NE(unchecked.out.find(
+                "no tolerance was checked (an exact copy was expected; --tolerance T checks the "
+                "guarantees within T))\n"),
             std::string::npos)
       << unchecked.out;
   EXPECT_EQ(RunCli({"eval", depot, dir + "/exact.lmap", "--check"}).exit_code, 0);
@@ -207,9 +209,11 @@ TEST(CmdEvalTest, CheckExitsOneWhenTheSecondMapBreaksItsPromise) {
   EXPECT_EQ(RunCli({"eval", original, moved}).exit_code, 0);
   const CliResult exact = RunCli({"eval", original, moved, "--check"});
   EXPECT_EQ(exact.exit_code, 1) << exact.err;
-  EXPECT_NE(exact.out.find("check:                FAIL (2 cells differ and no tolerance was "
-                           "checked (an exact copy was expected))\n"),
-            std::string::npos)
+  EXPECT_NE(
+      exact.out.find("check:                FAIL (2 cells differ and no tolerance was "
+                     "checked (an exact copy was expected; --tolerance T checks the guarantees "
+                     "within T))\n"),
+      std::string::npos)
       << exact.out;
   const CliResult within = RunCli({"eval", original, moved, "--tolerance", "2", "--check"});
   EXPECT_EQ(within.exit_code, 1) << within.out;

@@ -40,7 +40,7 @@ TEST(CmdSegmentTest, WritesRoomsJsonAndPrintsCounts) {
   EXPECT_NE(json.find("{\"rooms\":[1,3],\"width_m\":0.6"), std::string::npos) << json;
 }
 
-// --doors from 0.7 m: the 0.55 m gap to the pocket is no doorway any more.
+// --doors from 0.7 m: the 0.6 m gap to the pocket is no doorway any more.
 TEST(CmdSegmentTest, DoorRangeAndMaxRoomArea) {
   const std::string dir = testing::MakeTempDir("cmd_segment_doors");
   const testing::CliResult narrow =
