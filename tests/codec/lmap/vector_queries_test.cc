@@ -45,6 +45,16 @@ std::vector<std::uint8_t> Depot(int side) {
   return *bytes;
 }
 
+// depot's layers in one section, in sections of 64 and of 16 cells (LAYR),
+// in the 2.0 layer chunks, and as a 1.0 file whose chains are its layers.
+std::vector<std::pair<std::string, std::vector<std::uint8_t>>> DepotInEveryLayerLayout() {
+  return {{"one section", Depot(0)},
+          {"sections of 64", Fixture("depot_v2_2_sections_64.lmap")},
+          {"sections of 16", Depot(16)},
+          {"2.0 chunks", Fixture("depot_v2_0.lmap")},
+          {"1.0", Fixture("depot_v1_room_chains.lmap")}};
+}
+
 // Whether the box of `points` shares a cell with the half-open window.
 bool MeetsWindow(const std::vector<CellIndex>& points, const CellWindow& w) {
   int c0 = INT_MAX, r0 = INT_MAX, c1 = INT_MIN, r1 = INT_MIN;
@@ -188,14 +198,8 @@ TEST(VectorQueriesTest, LayersAloneRefuseACellsChunkOfAnUnknownCoder) {
 }
 
 TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
-  // One section, sections of 64 and of 16 cells (LAYR), the 2.0 layer
-  // chunks, and a 1.0 file whose chains are its layers.
-  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files = {
-      {"one section", Depot(0)},
-      {"sections of 64", Fixture("depot_v2_2_sections_64.lmap")},
-      {"sections of 16", Depot(16)},
-      {"2.0 chunks", Fixture("depot_v2_0.lmap")},
-      {"1.0", Fixture("depot_v1_room_chains.lmap")}};
+  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files =
+      DepotInEveryLayerLayout();
   for (const auto& [name, bytes] : files) {
     SCOPED_TRACE(name);
     StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
@@ -217,12 +221,8 @@ TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
 // read, of the walls the test's own box test keeps; on files of sections
 // of 16 and 64 cells most windows skip the sections before theirs.
 TEST(VectorQueriesTest, WallsInAWindowKeepTheirIndicesInTheWholeFile) {
-  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files = {
-      {"one section", Depot(0)},
-      {"sections of 64", Fixture("depot_v2_2_sections_64.lmap")},
-      {"sections of 16", Depot(16)},
-      {"2.0 chunks", Fixture("depot_v2_0.lmap")},
-      {"1.0", Fixture("depot_v1_room_chains.lmap")}};
+  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files =
+      DepotInEveryLayerLayout();
   for (const auto& [name, bytes] : files) {
     SCOPED_TRACE(name);
     StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
