@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <random>
 #include <string>
 #include <tuple>
@@ -128,22 +129,21 @@ TEST(CodecTest, MetadataChunkIsReadBack) {
 TEST(CodecTest, RobotPoseChangesOnlyTheMetadata) {
   auto grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
   ASSERT_TRUE(grid.ok());
-  auto plain = EncodeLmap(*grid, EncodeOptions{});
-  ASSERT_TRUE(plain.ok());
-  auto plain_vectors = DecodeLmapVectors(*plain);
-  ASSERT_TRUE(plain_vectors.ok());
-  for (const Pose2D& pose : {Pose2D{30.19, 15.34, 0}, Pose2D{10, 5, 0.5}}) {
+  // The file of depot saved with a pose (none for nullopt), whole.
+  const auto saved = [&grid](std::optional<Pose2D> pose) {
     EncodeOptions options;
     options.robot_pose = pose;
-    auto posed = EncodeLmap(*grid, options);
-    ASSERT_TRUE(posed.ok());
-    auto vectors = DecodeLmapVectors(*posed);
-    ASSERT_TRUE(vectors.ok());
-    EXPECT_EQ(vectors->walls, plain_vectors->walls) << pose.x;
-    EXPECT_EQ(vectors->rooms, plain_vectors->rooms) << pose.x;
-    EXPECT_EQ(vectors->furniture, plain_vectors->furniture) << pose.x;
-    auto contents = DecodeLmapContents(*posed);
+    const StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
+    return bytes.ok() ? DecodeLmapContents(*bytes) : StatusOr<LmapContents>(bytes.status());
+  };
+  const StatusOr<LmapContents> plain = saved(std::nullopt);
+  ASSERT_TRUE(plain.ok());
+  for (const Pose2D& pose : {Pose2D{30.19, 15.34, 0}, Pose2D{10, 5, 0.5}}) {
+    const StatusOr<LmapContents> contents = saved(pose);
     ASSERT_TRUE(contents.ok());
+    EXPECT_EQ(contents->walls, plain->walls) << pose.x;
+    EXPECT_EQ(contents->rooms, plain->rooms) << pose.x;
+    EXPECT_EQ(contents->furniture, plain->furniture) << pose.x;
     ASSERT_EQ(contents->metadata.size(), 1u);
     EXPECT_EQ(contents->metadata[0].first, "robot_pose");
   }

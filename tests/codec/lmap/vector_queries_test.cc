@@ -87,6 +87,12 @@ LmapVectors Filtered(const LmapVectors& all, const CellWindow& w) {
 
 // Corners, single cells, edge rows and columns, the whole map, random
 // windows.
+// "col0,row0,col1,row1", for traces.
+std::string WindowName(const CellWindow& w) {
+  return std::to_string(w.col0) + "," + std::to_string(w.row0) + "," + std::to_string(w.col1) +
+         "," + std::to_string(w.row1);
+}
+
 std::vector<CellWindow> Windows(int w, int h, unsigned seed) {
   std::vector<CellWindow> out = {{0, 0, 1, 1},
                                  {w - 1, h - 1, w, h},
@@ -197,20 +203,47 @@ TEST(VectorQueriesTest, LayersAloneRefuseACellsChunkOfAnUnknownCoder) {
   EXPECT_TRUE(DecodeLmapVectors(depot).ok());
 }
 
-TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
-  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files =
-      DepotInEveryLayerLayout();
-  for (const auto& [name, bytes] : files) {
-    SCOPED_TRACE(name);
+// depot in every layer layout, read whole and in the windows of
+// Windows(seed), each read checked to succeed (a failed one is reported and
+// left out).
+struct WindowRead {
+  CellWindow window;
+  LmapVectors got;
+};
+struct LayoutReads {
+  std::string name;
+  LmapVectors all;
+  std::vector<WindowRead> windows;
+};
+std::vector<LayoutReads> ReadsOfEveryLayout(unsigned seed) {
+  std::vector<LayoutReads> out;
+  for (const auto& [name, bytes] : DepotInEveryLayerLayout()) {
     StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
-    ASSERT_TRUE(all.ok()) << all.status().message();
-    ASSERT_FALSE(all->rooms.empty());
-    for (const CellWindow& w : Windows(all->width, all->height, 7)) {
-      SCOPED_TRACE(std::to_string(w.col0) + "," + std::to_string(w.row0) + "," +
-                   std::to_string(w.col1) + "," + std::to_string(w.row1));
+    if (!all.ok()) {
+      ADD_FAILURE() << name << ": " << all.status().message();
+      continue;
+    }
+    LayoutReads reads{name, *std::move(all), {}};
+    for (const CellWindow& w : Windows(reads.all.width, reads.all.height, seed)) {
       StatusOr<LmapVectors> got = DecodeLmapVectorsInWindow(bytes, w);
-      ASSERT_TRUE(got.ok()) << got.status().message();
-      ExpectSameItems(*got, Filtered(*all, w));
+      if (!got.ok()) {
+        ADD_FAILURE() << name << " " << WindowName(w) << ": " << got.status().message();
+        continue;
+      }
+      reads.windows.push_back({w, *std::move(got)});
+    }
+    out.push_back(std::move(reads));
+  }
+  return out;
+}
+
+TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
+  for (const LayoutReads& layout : ReadsOfEveryLayout(7)) {
+    SCOPED_TRACE(layout.name);
+    ASSERT_FALSE(layout.all.rooms.empty());
+    for (const auto& [w, got] : layout.windows) {
+      SCOPED_TRACE(WindowName(w));
+      ExpectSameItems(got, Filtered(layout.all, w));
     }
   }
 }
@@ -221,35 +254,29 @@ TEST(VectorQueriesTest, ItemsInAWindowAreTheWholeFilesItemsThatMeetIt) {
 // read, of the walls the test's own box test keeps; on files of sections
 // of 16 and 64 cells most windows skip the sections before theirs.
 TEST(VectorQueriesTest, WallsInAWindowKeepTheirIndicesInTheWholeFile) {
-  const std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files =
-      DepotInEveryLayerLayout();
-  for (const auto& [name, bytes] : files) {
-    SCOPED_TRACE(name);
-    StatusOr<LmapVectors> all = DecodeLmapVectors(bytes);
-    ASSERT_TRUE(all.ok()) << all.status().message();
+  for (const LayoutReads& layout : ReadsOfEveryLayout(11)) {
+    SCOPED_TRACE(layout.name);
+    const LmapVectors& all = layout.all;
     // The whole read numbers its walls 0, 1, ... and says so by an empty list.
-    EXPECT_TRUE(all->wall_indices.empty());
-    for (std::size_t i = 0; i < all->walls.size(); ++i) EXPECT_EQ(all->WallIndex(i), i);
+    EXPECT_TRUE(all.wall_indices.empty());
+    for (std::size_t i = 0; i < all.walls.size(); ++i) EXPECT_EQ(all.WallIndex(i), i);
     std::size_t renumbered = 0;  // windows whose first wall is not the file's first
-    for (const CellWindow& w : Windows(all->width, all->height, 11)) {
-      SCOPED_TRACE(std::to_string(w.col0) + "," + std::to_string(w.row0) + "," +
-                   std::to_string(w.col1) + "," + std::to_string(w.row1));
+    for (const auto& [w, got] : layout.windows) {
+      SCOPED_TRACE(WindowName(w));
       std::vector<std::uint64_t> want;
-      for (std::size_t i = 0; i < all->walls.size(); ++i) {
-        if (MeetsWindow(all->walls[i].points, w)) want.push_back(i);
+      for (std::size_t i = 0; i < all.walls.size(); ++i) {
+        if (MeetsWindow(all.walls[i].points, w)) want.push_back(i);
       }
-      StatusOr<LmapVectors> got = DecodeLmapVectorsInWindow(bytes, w);
-      ASSERT_TRUE(got.ok()) << got.status().message();
-      ASSERT_EQ(got->walls.size(), want.size());
-      EXPECT_EQ(got->wall_indices, want);
+      ASSERT_EQ(got.walls.size(), want.size());
+      EXPECT_EQ(got.wall_indices, want);
       for (std::size_t i = 0; i < want.size(); ++i) {
-        EXPECT_EQ(got->WallIndex(i), want[i]);
-        EXPECT_EQ(got->walls[i], all->walls[want[i]]);
+        EXPECT_EQ(got.WallIndex(i), want[i]);
+        EXPECT_EQ(got.walls[i], all.walls[want[i]]);
       }
       renumbered += !want.empty() && want[0] != 0;
     }
     // (The 1.0 fixture has no segments.)
-    if (!all->walls.empty()) {
+    if (!all.walls.empty()) {
       EXPECT_GT(renumbered, 0u) << "no window tells the indices from positions";
     }
   }
