@@ -39,9 +39,7 @@ double MillisecondsSince(Clock::time_point start) {
 std::optional<CellPoint> PoseArgument(const Grid& grid, const py::object& pose) {
   if (pose.is_none()) return std::nullopt;
   const std::vector<double> xy = FiniteFloats(pose, "pose (x, y)", 2, 2);
-  CellPoint cell;
-  grid.WorldToCell(xy[0], xy[1], &cell.col, &cell.row);
-  return cell;
+  return RobotCellPoint(grid, xy[0], xy[1]);
 }
 
 // ---------------------------------------------------------------------------
@@ -57,20 +55,29 @@ py::array_t<double> SegmentRows(const Grid& grid, const std::vector<LineSegment>
   return ArrayOwning(std::move(rows), {static_cast<py::ssize_t>(segments.size()), 4});
 }
 
-py::dict Lines(const Map& map, const std::string& method, double epsilon, bool straight_walls,
-               const py::object& pose) {
+py::dict Lines(const Map& map, const std::string& method, const std::optional<double>& epsilon,
+               bool straight_walls, const py::object& pose) {
   const Grid grid = GridFromMap(map);
   LineExtractionOptions options;
-  if (straight_walls) options = StraightWalls(options);
   if (method == "linemap") {
     options.method = LineMethod::kLinemap;
   } else if (method == "rmline") {
     options.method = LineMethod::kRmLine;
+    // The linemap extractor's options would be ignored without a word, as
+    // `linemap lines --method rmline` refuses them.
+    if (epsilon)
+      throw py::value_error("epsilon is an option of the linemap extractor, not of rmline");
+    if (straight_walls) {
+      throw py::value_error("straight_walls is an option of the linemap extractor, not of rmline");
+    }
   } else {
     throw py::value_error("method must be 'linemap' or 'rmline', not '" + method + "'");
   }
-  if (!(epsilon >= 0.5)) throw py::value_error("epsilon must be at least 0.5 cells");
-  options.epsilon_cells = epsilon;
+  if (straight_walls) options = StraightWalls(options);
+  if (epsilon) {
+    if (!(*epsilon >= 0.5)) throw py::value_error("epsilon must be at least 0.5 cells");
+    options.epsilon_cells = *epsilon;
+  }
   options.robot = PoseArgument(grid, pose);
 
   StatusOr<LineExtraction> extraction = InternalError("not extracted");
@@ -437,15 +444,17 @@ py::dict Eval(const py::object& original_arg, const py::object& decoded_arg,
 
 void BindAnalysis(py::module_& module) {
   module.def("lines", &Lines, py::arg("map"), py::arg("method") = "linemap", py::kw_only(),
-             py::arg("epsilon") = 1.0, py::arg("straight_walls") = false,
+             py::arg("epsilon") = py::none(), py::arg("straight_walls") = false,
              py::arg("pose") = py::none(), R"doc(
 Wall line segments of ``map`` and the RM-Line paper's measures, as
 ``linemap lines --json``: lines, displ_cm, displ_cells, displ_max_cells, ms,
 edge_cells, share_within_1, cells_left_to_blobs, plus ``segments``, an (N, 4)
 float64 array x1, y1, x2, y2 in map-frame metres. ``method`` is "linemap"
-(default) or "rmline"; ``epsilon`` (cells, >= 0.5) the linemap extractor's
-tolerance; ``straight_walls`` one segment per straight wall; ``pose`` (x, y)
-in metres floods only the robot's free space.
+(default) or "rmline"; ``epsilon`` (cells, >= 0.5; None: 1.0) the linemap
+extractor's tolerance; ``straight_walls`` one segment per straight wall; both
+are options of the linemap extractor, and given with "rmline" they raise
+ValueError; ``pose`` (x, y) in metres floods only the robot's free space (a
+point on a cell's lower or left edge is in that cell).
 )doc");
   module.def("segment", &Segment, py::arg("map"), py::kw_only(), py::arg("method") = py::none(),
              py::arg("pose") = py::none(), py::arg("doors") = py::none(),

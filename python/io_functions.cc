@@ -281,6 +281,14 @@ py::dict VectorsDict(const LmapVectors& v) {
   out["origin"] = py::make_tuple(v.meta.origin.x, v.meta.origin.y, v.meta.origin.yaw);
   out["walls"] = WallSegments(frame, v.walls);
   out["wall_polylines"] = polylines;
+  // Each polyline's index among the whole file's walls, as `linemap export
+  // --window` numbers them: a window's walls keep the ids a viewer knows.
+  std::vector<std::int64_t> wall_ids(v.walls.size());
+  for (std::size_t i = 0; i < wall_ids.size(); ++i) {
+    wall_ids[i] = static_cast<std::int64_t>(v.WallIndex(i));
+  }
+  const auto walls = static_cast<py::ssize_t>(wall_ids.size());
+  out["wall_ids"] = ArrayOwning(std::move(wall_ids), {walls});
   out["rooms"] = rooms;
   out["furniture"] = furniture;
   return out;
@@ -504,7 +512,9 @@ The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
 files are read whole: their layers sit between raster chunks). A dict,
 geometry in map-frame metres through cell centres:
 ``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
-consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays,
+consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays, ``wall_ids`` (N,) int64
+each polyline's index among the whole file's walls (0, 1, 2, ... without a
+window; with one, the ids ``linemap export --window`` writes),
 ``rooms`` a list of {id, kind, outline: (K, 2) closed chain},
 ``furniture`` a list of {id, room_id or None, outline: (K, 2) closed chain},
 and the file's ``version``, ``width``, ``height``, ``resolution``, ``origin``.

@@ -179,7 +179,7 @@ def lines(
     map: Map,
     method: str = "linemap",
     *,
-    epsilon: float = 1.0,
+    epsilon: Optional[float] = None,
     straight_walls: bool = False,
     pose: Optional[Sequence[float]] = None,
 ) -> dict[str, Any]: ...

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -61,6 +62,17 @@ StatusOr<std::vector<LineSegment>> ExtractLineSegments(const Grid& grid,
   std::vector<std::uint32_t> speckle;
   return lines_internal::ExtractLinemapSegments(ComputeEdgeMap(grid, options.robot), options,
                                                 &speckle);
+}
+
+CellPoint RobotCellPoint(const Grid& grid, double x, double y) {
+  CellPoint point;
+  if (const std::optional<CellIndex> cell = grid.CellHolding(x, y)) {
+    point.col = cell->col;
+    point.row = cell->row;
+  } else {
+    grid.WorldToCell(x, y, &point.col, &point.row);
+  }
+  return point;
 }
 
 LineExtractionOptions StraightWalls(LineExtractionOptions options) {

@@ -195,6 +195,14 @@ StatusOr<LineExtraction> ExtractLines(const Grid& grid, const LineExtractionOpti
 // --straight-walls`.
 LineExtractionOptions StraightWalls(LineExtractionOptions options);
 
+// A robot position typed in map-frame metres (x, y) as the CellPoint the
+// extractors and SegmentMap take: the centre of the cell holding it
+// (CellHoldingPoint), so that a point typed on a cell's lower or left edge
+// (0.025 m at 0.05 m/cell, 0.49999999999999994 cells in doubles) is in that
+// cell, as --room-at and --window take it. Off the map (or not finite) the
+// unrounded position, which they refuse as off the map.
+CellPoint RobotCellPoint(const Grid& grid, double x, double y);
+
 // The paper's measures (section 3.1, Eq. 5) over the edge cells.
 struct LineFidelity {
   std::size_t edge_cells = 0;

@@ -108,6 +108,9 @@ REFUSED_OPTIONS = [
     ("lines", {"method": "hough"}, ValueError, "method"),
     ("lines", {"epsilon": 0.2}, ValueError, "epsilon"),
     ("lines", {"pose": (1.0,)}, ValueError, "pose"),
+    # The linemap extractor's options with rmline, as the CLI refuses them.
+    ("lines", {"method": "rmline", "epsilon": 1.0}, ValueError, "epsilon is an option of"),
+    ("lines", {"method": "rmline", "straight_walls": True}, ValueError, "straight_walls"),
     ("segment", {"method": "watershed"}, ValueError, "method"),
     ("segment", {"method": 1}, TypeError, "method"),
     ("segment", {"method": "rooms", "pose": (1, 1)}, ValueError, "paper"),
@@ -218,6 +221,18 @@ def test_plan_accepts_numpy_points_as_sequences(cli):
     for bad in (np.array([1.0]), np.array([[1.0, 2.0]]), np.array([np.nan, 1.0])):
         with pytest.raises(ValueError):
             linemap.plan(m, bad, (20, 10))
+
+
+def test_lines_pose_on_a_cells_lower_edge_is_in_that_cell():
+    # One wall on row 3 at 0.1 m/cell, origin (1, 2): 2.4 m is the lower edge
+    # of row 4 (free), though (2.4 - 2) / 0.1 - 0.5 is 3.4999999999999991 in
+    # doubles, which rounding put on the wall ("not on a free cell").
+    cells = np.full((7, 20), linemap.FREE, np.uint8)
+    cells[3, 2:18] = linemap.OCCUPIED
+    m = linemap.Map(cells, 0.1, (1.0, 2.0, 0.0))
+    assert linemap.lines(m, pose=(1.55, 2.4))["lines"] == 1
+    with pytest.raises(ValueError, match="not on a free cell"):
+        linemap.lines(m, pose=(1.55, 2.399))
 
 
 def test_plan_options_the_planner_refuses_raise_value_error():

@@ -768,8 +768,12 @@ def test_vectors_in_a_window_are_the_whole_files_items_whose_box_meets_it(depot_
     for window in windows:
         for source in (path, path.read_bytes()):
             got = linemap.vectors(source, window_cells=window)
-            polylines = [p for p in whole["wall_polylines"] if meets(whole, p, window)]
+            kept = [i for i, p in enumerate(whole["wall_polylines"]) if meets(whole, p, window)]
+            polylines = [whole["wall_polylines"][i] for i in kept]
             assert len(got["wall_polylines"]) == len(polylines)
+            # Each wall keeps its id in the whole file.
+            assert got["wall_ids"].dtype == np.int64
+            assert got["wall_ids"].tolist() == kept
             for a, b in zip(got["wall_polylines"], polylines):
                 assert np.array_equal(a, b)
             pairs = [(*p[i], *p[i + 1]) for p in polylines for i in range(len(p) - 1)]
@@ -786,6 +790,7 @@ def test_vectors_in_a_window_are_the_whole_files_items_whose_box_meets_it(depot_
     # The whole map and the middle windows hold walls and rooms.
     assert nonempty >= 4
     assert len(linemap.vectors(path, window_cells=(0, 0, w, h))["rooms"]) == len(whole["rooms"])
+    assert whole["wall_ids"].tolist() == list(range(len(whole["wall_polylines"])))
 
 
 def test_vectors_window_is_checked(depot_lmap):

@@ -112,15 +112,26 @@ const CommandSpec kEncodeSpec = {
 
 namespace {
 
-// The extended ISO 8601 forms a map's `time` takes: a date (YYYY-MM-DD),
-// optionally "T" and hh:mm[:ss[.fraction]], optionally a zone (Z, +hh:mm,
-// +hhmm or +hh, or -). The format's `time` key is ISO 8601 text, which a
-// reader may parse; "yesterday" would be stored and fail there.
+// Days in `month` (1-12) of `year` in the Gregorian calendar ISO 8601 uses.
+int DaysInMonth(int year, int month) {
+  static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+  return month == 2 && leap ? 29 : kDays[month - 1];
+}
+
+// The extended ISO 8601 forms a map's `time` takes: a date (YYYY-MM-DD)
+// that the calendar has, optionally "T" and hh:mm[:ss[.fraction]],
+// optionally a zone (Z, +hh:mm, +hhmm or +hh, or -). The format's `time`
+// key is ISO 8601 text, which a reader may parse; "yesterday" or
+// 2026-02-30 would be stored and fail there.
 bool IsIso8601DateTime(const std::string& text) {
   static const std::regex kForm(
       R"((\d{4})-(0[1-9]|1[0-2])-(0[1-9]|[12]\d|3[01]))"
       R"((T([01]\d|2[0-3]):[0-5]\d(:([0-5]\d|60)(\.\d+)?)?(Z|[+-]([01]\d|2[0-3])(:?[0-5]\d)?)?)?)");
-  return std::regex_match(text, kForm);
+  std::smatch date;
+  if (!std::regex_match(text, date, kForm)) return false;
+  return std::stoi(date[3].str()) <=
+         DaysInMonth(std::stoi(date[1].str()), std::stoi(date[2].str()));
 }
 
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {

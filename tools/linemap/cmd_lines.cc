@@ -101,9 +101,7 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
   }
   LINEMAP_ASSIGN_OR_RETURN(std::vector<double> pose, args.GetDoubleList("--pose", 2));
   if (!pose.empty()) {
-    CellPoint robot;
-    grid.WorldToCell(pose[0], pose[1], &robot.col, &robot.row);
-    options.robot = robot;
+    options.robot = RobotCellPoint(grid, pose[0], pose[1]);
   }
   return options;
 }

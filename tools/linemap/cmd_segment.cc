@@ -397,9 +397,7 @@ int RunSegment(const std::vector<std::string>& args) {
   if (parsed->Has("--pose")) {
     StatusOr<std::vector<double>> pose = parsed->GetDoubleList("--pose", 2);
     if (!pose.ok()) return ReportError("segment", pose.status());
-    CellPoint robot;
-    grid->WorldToCell((*pose)[0], (*pose)[1], &robot.col, &robot.row);
-    options.robot = robot;
+    options.robot = RobotCellPoint(*grid, (*pose)[0], (*pose)[1]);
   }
   options.protect_room_interior = !parsed->Has("--paper-border");
   const auto start = std::chrono::steady_clock::now();

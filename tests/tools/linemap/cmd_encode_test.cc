@@ -407,13 +407,14 @@ TEST(CmdEncodeTest, TimeThatIsNotIso8601IsRefused) {
   const std::string dir = MakeTempDir("encode_time_iso");
   const std::string yaml = CopyDepot(dir);
   for (const char* time : {"yesterday", "2026-13-01", "2026-01-01 12:00", "2026-1-1", "12:00",
-                           "2026-01-01T25:00", "2026-01-01T12:00:00+2", "\xff\xfe"}) {
+                           "2026-01-01T25:00", "2026-01-01T12:00:00+2", "\xff\xfe", "2026-02-29",
+                           "2100-02-29", "2026-04-31", "2026-02-30T12:00Z"}) {
     ExpectRefused({"encode", yaml, "-o", dir + "/x.lmap", "--time", time}, dir,
                   {"--time", "is not an ISO 8601 date or date-time"});
   }
-  for (const char* time :
-       {"2026-01-01", "2026-01-01T12:00", "2026-01-01T12:00:00Z", "2026-01-01T12:00:00.125+02:00",
-        "2026-01-01T12:00:00-0500", "2026-01-01T23:59:60Z"}) {
+  for (const char* time : {"2026-01-01", "2026-01-01T12:00", "2026-01-01T12:00:00Z",
+                           "2026-01-01T12:00:00.125+02:00", "2026-01-01T12:00:00-0500",
+                           "2026-01-01T23:59:60Z", "2024-02-29", "2000-02-29", "2026-12-31"}) {
     EXPECT_EQ(RunCli({"encode", yaml, "-o", dir + "/x.lmap", "--time", time}).exit_code, 0) << time;
   }
 }

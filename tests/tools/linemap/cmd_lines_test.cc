@@ -93,6 +93,21 @@ TEST(CmdLinesTest, PoseSelectsTheComponent) {
   EXPECT_NE(r.out.find("\"lines\":1,"), std::string::npos) << r.out;
 }
 
+// A pose typed on a cell's lower edge is in that cell, as --room-at and
+// --window take it: 2.4 m is the lower edge of row 4 (free, above the wall
+// on row 3), though (2.4 - 2) / 0.1 - 0.5 is 3.4999999999999991 in doubles,
+// which rounding put on the wall ("not on a free cell").
+TEST(CmdLinesTest, PoseOnACellsLowerEdgeIsInThatCell) {
+  const std::string dir = testing::MakeTempDir("lines_cli_pose_edge");
+  const std::string yaml = WriteWallMap(dir);
+  const testing::CliResult r = RunCli({"lines", yaml, "--pose", "1.55,2.4", "--json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  // Its upper edge, 2.5 m, is the next row's: still free.
+  EXPECT_EQ(RunCli({"lines", yaml, "--pose", "1.55,2.5", "--json"}).exit_code, 0);
+  // And 2.399 m is on the wall.
+  EXPECT_EQ(RunCli({"lines", yaml, "--pose", "1.55,2.399", "--json"}).exit_code, 2);
+}
+
 TEST(CmdLinesTest, BadInputExitsWithTwoAndWritesNothing) {
   const std::string dir = testing::MakeTempDir("lines_cli_bad");
   const std::string yaml = WriteWallMap(dir);
