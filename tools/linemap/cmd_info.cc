@@ -35,7 +35,9 @@ const CommandSpec kInfoSpec = {
                          "resolution, origin, free, occupied, unknown, mode, negate, "
                          "occupied_thresh, free_thresh (an .lmap file "
                          "also: version, lossless, tolerance_cells (the T a file saved within "
-                         "a tolerance names, else null), walls, wall_segments, rooms, "
+                         "a tolerance names, else null), layers (false for a file saved "
+                         "--raster-only, which holds no layer chunk), walls, wall_segments, "
+                         "rooms, "
                          "furniture, chunks, and metadata: an object of the file's metadata "
                          "as text, such as creator, time, frame_id and robot_pose (\"x y "
                          "yaw\") from encode --metadata, --time and --pose, and tolerance "
@@ -47,6 +49,15 @@ const CommandSpec kInfoSpec = {
 };
 
 namespace {
+
+// Whether the file holds a layer chunk: one saved --raster-only has none,
+// which is not the same as layers found empty.
+bool HasLayerChunk(const LmapContents& contents) {
+  return std::any_of(contents.chunks.begin(), contents.chunks.end(), [](const LmapChunkInfo& c) {
+    return c.type == "LAYR" || c.type == "WALL" || c.type == "ROOM" || c.type == "FURN" ||
+           c.type == "SEGS" || c.type == "BLOB";
+  });
+}
 
 // Counts of a file's vector layers; a 1.0 file's segments are two-point
 // walls, its room chains rooms and its blobs furniture, as LoadLmapVectors
@@ -147,6 +158,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   const CellCounts counts = grid.Count();
   const LayerCounts layers = CountLayers(*contents);
   const bool v1 = contents->major < 2;
+  const bool has_layers = HasLayerChunk(*contents);
   const std::optional<int> tolerance =
       ToleranceCellsOf(contents->major, contents->lossless, contents->metadata);
   if (args.Has("--json")) {
@@ -166,6 +178,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
              std::vector<double>{grid.meta.origin.x, grid.meta.origin.y, grid.meta.origin.yaw})
         .Add("lossless", contents->lossless)
         .AddRaw("tolerance_cells", tolerance ? std::to_string(*tolerance) : "null")
+        .Add("layers", has_layers)
         .Add("walls", std::uint64_t{layers.walls})
         .Add("wall_segments", std::uint64_t{layers.wall_segments})
         .Add("rooms", std::uint64_t{layers.rooms})
@@ -211,12 +224,7 @@ int RunLmapInfo(const std::string& path, const ParsedArgs& args) {
   if (v1) {
     std::printf("geometry:   %zu segments, %zu room chains, %zu blobs\n", contents->segments.size(),
                 contents->room_chains.size(), contents->blob_outlines.size());
-  } else if (std::none_of(contents->chunks.begin(), contents->chunks.end(),
-                          [](const LmapChunkInfo& c) {
-                            return c.type == "LAYR" || c.type == "WALL" || c.type == "ROOM" ||
-                                   c.type == "FURN";
-                          })) {
-    // Saved --raster-only: no layer chunk, rather than layers found empty.
+  } else if (!has_layers) {
     std::printf("layers:     none (cells only)\n");
   } else {
     std::printf("layers:     %zu walls (%zu segments), %zu rooms, %zu furniture\n", layers.walls,

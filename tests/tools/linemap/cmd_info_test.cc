@@ -142,8 +142,17 @@ TEST(CmdInfoTest, RasterOnlyFileHasNoLayers) {
   ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/r.lmap", "--raster-only"}).exit_code, 0);
   const CliResult r = RunCli({"info", dir + "/r.lmap"});
   EXPECT_NE(r.out.find("layers:     none (cells only)\n"), std::string::npos) << r.out;
+  EXPECT_NE(RunCli({"info", dir + "/r.lmap", "--json"}).out.find("\"layers\":false,\"walls\":0,"),
+            std::string::npos);
   ASSERT_EQ(RunCli({"encode", map, "-o", dir + "/l.lmap"}).exit_code, 0);
   EXPECT_NE(RunCli({"info", dir + "/l.lmap"}).out.find(" walls ("), std::string::npos);
+  EXPECT_NE(RunCli({"info", dir + "/l.lmap", "--json"}).out.find("\"layers\":true,"),
+            std::string::npos);
+  // A 1.0 file's SEGS chunk is a layer chunk too.
+  EXPECT_NE(
+      RunCli({"info", testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap", "--json"})
+          .out.find("\"layers\":true,"),
+      std::string::npos);
 }
 
 TEST(CmdInfoTest, BareImageTakesCommandLineOverrides) {
