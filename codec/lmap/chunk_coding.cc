@@ -78,6 +78,32 @@ StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, s
   }
 }
 
+namespace {
+constexpr char kDracoOutsideSegs[] = "the Draco payload coder is for SEGS only";
+}  // namespace
+
+StatusOr<std::vector<std::uint8_t>> UnwrapV2Payload(const std::uint8_t* payload, std::size_t size,
+                                                    const DecodeLimits& limits,
+                                                    PayloadCoder* coder) {
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> body,
+                           UnwrapPayload(payload, size, limits, coder));
+  if (*coder == PayloadCoder::kDraco) return CorruptError(kDracoOutsideSegs);
+  return body;
+}
+
+Status CheckV2PayloadCoder(const std::uint8_t* payload, std::size_t size) {
+  ByteCursor cursor(payload, size);
+  LINEMAP_ASSIGN_OR_RETURN(std::uint8_t kind, cursor.ReadU8("payload coder"));
+  if (kind == static_cast<std::uint8_t>(PayloadCoder::kDraco)) {
+    return CorruptError(kDracoOutsideSegs);
+  }
+  if (kind != static_cast<std::uint8_t>(PayloadCoder::kRaw) &&
+      kind != static_cast<std::uint8_t>(PayloadCoder::kDeflate)) {
+    return UnsupportedError("unknown payload coder " + std::to_string(kind));
+  }
+  return Status::Ok();
+}
+
 // The default thresholds are not stored (header flag bit 2 clear).
 constexpr std::uint64_t kDefaultOccupiedBits = 0x3FE4CCCCCCCCCCCDull;  // 0.65
 constexpr std::uint64_t kDefaultFreeBits = 0x3FC916872B020C4Aull;      // 0.196

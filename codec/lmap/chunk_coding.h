@@ -43,6 +43,15 @@ std::vector<std::uint8_t> WrapPayload(const std::vector<std::uint8_t>& body, boo
 // Payload -> body (inflated when needed, bounded by the limits).
 StatusOr<std::vector<std::uint8_t>> UnwrapPayload(const std::uint8_t* payload, std::size_t size,
                                                   const DecodeLimits& limits, PayloadCoder* coder);
+// As UnwrapPayload, for a chunk of a 2.x file: no 2.x chunk uses the Draco
+// coder (it is for 1.0's SEGS), so a Draco payload is corrupt there.
+StatusOr<std::vector<std::uint8_t>> UnwrapV2Payload(const std::uint8_t* payload, std::size_t size,
+                                                    const DecodeLimits& limits,
+                                                    PayloadCoder* coder);
+// The coder byte of a 2.x chunk whose body is left unread (the cells of a
+// layers-only read): the errors UnwrapV2Payload gives for it, so that a
+// file a whole read refuses is not read in part as if it were fine.
+Status CheckV2PayloadCoder(const std::uint8_t* payload, std::size_t size);
 
 struct HeaderFields {
   int width = 0;

@@ -31,22 +31,6 @@ int V2Rank(const std::string& type) {
   return -1;
 }
 
-// The payload coder byte of a CELL or BLKS chunk: raw or deflate, as
-// UnwrapPayload reads them (Draco is for 1.0 segments only; other values
-// are reserved).
-Status CheckCellsPayloadCoder(const Chunk& chunk) {
-  if (chunk.size == 0) return CorruptError("truncated payload coder at byte 0");
-  const std::uint8_t kind = chunk.payload[0];
-  if (kind == static_cast<std::uint8_t>(PayloadCoder::kDraco)) {
-    return CorruptError("the Draco payload coder is for SEGS only");
-  }
-  if (kind != static_cast<std::uint8_t>(PayloadCoder::kRaw) &&
-      kind != static_cast<std::uint8_t>(PayloadCoder::kDeflate)) {
-    return UnsupportedError("unknown payload coder " + std::to_string(kind));
-  }
-  return Status::Ok();
-}
-
 // One chunk after LMHD into `file`.
 Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cells,
                    bool expand_chains, int* last_rank, V2File* file) {
@@ -74,15 +58,13 @@ Status ReadV2Chunk(const Chunk& chunk, const DecodeLimits& limits, bool read_cel
     // byte says whether this decoder could read it at all, as for every
     // chunk a decoder reads (a file a full decode refuses as unsupported
     // is not exported as if it were fine).
-    LINEMAP_RETURN_IF_ERROR(CheckCellsPayloadCoder(chunk));
+    LINEMAP_RETURN_IF_ERROR(CheckV2PayloadCoder(chunk.payload, chunk.size));
     file->chunks.push_back({chunk.type, chunk.size, "tiles"});
     return Status::Ok();
   }
   PayloadCoder coder = PayloadCoder::kRaw;
   LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> body,
-                           UnwrapPayload(chunk.payload, chunk.size, limits, &coder));
-  if (coder == PayloadCoder::kDraco)
-    return CorruptError("the Draco payload coder is for SEGS only");
+                           UnwrapV2Payload(chunk.payload, chunk.size, limits, &coder));
   const bool range = rank >= 0 && !cells;
   const bool raw = coder == PayloadCoder::kRaw;
   file->chunks.push_back({chunk.type, chunk.size,

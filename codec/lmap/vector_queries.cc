@@ -38,10 +38,7 @@ StatusOr<LmapHeader> HeaderOf(const ContainerView& view, const DecodeLimits& lim
     if (chunk.type != kMetadataChunk) continue;
     PayloadCoder coder = PayloadCoder::kRaw;
     StatusOr<std::vector<std::uint8_t>> body =
-        UnwrapPayload(chunk.payload, chunk.size, limits, &coder);
-    if (body.ok() && coder == PayloadCoder::kDraco) {
-      body = CorruptError("the Draco payload coder is for SEGS only");
-    }
+        UnwrapV2Payload(chunk.payload, chunk.size, limits, &coder);
     if (!body.ok()) return body.status().WithContext("chunk meta");
     StatusOr<std::vector<std::pair<std::string, std::string>>> entries = ReadMetadata(*body);
     if (!entries.ok()) return entries.status().WithContext("chunk meta");

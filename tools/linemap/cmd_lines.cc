@@ -76,7 +76,7 @@ StatusOr<LineExtractionOptions> OptionsFromArgs(const ParsedArgs& args, const Gr
               : std::vector<const char*>{"--dtheta", "--ds"}) {
     if (args.Has(option)) {
       return InvalidArgumentError(std::string(option) + " is an option of the " +
-                                  (rmline ? "linemap" : "rmline") + " method, not of " + method);
+                                  (rmline ? "linemap" : "rmline") + " extractor, not of " + method);
     }
   }
   LINEMAP_ASSIGN_OR_RETURN(options.rmline_dtheta_deg,

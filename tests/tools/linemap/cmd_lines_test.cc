@@ -129,14 +129,16 @@ TEST(CmdLinesTest, OptionsOfTheOtherMethodAreRefused) {
   const std::string dir = testing::MakeTempDir("lines_cli_method");
   const std::string yaml = WriteWallMap(dir);
   for (const auto& [argv, message] : std::vector<std::pair<std::vector<std::string>, std::string>>{
-           {{"lines", yaml, "--dtheta", "5"}, "--dtheta is an option of the rmline method"},
-           {{"lines", yaml, "--ds", "0.25"}, "--ds is an option of the rmline method"},
+           {{"lines", yaml, "--dtheta", "5"},
+            "--dtheta is an option of the rmline extractor, not of linemap"},
+           {{"lines", yaml, "--ds", "0.25"},
+            "--ds is an option of the rmline extractor, not of linemap"},
            {{"lines", yaml, "--method", "rmline", "--epsilon", "2"},
-            "--epsilon is an option of the linemap method"},
+            "--epsilon is an option of the linemap extractor, not of rmline"},
            {{"lines", yaml, "--method", "rmline", "--straight-walls"},
-            "--straight-walls is an option of the linemap method"},
+            "--straight-walls is an option of the linemap extractor, not of rmline"},
            {{"lines", yaml, "--method", "rmline", "--max-added-cost", "1"},
-            "--max-added-cost is an option of the linemap method"},
+            "--max-added-cost is an option of the linemap extractor, not of rmline"},
            {{"encode", yaml, "-o", dir + "/x.lmap", "--method", "rmline", "--epsilon", "2"},
             "--epsilon is an option of the linemap extractor, not of rmline"},
            {{"encode", yaml, "-o", dir + "/x.lmap", "--method", "rmline", "--straight-walls"},
