@@ -216,43 +216,40 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   return options;
 }
 
-// An .lmap input saved again keeps what its metadata says of it: the T of a
-// map saved within a tolerance (its cells are not the robot's map, and the
-// copy says so), and its creator, time, frame and robot pose unless given
-// here.
-Status InheritFromLmap(const std::string& map_path, const ParsedArgs& parsed,
+// A copy of an .lmap saved within a tolerance says so, with the T whose
+// guarantees hold against the original map (its cells are not the robot's
+// map); saving it within a tolerance again, or copying a file that does not
+// name its T, is refused: the guarantees would not add up.
+Status KeepToleranceOf(const std::string& map_path, const LmapHeader& header,
                        EncodeOptions* options) {
-  if (!IsLmapPath(map_path)) return Status::Ok();
-  LINEMAP_ASSIGN_OR_RETURN(MapReadOptions read, MapReadOptionsFrom(parsed));
-  // What the command line gave wins over the input's metadata.
+  if (header.lossless) return Status::Ok();
+  const std::optional<int> t = ToleranceCellsOf(header.major, header.lossless, header.metadata);
+  const std::string what = t ? "within a tolerance of " + std::to_string(*t) + " cells"
+                           : header.major < 2 ? "lossy (version 1.0)"
+                                              : "within a tolerance it does not name (written "
+                                                "before files named their T)";
+  if (options->tolerance_cells > 0) {
+    return InvalidArgumentError("'" + map_path + "' was saved " + what +
+                                ": saving it within another tolerance would not keep the "
+                                "guarantees against the original map; save the original map "
+                                "with --tolerance");
+  }
+  if (!t) {
+    return InvalidArgumentError("'" + map_path + "' was saved " + what +
+                                ": a copy could not say which guarantees hold against the "
+                                "original map; save the original map");
+  }
+  options->simplified_within_cells = *t;
+  return Status::Ok();
+}
+
+// The input's creator, time, frame and robot pose, each where the command
+// line gave none; of a repeated key the last entry, as readers take it.
+void CarryMetadataOf(const LmapHeader& header, EncodeOptions* options) {
   const struct {
     bool creator, time, frame_id, robot_pose;
   } given{!options->creator.empty(), !options->time.empty(), !options->frame_id.empty(),
           options->robot_pose.has_value()};
-  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(map_path, read.lmap));
-  if (!header.lossless) {
-    const std::optional<int> t = ToleranceCellsOf(header.major, header.lossless, header.metadata);
-    const std::string what = t ? "within a tolerance of " + std::to_string(*t) + " cells"
-                             : header.major < 2
-                                 ? "lossy (version 1.0)"
-                                 : "within a tolerance it does not name (written before files "
-                                   "named their T)";
-    if (options->tolerance_cells > 0) {
-      return InvalidArgumentError("'" + map_path + "' was saved " + what +
-                                  ": saving it within another tolerance would not keep the "
-                                  "guarantees against the original map; save the original map "
-                                  "with --tolerance");
-    }
-    // A copy must say its cells are not the robot's map, and which
-    // guarantees hold: without a T it could only claim to be exact.
-    if (!t) {
-      return InvalidArgumentError("'" + map_path + "' was saved " + what +
-                                  ": a copy could not say which guarantees hold against the "
-                                  "original map; save the original map");
-    }
-    options->simplified_within_cells = *t;
-  }
-  // The last entry of a repeated key, as readers take it.
   for (const auto& [key, value] : header.metadata) {
     if (key == "creator" && !given.creator) options->creator = value;
     if (key == "time" && !given.time) options->time = value;
@@ -263,6 +260,16 @@ Status InheritFromLmap(const std::string& map_path, const ParsedArgs& parsed,
       options->robot_pose = Pose2D{x, y, yaw};
     }
   }
+}
+
+// An .lmap input saved again keeps what its header says of it.
+Status InheritFromLmap(const std::string& map_path, const ParsedArgs& parsed,
+                       EncodeOptions* options) {
+  if (!IsLmapPath(map_path)) return Status::Ok();
+  LINEMAP_ASSIGN_OR_RETURN(MapReadOptions read, MapReadOptionsFrom(parsed));
+  LINEMAP_ASSIGN_OR_RETURN(LmapHeader header, LoadLmapHeader(map_path, read.lmap));
+  LINEMAP_RETURN_IF_ERROR(KeepToleranceOf(map_path, header, options));
+  CarryMetadataOf(header, options);
   return Status::Ok();
 }
 
