@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstddef>
@@ -557,6 +558,15 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files, Durability durabi
 
 Status WriteFileAtomic(const std::string& path, std::string_view data, Durability durability) {
   return WriteFilesAtomic({{path, data}}, durability);
+}
+
+bool HasExtension(std::string_view path, std::string_view extension) {
+  if (path.size() <= extension.size()) return false;
+  return std::equal(extension.begin(), extension.end(), path.end() - extension.size(),
+                    [](char a, char b) {
+                      return std::tolower(static_cast<unsigned char>(a)) ==
+                             std::tolower(static_cast<unsigned char>(b));
+                    });
 }
 
 }  // namespace linemap

@@ -162,6 +162,10 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files,
 // again: the file system may change meanwhile.
 Status CheckSaveTarget(const std::string& path);
 
+// True when `path` ends in `extension` (with its dot: ".yaml"), its letters
+// in any case (map.YAML, OUT.Lmap), after at least one character of name.
+bool HasExtension(std::string_view path, std::string_view extension);
+
 // True when `path` names an existing directory.
 bool IsDirectory(const std::string& path);
 

@@ -21,18 +21,8 @@ constexpr std::uint64_t kMaxYamlBytes = 1 << 20;
 
 std::string Quoted(const std::string& path) { return "'" + path + "'"; }
 
-bool EndsWith(const std::string& s, const std::string& suffix) {
-  if (s.size() < suffix.size()) return false;
-  for (std::size_t i = 0; i < suffix.size(); ++i) {
-    const char a = s[s.size() - suffix.size() + i];
-    const char b = suffix[i];
-    if (std::tolower(static_cast<unsigned char>(a)) != b) return false;
-  }
-  return true;
-}
-
 bool IsYamlPath(const std::string& path) {
-  return EndsWith(path, ".yaml") || EndsWith(path, ".yml");
+  return HasExtension(path, ".yaml") || HasExtension(path, ".yml");
 }
 
 std::string DirectoryOf(const std::string& path) {

@@ -15,9 +15,6 @@
 
 namespace linemap::python {
 
-// True when `text` ends in `suffix` (lower case), in any case.
-bool EndsWithIgnoringCase(const std::string& text, const std::string& suffix);
-
 // A name ending in .yaml or .yml, in any case.
 bool IsYamlPath(const std::string& path);
 

@@ -640,3 +640,21 @@ TEST(AtomicFileWriterTest, KilledStreamedSaveLeavesOldOrNewCompleteFile) {
 
 }  // namespace
 }  // namespace linemap
+
+namespace linemap {
+namespace {
+
+TEST(HasExtensionTest, MatchesTheExtensionInAnyCaseAfterAName) {
+  EXPECT_TRUE(HasExtension("map.yaml", ".yaml"));
+  EXPECT_TRUE(HasExtension("dir/MAP.YAML", ".yaml"));
+  EXPECT_TRUE(HasExtension("out.Lmap", ".LMAP"));
+  EXPECT_TRUE(HasExtension("a.b.pgm", ".pgm"));
+  EXPECT_FALSE(HasExtension(".yaml", ".yaml"));  // no name before it
+  EXPECT_FALSE(HasExtension("map.yml", ".yaml"));
+  EXPECT_FALSE(HasExtension("mapyaml", ".yaml"));
+  EXPECT_FALSE(HasExtension("", ".bag"));
+  EXPECT_FALSE(HasExtension("map.yaml.bak", ".yaml"));
+}
+
+}  // namespace
+}  // namespace linemap

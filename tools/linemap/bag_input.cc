@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
@@ -35,17 +34,6 @@ std::vector<OptionSpec> WithBagOptions(std::vector<OptionSpec> options) {
 
 namespace {
 
-// Whether `path` ends in `.ext`, whatever the case of its letters.
-bool EndsWithExtension(const std::string& path, std::string_view ext) {
-  if (path.size() < ext.size() + 1 || path[path.size() - ext.size() - 1] != '.') return false;
-  for (std::size_t i = 0; i < ext.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(path[path.size() - ext.size() + i])) != ext[i]) {
-      return false;
-    }
-  }
-  return true;
-}
-
 bool HasBagOption(const ParsedArgs& args) {
   return args.Get("--topic") || args.Get("--index") || args.Has("--all");
 }
@@ -53,13 +41,13 @@ bool HasBagOption(const ParsedArgs& args) {
 }  // namespace
 
 bool IsBagInput(const std::string& input, const ParsedArgs& args) {
-  return EndsWithExtension(input, "bag") || HasBagOption(args);
+  return HasExtension(input, ".bag") || HasBagOption(args);
 }
 
 Status CheckBagOptionsApplyTo(const std::string& input, const ParsedArgs& args) {
   if (!HasBagOption(args)) return Status::Ok();
-  for (const char* ext : {"yaml", "yml", "pgm", "png", "lmap"}) {
-    if (EndsWithExtension(input, ext)) {
+  for (const char* ext : {".yaml", ".yml", ".pgm", ".png", ".lmap"}) {
+    if (HasExtension(input, ext)) {
       return InvalidArgumentError("--topic, --index and --all read a ROS 1 bag; '" + input +
                                   "' is a map or an .lmap file");
     }
@@ -100,7 +88,7 @@ StatusOr<BagSelection> BagSelectionFrom(const ParsedArgs& args) {
                                               : "missing -o OUT.lmap");
   }
   selection.out = *out;
-  if (!selection.all && !EndsWithIgnoringCase(selection.out, ".lmap")) {
+  if (!selection.all && !HasExtension(selection.out, ".lmap")) {
     return InvalidArgumentError("output '" + selection.out + "' must end in .lmap");
   }
   if (!selection.all && IsDirectory(selection.out)) {

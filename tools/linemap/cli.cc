@@ -265,14 +265,6 @@ std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<s
   return parsed;
 }
 
-bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix) {
-  if (s.size() <= suffix.size()) return false;
-  return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
-    return std::tolower(static_cast<unsigned char>(a)) ==
-           std::tolower(static_cast<unsigned char>(b));
-  });
-}
-
 Status CheckOutputExtension(const std::string& path, const std::vector<std::string>& extensions,
                             const std::string& format) {
   const std::size_t slash = path.find_last_of('/');
@@ -280,11 +272,11 @@ Status CheckOutputExtension(const std::string& path, const std::vector<std::stri
   for (const std::string& extension : extensions) {
     // "dir/.yaml" ends in .yaml but names no file before it (decode would
     // write a hidden ".yaml" and ".pgm").
-    if (base.size() == extension.size() && EndsWithIgnoringCase("name" + base, extension)) {
+    if (base.size() == extension.size() && HasExtension("name" + base, extension)) {
       return InvalidArgumentError("output '" + path + "' has no file name before " + extension +
                                   ": give one, as in 'map" + extension + "'");
     }
-    if (EndsWithIgnoringCase(path, extension)) return Status::Ok();
+    if (HasExtension(path, extension)) return Status::Ok();
   }
   return InvalidArgumentError("output '" + path + "' must end in " + Alternatives(extensions) +
                               ": it is written as " + format);

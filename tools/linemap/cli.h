@@ -67,10 +67,6 @@ void PrintHelp(const CommandSpec& spec);
 std::optional<ParsedArgs> ParseArgs(const CommandSpec& spec, const std::vector<std::string>& args,
                                     int* exit_code);
 
-// Whether `s` ends in `suffix` (".lmap"), compared in any case, and holds
-// more than the suffix.
-bool EndsWithIgnoringCase(const std::string& s, const std::string& suffix);
-
 // Refuses an output name that does not end in one of `extensions` (".csv",
 // compared in any case), so that no file holds another format than its name
 // says: kInvalidArgument naming `path`, the extensions and `format`, what

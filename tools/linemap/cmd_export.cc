@@ -68,10 +68,9 @@ int RunExport(const std::vector<std::string>& args) {
   if (!parsed) return exit_code;
   const std::optional<std::string> out = parsed->Get("-o");
   if (!out) return ReportError("export", InvalidArgumentError("missing -o OUT"));
-  const bool csv = EndsWithIgnoringCase(*out, ".csv");
-  const bool geojson =
-      EndsWithIgnoringCase(*out, ".geojson") || EndsWithIgnoringCase(*out, ".json");
-  const bool svg = EndsWithIgnoringCase(*out, ".svg");
+  const bool csv = HasExtension(*out, ".csv");
+  const bool geojson = HasExtension(*out, ".geojson") || HasExtension(*out, ".json");
+  const bool svg = HasExtension(*out, ".svg");
   if (!csv && !geojson && !svg) {
     return ReportError(
         "export",
