@@ -155,7 +155,12 @@ def test_max_cells_and_limits_together_are_refused():
 
 
 def test_threads_do_not_change_the_decode():
-    one = linemap.load(DEPOT, limits=linemap.DecodeLimits(max_threads=1))
+    # 64-cell tiles: 50 tiles for the threads to share (depot_v2.lmap is one).
+    tiled = REPO / "tests" / "data" / "lmap" / "depot_v2_tiles_64.lmap"
+    one = linemap.load(tiled, limits=linemap.DecodeLimits(max_threads=1))
+    for threads in (0, 2, 4):
+        many = linemap.load(tiled, limits=linemap.DecodeLimits(max_threads=threads))
+        assert np.array_equal(one.cells, many.cells), threads
     assert np.array_equal(one.cells, linemap.load(DEPOT).cells)
 
 

@@ -155,23 +155,26 @@ TEST(CodecV2Test, SharedMapsRoundTripExactly) {
 TEST(CodecV2Test, ThreadsAndTilesDoNotChangeTheCells) {
   auto grid = LoadRosMap(testing::BundledMapsDir() + "/nav2/depot.yaml");
   ASSERT_TRUE(grid.ok());
+  // 64-cell tiles: 50 tiles for the threads to share (depot is one tile of
+  // the default side).
   EncodeOptions one, many;
   one.max_threads = 1;
   many.max_threads = 4;
+  one.tile_size_cells = many.tile_size_cells = 64;
   auto a = EncodeLmap(*grid, one);
   auto b = EncodeLmap(*grid, many);
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(*a, *b);
-  EncodeOptions small_tiles;
-  small_tiles.tile_size_cells = 64;
-  auto c = RoundTrip(*grid, small_tiles);
-  ASSERT_TRUE(c.ok());
-  EXPECT_EQ(*c, *grid);
-  DecodeLimits one_thread;
-  one_thread.max_threads = 1;
-  auto d = DecodeLmap(*a, one_thread);
-  ASSERT_TRUE(d.ok());
-  EXPECT_EQ(*d, *grid);
+  auto whole = RoundTrip(*grid, EncodeOptions{});
+  ASSERT_TRUE(whole.ok());
+  EXPECT_EQ(*whole, *grid);
+  for (const int threads : {1, 2, 4}) {
+    DecodeLimits limits;
+    limits.max_threads = threads;
+    auto d = DecodeLmap(*a, limits);
+    ASSERT_TRUE(d.ok()) << threads;
+    EXPECT_EQ(*d, *grid) << threads;
+  }
 }
 
 TEST(CodecV2Test, LayerBlocksOnManyThreadsGiveTheBytesOfOne) {

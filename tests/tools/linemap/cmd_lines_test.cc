@@ -84,13 +84,34 @@ TEST(CmdLinesTest, StraightWallsDrawsASlantedWallAsOneSegment) {
   EXPECT_NE(straight.out.find("\"lines\":1,"), std::string::npos) << straight.out;
 }
 
+// Two rooms apart: a wall across row 4 of a 20 x 9 map (0.1 m/cell, origin
+// (1, 2)), and in the upper room a short wall on row 7, cols 3..10.
+std::string WriteTwoRoomMap(const std::string& dir) {
+  Grid grid(20, 9, Cell::kFree);
+  grid.meta.resolution = 0.1;
+  grid.meta.origin = {1.0, 2.0, 0.0};
+  testing::FillBox(&grid, 0, 4, 19, 4, Cell::kOccupied);
+  testing::FillBox(&grid, 3, 7, 10, 7, Cell::kOccupied);
+  return SaveMap(dir, "two_rooms", grid);
+}
+
 TEST(CmdLinesTest, PoseSelectsTheComponent) {
   const std::string dir = testing::MakeTempDir("lines_cli_pose");
-  const std::string yaml = WriteWallMap(dir);
-  // (1.35, 2.15) m is cell (0, 1): free, below the wall.
-  const testing::CliResult r = RunCli({"lines", yaml, "--pose", "1.35,2.15", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("\"lines\":1,"), std::string::npos) << r.out;
+  const std::string yaml = WriteTwoRoomMap(dir);
+  // (1.35, 2.15) m is cell (3, 1), in the lower room: only the dividing
+  // wall's 20 cells face it. (1.35, 2.85) m is cell (3, 8), in the upper
+  // room, which also sees the short wall's 8 cells; so do both rooms
+  // without a pose.
+  for (const auto& [pose, figures] : std::vector<std::pair<std::string, std::string>>{
+           {"1.35,2.15", "\"lines\":1,"}, {"1.35,2.85", "\"lines\":2,"}, {"", "\"lines\":2,"}}) {
+    std::vector<std::string> argv = {"lines", yaml, "--json"};
+    if (!pose.empty()) argv.insert(argv.end(), {"--pose", pose});
+    const testing::CliResult r = RunCli(argv);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find(figures), std::string::npos) << pose << ": " << r.out;
+    const std::string edges = pose == "1.35,2.15" ? "\"edge_cells\":20," : "\"edge_cells\":28,";
+    EXPECT_NE(r.out.find(edges), std::string::npos) << pose << ": " << r.out;
+  }
 }
 
 // A pose typed on a cell's lower edge is in that cell, as --room-at and
