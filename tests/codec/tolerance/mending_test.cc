@@ -391,18 +391,24 @@ TEST(FreeCoverTest, OneCellServesItsNeighboursAlongAThickenedWall) {
 
 // On random grids and their random decodes every lost cell is served, and
 // only cells free in the original and not in the decode are given back.
+// The decode's free share falls as 0.15 / t^2, so that about a third of
+// the (2t + 1)^2 windows hold no free cell at every t and each t has lost
+// cells to serve.
 TEST(FreeCoverTest, ServesEveryLostCellOnRandomGrids) {
   std::mt19937 rng(20261127);
+  int trials_with_lost[5] = {};
   for (int trial = 0; trial < 60; ++trial) {
     const int w = 8 + static_cast<int>(rng() % 30), h = 8 + static_cast<int>(rng() % 30);
     const int t = 1 + static_cast<int>(rng() % 4);
+    const unsigned free_per_mille = 150u / static_cast<unsigned>(t * t);
     Grid original(w, h, Cell::kFree), decoded(w, h, Cell::kFree);
     for (std::size_t i = 0; i < original.size(); ++i) {
       const unsigned v = rng() % 10;
       original.mutable_cells()[i] = v < 6 ? Cell::kFree : v < 8 ? Cell::kOccupied : Cell::kUnknown;
-      decoded.mutable_cells()[i] = rng() % 3 == 0 ? Cell::kFree : Cell::kOccupied;
+      decoded.mutable_cells()[i] = rng() % 1000 < free_per_mille ? Cell::kFree : Cell::kOccupied;
     }
     const std::vector<std::size_t> lost = LostFree(original, decoded, t);
+    trials_with_lost[t] += lost.empty() ? 0 : 1;
     const std::vector<std::size_t> cover = FreeCover(original, decoded, lost, t);
     const std::set<std::size_t> given(cover.begin(), cover.end());
     for (const std::size_t i : given) {
@@ -412,6 +418,7 @@ TEST(FreeCoverTest, ServesEveryLostCellOnRandomGrids) {
     for (const std::size_t i : lost) EXPECT_TRUE(ServedWithin(decoded, given, i, t)) << i;
     EXPECT_LE(cover.size(), lost.size());
   }
+  for (int t = 1; t <= 4; ++t) EXPECT_GE(trials_with_lost[t], 5) << "t = " << t;
 }
 
 }  // namespace
