@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "linemap/cells.h"
@@ -38,6 +41,38 @@ inline bool ReferenceChainEncloses(const std::vector<CellIndex>& chain, int c, i
   }
   return crossings % 2 == 1;
 }
+
+// ReferenceChainEncloses for many cells of one chain: per row, the sorted
+// columns x of the steps that cross it, and the chain's own cells.
+class ReferenceChainInterior {
+ public:
+  explicit ReferenceChainInterior(const std::vector<CellIndex>& chain) {
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      const CellIndex p = chain[i];
+      const CellIndex q = chain[(i + 1) % chain.size()];
+      on_chain_.insert({p.col, p.row});
+      // Steps between rows r and r + 1 cross row r (rows differ by at most
+      // one along an 8-connected chain; a longer step crosses each row it
+      // spans, at its end on that row or else at q's column).
+      for (int r = std::min(p.row, q.row); r < std::max(p.row, q.row); ++r) {
+        crossings_[r].push_back(p.row == r ? p.col : q.col);
+      }
+    }
+    for (auto& [row, xs] : crossings_) std::sort(xs.begin(), xs.end());
+  }
+  bool Encloses(int c, int r) const {
+    if (on_chain_.count({c, r})) return true;
+    const auto row = crossings_.find(r);
+    if (row == crossings_.end()) return false;
+    const auto right =
+        row->second.end() - std::upper_bound(row->second.begin(), row->second.end(), c);
+    return right % 2 == 1;
+  }
+
+ private:
+  std::map<int, std::vector<int>> crossings_;
+  std::set<std::pair<int, int>> on_chain_;
+};
 
 // Twice the area a polygon encloses, |shoelace sum|, in doubles (exact for
 // the test maps' coordinates).

@@ -18,6 +18,7 @@
 #include "linemap/segmentation.h"
 #include "tests/testing/floor_plan.h"
 #include "tests/testing/reference_components.h"
+#include "tests/testing/reference_geometry.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -43,6 +44,8 @@ std::vector<std::size_t> FreeComponentSizes(const Grid& grid) {
 // The structural promises of the rooms method, on any grid:
 //  - every chain closed, 8-connected, inside the grid, on its own room's
 //    cells, and no cell on two chains;
+//  - every cell of a room enclosed by its chain (spec/format.md 8.2, by the
+//    plain crossing count of tests/testing/reference_geometry.h);
 //  - every free cell in a room unless its free component is smaller than
 //    the minimum room area;
 //  - free-standing furniture: its cells in its room, none on or 8-adjacent
@@ -69,6 +72,16 @@ void ExpectRoomInvariants(const Grid& grid, const Segmentation& seg,
       ASSERT_TRUE(chain_of[at] == 0 || chain_of[at] == room.id)
           << what << ": chains of rooms " << chain_of[at] << " and " << room.id << " share a cell";
       chain_of[at] = room.id;
+    }
+  }
+  std::vector<testing::ReferenceChainInterior> interiors;
+  for (const RoomBorder& room : seg.rooms) interiors.emplace_back(room.chain);
+  for (int r = 0; r < grid.height(); ++r) {
+    for (int c = 0; c < grid.width(); ++c) {
+      const std::int32_t id = seg.room_of_cell[grid.Index(c, r)];
+      if (id <= 0) continue;
+      ASSERT_TRUE(interiors[id - 1].Encloses(c, r))
+          << what << ": cell " << c << "," << r << " of room " << id << " outside its chain";
     }
   }
   const std::size_t min_cells = static_cast<std::size_t>(
