@@ -48,7 +48,8 @@ const CommandSpec kPlanSpec = {
          "alternatives, ms, stages_ms, and every trajectory (the same keys when "
          "none is found: error says why, length_m null, the lists empty)"},
         {"--svg", "OUT.svg",
-         "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg)"},
+         "draw the map, the safe zone and the trajectories as SVG (the name ends in .svg; "
+         "written also when the goal cannot be reached, without trajectories)"},
     }),
     1,
     1,

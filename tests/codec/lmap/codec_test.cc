@@ -313,6 +313,7 @@ TEST(CodecTest, SaveAndLoad) {
   EXPECT_EQ(*loaded, grid);
   // Saving into a missing folder fails and writes nothing.
   EXPECT_FALSE(SaveLmap(dir + "/missing/map.lmap", grid, options).ok());
+  EXPECT_EQ(testing::ListDir(dir), std::vector<std::string>{"map.lmap"});
   auto missing = LoadLmap(dir + "/nothing.lmap");
   ASSERT_FALSE(missing.ok());
   EXPECT_EQ(missing.status().code(), StatusCode::kNotFound);

@@ -89,11 +89,18 @@ TEST(CmdPlanTest, LowerMapEdgeIsOnTheMap) {
   EXPECT_NE(r.err.find("outside the map"), std::string::npos) << r.err;
 }
 
-TEST(CmdPlanTest, UnreachableGoalExitsOneWithoutOutputFile) {
+// An unreachable goal is the planner's answer (exit 1, no trajectory); the
+// SVG still shows why: the map and the safe zone, without a path.
+TEST(CmdPlanTest, UnreachableGoalExitsOneAndDrawsTheSafeZoneOnly) {
   const std::string dir = MakeTempDir("plan-split");
   const std::string map = SplitRoom(dir);
-  const CliResult r = RunCli({"plan", map, "--from", "0.5,0.5", "--to", "1.5,0.5", "--json"});
+  const CliResult r = RunCli(
+      {"plan", map, "--from", "0.5,0.5", "--to", "1.5,0.5", "--json", "--svg", dir + "/plan.svg"});
   EXPECT_EQ(r.exit_code, 1);
+  const std::string svg = testing::ReadFile(dir + "/plan.svg");
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(svg.find("<polyline"), std::string::npos) << "no trajectory to draw";
+  EXPECT_NE(svg.find("<circle"), std::string::npos) << "start and goal";
   EXPECT_NE(r.err.find("cannot be reached"), std::string::npos) << r.err;
   // Every key of a plan found, empty (as the Python module's plan()).
   for (const char* part :

@@ -28,6 +28,11 @@ TEST(CodecCliTest, EncodeDecodeRoundTripLossless) {
   ASSERT_TRUE(original.ok() && decoded.ok());
   EXPECT_EQ(decoded->cells(), original->cells());
   EXPECT_EQ(decoded->width(), original->width());
+  // The frame too: the same resolution and origin in the YAML.
+  EXPECT_EQ(decoded->meta.resolution, original->meta.resolution);
+  EXPECT_EQ(decoded->meta.origin.x, original->meta.origin.x);
+  EXPECT_EQ(decoded->meta.origin.y, original->meta.origin.y);
+  EXPECT_EQ(decoded->meta.origin.yaw, original->meta.origin.yaw);
 }
 
 TEST(CodecCliTest, NoSyncStillReplacesFilesWhole) {
