@@ -64,21 +64,13 @@ std::vector<std::pair<std::string, std::pair<Xy, Xy>>> ExpectedRows(const LmapVe
   return rows;
 }
 
-TEST(CmdExportTest, CsvHasEveryWallSegmentAndChainEdgeInMetres) {
-  const std::string dir = testing::MakeTempDir("export_csv");
-  const std::string lmap = EncodedDepot(dir);
-  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
-  ASSERT_TRUE(v.ok()) << v.status().message();
-  ASSERT_GT(v->walls.size(), 10u);
-  ASSERT_GT(v->rooms.size(), 0u);
-  ASSERT_GT(v->furniture.size(), 10u);
-  const CliResult r = RunCli({"export", lmap, "-o", dir + "/d.csv"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::istringstream csv(testing::ReadFile(dir + "/d.csv"));
+// The CSV text holds its header, then exactly `rows`, in order.
+void ExpectCsvRows(const std::string& text,
+                   const std::vector<std::pair<std::string, std::pair<Xy, Xy>>>& rows) {
+  std::istringstream csv(text);
   std::string line;
   std::getline(csv, line);
   EXPECT_EQ(line, "layer,x1,y1,x2,y2");
-  const auto rows = ExpectedRows(*v);
   std::size_t n = 0;
   for (; std::getline(csv, line); ++n) {
     ASSERT_LT(n, rows.size()) << line;
@@ -94,6 +86,19 @@ TEST(CmdExportTest, CsvHasEveryWallSegmentAndChainEdgeInMetres) {
     EXPECT_NEAR(y2, ends.second.y, 1e-6) << line;
   }
   EXPECT_EQ(n, rows.size());
+}
+
+TEST(CmdExportTest, CsvHasEveryWallSegmentAndChainEdgeInMetres) {
+  const std::string dir = testing::MakeTempDir("export_csv");
+  const std::string lmap = EncodedDepot(dir);
+  StatusOr<LmapVectors> v = LoadLmapVectors(lmap);
+  ASSERT_TRUE(v.ok()) << v.status().message();
+  ASSERT_GT(v->walls.size(), 10u);
+  ASSERT_GT(v->rooms.size(), 0u);
+  ASSERT_GT(v->furniture.size(), 10u);
+  const CliResult r = RunCli({"export", lmap, "-o", dir + "/d.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ExpectCsvRows(testing::ReadFile(dir + "/d.csv"), ExpectedRows(*v));
 }
 
 void ExpectPosition(const YAML::Node& pos, Xy want) {
@@ -298,12 +303,7 @@ TEST(CmdExportTest, WindowKeepsTheItemsWhoseBoxMeetsIt) {
   const CliResult r =
       RunCli({"export", lmap, "-o", dir + "/w.csv", "--window-cells", "100,50,300,200"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::istringstream csv(testing::ReadFile(dir + "/w.csv"));
-  std::string line;
-  std::getline(csv, line);  // header
-  std::size_t rows = 0;
-  while (std::getline(csv, line)) ++rows;
-  EXPECT_EQ(rows, ExpectedRows(want).size());
+  ExpectCsvRows(testing::ReadFile(dir + "/w.csv"), ExpectedRows(want));
   const CliResult drawn =
       RunCli({"export", lmap, "-o", dir + "/w.svg", "--window-cells", "100,50,300,200"});
   ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
