@@ -21,6 +21,7 @@
 #include "format/deflate.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
+#include "tests/testing/reference_tolerance.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -85,6 +86,9 @@ TEST(CodecTest, EdgeCases) {
     EXPECT_EQ(within.width(), grid.width());
     EXPECT_EQ(within.height(), grid.height());
     EXPECT_EQ(within.meta, grid.meta);
+    // Every guarantee of T = 1, by the brute-force references.
+    testing::ExpectGuarantees(grid, within, 1,
+                              std::to_string(grid.width()) + "x" + std::to_string(grid.height()));
   }
 }
 

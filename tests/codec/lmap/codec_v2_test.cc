@@ -18,6 +18,7 @@
 #include "linemap/map_io.h"
 #include "linemap/segmentation.h"
 #include "tests/testing/reference_geometry.h"
+#include "tests/testing/reference_tolerance.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
@@ -426,6 +427,9 @@ TEST(CodecV2Test, ToleranceFilesDecodeToTheSimplifiedMapOrTheExactOne) {
       auto simplified = SimplifyWithinTolerance(*grid, t);
       ASSERT_TRUE(simplified.ok());
       EXPECT_TRUE(*decoded == *simplified || *decoded == *grid) << map << " T = " << t;
+      // What the file decodes to keeps every guarantee, by the brute-force
+      // references (not by the encoder's own checks).
+      testing::ExpectGuarantees(*grid, *decoded, t, map);
       // The header says whether the file is exact, and a file that is not
       // names its tolerance in its metadata.
       auto contents = DecodeLmapContents(*bytes);

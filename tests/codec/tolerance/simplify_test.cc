@@ -19,249 +19,20 @@
 #include "linemap/codec.h"
 #include "linemap/map_io.h"
 #include "tests/testing/reference_components.h"
+#include "tests/testing/reference_tolerance.h"
 #include "tests/testing/test_support.h"
 
 namespace linemap {
 namespace {
 
-// ---------------------------------------------------------------------------
-// References.
-
-// True when `grid` has a cell of `value` within Chebyshev distance t of
-// (c, r), by scanning the window.
-bool HasWithin(const Grid& grid, int c, int r, Cell value, int t) {
-  for (int dr = -t; dr <= t; ++dr) {
-    for (int dc = -t; dc <= t; ++dc) {
-      if (grid.Contains(c + dc, r + dr) && grid.at(c + dc, r + dr) == value) return true;
-    }
-  }
-  return false;
-}
-
-// Exact directed Hausdorff distance (Chebyshev) from `a`'s occupied cells to
-// `b`'s, by comparing every pair; -1 when b has none and a has some.
-int BruteHausdorff(const Grid& a, const Grid& b) {
-  std::vector<std::pair<int, int>> bs;
-  for (int r = 0; r < b.height(); ++r) {
-    for (int c = 0; c < b.width(); ++c) {
-      if (b.at(c, r) == Cell::kOccupied) bs.emplace_back(c, r);
-    }
-  }
-  int worst = 0;
-  for (int r = 0; r < a.height(); ++r) {
-    for (int c = 0; c < a.width(); ++c) {
-      if (a.at(c, r) != Cell::kOccupied) continue;
-      if (bs.empty()) return -1;
-      int best = INT32_MAX;
-      for (const auto& [bc, br] : bs)
-        best = std::min(best, std::max(std::abs(bc - c), std::abs(br - r)));
-      worst = std::max(worst, best);
-    }
-  }
-  return worst;
-}
-
-// 4-connected free regions by flood fill; labels from 1, 0 elsewhere.
-std::vector<int> FloodFree(const Grid& g, std::vector<int>* sizes) {
-  std::vector<int> label(g.size(), 0);
-  sizes->assign(1, 0);
-  for (int r = 0; r < g.height(); ++r) {
-    for (int c = 0; c < g.width(); ++c) {
-      if (g.at(c, r) != Cell::kFree || label[g.Index(c, r)]) continue;
-      const int id = static_cast<int>(sizes->size());
-      sizes->push_back(0);
-      std::deque<std::pair<int, int>> queue{{c, r}};
-      label[g.Index(c, r)] = id;
-      while (!queue.empty()) {
-        const auto [x, y] = queue.front();
-        queue.pop_front();
-        ++(*sizes)[id];
-        const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
-        for (int k = 0; k < 4; ++k) {
-          const int nx = x + dx[k], ny = y + dy[k];
-          if (g.Contains(nx, ny) && g.at(nx, ny) == Cell::kFree && !label[g.Index(nx, ny)]) {
-            label[g.Index(nx, ny)] = id;
-            queue.emplace_back(nx, ny);
-          }
-        }
-      }
-    }
-  }
-  return label;
-}
-
-struct TopologyCount {
-  int leaks = 0;
-  int splits = 0;
-};
-
-TopologyCount BruteTopology(const Grid& original, const Grid& decoded) {
-  std::vector<int> osize, dsize;
-  const std::vector<int> o = FloodFree(original, &osize);
-  const std::vector<int> d = FloodFree(decoded, &dsize);
-  std::vector<std::set<int>> regions_of_dec(dsize.size());
-  std::vector<std::set<int>> pieces_of_orig(osize.size());
-  for (std::size_t i = 0; i < o.size(); ++i) {
-    if (!o[i] || !d[i] || osize[o[i]] < static_cast<int>(kLeakRegionCells)) continue;
-    regions_of_dec[d[i]].insert(o[i]);
-    pieces_of_orig[o[i]].insert(d[i]);
-  }
-  TopologyCount out;
-  for (const auto& s : regions_of_dec)
-    out.leaks += s.size() > 1 ? static_cast<int>(s.size()) - 1 : 0;
-  for (const auto& s : pieces_of_orig) out.splits += s.size() > 1;
-  return out;
-}
-
-// Steps of a 4-connected path over free cells from `from` to every cell.
-std::vector<int> BfsSteps(const Grid& g, int from) {
-  std::vector<int> steps(g.size(), -1);
-  std::deque<int> queue{from};
-  steps[from] = 0;
-  while (!queue.empty()) {
-    const int i = queue.front();
-    queue.pop_front();
-    const int c = i % g.width(), r = i / g.width();
-    const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
-    for (int k = 0; k < 4; ++k) {
-      const int nc = c + dx[k], nr = r + dy[k];
-      if (!g.Contains(nc, nr) || g.at(nc, nr) != Cell::kFree) continue;
-      const int n = static_cast<int>(g.Index(nc, nr));
-      if (steps[n] < 0) {
-        steps[n] = steps[i] + 1;
-        queue.push_back(n);
-      }
-    }
-  }
-  return steps;
-}
-
-// Start / goal pairs chosen here (every cell free in both, a fixed stride
-// apart), not the module's sample: plans exist on both or neither, and
-// lengths agree within 3 %.
-void ExpectPlansAgree(const Grid& o, const Grid& s, int sources) {
-  std::vector<int> both;
-  for (std::size_t i = 0; i < o.size(); ++i) {
-    if (o.cells()[i] == Cell::kFree && s.cells()[i] == Cell::kFree)
-      both.push_back(static_cast<int>(i));
-  }
-  if (both.empty()) return;
-  const std::size_t src_stride = std::max<std::size_t>(1, both.size() / sources);
-  const std::size_t goal_stride = std::max<std::size_t>(1, both.size() / 97);
-  int disagreements = 0, pairs = 0;
-  for (std::size_t a = src_stride / 2; a < both.size(); a += src_stride) {
-    const std::vector<int> lo = BfsSteps(o, both[a]);
-    const std::vector<int> ls = BfsSteps(s, both[a]);
-    for (std::size_t b = 0; b < both.size(); b += goal_stride) {
-      const int x = lo[both[b]], y = ls[both[b]];
-      ++pairs;
-      const bool agree = (x < 0) == (y < 0) && (x < 0 || std::abs(x - y) <= 0.03 * x);
-      disagreements += !agree;
-    }
-  }
-  EXPECT_EQ(disagreements, 0) << "of " << pairs << " pairs";
-}
-
-// Steps from `from` over free cells up to `depth` (cells not reached are
-// absent).
-std::map<int, int> NearSteps(const Grid& g, int from, int depth) {
-  std::map<int, int> steps{{from, 0}};
-  std::deque<int> queue{from};
-  while (!queue.empty()) {
-    const int i = queue.front();
-    queue.pop_front();
-    const int d = steps[i];
-    if (d == depth) continue;
-    const int c = i % g.width(), r = i / g.width();
-    const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-    for (int k = 0; k < 4; ++k) {
-      if (!g.Contains(c + dc[k], r + dr[k]) || g.at(c + dc[k], r + dr[k]) != Cell::kFree) continue;
-      const int n = static_cast<int>(g.Index(c + dc[k], r + dr[k]));
-      if (steps.emplace(n, d + 1).second) queue.push_back(n);
-    }
-  }
-  return steps;
-}
-
-// The encoder's local plan check, by its definition: from every cell free
-// in both maps beside a cell free in one only, each plan of up to 16 steps
-// on one map to a cell free on the other is there in as many steps. The
-// plans counted and those that are not.
-struct LocalPlanFigures {
-  std::size_t plans = 0;
-  std::size_t bad = 0;
-};
-LocalPlanFigures BruteLocalPlans(const Grid& o, const Grid& s) {
-  auto free_in = [](const Grid& g, int i) { return g.cells()[i] == Cell::kFree; };
-  LocalPlanFigures out;
-  for (int r = 0; r < o.height(); ++r) {
-    for (int c = 0; c < o.width(); ++c) {
-      const int i = static_cast<int>(o.Index(c, r));
-      if (!free_in(o, i) || !free_in(s, i)) continue;
-      bool beside_change = false;
-      const int dc[4] = {1, -1, 0, 0}, dr[4] = {0, 0, 1, -1};
-      for (int k = 0; k < 4; ++k) {
-        if (!o.Contains(c + dc[k], r + dr[k])) continue;
-        const int n = static_cast<int>(o.Index(c + dc[k], r + dr[k]));
-        beside_change = beside_change || free_in(o, n) != free_in(s, n);
-      }
-      if (!beside_change) continue;
-      const std::map<int, int> a = NearSteps(o, i, 16), b = NearSteps(s, i, 16);
-      for (const auto& [goal, steps] : a) {
-        if (!free_in(s, goal)) continue;
-        const auto it = b.find(goal);
-        ++out.plans;
-        out.bad += it == b.end() || it->second > steps;
-      }
-      for (const auto& [goal, steps] : b) {
-        if (!free_in(o, goal)) continue;
-        const auto it = a.find(goal);
-        ++out.plans;
-        out.bad += it == a.end() || it->second > steps;
-      }
-    }
-  }
-  return out;
-}
-
-void ExpectLocalPlansAgree(const Grid& o, const Grid& s) {
-  EXPECT_EQ(BruteLocalPlans(o, s).bad, 0u)
-      << "plans of up to 16 steps beside a change of different lengths";
-}
-
-// Every guarantee of tolerance t, by the references above.
-void ExpectGuarantees(const Grid& o, const Grid& s, int t, const std::string& what) {
-  SCOPED_TRACE(what + " T=" + std::to_string(t));
-  ASSERT_EQ(o.width(), s.width());
-  ASSERT_EQ(o.height(), s.height());
-  EXPECT_EQ(o.meta, s.meta);
-  int occ_lost = 0, occ_new = 0, free_new = 0, free_lost = 0;
-  for (int r = 0; r < o.height(); ++r) {
-    for (int c = 0; c < o.width(); ++c) {
-      if (o.at(c, r) == Cell::kOccupied) occ_lost += !HasWithin(s, c, r, Cell::kOccupied, t);
-      if (s.at(c, r) == Cell::kOccupied) occ_new += !HasWithin(o, c, r, Cell::kOccupied, t);
-      if (s.at(c, r) == Cell::kFree) free_new += !HasWithin(o, c, r, Cell::kFree, t);
-      if (o.at(c, r) == Cell::kFree) free_lost += !HasWithin(s, c, r, Cell::kFree, t);
-    }
-  }
-  EXPECT_EQ(occ_lost, 0) << "original obstacles without a decoded one within T";
-  EXPECT_EQ(occ_new, 0) << "decoded obstacles without an original one within T";
-  EXPECT_EQ(free_new, 0) << "decoded free cells (unknown turned free) beyond T";
-  EXPECT_EQ(free_lost, 0) << "original free cells without decoded free within T";
-  const TopologyCount topo = BruteTopology(o, s);
-  EXPECT_EQ(topo.leaks, 0);
-  EXPECT_EQ(topo.splits, 0);
-  ExpectPlansAgree(o, s, 6);
-  // Beyond guarantees 3 and 4 (regions of 50+ cells; sampled and local
-  // plans), what the encoder's mending does: no pocket of free space is
-  // joined or split either, so every pair has a plan on both maps or on
-  // neither.
-  EXPECT_EQ(testing::PlansOnOneGridOnly(o, s), 0) << "pairs with a plan on one map only";
-  ExpectLocalPlansAgree(o, s);
-  // And the library's own check, which plans from the encoder's sampled
-  // starts rather than the strided ones above.
-  EXPECT_TRUE(CheckTolerance(o, s, t).Holds());
-}
+using testing::BfsSteps;
+using testing::BruteHausdorff;
+using testing::BruteLocalPlans;
+using testing::BruteTopology;
+using testing::ExpectGuarantees;
+using testing::HasWithin;
+using testing::LocalPlanFigures;
+using testing::TopologyCount;
 
 // ---------------------------------------------------------------------------
 // Maps.
@@ -529,7 +300,8 @@ TEST(ToleranceTest, CheckToleranceFiguresMatchReferences) {
       const TopologyCount topo = BruteTopology(o, d);
       EXPECT_EQ(rep.leaks, static_cast<std::size_t>(topo.leaks));
       EXPECT_EQ(rep.splits, static_cast<std::size_t>(topo.splits));
-      const LocalPlanFigures local = BruteLocalPlans(o, d);
+      // CheckTolerance counts the plans of up to 16 steps, as eval reports.
+      const LocalPlanFigures local = BruteLocalPlans(o, d, 16);
       local_bad += local.bad;
       EXPECT_EQ(rep.local_plans, local.plans);
       EXPECT_EQ(rep.local_plan_disagreements, local.bad);
