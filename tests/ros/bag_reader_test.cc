@@ -194,8 +194,10 @@ TEST_F(BagTest, BagOptionsOnAMapAreRefusedNamingThem) {
 }
 
 // --metadata stores the frame a message names (the fixture's is "map"; one
-// in "world" keeps it).
-TEST_F(BagTest, MetadataNamesTheMessagesFrame) {
+// in "world" keeps it) and its stamp as ISO 8601 UTC (1,700,000,001.5 s is
+// 2023-11-14T22:13:21.5Z: `date -u -d @1700000001`), unless --time gives
+// one.
+TEST_F(BagTest, MetadataNamesTheMessagesFrameAndTime) {
   const std::string path = dir_ + "/world.bag";
   rosbag::Bag bag;
   bag.open(path, rosbag::bagmode::Write);
@@ -209,6 +211,17 @@ TEST_F(BagTest, MetadataNamesTheMessagesFrame) {
   EXPECT_NE(std::find(contents->metadata.begin(), contents->metadata.end(),
                       std::pair<std::string, std::string>{"frame_id", "world"}),
             contents->metadata.end());
+  EXPECT_NE(std::find(contents->metadata.begin(), contents->metadata.end(),
+                      std::pair<std::string, std::string>{"time", "2023-11-14T22:13:21.5Z"}),
+            contents->metadata.end());
+  ASSERT_EQ(RunCli({"encode", path, "--metadata", "--time", "2024-05-01", "-o", dir_ + "/t.lmap"})
+                .exit_code,
+            0);
+  StatusOr<LmapContents> timed = LoadLmapContents(dir_ + "/t.lmap");
+  ASSERT_TRUE(timed.ok());
+  EXPECT_NE(std::find(timed->metadata.begin(), timed->metadata.end(),
+                      std::pair<std::string, std::string>{"time", "2024-05-01"}),
+            timed->metadata.end());
 }
 
 // A map of no cells in a bag is refused when it is read, not saved as a

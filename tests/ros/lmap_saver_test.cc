@@ -18,6 +18,7 @@
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "ros/ros_messages.h"
 #include "tests/ros/ros_maps.h"
 #include "tests/ros/ros_test_support.h"
@@ -273,6 +274,44 @@ TEST(LmapSaverTest, EveryKeepsSavingAfterAMalformedMap) {
       << saver->Stderr();
   EXPECT_EQ(saver->Stop(SIGINT), 0) << saver->Stderr();
   EXPECT_EQ(ListDir(dir), std::vector<std::string>{"robot.lmap"});
+}
+
+// --metadata stores the saver, the message's frame and its stamp as ISO
+// 8601 UTC; without it the file holds no metadata (the same map gives the
+// same bytes). 1,700,000,000.25 s is 2023-11-14T22:13:20.25Z (`date -u -d
+// @1700000000`).
+TEST(LmapSaverTest, MetadataStoresTheFrameAndTheStamp) {
+  RosMaster& master = SharedMaster();
+  ros::NodeHandle nh;
+  ros::Publisher publisher = nh.advertise<OccupancyGridMsg>("/v9/map", 1, /*latch=*/true);
+  OccupancyGridMsg message = MessageWithLevels(LoadBundledMap("navtut/lse_arena.yaml"));
+  message.header.frame_id = "floor_2";
+  message.header.stamp = ros::Time(1700000000, 250000000);
+  publisher.publish(message);
+  const std::string dir = MakeTempDir("saver_metadata");
+  for (const bool metadata : {true, false}) {
+    const std::string name = dir + (metadata ? "/with" : "/without");
+    auto saver =
+        StartSaver(master, "/v9/map", name,
+                   metadata ? std::vector<std::string>{"--metadata"} : std::vector<std::string>{});
+    const std::optional<int> code = saver->Wait(20);
+    ASSERT_TRUE(code.has_value()) << "lmap_saver did not exit";
+    ASSERT_EQ(*code, 0) << saver->Stderr();
+    StatusOr<LmapHeader> header = LoadLmapHeader(name + ".lmap");
+    ASSERT_TRUE(header.ok()) << header.status().message();
+    if (!metadata) {
+      EXPECT_TRUE(header->metadata.empty());
+      continue;
+    }
+    ASSERT_EQ(header->metadata.size(), 3u);
+    EXPECT_EQ(header->metadata[0].first, "creator");
+    EXPECT_EQ(header->metadata[0].second.rfind("linemap lmap_saver ", 0), 0u)
+        << header->metadata[0].second;
+    EXPECT_EQ(header->metadata[1],
+              (std::pair<std::string, std::string>{"time", "2023-11-14T22:13:20.25Z"}));
+    EXPECT_EQ(header->metadata[2], (std::pair<std::string, std::string>{"frame_id", "floor_2"}));
+    EXPECT_TRUE(FileHoldsCells(name + ".lmap", ExpectedGrid(message)));
+  }
 }
 
 // An output that cannot be written is refused at startup, before the master

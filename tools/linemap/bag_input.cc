@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "format/file_io.h"
+#include "format/iso_time.h"
 #include "linemap/map_io.h"
 #include "linemap/occupancy_grid.h"
 #include "ros/bag_reader.h"
@@ -230,9 +231,15 @@ Status EncodeOne(EncodeVisit* visit, std::uint64_t index, std::uint64_t count,
                                   std::to_string(grid->height()) + " cells)");
     }
   }
-  // --metadata names the map's frame: a message says its own.
+  // --metadata names the map's frame and time: a message says its own (its
+  // stamp, "SEC_NSEC", as ISO 8601 UTC, unless --time gave one).
   EncodeOptions options = *visit->options;
   if (!options.frame_id.empty() && !message.frame_id.empty()) options.frame_id = message.frame_id;
+  std::uint32_t sec = 0, nsec = 0;
+  if (!options.creator.empty() && options.time.empty() &&
+      std::sscanf(stamp.c_str(), "%u_%u", &sec, &nsec) == 2) {
+    options.time = Iso8601FromStamp(sec, nsec);
+  }
   StatusOr<std::vector<std::uint8_t>> bytes = EncodeLmap(*grid, options);
   if (!bytes.ok()) return bytes.status().WithContext(where);
   LINEMAP_ASSIGN_OR_RETURN(std::string out, OutputPath(visit, stamp));

@@ -94,7 +94,8 @@ const CommandSpec kEncodeSpec = {
          "text is refused"},
         {"--metadata", "",
          "also store creator (linemap and its version) and the frame id: 'map', or a bag "
-         "message's own"},
+         "message's own; for a bag also the time, the message's stamp in ISO 8601 UTC (its "
+         "recording time when the stamp is zero), unless --time gives one"},
         {"--no-png-ratio", "",
          "skip making the PNG-9 the ratio is printed against (skipped anyway above 2^26 "
          "cells, where it costs as much time and memory as the save)"},
