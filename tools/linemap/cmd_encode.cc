@@ -10,11 +10,11 @@
 #include <future>
 #include <memory>
 #include <optional>
-#include <regex>
 #include <string_view>
 #include <system_error>
 
 #include "format/file_io.h"
+#include "format/iso_time.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
@@ -113,28 +113,6 @@ const CommandSpec kEncodeSpec = {
 
 namespace {
 
-// Days in `month` (1-12) of `year` in the Gregorian calendar ISO 8601 uses.
-int DaysInMonth(int year, int month) {
-  static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-  return month == 2 && leap ? 29 : kDays[month - 1];
-}
-
-// The extended ISO 8601 forms a map's `time` takes: a date (YYYY-MM-DD)
-// that the calendar has, optionally "T" and hh:mm[:ss[.fraction]],
-// optionally a zone (Z, +hh:mm, +hhmm or +hh, or -). The format's `time`
-// key is ISO 8601 text, which a reader may parse; "yesterday" or
-// 2026-02-30 would be stored and fail there.
-bool IsIso8601DateTime(const std::string& text) {
-  static const std::regex kForm(
-      R"((\d{4})-(0[1-9]|1[0-2])-(0[1-9]|[12]\d|3[01]))"
-      R"((T([01]\d|2[0-3]):[0-5]\d(:([0-5]\d|60)(\.\d+)?)?(Z|[+-]([01]\d|2[0-3])(:?[0-5]\d)?)?)?)");
-  std::smatch date;
-  if (!std::regex_match(text, date, kForm)) return false;
-  return std::stoi(date[3].str()) <=
-         DaysInMonth(std::stoi(date[1].str()), std::stoi(date[2].str()));
-}
-
 StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
   EncodeOptions options;
   options.vector_layers = !args.Has("--raster-only");
@@ -191,23 +169,7 @@ StatusOr<EncodeOptions> EncodeOptionsFrom(const ParsedArgs& args) {
     options.robot_pose = Pose2D{pose[0], pose[1], pose.size() > 2 ? pose[2] : 0.0};
   }
   if (std::optional<std::string> time = args.Get("--time")) {
-    // The spec's `time` is ISO 8601 text, which holds no control character;
-    // a newline would also split the line `linemap info` prints it on.
-    const auto control = std::find_if(time->begin(), time->end(), [](char c) {
-      const auto byte = static_cast<unsigned char>(c);
-      return byte < 0x20 || byte == 0x7f;
-    });
-    if (control != time->end()) {
-      char code[8];
-      std::snprintf(code, sizeof(code), "0x%02x", static_cast<unsigned char>(*control));
-      return InvalidArgumentError(std::string("--time holds the control character ") + code +
-                                  ": give an ISO 8601 time such as 2024-05-01T12:00:00Z");
-    }
-    if (!IsIso8601DateTime(*time)) {
-      return InvalidArgumentError("--time '" + *time +
-                                  "' is not an ISO 8601 date or date-time such as "
-                                  "2024-05-01T12:00:00Z (or 2024-05-01, 2024-05-01T12:00+02:00)");
-    }
+    LINEMAP_RETURN_IF_ERROR(CheckIso8601Time("--time", *time));
     options.time = *time;
   }
   if (args.Has("--metadata")) {
