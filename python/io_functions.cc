@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "format/file_io.h"
+#include "format/iso_time.h"
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
@@ -51,6 +52,54 @@ EncodeOptions EncodeOptionsFor(int tolerance, bool vectors, bool straight_walls,
   options.straight_walls = straight_walls;
   options.compact = compact;
   return options;
+}
+
+// metadata=: the format's metadata keys (spec/format.md 4.3) as info()
+// returns them, each a str: creator, time (ISO 8601, checked as `linemap
+// encode --time` checks it), frame_id, robot_pose ("x y yaw", metres and
+// radians, or a sequence of 2 or 3 numbers). `tolerance` is the encoder's
+// to write (tolerance=); other keys are refused rather than dropped.
+void ApplyMetadataArgument(const py::object& metadata, EncodeOptions* options) {
+  if (metadata.is_none()) return;
+  if (!py::isinstance<py::dict>(metadata)) {
+    throw py::type_error("metadata must be a dict of str (creator, time, frame_id, robot_pose)");
+  }
+  for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(metadata)) {
+    if (!py::isinstance<py::str>(key)) throw py::type_error("metadata keys must be str");
+    const std::string name = key.cast<std::string>();
+    const std::string what = "metadata['" + name + "']";
+    if (name == "robot_pose" && !py::isinstance<py::str>(value)) {
+      const std::vector<double> pose = FiniteFloats(value, what.c_str(), 2, 3);
+      options->robot_pose = Pose2D{pose[0], pose[1], pose.size() > 2 ? pose[2] : 0.0};
+      continue;
+    }
+    if (name == "tolerance") {
+      throw py::value_error("metadata['tolerance'] is written by the encoder: give tolerance=");
+    }
+    if (name != "creator" && name != "time" && name != "frame_id" && name != "robot_pose") {
+      throw py::value_error("metadata key '" + name +
+                            "' is none of creator, time, frame_id, robot_pose");
+    }
+    if (!py::isinstance<py::str>(value)) throw py::type_error(what + " must be a str");
+    const std::string text = value.cast<std::string>();
+    if (name == "creator") options->creator = text;
+    if (name == "frame_id") options->frame_id = text;
+    if (name == "time") {
+      const Status iso = CheckIso8601Time(what, text);
+      if (!iso.ok()) throw py::value_error(iso.message());
+      options->time = text;
+    }
+    if (name == "robot_pose") {
+      double x = 0, y = 0, yaw = 0;
+      char rest = 0;
+      const int n = std::sscanf(text.c_str(), "%lf %lf %lf %c", &x, &y, &yaw, &rest);
+      if ((n != 2 && n != 3) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) {
+        throw py::value_error(what + " must be \"x y yaw\" or \"x y\" (metres, radians), not '" +
+                              text + "'");
+      }
+      options->robot_pose = Pose2D{x, y, n == 3 ? yaw : 0.0};
+    }
+  }
 }
 
 // (col0, row0, col1, row1): four whole numbers, as LoadLmapRegion takes
@@ -118,7 +167,8 @@ std::uint64_t MaxToleranceCellsArgument(const py::object& value) {
 // A map YAML + PGM is always the exact trinary image: an .lmap option away
 // from its default would be dropped without a word, so it is refused.
 void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bool straight_walls,
-                        bool compact, std::uint64_t max_tolerance_cells) {
+                        bool compact, std::uint64_t max_tolerance_cells,
+                        const py::object& metadata) {
   const EncodeOptions defaults;
   std::vector<std::string> given;
   if (tolerance != 0) given.push_back("tolerance");
@@ -126,6 +176,7 @@ void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bo
   if (straight_walls != defaults.straight_walls) given.push_back("straight_walls");
   if (compact != defaults.compact) given.push_back("compact");
   if (max_tolerance_cells != defaults.max_tolerance_cells) given.push_back("max_tolerance_cells");
+  if (!metadata.is_none()) given.push_back("metadata");
   if (given.empty()) return;
   std::string names;
   for (const std::string& name : given) names += (names.empty() ? "" : ", ") + name;
@@ -146,7 +197,8 @@ void CheckNameBeforeExtension(const std::string& path) {
 }
 
 void Save(const py::object& path_arg, const Map& map, const py::object& tolerance_arg, bool vectors,
-          bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg) {
+          bool straight_walls, bool compact, const py::object& max_tolerance_cells_arg,
+          const py::object& metadata) {
   const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string path = PathArgument(path_arg);
@@ -156,8 +208,12 @@ void Save(const py::object& path_arg, const Map& map, const py::object& toleranc
   }
   CheckNameBeforeExtension(path);
   if (yaml) {
-    CheckNoLmapOptions(path, tolerance, vectors, straight_walls, compact, max_tolerance_cells);
+    CheckNoLmapOptions(path, tolerance, vectors, straight_walls, compact, max_tolerance_cells,
+                       metadata);
   }
+  EncodeOptions options =
+      EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells);
+  ApplyMetadataArgument(metadata, &options);
   const Grid grid = GridFromMap(map);
   // A map of no cells is a valid .lmap file (the format's width and height
   // may be 0), but not a map image: PGM and map_server need a pixel.
@@ -170,10 +226,7 @@ void Save(const py::object& path_arg, const Map& map, const py::object& toleranc
   Status saved;
   {
     py::gil_scoped_release release;
-    saved = yaml ? SaveRosMap(path, grid)
-                 : SaveLmap(path, grid,
-                            EncodeOptionsFor(tolerance, vectors, straight_walls, compact,
-                                             max_tolerance_cells));
+    saved = yaml ? SaveRosMap(path, grid) : SaveLmap(path, grid, options);
   }
   if (!saved.ok()) {
     RaiseWriteStatus(saved, yaml ? std::vector<std::string>{SavedImagePath(path), path}
@@ -183,7 +236,7 @@ void Save(const py::object& path_arg, const Map& map, const py::object& toleranc
 
 void Convert(const py::object& source_arg, const py::object& path_arg,
              const py::object& tolerance_arg, bool vectors, bool straight_walls, bool compact,
-             const py::object& max_tolerance_cells_arg) {
+             const py::object& max_tolerance_cells_arg, const py::object& metadata) {
   const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
   const std::string source = PathArgument(source_arg);
@@ -192,15 +245,16 @@ void Convert(const py::object& source_arg, const py::object& path_arg,
     throw py::value_error("'" + path + "': linemap.convert writes .lmap files");
   }
   CheckNameBeforeExtension(path);
+  EncodeOptions options =
+      EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells);
+  ApplyMetadataArgument(metadata, &options);
   bool lmap_source = false;
   StatusOr<LmapSaveSummary> saved = InvalidArgumentError("not saved");
   {
     py::gil_scoped_release release;
     lmap_source = IsLmapFile(source);
     if (!lmap_source) {
-      saved = SaveRosMapAsLmap(
-          source, path,
-          EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
+      saved = SaveRosMapAsLmap(source, path, options);
     }
   }
   if (lmap_source) {
@@ -212,15 +266,18 @@ void Convert(const py::object& source_arg, const py::object& path_arg,
 }
 
 py::bytes Encode(const Map& map, const py::object& tolerance_arg, bool vectors, bool straight_walls,
-                 bool compact, const py::object& max_tolerance_cells_arg) {
+                 bool compact, const py::object& max_tolerance_cells_arg,
+                 const py::object& metadata) {
   const int tolerance = ToleranceCellsArgument(tolerance_arg);
   const std::uint64_t max_tolerance_cells = MaxToleranceCellsArgument(max_tolerance_cells_arg);
+  EncodeOptions options =
+      EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells);
+  ApplyMetadataArgument(metadata, &options);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
     py::gil_scoped_release release;
-    bytes = EncodeLmap(
-        grid, EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells));
+    bytes = EncodeLmap(grid, options);
   }
   const std::vector<std::uint8_t> out = ValueOrRaise(std::move(bytes));
   return py::bytes(reinterpret_cast<const char*>(out.data()), out.size());
@@ -452,7 +509,8 @@ names the file.
   module.def("save", &Save, py::arg("path"), py::arg("map"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,
              py::arg("compact") = false,
-             py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells, py::kw_only(),
+             py::arg("metadata") = py::none(), R"doc(
 Saves ``map`` atomically (temporary file, fsync, rename): as .lmap when
 ``path`` ends in .lmap, as map_saver's trinary YAML + PGM (same stem, .pgm)
 when it ends in .yaml or .yml, extensions in any case; other names raise
@@ -472,8 +530,13 @@ ms in the last bench; a median 4.7x per map, up to 9.6x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 25 bytes a cell (the default, 2^26 cells, about 1.7 GB); exact saves
-are not limited. Options the library refuses raise ValueError with its
-message. An output that cannot be written raises the OSError open() would,
+are not limited. ``metadata`` (keyword only) stores text in the file, the
+keys info() returns: ``creator``, ``time`` (ISO 8601, such as
+"2024-05-01T12:00:00Z"; other text raises ValueError), ``frame_id`` and
+``robot_pose`` ("x y yaw" in metres and radians, or a sequence of 2 or 3
+numbers; a point off the map raises ValueError); any other key raises
+ValueError (``tolerance`` is written from ``tolerance=``). Options the
+library refuses raise ValueError with its message. An output that cannot be written raises the OSError open() would,
 with its errno and ``filename``: FileNotFoundError for a missing folder,
 PermissionError for a read-only file (mode 0444 is refused even for root)
 or folder; other write failures the OSError of the errno the failed call
@@ -483,7 +546,8 @@ image pair it was about is not known.
   module.def("convert", &Convert, py::arg("source"), py::arg("path"), py::arg("tolerance") = 0,
              py::arg("vectors") = true, py::arg("straight_walls") = false,
              py::arg("compact") = false,
-             py::arg("max_tolerance_cells") = default_max_tolerance_cells, R"doc(
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells, py::kw_only(),
+             py::arg("metadata") = py::none(), R"doc(
 Saves the ROS map file ``source`` (a map YAML naming its image, or a bare
 PGM / PNG image) as the .lmap file ``path`` (extension in any case),
 without making a Map: the bytes ``save(path, load(source), ...)`` writes
@@ -497,9 +561,10 @@ naming the file.
 )doc");
   module.def("encode", &Encode, py::arg("map"), py::arg("tolerance") = 0, py::arg("vectors") = true,
              py::arg("straight_walls") = false, py::arg("compact") = false,
-             py::arg("max_tolerance_cells") = default_max_tolerance_cells,
+             py::arg("max_tolerance_cells") = default_max_tolerance_cells, py::kw_only(),
+             py::arg("metadata") = py::none(),
              "The .lmap bytes of ``map`` (``tolerance``, ``vectors``, ``straight_walls``, "
-             "``compact`` and ``max_tolerance_cells`` as for save()).");
+             "``compact``, ``max_tolerance_cells`` and ``metadata`` as for save()).");
   module.def("decode", &Decode, py::arg("data"), py::arg("max_cells") = py::none(), py::kw_only(),
              py::arg("limits") = py::none(),
              "The map in .lmap bytes (bytes, bytearray or memoryview). Corrupt data raises "

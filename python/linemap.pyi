@@ -5,7 +5,7 @@
 # (PEP 561; mypy reads installed modules' stubs only from there). tests/python/test_stubs.py checks that every name and
 # parameter here matches what the built module reports.
 import os
-from typing import Any, ClassVar, Optional, Sequence, Tuple, Union
+from typing import Any, ClassVar, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -130,6 +130,8 @@ def save(
     straight_walls: bool = False,
     compact: bool = False,
     max_tolerance_cells: int = 67108864,
+    *,
+    metadata: Optional[Mapping[str, Any]] = None,
 ) -> None: ...
 def convert(
     source: _Path,
@@ -139,6 +141,8 @@ def convert(
     straight_walls: bool = False,
     compact: bool = False,
     max_tolerance_cells: int = 67108864,
+    *,
+    metadata: Optional[Mapping[str, Any]] = None,
 ) -> None: ...
 def encode(
     map: Map,
@@ -147,6 +151,8 @@ def encode(
     straight_walls: bool = False,
     compact: bool = False,
     max_tolerance_cells: int = 67108864,
+    *,
+    metadata: Optional[Mapping[str, Any]] = None,
 ) -> bytes: ...
 def decode(
     data: _Buffer, max_cells: Optional[int] = None, *, limits: Optional[DecodeLimits] = None

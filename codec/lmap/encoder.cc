@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,22 @@ namespace {
 
 Status CheckEncodeOptions(const EncodeOptions& options);
 
+// The robot pose stored as metadata names a point of the map: a cell holds
+// it (CellHoldingPoint), as --pose, --room-at and a window take points.
+Status CheckRobotPose(int width, int height, const MapMetadata& meta,
+                      const EncodeOptions& options) {
+  if (!options.robot_pose) return Status::Ok();
+  const Pose2D& pose = *options.robot_pose;
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.yaw)) {
+    return InvalidArgumentError("robot pose is not finite");
+  }
+  if (CellHoldingPoint(meta, width, height, pose.x, pose.y)) return Status::Ok();
+  char text[160];
+  std::snprintf(text, sizeof(text), "robot pose %.3f,%.3f m is outside the map (%d x %d cells)",
+                pose.x, pose.y, width, height);
+  return InvalidArgumentError(text);
+}
+
 Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
   const int w = grid.width();
   const int h = grid.height();
@@ -53,6 +70,7 @@ Status CheckEncodeInput(const Grid& grid, const EncodeOptions& options) {
             " MB here): save it exact (tolerance 0) or raise the limit (max_tolerance_cells, "
             "--max-tolerance-cells)");
   }
+  LINEMAP_RETURN_IF_ERROR(CheckRobotPose(w, h, grid.meta, options));
   return CheckEncodeOptions(options);
 }
 
@@ -229,6 +247,8 @@ StatusOr<std::vector<std::uint8_t>> EncodeMapFile(const std::string& map_path,
   summary->width = reader->width();
   summary->height = reader->height();
   const std::string where = "'" + map_path + "'";
+  const Status pose = CheckRobotPose(reader->width(), reader->height(), reader->meta(), options);
+  if (!pose.ok()) return pose.WithContext(where);
   if (!EncodesByRows(reader->width(), reader->height(), options)) {
     reader.reset();
     LINEMAP_ASSIGN_OR_RETURN(Grid grid, LoadRosMap(map_path, load));

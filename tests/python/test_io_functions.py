@@ -988,3 +988,55 @@ def test_save_tolerance_is_checked_as_eval_checks_it(bad, error, tmp_path):
         with pytest.raises(error, match=r"tolerance must be .*0\.\.4.*not " + repr(bad)):
             call()
     assert not (tmp_path / "x.lmap").exists()
+
+
+# metadata= stores the keys info() returns, checked as `linemap encode`
+# checks them; the file's cells are the map's either way.
+def test_metadata_is_stored_and_read_back_by_info(tmp_path, cli):
+    m = linemap.load(BUNDLED["lse_arena"])
+    given = {"creator": "robot 7", "time": "2026-11-29T17:45:12.25Z", "frame_id": "floor_2",
+             "robot_pose": (1.5, 2.25, 0.5)}
+    path = tmp_path / "m.lmap"
+    linemap.save(path, m, metadata=given)
+    stored = linemap.info(path)["metadata"]
+    assert stored == {"creator": "robot 7", "time": "2026-11-29T17:45:12.25Z",
+                      "frame_id": "floor_2", "robot_pose": "1.5 2.25 0.5"}
+    assert np.array_equal(linemap.load(path).cells, m.cells)
+    # What info() gives back saves again the same, through encode() and
+    # convert() too.
+    assert linemap.info(linemap.encode(m, metadata=stored))["metadata"] == stored
+    converted = tmp_path / "c.lmap"
+    linemap.convert(BUNDLED["lse_arena"], converted, metadata=stored)
+    assert linemap.info(converted)["metadata"] == stored
+    # As the CLI stores it.
+    linemap_cli.run(cli, "encode", BUNDLED["lse_arena"], "-o", str(tmp_path / "cli.lmap"),
+                    "--time", "2026-11-29T17:45:12.25Z", "--pose", "1.5,2.25,0.5")
+    cli_meta = linemap.info(tmp_path / "cli.lmap")["metadata"]
+    assert cli_meta["time"] == stored["time"] and cli_meta["robot_pose"] == stored["robot_pose"]
+
+
+@pytest.mark.parametrize("metadata, error, match", [
+    ({"time": "yesterday"}, ValueError, "metadata\\['time'\\] 'yesterday' is not an ISO 8601"),
+    ({"time": "2026-02-30"}, ValueError, "is not an ISO 8601"),
+    ({"time": "2026-01-01\n"}, ValueError, "control character 0x0a"),
+    ({"tolerance": "1"}, ValueError, "written by the encoder"),
+    ({"owner": "me"}, ValueError, "'owner' is none of creator, time, frame_id, robot_pose"),
+    ({"creator": 7}, TypeError, "metadata\\['creator'\\] must be a str"),
+    ({"robot_pose": "1 2 3 4"}, ValueError, "robot_pose"),
+    ({"robot_pose": (1.0,)}, ValueError, "robot_pose"),
+    ({"robot_pose": (1.0, float("nan"))}, ValueError, "robot_pose"),
+    ({"robot_pose": (-50.0, 1.0)}, ValueError, "outside the map"),
+    ("creator=me", TypeError, "metadata must be a dict"),
+])
+def test_bad_metadata_is_refused_and_nothing_written(tmp_path, metadata, error, match):
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(error, match=match):
+        linemap.save(tmp_path / "m.lmap", m, metadata=metadata)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_metadata_applies_to_lmap_files_only(tmp_path):
+    m = linemap.load(BUNDLED["lse_arena"])
+    with pytest.raises(ValueError, match="metadata applies to .lmap files only"):
+        linemap.save(tmp_path / "m.yaml", m, metadata={"creator": "me"})
+    assert list(tmp_path.iterdir()) == []

@@ -105,14 +105,21 @@ TEST(CodecTest, HeaderKeepsMetadataBitForBit) {
   }
 }
 
+// A 4 x 4 map at 0.05 m/cell whose cells hold (x, y) metres.
+Grid SmallMapAround(double x, double y) {
+  Grid grid(4, 4, Cell::kFree);
+  grid.meta.origin = {x - 0.1, y - 0.1, 0.0};
+  return grid;
+}
+
 TEST(CodecTest, MetadataChunkIsReadBack) {
   EncodeOptions options;
   options.creator = "unit test";
   options.time = "2026-11-22T04:00:00Z";
   options.frame_id = "map";
   options.robot_pose = Pose2D{1.5, -2.0, 0.25};
-  auto bytes = EncodeLmap(Grid(4, 4, Cell::kFree), options);
-  ASSERT_TRUE(bytes.ok());
+  auto bytes = EncodeLmap(SmallMapAround(1.5, -2.0), options);
+  ASSERT_TRUE(bytes.ok()) << bytes.status().ToString();
   auto contents = DecodeLmapContents(*bytes);
   ASSERT_TRUE(contents.ok());
   ASSERT_EQ(contents->metadata.size(), 4u);
@@ -122,7 +129,7 @@ TEST(CodecTest, MetadataChunkIsReadBack) {
   EXPECT_EQ(contents->metadata[3],
             (std::pair<std::string, std::string>{"robot_pose", "1.5 -2 0.25"}));
   options.robot_pose = Pose2D{30.19, 15.34, 0.1};
-  auto posed = DecodeLmapContents(*EncodeLmap(Grid(4, 4, Cell::kFree), options));
+  auto posed = DecodeLmapContents(*EncodeLmap(SmallMapAround(30.19, 15.34), options));
   ASSERT_TRUE(posed.ok());
   EXPECT_EQ(posed->metadata[3].second, "30.19 15.34 0.1");
 }
@@ -151,6 +158,33 @@ TEST(CodecTest, RobotPoseChangesOnlyTheMetadata) {
     ASSERT_EQ(contents->metadata.size(), 1u);
     EXPECT_EQ(contents->metadata[0].first, "robot_pose");
   }
+}
+
+// The pose stored is a point of the map, as --pose is: off the map or not
+// finite it is refused, by the grid encoder and by the map-file one.
+TEST(CodecTest, RobotPoseOffTheMapIsRefused) {
+  Grid grid(20, 10, Cell::kFree);
+  grid.meta.resolution = 0.1;
+  grid.meta.origin = {1.0, 2.0, 0.0};  // the map spans x 1..3 m, y 2..3 m
+  const std::string dir = testing::MakeTempDir("codec_pose_off");
+  ASSERT_TRUE(SaveRosMap(dir + "/m.yaml", grid).ok());
+  for (const Pose2D& pose : {Pose2D{0.99, 2.5, 0}, Pose2D{2.0, 3.0, 0}, Pose2D{NAN, 2.5, 0},
+                             Pose2D{2.0, 2.5, INFINITY}}) {
+    EncodeOptions options;
+    options.robot_pose = pose;
+    const auto bytes = EncodeLmap(grid, options);
+    ASSERT_FALSE(bytes.ok()) << pose.x << "," << pose.y;
+    EXPECT_EQ(bytes.status().code(), StatusCode::kInvalidArgument);
+    EXPECT_NE(bytes.status().message().find("robot pose"), std::string::npos);
+    const auto saved = SaveRosMapAsLmap(dir + "/m.yaml", dir + "/m.lmap", options);
+    ASSERT_FALSE(saved.ok());
+    EXPECT_NE(saved.status().message().find("robot pose"), std::string::npos);
+    EXPECT_FALSE(testing::FileExists(dir + "/m.lmap"));
+  }
+  // On the map's lower-left edge it is in cell (0, 0).
+  EncodeOptions options;
+  options.robot_pose = Pose2D{1.0, 2.0, 0.0};
+  EXPECT_TRUE(EncodeLmap(grid, options).ok());
 }
 
 // A grid that is itself a map simplified within T cells is saved exact but
