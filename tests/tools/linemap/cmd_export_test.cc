@@ -238,6 +238,18 @@ std::string Group(const std::string& svg, const std::string& name) {
   return svg.substr(start, svg.find("</g>", start) - start);
 }
 
+// The map image an SVG embeds, read back as a bare map image (written to
+// dir/embedded.png on the way).
+StatusOr<Grid> EmbeddedMap(const std::string& svg, const std::string& dir) {
+  const std::string key = "href=\"data:image/png;base64,";
+  const std::size_t at = svg.find(key);
+  if (at == std::string::npos) return NotFoundError("no embedded PNG");
+  const std::size_t end = svg.find('"', at + key.size());
+  testing::WriteFile(dir + "/embedded.png",
+                     Base64Decode(svg.substr(at + key.size(), end - at - key.size())));
+  return LoadMapImage(dir + "/embedded.png", MapMetadata{});
+}
+
 TEST(CmdExportTest, SvgDrawsTheLayersOverTheDecodedMap) {
   const std::string dir = testing::MakeTempDir("export_svg");
   const std::string lmap = EncodedDepot(dir);
@@ -251,15 +263,9 @@ TEST(CmdExportTest, SvgDrawsTheLayersOverTheDecodedMap) {
   EXPECT_EQ(Count(Group(svg, "furniture"), "<polygon "), v->furniture.size());
   // The embedded image, read back as a bare map image, is the decoded map
   // (north up: image row 0 is the top grid row).
-  const std::string key = "href=\"data:image/png;base64,";
-  const std::size_t at = svg.find(key);
-  ASSERT_NE(at, std::string::npos);
-  const std::size_t end = svg.find('"', at + key.size());
-  testing::WriteFile(dir + "/embedded.png",
-                     Base64Decode(svg.substr(at + key.size(), end - at - key.size())));
   StatusOr<Grid> decoded = LoadLmap(lmap);
   ASSERT_TRUE(decoded.ok());
-  StatusOr<Grid> image = LoadMapImage(dir + "/embedded.png", MapMetadata{});
+  StatusOr<Grid> image = EmbeddedMap(svg, dir);
   ASSERT_TRUE(image.ok()) << image.status().message();
   EXPECT_EQ(image->cells(), decoded->cells());
   // The yaw of 0.5 rad turns the image (clockwise on screen, y down).
@@ -309,6 +315,18 @@ TEST(CmdExportTest, WindowKeepsTheItemsWhoseBoxMeetsIt) {
   ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
   const std::string svg = testing::ReadFile(dir + "/w.svg");
   EXPECT_EQ(Count(Group(svg, "wall"), "<polyline "), want.walls.size());
+  // Its image is the window's cells of the whole decode, cropped here.
+  StatusOr<Grid> whole = LoadLmap(lmap);
+  ASSERT_TRUE(whole.ok());
+  StatusOr<Grid> image = EmbeddedMap(svg, dir);
+  ASSERT_TRUE(image.ok()) << image.status().message();
+  ASSERT_EQ(image->width(), w.col1 - w.col0);
+  ASSERT_EQ(image->height(), w.row1 - w.row0);
+  for (int r = w.row0; r < w.row1; ++r) {
+    for (int c = w.col0; c < w.col1; ++c) {
+      ASSERT_EQ(image->at(c - w.col0, r - w.row0), whole->at(c, r)) << c << "," << r;
+    }
+  }
   EXPECT_NE(svg.find("<g clip-path=\"url(#map_area)\">"), std::string::npos);
   const CliResult past =
       RunCli({"export", lmap, "-o", dir + "/p.csv", "--window-cells", "100,50,700,200"});
