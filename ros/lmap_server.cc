@@ -34,7 +34,8 @@ constexpr const char* kUsage =
     "usage: lmap_server [MAP] [--wait-master S]\n"
     "  MAP               .lmap file, map YAML or PGM/PNG image (or the parameter ~map)\n"
     "  --wait-master S   seconds to wait for the ROS master (default 10)\n"
-    "parameters: ~map, ~frame_id (default map), ~window x0,y0,x1,y1 (metres, optional;\n"
+    "parameters: ~map, ~frame_id (default: the frame_id an .lmap file names, else map),\n"
+    "            ~window x0,y0,x1,y1 (metres, optional;\n"
     "            the cells whose centres lie in it, as linemap decode --window takes them;\n"
     "            refused when it reaches past the map)\n"
     "  maps over a limit are refused; each a whole number from 1 to 2147483647:\n"
@@ -201,6 +202,20 @@ int Refuse(const Status& status) {
 // ", saved within a tolerance of T cells (x m)" for an .lmap file that names
 // its T, which tells whoever reads the log what the served map promises;
 // "" otherwise (the file is read again, its layers and cells not decoded).
+// The frame a map is served in without ~frame_id: the one an .lmap file
+// names (its `frame_id` metadata, as `lmap_saver --metadata` and `linemap
+// encode --metadata` store it; the last entry of a repeated key), else map.
+std::string DefaultFrameId(const std::string& path, const DecodeLimits& limits) {
+  std::string frame_id = "map";
+  if (!IsLmapPath(path)) return frame_id;
+  const StatusOr<LmapHeader> header = LoadLmapHeader(path, limits);
+  if (!header.ok()) return frame_id;  // the load that follows reports it
+  for (const auto& [key, value] : header->metadata) {
+    if (key == "frame_id" && !value.empty()) frame_id = value;
+  }
+  return frame_id;
+}
+
 std::string ToleranceNote(const std::string& path, double resolution, const DecodeLimits& limits) {
   if (!IsLmapPath(path)) return "";
   const StatusOr<std::optional<int>> t = LoadLmapToleranceCells(path, limits);
@@ -277,7 +292,8 @@ int Run(int argc, char** argv) {
     }
     map_path = param;
   }
-  const std::string frame_id = private_nh.param<std::string>("frame_id", "map");
+  const std::string frame_id =
+      private_nh.param<std::string>("frame_id", DefaultFrameId(*map_path, LimitsOf(*limits, {})));
   // Only the parameter server (a launch file's <param>) can hold the
   // limits not given, and a window when none was.
   limits = CompleteLimits(private_nh, std::move(*limits));

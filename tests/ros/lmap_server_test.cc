@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "linemap/codec.h"
 #include "linemap/lmap_vectors.h"
@@ -170,6 +172,28 @@ TEST(LmapServerTest, PublishesMapYamlInTheGivenFrame) {
   ExpectMessageIsGrid(map, expected, "world");
   EXPECT_EQ(map.info.origin.position.x, -7.0);
   EXPECT_EQ(map.info.origin.position.y, -17.5);
+}
+
+// An .lmap file that names its frame (lmap_saver --metadata) is served in
+// it; ~frame_id still wins, and a file without one is served in map.
+TEST(LmapServerTest, ServesAnLmapInTheFrameItNames) {
+  RosMaster& master = SharedMaster();
+  const Grid expected = LoadBundledMap("navtut/lse_arena.yaml");
+  const std::string dir = MakeTempDir("server_frame");
+  EncodeOptions options;
+  options.frame_id = "floor_2";
+  ASSERT_TRUE(SaveLmap(dir + "/named.lmap", expected, options).ok());
+  ASSERT_TRUE(SaveLmap(dir + "/plain.lmap", expected, EncodeOptions{}).ok());
+  for (const auto& [ns, args, frame] :
+       std::vector<std::tuple<std::string, std::vector<std::string>, std::string>>{
+           {"/s20", {dir + "/named.lmap"}, "floor_2"},
+           {"/s21", {dir + "/named.lmap", "_frame_id:=world"}, "world"},
+           {"/s22", {dir + "/plain.lmap"}, "map"}}) {
+    SCOPED_TRACE(ns);
+    OccupancyGridMsg map;
+    ASSERT_NO_FATAL_FAILURE(ReceiveServedMap(master, ns, args, &map));
+    ExpectMessageIsGrid(map, expected, frame);
+  }
 }
 
 TEST(LmapServerTest, WindowPublishesOnlyTheRegionWithItsOrigin) {
