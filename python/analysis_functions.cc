@@ -345,10 +345,11 @@ std::optional<LmapVectors> StoredLayers(const py::object& decoded, const DecodeL
   return ValueOrRaise(std::move(vectors));
 }
 
-// The T an .lmap file at `decoded` names (saved within a tolerance);
-// nullopt for a Map, another file or an exact one.
+// The T an .lmap file at `decoded` names (saved within a tolerance), or
+// that of the file a Map was loaded from (Map.tolerance); nullopt for
+// another file or map, or an exact one.
 std::optional<int> NamedTolerance(const py::object& decoded, const DecodeLimits& limits) {
-  if (py::isinstance<Map>(decoded)) return std::nullopt;
+  if (py::isinstance<Map>(decoded)) return decoded.cast<const Map&>().tolerance;
   const std::string path = PathArgument(decoded);
   if (!IsLmapPath(path)) return std::nullopt;
   StatusOr<std::optional<int>> named = InternalError("not read");
@@ -506,7 +507,8 @@ of a save within that tolerance, as ``linemap eval --tolerance T --json``:
 the Hausdorff distances both ways, the wall surface kept, free cells moved
 or lost beyond T, unknown turned free beyond T, leaks and splits, sampled
 and local plans that disagree, and tolerance_holds; with ``tolerance`` None,
-an .lmap file saved within a tolerance is checked at the T it names (then
+an .lmap file saved within a tolerance, or a Map loaded from one
+(``Map.tolerance``), is checked at the T it names (then
 ``tolerance_from_file`` is True). ``tolerance_named_cells`` is the T such
 a file names, whether checked at it or not (``tolerance`` given, a T above
 4, a map over 2^26 cells).

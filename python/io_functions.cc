@@ -143,12 +143,15 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg,
                             "read whole: load it and slice Map.cells)");
     }
   }
-  StatusOr<Grid> grid = InvalidArgumentError("not loaded");
+  StatusOr<LoadedMap> loaded = InvalidArgumentError("not loaded");
   {
     py::gil_scoped_release release;
-    grid = window ? LoadLmapRegion(path, *window, limits) : LoadMapFile(path, limits);
+    loaded = LoadMapAndTolerance(path, window, limits);
   }
-  return MapFromGrid(ValueOrRaise(std::move(grid)));
+  LoadedMap map_file = ValueOrRaise(std::move(loaded));
+  Map map = MapFromGrid(std::move(map_file.grid));
+  map.tolerance = map_file.tolerance;
+  return map;
 }
 
 // max_tolerance_cells: a whole number of cells, 0 for no limit (as
@@ -184,6 +187,23 @@ void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bo
                         " to .lmap files only (a map .yaml is saved exact, as YAML + PGM)");
 }
 
+// A map loaded from a file saved within T cells is saved with its cells
+// exact and the file marked as simplified within T (lossless flag clear,
+// T named), as `linemap encode` saves such an .lmap again; within another
+// tolerance it is refused: the guarantees against the robot's map would not
+// add up.
+void KeepToleranceOf(const Map& map, EncodeOptions* options) {
+  if (!map.tolerance) return;
+  if (options->tolerance_cells > 0) {
+    throw py::value_error("this map was loaded from a file saved within a tolerance of " +
+                          std::to_string(*map.tolerance) +
+                          " cells: saving it within another tolerance would not keep the "
+                          "guarantees against the original map; save the original map with "
+                          "tolerance=");
+  }
+  options->simplified_within_cells = *map.tolerance;
+}
+
 // An output named only by its extension ("maps/.yaml") would be written as
 // a hidden file; the CLI refuses such names too.
 void CheckNameBeforeExtension(const std::string& path) {
@@ -214,6 +234,7 @@ void Save(const py::object& path_arg, const Map& map, const py::object& toleranc
   EncodeOptions options =
       EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells);
   ApplyMetadataArgument(metadata, &options);
+  if (!yaml) KeepToleranceOf(map, &options);
   const Grid grid = GridFromMap(map);
   // A map of no cells is a valid .lmap file (the format's width and height
   // may be 0), but not a map image: PGM and map_server need a pixel.
@@ -273,6 +294,7 @@ py::bytes Encode(const Map& map, const py::object& tolerance_arg, bool vectors, 
   EncodeOptions options =
       EncodeOptionsFor(tolerance, vectors, straight_walls, compact, max_tolerance_cells);
   ApplyMetadataArgument(metadata, &options);
+  KeepToleranceOf(map, &options);
   const Grid grid = GridFromMap(map);
   StatusOr<std::vector<std::uint8_t>> bytes = InvalidArgumentError("not encoded");
   {
@@ -287,11 +309,15 @@ Map Decode(const py::object& data, const py::object& max_cells_arg, const py::ob
   const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   const std::vector<std::uint8_t> bytes = BytesArgument(data);
   StatusOr<Grid> grid = InvalidArgumentError("not decoded");
+  std::optional<int> tolerance;
   {
     py::gil_scoped_release release;
     grid = DecodeLmap(bytes, limits);
+    if (grid.ok()) tolerance = ToleranceOfLmapBytes(bytes, limits);
   }
-  return MapFromGrid(ValueOrRaise(std::move(grid)));
+  Map map = MapFromGrid(ValueOrRaise(std::move(grid)));
+  map.tolerance = tolerance;
+  return map;
 }
 
 // The walls' consecutive point pairs as (N, 4) rows x1, y1, x2, y2 (metres).

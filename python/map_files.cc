@@ -4,6 +4,7 @@
 
 #include "format/file_io.h"
 #include "linemap/codec.h"
+#include "linemap/lmap_vectors.h"
 #include "linemap/map_io.h"
 
 namespace linemap::python {
@@ -21,6 +22,32 @@ StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits) 
   MapLoadOptions options;
   options.max_cells = limits.max_cells;
   return LoadRosMap(path, options);
+}
+
+std::optional<int> ToleranceOfLmapBytes(const std::vector<std::uint8_t>& bytes,
+                                        const DecodeLimits& limits) {
+  const StatusOr<LmapHeader> header = DecodeLmapHeader(bytes, limits);
+  if (!header.ok()) return std::nullopt;
+  return ToleranceCellsOf(header->major, header->lossless, header->metadata);
+}
+
+StatusOr<LoadedMap> LoadMapAndTolerance(const std::string& path,
+                                        const std::optional<CellWindow>& window,
+                                        const DecodeLimits& limits) {
+  LoadedMap out;
+  if (!IsLmapPath(path)) {
+    LINEMAP_ASSIGN_OR_RETURN(out.grid, LoadMapFile(path, limits));
+    return out;
+  }
+  // As LoadLmap and LoadLmapRegion read it, the header from the same bytes.
+  LINEMAP_ASSIGN_OR_RETURN(std::vector<std::uint8_t> bytes,
+                           ReadFileBytes(path, limits.max_file_bytes));
+  StatusOr<Grid> grid =
+      window ? DecodeLmapRegion(bytes, *window, limits) : DecodeLmap(bytes, limits);
+  if (!grid.ok()) return grid.status().WithContext("'" + path + "'");
+  out.grid = std::move(*grid);
+  out.tolerance = ToleranceOfLmapBytes(bytes, limits);
+  return out;
 }
 
 }  // namespace linemap::python

@@ -7,7 +7,9 @@
 #define LINEMAP_PYTHON_MAP_FILES_H_
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "linemap/codec.h"
 #include "linemap/grid.h"
@@ -28,6 +30,24 @@ bool IsLmapFile(const std::string& path);
 // An .lmap file within `limits`, or a map YAML or bare image refused beyond
 // limits.max_cells cells. Runs without the GIL.
 StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits);
+
+// A map file as load() reads it: its grid (for an .lmap file, only the
+// cells of `window` when one is given) and the tolerance an .lmap file
+// names (ToleranceCellsOf: the T it was saved within; nullopt for an exact
+// file and any other map), both from one read of the file. Runs without
+// the GIL.
+struct LoadedMap {
+  Grid grid;
+  std::optional<int> tolerance;
+};
+StatusOr<LoadedMap> LoadMapAndTolerance(const std::string& path,
+                                        const std::optional<CellWindow>& window,
+                                        const DecodeLimits& limits);
+
+// The tolerance the .lmap `bytes` name (nullopt for an exact file), read
+// from their header; for bytes a decode has already checked.
+std::optional<int> ToleranceOfLmapBytes(const std::vector<std::uint8_t>& bytes,
+                                        const DecodeLimits& limits);
 
 }  // namespace linemap::python
 

@@ -1,5 +1,6 @@
 #include "python/map_object.h"
 
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -183,6 +184,7 @@ py::dict MapState(const Map& map) {
   state["negate"] = map.meta.negate;
   state["occupied_thresh"] = map.meta.occupied_thresh;
   state["free_thresh"] = map.meta.free_thresh;
+  state["tolerance"] = map.tolerance ? py::object(py::int_(*map.tolerance)) : py::none();
   return state;
 }
 
@@ -221,6 +223,17 @@ Map MapFromState(const py::dict& state) {
   }
   map.meta.occupied_thresh = state["occupied_thresh"].cast<double>();
   map.meta.free_thresh = state["free_thresh"].cast<double>();
+  // Pickles made before maps kept their tolerance have no such key.
+  if (state.contains("tolerance") && !state["tolerance"].is_none()) {
+    const py::object t = state["tolerance"];
+    if (!py::isinstance<py::int_>(t) || py::isinstance<py::bool_>(t) || t < py::int_(1) ||
+        t > py::int_(INT_MAX)) {
+      throw py::value_error(
+          "cannot unpickle a linemap.Map whose tolerance is not None or a "
+          "whole number of cells from 1");
+    }
+    map.tolerance = t.cast<int>();
+  }
   return map;
 }
 
@@ -361,6 +374,17 @@ nav_msgs/OccupancyGrid. Values are ``linemap.FREE`` (0), ``OCCUPIED`` (1) and
           "mode", [](const Map& map) { return std::string(MapModeName(map.meta.mode)); },
           "the YAML's mode as loaded: 'trinary' (for a Map made from cells too), 'scale' or "
           "'raw'; an .lmap file stores it, a .yaml save writes 'trinary'")
+      .def_property_readonly(
+          "tolerance",
+          [](const Map& map) {
+            return map.tolerance ? py::object(py::int_(*map.tolerance)) : py::none();
+          },
+          "cells: the T of the .lmap file (or bytes) the map was loaded from when it was "
+          "saved within a tolerance (its cells are the robot's map simplified within T, whose "
+          "guarantees hold against that map); None for an exact file and any other map. "
+          "save() and encode() keep it: the file is the map's cells, marked as simplified "
+          "within T (info()'s tolerance), and a tolerance= above 0 raises ValueError; a "
+          ".yaml save has no place for it.")
       .def("set_thresholds", &SetThresholds, py::arg("occupied_thresh"), py::arg("free_thresh"),
            "Sets both thresholds, checked as the CLI's --occupied-thresh / --free-thresh are: "
            "each in 0..1 and free_thresh below occupied_thresh, else ValueError (and the map "

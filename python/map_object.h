@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <optional>
 
 #include "linemap/grid.h"
 
@@ -22,6 +23,11 @@ struct Map {
   // Resolution, origin and the YAML fields (mode, negate, thresholds) the
   // map was loaded with, so that saving it as YAML keeps them.
   MapMetadata meta;
+  // The T of the .lmap file the map was loaded from when that file was
+  // saved within a tolerance (its cells are the robot's map simplified
+  // within T cells); nullopt otherwise. save() and encode() keep it, as
+  // `linemap encode` of such a file does.
+  std::optional<int> tolerance;
 };
 
 // The grid's cells become the array without a copy.

@@ -290,6 +290,9 @@ def test_eval_with_a_tolerance_equals_the_cli(t, tmp_path, cli):
     expected = linemap_cli.run_json(cli, "eval", path, tmp_path / "broken.yaml", "--tolerance",
                                     str(t), "--json")
     got = linemap.eval(path, broken, tolerance=t)
+    # The Map knows the T of the file it was loaded from; its YAML does not.
+    assert got.pop("tolerance_named_cells") == t
+    assert "tolerance_named_cells" not in expected
     assert got == expected
     assert got["tolerance_holds"] is False
 

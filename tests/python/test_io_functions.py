@@ -1,6 +1,7 @@
 """linemap.load / save / encode / decode: exact round trips on the bundled
 maps, the cells the `linemap` program writes, and errors that name the file."""
 import errno
+import pickle
 import os
 import pathlib
 import shutil
@@ -1040,3 +1041,41 @@ def test_metadata_applies_to_lmap_files_only(tmp_path):
     with pytest.raises(ValueError, match="metadata applies to .lmap files only"):
         linemap.save(tmp_path / "m.yaml", m, metadata={"creator": "me"})
     assert list(tmp_path.iterdir()) == []
+
+
+# A map loaded from a file saved within T cells keeps T, and a save of it
+# says so, as `linemap encode` of that file does: the copy is exact but not
+# the robot's map, and its guarantees are checked against the original.
+def test_a_map_loaded_from_a_tolerance_file_keeps_its_tolerance(tmp_path, cli):
+    from conftest import REPO
+    fixture = REPO / "tests" / "data" / "lmap" / "willow_v2_3_tolerance_1.lmap"
+    m = linemap.load(fixture)
+    assert m.tolerance == 1
+    assert linemap.decode(fixture.read_bytes()).tolerance == 1
+    assert linemap.load(fixture, window_cells=(10, 10, 60, 40)).tolerance == 1
+    assert linemap.load(BUNDLED["willow"]).tolerance is None
+    exact = tmp_path / "exact.lmap"
+    linemap.save(exact, linemap.load(BUNDLED["willow"]))
+    assert linemap.load(exact).tolerance is None
+    copy = tmp_path / "copy.lmap"
+    linemap.save(copy, m, compact=True)
+    info = linemap.info(copy)
+    assert info["tolerance"] == 1 and not info["lossless"]
+    assert np.array_equal(linemap.load(copy).cells, m.cells)
+    assert linemap.info(linemap.encode(m))["tolerance"] == 1
+    # The CLI's check of the copy against the robot's map: its guarantees
+    # at the T it names.
+    linemap_cli.run(cli, "eval", BUNDLED["willow"], str(copy), "--check")
+    # eval() of the Map itself checks it at that T too.
+    checked = linemap.eval(linemap.load(BUNDLED["willow"]), m)
+    assert checked["tolerance_from_file"] and checked["tolerance_holds"]
+    with pytest.raises(ValueError, match="saved within a tolerance of 1 cells"):
+        linemap.save(tmp_path / "again.lmap", m, tolerance=2)
+    assert not (tmp_path / "again.lmap").exists()
+    # Pickles keep it; those made before maps kept it have no key.
+    assert pickle.loads(pickle.dumps(m)).tolerance == 1
+    state = m.__getstate__()
+    del state["tolerance"]
+    old = linemap.Map.__new__(linemap.Map)
+    old.__setstate__(state)
+    assert old.tolerance is None
