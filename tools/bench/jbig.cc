@@ -6,7 +6,9 @@
 namespace linemap::bench {
 
 std::string PbmPlane(const Grid& grid, BitPlane plane) {
-  const Cell in_plane = plane == BitPlane::kFree ? Cell::kFree : Cell::kOccupied;
+  const auto in_plane = [plane](Cell cell) {
+    return plane == BitPlane::kOccupied ? cell == Cell::kOccupied : cell != Cell::kFree;
+  };
   const std::size_t row_bytes = (static_cast<std::size_t>(grid.width()) + 7) / 8;
   std::string pbm =
       "P4\n" + std::to_string(grid.width()) + " " + std::to_string(grid.height()) + "\n";
@@ -16,7 +18,7 @@ std::string PbmPlane(const Grid& grid, BitPlane plane) {
     const int row = grid.height() - 1 - image_row;
     char* out = pbm.data() + header + row_bytes * static_cast<std::size_t>(image_row);
     for (int col = 0; col < grid.width(); ++col) {
-      if (grid.at(col, row) == in_plane) out[col >> 3] |= static_cast<char>(0x80 >> (col & 7));
+      if (in_plane(grid.at(col, row))) out[col >> 3] |= static_cast<char>(0x80 >> (col & 7));
     }
   }
   return pbm;
@@ -41,11 +43,11 @@ StatusOr<std::string> JbigEncodePbm(const std::string& pbm, const JbigOptions& o
 
 StatusOr<JbigSizes> JbigTwoPlaneSizes(const Grid& grid, const JbigOptions& options) {
   JbigSizes sizes;
-  LINEMAP_ASSIGN_OR_RETURN(std::string free_jbg,
-                           JbigEncodePbm(PbmPlane(grid, BitPlane::kFree), options));
+  LINEMAP_ASSIGN_OR_RETURN(std::string not_free_jbg,
+                           JbigEncodePbm(PbmPlane(grid, BitPlane::kNotFree), options));
   LINEMAP_ASSIGN_OR_RETURN(std::string occupied_jbg,
                            JbigEncodePbm(PbmPlane(grid, BitPlane::kOccupied), options));
-  sizes.free_plane = free_jbg.size();
+  sizes.not_free_plane = not_free_jbg.size();
   sizes.occupied_plane = occupied_jbg.size();
   return sizes;
 }

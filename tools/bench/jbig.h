@@ -1,7 +1,8 @@
 // JBIG1 (ITU-T T.82) of a trinary map's two bit-planes, by JBIG-KIT's
 // `pbmtojbg` run as a subprocess (JBIG-KIT is GPL: never linked).
-// The planes: black = free (plane "free / not free") and black = occupied
-// (plane "occupied / not occupied"); together they give the three states.
+// The planes: black = not free (occupied or unknown) and black = occupied,
+// the pair the .lmap 2.0 size goals name; together they give the three
+// states.
 #ifndef LINEMAP_TOOLS_BENCH_JBIG_H_
 #define LINEMAP_TOOLS_BENCH_JBIG_H_
 
@@ -13,7 +14,7 @@
 
 namespace linemap::bench {
 
-enum class BitPlane { kFree, kOccupied };
+enum class BitPlane { kNotFree, kOccupied };
 
 // A binary PBM (P4) of the plane: 1 (black) where the cell is in the plane,
 // image row 0 = top (grid row height-1).
@@ -27,9 +28,9 @@ struct JbigOptions {
 };
 
 struct JbigSizes {
-  std::size_t free_plane = 0;
+  std::size_t not_free_plane = 0;
   std::size_t occupied_plane = 0;
-  std::size_t total() const { return free_plane + occupied_plane; }
+  std::size_t total() const { return not_free_plane + occupied_plane; }
 };
 
 // The .jbg bytes of one PBM through the encoder.

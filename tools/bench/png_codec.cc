@@ -97,21 +97,38 @@ bool ReadPng(png_structp png, png_infop info, Grid* grid, std::vector<png_byte>*
       height > (1u << 20)) {
     png_error(png, "not an 8-bit-or-less grey or palette PNG");
   }
-  // Expand palette indices to grey values and small depths to 8 bits.
-  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (colour == PNG_COLOR_TYPE_GRAY) png_set_expand_gray_1_2_4_to_8(png);
-  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_rgb_to_gray_fixed(png, 1, -1, -1);
+  // One byte per pixel (small depths unpacked), and a table from that byte
+  // to the cell: a palette PNG's indices are looked up in its palette's
+  // grey values, not expanded to RGB and converted back to grey by libpng
+  // (which made every decode of the bench's smallest layout, 2-bit palette,
+  // about 1.4x slower than the straightforward reading).
+  const auto cell_of_grey = [](int v) {
+    return v == 254 ? Cell::kFree : v == 0 ? Cell::kOccupied : Cell::kUnknown;
+  };
+  std::array<Cell, 256> cell_of;
+  cell_of.fill(Cell::kUnknown);
+  if (colour == PNG_COLOR_TYPE_PALETTE) {
+    png_set_packing(png);
+    png_colorp palette = nullptr;
+    int entries = 0;
+    if (png_get_PLTE(png, info, &palette, &entries) != PNG_INFO_PLTE) png_error(png, "no palette");
+    for (int i = 0; i < entries && i < 256; ++i) {
+      if (palette[i].red != palette[i].green || palette[i].red != palette[i].blue) {
+        png_error(png, "a palette colour that is not grey");
+      }
+      cell_of[static_cast<std::size_t>(i)] = cell_of_grey(palette[i].red);
+    }
+  } else {
+    png_set_expand_gray_1_2_4_to_8(png);
+    for (int v = 0; v < 256; ++v) cell_of[static_cast<std::size_t>(v)] = cell_of_grey(v);
+  }
   png_read_update_info(png, info);
   row->resize(png_get_rowbytes(png, info));
   *grid = Grid(static_cast<int>(width), static_cast<int>(height));
-  const int channels = png_get_channels(png, info);
   for (png_uint_32 r = 0; r < height; ++r) {
     png_read_row(png, row->data(), nullptr);
     Cell* cells = grid->mutable_cells().data() + grid->Index(0, static_cast<int>(height - 1 - r));
-    for (png_uint_32 c = 0; c < width; ++c) {
-      const png_byte v = (*row)[c * channels];
-      cells[c] = v == 254 ? Cell::kFree : v == 0 ? Cell::kOccupied : Cell::kUnknown;
-    }
+    for (png_uint_32 c = 0; c < width; ++c) cells[c] = cell_of[(*row)[c]];
   }
   png_read_end(png, nullptr);
   return true;

@@ -130,7 +130,7 @@ std::vector<NamedTable> PerMapTables(const std::vector<MapResult>& results) {
        "PNG-9 = the smallest of libpng's 8-bit grey, 8-bit palette and 2-bit palette at zlib "
        "level 9 and netpbm's pnmtopng -compression 9 (the ratio base; encode / decode times "
        "are libpng's on its smallest layout); zstd and xz compress the raw cells (1 byte per "
-       "cell; xz -9e = preset 9 | LZMA_PRESET_EXTREME); JBIG1 is the sum of the free and "
+       "cell; xz -9e = preset 9 | LZMA_PRESET_EXTREME); JBIG1 is the sum of the not-free and "
        "occupied bit-planes; WebP and JPEG XL encode map_saver's 8-bit grey PGM (" +
            CommandText(WebpCodec().encode) + "; " + CommandText(JpegXlCodec().encode) +
            "), each file decoded back (dwebp, djxl) and checked pixel for pixel. lmap 2.0 = "
@@ -331,6 +331,53 @@ NamedTable ScalingTable(const std::vector<ScalingRow>& rows) {
           "cannot gain much on those). room: one room as a viewer loads it when the user picks "
           "a point near the window's centre (DecodeLmapRoomAt: the header, the layer sections "
           "around the point, the tiles of the room's box; median ms).",
+          table};
+}
+
+NamedTable ScalingGoalsTable(const std::vector<ScalingRow>& rows) {
+  constexpr double kGoalSpreadPercent = 25.0;
+  constexpr double kGoalWindowSpeedup = 20.0;
+  Table table({"goal", "measured", "verdict"});
+  const auto spread_row = [&](const std::string& what, const ScalingFigure& median,
+                              const ScalingFigure& fastest) {
+    const std::optional<double> spread = Spread(rows, median);
+    const std::optional<double> of_fastest = Spread(rows, fastest);
+    table.AddRow({what + " cost per Mcell flat within 25 % over the sizes",
+                  spread ? FormatFixed(*spread, 0) + " % (of the fastest runs: " +
+                               (of_fastest ? FormatFixed(*of_fastest, 0) : "n/a") + " %)"
+                         : "n/a",
+                  !spread                         ? "INCOMPLETE"
+                  : *spread <= kGoalSpreadPercent ? "PASS"
+                                                  : "FAIL"});
+  };
+  spread_row(
+      "encode", [](const ScalingRow& r) { return r.lmap_encode_ms_per_mcell; },
+      [](const ScalingRow& r) { return r.lmap_encode_fastest_ms_per_mcell; });
+  spread_row(
+      "decode", [](const ScalingRow& r) { return r.lmap_decode_ms_per_mcell; },
+      [](const ScalingRow& r) { return r.lmap_decode_fastest_ms_per_mcell; });
+  std::string speedups;
+  bool all_measured = !rows.empty(), all_fast = true;
+  for (const ScalingRow& row : rows) {
+    speedups += (speedups.empty() ? "" : ", ") +
+                (row.lmap_window_speedup ? FormatFixed(*row.lmap_window_speedup, 1) + "x"
+                                         : std::string("failed")) +
+                " at " + FormatFixed(row.mcells, 1);
+    all_measured = all_measured && row.lmap_window_speedup.has_value();
+    all_fast =
+        all_fast && row.lmap_window_speedup && *row.lmap_window_speedup >= kGoalWindowSpeedup;
+  }
+  table.AddRow(
+      {"1 % window at least 20x faster than the whole map, its cells the crop of the "
+       "map's, at every size",
+       speedups + " Mcells",
+       !all_measured ? "FAIL"
+       : all_fast    ? "PASS"
+                     : "FAIL"});
+  return {"Huge-map goals",
+          "From the scaling table above: spread = largest / smallest - 1 of the medians per "
+          "Mcell over the sizes; a window that fails or whose cells differ from the crop of "
+          "the map counts as failed.",
           table};
 }
 

@@ -30,6 +30,12 @@ NamedTable LineMediansTable(const std::vector<MapResult>& results);
 
 NamedTable ScalingTable(const std::vector<ScalingRow>& rows);
 
+// The huge-map goals of the scaling table, with PASS / FAIL: the encode's
+// and the decode's cost per Mcell flat within 25 % over the sizes (of the
+// medians), and a 1 % window at least 20x faster than the whole map at
+// every size, its cells the crop of the map's.
+NamedTable ScalingGoalsTable(const std::vector<ScalingRow>& rows);
+
 // Every figure of every map, one row per map, columns named by the keys.
 std::string ResultsCsv(const std::vector<MapResult>& results);
 

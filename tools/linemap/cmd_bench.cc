@@ -235,7 +235,10 @@ int RunBench(const std::vector<std::string>& argv) {
     }
   }
   tables.push_back(bench::LineMediansTable(results));
-  if (!scaling.empty()) tables.push_back(bench::ScalingTable(scaling));
+  if (!scaling.empty()) {
+    tables.push_back(bench::ScalingTable(scaling));
+    tables.push_back(bench::ScalingGoalsTable(scaling));
+  }
   for (bench::NamedTable& table : bench::GoalTables(results)) tables.push_back(std::move(table));
   const std::string notes = NotesText(results, skipped);
   std::printf("%s%s", bench::TablesText(tables).c_str(), notes.c_str());

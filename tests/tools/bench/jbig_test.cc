@@ -23,7 +23,8 @@ Grid SmallGrid() {
 
 TEST(BenchJbigTest, PbmPlanesByHand) {
   const Grid grid = SmallGrid();
-  EXPECT_EQ(PbmPlane(grid, BitPlane::kFree), std::string("P4\n10 2\n\x80\x40\x00\x00", 12));
+  // Not free: top row columns 1-8 (0 and 9 are free), bottom row all ten.
+  EXPECT_EQ(PbmPlane(grid, BitPlane::kNotFree), std::string("P4\n10 2\n\x7f\x80\xff\xc0", 12));
   EXPECT_EQ(PbmPlane(grid, BitPlane::kOccupied), std::string("P4\n10 2\n\x40\x00\x80\x80", 12));
 }
 
@@ -32,7 +33,7 @@ TEST(BenchJbigTest, RoundTripThroughJbigKit) {
     GTEST_SKIP() << "jbigkit-bin (pbmtojbg, jbgtopbm) is not installed";
   }
   const Grid grid = SmallGrid();
-  for (BitPlane plane : {BitPlane::kFree, BitPlane::kOccupied}) {
+  for (BitPlane plane : {BitPlane::kNotFree, BitPlane::kOccupied}) {
     const std::string pbm = PbmPlane(grid, plane);
     StatusOr<std::string> jbg = JbigEncodePbm(pbm);
     ASSERT_TRUE(jbg.ok()) << jbg.status().message();
@@ -50,8 +51,8 @@ TEST(BenchJbigTest, RoundTripThroughJbigKit) {
   }
   StatusOr<JbigSizes> sizes = JbigTwoPlaneSizes(grid);
   ASSERT_TRUE(sizes.ok());
-  EXPECT_GT(sizes->free_plane, 0u);
-  EXPECT_EQ(sizes->total(), sizes->free_plane + sizes->occupied_plane);
+  EXPECT_GT(sizes->not_free_plane, 0u);
+  EXPECT_EQ(sizes->total(), sizes->not_free_plane + sizes->occupied_plane);
 }
 
 TEST(BenchJbigTest, AMissingEncoderIsReported) {
