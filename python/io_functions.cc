@@ -551,8 +551,8 @@ files, walls farther from the wall cells) instead of walls that follow the
 pixel steps; files saved within a tolerance always draw straight walls.
 ``compact`` codes the cells for size (as ``linemap encode --compact``;
 version 2.3): on the bench corpus about 4.5 % smaller files (8.5 % with
-vectors=False) that decode in about 3x the time at the median (3.2 against 1.1
-ms in the last bench; a median 4.7x per map, up to 9.6x).
+vectors=False) that decode in about 3x the time at the median (3.0 against 1.1
+ms in the last bench; a median 4.8x per map, up to 9.2x).
 ``max_tolerance_cells`` (cells; 0 for no limit) refuses a save within a
 tolerance of a larger map before any work, with MemoryError: its checks need
 about 25 bytes a cell (the default, 2^26 cells, about 1.7 GB); exact saves

@@ -70,8 +70,8 @@ const CommandSpec kEncodeSpec = {
         {"--follow-steps", "", "walls that follow the pixel steps: the default (kept for scripts)"},
         {"--compact", "",
          "code the cells for size (a version 2.3 file): about 4.5 % smaller (8.5 % with "
-         "--raster-only), about 3x the decode time at the median (a median 4.7x per map, up "
-         "to 9.6x) and 1.3x the encode time (files saved with --tolerance code their blocks "
+         "--raster-only), about 3x the decode time at the median (a median 4.8x per map, up "
+         "to 9.2x) and 1.3x the encode time (files saved with --tolerance code their blocks "
          "that way already)"},
         {"--threads", "N",
          "threads to use, 0..4096 (default 0: one per core); the bytes do not depend on it"},
