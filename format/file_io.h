@@ -163,7 +163,9 @@ Status WriteFilesAtomic(const std::vector<FileToWrite>& files,
 Status CheckSaveTarget(const std::string& path);
 
 // True when `path` ends in `extension` (with its dot: ".yaml"), its letters
-// in any case (map.YAML, OUT.Lmap), after at least one character of name.
+// in any case (map.YAML, OUT.Lmap), and holds at least one character before
+// it (so ".yaml" alone is false, "dir/.yaml" true: callers that need a
+// file name before the extension check the base name).
 bool HasExtension(std::string_view path, std::string_view extension);
 
 // True when `path` names an existing directory.

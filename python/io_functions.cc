@@ -92,7 +92,10 @@ void ApplyMetadataArgument(const py::object& metadata, EncodeOptions* options) {
     if (name == "robot_pose") {
       double x = 0, y = 0, yaw = 0;
       char rest = 0;
-      const int n = std::sscanf(text.c_str(), "%lf %lf %lf %c", &x, &y, &yaw, &rest);
+      // sscanf would stop at a NUL and drop what follows it.
+      const int n = text.find('\0') != std::string::npos
+                        ? 0
+                        : std::sscanf(text.c_str(), "%lf %lf %lf %c", &x, &y, &yaw, &rest);
       if ((n != 2 && n != 3) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(yaw)) {
         throw py::value_error(what + " must be \"x y yaw\" or \"x y\" (metres, radians), not '" +
                               text + "'");
@@ -603,7 +606,7 @@ The vector layers of an .lmap file (a path) or of .lmap bytes (format 1.0
 files are read whole: their layers sit between raster chunks). A dict,
 geometry in map-frame metres through cell centres:
 ``walls`` (N, 4) float64 segments x1, y1, x2, y2 (each wall polyline's
-consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays, ``wall_ids`` (N,) int64
+consecutive points), ``wall_polylines`` the polylines as (K, 2) arrays, ``wall_ids`` (one per polyline) int64
 each polyline's index among the whole file's walls (0, 1, 2, ... without a
 window; with one, the ids ``linemap export --window`` writes),
 ``rooms`` a list of {id, kind, outline: (K, 2) closed chain},

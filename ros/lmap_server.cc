@@ -199,9 +199,6 @@ int Refuse(const Status& status) {
   return ExitCodeFor(status);
 }
 
-// ", saved within a tolerance of T cells (x m)" for an .lmap file that names
-// its T, which tells whoever reads the log what the served map promises;
-// "" otherwise (the file is read again, its layers and cells not decoded).
 // The frame a map is served in without ~frame_id: the one an .lmap file
 // names (its `frame_id` metadata, as `lmap_saver --metadata` and `linemap
 // encode --metadata` store it; the last entry of a repeated key), else map.
@@ -216,6 +213,9 @@ std::string DefaultFrameId(const std::string& path, const DecodeLimits& limits) 
   return frame_id;
 }
 
+// ", saved within a tolerance of T cells (x m)" for an .lmap file that names
+// its T, which tells whoever reads the log what the served map promises;
+// "" otherwise (the file is read again, its layers and cells not decoded).
 std::string ToleranceNote(const std::string& path, double resolution, const DecodeLimits& limits) {
   if (!IsLmapPath(path)) return "";
   const StatusOr<std::optional<int>> t = LoadLmapToleranceCells(path, limits);
@@ -292,12 +292,16 @@ int Run(int argc, char** argv) {
     }
     map_path = param;
   }
-  const std::string frame_id =
-      private_nh.param<std::string>("frame_id", DefaultFrameId(*map_path, LimitsOf(*limits, {})));
   // Only the parameter server (a launch file's <param>) can hold the
   // limits not given, and a window when none was.
   limits = CompleteLimits(private_nh, std::move(*limits));
   if (!limits.ok()) return Refuse(limits.status());
+  // The file's own frame is read with the limits that apply, and only when
+  // no ~frame_id names one.
+  std::string frame_id;
+  if (!private_nh.getParam("frame_id", frame_id)) {
+    frame_id = DefaultFrameId(*map_path, LimitsOf(*limits, {}));
+  }
   if (!window_text) {
     StatusOr<std::optional<Window>> parameter = WindowParameter(private_nh);
     if (!parameter.ok()) return Refuse(parameter.status());

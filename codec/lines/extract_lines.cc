@@ -2,6 +2,7 @@
 // extractor) on it.
 #include "codec/lines/extract_lines.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -10,6 +11,7 @@
 
 #include "codec/lines/linemap_extractor.h"
 #include "codec/lines/rmline.h"
+#include "format/metre_cells.h"
 #include "linemap/lines.h"
 
 namespace linemap {
@@ -65,12 +67,21 @@ StatusOr<std::vector<LineSegment>> ExtractLineSegments(const Grid& grid,
 }
 
 CellPoint RobotCellPoint(const Grid& grid, double x, double y) {
-  CellPoint point;
   if (const std::optional<CellIndex> cell = grid.CellHolding(x, y)) {
-    point.col = cell->col;
-    point.row = cell->row;
-  } else {
-    grid.WorldToCell(x, y, &point.col, &point.row);
+    return {static_cast<double>(cell->col), static_cast<double>(cell->row)};
+  }
+  // Off the map. A point typed on its upper or right edge is off it by
+  // CellHoldingPoint's rule (an edge belongs to the next cell) yet within
+  // the slack of the last cell's centre + 0.5, where the callers' rounding
+  // would put it inside: it goes onto the edge, which that rounding takes
+  // as outside too.
+  const CellPosition p = CellPositionOf(grid.meta, x, y);
+  CellPoint point{p.col, p.row};
+  if (std::floor(p.col + 0.5 + p.col_slack) >= grid.width()) {
+    point.col = std::max(point.col, grid.width() - 0.5);
+  }
+  if (std::floor(p.row + 0.5 + p.row_slack) >= grid.height()) {
+    point.row = std::max(point.row, grid.height() - 0.5);
   }
   return point;
 }

@@ -199,8 +199,10 @@ LineExtractionOptions StraightWalls(LineExtractionOptions options);
 // extractors and SegmentMap take: the centre of the cell holding it
 // (CellHoldingPoint), so that a point typed on a cell's lower or left edge
 // (0.025 m at 0.05 m/cell, 0.49999999999999994 cells in doubles) is in that
-// cell, as --room-at and --window take it. Off the map (or not finite) the
-// unrounded position, which they refuse as off the map.
+// cell, as --room-at and --window take it. Off the map (or not finite) a
+// position they refuse as off the map: the unrounded one, or, for a point
+// typed on the map's upper or right edge (which belongs to no cell), that
+// edge.
 CellPoint RobotCellPoint(const Grid& grid, double x, double y);
 
 // The paper's measures (section 3.1, Eq. 5) over the edge cells.

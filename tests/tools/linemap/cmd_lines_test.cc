@@ -127,6 +127,15 @@ TEST(CmdLinesTest, PoseOnACellsLowerEdgeIsInThatCell) {
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "1.55,2.5", "--json"}).exit_code, 0);
   // And 2.399 m is on the wall.
   EXPECT_EQ(RunCli({"lines", yaml, "--pose", "1.55,2.399", "--json"}).exit_code, 2);
+  // A map's upper edge belongs to no cell: on a free 6 x 3 map at 0.05
+  // m/cell it is 0.15 m, off the map, though 0.15 / 0.05 - 0.5 is
+  // 2.4999999999999996 in doubles, which rounding put in the top row.
+  Grid small(6, 3, Cell::kFree);
+  const std::string edge = SaveMap(dir, "small", small);
+  const testing::CliResult top = RunCli({"lines", edge, "--pose", "0.125,0.15", "--json"});
+  EXPECT_EQ(top.exit_code, 2);
+  EXPECT_NE(top.err.find("off the map"), std::string::npos) << top.err;
+  EXPECT_EQ(RunCli({"lines", edge, "--pose", "0.125,0.1499", "--json"}).exit_code, 0);
 }
 
 TEST(CmdLinesTest, BadInputExitsWithTwoAndWritesNothing) {

@@ -101,6 +101,7 @@ TEST(CmdPlanTest, UnreachableGoalExitsOneAndDrawsTheSafeZoneOnly) {
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
   EXPECT_EQ(svg.find("<polyline"), std::string::npos) << "no trajectory to draw";
   EXPECT_NE(svg.find("<circle"), std::string::npos) << "start and goal";
+  EXPECT_NE(svg.find("fill=\"#e6f4ea\""), std::string::npos) << "the safe zone";
   EXPECT_NE(r.err.find("cannot be reached"), std::string::npos) << r.err;
   // Every key of a plan found, empty (as the Python module's plan()).
   for (const char* part :
