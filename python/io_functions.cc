@@ -133,6 +133,12 @@ CellWindow WindowCellsArgument(const py::handle& window) {
   return {v[0], v[1], v[2], v[3]};
 }
 
+// What the file a map was loaded from says of its cells, kept on the Map.
+void SetFidelity(const LmapFidelity& fidelity, Map* map) {
+  map->tolerance = fidelity.tolerance;
+  map->simplified_without_tolerance = !fidelity.exact && !fidelity.tolerance;
+}
+
 Map Load(const py::object& path_arg, const py::object& max_cells_arg,
          const py::object& window_cells_arg, const py::object& limits_arg) {
   const std::string path = PathArgument(path_arg);
@@ -153,7 +159,7 @@ Map Load(const py::object& path_arg, const py::object& max_cells_arg,
   }
   LoadedMap map_file = ValueOrRaise(std::move(loaded));
   Map map = MapFromGrid(std::move(map_file.grid));
-  map.tolerance = map_file.tolerance;
+  SetFidelity(map_file.fidelity, &map);
   return map;
 }
 
@@ -196,6 +202,13 @@ void CheckNoLmapOptions(const std::string& path, int tolerance, bool vectors, bo
 // tolerance it is refused: the guarantees against the robot's map would not
 // add up.
 void KeepToleranceOf(const Map& map, EncodeOptions* options) {
+  if (map.simplified_without_tolerance) {
+    throw py::value_error(
+        "this map was loaded from a file whose cells are not the robot's map but which names "
+        "no tolerance (written before files named their T, or a lossy 1.0 file): a copy "
+        "could not say which guarantees hold against the original map; save the original "
+        "map");
+  }
   if (!map.tolerance) return;
   if (options->tolerance_cells > 0) {
     throw py::value_error("this map was loaded from a file saved within a tolerance of " +
@@ -312,14 +325,14 @@ Map Decode(const py::object& data, const py::object& max_cells_arg, const py::ob
   const DecodeLimits limits = LimitsArgument(limits_arg, max_cells_arg);
   const std::vector<std::uint8_t> bytes = BytesArgument(data);
   StatusOr<Grid> grid = InvalidArgumentError("not decoded");
-  std::optional<int> tolerance;
+  LmapFidelity fidelity;
   {
     py::gil_scoped_release release;
     grid = DecodeLmap(bytes, limits);
-    if (grid.ok()) tolerance = ToleranceOfLmapBytes(bytes, limits);
+    if (grid.ok()) fidelity = FidelityOfLmapBytes(bytes, limits);
   }
   Map map = MapFromGrid(ValueOrRaise(std::move(grid)));
-  map.tolerance = tolerance;
+  SetFidelity(fidelity, &map);
   return map;
 }
 

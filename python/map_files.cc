@@ -24,18 +24,23 @@ StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits) 
   return LoadRosMap(path, options);
 }
 
-std::optional<int> ToleranceOfLmapBytes(const std::vector<std::uint8_t>& bytes,
-                                        const DecodeLimits& limits) {
+LmapFidelity FidelityOfLmapBytes(const std::vector<std::uint8_t>& bytes,
+                                 const DecodeLimits& limits) {
+  LmapFidelity out;
   const StatusOr<LmapHeader> header = DecodeLmapHeader(bytes, limits);
-  if (!header.ok()) return std::nullopt;
-  return ToleranceCellsOf(header->major, header->lossless, header->metadata);
+  if (!header.ok()) return out;
+  out.exact = header->lossless;
+  out.tolerance = ToleranceCellsOf(header->major, header->lossless, header->metadata);
+  return out;
 }
 
 StatusOr<LoadedMap> LoadMapAndTolerance(const std::string& path,
                                         const std::optional<CellWindow>& window,
                                         const DecodeLimits& limits) {
   LoadedMap out;
-  if (!IsLmapPath(path)) {
+  // .lmap by name in any case or by signature, as load() checks a window's
+  // file: a window is never dropped by a map-image read.
+  if (!IsLmapFile(path)) {
     LINEMAP_ASSIGN_OR_RETURN(out.grid, LoadMapFile(path, limits));
     return out;
   }
@@ -46,7 +51,7 @@ StatusOr<LoadedMap> LoadMapAndTolerance(const std::string& path,
       window ? DecodeLmapRegion(bytes, *window, limits) : DecodeLmap(bytes, limits);
   if (!grid.ok()) return grid.status().WithContext("'" + path + "'");
   out.grid = std::move(*grid);
-  out.tolerance = ToleranceOfLmapBytes(bytes, limits);
+  out.fidelity = FidelityOfLmapBytes(bytes, limits);
   return out;
 }
 

@@ -31,23 +31,30 @@ bool IsLmapFile(const std::string& path);
 // limits.max_cells cells. Runs without the GIL.
 StatusOr<Grid> LoadMapFile(const std::string& path, const DecodeLimits& limits);
 
+// What an .lmap file says of its cells: exact (the robot's map), or not,
+// with the tolerance it was saved within when it names one
+// (ToleranceCellsOf).
+struct LmapFidelity {
+  bool exact = true;
+  std::optional<int> tolerance;
+};
+
 // A map file as load() reads it: its grid (for an .lmap file, only the
-// cells of `window` when one is given) and the tolerance an .lmap file
-// names (ToleranceCellsOf: the T it was saved within; nullopt for an exact
-// file and any other map), both from one read of the file. Runs without
-// the GIL.
+// cells of `window` when one is given) and, for an .lmap file, what it says
+// of its cells (any other map is exact), both from one read of the file.
+// Runs without the GIL.
 struct LoadedMap {
   Grid grid;
-  std::optional<int> tolerance;
+  LmapFidelity fidelity;
 };
 StatusOr<LoadedMap> LoadMapAndTolerance(const std::string& path,
                                         const std::optional<CellWindow>& window,
                                         const DecodeLimits& limits);
 
-// The tolerance the .lmap `bytes` name (nullopt for an exact file), read
-// from their header; for bytes a decode has already checked.
-std::optional<int> ToleranceOfLmapBytes(const std::vector<std::uint8_t>& bytes,
-                                        const DecodeLimits& limits);
+// What the .lmap `bytes` say of their cells, read from their header; for
+// bytes a decode has already checked.
+LmapFidelity FidelityOfLmapBytes(const std::vector<std::uint8_t>& bytes,
+                                 const DecodeLimits& limits);
 
 }  // namespace linemap::python
 

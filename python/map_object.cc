@@ -185,6 +185,7 @@ py::dict MapState(const Map& map) {
   state["occupied_thresh"] = map.meta.occupied_thresh;
   state["free_thresh"] = map.meta.free_thresh;
   state["tolerance"] = map.tolerance ? py::object(py::int_(*map.tolerance)) : py::none();
+  state["simplified_without_tolerance"] = map.simplified_without_tolerance;
   return state;
 }
 
@@ -233,6 +234,9 @@ Map MapFromState(const py::dict& state) {
           "whole number of cells from 1");
     }
     map.tolerance = t.cast<int>();
+  }
+  if (state.contains("simplified_without_tolerance")) {
+    map.simplified_without_tolerance = state["simplified_without_tolerance"].cast<bool>();
   }
   return map;
 }

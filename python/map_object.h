@@ -28,6 +28,11 @@ struct Map {
   // within T cells); nullopt otherwise. save() and encode() keep it, as
   // `linemap encode` of such a file does.
   std::optional<int> tolerance;
+  // Loaded from a file whose cells are not the robot's map but which names
+  // no tolerance (a 2.1-2.3 file written before files named their T, a
+  // lossy 1.0 file): save() and encode() refuse it, as `linemap encode`
+  // does, since a copy could not say which guarantees hold.
+  bool simplified_without_tolerance = false;
 };
 
 // The grid's cells become the array without a copy.

@@ -1079,3 +1079,32 @@ def test_a_map_loaded_from_a_tolerance_file_keeps_its_tolerance(tmp_path, cli):
     old = linemap.Map.__new__(linemap.Map)
     old.__setstate__(state)
     assert old.tolerance is None
+
+
+# A file whose cells are not the robot's map but which names no T (a 2.2
+# tolerance file written before files named it, a lossy 1.0 file) cannot
+# be copied as if it were exact, as `linemap encode` refuses it; its YAML
+# save (what `linemap decode` writes) is allowed.
+@pytest.mark.parametrize("name", ["willow_v2_2_tolerance_1.lmap", "depot_lossy.lmap"])
+def test_a_map_from_a_lossy_file_without_a_tolerance_is_not_saved_as_exact(tmp_path, name):
+    from conftest import REPO
+    m = linemap.load(REPO / "tests" / "data" / "lmap" / name)
+    assert m.tolerance is None
+    for save in (lambda: linemap.save(tmp_path / "copy.lmap", m), lambda: linemap.encode(m)):
+        with pytest.raises(ValueError, match="names no tolerance"):
+            save()
+    assert not (tmp_path / "copy.lmap").exists()
+    # The same after a pickle round trip.
+    with pytest.raises(ValueError, match="names no tolerance"):
+        linemap.encode(pickle.loads(pickle.dumps(m)))
+    linemap.save(tmp_path / "copy.yaml", m)
+    assert (tmp_path / "copy.pgm").exists()
+
+
+# A window is never dropped: a file named .LMAP that is no .lmap file is
+# refused as one, not read whole as a map image.
+def test_a_window_of_a_file_named_lmap_in_capitals_is_read_as_lmap(tmp_path):
+    image = tmp_path / "x.LMAP"
+    shutil.copy(MAPS / "nav2" / "depot.pgm", image)
+    with pytest.raises(ValueError):
+        linemap.load(image, window_cells=(0, 0, 10, 10))
