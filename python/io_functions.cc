@@ -484,7 +484,12 @@ py::object RoomAt(const py::object& source, double x, double y, const py::object
   out["kind"] = RoomKindName(found.room->room.kind);
   out["outline"] = WorldPoints(frame, found.room->room.chain);
   out["window_cells"] = py::make_tuple(w.col0, w.row0, w.col1, w.row1);
-  out["map"] = MapFromGrid(std::move(found.room->grid));
+  Map map = MapFromGrid(std::move(found.room->grid));
+  // The room's cells are the file's, and keep what the file says of them.
+  const LmapHeader& header = found.header;
+  SetFidelity({header.lossless, ToleranceCellsOf(header.major, header.lossless, header.metadata)},
+              &map);
+  out["map"] = map;
   return out;
 }
 

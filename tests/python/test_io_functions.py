@@ -1053,6 +1053,8 @@ def test_a_map_loaded_from_a_tolerance_file_keeps_its_tolerance(tmp_path, cli):
     assert m.tolerance == 1
     assert linemap.decode(fixture.read_bytes()).tolerance == 1
     assert linemap.load(fixture, window_cells=(10, 10, 60, 40)).tolerance == 1
+    # (15, 20) m lies in one of its rooms; the room's cells keep T too.
+    assert linemap.room_at(fixture, 15.0, 20.0)["map"].tolerance == 1
     assert linemap.load(BUNDLED["willow"]).tolerance is None
     exact = tmp_path / "exact.lmap"
     linemap.save(exact, linemap.load(BUNDLED["willow"]))
