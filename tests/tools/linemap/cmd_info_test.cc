@@ -149,10 +149,9 @@ TEST(CmdInfoTest, RasterOnlyFileHasNoLayers) {
   EXPECT_NE(RunCli({"info", dir + "/l.lmap", "--json"}).out.find("\"layers\":true,"),
             std::string::npos);
   // A 1.0 file's SEGS chunk is a layer chunk too.
-  EXPECT_NE(
-      RunCli({"info", testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap", "--json"})
-          .out.find("\"layers\":true,"),
-      std::string::npos);
+  EXPECT_NE(RunCli({"info", testing::SourceDir() + "/tests/data/lmap/depot_lossy.lmap", "--json"})
+                .out.find("\"layers\":true,"),
+            std::string::npos);
 }
 
 TEST(CmdInfoTest, BareImageTakesCommandLineOverrides) {
